@@ -1,0 +1,39 @@
+# The quick start: `make demo` (main job: the gallery) and `make test` (every test).
+# Both install missing Debian packages first (scripts/install-deps.sh, idempotent).
+JOBS ?= $(shell nproc)
+BUILD ?= build
+ASAN_BUILD ?= build-asan
+BENCH_BUILD ?= build-bench
+
+.PHONY: deps build demo test test-release test-asan bench clean
+
+deps:
+	@scripts/install-deps.sh build
+
+build: deps
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release
+	cmake --build $(BUILD) -j $(JOBS)
+
+demo: build
+	$(BUILD)/apps/gallery/casteljau-gallery $(BUILD)/gallery
+	@echo "gallery: $(abspath $(BUILD)/gallery/index.html)"
+
+test-release: build
+	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+
+test-asan: deps
+	cmake -S . -B $(ASAN_BUILD) -DCMAKE_BUILD_TYPE=Debug -DCASTELJAU_SANITIZE=ON -DCMAKE_CXX_FLAGS="-O1"
+	cmake --build $(ASAN_BUILD) -j $(JOBS)
+	cd $(ASAN_BUILD) && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 ctest --output-on-failure -j $(JOBS) -LE no-sanitizer
+
+test: test-release test-asan
+	@echo "make test: all tests passed (Release and ASan+UBSan builds)"
+
+bench:
+	@scripts/install-deps.sh build bench
+	cmake -S . -B $(BENCH_BUILD) -DCMAKE_BUILD_TYPE=Release -DCASTELJAU_BUILD_BENCH=ON -DCASTELJAU_BUILD_TESTS=OFF -DCASTELJAU_BUILD_APPS=OFF
+	cmake --build $(BENCH_BUILD) -j $(JOBS)
+	/usr/bin/python3 bench/run.py $(BENCH_BUILD)
+
+clean:
+	rm -rf $(BUILD) $(ASAN_BUILD) $(BENCH_BUILD)

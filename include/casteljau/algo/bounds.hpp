@@ -1,0 +1,69 @@
+// Tight axis-aligned bounds of curves over their domain, from the roots of the derivative.
+#pragma once
+
+#include <vector>
+
+#include "casteljau/basis/roots.hpp"
+#include "casteljau/curves/path.hpp"
+
+namespace casteljau {
+
+/// The tight box of a Bézier curve over [0, 1]: the end points plus the curve at every
+/// root in (0, 1) of each coordinate of the hodograph (Bernstein root finding). Accurate
+/// to a few eps of the coordinates at simple extrema; at a multiple root of the
+/// derivative the coordinate is flat, so the location error does not matter to the value.
+/// Cost O(D n^2) per extremum. See control_bounds() for the cheap conservative box.
+template <class T, int D>
+Box<T, D> bounds(const Bezier<T, D>& c) {
+  Box<T, D> b = Box<T, D>::empty_box();
+  b.add(c(T(0)));
+  b.add(c(T(1)));
+  const auto& P = c.points();
+  const int n = c.degree();
+  if (n < 2) return b;
+  std::vector<T> d(static_cast<std::size_t>(n));
+  for (int k = 0; k < D; ++k) {
+    for (int i = 0; i < n; ++i) d[i] = P[i + 1][k] - P[i][k];  // hodograph / n
+    for (T r : bernstein_roots<T>(d)) {
+      if (r > 0 && r < 1) b.add(c(r));
+    }
+  }
+  return b;
+}
+
+/// The tight box of a rational Bézier curve over [0, 1]. Coordinate k has derivative
+/// (A_k' W - A_k W') / W^2 with A_k = sum w_i P_ik B(i,n), W = sum w_i B(i,n); the roots
+/// of the numerator (a Bernstein product of degree 2n - 1) are the candidates.
+template <class T, int D>
+Box<T, D> bounds(const RationalBezier<T, D>& c) {
+  Box<T, D> b = Box<T, D>::empty_box();
+  b.add(c(T(0)));
+  b.add(c(T(1)));
+  const int n = c.degree();
+  if (n < 1) return b;
+  const auto& P = c.points();
+  const auto& w = c.weights();
+  std::vector<T> W(w), dW(static_cast<std::size_t>(n)), A(w.size()), dA(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) dW[i] = w[i + 1] - w[i];
+  for (int k = 0; k < D; ++k) {
+    for (int i = 0; i <= n; ++i) A[i] = w[i] * P[i][k];
+    for (int i = 0; i < n; ++i) dA[i] = A[i + 1] - A[i];
+    const auto p1 = bernstein_product<T>(dA, W), p2 = bernstein_product<T>(A, dW);
+    std::vector<T> num(p1.size());
+    for (std::size_t i = 0; i < num.size(); ++i) num[i] = p1[i] - p2[i];
+    for (T r : bernstein_roots<T>(num)) {
+      if (r > 0 && r < 1) b.add(c(r));
+    }
+  }
+  return b;
+}
+
+/// The tight box of a path: the union of its segments' tight boxes.
+template <class T, int D>
+Box<T, D> bounds(const Path<T, D>& c) {
+  Box<T, D> b = Box<T, D>::empty_box();
+  for (const auto& s : c.segments()) b.add(std::visit([](const auto& seg) { return bounds(seg); }, s));
+  return b;
+}
+
+}  // namespace casteljau

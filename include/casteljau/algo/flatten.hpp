@@ -1,0 +1,94 @@
+// Flattening: a polyline within a distance tolerance of a curve, by recursive subdivision.
+#pragma once
+
+#include <stdexcept>
+#include <vector>
+
+#include "casteljau/curves/path.hpp"
+
+namespace casteljau {
+
+/// Thrown when an algorithm hits an iteration or depth limit instead of returning a
+/// result it cannot guarantee.
+class NumericalError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+namespace detail {
+
+/// Distance from p to the segment [a, b].
+template <class T, int D>
+T distance_to_segment(const Point<T, D>& p, const Point<T, D>& a, const Point<T, D>& b) {
+  const Vector<T, D> ab = b - a, ap = p - a;
+  const T len2 = squared_norm(ab);
+  if (!(len2 > 0)) return norm(ap);
+  const T s = std::clamp(dot(ap, ab) / len2, T(0), T(1));
+  return norm(ap - s * ab);
+}
+
+/// Flat when every control point is within tol of the chord segment: the curve lies in
+/// the convex hull of its control points, and every point of that hull is within tol of
+/// the (convex) segment, so the whole piece is too. A guaranteed bound.
+template <class C>
+bool is_flat(const C& c, typename C::Scalar tol) {
+  const auto& P = c.points();
+  for (std::size_t i = 1; i + 1 < P.size(); ++i) {
+    if (distance_to_segment(P[i], P.front(), P.back()) > tol) return false;
+  }
+  return true;
+}
+
+template <class C>
+void flatten_rec(const C& c, typename C::Scalar tol, int depth, std::vector<Point<typename C::Scalar, C::dimension>>& out) {
+  if (is_flat(c, tol)) {
+    out.push_back(c.points().back());
+    return;
+  }
+  // 2^-52 of the parameter range: beyond this, subdivision is stuck on rounding (the
+  // tolerance is below the coordinates' resolution).
+  if (depth >= 52) throw NumericalError("flatten: tolerance " + format_number(tol) + " is below the resolution of the curve's coordinates");
+  const auto halves = c.split(typename C::Scalar(0.5));
+  flatten_rec(halves.left, tol, depth + 1, out);
+  flatten_rec(halves.right, tol, depth + 1, out);
+}
+
+template <class T>
+void require_tolerance(T tolerance) {
+  require_finite(tolerance, "tolerance");
+  if (!(tolerance > 0)) throw InvalidArgument("tolerance", "must be > 0, got " + format_number(tolerance));
+}
+
+}  // namespace detail
+
+/// A polyline from the curve's start to its end whose every point of the curve is within
+/// `tolerance` (model units) of the polyline: recursive midpoint subdivision until each
+/// piece's control points lie within tolerance of its chord segment (a guaranteed bound
+/// for Bézier and positive-weight rational Bézier curves). The vertices lie on the curve.
+/// Cost O(n^2) per subdivision; about 1.6x the near-optimal vertex count on cubics
+/// (WORKLOADS.md, W3). Throws InvalidArgument for tolerance <= 0, NumericalError when
+/// the tolerance is below the coordinates' floating point resolution.
+template <class C>
+  requires SplittableCurve<C> && ControlPolygonCurve<C>
+std::vector<Point<typename C::Scalar, C::dimension>> flatten(const C& c, typename C::Scalar tolerance) {
+  detail::require_tolerance(tolerance);
+  std::vector<Point<typename C::Scalar, C::dimension>> out{c.points().front()};
+  detail::flatten_rec(c, tolerance, 0, out);
+  return out;
+}
+
+/// A path flattened segment by segment, each joint vertex written once when the
+/// segments meet exactly.
+template <class T, int D>
+std::vector<Point<T, D>> flatten(const Path<T, D>& p, T tolerance) {
+  detail::require_tolerance(tolerance);
+  std::vector<Point<T, D>> out;
+  for (const auto& s : p.segments()) {
+    const auto part = std::visit([&](const auto& c) { return flatten(c, tolerance); }, s);
+    const bool joined = !out.empty() && out.back() == part.front();
+    out.insert(out.end(), part.begin() + (joined ? 1 : 0), part.end());
+  }
+  return out;
+}
+
+}  // namespace casteljau

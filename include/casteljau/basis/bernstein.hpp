@@ -1,0 +1,139 @@
+// Bernstein polynomials B(i,n)(t) = C(n,i) t^i (1-t)^(n-i): single values, all values of one
+// degree in O(n), derivatives of any order, and the same on an arbitrary interval [a, b].
+// Plain functions over spans, callable without a curve object.
+#pragma once
+
+#include <cstddef>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "casteljau/basis/binomial.hpp"
+#include "casteljau/core/interval.hpp"
+
+namespace casteljau {
+
+namespace detail {
+inline void require_degree(int n) {
+  if (n < 0) throw InvalidArgument("n", "degree must be >= 0, got " + std::to_string(n));
+}
+template <class T>
+void require_interval(Interval<T> ab) {
+  require_finite(ab.lo, "interval.lo");
+  require_finite(ab.hi, "interval.hi");
+  if (!(ab.lo < ab.hi)) {
+    throw InvalidArgument("interval", "needs lo < hi, got [" + format_number(ab.lo) + ", " +
+                                          format_number(ab.hi) + "]");
+  }
+}
+template <class T>
+T ipow(T x, int k) {
+  T r = 1;
+  for (; k > 0; --k) r *= x;  // repeated multiplication: relative error <= k eps
+  return r;
+}
+}  // namespace detail
+
+/// B(i,n)(t). Zero for i outside 0..n. Relative error about (n + 2) eps for t in [0, 1].
+template <class T>
+T bernstein(int i, int n, T t) {
+  detail::require_degree(n);
+  require_finite(t, "t");
+  if (i < 0 || i > n) return T(0);
+  return binomial<T>(n, i) * detail::ipow(t, i) * detail::ipow(T(1) - t, n - i);
+}
+
+/// All n+1 values B(0..n, n)(t) into out (size n+1) in O(n): prefix products of t and
+/// suffix products of (1-t) times the binomials. They sum to 1 (partition of unity) up to
+/// rounding and are >= 0 on [0, 1].
+template <class T>
+void bernstein_all(int n, T t, std::span<T> out) {
+  detail::require_degree(n);
+  require_finite(t, "t");
+  if (out.size() != static_cast<std::size_t>(n) + 1) {
+    throw InvalidArgument("out", "needs n + 1 = " + std::to_string(n + 1) + " entries, got " + std::to_string(out.size()));
+  }
+  const T s = T(1) - t;
+  // out[i] <- s^(n-i), then multiply in C(n,i) t^i from the left.
+  T acc = 1;
+  for (int i = n; i >= 0; --i) {
+    out[static_cast<std::size_t>(i)] = acc;
+    acc *= s;
+  }
+  T tp = 1;
+  for (int i = 0; i <= n; ++i) {
+    out[static_cast<std::size_t>(i)] *= binomial<T>(n, i) * tp;
+    tp *= t;
+  }
+}
+
+template <class T>
+std::vector<T> bernstein_all(int n, T t) {
+  std::vector<T> out(static_cast<std::size_t>(n) + 1);
+  bernstein_all<T>(n, t, out);
+  return out;
+}
+
+/// d^k/dt^k B(i,n)(t) = n!/(n-k)! sum_j (-1)^(k-j) C(k,j) B(i-j, n-k)(t) [Farin02, 5.3];
+/// zero when k > n.
+template <class T>
+T bernstein_derivative(int i, int n, int k, T t) {
+  detail::require_degree(n);
+  if (k < 0) throw InvalidArgument("k", "derivative order must be >= 0, got " + std::to_string(k));
+  if (k > n) return T(0);
+  T falling = 1;
+  for (int j = 0; j < k; ++j) falling *= static_cast<T>(n - j);
+  T s = 0;
+  for (int j = 0; j <= k; ++j) {
+    const T term = binomial<T>(k, j) * bernstein<T>(i - j, n - k, t);
+    s += ((k - j) % 2 == 0) ? term : -term;
+  }
+  return falling * s;
+}
+
+/// All derivatives d^k/dt^k B(0..n, n)(t) into out (size n+1), O(n k).
+template <class T>
+void bernstein_all_derivatives(int n, int k, T t, std::span<T> out) {
+  detail::require_degree(n);
+  if (k < 0) throw InvalidArgument("k", "derivative order must be >= 0, got " + std::to_string(k));
+  if (out.size() != static_cast<std::size_t>(n) + 1) {
+    throw InvalidArgument("out", "needs n + 1 = " + std::to_string(n + 1) + " entries, got " + std::to_string(out.size()));
+  }
+  std::fill(out.begin(), out.end(), T(0));
+  if (k > n) return;
+  std::vector<T> low(static_cast<std::size_t>(n - k) + 1);
+  bernstein_all<T>(n - k, t, low);
+  T falling = 1;
+  for (int j = 0; j < k; ++j) falling *= static_cast<T>(n - j);
+  // Each low-degree value B(m, n-k) feeds B(m+j, n) with weight (-1)^(k-j) C(k,j).
+  for (int m = 0; m <= n - k; ++m) {
+    for (int j = 0; j <= k; ++j) {
+      const T term = binomial<T>(k, j) * low[static_cast<std::size_t>(m)];
+      out[static_cast<std::size_t>(m + j)] += ((k - j) % 2 == 0) ? term : -term;
+    }
+  }
+  for (auto& v : out) v *= falling;
+}
+
+/// B(i,n) on [a, b]: B(i,n)((x - a)/(b - a)).
+template <class T>
+T bernstein(int i, int n, T x, Interval<T> ab) {
+  detail::require_interval(ab);
+  return bernstein<T>(i, n, ab.fraction(x));
+}
+
+/// d^k/dx^k of B(i,n)((x - a)/(b - a)) = (b - a)^-k B(i,n)^(k)((x - a)/(b - a)).
+template <class T>
+T bernstein_derivative(int i, int n, int k, T x, Interval<T> ab) {
+  detail::require_interval(ab);
+  return bernstein_derivative<T>(i, n, k, ab.fraction(x)) / detail::ipow(ab.length(), k);
+}
+
+/// All values B(0..n, n) on [a, b] at x.
+template <class T>
+void bernstein_all(int n, T x, Interval<T> ab, std::span<T> out) {
+  detail::require_interval(ab);
+  bernstein_all<T>(n, ab.fraction(x), out);
+}
+
+}  // namespace casteljau

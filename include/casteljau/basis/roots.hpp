@@ -1,0 +1,128 @@
+// Real roots of a polynomial in Bernstein form on [0, 1], by subdivision with the
+// variation-diminishing property and a bracketed solve where one root is isolated.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <span>
+#include <limits>
+#include <vector>
+
+#include "casteljau/basis/binomial.hpp"
+#include "casteljau/basis/de_casteljau.hpp"
+
+namespace casteljau {
+
+namespace detail {
+
+template <class T>
+int sign_of(T v) {
+  return (v > 0) - (v < 0);
+}
+
+/// Sign changes in the coefficient sequence, zeros skipped. By Descartes' rule for the
+/// Bernstein basis it bounds the number of roots in the open interval and has the same
+/// parity [Farin02, 5.5; LaneRiesenfeld81].
+template <class T>
+int sign_variations(std::span<const T> c) {
+  int v = 0, last = 0;
+  for (T x : c) {
+    const int s = sign_of(x);
+    if (s == 0) continue;
+    if (last != 0 && s != last) ++v;
+    last = s;
+  }
+  return v;
+}
+
+/// The single root of the Bernstein form c on (0, 1) given c[0] and c[n] of opposite
+/// signs: the Illinois variant of regula falsi, with values from de Casteljau, ending at
+/// a bracket of width <= 4 eps or a zero value. Converges superlinearly on simple roots.
+template <class T>
+T isolated_root(std::span<const T> c) {
+  T a = 0, b = 1;
+  T fa = c.front(), fb = c.back();
+  int side = 0;
+  for (int it = 0; it < 200; ++it) {
+    T x = (a * fb - b * fa) / (fb - fa);
+    if (!(x > a && x < b)) x = (a + b) / 2;
+    const T fx = de_casteljau<T, T>(c, x);
+    if (fx == 0) return x;
+    if (sign_of(fx) == sign_of(fa)) {
+      a = x;
+      fa = fx;
+      if (side == -1) fb /= 2;
+      side = -1;
+    } else {
+      b = x;
+      fb = fx;
+      if (side == 1) fa /= 2;
+      side = 1;
+    }
+    if (b - a <= 4 * std::numeric_limits<T>::epsilon()) break;
+  }
+  return (a + b) / 2;
+}
+
+template <class T>
+void bernstein_roots_rec(std::span<const T> c, T lo, T hi, int depth, std::vector<T>& out) {
+  const int v = sign_variations(c);
+  if (v == 0) return;
+  const std::size_t n = c.size() - 1;
+  if (v == 1 && c.front() != 0 && c.back() != 0) {
+    out.push_back(lo + (hi - lo) * isolated_root(c));
+    return;
+  }
+  // Several roots, or a root at an end of this piece: halve. The depth cap (2^-60 of the
+  // original width) stops the subdivision at multiple roots, which are reported once.
+  if (depth >= 60) {
+    out.push_back((lo + hi) / 2);
+    return;
+  }
+  std::vector<T> left(n + 1), right(n + 1);
+  de_casteljau_split<T, T>(c, T(0.5), left, right);
+  const T mid = (lo + hi) / 2;
+  bernstein_roots_rec<T>(left, lo, mid, depth + 1, out);
+  if (right.front() == 0) out.push_back(mid);
+  bernstein_roots_rec<T>(right, mid, hi, depth + 1, out);
+}
+
+}  // namespace detail
+
+/// The distinct real roots in [0, 1] of the polynomial with Bernstein coefficients c,
+/// ascending. An identically zero polynomial (all coefficients 0) gives no roots: callers
+/// that care test for it. Roots closer than `merge` (default 1e-10, well above the
+/// solver's accuracy of a few eps on simple roots) are reported once: a multiple root
+/// appears once, located to about eps^(1/m) for multiplicity m, as for any floating
+/// point solver. Cost O(n^2) per isolated root plus O(n^2) per subdivision step.
+template <class T>
+std::vector<T> bernstein_roots(std::span<const T> c, T merge = T(1e-10)) {
+  std::vector<T> out;
+  if (c.empty()) return out;
+  if (c.front() == 0) out.push_back(T(0));
+  detail::bernstein_roots_rec<T>(c, T(0), T(1), 0, out);
+  if (c.size() > 1 && c.back() == 0) out.push_back(T(1));
+  std::sort(out.begin(), out.end());
+  std::vector<T> merged;
+  for (T r : out) {
+    if (merged.empty() || r - merged.back() > merge) merged.push_back(r);
+  }
+  return merged;
+}
+
+/// The product of two Bernstein forms f (degree m) and g (degree n) as one of degree m+n:
+/// h_k = sum_{i+j=k} C(m,i) C(n,j) / C(m+n,k) f_i g_j [Farin02, 5.7]. Cost O(mn).
+template <class T>
+std::vector<T> bernstein_product(std::span<const T> f, std::span<const T> g) {
+  const int m = static_cast<int>(f.size()) - 1, n = static_cast<int>(g.size()) - 1;
+  std::vector<T> h(static_cast<std::size_t>(m + n) + 1, T(0));
+  const auto cm = binomial_row<T>(m), cn = binomial_row<T>(n), cmn = binomial_row<T>(m + n);
+  for (int i = 0; i <= m; ++i)
+    for (int j = 0; j <= n; ++j)
+      h[static_cast<std::size_t>(i + j)] += cm[static_cast<std::size_t>(i)] * cn[static_cast<std::size_t>(j)] *
+                                           f[static_cast<std::size_t>(i)] * g[static_cast<std::size_t>(j)];
+  for (int k = 0; k <= m + n; ++k) h[static_cast<std::size_t>(k)] /= cmn[static_cast<std::size_t>(k)];
+  return h;
+}
+
+}  // namespace casteljau

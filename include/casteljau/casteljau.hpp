@@ -1,0 +1,22 @@
+// The whole library in one include.
+#pragma once
+
+#include "casteljau/algo/bounds.hpp"
+#include "casteljau/algo/continuity.hpp"
+#include "casteljau/algo/curvature.hpp"
+#include "casteljau/algo/evaluate.hpp"
+#include "casteljau/algo/flatten.hpp"
+#include "casteljau/basis/batch.hpp"
+#include "casteljau/basis/bernstein.hpp"
+#include "casteljau/basis/binomial.hpp"
+#include "casteljau/basis/de_casteljau.hpp"
+#include "casteljau/basis/power.hpp"
+#include "casteljau/basis/roots.hpp"
+#include "casteljau/core/affine.hpp"
+#include "casteljau/core/error.hpp"
+#include "casteljau/core/interval.hpp"
+#include "casteljau/core/point.hpp"
+#include "casteljau/curves/bezier.hpp"
+#include "casteljau/curves/concepts.hpp"
+#include "casteljau/curves/path.hpp"
+#include "casteljau/curves/rational_bezier.hpp"

@@ -1,0 +1,66 @@
+// Error types of casteljau and the checks that every public entry runs on its input.
+#pragma once
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+namespace casteljau {
+
+/// Thrown for bad input: names where the problem is (`where`, e.g. "weights[2]") and what
+/// is wrong (`problem`, e.g. "weight must be > 0, got -1"). what() is "where: problem".
+/// Interfaces prefix `where` with their own context (the CLI writes "curve.weights[2]").
+class InvalidArgument : public std::invalid_argument {
+ public:
+  InvalidArgument(std::string where, std::string problem)
+      : std::invalid_argument(where.empty() ? problem : where + ": " + problem),
+        where_(std::move(where)),
+        problem_(std::move(problem)) {}
+
+  [[nodiscard]] const std::string& where() const noexcept { return where_; }
+  [[nodiscard]] const std::string& problem() const noexcept { return problem_; }
+
+  /// The same error seen from an enclosing context: "points[1]" inside "curve" becomes
+  /// "curve.points[1]"; an index path ("[3]") is appended without a dot.
+  [[nodiscard]] InvalidArgument within(std::string_view context) const {
+    return {join_where(context, where_), problem_};
+  }
+
+  static std::string join_where(std::string_view outer, std::string_view inner) {
+    if (outer.empty()) return std::string(inner);
+    if (inner.empty()) return std::string(outer);
+    std::string s(outer);
+    if (inner.front() != '[') s += '.';
+    s += inner;
+    return s;
+  }
+
+ private:
+  std::string where_;
+  std::string problem_;
+};
+
+namespace detail {
+
+/// Formats a number for a message with enough digits to identify it.
+template <class T>
+std::string format_number(T v) {
+  std::ostringstream os;
+  os.precision(17);
+  os << static_cast<long double>(v);
+  return os.str();
+}
+
+}  // namespace detail
+
+/// Throws InvalidArgument(where, ...) unless v is finite.
+template <class T>
+void require_finite(T v, std::string_view where) {
+  if (!std::isfinite(v)) {
+    throw InvalidArgument(std::string(where), "value must be finite, got " + detail::format_number(v));
+  }
+}
+
+}  // namespace casteljau

@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# Installs the Debian packages casteljau needs; idempotent, runs `apt-get update` only
+# when something is missing. Usage: scripts/install-deps.sh [build|bench]...
+#   build (default): compiler, CMake, libraries, test tools (enough for `make demo` and `make test`)
+#   bench: also the peer libraries benchmarked in bench/ (lib2geom, OpenCASCADE, MPFR)
+set -euo pipefail
+
+build_pkgs=(
+  g++ make cmake pkg-config python3
+  libeigen3-dev nlohmann-json3-dev libcli11-dev
+  libgtest-dev libgmock-dev librapidcheck-dev libbenchmark-dev
+  libmpfr-dev libgmp-dev
+)
+bench_pkgs=(lib2geom-dev libocct-modeling-data-dev libocct-foundation-dev libboost-dev libdouble-conversion-dev libgsl-dev)
+
+want=("${build_pkgs[@]}")
+for arg in "$@"; do
+  case "$arg" in
+    build) ;;
+    bench) want+=("${bench_pkgs[@]}") ;;
+    *) echo "install-deps.sh: unknown package set '$arg' (expected build or bench)" >&2; exit 2 ;;
+  esac
+done
+
+missing=()
+for p in "${want[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+
+echo "install-deps.sh: installing ${missing[*]}"
+sudo=""
+[ "$(id -u)" -eq 0 ] || sudo="sudo"
+export DEBIAN_FRONTEND=noninteractive
+$sudo apt-get update -qq
+$sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
