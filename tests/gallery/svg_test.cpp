@@ -1,0 +1,417 @@
+// Tests of the SVG io layer: render_svg (curve kinds, errors, degenerate inputs), the
+// document writer, number formatting, escaping and PageMap.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <regex>
+
+#include <unistd.h>
+#include <string>
+#include <vector>
+
+#include "casteljau/io/svg.hpp"
+
+namespace {
+
+using namespace casteljau;
+using io::AnyCurve;
+using io::RenderStyle;
+using P1 = Point<double, 1>;
+using P2 = Point<double, 2>;
+
+std::string render(const AnyCurve& c, const RenderStyle& s = {}) { return io::render_svg(std::span<const AnyCurve>(&c, 1), s); }
+
+/// NaN or infinity anywhere, as printf, streams or to_chars write them.
+bool has_bad_number(const std::string& svg) {
+  static const std::regex bad("(^|[^A-Za-z])[-+]?(nan|inf)([^A-Za-z]|$)", std::regex::icase);
+  return std::regex_search(svg, bad);
+}
+
+/// The d attributes of all <path> elements.
+std::vector<std::string> path_data(const std::string& svg) {
+  std::vector<std::string> out;
+  static const std::regex d_attr("<path d=\"([^\"]*)\"");
+  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), d_attr); it != std::sregex_iterator(); ++it) out.push_back((*it)[1]);
+  return out;
+}
+
+/// The drawn coordinates, for range checks: every number of the point lists and
+/// positions, and the end point of each path command (the inner control points of a C or
+/// Q command may lie off the page while the curve does not).
+std::vector<double> coordinates(const std::string& svg) {
+  std::vector<double> out;
+  static const std::regex attr("(?: points| cx| cy| x1| y1| x2| y2)=\"([^\"]*)\"");
+  static const std::regex num("[-+]?[0-9]*\\.?[0-9]+(?:[eE][-+]?[0-9]+)?");
+  auto numbers = [&](const std::string& v) {
+    std::vector<double> r;
+    for (auto jt = std::sregex_iterator(v.begin(), v.end(), num); jt != std::sregex_iterator(); ++jt) r.push_back(std::stod(jt->str()));
+    return r;
+  };
+  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), attr); it != std::sregex_iterator(); ++it) {
+    for (const double v : numbers((*it)[1])) out.push_back(v);
+  }
+  static const std::regex command("[MLQC]([^MLQC]*)");
+  for (const std::string& d : path_data(svg)) {
+    for (auto it = std::sregex_iterator(d.begin(), d.end(), command); it != std::sregex_iterator(); ++it) {
+      const auto v = numbers((*it)[1]);
+      if (v.size() >= 2) out.insert(out.end(), v.end() - 2, v.end());
+    }
+  }
+  return out;
+}
+
+/// Every drawn coordinate lies on the page (with a margin for point markers).
+void expect_on_page(const std::string& svg, const RenderStyle& s = {}) {
+  for (const double v : coordinates(svg)) {
+    EXPECT_GE(v, -1e-9);
+    EXPECT_LE(v, std::max(s.width, s.height) + 1e-9);
+  }
+}
+
+/// All SVGs written by this test, parsed at the end by Python's XML parser.
+std::vector<std::string>& written() {
+  static std::vector<std::string> w;
+  return w;
+}
+
+std::string checked(const std::string& svg) {
+  EXPECT_FALSE(has_bad_number(svg)) << svg;
+  EXPECT_EQ(svg.rfind("<svg xmlns=\"http://www.w3.org/2000/svg\"", 0), 0u);
+  written().push_back(svg);
+  return svg;
+}
+
+template <class F>
+void expect_invalid(F&& f, const std::string& where) {
+  try {
+    f();
+    ADD_FAILURE() << "no exception, expected InvalidArgument at " << where;
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(e.where(), where) << e.what();
+  }
+}
+
+Bezier<double, 2> cubic() { return Bezier<double, 2>({{0.0, 0.0}, {1.0, 2.0}, {3.0, 2.0}, {4.0, 0.0}}); }
+
+// ---------------------------------------------------------------------------------------
+// Curve kinds.
+
+TEST(RenderSvg, WritesCubicQuadraticAndLineExactly) {
+  EXPECT_NE(path_data(checked(render(cubic())))[0].find('C'), std::string::npos);
+  const std::string q = checked(render(Bezier<double, 2>({{0.0, 0.0}, {1.0, 1.0}, {2.0, 0.0}})));
+  EXPECT_NE(path_data(q)[0].find('Q'), std::string::npos);
+  const std::string l = checked(render(Bezier<double, 2>({{0.0, 0.0}, {1.0, 1.0}})));
+  EXPECT_EQ(path_data(l)[0].find_first_of("CQ"), std::string::npos);
+  EXPECT_NE(path_data(l)[0].find('L'), std::string::npos);
+}
+
+TEST(RenderSvg, FlattensHighDegreeAndRationalSegments) {
+  const Bezier<double, 2> quintic({{0.0, 0.0}, {1.0, 3.0}, {2.0, -1.0}, {3.0, 3.0}, {4.0, -1.0}, {5.0, 0.0}});
+  const std::string d = path_data(checked(render(quintic)))[0];
+  EXPECT_EQ(d.find_first_of("CQ"), std::string::npos);
+  EXPECT_GT(std::count(d.begin(), d.end(), 'L'), 8);
+  const auto arc = RationalBezier<double, 2>::circular_arc({0.0, 0.0}, 1.0, 0.0, 1.5);
+  const std::string a = path_data(checked(render(arc)))[0];
+  EXPECT_EQ(a.find_first_of("CQ"), std::string::npos);
+  // Equal weights: the polynomial curve, written exactly.
+  const RationalBezier<double, 2> flat(cubic().points(), {2.0, 2.0, 2.0, 2.0});
+  EXPECT_NE(path_data(checked(render(flat)))[0].find('C'), std::string::npos);
+}
+
+TEST(RenderSvg, ToleranceControlsVertexCount) {
+  const auto arc = RationalBezier<double, 2>::circular_arc({0.0, 0.0}, 1.0, 0.0, 3.0);
+  RenderStyle coarse, fine;
+  coarse.tolerance = 0.05;  // model units: a few segments
+  fine.tolerance = 1e-5;    // below the default quarter pixel: many more
+  const auto n = [](const std::string& d) { return std::count(d.begin(), d.end(), 'L'); };
+  const auto c = n(path_data(checked(render(arc, coarse)))[0]), f = n(path_data(checked(render(arc, fine)))[0]);
+  EXPECT_LT(c, 12);
+  EXPECT_GT(f, 2 * c);
+}
+
+TEST(RenderSvg, PathIsOneSubpathWhenSegmentsMeet) {
+  const Bezier<double, 2> a = cubic();
+  const Bezier<double, 2> b({{4.0, 0.0}, {5.0, -2.0}, {6.0, 0.0}});
+  const Path<double, 2> p({Segment<double, 2>(a), Segment<double, 2>(b)});
+  const std::string d = path_data(checked(render(p)))[0];
+  EXPECT_EQ(std::count(d.begin(), d.end(), 'M'), 1);
+  EXPECT_NE(d.find('C'), std::string::npos);
+  EXPECT_NE(d.find('Q'), std::string::npos);
+  // A gap starts a new subpath.
+  const Path<double, 2> gap({Segment<double, 2>(a), Segment<double, 2>(Bezier<double, 2>({{5.0, 0.0}, {6.0, 1.0}}))});
+  const std::string g = path_data(checked(render(gap)))[0];
+  EXPECT_EQ(std::count(g.begin(), g.end(), 'M'), 2);
+}
+
+TEST(RenderSvg, DrawsOneDimensionalCurvesAsGraphs) {
+  const Bezier<double, 1> y({P1(0.0), P1(3.0), P1(-1.0), P1(2.0)});
+  RenderStyle s;
+  s.control_polygon = false;
+  s.padding = 0;
+  const std::string svg = checked(render(y, s));
+  // Graph of a cubic function: a cubic in the plane, stretched to fill the page: starts
+  // at the left edge and ends at the right edge.
+  const std::string d = path_data(svg)[0];
+  EXPECT_NE(d.find('C'), std::string::npos);
+  EXPECT_EQ(d.rfind("M0,", 0), 0u) << d;
+  EXPECT_NE(d.find("640,"), std::string::npos) << d;
+  expect_on_page(svg, s);
+
+  const RationalBezier<double, 1> r({P1(0.0), P1(1.0), P1(0.0)}, {1.0, 3.0, 1.0});
+  expect_on_page(checked(render(r, s)), s);
+  const Path<double, 1> p({Segment<double, 1>(y), Segment<double, 1>(r)}, {-2.0, 0.5, 1.0});
+  expect_on_page(checked(render(p, s)), s);
+}
+
+TEST(RenderSvg, RationalGraphIsTheFunction) {
+  // y = A/W on [0, 1]; its graph has x = t exactly, so sampled page points of the graph
+  // must match the function: checked through the flattened vertices.
+  const RationalBezier<double, 1> r({P1(0.0), P1(2.0), P1(1.0)}, {1.0, 4.0, 0.5});
+  RenderStyle s;
+  s.control_polygon = false;
+  s.padding = 0;
+  s.width = 1000;
+  s.height = 1000;
+  const std::string d = path_data(checked(render(r, s)))[0];
+  const Box<double, 1> b = [&] {
+    Box<double, 1> bb = Box<double, 1>::empty_box();
+    for (int k = 0; k <= 10000; ++k) bb.add(r(k / 10000.0));
+    return bb;
+  }();
+  static const std::regex pt("([-0-9.]+),([-0-9.]+)");
+  int checked_points = 0;
+  for (auto it = std::sregex_iterator(d.begin(), d.end(), pt); it != std::sregex_iterator(); ++it) {
+    const double t = std::stod((*it)[1]) / 1000, y_page = std::stod((*it)[2]);
+    const double y = b.max[0] - y_page / 1000 * (b.max[0] - b.min[0]);
+    EXPECT_NEAR(r(t)[0], y, 2e-3 * (b.max[0] - b.min[0])) << "t = " << t;
+    ++checked_points;
+  }
+  EXPECT_GT(checked_points, 10);
+}
+
+TEST(RenderSvg, PaletteForSeveralCurvesUnlessStrokeIsSet) {
+  const std::vector<AnyCurve> cs = {cubic(), Bezier<double, 2>({{0.0, 1.0}, {4.0, 1.0}}), Bezier<double, 2>({{0.0, 2.0}, {4.0, 3.0}})};
+  const std::string multi = checked(io::render_svg(cs));
+  for (std::size_t i = 0; i < cs.size(); ++i) EXPECT_NE(multi.find("stroke=\"" + std::string(io::palette(i)) + "\""), std::string::npos);
+  RenderStyle s;
+  s.stroke = "black";
+  const std::string one = checked(io::render_svg(cs, s));
+  EXPECT_EQ(one.find(std::string(io::palette(1))), std::string::npos);
+  EXPECT_NE(one.find("stroke=\"black\""), std::string::npos);
+}
+
+TEST(RenderSvg, ControlPolygonAndAxesAreOptional) {
+  RenderStyle s;
+  s.control_polygon = false;
+  const std::string bare = checked(render(cubic(), s));
+  EXPECT_EQ(bare.find("<circle"), std::string::npos);
+  s.control_polygon = true;
+  s.axes = true;
+  const std::string full = checked(render(Bezier<double, 2>({{-2.0, -1.0}, {1.0, 3.0}, {3.0, -2.0}}), s));
+  EXPECT_NE(full.find("<circle"), std::string::npos);
+  EXPECT_NE(full.find("<text"), std::string::npos);  // tick labels
+  expect_on_page(full, s);
+}
+
+TEST(RenderSvg, EscapesColourStrings) {
+  RenderStyle s;
+  s.background = "<x>&\"'";
+  s.stroke = "red\" onload=\"alert(1)";
+  const std::string svg = checked(render(cubic(), s));
+  EXPECT_EQ(svg.find("<x>"), std::string::npos);
+  EXPECT_EQ(svg.find("\" onload"), std::string::npos);
+  EXPECT_NE(svg.find("&lt;x&gt;&amp;&quot;&#39;"), std::string::npos);
+}
+
+// ---------------------------------------------------------------------------------------
+// Errors.
+
+TEST(RenderSvg, RejectsThreeAndFourDimensionalCurves) {
+  const Bezier<double, 3> c3({{0.0, 0.0, 0.0}, {1.0, 1.0, 1.0}});
+  const Bezier<double, 4> c4({{0.0, 0.0, 0.0, 0.0}, {1.0, 1.0, 1.0, 1.0}});
+  expect_invalid([&] { render(c3); }, "curve");
+  expect_invalid([&] { render(c4); }, "curve");
+  const std::vector<AnyCurve> cs = {cubic(), c3};
+  expect_invalid([&] { io::render_svg(cs); }, "curves[1]");
+  try {
+    render(c3);
+  } catch (const InvalidArgument& e) {
+    EXPECT_NE(e.problem().find("3D"), std::string::npos) << e.what();
+  }
+}
+
+TEST(RenderSvg, RejectsBadStyleFieldsByName) {
+  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  auto with = [](auto set) {
+    RenderStyle s;
+    set(s);
+    return s;
+  };
+  for (const double v : {0.0, -1.0, nan, inf}) {
+    expect_invalid([&] { render(cubic(), with([&](RenderStyle& s) { s.width = v; })); }, "width");
+    expect_invalid([&] { render(cubic(), with([&](RenderStyle& s) { s.height = v; })); }, "height");
+    expect_invalid([&] { render(cubic(), with([&](RenderStyle& s) { s.stroke_width = v; })); }, "stroke_width");
+  }
+  for (const double v : {-1.0, nan, inf, -inf}) {
+    expect_invalid([&] { render(cubic(), with([&](RenderStyle& s) { s.padding = v; })); }, "padding");
+    expect_invalid([&] { render(cubic(), with([&](RenderStyle& s) { s.tolerance = v; })); }, "tolerance");
+  }
+  // A padding that leaves no room is named too.
+  expect_invalid([&] { render(cubic(), with([](RenderStyle& s) { s.padding = 240; })); }, "padding");
+  // A huge tolerance is a chord, not an overflow.
+  const Bezier<double, 2> quintic({{0.0, 0.0}, {1.0, 3.0}, {2.0, -1.0}, {3.0, 3.0}, {4.0, -1.0}, {5.0, 0.0}});
+  const std::string chord = path_data(checked(render(quintic, with([](RenderStyle& s) { s.tolerance = 1e300; }))))[0];
+  EXPECT_EQ(std::count(chord.begin(), chord.end(), 'L'), 1) << chord;
+  // Zero padding and zero tolerance are fine.
+  checked(render(cubic(), with([](RenderStyle& s) {
+    s.padding = 0;
+    s.tolerance = 0;
+  })));
+}
+
+// ---------------------------------------------------------------------------------------
+// Degenerate inputs: every one renders, on the page, without NaN.
+
+TEST(RenderSvg, DegenerateInputsRenderSensibly) {
+  RenderStyle axes;
+  axes.axes = true;
+  const std::vector<AnyCurve> fixtures = {
+      Bezier<double, 2>({{3.0, 4.0}}),                                        // a single point
+      Bezier<double, 2>({{0.0, 0.0}}),                                        // the origin
+      Bezier<double, 2>({{1.0, 1.0}, {1.0, 1.0}, {1.0, 1.0}, {1.0, 1.0}}),    // zero length cubic
+      Bezier<double, 2>({{0.0, 2.0}, {5.0, 2.0}}),                            // horizontal line
+      Bezier<double, 2>({{2.0, -1.0}, {2.0, 1.0}, {2.0, 7.0}}),               // vertical line
+      Bezier<double, 2>({{0.0, 0.0}, {1.0, 1.0}, {2.0, 2.0}, {3.0, 3.0}}),    // collinear
+      Bezier<double, 2>({{0.0, 0.0}, {4.0, 4.0}, {0.0, 4.0}, {4.0, 0.0}}),    // cusp-like loop
+      Bezier<double, 2>({{1e-200, 1e-200}, {2e-200, 3e-200}, {3e-200, 1e-200}}),  // tiny
+      Bezier<double, 2>({{-1e300, -1e300}, {1e300, 1e300}, {1e300, -1e300}}),     // huge
+      Bezier<double, 2>({{1e12, 1e12}, {1e12 + 1, 1e12 + 2}, {1e12 + 3, 1e12}}),  // far from the origin
+      Bezier<double, 2>({{1e15, 0.0}, {1e15, 1e-10}}),                            // below resolution
+      Bezier<double, 1>({P1(5.0)}),                                               // constant 1D, degree 0
+      Bezier<double, 1>({P1(2.0), P1(2.0), P1(2.0)}),                             // constant 1D
+      Bezier<double, 1>({P1(-1e300), P1(1e300)}),                                 // huge 1D
+      RationalBezier<double, 2>({{1.0, 1.0}, {1.0, 1.0}}, {1.0, 5.0}),            // rational point
+      Path<double, 1>({Segment<double, 1>(Bezier<double, 1>({P1(0.0)}))}, {1e9, 1e9 + 1}),  // 1D path far along t
+  };
+  for (std::size_t i = 0; i < fixtures.size(); ++i) {
+    SCOPED_TRACE("fixture " + std::to_string(i));
+    for (const RenderStyle& s : {RenderStyle{}, axes}) {
+      const std::string svg = checked(render(fixtures[i], s));
+      ASSERT_FALSE(path_data(svg).empty());
+      expect_on_page(svg, s);
+    }
+  }
+}
+
+TEST(RenderSvg, EmptyInputIsAnEmptyPage) {
+  const std::string svg = checked(io::render_svg({}));
+  EXPECT_TRUE(path_data(svg).empty());
+  RenderStyle s;
+  s.axes = true;
+  s.background = "";
+  const std::string a = checked(io::render_svg({}, s));
+  EXPECT_EQ(a.find("<rect"), std::string::npos);
+  EXPECT_NE(a.find("<line"), std::string::npos);
+}
+
+TEST(RenderSvg, SinglePointIsCentred) {
+  RenderStyle s;
+  s.control_polygon = false;
+  const std::string d = path_data(checked(render(Bezier<double, 2>({{7.0, -3.0}}), s)))[0];
+  EXPECT_EQ(d, "M320,240L320,240");
+}
+
+// ---------------------------------------------------------------------------------------
+// The writer's pieces.
+
+TEST(SvgNumber, CompactAndPrecise) {
+  EXPECT_EQ(io::svg_number(3), "3");
+  EXPECT_EQ(io::svg_number(2.5), "2.5");
+  EXPECT_EQ(io::svg_number(-0.0001), "0");
+  EXPECT_EQ(io::svg_number(-12.3456), "-12.346");
+  EXPECT_EQ(io::svg_number(1e20), "1e+20");
+  expect_invalid([] { io::svg_number(std::nan(""), "x"); }, "x");
+  expect_invalid([] { io::svg_number(-std::numeric_limits<double>::infinity(), "y"); }, "y");
+}
+
+TEST(SvgText, EscapesAndDropsForbiddenControls) {
+  EXPECT_EQ(io::xml_escape("a<b>&\"c'"), "a&lt;b&gt;&amp;&quot;c&#39;");
+  EXPECT_EQ(io::xml_escape(std::string("x\x01y\tz", 5)), "xy\tz");
+  io::SvgDocument doc(100, 50);
+  doc.title("P<sub> & co");
+  doc.text({10.0, 10.0}, "</svg><script>");
+  const std::string s = checked(doc.str());
+  EXPECT_EQ(s.find("<script>"), std::string::npos);
+  EXPECT_NE(s.find("&lt;/svg&gt;&lt;script&gt;"), std::string::npos);
+}
+
+TEST(SvgDocument, RejectsNonFiniteGeometry) {
+  io::SvgDocument doc(100, 100);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(doc.circle({nan, 0.0}, 2, {}), InvalidArgument);
+  EXPECT_THROW(doc.line({0.0, 0.0}, {std::numeric_limits<double>::infinity(), 0.0}, {}), InvalidArgument);
+  EXPECT_THROW(io::SvgDocument(0, 10), InvalidArgument);
+  expect_invalid([&] { io::SvgDocument(10, nan); }, "height");
+}
+
+TEST(SvgDocument, GroupsAreClosed) {
+  io::SvgDocument doc(10, 10);
+  doc.begin_group("a");
+  doc.begin_group("b");
+  doc.end_group();
+  const std::string s = checked(doc.str());
+  std::size_t closes = 0;
+  for (std::size_t at = s.find("</g>"); at != std::string::npos; at = s.find("</g>", at + 1)) ++closes;
+  EXPECT_EQ(closes, 2u);
+}
+
+TEST(PageMap, FitsKeepingAspectWithYUp) {
+  const Box<double, 2> model{{0.0, 0.0}, {4.0, 1.0}};
+  const io::PageRect page{10, 20, 400, 300};
+  const auto m = io::PageMap::fit(model, page);
+  EXPECT_DOUBLE_EQ(m.scale_x(), 100);
+  EXPECT_DOUBLE_EQ(m.scale_y(), 100);
+  const P2 lo = m({0.0, 0.0}), hi = m({4.0, 1.0});
+  EXPECT_DOUBLE_EQ(lo[0], 10);
+  EXPECT_DOUBLE_EQ(hi[0], 410);
+  EXPECT_GT(lo[1], hi[1]);                    // y up
+  EXPECT_DOUBLE_EQ((lo[1] + hi[1]) / 2, 170);  // centred vertically
+  const P2 back = m.to_model(m({1.5, 0.25}));
+  EXPECT_NEAR(back[0], 1.5, 1e-12);
+  EXPECT_NEAR(back[1], 0.25, 1e-12);
+  const auto s = io::PageMap::fit(model, page, io::Aspect::stretch);
+  EXPECT_DOUBLE_EQ(s.scale_y(), 300);
+  expect_invalid([&] { io::PageMap::fit(model, {0, 0, 0, 10}); }, "page.width");
+}
+
+TEST(Ticks, NiceValuesAndLabels) {
+  EXPECT_EQ(io::nice_ticks(0, 10, 5), (std::vector<double>{0, 2, 4, 6, 8, 10}));
+  EXPECT_EQ(io::nice_ticks(-0.3, 0.3, 3), (std::vector<double>{-0.2, 0, 0.2}));
+  EXPECT_TRUE(io::nice_ticks(1, 1, 5).empty());
+  EXPECT_TRUE(io::nice_ticks(0, std::numeric_limits<double>::infinity(), 5).empty());
+  EXPECT_EQ(io::tick_label(0.25, 0.25), "0.25");
+  EXPECT_EQ(io::tick_label(1, 0.25), "1");
+  EXPECT_EQ(io::tick_label(-0.5, 0.5), "\u22120.5");
+  EXPECT_EQ(io::tick_label(-1e-17, 0.1), "0");
+}
+
+// Runs last (tests run in declaration order): every SVG written above parses as XML.
+TEST(ZZ, EverySvgParsesAsXml) {
+  ASSERT_FALSE(written().empty());
+  const auto dir = std::filesystem::temp_directory_path() / ("casteljau_svg_test_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  for (std::size_t i = 0; i < written().size(); ++i) std::ofstream(dir / (std::to_string(i) + ".svg")) << written()[i];
+  const std::string cmd = std::string(CASTELJAU_TEST_PYTHON) +
+                          " -c \"import sys, glob, xml.etree.ElementTree as E; [E.parse(f) for f in glob.glob(sys.argv[1] + '/*.svg')]\" " +
+                          dir.string();
+  const int rc = std::system(cmd.c_str());
+  std::filesystem::remove_all(dir);
+  EXPECT_EQ(rc, 0) << "an SVG is not well-formed XML";
+}
+
+}  // namespace
