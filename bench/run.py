@@ -1,0 +1,209 @@
+#!/usr/bin/env python3
+"""Runs the W1 and W2 benchmarks of bench/ and prints the tables of docs/performance.md.
+
+Usage: bench/run.py BUILD_DIR [--repetitions N] [--min-time SECONDS] [--filter REGEX]
+
+Runs BUILD_DIR/bench/casteljau_bench_{w1_native,w1_generic,w2} (those that were built:
+a missing peer or MPFR drops rows or executables, see bench/CMakeLists.txt) with
+Google Benchmark's JSON output (repetitions of different benchmarks interleaved at random,
+so that the shared machine's drift hits every row alike), keeps the median repetition
+(wall-clock time; the fastest repetition and the CPU time are shown too), and prints:
+  * W1 per build: ms per run, ns per point, Mpoints/s, the ratio to memset of the same
+    output (time / memset time; below 1 is faster than memset), the speed-up over the
+    fastest lib2geom and OCCT variants measured in the same run, and the max abs
+    difference from own scalar de Casteljau;
+  * W2: max abs error against the 256-bit MPFR reference, per method and degree;
+  * the goals of the benchmark issue, met or not.
+The raw JSON and the tables in Markdown go to BUILD_DIR/bench-results/.
+"""
+import argparse
+import json
+import os
+import subprocess
+import sys
+import time
+
+W1_GOAL_VS_MEMSET = 1.15  # batch SoA time / memset time
+W1_GOAL_VS_LIB2GEOM = 10.0  # fastest lib2geom time / batch SoA time
+W2_GOAL_ERROR = 2e-15  # fast path max error at degree 40
+W2_DEGREES = (5, 10, 20, 40)
+
+
+def run(exe, out_json, repetitions, min_time, bench_filter):
+    cmd = [exe, "--benchmark_format=json", f"--benchmark_out={out_json}", "--benchmark_out_format=json",
+           f"--benchmark_min_time={min_time}"]
+    if repetitions > 1:
+        cmd += [f"--benchmark_repetitions={repetitions}",
+                # repetitions of different benchmarks interleaved in random order, so that the
+                # machine's drift hits memset and the libraries alike
+                "--benchmark_enable_random_interleaving=true"]
+    if bench_filter:
+        cmd.append(f"--benchmark_filter={bench_filter}")
+    print("$ " + " ".join(cmd), file=sys.stderr, flush=True)
+    t0 = time.time()
+    subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
+    print(f"  ({time.time() - t0:.0f} s)", file=sys.stderr, flush=True)
+    with open(out_json) as f:
+        return json.load(f)
+
+
+def medians(doc):
+    """name (without /real_time) -> the median repetition's row, with "min_real_time" added,
+    in registration order (the runs themselves are interleaved at random)."""
+    reps = {}
+    for b in doc["benchmarks"]:
+        if b.get("run_type") == "aggregate":
+            continue
+        name = b.get("run_name", b["name"]).removesuffix("/real_time")
+        reps.setdefault(name, []).append(b)
+    rows = {}
+    for name, runs in sorted(reps.items(), key=lambda kv: kv[1][0].get("family_index", 0)):
+        runs = sorted(runs, key=lambda b: b["real_time"])
+        row = dict(runs[(len(runs) - 1) // 2])  # the lower median: a measured run, not an average
+        row["min_real_time"] = runs[0]["real_time"]
+        row["repetitions"] = len(runs)
+        rows[name] = row
+    return rows
+
+
+def to_ms(b, key="real_time"):
+    scale = {"ns": 1e-6, "us": 1e-3, "ms": 1.0, "s": 1e3}[b.get("time_unit", "ns")]
+    return b[key] * scale
+
+
+def fmt_ratio(x):
+    return f"{x:.2f}x" if x < 10 else f"{x:.0f}x"
+
+
+def table(headers, rows):
+    widths = [max(len(str(r[i])) for r in [headers] + rows) for i in range(len(headers))]
+    text = "  ".join(h.ljust(w) for h, w in zip(headers, widths)) + "\n"
+    text += "  ".join("-" * w for w in widths) + "\n"
+    for r in rows:
+        text += "  ".join(str(c).ljust(w) for c, w in zip(r, widths)) + "\n"
+    md = "| " + " | ".join(headers) + " |\n|" + "|".join(" --- " for _ in headers) + "|\n"
+    for r in rows:
+        md += "| " + " | ".join(str(c) for c in r) + " |\n"
+    return text, md
+
+
+def w1_table(rows, label):
+    points = 1e7
+    memset = rows.get("W1/memset/output")
+    peers = {}
+    for lib in ("lib2geom", "occt"):
+        times = [(to_ms(b), n) for n, b in rows.items() if n.startswith(f"W1/{lib}/")]
+        if times:
+            peers[lib] = min(times)
+    headers = ["benchmark", "ms", "min ms", "cpu ms", "ns/pt", "Mpt/s", "x memset"] + [f"faster than {p} ({n.split('/')[-1]})" for p, (_, n) in peers.items()] + ["max abs diff"]
+    out = []
+    for name, b in rows.items():
+        ms = to_ms(b)
+        r = [name, f"{ms:.2f}", f"{to_ms(b, 'min_real_time'):.2f}", f"{to_ms(b, 'cpu_time'):.2f}", f"{ms * 1e6 / points:.2f}", f"{points / (ms * 1e3):.0f}",
+             fmt_ratio(ms / to_ms(memset)) if memset else "-"]
+        for p, (t, _) in peers.items():
+            r.append(fmt_ratio(t / ms))
+        diff = b.get("max_abs_diff")
+        r.append("-" if diff is None or name.startswith("W1/memset") or "l1_window" in name else f"{diff:.1e}")
+        out.append(r)
+    text, md = table(headers, out)
+    goals = []
+    soa = rows.get("W1/casteljau/batch_soa")
+    if soa and memset:
+        ratio = to_ms(soa) / to_ms(memset)
+        goals.append(f"W1 {label}: batch_soa / memset = {ratio:.2f} (goal <= {W1_GOAL_VS_MEMSET}): "
+                     + ("MET" if ratio <= W1_GOAL_VS_MEMSET else "NOT MET"))
+    if soa and "lib2geom" in peers:
+        speedup = peers["lib2geom"][0] / to_ms(soa)
+        goals.append(f"W1 {label}: fastest lib2geom / batch_soa = {speedup:.1f} (goal > {W1_GOAL_VS_LIB2GEOM:.0f}): "
+                     + ("MET" if speedup > W1_GOAL_VS_LIB2GEOM else "NOT MET"))
+    return text, md, goals
+
+
+def w2_table(rows):
+    methods = []
+    for name in rows:
+        method = name.rsplit("/", 1)[0]
+        if method not in methods:
+            methods.append(method)
+    headers = ["method"] + [f"n={n}" for n in W2_DEGREES] + [f"ns/pt n={n}" for n in W2_DEGREES]
+    out = []
+    for m in methods:
+        r = [m]
+        for n in W2_DEGREES:
+            b = rows.get(f"{m}/{n}")
+            r.append(f"{b['max_error']:.1e}" if b else "-")
+        for n in W2_DEGREES:
+            b = rows.get(f"{m}/{n}")
+            r.append(f"{to_ms(b) * 1e6 / 1e4:.1f}" if b else "-")
+        out.append(r)
+    text, md = table(headers, out)
+    goals = []
+    fast = rows.get("W2/casteljau/fast_path/40")
+    if fast:
+        e = fast["max_error"]
+        goals.append(f"W2: fast path max error at degree 40 = {e:.2e} (goal <= {W2_GOAL_ERROR:.0e}): "
+                     + ("MET" if e <= W2_GOAL_ERROR else "NOT MET"))
+    return text, md, goals
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("build_dir")
+    ap.add_argument("--repetitions", type=int, default=3)
+    ap.add_argument("--min-time", type=float, default=0.5, help="seconds per repetition of a W1 benchmark")
+    ap.add_argument("--filter", default="", help="benchmark regex (default: all)")
+    args = ap.parse_args()
+
+    bench_dir = os.path.join(args.build_dir, "bench")
+    res_dir = os.path.join(args.build_dir, "bench-results")
+    os.makedirs(res_dir, exist_ok=True)
+    text_all, md_all, goals = "", "", []
+
+    context = None
+    for label, exe_name in (("-O3 -march=native", "casteljau_bench_w1_native"), ("-O2 generic x86-64", "casteljau_bench_w1_generic")):
+        exe = os.path.join(bench_dir, exe_name)
+        if not os.path.exists(exe):
+            print(f"run.py: {exe} not built, skipping", file=sys.stderr)
+            continue
+        doc = run(exe, os.path.join(res_dir, exe_name + ".json"), args.repetitions, args.min_time, args.filter)
+        context = context or doc["context"]
+        rows = medians(doc)
+        if not rows:
+            continue
+        text, md, g = w1_table(rows, label)
+        title = f"W1, 1000 cubics x 10^4 parameters, {label} (median of {args.repetitions})"
+        text_all += f"\n{title}\n{text}"
+        md_all += f"\n### {title}\n\n{md}"
+        goals += g
+
+    exe = os.path.join(bench_dir, "casteljau_bench_w2")
+    if os.path.exists(exe):
+        # accuracy does not change between runs; one short repetition is enough for the ns/pt
+        doc = run(exe, os.path.join(res_dir, "casteljau_bench_w2.json"), 1, 0.05, args.filter)
+        context = context or doc["context"]
+        rows = medians(doc)
+        if rows:
+            text, md, g = w2_table(rows)
+            title = "W2, max abs error vs 256-bit MPFR de Casteljau (10 curves x 1000 parameters x 2 coordinates)"
+            text_all += f"\n{title}\n{text}"
+            md_all += f"\n### {title}\n\n{md}"
+            goals += g
+    else:
+        print(f"run.py: {exe} not built (MPFR missing?), skipping W2", file=sys.stderr)
+
+    if context:
+        head = (f"{context.get('host_name', '?')}: {context.get('num_cpus', '?')} CPUs at {context.get('mhz_per_cpu', '?')} MHz, "
+                f"load average {' '.join(f'{x:.2f}' for x in context.get('load_avg', []))}, {context.get('date', '')}")
+        text_all = head + "\n" + text_all
+        md_all = head + "\n" + md_all
+    text_all += "\nGoals\n" + "\n".join("  " + g for g in goals) + "\n"
+    md_all += "\n### Goals\n\n" + "\n".join("- " + g for g in goals) + "\n"
+    print(text_all)
+    with open(os.path.join(res_dir, "summary.md"), "w") as f:
+        f.write(md_all)
+    print(f"Markdown tables and raw JSON: {res_dir}/", file=sys.stderr)
+
+
+if __name__ == "__main__":
+    main()
