@@ -45,6 +45,7 @@ template <class T, int D>
 bool is_cr(const Path<T, D>& p, std::size_t joint, int r, T tolerance) {
   require_finite(tolerance, "tolerance");
   if (tolerance < 0) throw InvalidArgument("tolerance", "must be >= 0, got " + detail::format_number(tolerance));
+  if (r < 0) throw InvalidArgument("r", "continuity order must be >= 0, got " + std::to_string(r));
   for (int k = 0; k <= r; ++k) {
     const auto d = joint_derivatives(p, joint, k);
     if (norm(d.left - d.right) > tolerance) return false;
@@ -74,8 +75,11 @@ std::optional<Vector<T, D>> end_tangent(const Path<T, D>& p, std::size_t segment
 /// fails the test.
 template <class T, int D>
 bool is_g1(const Path<T, D>& p, std::size_t joint, T tolerance, T angle_tolerance) {
-  if (!is_cr(p, joint, 0, tolerance)) return false;
   require_finite(angle_tolerance, "angle_tolerance");
+  if (angle_tolerance < 0) {
+    throw InvalidArgument("angle_tolerance", "must be >= 0, got " + detail::format_number(angle_tolerance));
+  }
+  if (!is_cr(p, joint, 0, tolerance)) return false;
   const auto a = end_tangent(p, joint - 1, true), b = end_tangent(p, joint, false);
   return a && b && norm(*a - *b) <= angle_tolerance;
 }
@@ -84,6 +88,7 @@ bool is_g1(const Path<T, D>& p, std::size_t joint, T tolerance, T angle_toleranc
 /// the positions differ by more than tolerance.
 template <class T, int D>
 int parametric_continuity(const Path<T, D>& p, std::size_t joint, int max_order, T tolerance) {
+  if (max_order < 0) throw InvalidArgument("max_order", "must be >= 0, got " + std::to_string(max_order));
   int r = -1;
   while (r < max_order && is_cr(p, joint, r + 1, tolerance)) ++r;
   return r;

@@ -20,11 +20,16 @@ std::optional<typename C::Scalar> curvature(const C& c, typename C::Scalar t) {
   const auto d1 = c.derivative_at(t, 1), d2 = c.derivative_at(t, 2);
   const T speed = norm(d1);
   if (!(speed > 0)) return std::nullopt;
+  // With the unit tangent u = c'/|c'|, kappa = (u x c'') / |c'|^2, divided by the speed
+  // one factor at a time: |c'|^3 itself would overflow or underflow for coordinates near
+  // 1e+-100, although kappa (size 1/coordinates) is representable.
+  const auto u = d1 / speed;
   if constexpr (C::dimension == 2) {
-    return cross(d1, d2) / (speed * speed * speed);
+    return cross(u, d2) / speed / speed;
   } else {
-    const T a = squared_norm(d1) * squared_norm(d2) - dot(d1, d2) * dot(d1, d2);
-    return std::sqrt(std::max(a, T(0))) / (speed * speed * speed);
+    // |u x c''| = |c'' - (u . c'') u| (the component of c'' normal to the tangent).
+    const auto normal = d2 - dot(u, d2) * u;
+    return norm(normal) / speed / speed;
   }
 }
 

@@ -1,6 +1,9 @@
 // Flattening: a polyline within a distance tolerance of a curve, by recursive subdivision.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <vector>
 
@@ -72,6 +75,18 @@ template <class C>
   requires SplittableCurve<C> && ControlPolygonCurve<C>
 std::vector<Point<typename C::Scalar, C::dimension>> flatten(const C& c, typename C::Scalar tolerance) {
   detail::require_tolerance(tolerance);
+  using T = typename C::Scalar;
+  // Below a few ulps of the coordinates the flatness test cannot succeed reliably, and
+  // the subdivision would branch 2^depth ways (up to 2^52) before the depth limit stops
+  // a single path: report it at once. 16 eps of max |P| covers the rounding of the
+  // flatness distances and of the split control points.
+  T m = 0;
+  for (const auto& p : c.points())
+    for (int d = 0; d < C::dimension; ++d) m = std::max(m, std::abs(p[d]));
+  if (tolerance < 16 * std::numeric_limits<T>::epsilon() * m) {
+    throw NumericalError("flatten: tolerance " + detail::format_number(tolerance) +
+                         " is below the resolution of the curve's coordinates (max |coordinate| " + detail::format_number(m) + ")");
+  }
   std::vector<Point<typename C::Scalar, C::dimension>> out{c.points().front()};
   detail::flatten_rec(c, tolerance, 0, out);
   return out;

@@ -79,6 +79,7 @@ std::vector<T> bernstein_all(int n, T t) {
 template <class T>
 T bernstein_derivative(int i, int n, int k, T t) {
   detail::require_degree(n);
+  require_finite(t, "t");
   if (k < 0) throw InvalidArgument("k", "derivative order must be >= 0, got " + std::to_string(k));
   if (k > n) return T(0);
   T falling = 1;
@@ -95,6 +96,7 @@ T bernstein_derivative(int i, int n, int k, T t) {
 template <class T>
 void bernstein_all_derivatives(int n, int k, T t, std::span<T> out) {
   detail::require_degree(n);
+  require_finite(t, "t");
   if (k < 0) throw InvalidArgument("k", "derivative order must be >= 0, got " + std::to_string(k));
   if (out.size() != static_cast<std::size_t>(n) + 1) {
     throw InvalidArgument("out", "needs n + 1 = " + std::to_string(n + 1) + " entries, got " + std::to_string(out.size()));

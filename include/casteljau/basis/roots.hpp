@@ -4,8 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <span>
 #include <limits>
+#include <span>
+#include <string>
 #include <vector>
 
 #include "casteljau/basis/binomial.hpp"
@@ -94,11 +95,15 @@ void bernstein_roots_rec(std::span<const T> c, T lo, T hi, int depth, std::vecto
 /// that care test for it. Roots closer than `merge` (default 1e-10, well above the
 /// solver's accuracy of a few eps on simple roots) are reported once: a multiple root
 /// appears once, located to about eps^(1/m) for multiplicity m, as for any floating
-/// point solver. Cost O(n^2) per isolated root plus O(n^2) per subdivision step.
+/// point solver. A root of even multiplicity whose coefficients are rounded may vanish
+/// altogether (the rounded polynomial need not touch zero); odd multiplicities keep their
+/// sign change and are always found. Cost O(n^2) per isolated root plus O(n^2) per subdivision step.
 template <class T>
 std::vector<T> bernstein_roots(std::span<const T> c, T merge = T(1e-10)) {
   std::vector<T> out;
-  if (c.empty()) return out;
+  for (std::size_t i = 0; i < c.size(); ++i) require_finite(c[i], "c[" + std::to_string(i) + "]");
+  // Identically zero (or empty): no roots, as documented (every t would be one).
+  if (std::all_of(c.begin(), c.end(), [](T x) { return x == 0; })) return out;
   if (c.front() == 0) out.push_back(T(0));
   detail::bernstein_roots_rec<T>(c, T(0), T(1), 0, out);
   if (c.size() > 1 && c.back() == 0) out.push_back(T(1));
@@ -114,6 +119,8 @@ std::vector<T> bernstein_roots(std::span<const T> c, T merge = T(1e-10)) {
 /// h_k = sum_{i+j=k} C(m,i) C(n,j) / C(m+n,k) f_i g_j [Farin02, 5.7]. Cost O(mn).
 template <class T>
 std::vector<T> bernstein_product(std::span<const T> f, std::span<const T> g) {
+  if (f.empty()) throw InvalidArgument("f", "needs at least one coefficient");
+  if (g.empty()) throw InvalidArgument("g", "needs at least one coefficient");
   const int m = static_cast<int>(f.size()) - 1, n = static_cast<int>(g.size()) - 1;
   std::vector<T> h(static_cast<std::size_t>(m + n) + 1, T(0));
   const auto cm = binomial_row<T>(m), cn = binomial_row<T>(n), cmn = binomial_row<T>(m + n);

@@ -61,12 +61,18 @@ class Path {
   /// divided by (t_{i+1} - t_i)^k (chain rule).
   [[nodiscard]] VectorType derivative_at(T u, int k = 1) const {
     require_finite(u, "t");
+    if (k < 1) throw InvalidArgument("k", "derivative order must be >= 1, got " + std::to_string(k));
     return one_sided_derivative(segment_index(u), segment_domain(segment_index(u)).fraction(u), k);
   }
 
   /// The k-th derivative (k >= 0 gives the point as a vector) of segment i at its local
   /// parameter t, scaled to the path parameter: what continuity checks compare.
   [[nodiscard]] VectorType one_sided_derivative(std::size_t i, T t, int k) const {
+    if (i >= segments_.size()) {
+      throw InvalidArgument("segment", "must name a segment 0.." + std::to_string(segments_.size() - 1) + ", got " +
+                                           std::to_string(i));
+    }
+    require_finite(t, "t");
     const T h = segment_domain(i).length();
     return std::visit(
         [&](const auto& s) {

@@ -1,0 +1,113 @@
+// Properties of the algorithms across curve types: flattening within tolerance, C^r joins
+// built by cr_join_points pass is_cr, curvature under rigid motions and scaling, and path
+// bounds.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <vector>
+
+#include "../unit/test_support.hpp"
+#include "generators.hpp"
+
+namespace {
+
+using namespace casteljau;
+using P2 = Point<double, 2>;
+constexpr double eps = std::numeric_limits<double>::epsilon();
+
+// Every point of the curve is within tolerance of the polyline (guaranteed by the flatness
+// test on control points); checked at 1000 samples; vertices run from start to end.
+RC_GTEST_PROP(AlgoProperty, FlattenWithinTolerance, ()) {
+  const int n = *rc::gen::inRange(1, 11);
+  const Bezier<double, 2> c(prop::control_points<2>(n));
+  const double tol = std::pow(10.0, -*rc::gen::inRange(1, 5));
+  const auto poly = flatten(c, tol);
+  RC_ASSERT(poly.front() == c.points().front());
+  RC_ASSERT(poly.back() == c.points().back());
+  for (int i = 0; i <= 1000; ++i) RC_ASSERT(test::polyline_distance(c(i / 1000.0), poly) <= tol);
+  // Rational curves likewise.
+  const RationalBezier<double, 2> r(c.points(), prop::weights(n));
+  const auto rp = flatten(r, tol);
+  for (int i = 0; i <= 1000; ++i) RC_ASSERT(test::polyline_distance(r(i / 1000.0), rp) <= tol);
+}
+
+// cr_join_points for random degrees, interval lengths and orders: the joined path is C^r
+// at the joint. Derivative k (w.r.t. the path parameter) has size up to
+// D_max = max_k |c^(k)| / h^k; the construction's rounding is relative to it, so the
+// tolerance is 1e-10 (1 + D_max).
+RC_GTEST_PROP(AlgoProperty, CrJoinPointsMakeCrJoins, ()) {
+  const int n = *rc::gen::inRange(1, 7), m = *rc::gen::inRange(1, 7);
+  const int r = *rc::gen::inRange(0, m + 1);
+  const double h = *prop::coordinate(0.25, 4), g = *prop::coordinate(0.25, 4);
+  const Bezier<double, 2> prev(prop::control_points<2>(n));
+  auto Q = cr_join_points(prev, h, m, g, r);
+  RC_ASSERT(Q.size() == static_cast<std::size_t>(r) + 1);
+  while (Q.size() < static_cast<std::size_t>(m) + 1) Q.push_back(*prop::point<2>());
+  const Path<double, 2> p({prev, Bezier<double, 2>(Q)}, {0.0, h, h + g});
+  double dmax = 0;
+  for (int k = 0; k <= r; ++k) dmax = std::max(dmax, norm(joint_derivatives(p, 1, k).left));
+  // Re-differentiating the new segment amplifies the rounding of its points (size qmax)
+  // by m!/(m-k)! 2^k / g^k (k-th differences, scaled to the path parameter): with g = 1/4
+  // and k = 6 that is ~3e6, so this term, not the construction, dominates at high order.
+  double qmax = 0, amplify = 0;
+  for (const auto& q : Q) qmax = std::max(qmax, norm(q.to_vector()));
+  for (int k = 0; k <= r; ++k) {
+    double a = 1;
+    for (int j = 0; j < k; ++j) a *= 2.0 * (m - j) / g;
+    amplify = std::max(amplify, a);
+  }
+  const double tol = 1e-10 * (1 + dmax) + 16 * eps * qmax * amplify;
+  RC_ASSERT(is_cr(p, 1, r, tol));
+  RC_ASSERT(parametric_continuity(p, 1, r, tol) == r);
+  // C1 with a first derivative that is not small relative to tol is G1: the unit tangents
+  // differ by at most about tol / |c'| <= 1e-7.
+  if (r >= 1 && norm(joint_derivatives(p, 1, 1).left) > 1e-3 * (1 + dmax)) RC_ASSERT(is_g1(p, 1, tol, 1e-6));
+}
+
+// Curvature is invariant under rotations and translations, flips sign under a reflection,
+// and scales as 1/s under scaling by s. Away from points of near-zero speed the quotient
+// is well conditioned: relative 1e-9 (the speed enters cubed, and the map rounds the
+// control points once).
+RC_GTEST_PROP(AlgoProperty, CurvatureUnderSimilarities, ()) {
+  const int n = *rc::gen::inRange(2, 9);
+  const Bezier<double, 2> c(prop::control_points<2>(n));
+  const double t = *prop::parameter();
+  const double speed = norm(c.derivative_at(t));
+  RC_PRE(speed > 1e-3);
+  const double angle = *prop::coordinate(-3, 3), s = std::pow(2.0, *rc::gen::inRange(-20, 21)) * 1.5;
+  const auto rigid = rotation(angle) * Affine<double, 2>::translate({0.3, -0.7});
+  Affine<double, 2> mirror = Affine<double, 2>::identity();
+  mirror.linear[1][1] = -1;
+  const double k = *curvature(c, t);
+  const double scale = 1e-9 * (std::abs(k) + 1e-6 * std::pow(2.0 * n, 3) / (speed * speed * speed));
+  RC_ASSERT(std::abs(*curvature(c.transform(rigid), t) - k) <= scale);
+  RC_ASSERT(std::abs(*curvature(c.transform(mirror), t) + k) <= scale);
+  RC_ASSERT(std::abs(*curvature(c.transform(Affine<double, 2>::scale(s)), t) * s - k) <= scale);
+}
+
+// The tight box of a path is the union of its segments' tight boxes and contains samples.
+RC_GTEST_PROP(AlgoProperty, PathBounds, ()) {
+  const int k = *rc::gen::inRange(1, 5);
+  std::vector<Path<double, 2>::SegmentType> segs;
+  Box<double, 2> expected = Box<double, 2>::empty_box();
+  for (int i = 0; i < k; ++i) {
+    const int n = *rc::gen::inRange(1, 8);
+    if (*rc::gen::arbitrary<bool>()) {
+      const Bezier<double, 2> b(prop::control_points<2>(n));
+      expected.add(bounds(b));
+      segs.emplace_back(b);
+    } else {
+      const RationalBezier<double, 2> r(prop::control_points<2>(n), prop::weights(n));
+      expected.add(bounds(r));
+      segs.emplace_back(r);
+    }
+  }
+  const Path<double, 2> p(segs);
+  const auto b = bounds(p);
+  RC_ASSERT(b.min == expected.min);
+  RC_ASSERT(b.max == expected.max);
+  for (int i = 0; i <= 400; ++i) RC_ASSERT(b.contains(p(k * i / 400.0), 1e-13));
+}
+
+}  // namespace

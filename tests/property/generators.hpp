@@ -1,0 +1,49 @@
+// RapidCheck generators for the property tests: degrees, parameters and control points on
+// a grid of 2^-20 (so shrinking gives readable counterexamples and values are exact
+// binary fractions), in the box [-1, 1]^D unless stated.
+#pragma once
+
+#include <gtest/gtest.h>
+#include <rapidcheck.h>
+#include <rapidcheck/gtest.h>
+
+#include <cmath>
+
+#include <vector>
+
+#include "casteljau/casteljau.hpp"
+
+namespace casteljau::prop {
+
+/// A coordinate in [lo, hi] on a grid of (hi - lo) 2^-20.
+inline rc::Gen<double> coordinate(double lo = -1, double hi = 1) {
+  return rc::gen::map(rc::gen::inRange(0, (1 << 20) + 1),
+                      [lo, hi](int k) { return lo + (hi - lo) * static_cast<double>(k) * 0x1.0p-20; });
+}
+
+/// A parameter in [0, 1].
+inline rc::Gen<double> parameter() { return coordinate(0, 1); }
+
+template <int D>
+rc::Gen<Point<double, D>> point(double lo = -1, double hi = 1) {
+  return rc::gen::map(rc::gen::container<std::vector<double>>(D, coordinate(lo, hi)), [](const std::vector<double>& v) {
+    Point<double, D> p;
+    for (int d = 0; d < D; ++d) p[d] = v[static_cast<std::size_t>(d)];
+    return p;
+  });
+}
+
+/// Control points of a curve of degree n.
+template <int D>
+std::vector<Point<double, D>> control_points(int n, double lo = -1, double hi = 1) {
+  return *rc::gen::container<std::vector<Point<double, D>>>(static_cast<std::size_t>(n) + 1, point<D>(lo, hi));
+}
+
+/// Weights in [1/4, 4] (a log-uniform-ish spread: 2^[-2, 2]).
+inline std::vector<double> weights(int n) {
+  return *rc::gen::container<std::vector<double>>(
+      static_cast<std::size_t>(n) + 1,
+      rc::gen::map(rc::gen::inRange(-64, 65), [](int k) { return std::exp2(static_cast<double>(k) / 32); }));
+}
+
+}  // namespace casteljau::prop
