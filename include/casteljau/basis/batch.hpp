@@ -13,12 +13,31 @@ inline constexpr std::size_t block = 64;
 
 /// out[l] = sum_j a[j] ts[l]^j by Horner's rule, degree N fixed at compile time so the
 /// coefficients stay in registers, for l < m <= block.
+/// The coefficients are copied to locals first, so the loop reads only ts and writes only
+/// out: out may even be ts itself (element l is read before it is written).
 template <int N, class T>
 inline void horner_fixed(const T* a, const T* ts, T* out, std::size_t m) {
+  T c[N + 1];
+  for (int j = 0; j <= N; ++j) c[j] = a[j];
   for (std::size_t l = 0; l < m; ++l) {
     const T t = ts[l];
-    T r = a[N];
-    for (int j = N - 1; j >= 0; --j) r = r * t + a[j];
+    T r = c[N];
+    for (int j = N - 1; j >= 0; --j) r = r * t + c[j];
+    out[l] = r;
+  }
+}
+
+/// horner_fixed on a full block (m = block) into out, which must not overlap ts or a. The
+/// constant trip count and the no-overlap promise let compilers vectorise this without
+/// run-time checks, so it vectorises even under GCC's -O2 "very cheap" cost model.
+template <int N, class T>
+inline void horner_fixed_block(const T* __restrict a, const T* __restrict ts, T* __restrict out) {
+  T c[N + 1];
+  for (int j = 0; j <= N; ++j) c[j] = a[j];
+  for (std::size_t l = 0; l < block; ++l) {
+    const T t = ts[l];
+    T r = c[N];
+    for (int j = N - 1; j >= 0; --j) r = r * t + c[j];
     out[l] = r;
   }
 }
