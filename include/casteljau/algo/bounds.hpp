@@ -1,6 +1,7 @@
 // Tight axis-aligned bounds of curves over their domain, from the roots of the derivative.
 #pragma once
 
+#include <algorithm>
 #include <vector>
 
 #include "casteljau/basis/roots.hpp"
@@ -42,7 +43,11 @@ Box<T, D> bounds(const RationalBezier<T, D>& c) {
   const int n = c.degree();
   if (n < 1) return b;
   const auto& P = c.points();
-  const auto& w = c.weights();
+  // Scaling all weights by one constant leaves the curve unchanged; dividing by the
+  // largest keeps the products of weights below from overflowing (weights up to 1e308).
+  const T wmax = *std::max_element(c.weights().begin(), c.weights().end());
+  std::vector<T> w(c.weights());
+  for (T& x : w) x /= wmax;
   std::vector<T> W(w), dW(static_cast<std::size_t>(n)), A(w.size()), dA(static_cast<std::size_t>(n));
   for (int i = 0; i < n; ++i) dW[i] = w[i + 1] - w[i];
   for (int k = 0; k < D; ++k) {

@@ -29,11 +29,16 @@ T binomial(int n, int k) {
   if (k < 0 || k > n) return T(0);
   if (k > n - k) k = n - k;
   if (n <= 62) {
-    // r = C(n-k+i, i) after step i; the product fits in 128 bits and divides exactly.
-    __extension__ typedef unsigned __int128 wide;  // GCC and Clang
-    wide r = 1;
-    for (int i = 1; i <= k; ++i) r = r * static_cast<unsigned>(n - k + i) / static_cast<unsigned>(i);
-    return static_cast<T>(static_cast<unsigned long long>(r));
+    // r = C(n-k+i, i) after step i, i.e. r * m / i with m = n-k+i, which is exact. It is
+    // computed as (r / i) m + (r mod i) m / i: both terms are exact integers (r m and
+    // (r / i) i m are multiples of i, so (r mod i) m is too) and nothing exceeds the result
+    // (< 2^63 for n <= 62) or 62^2.
+    unsigned long long r = 1;
+    for (int i = 1; i <= k; ++i) {
+      const auto m = static_cast<unsigned long long>(n - k + i), ii = static_cast<unsigned long long>(i);
+      r = r / ii * m + r % ii * m / ii;
+    }
+    return static_cast<T>(r);
   }
   T r = 1;
   for (int i = 1; i <= k; ++i) r = r * static_cast<T>(n - k + i) / static_cast<T>(i);

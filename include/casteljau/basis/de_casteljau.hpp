@@ -34,6 +34,18 @@ class Scratch {
 template <class V, class T>
 V de_casteljau(std::span<const V> c, T t) {
   const std::size_t m = c.size();
+  // Degrees 0..3 unrolled: the same lerps in the same order, without the scratch buffer
+  // (most curves in practice are lines, quadratics and cubics).
+  switch (m) {
+    case 1: return c[0];
+    case 2: return lerp(c[0], c[1], t);
+    case 3: return lerp(lerp(c[0], c[1], t), lerp(c[1], c[2], t), t);
+    case 4: {
+      const V a = lerp(c[0], c[1], t), b = lerp(c[1], c[2], t), d = lerp(c[2], c[3], t);
+      return lerp(lerp(a, b, t), lerp(b, d, t), t);
+    }
+    default: break;
+  }
   detail::Scratch<V> buf(m);
   V* w = buf.data();
   std::copy(c.begin(), c.end(), w);

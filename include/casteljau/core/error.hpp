@@ -1,11 +1,15 @@
 // Error types of casteljau and the checks that every public entry runs on its input.
 #pragma once
 
+#include <array>
+#include <charconv>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <system_error>
+#include <type_traits>
 
 namespace casteljau {
 
@@ -44,12 +48,18 @@ class InvalidArgument : public std::invalid_argument {
 
 namespace detail {
 
-/// Formats a number for a message with enough digits to identify it.
+/// Formats a number for a message in the shortest form that reads back as the same
+/// value (1.1 prints as 1.1, not 1.1000000000000001), as the CLI writes numbers.
 template <class T>
 std::string format_number(T v) {
+  if constexpr (std::is_floating_point_v<T>) {
+    std::array<char, 64> buf{};
+    const auto r = std::to_chars(buf.data(), buf.data() + buf.size(), v);
+    if (r.ec == std::errc()) return std::string(buf.data(), r.ptr);
+  }
   std::ostringstream os;
   os.precision(17);
-  os << static_cast<long double>(v);
+  os << v;
   return os.str();
 }
 

@@ -58,6 +58,7 @@ class Bezier {
   /// (M^-1 has entries in [0, 1]).
   static Bezier from_power(std::span<const VectorType> a) {
     if (a.empty()) throw InvalidArgument("coefficients", "needs at least one power coefficient");
+    for (std::size_t j = 0; j < a.size(); ++j) require_finite_point(a[j], "coefficients[" + std::to_string(j) + "]");
     const int n = static_cast<int>(a.size()) - 1;
     const Matrix<T> m = power_to_bernstein_matrix<T>(n);
     std::vector<PointType> P(a.size());
@@ -149,9 +150,23 @@ class Bezier {
 
   /// The same curve at degree n + r (r >= 0), by Forrest's equations [Forrest72;
   /// Farin02, 5.1]: Q_i = sum_j C(r, i-j) C(n, j) / C(n+r, i) P_j, a convex combination.
+  /// Past degree 1000, where C(n+r, i) would overflow a double, one degree at a time
+  /// (Q_i = i/(k+1) P_{i-1} + (1 - i/(k+1)) P_i, also convex; error about r eps).
+  /// Cost O((n + r) min(n, r)), or O(r (n + r)) stepwise.
   [[nodiscard]] Bezier elevate(int r = 1) const {
     if (r < 0) throw InvalidArgument("times", "degree elevation count must be >= 0, got " + std::to_string(r));
     const int n = degree();
+    if (n + r > 1000) {
+      std::vector<PointType> cur(P_);
+      for (int k = n; k < n + r; ++k) {
+        std::vector<PointType> next(cur.size() + 1);
+        next.front() = cur.front();
+        next.back() = cur.back();
+        for (int i = 1; i <= k; ++i) next[i] = lerp(cur[i], cur[i - 1], static_cast<T>(i) / static_cast<T>(k + 1));
+        cur.swap(next);
+      }
+      return Bezier(std::move(cur));
+    }
     std::vector<PointType> Q(P_.size() + static_cast<std::size_t>(r));
     for (int i = 0; i <= n + r; ++i) {
       // Affine combination of the P_j written as P_lo + sum c_j (P_j - P_lo), exact for

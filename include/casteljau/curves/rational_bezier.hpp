@@ -45,6 +45,11 @@ class RationalBezier {
     for (std::size_t i = 0; i < P.size(); ++i) {
       const auto& q = h.points()[i];
       w[i] = q[D];
+      // Check the weight before dividing by it, so that a zero weight is reported as such
+      // rather than as the non-finite coordinate it would produce.
+      if (!(w[i] > 0)) {
+        throw InvalidArgument("weights[" + std::to_string(i) + "]", "weight must be > 0, got " + detail::format_number(w[i]));
+      }
       for (int d = 0; d < D; ++d) P[i][d] = q[d] / w[i];
     }
     return RationalBezier(std::move(P), std::move(w));
@@ -97,10 +102,13 @@ class RationalBezier {
         const T a = s * w[i], b = t * w[i + 1], ab = a + b;
         // For t outside [0, 1] the new weight may vanish: R has a pole there only if the
         // full denominator does, so fall back to the homogeneous form.
-        if (ab == 0 || !std::isfinite(ab)) return project(homogeneous()(t));
+        if (ab == 0 || !std::isfinite(ab)) return checked_projection(homogeneous()(t), t);
         p[i] = lerp(p[i], p[i + 1], b / ab);
         w[i] = ab;
       }
+    }
+    for (int d = 0; d < D; ++d) {
+      if (!std::isfinite(p[0][d])) return checked_projection(homogeneous()(t), t);
     }
     return p[0];
   }
@@ -115,6 +123,9 @@ class RationalBezier {
     hd[0] = h(t).to_vector();
     for (int j = 1; j <= k; ++j) hd[j] = h.derivative_at(t, j);
     const T w = hd[0][D];
+    if (w == 0) {
+      throw InvalidArgument("t", "the curve has a pole at t = " + detail::format_number(t) + " (its weight function vanishes there)");
+    }
     std::vector<VectorType> r(static_cast<std::size_t>(k) + 1);
     for (int d = 0; d < D; ++d) r[0][d] = hd[0][d] / w;
     for (int j = 1; j <= k; ++j) {
@@ -161,9 +172,17 @@ class RationalBezier {
   friend bool operator==(const RationalBezier&, const RationalBezier&) = default;
 
  private:
-  static PointType project(const Point<T, D + 1>& h) {
+  /// The point of homogeneous h, or InvalidArgument("t", ...) where the weight function
+  /// vanishes (a pole: possible only for t outside [0, 1], since all weights are > 0).
+  static PointType checked_projection(const Point<T, D + 1>& h, T t) {
     PointType p;
     for (int d = 0; d < D; ++d) p[d] = h[d] / h[D];
+    for (int d = 0; d < D; ++d) {
+      if (!std::isfinite(p[d])) {
+        throw InvalidArgument("t", "the curve has a pole at t = " + detail::format_number(t) +
+                                       " (its weight function vanishes there)");
+      }
+    }
     return p;
   }
 
