@@ -113,14 +113,23 @@ Response eval(const Json& req) {
         [&](const auto& c) {
           std::vector<OrderedJson> orders(static_cast<std::size_t>(k), OrderedJson::array());
           for (std::size_t j = 0; j < ts.size(); ++j) {
-            const auto p = c(ts[j]);
+            // The library names the parameter "t" (e.g. at a pole); the request calls it t[j].
+            const auto at_tj = [&](auto&& g) {
+              try {
+                return g();
+              } catch (const InvalidArgument& e) {
+                if (e.where() == "t") throw InvalidArgument(index_path("t", j), e.problem());
+                throw;
+              }
+            };
+            const auto p = at_tj([&] { return c(ts[j]); });
             if (!all_finite(p)) {
               throw InvalidArgument(index_path("t", j), "the curve's point at t = " + number_text(ts[j]) +
                                                             " is not finite (overflow, or a pole of a rational curve)");
             }
             points.push_back(io::to_json(p));
             for (int order = 1; order <= k; ++order) {
-              const auto d = c.derivative_at(ts[j], order);
+              const auto d = at_tj([&] { return c.derivative_at(ts[j], order); });
               if (!all_finite(d)) {
                 throw InvalidArgument(index_path("t", j), "the order " + std::to_string(order) + " derivative at t = " +
                                                               number_text(ts[j]) + " is not finite (overflow)");

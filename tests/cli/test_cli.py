@@ -114,6 +114,13 @@ class CliTest(unittest.TestCase):
 # ---------------------------------------------------------------------------------------
 
 class EvalTest(CliTest):
+    def test_pole_of_a_rational_curve_names_the_parameter(self):
+        # Weights 1 and 3: W(t) = 1 + 2t vanishes at t = -1/2 (outside the domain, where
+        # extrapolation is allowed): the second parameter is at fault, not the curve.
+        curve = {"type": "rational_bezier", "points": [[0, 0], [1, 0]], "weights": [1, 3]}
+        self.bad("eval", {"curve": curve, "t": [0, -0.5]}, where="t[1]", contains="pole")
+        self.bad("eval", {"curve": curve, "t": [-0.5], "derivatives": 1}, where="t[0]", contains="pole")
+
     def test_cubic_midpoint_closed_form(self):
         # P(1/2) = (P0 + 3 P1 + 3 P2 + P3) / 8: exact for small integers.
         r = self.ok("eval", {"curve": bezier(CUBIC), "t": [0.5]})

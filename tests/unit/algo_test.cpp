@@ -414,4 +414,38 @@ TEST(Flatten, BadToleranceThrows) {
   for (int i = 0; i <= 1000; ++i) EXPECT_LE(test::polyline_distance(far(i / 1000.0), poly), 1e-6);
 }
 
+// Scaling every weight by one constant leaves a rational curve unchanged, so its tight
+// box must not change either, even when the products of weights would overflow (1e300^2).
+TEST(Bounds, RationalWithHugeWeights) {
+  const double h = std::sqrt(0.5);
+  const RationalBezier<double, 2> unit({{1, 0}, {1, 1}, {0, 1}}, {1, h, 1});
+  const RationalBezier<double, 2> huge({{1, 0}, {1, 1}, {0, 1}}, {1e300, h * 1e300, 1e300});
+  const auto a = bounds(unit), b = bounds(huge);
+  for (int d = 0; d < 2; ++d) {
+    // The quarter circle's box is [0, 1]^2 (the arc is monotone in both coordinates).
+    EXPECT_NEAR(b.min[d], 0.0, 1e-15);
+    EXPECT_NEAR(b.max[d], 1.0, 1e-15);
+    EXPECT_NEAR(a.max[d], b.max[d], 1e-15);
+  }
+}
+
+// Past degree 1000 the binomials of Forrest's formula overflow a double; elevation then
+// goes one degree at a time. The curve must be unchanged: the degree-1203 curve must
+// reproduce the cubic's Bernstein sum, written out by hand below, to about r eps.
+TEST(Elevation, BeyondDegreeOneThousandKeepsTheCurve) {
+  const Bezier<double, 2> c{{0, 0}, {1, 2}, {3, 2}, {4, 0}};
+  const auto e = c.elevate(1200);
+  ASSERT_EQ(e.degree(), 1203);
+  for (double t : {0.0, 0.1, 0.37, 0.5, 0.9, 1.0}) {
+    const double s = 1 - t;
+    // sum B(i,3)(t) P_i by hand.
+    const double x = 3 * s * s * t * 1 + 3 * s * t * t * 3 + t * t * t * 4;
+    const double y = 3 * s * s * t * 2 + 3 * s * t * t * 2;
+    const auto p = e(t);
+    // 1200 convex steps, each rounding by <= 2 eps of max|P| = 4: about 1e-12 at most.
+    EXPECT_NEAR(p[0], x, 1e-12) << t;
+    EXPECT_NEAR(p[1], y, 1e-12) << t;
+  }
+}
+
 }  // namespace

@@ -200,4 +200,27 @@ TEST(Errors, BatchEvaluate) {
   EXPECT_INVALID_ARGUMENT(evaluate(q, std::span<const double>(ts), std::span<P2>(pts)), "out", "one point per parameter");
 }
 
+// Messages quote numbers in their shortest round-trip form, so a user sees the value they
+// wrote (1.1), not its 17-digit expansion (1.1000000000000001).
+TEST(Errors, MessagesQuoteNumbersAsWritten) {
+  const B2 c{{0, 0}, {1, 1}};
+  EXPECT_INVALID_ARGUMENT(c.split(1.1), "t", "got 1.1");
+  try {
+    (void)c.split(1.1);
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(e.problem(), "split parameter must lie in [0, 1], got 1.1");
+  }
+}
+
+// A rational curve with weights 1 and 3 has the weight function W(t) = 1 + 2t, which
+// vanishes at t = -1/2 (exactly representable): evaluating there is bad input naming t,
+// not a silent infinity.
+TEST(Errors, RationalPoleOutsideTheDomain) {
+  const R2 q({{0, 0}, {1, 0}}, {1, 3});
+  EXPECT_INVALID_ARGUMENT(q(-0.5), "t", "pole");
+  EXPECT_INVALID_ARGUMENT(q.derivative_at(-0.5, 1), "t", "pole");
+  // Next to the pole the curve is finite: R(t) = 3t / (1 + 2t).
+  EXPECT_DOUBLE_EQ(q(-0.25)[0], 3 * -0.25 / (1 + 2 * -0.25));
+}
+
 }  // namespace
