@@ -20,15 +20,6 @@ using namespace casteljau;
 constexpr double eps = std::numeric_limits<double>::epsilon();
 constexpr double fast_path_tol = 64 * eps;
 
-template <class F>
-void with_random_dimension(F&& f) {
-  switch (*rc::gen::inRange(1, 5)) {
-    case 1: f.template operator()<1>(); break;
-    case 2: f.template operator()<2>(); break;
-    case 3: f.template operator()<3>(); break;
-    default: f.template operator()<4>(); break;
-  }
-}
 
 std::vector<double> params() {
   // 0..300 parameters: crosses the 64-parameter block boundary several times.
@@ -36,7 +27,7 @@ std::vector<double> params() {
 }
 
 RC_GTEST_PROP(BatchProperty, SoAEqualsScalar, ()) {
-  with_random_dimension([]<int D>() {
+  prop::with_random_dimension([]<int D>() {
     const int n = *rc::gen::inRange(0, 31);
     const Bezier<double, D> c(prop::control_points<D>(n));
     const auto ts = params();
@@ -56,7 +47,7 @@ RC_GTEST_PROP(BatchProperty, SoAEqualsScalar, ()) {
 }
 
 RC_GTEST_PROP(BatchProperty, AoSEqualsScalar, ()) {
-  with_random_dimension([]<int D>() {
+  prop::with_random_dimension([]<int D>() {
     const int n = *rc::gen::inRange(0, 31);
     const Bezier<double, D> c(prop::control_points<D>(n));
     const auto ts = params();
@@ -70,7 +61,7 @@ RC_GTEST_PROP(BatchProperty, AoSEqualsScalar, ()) {
 }
 
 RC_GTEST_PROP(BatchProperty, ManyCurvesEqualScalar, ()) {
-  with_random_dimension([]<int D>() {
+  prop::with_random_dimension([]<int D>() {
     const int k = *rc::gen::inRange(0, 6);
     std::vector<Bezier<double, D>> curves;
     for (int i = 0; i < k; ++i) curves.emplace_back(prop::control_points<D>(*rc::gen::inRange(0, 31)));

@@ -20,15 +20,6 @@ using namespace casteljau;
 constexpr double eps = std::numeric_limits<double>::epsilon();
 
 /// Calls f.template operator()<D>() for a random D in 1..4.
-template <class F>
-void with_random_dimension(F&& f) {
-  switch (*rc::gen::inRange(1, 5)) {
-    case 1: f.template operator()<1>(); break;
-    case 2: f.template operator()<2>(); break;
-    case 3: f.template operator()<3>(); break;
-    default: f.template operator()<4>(); break;
-  }
-}
 
 template <class P>
 double diff(const P& a, const P& b) {
@@ -42,7 +33,7 @@ int degree() { return *rc::gen::inRange(1, 31); }
 // c(0) = P0 and c(1) = Pn exactly; c'(0) = n (P1 - P0), c'(1) = n (Pn - Pn-1): the same
 // one subtraction and one multiplication, so exactly equal.
 RC_GTEST_PROP(BezierProperty, EndPointsAndEndTangents, ()) {
-  with_random_dimension([]<int D>() {
+  prop::with_random_dimension([]<int D>() {
     const int n = degree();
     const auto P = prop::control_points<D>(n);
     const Bezier<double, D> c(P);
@@ -57,7 +48,7 @@ RC_GTEST_PROP(BezierProperty, EndPointsAndEndTangents, ()) {
 // coordinates are <= 2D + 2 in size; both sides carry an evaluation error (1.5 n eps of
 // that size) and the map's D-term sums (D eps): 4 (n + D) eps (2D + 2).
 RC_GTEST_PROP(BezierProperty, AffineInvariance, ()) {
-  with_random_dimension([]<int D>() {
+  prop::with_random_dimension([]<int D>() {
     const int n = degree();
     const Bezier<double, D> c(prop::control_points<D>(n));
     Affine<double, D> m;
@@ -117,7 +108,7 @@ double outside(const std::vector<Point<double, 2>>& h, const Point<double, 2>& p
 // dimension (within one evaluation's rounding, 2 n eps), and in 2D inside the hull
 // polygon within that rounding plus the half-plane test's own (a few eps).
 RC_GTEST_PROP(BezierProperty, ConvexHull, ()) {
-  with_random_dimension([]<int D>() {
+  prop::with_random_dimension([]<int D>() {
     const int n = degree();
     const auto P = prop::control_points<D>(n);
     const Bezier<double, D> c(P);
@@ -135,7 +126,7 @@ RC_GTEST_PROP(BezierProperty, ConvexHull, ()) {
 // are n levels of de Casteljau (1.5 n eps), evaluating them adds 1.5 n eps, the reference
 // evaluation 1.5 n eps, and the rounded parameter n eps: 8 n eps.
 RC_GTEST_PROP(BezierProperty, SplitReproducesCurve, ()) {
-  with_random_dimension([]<int D>() {
+  prop::with_random_dimension([]<int D>() {
     const int n = degree();
     const Bezier<double, D> c(prop::control_points<D>(n));
     const double t = *prop::parameter(), s = *prop::parameter();
@@ -151,7 +142,7 @@ RC_GTEST_PROP(BezierProperty, SplitReproducesCurve, ()) {
 // L = |1 - u| + |u| <= 2, so the tolerance is 8 n eps L^n, i.e. exponential in the degree
 // (this is why extrapolation is documented as losing accuracy). Inside [0, 1], L = 1.
 RC_GTEST_PROP(BezierProperty, PortionReproducesCurve, ()) {
-  with_random_dimension([]<int D>() {
+  prop::with_random_dimension([]<int D>() {
     const int n = degree();
     const Bezier<double, D> c(prop::control_points<D>(n));
     const double a = *prop::coordinate(-0.5, 1.5), b = *prop::coordinate(-0.5, 1.5), s = *prop::parameter();
@@ -169,7 +160,7 @@ RC_GTEST_PROP(BezierProperty, PortionReproducesCurve, ()) {
 // Degree elevation leaves the curve unchanged: its points are convex combinations (a
 // few eps each), then two evaluations of degrees n and n + r: 4 (n + r) eps.
 RC_GTEST_PROP(BezierProperty, ElevationLeavesCurveUnchanged, ()) {
-  with_random_dimension([]<int D>() {
+  prop::with_random_dimension([]<int D>() {
     const int n = degree(), r = *rc::gen::inRange(1, 6);
     const Bezier<double, D> c(prop::control_points<D>(n));
     const auto e = c.elevate(r);
@@ -184,7 +175,7 @@ RC_GTEST_PROP(BezierProperty, ElevationLeavesCurveUnchanged, ()) {
 // Gram matrix whose condition number grows like 4^m (documented: reliable to m ~ 25), so
 // the error is bounded by ~ 4^m eps times the data size; degrees 1..12 keep it below 1e-8.
 RC_GTEST_PROP(BezierProperty, ElevateThenReduceRoundTrip, ()) {
-  with_random_dimension([]<int D>() {
+  prop::with_random_dimension([]<int D>() {
     const int n = *rc::gen::inRange(1, 13), r = *rc::gen::inRange(1, 5);
     const Bezier<double, D> c(prop::control_points<D>(n));
     const bool keep = *rc::gen::arbitrary<bool>();
@@ -200,7 +191,7 @@ RC_GTEST_PROP(BezierProperty, ElevateThenReduceRoundTrip, ()) {
 // with |c'''| <= 8 n^3 (three differences of coordinates in [-1, 1]); rounding
 // 2 (1.5 n eps) / (2h) from the two evaluations.
 RC_GTEST_PROP(BezierProperty, DerivativeMatchesFiniteDifference, ()) {
-  with_random_dimension([]<int D>() {
+  prop::with_random_dimension([]<int D>() {
     const int n = degree();
     const Bezier<double, D> c(prop::control_points<D>(n));
     const double h = 1e-3 / n;
@@ -217,7 +208,7 @@ RC_GTEST_PROP(BezierProperty, DerivativeMatchesFiniteDifference, ()) {
 // times de Casteljau on the k-th differences (size <= 2^k), in a different order of the
 // scaling: relative 4 n eps of n^k 2^k.
 RC_GTEST_PROP(BezierProperty, DerivativeCurveMatchesDerivativeAt, ()) {
-  with_random_dimension([]<int D>() {
+  prop::with_random_dimension([]<int D>() {
     const int n = degree(), k = *rc::gen::inRange(1, 4);
     const Bezier<double, D> c(prop::control_points<D>(n));
     const double t = *prop::parameter();
@@ -231,7 +222,7 @@ RC_GTEST_PROP(BezierProperty, DerivativeCurveMatchesDerivativeAt, ()) {
 // the grid, the lerps (1-t) a + t b and t b + (1-t) a have the same two products, so
 // the values agree to rounding of the sums' order (bitwise equal without FMA contraction).
 RC_GTEST_PROP(BezierProperty, Reverse, ()) {
-  with_random_dimension([]<int D>() {
+  prop::with_random_dimension([]<int D>() {
     const int n = degree();
     const Bezier<double, D> c(prop::control_points<D>(n));
     RC_ASSERT(c.reverse().reverse() == c);
@@ -246,7 +237,7 @@ RC_GTEST_PROP(BezierProperty, Reverse, ()) {
 // 1/(2N) from one, where the coordinate is within |c''| (1/2N)^2 / 2 <= 4 n^2 / (8 N^2)
 // of the extreme value (|c''| <= 4 n^2 for coordinates in [-1, 1]).
 RC_GTEST_PROP(BezierProperty, TightBounds, ()) {
-  with_random_dimension([]<int D>() {
+  prop::with_random_dimension([]<int D>() {
     const int n = degree();
     const Bezier<double, D> c(prop::control_points<D>(n));
     const auto b = bounds(c), cb = c.control_bounds();

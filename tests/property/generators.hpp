@@ -46,4 +46,16 @@ inline std::vector<double> weights(int n) {
       rc::gen::map(rc::gen::inRange(-64, 65), [](int k) { return std::exp2(static_cast<double>(k) / 32); }));
 }
 
+/// Runs f.template operator()<D>() for a dimension D drawn from 1..4, so one property
+/// covers every dimension the run-time interfaces support.
+template <class F>
+void with_random_dimension(F&& f) {
+  switch (*rc::gen::inRange(1, 5)) {
+    case 1: f.template operator()<1>(); break;
+    case 2: f.template operator()<2>(); break;
+    case 3: f.template operator()<3>(); break;
+    default: f.template operator()<4>(); break;
+  }
+}
+
 }  // namespace casteljau::prop
