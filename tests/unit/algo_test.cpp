@@ -227,6 +227,30 @@ TEST(Continuity, C2CubicJoinClosedForm) {
 }
 
 // G1 but not C1: the tangents at the joint point the same way with different lengths.
+// Every joint of one path reported in order, each with a known answer:
+// joint 1: (3, 0) then (3.5, 0): a gap, so C^-1 and not G1;
+// joint 2: a line with derivative (2, 0) then a half-cubic with start derivative
+//   0.5 * 3 * (0.5, 0) = (0.75, 0): same point and direction, different speed: C0 and G1;
+// joint 3: the two halves of one cubic on unit intervals, i.e. one polynomial: C^inf,
+//   reported as the max_order asked for (3).
+TEST(Continuity, JointReportOverAWholePath) {
+  using B = Bezier<double, 2>;
+  const B c({{5.5, 0}, {6, 0}, {7, 1}, {8, 1}});
+  const auto halves = c.split(0.5);
+  const Path2 p({B({{0, 0}, {1, 1}, {2, 1}, {3, 0}}), B({{3.5, 0}, {5.5, 0}}), halves.left, halves.right}, {0, 1, 2, 3, 4});
+  const auto report = joint_continuity(p, 3, 1e-12, 1e-12);
+  ASSERT_EQ(report.size(), 3u);
+  const int parametric[] = {-1, 0, 3};
+  const bool g1[] = {false, true, true};
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_EQ(report[i].joint, i + 1);
+    EXPECT_EQ(report[i].parameter, static_cast<double>(i + 1));
+    EXPECT_EQ(report[i].parametric, parametric[i]) << "joint " << i + 1;
+    EXPECT_EQ(report[i].g1, g1[i]) << "joint " << i + 1;
+  }
+  EXPECT_TRUE(joint_continuity(Path2({halves.left}), 2, 1e-12, 1e-12).empty());
+}
+
 TEST(Continuity, G1ButNotC1) {
   const Bezier<double, 2> a{{0, 0}, {1, 1}, {2, 1}, {3, 1}};  // end derivative 3 (1, 0)
   const Bezier<double, 2> b{{3, 1}, {5, 1}, {6, 0}, {7, 2}};  // start derivative 3 (2, 0)

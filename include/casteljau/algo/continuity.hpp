@@ -94,6 +94,27 @@ int parametric_continuity(const Path<T, D>& p, std::size_t joint, int max_order,
   return r;
 }
 
+/// The continuity found at one interior break of a path.
+template <class T>
+struct JointContinuity {
+  std::size_t joint;  ///< index of the break, 1..k-1
+  T parameter;        ///< the break t_joint
+  int parametric;     ///< highest r <= max_order with C^r (see is_cr); -1 for a gap
+  bool g1;            ///< G1 (see is_g1); true whenever parametric >= 1 and the tangent is defined
+};
+
+/// The continuity at every interior break of the path, in order: parametric_continuity up
+/// to max_order and is_g1, with the same tolerances. Empty for a single segment.
+template <class T, int D>
+std::vector<JointContinuity<T>> joint_continuity(const Path<T, D>& p, int max_order, T tolerance, T angle_tolerance) {
+  std::vector<JointContinuity<T>> out;
+  for (std::size_t j = 1; j < p.size(); ++j) {
+    out.push_back({j, p.breaks()[j], parametric_continuity(p, j, max_order, tolerance),
+                   is_g1(p, j, tolerance, angle_tolerance)});
+  }
+  return out;
+}
+
 /// The first r + 1 control points Q_0..Q_r of a degree-m Bézier segment on an interval of
 /// length g that joins `previous` (on an interval of length h) with C^r: derivative k of
 /// the new segment at its start equals that of the previous one at its end, so
