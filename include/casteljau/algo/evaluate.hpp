@@ -31,8 +31,8 @@ namespace casteljau {
 enum class Store { automatic, cached, streaming };
 
 /// The batch fast path: the power form with Horner's rule for degree <= 3, where the
-/// conversion is accurate (max error 4.4e-16 x max |P| measured at degree 3, documented in
-/// docs/accuracy.md); above that, de Casteljau vectorised across parameters, which keeps
+/// conversion is accurate (max error 7.7e-16 measured at degree 3 on unit-box data against
+/// MPFR, tests/reference; docs/accuracy.md); above that, de Casteljau vectorised across parameters, which keeps
 /// de Casteljau's accuracy at every degree (6.7e-16 at degree 40 on unit-box data).
 inline constexpr int horner_max_degree = 3;
 
