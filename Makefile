@@ -4,8 +4,10 @@ JOBS ?= $(shell nproc)
 BUILD ?= build
 ASAN_BUILD ?= build-asan
 BENCH_BUILD ?= build-bench
+FUZZ_BUILD ?= build-fuzz
+FUZZ_SECONDS ?= 120
 
-.PHONY: deps build demo test test-release test-asan bench clean
+.PHONY: deps build demo test test-release test-asan bench fuzz clean
 
 deps:
 	@scripts/install-deps.sh build
@@ -37,5 +39,17 @@ bench:
 	cmake --build $(BENCH_BUILD) -j $(JOBS) --target casteljau_bench_w1_native casteljau_bench_w1_generic casteljau_bench_w2
 	/usr/bin/python3 bench/run.py $(BENCH_BUILD)
 
+# libFuzzer (clang) with ASan+UBSan on the command line's request handling, for
+# FUZZ_SECONDS; new inputs go to $(FUZZ_BUILD)/corpus, crashes to $(FUZZ_BUILD)/crash-*.
+# Copy a crash into tests/fuzz/corpus once fixed, so every `make test` replays it.
+fuzz:
+	@scripts/install-deps.sh build fuzz
+	cmake -S . -B $(FUZZ_BUILD) -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_COMPILER=clang++ \
+	  -DCASTELJAU_SANITIZE=ON -DCASTELJAU_FUZZ=ON
+	cmake --build $(FUZZ_BUILD) -j $(JOBS) --target casteljau_fuzz_request
+	mkdir -p $(FUZZ_BUILD)/corpus
+	cd $(FUZZ_BUILD) && tests/fuzz/casteljau_fuzz_request -max_total_time=$(FUZZ_SECONDS) -timeout=10 \
+	  -rss_limit_mb=4096 -artifact_prefix=$(abspath $(FUZZ_BUILD))/ corpus $(abspath tests/fuzz/corpus)
+
 clean:
-	rm -rf $(BUILD) $(ASAN_BUILD) $(BENCH_BUILD)
+	rm -rf $(BUILD) $(ASAN_BUILD) $(BENCH_BUILD) $(FUZZ_BUILD)

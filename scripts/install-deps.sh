@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Installs the Debian packages casteljau needs; idempotent, runs `apt-get update` only
-# when something is missing. Usage: scripts/install-deps.sh [build|bench]...
+# when something is missing. Usage: scripts/install-deps.sh [build|bench|fuzz]...
 #   build (default): compiler, CMake, libraries, test tools (enough for `make demo` and `make test`)
 #   bench: also the peer libraries benchmarked in bench/ (lib2geom, OpenCASCADE, MPFR)
+#   fuzz: also clang and its libFuzzer runtime (`make fuzz`)
 set -euo pipefail
 
 build_pkgs=(
@@ -11,6 +12,7 @@ build_pkgs=(
   libgtest-dev libgmock-dev librapidcheck-dev libbenchmark-dev
   libmpfr-dev libgmp-dev
 )
+fuzz_pkgs=(clang libclang-rt-dev)
 bench_pkgs=(lib2geom-dev libocct-modeling-data-dev libocct-foundation-dev libboost-dev libdouble-conversion-dev libgsl-dev)
 
 want=("${build_pkgs[@]}")
@@ -18,7 +20,8 @@ for arg in "$@"; do
   case "$arg" in
     build) ;;
     bench) want+=("${bench_pkgs[@]}") ;;
-    *) echo "install-deps.sh: unknown package set '$arg' (expected build or bench)" >&2; exit 2 ;;
+    fuzz) want+=("${fuzz_pkgs[@]}") ;;
+    *) echo "install-deps.sh: unknown package set '$arg' (expected build, bench or fuzz)" >&2; exit 2 ;;
   esac
 done
 
