@@ -387,11 +387,7 @@ Figure de_casteljau_construction() {
         doc.line(lower, end, thin("#c3cad2"));
       }
       const std::string colour = r == 0 ? "#222" : colours[r];
-      // Appended piecewise: g++ 12 misreports "P" + a + b as overlapping (-Wrestrict, GCC PR 105329).
-      std::string label = "P";
-      label += sub(static_cast<int>(i));
-      if (r > 0) label += sup(static_cast<int>(r));
-      doc.text(at, label, math(15, Anchor::start, colour));
+      doc.text(at, "P" + sub(static_cast<int>(i)) + (r > 0 ? sup(static_cast<int>(r)) : ""), math(15, Anchor::start, colour));
       auto s = small(9.5, Anchor::start, text_grey);
       s.dy = 13;
       const P2& q = level[r][i];
