@@ -48,12 +48,12 @@ Box<T, D> bounds(const RationalBezier<T, D>& c) {
   const T wmax = *std::max_element(c.weights().begin(), c.weights().end());
   std::vector<T> w(c.weights());
   for (T& x : w) x /= wmax;
-  std::vector<T> W(w), dW(static_cast<std::size_t>(n)), A(w.size()), dA(static_cast<std::size_t>(n));
+  std::vector<T> dW(static_cast<std::size_t>(n)), A(w.size()), dA(static_cast<std::size_t>(n));
   for (int i = 0; i < n; ++i) dW[i] = w[i + 1] - w[i];
   for (int k = 0; k < D; ++k) {
     for (int i = 0; i <= n; ++i) A[i] = w[i] * P[i][k];
     for (int i = 0; i < n; ++i) dA[i] = A[i + 1] - A[i];
-    const auto p1 = bernstein_product<T>(dA, W), p2 = bernstein_product<T>(A, dW);
+    const auto p1 = bernstein_product<T>(dA, w), p2 = bernstein_product<T>(A, dW);
     std::vector<T> num(p1.size());
     for (std::size_t i = 0; i < num.size(); ++i) num[i] = p1[i] - p2[i];
     for (T r : bernstein_roots<T>(num)) {

@@ -36,6 +36,20 @@ JointDerivatives<T, D> joint_derivatives(const Path<T, D>& p, std::size_t joint,
   return {p.one_sided_derivative(joint - 1, T(1), k), p.one_sided_derivative(joint, T(0), k)};
 }
 
+namespace detail {
+template <class T>
+void require_tolerance_nonnegative(T tolerance) {
+  require_finite(tolerance, "tolerance");
+  if (tolerance < 0) throw InvalidArgument("tolerance", "must be >= 0, got " + format_number(tolerance));
+}
+/// Whether the k-th derivatives on both sides of the joint agree within tolerance.
+template <class T, int D>
+bool order_matches(const Path<T, D>& p, std::size_t joint, int k, T tolerance) {
+  const auto d = joint_derivatives(p, joint, k);
+  return norm(d.left - d.right) <= tolerance;
+}
+}  // namespace detail
+
 /// Whether the path is C^r at the joint: |left^(k) - right^(k)| <= tolerance for every
 /// k = 0..r, the derivatives taken with respect to the path parameter (so for Bézier
 /// segments of degrees n, m on intervals h, g: n!/(n-k)! Delta^k P_{n-k} / h^k against
@@ -43,12 +57,10 @@ JointDerivatives<T, D> joint_derivatives(const Path<T, D>& p, std::size_t joint,
 /// parameter unit^k.
 template <class T, int D>
 bool is_cr(const Path<T, D>& p, std::size_t joint, int r, T tolerance) {
-  require_finite(tolerance, "tolerance");
-  if (tolerance < 0) throw InvalidArgument("tolerance", "must be >= 0, got " + detail::format_number(tolerance));
+  detail::require_tolerance_nonnegative(tolerance);
   if (r < 0) throw InvalidArgument("r", "continuity order must be >= 0, got " + std::to_string(r));
   for (int k = 0; k <= r; ++k) {
-    const auto d = joint_derivatives(p, joint, k);
-    if (norm(d.left - d.right) > tolerance) return false;
+    if (!detail::order_matches(p, joint, k, tolerance)) return false;
   }
   return true;
 }
@@ -89,8 +101,9 @@ bool is_g1(const Path<T, D>& p, std::size_t joint, T tolerance, T angle_toleranc
 template <class T, int D>
 int parametric_continuity(const Path<T, D>& p, std::size_t joint, int max_order, T tolerance) {
   if (max_order < 0) throw InvalidArgument("max_order", "must be >= 0, got " + std::to_string(max_order));
-  int r = -1;
-  while (r < max_order && is_cr(p, joint, r + 1, tolerance)) ++r;
+  detail::require_tolerance_nonnegative(tolerance);
+  int r = -1;  // each order compared once, lowest first
+  while (r < max_order && detail::order_matches(p, joint, r + 1, tolerance)) ++r;
   return r;
 }
 
@@ -132,17 +145,18 @@ std::vector<Point<T, D>> cr_join_points(const Bezier<T, D>& previous, T h, int m
   std::vector<Point<T, D>> Q;
   Q.push_back(previous(T(1)));
   for (int k = 1; k <= r; ++k) {
-    // Delta^k Q_0 = D_k g^k (m-k)!/m!, and Delta^k Q_0 = sum_i (-1)^(k-i) C(k,i) Q_i.
+    // Required: Delta^k Q_0 = D_k (g / h)^k (m-k)!/m!, D_k being the previous segment's
+    // derivative in its own parameter (D_k / h^k is the path derivative).
     Vector<T, D> delta = previous.derivative_at(T(1), k);
     for (int j = 0; j < k; ++j) delta *= g / h / static_cast<T>(m - j);
-    // The scaling above divides by h^k and multiplies by g^k.
+    // Delta^k Q_0 = sum_{i<=k} (-1)^(k-i) C(k,i) Q_i. The coefficients sum to 0 for k >= 1,
+    // so offsets e_i = Q_i - Q_0 may replace the points (e_0 = 0):
+    // e_k = Delta^k Q_0 - sum_{i<k} (-1)^(k-i) C(k,i) e_i.
     Vector<T, D> rest{};
     for (int i = 0; i < k; ++i) {
       const T coef = binomial<T>(k, i) * (((k - i) % 2 == 0) ? T(1) : T(-1));
       rest += coef * (Q[static_cast<std::size_t>(i)] - Q[0]);
     }
-    // Q_k - Q_0 + rest' = delta where rest' accounts for the Q_0 terms: sum_i (-1)^(k-i)
-    // C(k,i) equals 0 for k >= 1, so offsets from Q_0 can replace the points.
     Q.push_back(Q[0] + (delta - rest));
   }
   return Q;

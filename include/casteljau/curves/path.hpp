@@ -62,7 +62,8 @@ class Path {
   [[nodiscard]] VectorType derivative_at(T u, int k = 1) const {
     require_finite(u, "t");
     if (k < 1) throw InvalidArgument("k", "derivative order must be >= 1, got " + std::to_string(k));
-    return one_sided_derivative(segment_index(u), segment_domain(segment_index(u)).fraction(u), k);
+    const std::size_t i = segment_index(u);
+    return one_sided_derivative(i, segment_domain(i).fraction(u), k);
   }
 
   /// The k-th derivative (k >= 0 gives the point as a vector) of segment i at its local
