@@ -26,7 +26,7 @@ int main() {
 
   // The tight box comes from the roots of the derivative, not the control points.
   const auto box = bounds(c), loose = c.control_bounds();
-  std::printf("bounds y in [%g, %g]; control points reach %g\n", box.min[1], box.max[1], loose.max[1]);
+  std::printf("bounds y in [%g, %g]; control points reach %g\n", box.lo[1], box.hi[1], loose.hi[1]);
 
   // An exact quarter circle: weights 1, cos(45 deg), 1.
   const auto arc = RationalBezier<double, 2>::circular_arc(P(0, 0), 1.0, 0.0, std::numbers::pi / 2);

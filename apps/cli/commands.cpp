@@ -203,7 +203,7 @@ Response bounds(const Json& req) {
     std::visit(
         [&](const auto& c) {
           const auto box = casteljau::bounds(c);
-          r.json = OrderedJson{{"min", io::to_json(box.min)}, {"max", io::to_json(box.max)}};
+          r.json = OrderedJson{{"min", io::to_json(box.lo)}, {"max", io::to_json(box.hi)}};
         },
         curve);
   });

@@ -219,8 +219,8 @@ double polygon_area(std::span<const P2> poly) {
 
 Box2 grown(Box2 b, double m) {
   for (int i = 0; i < 2; ++i) {
-    b.min[i] -= m;
-    b.max[i] += m;
+    b.lo[i] -= m;
+    b.hi[i] += m;
   }
   return b;
 }
@@ -231,29 +231,29 @@ PageMap graph_panel(SvgDocument& doc, const PageRect& plot, const Box2& model, c
                     const std::vector<double>& yt, const std::string& x_name, const std::string& y_name) {
   const PageMap map = PageMap::fit(model, plot, Aspect::stretch);
   doc.set_map(map);
-  for (const double y : yt) doc.line({model.min[0], y}, {model.max[0], y}, thin("#e3e6ea"));
-  for (const double x : xt) doc.line({x, model.min[1]}, {x, model.max[1]}, thin("#e3e6ea"));
-  doc.line({model.min[0], model.min[1]}, {model.max[0], model.min[1]}, thin("#9aa3ad"));
-  doc.line({model.min[0], model.min[1]}, {model.min[0], model.max[1]}, thin("#9aa3ad"));
+  for (const double y : yt) doc.line({model.lo[0], y}, {model.hi[0], y}, thin("#e3e6ea"));
+  for (const double x : xt) doc.line({x, model.lo[1]}, {x, model.hi[1]}, thin("#e3e6ea"));
+  doc.line({model.lo[0], model.lo[1]}, {model.hi[0], model.lo[1]}, thin("#9aa3ad"));
+  doc.line({model.lo[0], model.lo[1]}, {model.lo[0], model.hi[1]}, thin("#9aa3ad"));
   const double xs = xt.size() > 1 ? xt[1] - xt[0] : 1, ys = yt.size() > 1 ? yt[1] - yt[0] : 1;
-  for (const double x : xt) doc.text({x, model.min[1]}, io::tick_label(x, xs), [] { auto s = small(10); s.dy = 14; return s; }());
+  for (const double x : xt) doc.text({x, model.lo[1]}, io::tick_label(x, xs), [] { auto s = small(10); s.dy = 14; return s; }());
   for (const double y : yt) {
     auto s = small(10, Anchor::end);
     s.dx = -5;
     s.dy = 3.5;
-    doc.text({model.min[0], y}, io::tick_label(y, ys), s);
+    doc.text({model.lo[0], y}, io::tick_label(y, ys), s);
   }
   if (!x_name.empty()) {
     auto s = math(13, Anchor::end, text_grey);
     s.dy = 14;
     s.dx = 14;
-    doc.text({model.max[0], model.min[1]}, x_name, s);
+    doc.text({model.hi[0], model.lo[1]}, x_name, s);
   }
   if (!y_name.empty()) {
     auto s = math(13, Anchor::start, text_grey);
     s.dy = -6;
     s.dx = -4;
-    doc.text({model.min[0], model.max[1]}, y_name, s);
+    doc.text({model.lo[0], model.hi[1]}, y_name, s);
   }
   return map;
 }
@@ -840,7 +840,7 @@ Figure tight_bounds() {
   doc.title("Tight bounds and control bounds");
   doc.set_map(PageMap::fit(grown(cb, 0.3), {40, 20, 560, 320}));
   auto rect_pts = [](const Box2& b) {
-    return std::vector<P2>{b.min, {b.max[0], b.min[1]}, b.max, {b.min[0], b.max[1]}};
+    return std::vector<P2>{b.lo, {b.hi[0], b.lo[1]}, b.hi, {b.lo[0], b.hi[1]}};
   };
   doc.polygon(rect_pts(cb), Paint{.stroke = "#adb5bd", .stroke_width = 1.2, .dash = "6 4"});
   doc.polygon(rect_pts(tb), Paint{.stroke = "#2a9d5c", .stroke_width = 1.8, .fill = "#2a9d5c", .fill_opacity = 0.08});
@@ -865,10 +865,10 @@ Figure tight_bounds() {
   doc.text({668, 112}, "bounds(): tight", small(12, Anchor::start, "#222"));
   dot(doc, {645, 134}, "#2a9d5c", 4.5);
   doc.text({668, 138}, "extremes, roots of x\u2032(t), y\u2032(t)", small(12, Anchor::start, "#222"));
-  auto area = [](const Box2& b) { return (b.max[0] - b.min[0]) * (b.max[1] - b.min[1]); };
+  auto area = [](const Box2& b) { return (b.hi[0] - b.lo[0]) * (b.hi[1] - b.lo[1]); };
   double outside = 0;
   for (const auto& p : samples(c, 5000)) {
-    for (int k = 0; k < 2; ++k) outside = std::max({outside, tb.min[k] - p[k], p[k] - tb.max[k]});
+    for (int k = 0; k < 2; ++k) outside = std::max({outside, tb.lo[k] - p[k], p[k] - tb.hi[k]});
   }
   std::string ts_text;
   for (std::size_t i = 0; i < ts.size(); ++i) ts_text += (i ? ", " : "") + fixed(ts[i], 4);
@@ -908,8 +908,8 @@ Figure hodograph() {
   rb.add(P2{0.0, 0.0});
   doc.set_map(PageMap::fit(grown(rb, 0.6), {540, 30, 320, 280}));
   const Box2 v = doc.map().view({540, 30, 320, 280});
-  doc.line({v.min[0], 0.0}, {v.max[0], 0.0}, thin("#ced4da"));
-  doc.line({0.0, v.min[1]}, {0.0, v.max[1]}, thin("#ced4da"));
+  doc.line({v.lo[0], 0.0}, {v.hi[0], 0.0}, thin("#ced4da"));
+  doc.line({0.0, v.lo[1]}, {0.0, v.hi[1]}, thin("#ced4da"));
   doc.polyline(h.points(), polygon_paint());
   doc.curve(h, curve_paint("#6c757d", 2.2));
   control_points(doc, h.points());

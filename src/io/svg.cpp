@@ -151,16 +151,16 @@ PageMap PageMap::fit(const Box2& model_in, const PageRect& page, Aspect aspect) 
   Box2 model = model_in;
   if (model.empty()) model = Box2{{-1.0, -1.0}, {1.0, 1.0}};
   for (int i = 0; i < 2; ++i) {
-    require_finite(model.min[i], i == 0 ? "model.min.x" : "model.min.y");
-    require_finite(model.max[i], i == 0 ? "model.max.x" : "model.max.y");
+    require_finite(model.lo[i], i == 0 ? "model.lo.x" : "model.lo.y");
+    require_finite(model.hi[i], i == 0 ? "model.hi.x" : "model.hi.y");
   }
   const std::array<double, 2> avail = {page.width, page.height};
   std::array<double, 2> centre{}, half{}, scale{};
   std::array<bool, 2> flat{};
   for (int i = 0; i < 2; ++i) {
     // Halves first: max - min may overflow, max/2 - min/2 does not.
-    centre[i] = model.min[i] / 2 + model.max[i] / 2;
-    half[i] = model.max[i] / 2 - model.min[i] / 2;
+    centre[i] = model.lo[i] / 2 + model.hi[i] / 2;
+    half[i] = model.hi[i] / 2 - model.lo[i] / 2;
     // Flat: no extent, or one below the resolution of the position (1e-12 relative), or
     // so small that the scale would overflow.
     flat[i] = !(half[i] > std::abs(centre[i]) * 1e-12) || !std::isfinite(avail[i] / half[i]);
@@ -578,31 +578,31 @@ void draw_axes(SvgDocument& doc, const PageMap& map, const RenderStyle& style, b
   const TextStyle label{.size = 10, .colour = "#555", .family = "sans-serif"};
   const double tick_px = 4;
   const int count_x = std::max(2, static_cast<int>(style.width / 90)), count_y = std::max(2, static_cast<int>(style.height / 70));
-  if (v.min[1] <= 0 && 0 <= v.max[1]) {
-    doc.arrow({v.min[0], 0.0}, {v.max[0], 0.0}, axis);
-    const auto tx = nice_ticks(v.min[0], v.max[0], count_x);
+  if (v.lo[1] <= 0 && 0 <= v.hi[1]) {
+    doc.arrow({v.lo[0], 0.0}, {v.hi[0], 0.0}, axis);
+    const auto tx = nice_ticks(v.lo[0], v.hi[0], count_x);
     const double step = tx.size() > 1 ? tx[1] - tx[0] : 1;
     for (const double x : tx) {
-      if (x == 0 && v.min[0] <= 0 && 0 <= v.max[0]) continue;  // the origin belongs to both axes
+      if (x == 0 && v.lo[0] <= 0 && 0 <= v.hi[0]) continue;  // the origin belongs to both axes
       const Point2 p = map({x, 0.0});
       if (p[0] > style.width - 12) continue;  // keep clear of the arrow head
       doc.line({x, 0.0}, map.to_model({p[0], p[1] + tick_px}), grid);
       doc.text({x, 0.0}, tick_label(x, step), TextStyle{.size = label.size, .colour = label.colour, .anchor = Anchor::middle, .dy = 15, .family = label.family});
     }
-    doc.text({v.max[0], 0.0}, graphs ? "t" : "x", TextStyle{.size = 12, .colour = "#555", .anchor = Anchor::end, .italic = true, .dx = -4, .dy = -6, .family = "serif"});
+    doc.text({v.hi[0], 0.0}, graphs ? "t" : "x", TextStyle{.size = 12, .colour = "#555", .anchor = Anchor::end, .italic = true, .dx = -4, .dy = -6, .family = "serif"});
   }
-  if (v.min[0] <= 0 && 0 <= v.max[0]) {
-    doc.arrow({0.0, v.min[1]}, {0.0, v.max[1]}, axis);
-    const auto ty = nice_ticks(v.min[1], v.max[1], count_y);
+  if (v.lo[0] <= 0 && 0 <= v.hi[0]) {
+    doc.arrow({0.0, v.lo[1]}, {0.0, v.hi[1]}, axis);
+    const auto ty = nice_ticks(v.lo[1], v.hi[1], count_y);
     const double step = ty.size() > 1 ? ty[1] - ty[0] : 1;
     for (const double y : ty) {
-      if (y == 0 && v.min[1] <= 0 && 0 <= v.max[1]) continue;
+      if (y == 0 && v.lo[1] <= 0 && 0 <= v.hi[1]) continue;
       const Point2 p = map({0.0, y});
       if (p[1] < 12) continue;
       doc.line({0.0, y}, map.to_model({p[0] - tick_px, p[1]}), grid);
       doc.text({0.0, y}, tick_label(y, step), TextStyle{.size = label.size, .colour = label.colour, .anchor = Anchor::end, .dx = -6, .dy = 3.5, .family = label.family});
     }
-    doc.text({0.0, v.max[1]}, "y", TextStyle{.size = 12, .colour = "#555", .italic = true, .dx = 8, .dy = 10, .family = "serif"});
+    doc.text({0.0, v.hi[1]}, "y", TextStyle{.size = 12, .colour = "#555", .italic = true, .dx = 8, .dy = 10, .family = "serif"});
   }
 }
 

@@ -187,8 +187,8 @@ TEST(RenderSvg, RationalGraphIsTheFunction) {
   int checked_points = 0;
   for (auto it = std::sregex_iterator(d.begin(), d.end(), pt); it != std::sregex_iterator(); ++it) {
     const double t = std::stod((*it)[1]) / 1000, y_page = std::stod((*it)[2]);
-    const double y = b.max[0] - y_page / 1000 * (b.max[0] - b.min[0]);
-    EXPECT_NEAR(r(t)[0], y, 2e-3 * (b.max[0] - b.min[0])) << "t = " << t;
+    const double y = b.hi[0] - y_page / 1000 * (b.hi[0] - b.lo[0]);
+    EXPECT_NEAR(r(t)[0], y, 2e-3 * (b.hi[0] - b.lo[0])) << "t = " << t;
     ++checked_points;
   }
   EXPECT_GT(checked_points, 10);

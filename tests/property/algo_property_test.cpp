@@ -105,8 +105,8 @@ RC_GTEST_PROP(AlgoProperty, PathBounds, ()) {
   }
   const Path<double, 2> p(segs);
   const auto b = bounds(p);
-  RC_ASSERT(b.min == expected.min);
-  RC_ASSERT(b.max == expected.max);
+  RC_ASSERT(b.lo == expected.lo);
+  RC_ASSERT(b.hi == expected.hi);
   for (int i = 0; i <= 400; ++i) RC_ASSERT(b.contains(p(k * i / 400.0), 1e-13));
 }
 

@@ -251,10 +251,10 @@ RC_GTEST_PROP(BezierProperty, TightBounds, ()) {
       seen.add(p);
     }
     for (int d = 0; d < D; ++d) {
-      RC_ASSERT(b.min[d] >= cb.min[d] - round);
-      RC_ASSERT(b.max[d] <= cb.max[d] + round);
-      RC_ASSERT(seen.min[d] - b.min[d] <= touch);
-      RC_ASSERT(b.max[d] - seen.max[d] <= touch);
+      RC_ASSERT(b.lo[d] >= cb.lo[d] - round);
+      RC_ASSERT(b.hi[d] <= cb.hi[d] + round);
+      RC_ASSERT(seen.lo[d] - b.lo[d] <= touch);
+      RC_ASSERT(b.hi[d] - seen.hi[d] <= touch);
     }
   });
 }

@@ -125,8 +125,8 @@ RC_GTEST_PROP(RationalProperty, TightBounds, ()) {
   const double round = 16.0 * n * eps;
   for (int i = 0; i <= 500; ++i) RC_ASSERT(b.contains(r(i / 500.0), round));
   for (int d = 0; d < 2; ++d) {
-    RC_ASSERT(b.min[d] >= cb.min[d] - round);
-    RC_ASSERT(b.max[d] <= cb.max[d] + round);
+    RC_ASSERT(b.lo[d] >= cb.lo[d] - round);
+    RC_ASSERT(b.hi[d] <= cb.hi[d] + round);
   }
 }
 

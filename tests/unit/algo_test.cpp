@@ -33,21 +33,21 @@ TEST(Bounds, CubicWithInteriorExtremaFromQuadratic) {
   ASSERT_GT(ymax, 0.5);  // interior, not an end point
   ASSERT_LT(ymin, 0.0);
   const auto b = bounds(c);
-  EXPECT_NEAR(b.min[0], xmin, 8 * eps);
-  EXPECT_NEAR(b.max[0], xmax, 8 * eps);
-  EXPECT_NEAR(b.min[1], ymin, 8 * eps);
-  EXPECT_NEAR(b.max[1], ymax, 8 * eps);
+  EXPECT_NEAR(b.lo[0], xmin, 8 * eps);
+  EXPECT_NEAR(b.hi[0], xmax, 8 * eps);
+  EXPECT_NEAR(b.lo[1], ymin, 8 * eps);
+  EXPECT_NEAR(b.hi[1], ymax, 8 * eps);
   // control_bounds is the conservative box of the points.
   const auto cb = c.control_bounds();
-  EXPECT_EQ(cb.min, P2(-1, -2));
-  EXPECT_EQ(cb.max, P2(2, 3));
+  EXPECT_EQ(cb.lo, P2(-1, -2));
+  EXPECT_EQ(cb.hi, P2(2, 3));
 }
 
 // A quadratic with its extremum at t = 1/2: (0,0), (1,2), (2,0) peaks at y = 1 (exact).
 TEST(Bounds, QuadraticPeak) {
   const auto b = bounds(Bezier<double, 2>{{0, 0}, {1, 2}, {2, 0}});
-  EXPECT_EQ(b.min, P2(0, 0));
-  EXPECT_EQ(b.max, P2(2, 1));
+  EXPECT_EQ(b.lo, P2(0, 0));
+  EXPECT_EQ(b.hi, P2(2, 1));
 }
 
 // Path bounds are the union of the segments' boxes.
@@ -55,8 +55,8 @@ TEST(Bounds, PathUnion) {
   using Path2 = Path<double, 2>;
   const Path2 p({Bezier<double, 2>{{0, 0}, {1, 2}, {2, 0}}, Bezier<double, 2>{{2, 0}, {3, -2}, {4, 0}}});
   const auto b = bounds(p);
-  EXPECT_EQ(b.min, P2(0, -1));
-  EXPECT_EQ(b.max, P2(4, 1));
+  EXPECT_EQ(b.lo, P2(0, -1));
+  EXPECT_EQ(b.hi, P2(4, 1));
 }
 
 // --- Bernstein roots [LaneRiesenfeld81] -------------------------------------------------------
@@ -447,9 +447,9 @@ TEST(Bounds, RationalWithHugeWeights) {
   const auto a = bounds(unit), b = bounds(huge);
   for (int d = 0; d < 2; ++d) {
     // The quarter circle's box is [0, 1]^2 (the arc is monotone in both coordinates).
-    EXPECT_NEAR(b.min[d], 0.0, 1e-15);
-    EXPECT_NEAR(b.max[d], 1.0, 1e-15);
-    EXPECT_NEAR(a.max[d], b.max[d], 1e-15);
+    EXPECT_NEAR(b.lo[d], 0.0, 1e-15);
+    EXPECT_NEAR(b.hi[d], 1.0, 1e-15);
+    EXPECT_NEAR(a.hi[d], b.hi[d], 1e-15);
   }
 }
 

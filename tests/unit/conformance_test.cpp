@@ -175,8 +175,8 @@ TYPED_TEST(Conformance, TightBounds) {
   const auto b = bounds(c), cb = c.control_bounds();
   for (double t : params(c, 500)) EXPECT_TRUE(b.contains(c(t), 1e-14)) << "t=" << t;
   for (int d = 0; d < TypeParam::dimension; ++d) {
-    EXPECT_GE(b.min[d], cb.min[d]);
-    EXPECT_LE(b.max[d], cb.max[d]);
+    EXPECT_GE(b.lo[d], cb.lo[d]);
+    EXPECT_LE(b.hi[d], cb.hi[d]);
   }
 }
 
@@ -197,7 +197,7 @@ void exercise_scalar_type() {
   EXPECT_NEAR(std::hypot(p[0], p[1]), T(1), 8 * e);
   EXPECT_NEAR(*curvature(q, T(0.3)), T(1), 64 * e);
   const auto b = bounds(q);
-  EXPECT_NEAR(b.max[0], T(1), 4 * e);
+  EXPECT_NEAR(b.hi[0], T(1), 4 * e);
   const Path<T, 2> path({Bezier<T, 2>{{0, 0}, {1, 1}}, q});
   EXPECT_EQ(path(T(1)), (Point<T, 2>{1, 0}));
   const auto poly = flatten(path, T(1e-3));
@@ -217,7 +217,7 @@ TEST(Instantiations, OneAndFourDimensions) {
   const Bezier<double, 1> c1{Point<double, 1>(0.0), Point<double, 1>(2.0), Point<double, 1>(1.0)};
   EXPECT_EQ(c1(0.5)[0], 1.25);
   // x(t) = 4t - 3t^2 peaks at t = 2/3 (the root is found to a few eps; flat there).
-  EXPECT_NEAR(bounds(c1).max[0], 4.0 / 3, 4 * std::numeric_limits<double>::epsilon());
+  EXPECT_NEAR(bounds(c1).hi[0], 4.0 / 3, 4 * std::numeric_limits<double>::epsilon());
   const Bezier<double, 4> c4{{0, 0, 0, 0}, {1, 1, 1, 1}, {2, 0, 2, -2}};
   EXPECT_EQ(c4(0.5), (Point<double, 4>{1, 0.5, 1, 0}));
   EXPECT_EQ(c4.derivative_at(0.0), (Vector<double, 4>{2, 2, 2, 2}));

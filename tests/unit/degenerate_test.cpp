@@ -47,11 +47,11 @@ TEST_P(DegenerateFixture, EvaluationFiniteAndInsideControlBox) {
 TEST_P(DegenerateFixture, TightBounds) {
   const auto& f = GetParam();
   const auto b = bounds(f.curve), cb = f.curve.control_bounds();
-  ASSERT_TRUE(test::all_finite(b.min));
-  ASSERT_TRUE(test::all_finite(b.max));
+  ASSERT_TRUE(test::all_finite(b.lo));
+  ASSERT_TRUE(test::all_finite(b.hi));
   for (int d = 0; d < 2; ++d) {
-    EXPECT_GE(b.min[d], cb.min[d]);
-    EXPECT_LE(b.max[d], cb.max[d]);
+    EXPECT_GE(b.lo[d], cb.lo[d]);
+    EXPECT_LE(b.hi[d], cb.hi[d]);
   }
   for (double t : ts(1000)) EXPECT_TRUE(b.contains(f.curve(t), tol_for(f))) << t;
 }

@@ -269,10 +269,10 @@ TEST(Textbook, RationalQuarterCircle) {
   }
   // Tight bounds [0, 1]^2: the end points are the extremes.
   const auto b = bounds(q);
-  EXPECT_NEAR(b.min[0], 0.0, 4 * eps);
-  EXPECT_NEAR(b.min[1], 0.0, 4 * eps);
-  EXPECT_NEAR(b.max[0], 1.0, 4 * eps);
-  EXPECT_NEAR(b.max[1], 1.0, 4 * eps);
+  EXPECT_NEAR(b.lo[0], 0.0, 4 * eps);
+  EXPECT_NEAR(b.lo[1], 0.0, 4 * eps);
+  EXPECT_NEAR(b.hi[0], 1.0, 4 * eps);
+  EXPECT_NEAR(b.hi[1], 1.0, 4 * eps);
   // By symmetry R(1/2) = (sqrt(2)/2, sqrt(2)/2).
   EXPECT_NEAR(q(0.5)[0], std::sqrt(0.5), 4 * eps);
   EXPECT_NEAR(q(0.5)[1], std::sqrt(0.5), 4 * eps);
@@ -290,10 +290,10 @@ TEST(Textbook, CircularArcFactory) {
     EXPECT_NEAR(distance(arc(t), center), r, 16 * r * eps);
   }
   const auto b = bounds(arc);
-  EXPECT_NEAR(b.max[0], center[0] + r, 16 * r * eps);
-  EXPECT_NEAR(b.max[1], center[1] + r, 16 * r * eps);
-  EXPECT_NEAR(b.min[0], center[0], 16 * r * eps);  // x at angle pi/2
-  EXPECT_NEAR(b.min[1], center[1] - r * std::sqrt(0.5), 16 * r * eps);
+  EXPECT_NEAR(b.hi[0], center[0] + r, 16 * r * eps);
+  EXPECT_NEAR(b.hi[1], center[1] + r, 16 * r * eps);
+  EXPECT_NEAR(b.lo[0], center[0], 16 * r * eps);  // x at angle pi/2
+  EXPECT_NEAR(b.lo[1], center[1] - r * std::sqrt(0.5), 16 * r * eps);
 }
 
 // --- curvature [Farin02, 10.2] ----------------------------------------------------------------

@@ -23,35 +23,35 @@ struct Interval {
   friend constexpr bool operator==(const Interval&, const Interval&) = default;
 };
 
-/// An axis-aligned box [min, max]; empty() until a point is added.
+/// An axis-aligned box [lo, hi] (per coordinate, as Interval), empty() until a point is added.
 template <class T, int D>
 struct Box {
-  Point<T, D> min;
-  Point<T, D> max;
+  Point<T, D> lo;
+  Point<T, D> hi;
 
   static constexpr Box empty_box() {
     Box b;
     for (int i = 0; i < D; ++i) {
-      b.min[i] = std::numeric_limits<T>::infinity();
-      b.max[i] = -std::numeric_limits<T>::infinity();
+      b.lo[i] = std::numeric_limits<T>::infinity();
+      b.hi[i] = -std::numeric_limits<T>::infinity();
     }
     return b;
   }
-  [[nodiscard]] constexpr bool empty() const { return min[0] > max[0]; }
+  [[nodiscard]] constexpr bool empty() const { return lo[0] > hi[0]; }
   constexpr void add(const Point<T, D>& p) {
     for (int i = 0; i < D; ++i) {
-      min[i] = std::min(min[i], p[i]);
-      max[i] = std::max(max[i], p[i]);
+      lo[i] = std::min(lo[i], p[i]);
+      hi[i] = std::max(hi[i], p[i]);
     }
   }
   constexpr void add(const Box& b) {
     if (b.empty()) return;
-    add(b.min);
-    add(b.max);
+    add(b.lo);
+    add(b.hi);
   }
   [[nodiscard]] constexpr bool contains(const Point<T, D>& p, T tolerance = 0) const {
     for (int i = 0; i < D; ++i) {
-      if (p[i] < min[i] - tolerance || p[i] > max[i] + tolerance) return false;
+      if (p[i] < lo[i] - tolerance || p[i] > hi[i] + tolerance) return false;
     }
     return true;
   }

@@ -39,6 +39,10 @@ using OrderedJson = nlohmann::ordered_json;
 /// The JSON type of j for messages: "null", "boolean", "number", "string", "array", "object".
 [[nodiscard]] std::string_view kind_of(const Json& j);
 
+/// s in single quotes for an error message, escaped as in a JSON string (so that user
+/// input holding a newline cannot break the one-line error contract).
+[[nodiscard]] std::string quoted(std::string_view s);
+
 /// j as a finite double; JSON integers and floats are numbers, booleans are not.
 /// `what` names the value in the message ("coordinate must be a number, got string").
 [[nodiscard]] double number_from_json(const Json& j, std::string_view where, std::string_view what = "value");
