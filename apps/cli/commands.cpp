@@ -10,8 +10,7 @@
 #include <variant>
 #include <vector>
 
-#include "casteljau/algo/bounds.hpp"
-#include "casteljau/algo/flatten.hpp"
+#include "casteljau/io/any_curve.hpp"
 #include "casteljau/io/svg.hpp"
 
 namespace casteljau::cli {
@@ -26,28 +25,10 @@ using io::OrderedJson;
 /// response of that many arrays.
 constexpr int max_derivative_order = 64;
 
-/// Highest degree `elevate` produces. Forrest's coefficients C(r, i-j) C(n, j) / C(n+r, i)
-/// overflow a double past degree 1029, and the cost grows like the cube of the degree.
-constexpr int max_elevated_degree = 1000;
-
 /// Render colours: CSS colour names, #hex, rgb()/hsl() forms. No quotes or angle brackets,
 /// so a colour cannot break out of an SVG attribute whatever the renderer does.
 constexpr std::string_view colour_chars =
     "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789#(),.% -";
-
-std::string type_name(const io::AnyCurve& c) {
-  return std::visit(
-      []<class C>(const C&) -> std::string {
-        if constexpr (requires { typename C::SegmentType; }) {
-          return "path";
-        } else if constexpr (requires { typename C::Homogeneous; }) {
-          return "rational_bezier";
-        } else {
-          return "bezier";
-        }
-      },
-      c);
-}
 
 /// The curve object in field `name` of the request.
 io::AnyCurve read_curve(const io::Fields& f, const std::string& name = "curve") {
@@ -66,20 +47,30 @@ std::string index_path(std::string_view where, std::size_t i) {
 /// A finite number as JSON writes it (shortest round-trip form), for messages.
 std::string number_text(double v) { return Json(v).dump(); }
 
-template <class V>
-bool all_finite(const V& v) {
-  for (int i = 0; i < V::dimension; ++i) {
-    if (!std::isfinite(v[i])) return false;
+OrderedJson points_json(const io::PointList& P) {
+  OrderedJson a = OrderedJson::array();
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    OrderedJson p = OrderedJson::array();
+    for (const double x : P[i]) p.push_back(x);
+    a.push_back(std::move(p));
   }
-  return true;
+  return a;
+}
+
+OrderedJson numbers_json(const std::vector<double>& v) {
+  OrderedJson a = OrderedJson::array();
+  for (const double x : v) a.push_back(x);
+  return a;
 }
 
 /// Runs library calls on a curve read from the request. Errors that name a request field
 /// ("t[2]", "tolerance", "curve.type") pass through; any other error concerns an
 /// intermediate value inside an algorithm on a valid curve (e.g. an overflow), so it is
-/// reported against the curve rather than under a name the request does not have.
+/// reported against the curve rather than under a name the request does not have. A
+/// NumericalError (a limit of the algorithm reached on this input) is bad input too:
+/// reported against `numerical_field` when the request has a field that controls it.
 template <class F>
-void call_library(F&& f) {
+void call_library(F&& f, std::string_view numerical_field = "curve") {
   try {
     f();
   } catch (const InvalidArgument& e) {
@@ -87,6 +78,8 @@ void call_library(F&& f) {
     constexpr std::array<std::string_view, 5> fields = {"curve", "curves", "t", "times", "tolerance"};
     if (std::find(fields.begin(), fields.end(), root) != fields.end()) throw;
     throw InvalidArgument("curve", "the computation failed on this curve: " + std::string(e.what()));
+  } catch (const NumericalError& e) {
+    throw InvalidArgument(std::string(numerical_field), e.what());
   }
 }
 
@@ -106,44 +99,15 @@ Response eval(const Json& req) {
                                                std::to_string(k));
     }
   }
-  OrderedJson points = OrderedJson::array();
-  OrderedJson derivatives = OrderedJson::array();
-  call_library([&] {
-    std::visit(
-        [&](const auto& c) {
-          std::vector<OrderedJson> orders(static_cast<std::size_t>(k), OrderedJson::array());
-          for (std::size_t j = 0; j < ts.size(); ++j) {
-            // The library names the parameter "t" (e.g. at a pole); the request calls it t[j].
-            const auto at_tj = [&](auto&& g) {
-              try {
-                return g();
-              } catch (const InvalidArgument& e) {
-                if (e.where() == "t") throw InvalidArgument(index_path("t", j), e.problem());
-                throw;
-              }
-            };
-            const auto p = at_tj([&] { return c(ts[j]); });
-            if (!all_finite(p)) {
-              throw InvalidArgument(index_path("t", j), "the curve's point at t = " + number_text(ts[j]) +
-                                                            " is not finite (overflow, or a pole of a rational curve)");
-            }
-            points.push_back(io::to_json(p));
-            for (int order = 1; order <= k; ++order) {
-              const auto d = at_tj([&] { return c.derivative_at(ts[j], order); });
-              if (!all_finite(d)) {
-                throw InvalidArgument(index_path("t", j), "the order " + std::to_string(order) + " derivative at t = " +
-                                                              number_text(ts[j]) + " is not finite (overflow)");
-              }
-              orders[static_cast<std::size_t>(order - 1)].push_back(io::to_json(d));
-            }
-          }
-          for (auto& o : orders) derivatives.push_back(std::move(o));
-        },
-        curve);
-  });
   Response r;
-  r.json = OrderedJson{{"points", std::move(points)}};
-  if (k > 0) r.json["derivatives"] = std::move(derivatives);
+  call_library([&] {
+    r.json = OrderedJson{{"points", points_json(io::evaluate(curve, ts))}};
+    if (k > 0) {
+      OrderedJson derivatives = OrderedJson::array();
+      for (int order = 1; order <= k; ++order) derivatives.push_back(points_json(io::derivatives(curve, ts, order)));
+      r.json["derivatives"] = std::move(derivatives);
+    }
+  });
   return r;
 }
 
@@ -154,17 +118,8 @@ Response split(const Json& req) {
   const double t = io::number_from_json(f.required("t"), "t", "split parameter");
   Response r;
   call_library([&] {
-    std::visit(
-        [&]<class C>(const C& c) {
-          if constexpr (SplittableCurve<C>) {
-            const auto halves = c.split(t);  // checks t in [0, 1]
-            r.json = OrderedJson{{"curves", OrderedJson::array({io::to_json(halves.left), io::to_json(halves.right)})}};
-          } else {
-            throw InvalidArgument("curve.type", "split needs a bezier or rational_bezier curve, got a " + type_name(c) +
-                                                    " (split its segments instead)");
-          }
-        },
-        curve);
+    const io::AnySplit halves = io::split(curve, t);
+    r.json = OrderedJson{{"curves", OrderedJson::array({io::to_json(halves.left), io::to_json(halves.right)})}};
   });
   return r;
 }
@@ -174,23 +129,8 @@ Response elevate(const Json& req) {
   f.allow_only({"curve", "times"}, "an elevate request");
   const io::AnyCurve curve = read_curve(f);
   const int times = io::integer_from_json(f.required("times"), "times");
-  if (times < 1) throw InvalidArgument("times", "elevation count must be >= 1, got " + std::to_string(times));
   Response r;
-  call_library([&] {
-    std::visit(
-        [&]<class C>(const C& c) {
-          if constexpr (requires { c.elevate(times); }) {
-            if (times > max_elevated_degree - c.degree()) {
-              throw InvalidArgument("times", "elevating degree " + std::to_string(c.degree()) + " by " + std::to_string(times) +
-                                                 " exceeds the highest supported degree " + std::to_string(max_elevated_degree));
-            }
-            r.json = OrderedJson{{"curve", io::to_json(c.elevate(times))}};
-          } else {
-            throw InvalidArgument("curve.type", "elevate needs a bezier or rational_bezier curve, got a " + type_name(c));
-          }
-        },
-        curve);
-  });
+  call_library([&] { r.json = OrderedJson{{"curve", io::to_json(io::elevate(curve, times))}}; });
   return r;
 }
 
@@ -200,12 +140,8 @@ Response bounds(const Json& req) {
   const io::AnyCurve curve = read_curve(f);
   Response r;
   call_library([&] {
-    std::visit(
-        [&](const auto& c) {
-          const auto box = casteljau::bounds(c);
-          r.json = OrderedJson{{"min", io::to_json(box.lo)}, {"max", io::to_json(box.hi)}};
-        },
-        curve);
+    const io::AnyBox box = io::bounds(curve);
+    r.json = OrderedJson{{"min", numbers_json(box.lo)}, {"max", numbers_json(box.hi)}};
   });
   return r;
 }
@@ -215,9 +151,7 @@ Response to_bezier(const Json& req) {
   f.allow_only({"curve"}, "a to_bezier request");
   const io::AnyCurve curve = read_curve(f);
   Response r;
-  call_library([&] {
-    std::visit([&](const auto& c) { r.json = OrderedJson{{"curve", io::to_json(io::AnyCurve(to_bezier_path(c)))}}; }, curve);
-  });
+  call_library([&] { r.json = OrderedJson{{"curve", io::to_json(io::to_bezier(curve))}}; });
   return r;
 }
 
@@ -227,21 +161,8 @@ Response flatten(const Json& req) {
   const io::AnyCurve curve = read_curve(f);
   const double tolerance = io::number_from_json(f.required("tolerance"), "tolerance", "tolerance");
   Response r;
-  call_library([&] {
-    std::visit(
-        [&](const auto& c) {
-          try {
-            const auto polyline = casteljau::flatten(c, tolerance);  // checks tolerance > 0
-            OrderedJson points = OrderedJson::array();
-            for (const auto& p : polyline) points.push_back(io::to_json(p));
-            r.json = OrderedJson{{"points", std::move(points)}};
-          } catch (const NumericalError& e) {
-            // The tolerance is below the resolution of the coordinates: a bad request.
-            throw InvalidArgument("tolerance", e.what());
-          }
-        },
-        curve);
-  });
+  // The tolerance below the resolution of the coordinates (NumericalError) is a bad request.
+  call_library([&] { r.json = OrderedJson{{"points", points_json(io::flatten(curve, tolerance))}}; }, "tolerance");
   return r;
 }
 

@@ -19,4 +19,6 @@
 #include "casteljau/curves/bezier.hpp"
 #include "casteljau/curves/concepts.hpp"
 #include "casteljau/curves/path.hpp"
+#include "casteljau/curves/piecewise.hpp"
+#include "casteljau/curves/polyline.hpp"
 #include "casteljau/curves/rational_bezier.hpp"

@@ -1,11 +1,13 @@
-// Curve objects of the contract (shared/spec/cli.md): reading them into AnyCurve and
-// writing them back.
+// Curve objects of the contract (shared/spec/cli.md): the registry of curve types (one
+// Format entry per type: its name, fields, reader and writer) and the conversion between
+// curve JSON and AnyCurve.
 #include <algorithm>
 #include <array>
 #include <cstddef>
 #include <limits>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <variant>
 #include <vector>
@@ -16,9 +18,7 @@ namespace casteljau::io {
 
 namespace {
 
-std::string index_path(std::string_view where, std::size_t i) {
-  return std::string(where) + "[" + std::to_string(i) + "]";
-}
+std::string index_path(std::string_view where, std::size_t i) { return std::string(where) + "[" + std::to_string(i) + "]"; }
 
 template <class Names>
 std::string join(const Names& names) {
@@ -30,34 +30,33 @@ std::string join(const Names& names) {
   return s;
 }
 
-std::string quote_name(std::string_view s) { return quoted(s); }
 // ---------------------------------------------------------------------------------------
-// Curve objects.
+// Field readers shared by the entries.
 
-/// Control points as read, before the dimension is known at compile time.
+/// Points as read, before the dimension is known at compile time.
 struct RawPoints {
   int dim = 0;
   std::vector<std::array<double, max_dimension>> coords;
+
+  [[nodiscard]] std::size_t size() const { return coords.size(); }
+  template <int D>
+  [[nodiscard]] std::vector<Point<double, D>> points() const {
+    std::vector<Point<double, D>> P(coords.size());
+    for (std::size_t i = 0; i < P.size(); ++i)
+      for (int k = 0; k < D; ++k) P[i][k] = coords[i][static_cast<std::size_t>(k)];
+    return P;
+  }
 };
 
-/// A bezier or rational_bezier object, read and checked.
-struct RawBezier {
-  bool rational = false;
-  RawPoints P;
-  std::vector<double> w;
-};
-
-constexpr std::array<std::string_view, 3> supported_types = {"bezier", "rational_bezier", "path"};
-constexpr std::array<std::string_view, 6> later_types = {"bspline", "nurbs", "lagrange", "cubic_spline", "hermite", "catmull_rom"};
-
-template <class Names>
-bool one_of(std::string_view s, const Names& list) {
-  return std::find(list.begin(), list.end(), s) != list.end();
-}
-
-RawPoints read_points(const Json& j) {
+/// An array of at least `min_count` points of one dimension 1..max_dimension with finite
+/// coordinates; `noun` names the curve in the count message ("a polyline").
+RawPoints read_points(const Json& j, std::size_t min_count, std::string_view noun) {
   if (!j.is_array()) throw InvalidArgument("points", "must be an array of points, got " + std::string(kind_of(j)));
-  if (j.empty()) throw InvalidArgument("points", "needs at least one control point");
+  if (j.size() < min_count) {
+    throw InvalidArgument("points", std::string(noun) + " needs at least " +
+                                        (min_count == 1 ? std::string("one control point") : std::to_string(min_count) + " points") +
+                                        ", got " + std::to_string(j.size()));
+  }
   RawPoints r;
   r.coords.resize(j.size());
   for (std::size_t i = 0; i < j.size(); ++i) {
@@ -103,68 +102,25 @@ void check_dim(std::optional<int> dim, int data_dim) {
   }
 }
 
-/// Reads `type` and rejects unknown and not yet supported types.
-std::string read_type(const Fields& f) {
-  const std::string type = string_from_json(f.required("type"), "type");
-  if (one_of(type, supported_types)) return type;
-  if (one_of(type, later_types)) {
-    throw InvalidArgument("type", "curve type " + quote_name(type) + " is not supported yet (supported: " + join(supported_types) + ")");
-  }
-  throw InvalidArgument("type", "unknown curve type " + quote_name(type) + " (known: " + join(supported_types) + ", " +
-                                    join(later_types) + ")");
-}
-
-RawBezier read_bezier(const Fields& f, const std::string& type) {
-  RawBezier b;
-  b.rational = type == "rational_bezier";
-  if (b.rational) {
-    f.allow_only({"type", "points", "weights", "degree", "dim"}, "a rational_bezier");
-  } else {
-    f.allow_only({"type", "points", "degree", "dim"}, "a bezier");
-  }
+/// The control points of a Bézier-like curve: the optional `degree` must agree with them,
+/// and the degree may not exceed max_degree.
+RawPoints read_control_points(const Fields& f, std::string_view noun) {
   const std::optional<int> dim = read_dim(f);
-  b.P = read_points(f.required("points"));
-  check_dim(dim, b.P.dim);
+  RawPoints P = read_points(f.required("points"), 1, noun);
+  check_dim(dim, P.dim);
+  const std::size_t n = P.size() - 1;
   if (const Json* dj = f.optional("degree")) {
     const int degree = integer_from_json(*dj, "degree");
-    const std::size_t n = b.P.coords.size() - 1;
     if (degree < 0 || static_cast<std::size_t>(degree) != n) {
       throw InvalidArgument("degree", "degree is " + std::to_string(degree) + " but " + std::to_string(n + 1) +
                                           " control points give degree " + std::to_string(n));
     }
   }
-  // The weight count and positivity are the constructor's checks.
-  if (b.rational) b.w = numbers_from_json(f.required("weights"), "weights");
-  return b;
-}
-
-template <int D>
-Segment<double, D> make_segment(const RawBezier& b) {
-  std::vector<Point<double, D>> P(b.P.coords.size());
-  for (std::size_t i = 0; i < P.size(); ++i)
-    for (int k = 0; k < D; ++k) P[i][k] = b.P.coords[i][static_cast<std::size_t>(k)];
-  if (b.rational) return RationalBezier<double, D>(std::move(P), b.w);
-  return Bezier<double, D>(std::move(P));
-}
-
-template <int D>
-AnyCurve make_single(const RawBezier& b) {
-  return std::visit([](auto&& c) { return AnyCurve(std::move(c)); }, make_segment<D>(b));
-}
-
-template <int D>
-AnyCurve make_path(const std::vector<RawBezier>& segs, std::optional<std::vector<double>> breaks) {
-  std::vector<Segment<double, D>> s;
-  s.reserve(segs.size());
-  for (std::size_t i = 0; i < segs.size(); ++i) {
-    try {
-      s.push_back(make_segment<D>(segs[i]));
-    } catch (const InvalidArgument& e) {
-      throw e.within(index_path("segments", i));
-    }
+  if (n > static_cast<std::size_t>(max_degree)) {
+    throw InvalidArgument("points", std::to_string(n + 1) + " control points give degree " + std::to_string(n) +
+                                        ", above the highest supported degree " + std::to_string(max_degree));
   }
-  if (breaks) return Path<double, D>(std::move(s), std::move(*breaks));
-  return Path<double, D>(std::move(s));
+  return P;
 }
 
 /// Calls f.template operator()<D>() for the run-time dimension d in 1..max_dimension.
@@ -180,40 +136,6 @@ AnyCurve dispatch_dimension(int d, F&& f) {
   }
 }
 
-AnyCurve read_path(const Fields& f) {
-  f.allow_only({"type", "segments", "breaks", "dim"}, "a path");
-  const std::optional<int> dim = read_dim(f);
-  const Json& sj = f.required("segments");
-  if (!sj.is_array()) throw InvalidArgument("segments", "must be an array of curve objects, got " + std::string(kind_of(sj)));
-  if (sj.empty()) throw InvalidArgument("segments", "a path needs at least one segment");
-  std::vector<RawBezier> segs;
-  segs.reserve(sj.size());
-  for (std::size_t i = 0; i < sj.size(); ++i) {
-    const std::string where = index_path("segments", i);
-    try {
-      const Fields sf(sj[i], "a path segment");
-      const std::string type = string_from_json(sf.required("type"), "type");
-      if (type != "bezier" && type != "rational_bezier") {
-        throw InvalidArgument("type", "a path segment must be a bezier or rational_bezier, got " + quote_name(type));
-      }
-      segs.push_back(read_bezier(sf, type));
-    } catch (const InvalidArgument& e) {
-      throw e.within(where);
-    }
-    if (segs.back().P.dim != segs.front().P.dim) {
-      throw InvalidArgument(where, "segment has dimension " + std::to_string(segs.back().P.dim) + " but segments[0] has " +
-                                       std::to_string(segs.front().P.dim));
-    }
-  }
-  check_dim(dim, segs.front().P.dim);
-  std::optional<std::vector<double>> breaks;
-  if (const Json* bj = f.optional("breaks")) breaks = numbers_from_json(*bj, "breaks");
-  return dispatch_dimension(segs.front().P.dim, [&]<int D>() { return make_path<D>(segs, std::move(breaks)); });
-}
-
-// ---------------------------------------------------------------------------------------
-// Writing.
-
 template <class T, int D>
 OrderedJson points_json(const std::vector<Point<T, D>>& P) {
   OrderedJson a = OrderedJson::array();
@@ -221,36 +143,215 @@ OrderedJson points_json(const std::vector<Point<T, D>>& P) {
   return a;
 }
 
-template <class T, int D>
-OrderedJson curve_json(const Bezier<T, D>& c) {
-  return OrderedJson{{"type", "bezier"}, {"points", points_json(c.points())}};
+// ---------------------------------------------------------------------------------------
+// The registry: one Format entry per curve type of CurveTypes (any_curve.hpp), with the
+// type's curve-JSON name, its reader (fields -> AnyCurve, every check of the contract
+// that the type's constructor does not make) and its writer.
+
+template <template <class, int> class C>
+struct Format;
+
+template <>
+struct Format<Bezier> {
+  static constexpr std::string_view name = "bezier";
+  static AnyCurve read(const Fields& f) {
+    f.allow_only({"type", "points", "degree", "dim"}, "a bezier");
+    const RawPoints P = read_control_points(f, "a bezier");
+    return dispatch_dimension(P.dim, [&]<int D>() { return AnyCurve(Bezier<double, D>(P.points<D>())); });
+  }
+  template <int D>
+  static OrderedJson write(const Bezier<double, D>& c) {
+    return OrderedJson{{"type", name}, {"points", points_json(c.points())}};
+  }
+};
+
+template <>
+struct Format<RationalBezier> {
+  static constexpr std::string_view name = "rational_bezier";
+  static AnyCurve read(const Fields& f) {
+    f.allow_only({"type", "points", "weights", "degree", "dim"}, "a rational_bezier");
+    const RawPoints P = read_control_points(f, "a rational_bezier");
+    // The weight count and positivity are the constructor's checks.
+    const std::vector<double> w = numbers_from_json(f.required("weights"), "weights");
+    return dispatch_dimension(P.dim, [&]<int D>() { return AnyCurve(RationalBezier<double, D>(P.points<D>(), w)); });
+  }
+  template <int D>
+  static OrderedJson write(const RationalBezier<double, D>& c) {
+    return OrderedJson{{"type", name}, {"points", points_json(c.points())}, {"weights", c.weights()}};
+  }
+};
+
+template <>
+struct Format<Polyline> {
+  static constexpr std::string_view name = "polyline";
+  static AnyCurve read(const Fields& f) {
+    f.allow_only({"type", "points", "dim"}, "a polyline");
+    const std::optional<int> dim = read_dim(f);
+    const RawPoints P = read_points(f.required("points"), 2, "a polyline");
+    check_dim(dim, P.dim);
+    return dispatch_dimension(P.dim, [&]<int D>() { return AnyCurve(Polyline<double, D>(P.points<D>())); });
+  }
+  template <int D>
+  static OrderedJson write(const Polyline<double, D>& c) {
+    return OrderedJson{{"type", name}, {"points", points_json(c.points())}};
+  }
+};
+
+/// How deeply paths may nest in curve JSON (a path segment may itself be a path): far
+/// more than any real use, and a bound on the reader's recursion.
+constexpr int max_path_nesting = 32;
+
+template <>
+struct Format<Path> {
+  static constexpr std::string_view name = "path";
+  static AnyCurve read(const Fields& f);
+  template <int D>
+  static OrderedJson write(const Path<double, D>& c);
+};
+
+// ---------------------------------------------------------------------------------------
+// Walking the registry.
+
+template <class X, template <class, int> class C>
+struct IsOf : std::false_type {};
+template <class T, int D, template <class, int> class C>
+struct IsOf<C<T, D>, C> : std::true_type {};
+
+template <template <class, int> class... C, class F>
+void for_each_type(CurveTypeList<C...>, F&& f) {
+  (f.template operator()<C>(), ...);
 }
 
-template <class T, int D>
-OrderedJson curve_json(const RationalBezier<T, D>& c) {
-  return OrderedJson{{"type", "rational_bezier"}, {"points", points_json(c.points())}, {"weights", c.weights()}};
+std::vector<std::string_view> registered_names() {
+  std::vector<std::string_view> names;
+  for_each_type(CurveTypes{}, [&]<template <class, int> class C>() { names.push_back(Format<C>::name); });
+  return names;
 }
 
-template <class T, int D>
-OrderedJson curve_json(const Path<T, D>& c) {
+/// Types of the contract that no Format entry serves yet.
+constexpr std::array<std::string_view, 6> later_types = {"bspline", "nurbs", "lagrange", "cubic_spline", "hermite", "catmull_rom"};
+
+thread_local int path_depth = 0;
+
+AnyCurve read_curve_object(const Json& j) {
+  const Fields f(j, "a curve");
+  const std::string type = string_from_json(f.required("type"), "type");
+  std::optional<AnyCurve> out;
+  for_each_type(CurveTypes{}, [&]<template <class, int> class C>() {
+    if (!out && type == Format<C>::name) out = Format<C>::read(f);
+  });
+  if (out) return std::move(*out);
+  const std::vector<std::string_view> known = registered_names();
+  if (std::find(later_types.begin(), later_types.end(), type) != later_types.end()) {
+    throw InvalidArgument("type", "curve type " + io::quoted(type) + " is not supported yet (supported: " + join(known) + ")");
+  }
+  throw InvalidArgument("type", "unknown curve type " + io::quoted(type) + " (known: " + join(known) + ", " + join(later_types) + ")");
+}
+
+/// Adds one path segment (any curve object of dimension D) on the break interval `onto`:
+/// a nested path is spliced in, its segments on their mapped break intervals.
+template <int D>
+void append_segment(const AnyCurve& any, const Interval<double>& onto, std::vector<Segment<double, D>>& segs,
+                    std::vector<double>& breaks) {
+  std::visit(
+      [&]<class X>(const X& x) {
+        if constexpr (X::dimension != D) {
+          throw InvalidArgument("", "segment has dimension " + std::to_string(X::dimension) + " but segments[0] has " +
+                                        std::to_string(D));
+        } else if constexpr (std::is_same_v<X, Path<double, D>>) {
+          const Interval<double> from = x.domain();
+          for (std::size_t k = 0; k < x.size(); ++k) {
+            segs.push_back(x.segments()[k]);
+            breaks.push_back(casteljau::detail::map_parameter(x.breaks()[k + 1], from, onto));
+          }
+        } else {
+          segs.push_back(Segment<double, D>(x));
+          breaks.push_back(onto.hi);
+        }
+      },
+      any);
+}
+
+AnyCurve Format<Path>::read(const Fields& f) {
+  f.allow_only({"type", "segments", "breaks", "dim"}, "a path");
+  const std::optional<int> dim = read_dim(f);
+  const Json& sj = f.required("segments");
+  if (!sj.is_array()) throw InvalidArgument("segments", "must be an array of curve objects, got " + std::string(kind_of(sj)));
+  if (sj.empty()) throw InvalidArgument("segments", "a path needs at least one segment");
+  if (path_depth >= max_path_nesting) {
+    throw InvalidArgument("segments", "paths nest more than " + std::to_string(max_path_nesting) + " levels deep");
+  }
+  struct Depth {
+    Depth() { ++path_depth; }
+    ~Depth() { --path_depth; }
+  } depth;
+  std::vector<AnyCurve> parts;
+  parts.reserve(sj.size());
+  for (std::size_t i = 0; i < sj.size(); ++i) {
+    try {
+      parts.push_back(read_curve_object(sj[i]));
+    } catch (const InvalidArgument& e) {
+      throw e.within(index_path("segments", i));
+    }
+  }
+  const int d = dimension(parts.front());
+  check_dim(dim, d);
+  std::vector<double> given;
+  if (const Json* bj = f.optional("breaks")) {
+    given = numbers_from_json(*bj, "breaks");
+    casteljau::detail::check_breaks(given, parts.size());
+  } else {
+    for (std::size_t i = 0; i <= parts.size(); ++i) given.push_back(static_cast<double>(i));
+  }
+  return dispatch_dimension(d, [&]<int D>() {
+    std::vector<Segment<double, D>> segs;
+    std::vector<double> breaks{given.front()};
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+      try {
+        append_segment<D>(parts[i], {given[i], given[i + 1]}, segs, breaks);
+      } catch (const InvalidArgument& e) {
+        throw e.within(index_path("segments", i));
+      }
+    }
+    return AnyCurve(Path<double, D>(std::move(segs), std::move(breaks)));
+  });
+}
+
+template <int D>
+OrderedJson Format<Path>::write(const Path<double, D>& c) {
   OrderedJson segs = OrderedJson::array();
-  for (const auto& s : c.segments()) segs.push_back(std::visit([](const auto& x) { return curve_json(x); }, s));
-  return OrderedJson{{"type", "path"}, {"segments", std::move(segs)}, {"breaks", c.breaks()}};
+  for (const auto& s : c.segments()) segs.push_back(std::visit([](const auto& x) { return to_json(AnyCurve(x)); }, s));
+  return OrderedJson{{"type", name}, {"segments", std::move(segs)}, {"breaks", c.breaks()}};
 }
 
 }  // namespace
 
-AnyCurve curve_from_json(const Json& j) {
-  const Fields f(j, "a curve");
-  const std::string type = read_type(f);
-  if (type == "path") return read_path(f);
-  const RawBezier b = read_bezier(f, type);
-  return dispatch_dimension(b.P.dim, [&]<int D>() { return make_single<D>(b); });
-}
+AnyCurve curve_from_json(const Json& j) { return read_curve_object(j); }
 
 OrderedJson to_json(const AnyCurve& c) {
-  return std::visit([](const auto& x) { return curve_json(x); }, c);
+  return std::visit(
+      [](const auto& x) {
+        using X = std::decay_t<decltype(x)>;
+        OrderedJson out;
+        for_each_type(CurveTypes{}, [&]<template <class, int> class C>() {
+          if constexpr (IsOf<X, C>::value) out = Format<C>::write(x);
+        });
+        return out;
+      },
+      c);
 }
 
+std::string_view type_name(const AnyCurve& c) {
+  return std::visit(
+      [](const auto& x) {
+        using X = std::decay_t<decltype(x)>;
+        std::string_view name;
+        for_each_type(CurveTypes{}, [&]<template <class, int> class C>() {
+          if constexpr (IsOf<X, C>::value) name = Format<C>::name;
+        });
+        return name;
+      },
+      c);
+}
 
 }  // namespace casteljau::io

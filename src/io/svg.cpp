@@ -457,13 +457,15 @@ void SvgDocument::curve(const RationalBezier<double, 2>& c, const Paint& paint, 
   path_element(d.str(), paint);
 }
 
-void SvgDocument::curve(const Path<double, 2>& c, const Paint& paint, double tolerance_px) {
+void SvgDocument::curve(const Pieces<double, 2>& c, const Paint& paint, double tolerance_px) {
   require_non_negative(tolerance_px, "tolerance_px");
   PathData d;
   const double tol = std::max(tolerance_px, written_resolution_px);
   for (const auto& s : c.segments()) std::visit([&](const auto& seg) { append_segment(d, on_page(map_, seg), tol); }, s);
   path_element(d.str(), paint);
 }
+
+void SvgDocument::curve(const Path<double, 2>& c, const Paint& paint, double tolerance_px) { curve(pieces(c), paint, tolerance_px); }
 
 void SvgDocument::begin_group(std::string_view css_class) {
   open("g");
@@ -523,21 +525,22 @@ RationalBezier<double, 2> graph(const RationalBezier<double, 1>& c) {
   return RationalBezier<double, 2>(std::move(P), std::move(W));
 }
 
-/// A path's graph: each segment's graph mapped from [0, 1] onto its break interval.
-Path<double, 2> graph(const Path<double, 1>& c) {
-  std::vector<Segment<double, 2>> segs;
+/// The graph of a 1-D curve's pieces: each piece's graph mapped from [0, 1] onto its
+/// break interval.
+Pieces<double, 2> graph(const Pieces<double, 1>& c) {
+  std::vector<BezierPiece<double, 2>> segs;
   for (std::size_t i = 0; i < c.size(); ++i) {
     const auto dom = c.segment_domain(i);
     Affine<double, 2> m;
     m.linear = {{{dom.length(), 0.0}, {0.0, 1.0}}};
     m.translation = Vector<double, 2>(dom.lo, 0.0);
-    segs.push_back(std::visit([&](const auto& s) { return Segment<double, 2>(graph(s).transform(m)); }, c.segments()[i]));
+    segs.push_back(std::visit([&](const auto& s) { return BezierPiece<double, 2>(graph(s).transform(m)); }, c.segments()[i]));
   }
-  return Path<double, 2>(std::move(segs), c.breaks());
+  return Pieces<double, 2>(std::move(segs), c.breaks());
 }
 
 struct Drawable {
-  Path<double, 2> path;
+  Pieces<double, 2> path;
   bool is_graph;
 };
 
@@ -546,15 +549,15 @@ Drawable drawable(const AnyCurve& any, std::string_view where) {
       [&](const auto& c) -> Drawable {
         using C = std::decay_t<decltype(c)>;
         if constexpr (C::dimension == 1) {
-          return {to_bezier_path(graph(c)), true};
+          return {graph(c), true};
         } else if constexpr (C::dimension == 2) {
-          return {to_bezier_path(c), false};
+          return {c, false};
         } else {
           throw InvalidArgument(std::string(where), "render_svg draws 1D curves (as graphs) and 2D curves, got a " +
                                                         std::to_string(C::dimension) + "D curve");
         }
       },
-      any);
+      pieces(any));
 }
 
 void validate(const RenderStyle& s) {

@@ -519,8 +519,10 @@ class BadInputTest(CliTest):
         self.eval_bad(bezier([]), "curve.points", contains="at least one")
         self.eval_bad(bezier([[]]), "curve.points[0]", contains="at least one coordinate")
         self.eval_bad({"type": "path", "segments": []}, "curve.segments", contains="at least one")
-        self.eval_bad({"type": "path", "segments": [{"type": "path", "segments": [bezier(CUBIC)]}]},
-                      "curve.segments[0].type")
+        # A path segment may be any curve object, a path included (spliced in).
+        r = self.ok("eval", {"curve": {"type": "path", "segments": [{"type": "path", "segments": [bezier(CUBIC)]}]},
+                             "t": [0.5]})
+        self.assertEqual(r["points"], [de_casteljau(CUBIC, 0.5)])
 
     def test_numbers(self):
         text = '{"curve": {"type": "bezier", "points": [[0, 0], [1, 1], [2, 1e999]]}, "t": [0]}'

@@ -51,10 +51,39 @@ struct Sample<Path<double, 2>> {
   static Point<double, 2> end() { return {5, 0}; }
 };
 
+template <>
+struct Sample<Polyline<double, 2>> {
+  static Polyline<double, 2> make() { return {{0, 0}, {1, 2}, {1, 2}, {3, -1}, {4, 0.5}}; }
+  static Point<double, 2> start() { return {0, 0}; }
+  static Point<double, 2> end() { return {4, 0.5}; }
+};
+
+/// A path of every segment type, one of them a polyline whose own domain [0, 3] is mapped
+/// onto [1, 1.5] (so its derivatives scale by 6).
+template <>
+struct Sample<Path<double, 3>> {
+  static Path<double, 3> make() {
+    return Path<double, 3>({Bezier<double, 3>{{0, 0, 0}, {1, 1, 0}, {2, 0, 1}},
+                            Polyline<double, 3>{{2, 0, 1}, {3, 1, 1}, {3, 2, 0}, {4, 2, 2}},
+                            RationalBezier<double, 3>({{4, 2, 2}, {5, 3, 2}, {6, 2, 1}}, {1, 0.5, 2})},
+                           {0.0, 1.0, 1.5, 4.0});
+  }
+  static Point<double, 3> start() { return {0, 0, 0}; }
+  static Point<double, 3> end() { return {6, 2, 1}; }
+};
+
+template <>
+struct Sample<Pieces<double, 2>> {
+  static Pieces<double, 2> make() { return pieces(Sample<Path<double, 2>>::make()); }
+  static Point<double, 2> start() { return {0, 0}; }
+  static Point<double, 2> end() { return {5, 0}; }
+};
+
 template <class C>
 class Conformance : public ::testing::Test {};
 
-using CurveTypes = ::testing::Types<Bezier<double, 2>, RationalBezier<double, 2>, Path<double, 2>, Bezier<double, 3>>;
+using CurveTypes = ::testing::Types<Bezier<double, 2>, RationalBezier<double, 2>, Path<double, 2>, Bezier<double, 3>,
+                                    Polyline<double, 2>, Path<double, 3>, Pieces<double, 2>>;
 TYPED_TEST_SUITE(Conformance, CurveTypes);
 
 /// n + 1 parameters spread over the domain, including both ends.
@@ -70,6 +99,36 @@ std::vector<double> params(const C& c, int n = 64) {
 TYPED_TEST(Conformance, ModelsTheConcepts) {
   static_assert(Curve<TypeParam>);
   static_assert(DifferentiableCurve<TypeParam>);
+  static_assert(PiecewiseBezierCurve<TypeParam>);
+}
+
+// The exact Bézier form traces the same curve with the same parametrisation, so queries
+// on the pieces never disagree with evaluation: points and derivatives (orders 1..3) at
+// parameters across the domain and beyond it (extrapolation of the first and last
+// piece). Both sides evaluate the same polynomials after one affine parameter map:
+// a few ulps of the coordinates (<= 6) times the derivative's size (<= ~50 for k <= 3
+// here, with the polyline's factor 6 per order): 1e-11.
+TYPED_TEST(Conformance, PiecesTraceTheCurve) {
+  const auto c = Sample<TypeParam>::make();
+  const auto p = pieces(c);
+  const auto dom = c.domain();
+  EXPECT_EQ(p.domain(), dom);
+  std::vector<double> ts = params(c, 97);
+  ts.push_back(dom.lo - 0.1 * dom.length());
+  ts.push_back(dom.hi + 0.1 * dom.length());
+  if constexpr (requires { c.breaks(); }) ts.insert(ts.end(), c.breaks().begin(), c.breaks().end());
+  for (double t : ts) {
+    EXPECT_EQ(test::max_coord_diff(p(t), c(t)) <= 1e-13 * (1 + norm(c(t).to_vector())), true) << "t=" << t;
+    for (int k = 1; k <= 3; ++k) {
+      const auto a = p.derivative_at(t, k), b = c.derivative_at(t, k);
+      EXPECT_LE(test::max_coord_diff(a, b), 1e-11 * (1 + norm(b))) << "t=" << t << " k=" << k;
+    }
+  }
+  // Every piece's parameter lifts back to the curve's: the piece's ends are the breaks.
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    EXPECT_EQ(p.global_parameter(i, 0.0), p.breaks()[i]);
+    EXPECT_EQ(p.global_parameter(i, 1.0), p.breaks()[i + 1]);
+  }
 }
 
 // The domain's ends map to the first and last control points. Bézier forms interpolate
@@ -103,15 +162,16 @@ TYPED_TEST(Conformance, DerivativesMatchFiniteDifferences) {
   const auto c = Sample<TypeParam>::make();
   const auto dom = c.domain();
   const double h = 1e-5 * dom.length();
+  const std::vector<double> joints = pieces(c).breaks();
   for (double t : params(c, 40)) {
     // Stay inside one segment of a path (breaks are at multiples of 1/40 of the domain
     // only for the Path sample's 0.5 = -1 + 1.5 * 40/40; avoid them and the domain ends).
     if (t - h <= dom.lo || t + h >= dom.hi) continue;
-    if constexpr (requires { c.breaks(); }) {
-      bool near_break = false;
-      for (double b : c.breaks()) near_break = near_break || std::abs(t - b) <= 2 * h;
-      if (near_break) continue;
-    }
+    // Nor straddle a joint of the pieces (a polyline's vertex, a path's break), where
+    // derivatives jump.
+    bool near_break = false;
+    for (double b : joints) near_break = near_break || std::abs(t - b) <= 2 * h;
+    if (near_break) continue;
     const auto fd = test::central_difference(c, t, h);
     EXPECT_LE(test::max_coord_diff(fd, c.derivative_at(t, 1)), 1e-6 * (1 + norm(fd))) << "t=" << t;
     const auto fd2 = (c.derivative_at(t + h, 1) - c.derivative_at(t - h, 1)) / (2 * h);
@@ -198,7 +258,7 @@ void exercise_scalar_type() {
   EXPECT_NEAR(*curvature(q, T(0.3)), T(1), 64 * e);
   const auto b = bounds(q);
   EXPECT_NEAR(b.hi[0], T(1), 4 * e);
-  const Path<T, 2> path({Bezier<T, 2>{{0, 0}, {1, 1}}, q});
+  const Path<T, 2> path({Bezier<T, 2>{{0, 0}, {1, 0}}, q});
   EXPECT_EQ(path(T(1)), (Point<T, 2>{1, 0}));
   const auto poly = flatten(path, T(1e-3));
   EXPECT_GE(poly.size(), 3u);

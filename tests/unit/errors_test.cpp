@@ -119,7 +119,8 @@ TEST(Errors, PathEntries) {
   const Path2 p({B2{{0, 0}, {1, 1}}, B2{{1, 1}, {2, 0}}});
   EXPECT_INVALID_ARGUMENT(p(nan), "t", "finite");
   EXPECT_INVALID_ARGUMENT(p.derivative_at(-inf), "t", "finite");
-  EXPECT_INVALID_ARGUMENT(p.derivative_at(0.5, 0), "k", ">= 1");
+  EXPECT_INVALID_ARGUMENT(p.derivative_at(0.5, -1), "k", ">= 0");
+  EXPECT_EQ(p.derivative_at(0.5, 0), (Vector<double, 2>{0.5, 0.5}));  // order 0: the point
   EXPECT_INVALID_ARGUMENT(p.one_sided_derivative(2, 0.5, 1), "segment", "0..1");
   EXPECT_INVALID_ARGUMENT(p.one_sided_derivative(0, nan, 1), "t", "finite");
   EXPECT_INVALID_ARGUMENT(end_tangent(p, 5, true), "segment", "0..1");

@@ -63,12 +63,20 @@ Box<T, D> bounds(const RationalBezier<T, D>& c) {
   return b;
 }
 
-/// The tight box of a path: the union of its segments' tight boxes.
-template <class T, int D>
-Box<T, D> bounds(const Path<T, D>& c) {
-  Box<T, D> b = Box<T, D>::empty_box();
-  for (const auto& s : c.segments()) b.add(std::visit([](const auto& seg) { return bounds(seg); }, s));
-  return b;
+/// The tight box of any other curve over its domain: its own closed form when it has one
+/// (a member bounds(), e.g. a polyline's points), else the union of the tight boxes of
+/// its Bézier pieces. Accuracy and cost as for the pieces.
+template <class C>
+  requires PiecewiseBezierCurve<C> && (!detail::is_bezier_piece<C>)
+Box<typename C::Scalar, C::dimension> bounds(const C& c) {
+  if constexpr (requires { { c.bounds() } -> std::same_as<Box<typename C::Scalar, C::dimension>>; }) {
+    return c.bounds();
+  } else {
+    Box<typename C::Scalar, C::dimension> b = Box<typename C::Scalar, C::dimension>::empty_box();
+    const auto p = pieces(c);
+    for (const auto& s : p.segments()) b.add(std::visit([](const auto& piece) { return bounds(piece); }, s));
+    return b;
+  }
 }
 
 }  // namespace casteljau

@@ -11,13 +11,6 @@
 
 namespace casteljau {
 
-/// Thrown when an algorithm hits an iteration or depth limit instead of returning a
-/// result it cannot guarantee.
-class NumericalError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
-
 namespace detail {
 
 /// Distance from p to the segment [a, b].
@@ -72,7 +65,7 @@ void require_tolerance(T tolerance) {
 /// (WORKLOADS.md, W3). Throws InvalidArgument for tolerance <= 0, NumericalError when
 /// the tolerance is below the coordinates' floating point resolution.
 template <class C>
-  requires SplittableCurve<C> && ControlPolygonCurve<C>
+  requires detail::is_bezier_piece<C>
 std::vector<Point<typename C::Scalar, C::dimension>> flatten(const C& c, typename C::Scalar tolerance) {
   detail::require_tolerance(tolerance);
   using T = typename C::Scalar;
@@ -92,16 +85,50 @@ std::vector<Point<typename C::Scalar, C::dimension>> flatten(const C& c, typenam
   return out;
 }
 
-/// A path flattened segment by segment, each joint vertex written once when the
-/// segments meet exactly.
+namespace detail {
+/// |a - b| without overflow or underflow in the squares (inf only when a coordinate
+/// difference itself overflows).
 template <class T, int D>
-std::vector<Point<T, D>> flatten(const Path<T, D>& p, T tolerance) {
+T scaled_distance(const Point<T, D>& a, const Point<T, D>& b) {
+  T m = 0;
+  for (int d = 0; d < D; ++d) m = std::max(m, std::abs(a[d] - b[d]));
+  if (!(m > 0) || !std::isfinite(m)) return m;
+  T s = 0;
+  for (int d = 0; d < D; ++d) {
+    const T x = (a[d] - b[d]) / m;
+    s += x * x;
+  }
+  return m * std::sqrt(s);
+}
+}  // namespace detail
+
+/// Any other curve flattened piece by piece (pieces(c)), with the same guarantee: a
+/// polyline from c(domain().lo) to c(domain().hi) within `tolerance` of the curve, each
+/// piece's end vertex written once where the next piece starts at the same point. A
+/// curve whose consecutive pieces are more than `tolerance` apart (a path whose segments
+/// do not meet) is refused with InvalidArgument("curve", ...): the polyline would have
+/// to bridge the gap farther than the tolerance from the curve. A gap up to the
+/// tolerance is bridged (every point of the bridge is within the gap of the curve).
+template <class C>
+  requires PiecewiseBezierCurve<C> && (!detail::is_bezier_piece<C>)
+std::vector<Point<typename C::Scalar, C::dimension>> flatten(const C& c, typename C::Scalar tolerance) {
+  using T = typename C::Scalar;
   detail::require_tolerance(tolerance);
-  std::vector<Point<T, D>> out;
-  for (const auto& s : p.segments()) {
-    const auto part = std::visit([&](const auto& c) { return flatten(c, tolerance); }, s);
-    const bool joined = !out.empty() && out.back() == part.front();
-    out.insert(out.end(), part.begin() + (joined ? 1 : 0), part.end());
+  const Pieces<T, C::dimension> p = pieces(c);
+  std::vector<Point<T, C::dimension>> out;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const auto part = std::visit([&](const auto& s) { return flatten(s, tolerance); }, p.segments()[i]);
+    std::size_t skip = 0;
+    if (i > 0) {
+      const T gap = detail::scaled_distance(out.back(), part.front());
+      if (gap > tolerance) {
+        throw InvalidArgument("curve", "the curve is not connected at t = " + detail::format_number(p.breaks()[i]) +
+                                           ": its pieces are " + detail::format_number(gap) +
+                                           " apart there, more than the tolerance " + detail::format_number(tolerance));
+      }
+      if (gap == 0) skip = 1;
+    }
+    out.insert(out.end(), part.begin() + static_cast<std::ptrdiff_t>(skip), part.end());
   }
   return out;
 }

@@ -46,6 +46,13 @@ class InvalidArgument : public std::invalid_argument {
   std::string problem_;
 };
 
+/// Thrown when an algorithm hits an iteration or depth limit, or the resolution of
+/// floating point, instead of returning a result it cannot guarantee.
+class NumericalError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 namespace detail {
 
 /// Formats a number for a message in the shortest form that reads back as the same

@@ -1,9 +1,15 @@
-// A curve of any type and dimension known at run time (1..4, double): what the io layer
-// reads from curve JSON and what the command line and the renderer work on.
+// A curve of any registered type and dimension known at run time (1..4, double), and the
+// operations the run-time interfaces (command line, renderer, later Python and the web
+// explorer) call on it. The operations are compiled once, in src/io/any_curve.cpp: a
+// translation unit that includes this header instantiates no curve algorithm.
 #pragma once
 
+#include <cstddef>
+#include <span>
+#include <string_view>
 #include <utility>
 #include <variant>
+#include <vector>
 
 #include "casteljau/curves/path.hpp"
 
@@ -13,30 +19,107 @@ namespace casteljau::io {
 /// such limit: its types are templated on D).
 inline constexpr int max_dimension = 4;
 
+/// The highest degree the run-time interfaces accept, in curve input and as the result
+/// of `elevate`: bounds and flattening cost O(n^2) per piece, and at this degree a
+/// request still answers in well under a second.
+inline constexpr int max_degree = 1000;
+
+/// The registry: every curve type the run-time interfaces serve. Its curve-JSON name,
+/// fields, reader and writer are its Format entry in src/io/curve_json.cpp.
+template <class List>
+struct AppendPath;
+template <template <class, int> class... C>
+struct AppendPath<CurveTypeList<C...>> {
+  using type = CurveTypeList<C..., Path>;
+};
+using CurveTypes = typename AppendPath<SegmentTypes>::type;
+
 namespace detail {
-template <template <class, int> class Curve>
-struct AnyCurveOf {
-  template <int... Ds>
-  static auto make(std::integer_sequence<int, Ds...>) -> std::variant<Curve<double, Ds + 1>...>;
+template <class List, class Dims>
+struct AnyCurveOf;
+template <template <class, int> class... C, int... Ds>
+struct AnyCurveOf<CurveTypeList<C...>, std::integer_sequence<int, Ds...>> {
+  template <template <class, int> class One>
+  using AllDims = std::variant<One<double, Ds + 1>...>;
+  template <class... V>
+  struct Concat;
+  template <class... A>
+  struct Concat<std::variant<A...>> {
+    using type = std::variant<A...>;
+  };
+  template <class... A, class... B, class... Rest>
+  struct Concat<std::variant<A...>, std::variant<B...>, Rest...> {
+    using type = typename Concat<std::variant<A..., B...>, Rest...>::type;
+  };
+  using type = typename Concat<AllDims<C>...>::type;
 };
-template <class... A>
-struct Concat;
-template <class... A, class... B, class... C>
-struct Concat<std::variant<A...>, std::variant<B...>, std::variant<C...>> {
-  using type = std::variant<A..., B..., C...>;
-};
-using Dims = std::make_integer_sequence<int, max_dimension>;
 }  // namespace detail
 
-/// Every curve type at every dimension 1..max_dimension, one flat variant so that
-/// std::visit hands a generic lambda the concrete type.
-using AnyCurve = typename detail::Concat<decltype(detail::AnyCurveOf<Bezier>::make(detail::Dims{})),
-                                         decltype(detail::AnyCurveOf<RationalBezier>::make(detail::Dims{})),
-                                         decltype(detail::AnyCurveOf<Path>::make(detail::Dims{}))>::type;
+/// Every registered curve type at every dimension 1..max_dimension, one flat variant so
+/// that std::visit hands a generic lambda the concrete type.
+using AnyCurve = typename detail::AnyCurveOf<CurveTypes, std::make_integer_sequence<int, max_dimension>>::type;
 
 /// The dimension d of the curve.
-inline int dimension(const AnyCurve& c) {
-  return std::visit([](const auto& x) { return std::decay_t<decltype(x)>::dimension; }, c);
-}
+[[nodiscard]] int dimension(const AnyCurve& c);
+/// The curve's type name in curve JSON ("bezier", "polyline", ...).
+[[nodiscard]] std::string_view type_name(const AnyCurve& c);
+/// The curve's parameter domain.
+[[nodiscard]] Interval<double> domain(const AnyCurve& c);
+
+/// Points of one run-time dimension, stored contiguously: point i is coords[i*dim ..
+/// i*dim + dim) (a (count, dim) array for numpy).
+struct PointList {
+  int dim = 0;
+  std::vector<double> coords;
+
+  [[nodiscard]] std::size_t size() const { return dim == 0 ? 0 : coords.size() / static_cast<std::size_t>(dim); }
+  [[nodiscard]] std::span<const double> operator[](std::size_t i) const {
+    return std::span<const double>(coords).subspan(i * static_cast<std::size_t>(dim), static_cast<std::size_t>(dim));
+  }
+  template <class V>
+  void push_back(const V& p) {
+    for (int k = 0; k < dim; ++k) coords.push_back(static_cast<double>(p[k]));
+  }
+};
+
+/// An axis-aligned box in the curve's dimension.
+struct AnyBox {
+  std::vector<double> lo;
+  std::vector<double> hi;
+};
+
+/// The curve's points at the parameters t (any finite t; outside the domain the first or
+/// last piece is extrapolated). Errors name "t[j]": a non-finite parameter, a point that
+/// overflows, a pole of a rational curve.
+[[nodiscard]] PointList evaluate(const AnyCurve& c, std::span<const double> t);
+
+/// The order-k derivative vectors (k >= 0) at the parameters t; errors as evaluate().
+[[nodiscard]] PointList derivatives(const AnyCurve& c, std::span<const double> t, int k);
+
+/// The tight axis-aligned box of the curve over its domain.
+[[nodiscard]] AnyBox bounds(const AnyCurve& c);
+
+/// A polyline within `tolerance` of the curve, from its start to its end (algo/flatten).
+[[nodiscard]] PointList flatten(const AnyCurve& c, double tolerance);
+
+/// The curve as a path of bezier / rational_bezier segments with the same parametrisation.
+[[nodiscard]] AnyCurve to_bezier(const AnyCurve& c);
+
+/// The same curve as its exact Bézier pieces (a Pieces<double, D> in a variant).
+using AnyPieces = typename detail::AnyCurveOf<CurveTypeList<Pieces>, std::make_integer_sequence<int, max_dimension>>::type;
+[[nodiscard]] AnyPieces pieces(const AnyCurve& c);
+
+/// The halves of a curve split at t (types with a split member: bezier, rational_bezier).
+/// Throws InvalidArgument("curve.type", ...) for other types, ("t", ...) for t outside the
+/// domain.
+struct AnySplit {
+  AnyCurve left;
+  AnyCurve right;
+};
+[[nodiscard]] AnySplit split(const AnyCurve& c, double t);
+
+/// The curve at degree + times (types with an elevate member); the result's degree is at
+/// most max_degree, else InvalidArgument("times", ...).
+[[nodiscard]] AnyCurve elevate(const AnyCurve& c, int times);
 
 }  // namespace casteljau::io

@@ -191,6 +191,7 @@ class SvgDocument {
   /// flattened in page space within tolerance_px (>= 0.001 px, the written resolution).
   void curve(const Bezier<double, 2>& c, const Paint& paint, double tolerance_px = default_tolerance_px);
   void curve(const RationalBezier<double, 2>& c, const Paint& paint, double tolerance_px = default_tolerance_px);
+  void curve(const Pieces<double, 2>& c, const Paint& paint, double tolerance_px = default_tolerance_px);
   void curve(const Path<double, 2>& c, const Paint& paint, double tolerance_px = default_tolerance_px);
 
   /// <g class="css_class"> ... </g>; groups nest. str() closes any left open.

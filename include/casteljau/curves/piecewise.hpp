@@ -1,0 +1,237 @@
+// Piecewise curves: segments joined at breaks u_0 < u_1 < ... < u_k, each segment's own
+// domain mapped affinely onto its break interval. `Pieces` (Bézier and rational Bézier
+// segments) is the exact form every curve type converts to and every query works on.
+#pragma once
+
+#include <algorithm>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "casteljau/curves/bezier.hpp"
+#include "casteljau/curves/rational_bezier.hpp"
+
+namespace casteljau {
+
+namespace detail {
+
+/// The parameter in [to.lo, to.hi] of the parameter s of [from.lo, from.hi] under the
+/// increasing affine map between them; the ends map exactly onto the ends.
+template <class T>
+T map_parameter(T s, const Interval<T>& from, const Interval<T>& to) {
+  if (s == from.lo) return to.lo;
+  if (s == from.hi) return to.hi;
+  return to.lo + (s - from.lo) / from.length() * to.length();
+}
+
+/// Checks breaks for k segments: k >= 1, k + 1 finite, strictly increasing breaks.
+/// Throws InvalidArgument naming "segments", "breaks" or "breaks[i]".
+template <class T>
+void check_breaks(const std::vector<T>& breaks, std::size_t k) {
+  if (k == 0) throw InvalidArgument("segments", "a path needs at least one segment");
+  if (breaks.size() != k + 1) {
+    throw InvalidArgument("breaks", "needs one more break than segments: " + std::to_string(k) + " segments but " +
+                                        std::to_string(breaks.size()) + " breaks");
+  }
+  for (std::size_t i = 0; i < breaks.size(); ++i) {
+    const std::string where = "breaks[" + std::to_string(i) + "]";
+    require_finite(breaks[i], where);
+    if (i > 0 && !(breaks[i] > breaks[i - 1])) {
+      throw InvalidArgument(where, "breaks must be strictly increasing (" + format_number(breaks[i]) + " after " +
+                                       format_number(breaks[i - 1]) + ")");
+    }
+  }
+}
+
+/// Shared implementation of Path and Pieces (CRTP: Derived is the concrete type, built by
+/// reverse() and transform()). Segment is a std::variant of curve types, each with
+/// domain(), operator(), derivative_at(t, k) and reverse(), transform() that keep its
+/// domain. Invariants (checked in the constructor): at least one segment, k + 1 finite,
+/// strictly increasing breaks for k segments.
+template <class Derived, class T, int D, class Segment>
+class PiecewiseCurve {
+ public:
+  using Scalar = T;
+  using PointType = Point<T, D>;
+  using VectorType = Vector<T, D>;
+  using SegmentType = Segment;
+  static constexpr int dimension = D;
+
+  /// Segments with the default breaks 0, 1, ..., k.
+  explicit PiecewiseCurve(std::vector<Segment> segments)
+      : segments_(std::move(segments)), breaks_(default_breaks(segments_.size())) {
+    validate();
+  }
+  PiecewiseCurve(std::vector<Segment> segments, std::vector<T> breaks)
+      : segments_(std::move(segments)), breaks_(std::move(breaks)) {
+    validate();
+  }
+
+  [[nodiscard]] const std::vector<Segment>& segments() const { return segments_; }
+  [[nodiscard]] const std::vector<T>& breaks() const { return breaks_; }
+  [[nodiscard]] std::size_t size() const { return segments_.size(); }
+  [[nodiscard]] Interval<T> domain() const { return {breaks_.front(), breaks_.back()}; }
+  /// The break interval [u_i, u_{i+1}] of segment i.
+  [[nodiscard]] Interval<T> segment_domain(std::size_t i) const { return {breaks_[i], breaks_[i + 1]}; }
+  /// Segment i's own domain (for example [0, 1] for a Bézier segment).
+  [[nodiscard]] Interval<T> own_domain(std::size_t i) const {
+    return std::visit([](const auto& s) { return Interval<T>(s.domain()); }, segments_[i]);
+  }
+
+  /// The segment whose interval holds u: the right one at an interior break, the first
+  /// or last one outside the domain (extrapolation). O(log k).
+  [[nodiscard]] std::size_t segment_index(T u) const {
+    const auto it = std::upper_bound(breaks_.begin() + 1, breaks_.end() - 1, u);
+    return static_cast<std::size_t>(it - (breaks_.begin() + 1));
+  }
+
+  /// Segment i's own parameter at the curve parameter u.
+  [[nodiscard]] T local_parameter(std::size_t i, T u) const { return map_parameter(u, segment_domain(i), own_domain(i)); }
+  /// The curve parameter of segment i's own parameter t (the lift of a segment query).
+  [[nodiscard]] T global_parameter(std::size_t i, T t) const { return map_parameter(t, own_domain(i), segment_domain(i)); }
+
+  [[nodiscard]] PointType operator()(T u) const {
+    require_finite(u, "t");
+    const std::size_t i = segment_index(u);
+    const T t = local_parameter(i, u);
+    return std::visit([&](const auto& s) { return s(t); }, segments_[i]);
+  }
+
+  /// The k-th derivative (k >= 0; k = 0 gives the point as a vector) with respect to the
+  /// curve parameter: the segment's derivative times (own length / break length)^k
+  /// (chain rule). At an interior break the right segment answers, at the end the last.
+  [[nodiscard]] VectorType derivative_at(T u, int k = 1) const {
+    require_finite(u, "t");
+    if (k < 0) throw InvalidArgument("k", "derivative order must be >= 0, got " + std::to_string(k));
+    const std::size_t i = segment_index(u);
+    return segment_derivative(i, local_parameter(i, u), k);
+  }
+
+  /// The k-th derivative (k >= 0) of segment i at the fraction s of its own domain (s = 0
+  /// its start, s = 1 its end), scaled to the curve parameter: what continuity checks
+  /// compare on either side of a break.
+  [[nodiscard]] VectorType one_sided_derivative(std::size_t i, T s, int k) const {
+    if (i >= segments_.size()) {
+      throw InvalidArgument("segment", "must name a segment 0.." + std::to_string(segments_.size() - 1) + ", got " +
+                                           std::to_string(i));
+    }
+    require_finite(s, "t");
+    if (k < 0) throw InvalidArgument("k", "derivative order must be >= 0, got " + std::to_string(k));
+    return segment_derivative(i, own_domain(i).at(s), k);
+  }
+
+  /// Box of all control points; contains the curve over its domain.
+  [[nodiscard]] Box<T, D> control_bounds() const {
+    Box<T, D> b = Box<T, D>::empty_box();
+    for (const auto& s : segments_) b.add(std::visit([](const auto& c) { return c.control_bounds(); }, s));
+    return b;
+  }
+
+  /// The same curve traversed backwards on the same domain: u -> u_0 + u_k - u.
+  [[nodiscard]] Derived reverse() const {
+    std::vector<Segment> segs;
+    std::vector<T> br;
+    segs.reserve(segments_.size());
+    br.reserve(breaks_.size());
+    for (auto it = segments_.rbegin(); it != segments_.rend(); ++it)
+      segs.push_back(std::visit([](const auto& c) { return Segment(c.reverse()); }, *it));
+    for (auto it = breaks_.rbegin(); it != breaks_.rend(); ++it) br.push_back(breaks_.front() + breaks_.back() - *it);
+    br.front() = breaks_.front();  // exact ends despite rounding
+    br.back() = breaks_.back();
+    return Derived(std::move(segs), std::move(br));
+  }
+
+  [[nodiscard]] Derived transform(const Affine<T, D>& m) const {
+    std::vector<Segment> segs;
+    segs.reserve(segments_.size());
+    for (const auto& s : segments_) segs.push_back(std::visit([&](const auto& c) { return Segment(c.transform(m)); }, s));
+    return Derived(std::move(segs), breaks_);
+  }
+
+  friend bool operator==(const PiecewiseCurve&, const PiecewiseCurve&) = default;
+
+ private:
+  VectorType segment_derivative(std::size_t i, T t, int k) const {
+    const T scale = own_domain(i).length() / segment_domain(i).length();
+    return std::visit(
+        [&](const auto& s) {
+          if (k == 0) return s(t).to_vector();
+          VectorType v = s.derivative_at(t, k);
+          for (int j = 0; j < k; ++j) v *= scale;
+          return v;
+        },
+        segments_[i]);
+  }
+
+  void validate() const { check_breaks(breaks_, segments_.size()); }
+
+  static std::vector<T> default_breaks(std::size_t k) {
+    std::vector<T> b(k + 1);
+    for (std::size_t i = 0; i <= k; ++i) b[i] = static_cast<T>(i);
+    return b;
+  }
+
+  std::vector<Segment> segments_;
+  std::vector<T> breaks_;
+};
+
+}  // namespace detail
+
+/// One piece of the exact piecewise Bézier form: a polynomial or a rational Bézier curve.
+template <class T, int D>
+using BezierPiece = std::variant<Bezier<T, D>, RationalBezier<T, D>>;
+
+/// The exact piecewise (rational) Bézier form of a curve, with the curve's own
+/// parametrisation: piece i on [u_i, u_{i+1}], its [0, 1] mapped affinely onto it. Every
+/// curve type converts to it (the free function pieces(c)), and the queries (bounds,
+/// flatten, and later length, closest point, intersections) are written once on it,
+/// with one kernel per piece type; global_parameter() lifts a piece's parameter back.
+template <class T, int D>
+class Pieces : public detail::PiecewiseCurve<Pieces<T, D>, T, D, BezierPiece<T, D>> {
+  using Base = detail::PiecewiseCurve<Pieces<T, D>, T, D, BezierPiece<T, D>>;
+
+ public:
+  using Base::Base;
+  friend bool operator==(const Pieces&, const Pieces&) = default;
+};
+
+static_assert(DifferentiableCurve<Pieces<double, 2>>);
+
+namespace detail {
+/// Whether C is a piece type (Bézier or rational Bézier): the types that queries have
+/// kernels for. Every other curve type reaches the kernels through pieces(c).
+template <class C>
+inline constexpr bool is_bezier_piece = false;
+template <class T, int D>
+inline constexpr bool is_bezier_piece<Bezier<T, D>> = true;
+template <class T, int D>
+inline constexpr bool is_bezier_piece<RationalBezier<T, D>> = true;
+}  // namespace detail
+
+/// The piecewise Bézier form of a Bézier or rational Bézier curve: itself, on [0, 1].
+template <class T, int D>
+Pieces<T, D> pieces(const Bezier<T, D>& c) {
+  return Pieces<T, D>({BezierPiece<T, D>(c)}, {T(0), T(1)});
+}
+template <class T, int D>
+Pieces<T, D> pieces(const RationalBezier<T, D>& c) {
+  return Pieces<T, D>({BezierPiece<T, D>(c)}, {T(0), T(1)});
+}
+template <class T, int D>
+Pieces<T, D> pieces(const Pieces<T, D>& c) {
+  return c;
+}
+
+/// Appends the pieces of a curve whose domain is mapped affinely onto [lo, hi] of a
+/// composite curve (the same for a path segment and for a nested path).
+template <class T, int D>
+void append_pieces(const Pieces<T, D>& p, const Interval<T>& onto, std::vector<BezierPiece<T, D>>& segs, std::vector<T>& breaks) {
+  const Interval<T> from = p.domain();
+  if (breaks.empty()) breaks.push_back(onto.lo);
+  for (std::size_t j = 0; j < p.size(); ++j) {
+    segs.push_back(p.segments()[j]);
+    breaks.push_back(detail::map_parameter(p.breaks()[j + 1], from, onto));
+  }
+}
+
+}  // namespace casteljau

@@ -1,0 +1,142 @@
+// The run-time operations on AnyCurve, compiled once: every registered curve type at
+// every dimension meets each algorithm here and nowhere else.
+#include "casteljau/io/any_curve.hpp"
+
+#include <cmath>
+#include <string>
+#include <variant>
+
+#include "casteljau/algo/bounds.hpp"
+#include "casteljau/algo/flatten.hpp"
+
+namespace casteljau::io {
+
+namespace {
+
+std::string t_path(std::size_t j) { return "t[" + std::to_string(j) + "]"; }
+
+/// Runs g() for parameter j: an error the library reports for "t" names "t[j]".
+template <class G>
+auto at_parameter(std::size_t j, G&& g) {
+  try {
+    return g();
+  } catch (const InvalidArgument& e) {
+    if (e.where() == "t") throw InvalidArgument(t_path(j), e.problem());
+    throw;
+  }
+}
+
+template <class V>
+bool all_finite(const V& v) {
+  for (int d = 0; d < V::dimension; ++d) {
+    if (!std::isfinite(v[d])) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+int dimension(const AnyCurve& c) {
+  return std::visit([](const auto& x) { return std::decay_t<decltype(x)>::dimension; }, c);
+}
+
+Interval<double> domain(const AnyCurve& c) {
+  return std::visit([](const auto& x) { return Interval<double>(x.domain()); }, c);
+}
+
+PointList evaluate(const AnyCurve& c, std::span<const double> t) { return derivatives(c, t, 0); }
+
+PointList derivatives(const AnyCurve& c, std::span<const double> t, int k) {
+  if (k < 0) throw InvalidArgument("k", "derivative order must be >= 0, got " + std::to_string(k));
+  return std::visit(
+      [&](const auto& x) {
+        PointList out{std::decay_t<decltype(x)>::dimension, {}};
+        out.coords.reserve(t.size() * static_cast<std::size_t>(out.dim));
+        for (std::size_t j = 0; j < t.size(); ++j) {
+          const auto v = at_parameter(j, [&] {
+            require_finite(t[j], "t");
+            return k == 0 ? x(t[j]).to_vector() : x.derivative_at(t[j], k);
+          });
+          if (!all_finite(v)) {
+            throw InvalidArgument(t_path(j), (k == 0 ? std::string("the curve's point") : "the order " + std::to_string(k) + " derivative") +
+                                                 " at t = " + casteljau::detail::format_number(t[j]) +
+                                                 " is not finite (overflow, or a pole of a rational curve)");
+          }
+          out.push_back(v);
+        }
+        return out;
+      },
+      c);
+}
+
+AnyBox bounds(const AnyCurve& c) {
+  return std::visit(
+      [](const auto& x) {
+        const auto b = casteljau::bounds(x);
+        AnyBox out;
+        for (int d = 0; d < std::decay_t<decltype(x)>::dimension; ++d) {
+          out.lo.push_back(b.lo[d]);
+          out.hi.push_back(b.hi[d]);
+        }
+        return out;
+      },
+      c);
+}
+
+PointList flatten(const AnyCurve& c, double tolerance) {
+  return std::visit(
+      [&](const auto& x) {
+        PointList out{std::decay_t<decltype(x)>::dimension, {}};
+        for (const auto& p : casteljau::flatten(x, tolerance)) out.push_back(p);
+        return out;
+      },
+      c);
+}
+
+AnyPieces pieces(const AnyCurve& c) {
+  return std::visit([](const auto& x) { return AnyPieces(casteljau::pieces(x)); }, c);
+}
+
+AnyCurve to_bezier(const AnyCurve& c) {
+  return std::visit([](const auto& x) { return AnyCurve(to_bezier_path(x)); }, c);
+}
+
+AnySplit split(const AnyCurve& c, double t) {
+  return std::visit(
+      [&]<class C>(const C& x) -> AnySplit {
+        if constexpr (SplittableCurve<C>) {
+          const Interval<double> dom = x.domain();
+          require_finite(t, "t");
+          if (!dom.contains(t)) {
+            throw InvalidArgument("t", "split parameter must lie in the domain [" + casteljau::detail::format_number(dom.lo) +
+                                           ", " + casteljau::detail::format_number(dom.hi) + "], got " +
+                                           casteljau::detail::format_number(t));
+          }
+          auto halves = x.split(t);
+          return {AnyCurve(std::move(halves.left)), AnyCurve(std::move(halves.right))};
+        } else {
+          throw InvalidArgument("curve.type", "split needs a bezier or rational_bezier curve, got a " + std::string(type_name(c)) +
+                                                  (std::is_same_v<C, Path<double, C::dimension>> ? " (split its segments instead)" : ""));
+        }
+      },
+      c);
+}
+
+AnyCurve elevate(const AnyCurve& c, int times) {
+  if (times < 1) throw InvalidArgument("times", "elevation count must be >= 1, got " + std::to_string(times));
+  return std::visit(
+      [&]<class C>(const C& x) -> AnyCurve {
+        if constexpr (requires { x.elevate(times); }) {
+          if (times > max_degree - x.degree()) {
+            throw InvalidArgument("times", "elevating degree " + std::to_string(x.degree()) + " by " + std::to_string(times) +
+                                               " exceeds the highest supported degree " + std::to_string(max_degree));
+          }
+          return AnyCurve(x.elevate(times));
+        } else {
+          throw InvalidArgument("curve.type", "elevate needs a bezier or rational_bezier curve, got a " + std::string(type_name(c)));
+        }
+      },
+      c);
+}
+
+}  // namespace casteljau::io
