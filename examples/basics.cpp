@@ -21,7 +21,7 @@ int main() {
   std::printf("left ends at (%g, %g) = c(0.4)\n", left.points().back()[0], left.points().back()[1]);
 
   // Degree elevation keeps the curve; reduction finds the best lower-degree curve.
-  const auto reduced = c.elevate(2).reduce(3);
+  const auto reduced = reduce_degree(c.elevate(2), 3);
   std::printf("elevate 3->5 then reduce to 3: error bound %.2g\n", reduced.error_bound);
 
   // The tight box comes from the roots of the derivative, not the control points.

@@ -948,7 +948,7 @@ Figure degree_reduction() {
   doc.polyline(c.points(), polygon_paint());
   const std::array<int, 3> targets = {3, 4, 5};
   std::vector<Reduction<double, 2>> red;
-  for (const int m : targets) red.push_back(c.reduce(m));
+  for (const int m : targets) red.push_back(reduce_degree(c, m));
   for (std::size_t k = 0; k < red.size(); ++k) doc.curve(red[k].curve, curve_paint(ramp(k / 2.0), 2));
   doc.curve(c, curve_paint(ink, 2.6));
   control_points(doc, c.points());

@@ -542,7 +542,7 @@ class BadInputTest(CliTest):
         for k in (-1, 1.5, True, "2", 10 ** 30):
             self.bad("eval", {"curve": bezier(CUBIC), "t": [0], "derivatives": k}, "derivatives")
         # A result that overflows is refused, not written as null.
-        self.bad("eval", {"curve": bezier(CUBIC), "t": [0, 1e200]}, "t[1]", contains="not finite")
+        self.bad("eval", {"curve": bezier(CUBIC), "t": [0, 1e200]}, "t[1]", contains="not representable")
 
     def test_split(self):
         self.bad("split", {"curve": bezier(CUBIC)}, "t", contains="missing")

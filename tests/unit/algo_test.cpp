@@ -315,7 +315,7 @@ TEST(Reduction, ElevateThenReduceRoundTrip) {
   for (int r : {1, 2, 5}) {
     const auto e = c.elevate(r);
     for (Endpoints ends : {Endpoints::keep, Endpoints::free}) {
-      const auto red = e.reduce(3, ends);
+      const auto red = reduce_degree(e, 3, ends);
       ASSERT_EQ(red.curve.degree(), 3);
       for (int i = 0; i <= 3; ++i) EXPECT_LE(test::max_coord_diff(red.curve.points()[i], c.points()[i]), 2e-14) << i;
       EXPECT_LE(red.max_error, 1e-14);
@@ -327,9 +327,9 @@ TEST(Reduction, ElevateThenReduceRoundTrip) {
     }
   }
   // m == n is the identity to rounding; degree 0 (free) gives the mean of a constant.
-  const auto same = c.reduce(3, Endpoints::free);
+  const auto same = reduce_degree(c, 3, Endpoints::free);
   for (int i = 0; i <= 3; ++i) EXPECT_LE(test::max_coord_diff(same.curve.points()[i], c.points()[i]), 2e-14);
-  const auto pt = Bezier<double, 2>{{2, 3}, {2, 3}, {2, 3}}.reduce(0, Endpoints::free);
+  const auto pt = reduce_degree(Bezier<double, 2>{{2, 3}, {2, 3}, {2, 3}}, 0, Endpoints::free);
   EXPECT_LE(test::max_coord_diff(pt.curve.points()[0], P2(2, 3)), 4 * 3 * eps);
 }
 
@@ -339,7 +339,7 @@ TEST(Reduction, GenuineReductionReportsErrorWithinBound) {
   const Bezier<double, 2> c{{0, 0}, {1, 3}, {2, -1}, {3, 4}, {4, -2}, {5, 1}};
   for (Endpoints ends : {Endpoints::keep, Endpoints::free}) {
     for (int m : {1, 2, 3, 4}) {
-      const auto red = c.reduce(m, ends);
+      const auto red = reduce_degree(c, m, ends);
       EXPECT_GT(red.max_error, 0.0);
       EXPECT_LE(red.max_error, red.error_bound);
       double dense = 0;
@@ -353,7 +353,7 @@ TEST(Reduction, GenuineReductionReportsErrorWithinBound) {
     }
   }
   // keep with m = 1 is the chord.
-  const auto chord = c.reduce(1, Endpoints::keep);
+  const auto chord = reduce_degree(c, 1, Endpoints::keep);
   EXPECT_EQ(chord.curve.points()[0], P2(0, 0));
   EXPECT_EQ(chord.curve.points()[1], P2(5, 1));
 }

@@ -80,7 +80,7 @@ TEST_P(DegenerateFixture, ElevateAndReduce) {
     for (double t : ts(50)) EXPECT_LE(test::max_coord_diff(e(t), f.curve(t)), tol_for(f)) << t;
     // Back down with free end points: finite, and exact up to the Gram system's rounding
     // (condition ~4^n: at most ~4^11 eps relative for the degree-11 fixture).
-    const auto red = e.reduce(f.curve.degree(), Endpoints::free);
+    const auto red = reduce_degree(e, f.curve.degree(), Endpoints::free);
     for (const auto& p : red.curve.points()) ASSERT_TRUE(test::all_finite(p));
     EXPECT_LE(red.max_error, 1e-6 * f.scale);
     EXPECT_LE(red.max_error, red.error_bound + tol_for(f));

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "casteljau/basis/roots.hpp"
@@ -10,10 +11,12 @@
 namespace casteljau {
 
 /// The tight box of a Bézier curve over [0, 1]: the end points plus the curve at every
-/// root in (0, 1) of each coordinate of the hodograph (Bernstein root finding). Accurate
-/// to a few eps of the coordinates at simple extrema; at a multiple root of the
-/// derivative the coordinate is flat, so the location error does not matter to the value.
-/// Cost O(D n^2) per extremum. See control_bounds() for the cheap conservative box.
+/// root in (0, 1) of each coordinate of the hodograph (Bernstein root finding, on a copy
+/// scaled by a power of two so that the differences cannot overflow). Accurate to a few
+/// eps of the coordinates at simple extrema; at a multiple root of the derivative the
+/// coordinate is flat, so the location error does not matter to the value. Cost O(D n^2)
+/// per subdivision step and per extremum. See control_bounds() for the cheap
+/// conservative box. Throws NumericalError if a root solve does not converge.
 template <class T, int D>
 Box<T, D> bounds(const Bezier<T, D>& c) {
   Box<T, D> b = Box<T, D>::empty_box();
@@ -22,9 +25,10 @@ Box<T, D> bounds(const Bezier<T, D>& c) {
   const auto& P = c.points();
   const int n = c.degree();
   if (n < 2) return b;
+  const int e = detail::scale_exponent<Point<T, D>>(P);
   std::vector<T> d(static_cast<std::size_t>(n));
   for (int k = 0; k < D; ++k) {
-    for (int i = 0; i < n; ++i) d[i] = P[i + 1][k] - P[i][k];  // hodograph / n
+    for (int i = 0; i < n; ++i) d[i] = std::ldexp(P[i + 1][k], -e) - std::ldexp(P[i][k], -e);  // hodograph / n
     for (T r : bernstein_roots<T>(d)) {
       if (r > 0 && r < 1) b.add(c(r));
     }
@@ -34,7 +38,12 @@ Box<T, D> bounds(const Bezier<T, D>& c) {
 
 /// The tight box of a rational Bézier curve over [0, 1]. Coordinate k has derivative
 /// (A_k' W - A_k W') / W^2 with A_k = sum w_i P_ik B(i,n), W = sum w_i B(i,n); the roots
-/// of the numerator (a Bernstein product of degree 2n - 1) are the candidates.
+/// of the numerator (a Bernstein product of degree 2n - 1) are the candidates. Computed
+/// with the weights divided by the largest and the points scaled by a power of two, so
+/// that no product overflows for weights and coordinates of any size, and with binomial-
+/// free Bernstein products (degree 1000 and more). Cost O(D n^2) for the products plus
+/// the root finding on degree 2n - 1. Throws NumericalError if a root solve does not
+/// converge.
 template <class T, int D>
 Box<T, D> bounds(const RationalBezier<T, D>& c) {
   Box<T, D> b = Box<T, D>::empty_box();
@@ -43,6 +52,7 @@ Box<T, D> bounds(const RationalBezier<T, D>& c) {
   const int n = c.degree();
   if (n < 1) return b;
   const auto& P = c.points();
+  const int e = detail::scale_exponent<Point<T, D>>(P);
   // Scaling all weights by one constant leaves the curve unchanged; dividing by the
   // largest keeps the products of weights below from overflowing (weights up to 1e308).
   const T wmax = *std::max_element(c.weights().begin(), c.weights().end());
@@ -51,7 +61,7 @@ Box<T, D> bounds(const RationalBezier<T, D>& c) {
   std::vector<T> dW(static_cast<std::size_t>(n)), A(w.size()), dA(static_cast<std::size_t>(n));
   for (int i = 0; i < n; ++i) dW[i] = w[i + 1] - w[i];
   for (int k = 0; k < D; ++k) {
-    for (int i = 0; i <= n; ++i) A[i] = w[i] * P[i][k];
+    for (int i = 0; i <= n; ++i) A[i] = w[i] * std::ldexp(P[i][k], -e);
     for (int i = 0; i < n; ++i) dA[i] = A[i + 1] - A[i];
     const auto p1 = bernstein_product<T>(dA, w), p2 = bernstein_product<T>(A, dW);
     std::vector<T> num(p1.size());

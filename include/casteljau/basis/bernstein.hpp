@@ -3,6 +3,8 @@
 // Plain functions over spans, callable without a curve object.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <span>
 #include <string>
@@ -43,9 +45,14 @@ T bernstein(int i, int n, T t) {
   return binomial<T>(n, i) * detail::ipow(t, i) * detail::ipow(T(1) - t, n - i);
 }
 
-/// All n+1 values B(0..n, n)(t) into out (size n+1) in O(n): prefix products of t and
-/// suffix products of (1-t) times the binomials. They sum to 1 (partition of unity) up to
-/// rounding and are >= 0 on [0, 1].
+/// All n+1 values B(0..n, n)(t) into out (size n+1) in O(n): B(0,n) = (1-t)^n, then
+/// B(i+1,n) = B(i,n) (n-i)/(i+1) t/(1-t). The running value is kept as a mantissa and a
+/// separate power-of-two exponent (frexp after every step), so no intermediate over- or
+/// underflows at any degree: a value is 0 only if it is below the smallest subnormal.
+/// Relative error about (n + 4 i) eps for B(i,n). They sum to 1 (partition of unity) up
+/// to rounding and are >= 0 on [0, 1]. t = 1 (where t/(1-t) is undefined) is exact: the
+/// unit vector e_n. Throws InvalidArgument for n < 0 ("n"), a non-finite t ("t") or a
+/// wrong out size ("out").
 template <class T>
 void bernstein_all(int n, T t, std::span<T> out) {
   detail::require_degree(n);
@@ -54,16 +61,33 @@ void bernstein_all(int n, T t, std::span<T> out) {
     throw InvalidArgument("out", "needs n + 1 = " + std::to_string(n + 1) + " entries, got " + std::to_string(out.size()));
   }
   const T s = T(1) - t;
-  // out[i] <- s^(n-i), then multiply in C(n,i) t^i from the left.
-  T acc = 1;
-  for (int i = n; i >= 0; --i) {
-    out[static_cast<std::size_t>(i)] = acc;
-    acc *= s;
+  if (s == 0) {
+    std::fill(out.begin(), out.end(), T(0));
+    out[static_cast<std::size_t>(n)] = 1;
+    return;
   }
-  T tp = 1;
+  // (mant, ex) holds mant 2^ex; start with s^n by repeated squaring-free multiplication.
+  T mant = 1;
+  long ex = 0;
+  auto renormalise = [&] {
+    int e = 0;
+    mant = std::frexp(mant, &e);
+    ex += e;
+  };
+  for (int i = 0; i < n; ++i) {
+    mant *= s;
+    renormalise();
+  }
+  const T ratio = t / s;
   for (int i = 0; i <= n; ++i) {
-    out[static_cast<std::size_t>(i)] *= binomial<T>(n, i) * tp;
-    tp *= t;
+    out[static_cast<std::size_t>(i)] = ex < -100000 ? T(0) : std::ldexp(mant, static_cast<int>(std::max(ex, -100000L)));
+    if (i == n) break;
+    mant *= static_cast<T>(n - i) / static_cast<T>(i + 1) * ratio;
+    if (mant == 0) {  // t = 0: every later value is 0
+      std::fill(out.begin() + i + 1, out.end(), T(0));
+      return;
+    }
+    renormalise();
   }
 }
 

@@ -1,7 +1,10 @@
 // Binomial coefficients C(n, k) as floating-point numbers.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
+#include <span>
+#include <string>
 #include <vector>
 
 #include "casteljau/core/error.hpp"
@@ -44,5 +47,36 @@ T binomial(int n, int k) {
   for (int i = 1; i <= k; ++i) r = r * static_cast<T>(n - k + i) / static_cast<T>(i);
   return r;
 }
+
+namespace detail {
+
+/// The hypergeometric weights h_j = C(K, j) C(N-K, m-j) / C(N, m) for j = lo..hi, lo =
+/// max(0, m-(N-K)), hi = min(K, m), written to out[j - lo] (out.size() == hi - lo + 1).
+/// They are the coefficients of Forrest's degree elevation (N = n + r, K = n, m = i) and
+/// of the Bernstein product (N = m + n, K = m, m = k), and sum to 1 (Vandermonde).
+/// Computed without binomials (which overflow a double past N = 1029): h_mode = 1 at the
+/// mode, then the ratio h_{j+1} / h_j = (K-j)(m-j) / ((j+1)(N-K-m+j+1)) outward (the
+/// weights decrease away from the mode, so nothing overflows; far tails may underflow to
+/// 0, below 2^-1074 of the largest), and finally divided by their sum. Relative error
+/// about 4 |j - mode| + 2 eps per weight. Cost O(hi - lo).
+template <class T>
+void hypergeometric_row(int N, int K, int m, std::span<T> out) {
+  const int lo = std::max(0, m - (N - K)), hi = std::min(K, m);
+  const auto at = [&](int j) -> T& { return out[static_cast<std::size_t>(j - lo)]; };
+  // The mode of the hypergeometric distribution, floor((m+1)(K+1)/(N+2)), clamped.
+  const long long mode_ll = (static_cast<long long>(m) + 1) * (static_cast<long long>(K) + 1) / (static_cast<long long>(N) + 2);
+  const int mode = std::clamp(static_cast<int>(mode_ll), lo, hi);
+  const auto ratio = [&](int j) {  // h_{j+1} / h_j
+    return (static_cast<T>(K - j) * static_cast<T>(m - j)) / (static_cast<T>(j + 1) * static_cast<T>(N - K - m + j + 1));
+  };
+  at(mode) = 1;
+  for (int j = mode; j < hi; ++j) at(j + 1) = at(j) * ratio(j);
+  for (int j = mode; j > lo; --j) at(j - 1) = at(j) / ratio(j - 1);
+  T sum = 0;
+  for (int j = lo; j <= hi; ++j) sum += at(j);
+  for (int j = lo; j <= hi; ++j) at(j) /= sum;
+}
+
+}  // namespace detail
 
 }  // namespace casteljau

@@ -39,14 +39,26 @@ int sign_variations(std::span<const T> c) {
 /// The single root of the Bernstein form c on (0, 1) given c[0] and c[n] of opposite
 /// signs: the Illinois variant of regula falsi, with values from de Casteljau, ending at
 /// a bracket of width <= 4 eps or a zero value. Converges superlinearly on simple roots.
+/// Safeguard: when four steps have not halved the bracket, the next step bisects, so the
+/// bracket halves at least every 5 steps and 50 halvings (1 -> 4 eps) take at most 250
+/// steps; the limit of 256 is therefore never hit, and if it were, NumericalError says so
+/// rather than returning an unconverged bracket. Cost O(n^2) per step.
 template <class T>
 T isolated_root(std::span<const T> c) {
   T a = 0, b = 1;
   T fa = c.front(), fb = c.back();
   int side = 0;
-  for (int it = 0; it < 200; ++it) {
+  T width_ref = 1;  // bracket width at the last checkpoint
+  int since = 0;    // steps since the last checkpoint
+  for (int it = 0; it < 256; ++it) {
     T x = (a * fb - b * fa) / (fb - fa);
-    if (!(x > a && x < b)) x = (a + b) / 2;
+    bool bisect = false;
+    if (++since == 5) {
+      bisect = b - a > width_ref / 2;
+      width_ref = b - a;
+      since = 0;
+    }
+    if (bisect || !(x > a && x < b)) x = a + (b - a) / 2;
     const T fx = de_casteljau<T, T>(c, x);
     if (fx == 0) return x;
     if (sign_of(fx) == sign_of(fa)) {
@@ -60,9 +72,9 @@ T isolated_root(std::span<const T> c) {
       if (side == 1) fa /= 2;
       side = 1;
     }
-    if (b - a <= 4 * std::numeric_limits<T>::epsilon()) break;
+    if (b - a <= 4 * std::numeric_limits<T>::epsilon()) return (a + b) / 2;
   }
-  return (a + b) / 2;
+  throw NumericalError("bernstein_roots: the bracketed root solve did not converge in 256 steps");
 }
 
 template <class T>
@@ -75,7 +87,8 @@ void bernstein_roots_rec(std::span<const T> c, T lo, T hi, int depth, std::vecto
     return;
   }
   // Several roots, or a root at an end of this piece: halve. The depth cap (2^-60 of the
-  // original width) stops the subdivision at multiple roots, which are reported once.
+  // original width) stops the subdivision at multiple roots, which are reported once: a
+  // result, not a silent limit (roots closer than 2^-60 < merge are merged anyway).
   if (depth >= 60) {
     out.push_back((lo + hi) / 2);
     return;
@@ -98,6 +111,8 @@ void bernstein_roots_rec(std::span<const T> c, T lo, T hi, int depth, std::vecto
 /// point solver. A root of even multiplicity whose coefficients are rounded may vanish
 /// altogether (the rounded polynomial need not touch zero); odd multiplicities keep their
 /// sign change and are always found. Cost O(n^2) per isolated root plus O(n^2) per subdivision step.
+/// Throws InvalidArgument("c[i]", ...) for a non-finite coefficient and NumericalError if
+/// a bracketed solve does not converge (never observed; see detail::isolated_root).
 template <class T>
 std::vector<T> bernstein_roots(std::span<const T> c, T merge = T(1e-10)) {
   std::vector<T> out;
@@ -116,19 +131,27 @@ std::vector<T> bernstein_roots(std::span<const T> c, T merge = T(1e-10)) {
 }
 
 /// The product of two Bernstein forms f (degree m) and g (degree n) as one of degree m+n:
-/// h_k = sum_{i+j=k} C(m,i) C(n,j) / C(m+n,k) f_i g_j [Farin02, 5.7]. Cost O(mn).
+/// h_k = sum_{i+j=k} C(m,i) C(n,j) / C(m+n,k) f_i g_j [Farin02, 5.7]. The bracketed
+/// factors are hypergeometric weights (they sum to 1 over i for each k), computed by
+/// detail::hypergeometric_row without forming binomials, which would overflow a double
+/// past m + n = 1029. Each h_k is a convex combination of the products f_i g_j: its
+/// error is a few (min(m, n) + 2) eps of max |f_i g_j|. Throws InvalidArgument("f" /
+/// "g", ...) for an empty form. Cost O((m + n) min(m, n)).
 template <class T>
 std::vector<T> bernstein_product(std::span<const T> f, std::span<const T> g) {
   if (f.empty()) throw InvalidArgument("f", "needs at least one coefficient");
   if (g.empty()) throw InvalidArgument("g", "needs at least one coefficient");
   const int m = static_cast<int>(f.size()) - 1, n = static_cast<int>(g.size()) - 1;
   std::vector<T> h(static_cast<std::size_t>(m + n) + 1, T(0));
-  const auto cm = binomial_row<T>(m), cn = binomial_row<T>(n), cmn = binomial_row<T>(m + n);
-  for (int i = 0; i <= m; ++i)
-    for (int j = 0; j <= n; ++j)
-      h[static_cast<std::size_t>(i + j)] += cm[static_cast<std::size_t>(i)] * cn[static_cast<std::size_t>(j)] *
-                                           f[static_cast<std::size_t>(i)] * g[static_cast<std::size_t>(j)];
-  for (int k = 0; k <= m + n; ++k) h[static_cast<std::size_t>(k)] /= cmn[static_cast<std::size_t>(k)];
+  std::vector<T> weights(static_cast<std::size_t>(std::min(m, n)) + 1);
+  for (int k = 0; k <= m + n; ++k) {
+    const int lo = std::max(0, k - n), hi = std::min(m, k);
+    detail::hypergeometric_row<T>(m + n, m, k, std::span<T>(weights.data(), static_cast<std::size_t>(hi - lo + 1)));
+    T s = 0;
+    for (int i = lo; i <= hi; ++i)
+      s += weights[static_cast<std::size_t>(i - lo)] * f[static_cast<std::size_t>(i)] * g[static_cast<std::size_t>(k - i)];
+    h[static_cast<std::size_t>(k)] = s;
+  }
   return h;
 }
 

@@ -46,8 +46,10 @@ class InvalidArgument : public std::invalid_argument {
   std::string problem_;
 };
 
-/// Thrown when an algorithm hits an iteration or depth limit, or the resolution of
-/// floating point, instead of returning a result it cannot guarantee.
+/// Thrown when an algorithm cannot return a result it can guarantee: an iteration or
+/// depth limit would be hit (flatten below the coordinates' resolution, a root solve
+/// that does not converge). Distinct from InvalidArgument: the input is valid, the
+/// algorithm gives up and says so rather than returning an unverified answer.
 class NumericalError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;

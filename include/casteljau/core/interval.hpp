@@ -1,18 +1,30 @@
-// Closed parameter intervals and axis-aligned boxes.
+// Closed parameter intervals and axis-aligned boxes, with their invariants checked when made.
 #pragma once
 
 #include <algorithm>
 #include <limits>
+#include <ostream>
+#include <string>
 
 #include "casteljau/core/point.hpp"
 
 namespace casteljau {
 
-/// The closed interval [lo, hi] (lo <= hi).
+/// The closed interval [lo, hi] of finite numbers with lo <= hi (a single point when
+/// lo == hi). Invariant checked by the two-number constructor, which throws
+/// InvalidArgument("interval.lo" / "interval.hi", ...) for a non-finite end and
+/// ("interval", ...) for lo > hi. The fields stay public for reading (as in
+/// `ab.lo`); code that assigns them takes over the invariant.
 template <class T>
 struct Interval {
   T lo{};
   T hi{};
+
+  /// [0, 0].
+  constexpr Interval() = default;
+  constexpr Interval(T lo_, T hi_) : lo(lo_), hi(hi_) {
+    if (!(lo_ <= hi_) || !(hi_ - lo_ < std::numeric_limits<T>::infinity())) check(lo_, hi_);
+  }
 
   [[nodiscard]] constexpr T length() const { return hi - lo; }
   [[nodiscard]] constexpr bool contains(T x) const { return lo <= x && x <= hi; }
@@ -21,23 +33,54 @@ struct Interval {
   /// The fraction s with at(s) == x.
   [[nodiscard]] constexpr T fraction(T x) const { return (x - lo) / (hi - lo); }
   friend constexpr bool operator==(const Interval&, const Interval&) = default;
+  /// Prints "[0, 1]" (shortest round-trip numbers).
+  friend std::ostream& operator<<(std::ostream& os, const Interval& ab) {
+    return os << '[' << detail::format_number(ab.lo) << ", " << detail::format_number(ab.hi) << ']';
+  }
+
+ private:
+  // Out of line of the fast path: reached only for a violated invariant (or a length
+  // that overflows, which is checked here and allowed).
+  static void check(T a, T b) {
+    require_finite(a, "interval.lo");
+    require_finite(b, "interval.hi");
+    if (!(a <= b)) {
+      throw InvalidArgument("interval", "needs lo <= hi, got [" + detail::format_number(a) + ", " +
+                                            detail::format_number(b) + "]");
+    }
+  }
 };
 
-/// An axis-aligned box [lo, hi] (per coordinate, as Interval), empty() until a point is added.
+/// An axis-aligned box: either empty (the default, and empty_box(); no point inside, lo
+/// = +inf and hi = -inf in every coordinate) or lo[i] <= hi[i] in every coordinate. The
+/// two-corner constructor checks the invariant (InvalidArgument("box", ...) for lo[i] >
+/// hi[i] or NaN); add() keeps it. Fields are public for reading; code that assigns them
+/// takes over the invariant.
 template <class T, int D>
 struct Box {
   Point<T, D> lo;
   Point<T, D> hi;
 
-  static constexpr Box empty_box() {
-    Box b;
+  /// The empty box.
+  constexpr Box() {
     for (int i = 0; i < D; ++i) {
-      b.lo[i] = std::numeric_limits<T>::infinity();
-      b.hi[i] = -std::numeric_limits<T>::infinity();
+      lo[i] = std::numeric_limits<T>::infinity();
+      hi[i] = -std::numeric_limits<T>::infinity();
     }
-    return b;
   }
-  [[nodiscard]] constexpr bool empty() const { return lo[0] > hi[0]; }
+  /// The box with corners lo and hi; needs lo[i] <= hi[i] for every i.
+  constexpr Box(const Point<T, D>& lo_, const Point<T, D>& hi_) : lo(lo_), hi(hi_) {
+    for (int i = 0; i < D; ++i) {
+      if (!(lo[i] <= hi[i])) {
+        throw InvalidArgument("box", "needs lo <= hi in every coordinate, got lo[" + std::to_string(i) + "] = " +
+                                         detail::format_number(lo[i]) + " and hi[" + std::to_string(i) +
+                                         "] = " + detail::format_number(hi[i]));
+      }
+    }
+  }
+
+  static constexpr Box empty_box() { return Box(); }
+  [[nodiscard]] constexpr bool empty() const { return !(lo[0] <= hi[0]); }
   constexpr void add(const Point<T, D>& p) {
     for (int i = 0; i < D; ++i) {
       lo[i] = std::min(lo[i], p[i]);
@@ -54,6 +97,12 @@ struct Box {
       if (p[i] < lo[i] - tolerance || p[i] > hi[i] + tolerance) return false;
     }
     return true;
+  }
+  friend constexpr bool operator==(const Box&, const Box&) = default;
+  /// Prints "[(0, 0), (4, 1.5)]", or "[empty]".
+  friend std::ostream& operator<<(std::ostream& os, const Box& b) {
+    if (b.empty()) return os << "[empty]";
+    return os << '[' << b.lo << ", " << b.hi << ']';
   }
 };
 

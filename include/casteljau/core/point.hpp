@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <ostream>
 #include <string>
 
 #include "casteljau/core/error.hpp"
@@ -152,6 +153,28 @@ constexpr Vector<T, D> lerp(const Vector<T, D>& a, const Vector<T, D>& b, T t) {
   const T s = 1 - t;
   for (int i = 0; i < D; ++i) r[i] = s * a[i] + t * b[i];
   return r;
+}
+
+namespace detail {
+/// Writes "(x, y, ...)" with each coordinate in the shortest form that reads back as the
+/// same value (as the CLI and error messages write numbers).
+template <class T, std::size_t D>
+std::ostream& write_coordinates(std::ostream& os, const std::array<T, D>& c) {
+  os << '(';
+  for (std::size_t i = 0; i < D; ++i) os << (i ? ", " : "") << format_number(c[i]);
+  return os << ')';
+}
+}  // namespace detail
+
+/// Prints "(2, 1.5)": shortest round-trip coordinates.
+template <class T, int D>
+std::ostream& operator<<(std::ostream& os, const Point<T, D>& p) {
+  return detail::write_coordinates(os, p.c);
+}
+/// Prints "(0.5, -1)", as a point.
+template <class T, int D>
+std::ostream& operator<<(std::ostream& os, const Vector<T, D>& v) {
+  return detail::write_coordinates(os, v.c);
 }
 
 /// Throws InvalidArgument naming `where[i]` unless every coordinate is finite.

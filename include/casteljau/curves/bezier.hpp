@@ -7,30 +7,23 @@
 #include <string>
 #include <vector>
 
-#include <Eigen/Cholesky>
 #include <Eigen/Core>
 
 #include "casteljau/basis/bernstein.hpp"
 #include "casteljau/basis/de_casteljau.hpp"
+#include "casteljau/basis/extrapolate.hpp"
 #include "casteljau/basis/power.hpp"
 #include "casteljau/core/affine.hpp"
 #include "casteljau/curves/concepts.hpp"
 
 namespace casteljau {
 
-template <class T, int D>
-class Bezier;
-
-/// Result of Bezier::reduce: the lower-degree curve and how far it is from the original.
-template <class T, int D>
-struct Reduction {
-  Bezier<T, D> curve;
-  T max_error;    ///< max distance at 64 (n + 1) + 1 uniform parameters (an estimate, from below)
-  T error_bound;  ///< guaranteed: max control point distance after elevating back to degree n
-};
-
-/// Whether degree reduction keeps the end points (and so C0 joins of a composite curve).
-enum class Endpoints { keep, free };
+namespace detail {
+/// Tag of the private constructors that curve operations use for results whose
+/// invariants the operation itself guarantees (split, elevate, reverse: convex
+/// combinations or permutations of valid data), so that they are not checked twice.
+struct Trusted {};
+}  // namespace detail
 
 /// A Bézier curve with control points P_0..P_n, n >= 0, over the domain [0, 1].
 ///
@@ -74,30 +67,53 @@ class Bezier {
   [[nodiscard]] const std::vector<PointType>& points() const { return P_; }
   [[nodiscard]] static constexpr Interval<T> domain() { return {T(0), T(1)}; }
 
-  /// P(t) by de Casteljau (see de_casteljau for accuracy). Any finite t: outside [0, 1]
-  /// the same polynomial is extrapolated. Throws for a non-finite t. Cost O(n^2).
+  /// P(t) for any finite t. On [0, 1] by de Casteljau (see de_casteljau for accuracy:
+  /// a few eps of max |P|, exact at 0 and 1). Outside [0, 1] the same polynomial is
+  /// extended, by its Taylor form about the nearer end point on a power-of-two-scaled
+  /// copy (see detail::evaluate_anywhere: error about eps max|P| (1 + 2 d)^n at distance
+  /// d from the domain, in practice far less; see docs/accuracy.md). Never returns NaN
+  /// or infinity: throws InvalidArgument("t", ...) for a non-finite t or when the value
+  /// is not representable (it overflows). Cost O(n^2).
   [[nodiscard]] PointType operator()(T t) const {
     require_finite(t, "t");
-    return de_casteljau<PointType, T>(P_, t);
+    return detail::evaluate_anywhere<PointType, T>(P_, t);
   }
 
-  /// The k-th derivative vector at t (k >= 1): n!/(n-k)! times de Casteljau on the k-th
-  /// forward differences [Farin02, 5.3]. Zero when k > n.
+  /// The k-th derivative vector at t (k >= 0; k = 0 is the point as a vector from the
+  /// origin): n!/(n-k)! times the value of the k-th forward differences [Farin02, 5.3],
+  /// computed on a copy scaled by a power of two so that the differences cannot
+  /// overflow. Zero when k > n. Any finite t, as operator(); throws InvalidArgument("t",
+  /// ...) when the derivative is not representable, ("k", ...) for k < 0.
   [[nodiscard]] VectorType derivative_at(T t, int k = 1) const {
     require_finite(t, "t");
     require_order(k);
+    if (k == 0) return (*this)(t).to_vector();
     const int n = degree();
     if (k > n) return VectorType{};
-    std::vector<VectorType> d = differences(k);
-    VectorType v = de_casteljau<VectorType, T>(d, t);
-    for (int j = 0; j < k; ++j) v *= static_cast<T>(n - j);
-    return v;
+    const int e = detail::scale_exponent<PointType>(P_);
+    std::vector<PointType> d(P_.size());
+    for (std::size_t i = 0; i < P_.size(); ++i) d[i] = detail::scaled(P_[i], -e);
+    for (int r = 1; r <= k; ++r)
+      for (int i = 0; i + r <= n; ++i) {
+        const auto iu = static_cast<std::size_t>(i);
+        d[iu] = PointType::from_vector(d[iu + 1] - d[iu]);
+      }
+    d.resize(static_cast<std::size_t>(n - k + 1));
+    PointType v = detail::evaluate_anywhere<PointType, T>(d, t, "the derivative");
+    for (int j = 0; j < k; ++j)
+      for (int c = 0; c < D; ++c) v[c] *= static_cast<T>(n - j);
+    v = detail::scaled(v, e);
+    if (!detail::all_finite(v)) detail::throw_not_representable("the derivative of order " + std::to_string(k), detail::format_number(t));
+    return v.to_vector();
   }
 
-  /// The k-th derivative curve (hodograph for k = 1), degree max(n - k, 0), with control
-  /// points n!/(n-k)! Delta^k P_i. For k > n, the zero curve of degree 0.
+  /// The k-th derivative curve (hodograph for k = 1; the curve itself for k = 0), degree
+  /// max(n - k, 0), with control points n!/(n-k)! Delta^k P_i. For k > n, the zero curve
+  /// of degree 0. Throws InvalidArgument("k", ...) when a control point of the result is
+  /// not representable (the differences of coordinates near the largest double).
   [[nodiscard]] Bezier derivative(int k = 1) const {
     require_order(k);
+    if (k == 0) return *this;
     const int n = degree();
     if (k > n) return Bezier({PointType{}});
     std::vector<VectorType> d = differences(k);
@@ -105,7 +121,7 @@ class Bezier {
     for (int j = 0; j < k; ++j) f *= static_cast<T>(n - j);
     std::vector<PointType> Q(d.size());
     for (std::size_t i = 0; i < d.size(); ++i) Q[i] = PointType::from_vector(d[i] * f);
-    return Bezier(std::move(Q));
+    return checked(std::move(Q), "k", "the derivative curve of order " + std::to_string(k));
   }
 
   /// The halves on [0, t] and [t, 1], each reparametrised to [0, 1] (de Casteljau
@@ -115,14 +131,17 @@ class Bezier {
     if (t < 0 || t > 1) throw InvalidArgument("t", "split parameter must lie in [0, 1], got " + detail::format_number(t));
     std::vector<PointType> L(P_.size()), R(P_.size());
     de_casteljau_split<PointType, T>(P_, t, L, R);
-    return {Bezier(std::move(L)), Bezier(std::move(R))};
+    // Convex combinations of finite points: finite, except that rounding may step past
+    // the largest double when coordinates are within an ulp of it; checked (O(n)).
+    return {checked(std::move(L), "t", "the left part"), checked(std::move(R), "t", "the right part")};
   }
 
   /// The same curve restricted to [a, b] and reparametrised to [0, 1]: Q_i is the blossom
   /// b(a^(n-i), b^i) [Farin02, 4.3]. Works for any finite a, b: inside [0, 1] it cuts the
   /// curve, outside it extends the polynomial (extrapolation loses accuracy in proportion
   /// to how far beyond [0, 1] the interval reaches); a > b reverses the direction.
-  /// Cost O(n^3).
+  /// Throws InvalidArgument naming a or b when a control point of the extension is not
+  /// representable. Cost O(n^3).
   [[nodiscard]] Bezier portion(T a, T b) const {
     require_finite(a, "a");
     require_finite(b, "b");
@@ -134,119 +153,41 @@ class Bezier {
       std::fill(u.end() - i, u.end(), b);
       Q[static_cast<std::size_t>(i)] = blossom<PointType, T>(P_, u);
     }
-    return Bezier(std::move(Q));
+    return checked(std::move(Q), std::abs(a) > std::abs(b) ? "a" : "b", "the portion");
   }
 
   /// The same curve traversed from P_n to P_0: Q(t) = P(1 - t).
-  [[nodiscard]] Bezier reverse() const { return Bezier(std::vector<PointType>(P_.rbegin(), P_.rend())); }
+  [[nodiscard]] Bezier reverse() const { return Bezier(std::vector<PointType>(P_.rbegin(), P_.rend()), detail::Trusted{}); }
 
   /// The image under an affine map: by affine invariance, the curve of the mapped control
   /// points is the mapped curve (exactly, up to rounding).
   [[nodiscard]] Bezier transform(const Affine<T, D>& m) const {
     std::vector<PointType> Q(P_.size());
     std::transform(P_.begin(), P_.end(), Q.begin(), [&](const PointType& p) { return m(p); });
-    return Bezier(std::move(Q));
+    return checked(std::move(Q), "m", "the transformed curve");
   }
 
   /// The same curve at degree n + r (r >= 0), by Forrest's equations [Forrest72;
-  /// Farin02, 5.1]: Q_i = sum_j C(r, i-j) C(n, j) / C(n+r, i) P_j, a convex combination.
-  /// Past degree 1000, where C(n+r, i) would overflow a double, one degree at a time
-  /// (Q_i = i/(k+1) P_{i-1} + (1 - i/(k+1)) P_i, also convex; error about r eps).
-  /// Cost O((n + r) min(n, r)), or O(r (n + r)) stepwise.
+  /// Farin02, 5.1]: Q_i = sum_j h_ij P_j with the hypergeometric weights h_ij = C(r, i-j)
+  /// C(n, j) / C(n+r, i) (a convex combination), computed by their ratio recurrence and
+  /// normalised to sum 1 (detail::hypergeometric_row), so no binomial overflows at any
+  /// degree. Written as P_lo + sum h_ij (P_j - P_lo): exact for a constant curve. Error
+  /// about (2 min(n, r) + 4) eps of the control polygon's extent. Cost O((n + r) min(n, r)).
   [[nodiscard]] Bezier elevate(int r = 1) const {
     if (r < 0) throw InvalidArgument("times", "degree elevation count must be >= 0, got " + std::to_string(r));
+    if (r == 0) return *this;
     const int n = degree();
-    if (n + r > 1000) {
-      std::vector<PointType> cur(P_);
-      for (int k = n; k < n + r; ++k) {
-        std::vector<PointType> next(cur.size() + 1);
-        next.front() = cur.front();
-        next.back() = cur.back();
-        for (int i = 1; i <= k; ++i) next[i] = lerp(cur[i], cur[i - 1], static_cast<T>(i) / static_cast<T>(k + 1));
-        cur.swap(next);
-      }
-      return Bezier(std::move(cur));
-    }
     std::vector<PointType> Q(P_.size() + static_cast<std::size_t>(r));
+    std::vector<T> h(static_cast<std::size_t>(std::min(n, r)) + 1);
     for (int i = 0; i <= n + r; ++i) {
-      // Affine combination of the P_j written as P_lo + sum c_j (P_j - P_lo), exact for
-      // a constant curve.
       const int lo = std::max(0, i - r), hi = std::min(n, i);
-      const T denom = binomial<T>(n + r, i);
+      detail::hypergeometric_row<T>(n + r, n, i, std::span<T>(h.data(), static_cast<std::size_t>(hi - lo + 1)));
       const PointType& base = P_[static_cast<std::size_t>(lo)];
       VectorType s{};
-      for (int j = lo + 1; j <= hi; ++j) {
-        s += (binomial<T>(r, i - j) * binomial<T>(n, j) / denom) * (P_[static_cast<std::size_t>(j)] - base);
-      }
+      for (int j = lo + 1; j <= hi; ++j) s += h[static_cast<std::size_t>(j - lo)] * (P_[static_cast<std::size_t>(j)] - base);
       Q[static_cast<std::size_t>(i)] = base + s;
     }
-    return Bezier(std::move(Q));
-  }
-
-  /// The least-squares degree-m approximation (0 <= m <= n) in the L2 norm over [0, 1]:
-  /// solves the Bernstein Gram system G_mm Q = G_mn P [Eck93; Farin02, 5.9], with the end
-  /// points fixed when `endpoints` is keep (then m >= 1). Exact when the curve is a
-  /// degree-elevated degree-m curve. The Gram matrix's condition number grows like 4^m, so
-  /// results are reliable for m up to about 25 in double. Reports the error (see Reduction).
-  [[nodiscard]] Reduction<T, D> reduce(int m, Endpoints endpoints = Endpoints::keep) const {
-    const int n = degree();
-    if (m < 0 || m > n) {
-      throw InvalidArgument("degree", "target degree must lie in [0, " + std::to_string(n) + "], got " + std::to_string(m));
-    }
-    if (endpoints == Endpoints::keep && m < 1) {
-      throw InvalidArgument("degree", "keeping both end points needs target degree >= 1, got " + std::to_string(m));
-    }
-    const auto cm = binomial_row<T>(m), cn = binomial_row<T>(n), c2m = binomial_row<T>(2 * m),
-               cmn = binomial_row<T>(m + n);
-    // int B(j,m) B(k,m) dt = C(m,j) C(m,k) / (C(2m, j+k) (2m+1)); likewise for (m, n).
-    auto gmm = [&](int j, int k) {
-      return cm[j] * cm[k] / (c2m[j + k] * static_cast<T>(2 * m + 1));
-    };
-    auto gmn = [&](int j, int i) {
-      return cm[j] * cn[i] / (cmn[j + i] * static_cast<T>(m + n + 1));
-    };
-    // Reduced curves are built as offsets from P_0 so that translations cancel exactly.
-    const PointType origin = P_.front();
-    Eigen::Matrix<T, Eigen::Dynamic, D> rhs(m + 1, D);
-    for (int j = 0; j <= m; ++j) {
-      VectorType s{};
-      for (int i = 0; i <= n; ++i) s += gmn(j, i) * (P_[static_cast<std::size_t>(i)] - origin);
-      for (int d = 0; d < D; ++d) rhs(j, d) = s[d];
-    }
-    std::vector<PointType> Q(static_cast<std::size_t>(m) + 1);
-    if (endpoints == Endpoints::free) {
-      Matrix<T> g(m + 1, m + 1);
-      for (int j = 0; j <= m; ++j)
-        for (int k = 0; k <= m; ++k) g(j, k) = gmm(j, k);
-      const Eigen::Matrix<T, Eigen::Dynamic, D> x = g.ldlt().solve(rhs);
-      for (int j = 0; j <= m; ++j) Q[static_cast<std::size_t>(j)] = origin + row_vector(x, j);
-    } else {
-      const VectorType qm = P_.back() - origin;  // Q_0 = P_0 (offset 0), Q_m = P_n
-      Q.front() = P_.front();
-      Q.back() = P_.back();
-      const int u = m - 1;  // unknowns Q_1..Q_{m-1}
-      if (u > 0) {
-        Matrix<T> g(u, u);
-        Eigen::Matrix<T, Eigen::Dynamic, D> r(u, D);
-        for (int j = 1; j <= u; ++j) {
-          for (int k = 1; k <= u; ++k) g(j - 1, k - 1) = gmm(j, k);
-          for (int d = 0; d < D; ++d) r(j - 1, d) = rhs(j, d) - gmm(j, m) * qm[d];
-        }
-        const Eigen::Matrix<T, Eigen::Dynamic, D> x = g.ldlt().solve(r);
-        for (int j = 1; j <= u; ++j) Q[static_cast<std::size_t>(j)] = origin + row_vector(x, j - 1);
-      }
-    }
-    Bezier reduced(std::move(Q));
-    const Bezier back = reduced.elevate(n - m);
-    T bound = 0;
-    for (int i = 0; i <= n; ++i) bound = std::max(bound, distance(back.P_[static_cast<std::size_t>(i)], P_[static_cast<std::size_t>(i)]));
-    T sampled = 0;
-    const int samples = 64 * (n + 1);
-    for (int s = 0; s <= samples; ++s) {
-      const T t = static_cast<T>(s) / static_cast<T>(samples);
-      sampled = std::max(sampled, distance((*this)(t), reduced(t)));
-    }
-    return {std::move(reduced), sampled, bound};
+    return checked(std::move(Q), "times", "the elevated curve");
   }
 
   /// Power-basis coefficients a_0..a_n with P(t) = sum_j a_j t^j: a = M P. Exact
@@ -275,8 +216,22 @@ class Bezier {
   friend bool operator==(const Bezier&, const Bezier&) = default;
 
  private:
+  Bezier(std::vector<PointType> points, detail::Trusted) : P_(std::move(points)) {}
+
   static void require_order(int k) {
-    if (k < 1) throw InvalidArgument("k", "derivative order must be >= 1, got " + std::to_string(k));
+    if (k < 0) throw InvalidArgument("k", "derivative order must be >= 0, got " + std::to_string(k));
+  }
+  /// The curve of Q, whose points are finite unless the arithmetic that made them
+  /// overflowed: then InvalidArgument(where, "<what> is not representable ..."), naming
+  /// the operation's argument rather than a finite input value. O(n D).
+  static Bezier checked(std::vector<PointType> Q, const char* where, const std::string& what) {
+    for (std::size_t i = 0; i < Q.size(); ++i) {
+      if (!detail::all_finite(Q[i])) {
+        throw InvalidArgument(where, what + " is not representable: its control point " + std::to_string(i) +
+                                         " has a coordinate beyond the largest finite number");
+      }
+    }
+    return Bezier(std::move(Q), detail::Trusted{});
   }
   /// Delta^k P_i, i = 0..n-k, as vectors.
   [[nodiscard]] std::vector<VectorType> differences(int k) const {
@@ -289,13 +244,6 @@ class Bezier {
     d.resize(static_cast<std::size_t>(n - k + 1));
     return d;
   }
-  template <class M>
-  static VectorType row_vector(const M& x, int row) {
-    VectorType v;
-    for (int d = 0; d < D; ++d) v[d] = x(row, d);
-    return v;
-  }
-
   std::vector<PointType> P_;
 };
 
