@@ -223,6 +223,121 @@ class BigIntegerTest(HostileTest):
             self.assertNotIn("9223372036854775808", err)
 
 
+class RenderExtentTest(HostileTest):
+    """Defect 5: extents that overflow, and small curves far from the origin, drew a dot."""
+
+    def render_points(self, request):
+        rc, out, err = run("render", request)
+        self.assertEqual((rc, err), (0, ""))
+        self.assertIsNone(re.search(r"(?i)nan|inf", out))
+        return svg_path_points(out)
+
+    def assert_spans(self, pts, width, height, padding=24):
+        xs, ys = [p[0] for p in pts], [p[1] for p in pts]
+        # The view is the tight box fitted into the page less padding, keeping the aspect:
+        # the curve spans at least half of the smaller side, and stays on the page.
+        inner = min(width, height) - 2 * padding
+        self.assertGreater(max(xs) - min(xs), inner / 2, pts)
+        self.assertGreater(max(ys) - min(ys), inner / 4, pts)
+        for x, y in [pts[0], pts[-1]]:
+            self.assertTrue(-1e-9 <= x <= width + 1e-9 and -1e-9 <= y <= height + 1e-9, pts)
+
+    def test_extent_beyond_double(self):
+        c = bezier([[-1e308, 0], [0, 1e308], [1e308, 0]])
+        for extra in ({}, {"control_polygon": False}, {"axes": True}):
+            pts = self.render_points(dict({"curve": c}, **extra))
+            self.assert_spans(pts, 640, 480)
+            self.assertAlmostEqual(pts[0][1], pts[-1][1])  # symmetric: both ends at one height
+        c = bezier([[-1.7976931348623157e308, -1.7976931348623157e308], [1.7976931348623157e308, 1.7976931348623157e308]])
+        pts = self.render_points({"curve": c, "axes": True, "padding": 200})
+        self.assertGreater(pts[-1][0] - pts[0][0], 70)
+
+    def test_small_curve_far_from_the_origin(self):
+        # 4 units at 1e13 (ulp 0.002): 2000 ulps across, plenty of resolution.
+        e = 1e13
+        c = bezier([[e, e], [e + 2, e + 4], [e + 4, e]])
+        for extra in ({}, {"control_polygon": False}):
+            self.assert_spans(self.render_points(dict({"curve": c}, **extra)), 640, 480)
+        # Far along x only: was drawn off the page (x flat, the y extent set the scale).
+        self.assert_spans(self.render_points({"curve": bezier([[e, 0], [e + 2, 4], [e + 4, 0]])}), 640, 480)
+
+    def test_graph_far_from_the_origin(self):
+        # A 1D curve is drawn as its graph y(t), stretched to the page: y spans 1e13..1e13 + 4.
+        pts = self.render_points({"curve": bezier([[1e13], [1e13 + 8], [1e13]])})
+        self.assertGreater(max(p[1] for p in pts) - min(p[1] for p in pts), 200)
+
+
+class RenderStyleTest(HostileTest):
+    """Item 6: styling numbers that overflow, or make the document without bound."""
+
+    def test_page_size_limits(self):
+        c = bezier(CUBIC)
+        for field in ("width", "height"):
+            for v in (1e308, 1e20, 1e6 + 1):
+                self.bad("render", {"curve": c, field: v}, where=field, contains="<= 1000000")
+            self.bad("render", {"curve": c, field: 0.5, "padding": 0}, where=field, contains=">= 1 ")
+        rc, out, _ = run("render", {"curve": c, "width": 1, "height": 1, "padding": 0, "axes": True})
+        self.assertEqual(rc, 0)
+
+    def test_padding_leaving_no_room(self):
+        c = bezier(CUBIC)
+        for p in (1e308, 240, 239.75, 1.7976931348623157e308):
+            self.bad("render", {"curve": c, "padding": p}, where="padding", contains="no room")
+        rc, out, _ = run("render", {"curve": c, "padding": 239.5, "axes": True})  # 1 px left
+        self.assertEqual(rc, 0)
+        self.assertIsNone(re.search(r"(?i)nan|inf", out))
+
+    def test_huge_stroke_width_and_tolerance(self):
+        quintic = bezier([[0, 0], [1, 3], [2, -1], [3, 3], [4, -1], [5, 0]])
+        for extra in ({"stroke_width": 1e308}, {"tolerance": 1e308}, {"tolerance": 5e-324}, {"width": 1e6, "height": 3, "padding": 0}):
+            rc, out, err = run("render", dict({"curve": quintic, "axes": True}, **extra))
+            self.assertEqual((rc, err), (0, ""), extra)
+            self.assertIsNone(re.search(r"(?i)nan|inf", out), extra)
+            self.assertLess(len(out), 10 ** 7, extra)
+
+    def test_curve_that_cannot_be_drawn_is_named(self):
+        # Control points up to 8e11 times the curve's size: within 0.25 px of the page is
+        # below their resolution once mapped. A bad request about that curve, not a bug.
+        cheb = bezier(chebyshev_bezier(40))
+        self.bad("render", {"curve": cheb, "control_polygon": False}, where="curve", contains="cannot be drawn")
+        self.bad("render", {"curves": [bezier(CUBIC), cheb], "control_polygon": False}, where="curves[1]",
+                 contains="cannot be drawn")
+        rc, out, err = run("render", {"curve": bezier(chebyshev_bezier(12)), "control_polygon": False})
+        self.assertEqual((rc, err), (0, ""))
+
+
+class ExtremeCurvesTest(HostileTest):
+    """Item 6: every command on curves at the limits of double answers finite numbers or
+    refuses cleanly (the contract of bad())."""
+
+    def test_commands_on_extreme_curves(self):
+        big = 1.7976931348623157e308
+        curves = [
+            bezier([[big, -big], [-big, big], [big, big], [-big, -big]]),
+            bezier([[1e308], [-1e308], [1e308]]),
+            {"type": "rational_bezier", "points": [[1e308, 0], [0, 1e308], [-1e308, 0]], "weights": [1e-300, 1e300, 1e-300]},
+            {"type": "path", "segments": [bezier([[0, 0], [1, 1]])] * 3, "breaks": [0, 5e-324, 1e-323, 1.5e-323]},
+            {"type": "path", "segments": [bezier([[1e308], [-1e308]])], "breaks": [-1e308, 1e308]},
+        ]
+        requests = []
+        for c in curves:
+            requests += [("eval", {"curve": c, "t": [0, 0.5, 1, -1e308, 1e308, 5e-324], "derivatives": 3}),
+                         ("bounds", {"curve": c}), ("to_bezier", {"curve": c}), ("flatten", {"curve": c, "tolerance": 1e300}),
+                         ("split", {"curve": c, "t": 0.5}), ("elevate", {"curve": c, "times": 3}),
+                         ("render", {"curve": c, "axes": True}), ("render", {"curve": c, "control_polygon": False, "axes": True})]
+        for command, req in requests:
+            with self.subTest(command=command, curve=json.dumps(req["curve"])[:80]):
+                rc, out, err = run(command, req)
+                self.assertIn(rc, (0, 2), err)
+                if rc == 2:
+                    self.bad_any(command, req)
+                elif command == "render":
+                    self.assertIsNone(re.search(r"(?i)nan|inf", out))
+                else:
+                    self.assertNotIn("null", out)
+                    json.loads(out)
+
+
 if __name__ == "__main__":
     test_cli.BINARY = os.path.abspath(sys.argv.pop(1))
     unittest.main(verbosity=1)
