@@ -552,15 +552,25 @@ RationalBezier<double, 2> graph(const RationalBezier<double, 1>& c) {
   return RationalBezier<double, 2>(std::move(P), std::move(W));
 }
 
+/// The control points with x in [0, 1] mapped onto [lo, hi] as (1 - x) lo + x hi: the
+/// affine map x -> lo + x (hi - lo) without forming hi - lo, which overflows for breaks
+/// [-1e308, 1e308] (it gave NaN coordinates).
+std::vector<Point2> onto(const std::vector<Point2>& P, const Interval<double>& dom) {
+  std::vector<Point2> Q(P.size());
+  std::transform(P.begin(), P.end(), Q.begin(), [&](const Point2& p) { return Point2((1 - p[0]) * dom.lo + p[0] * dom.hi, p[1]); });
+  return Q;
+}
+Bezier<double, 2> onto(const Bezier<double, 2>& c, const Interval<double>& dom) { return Bezier<double, 2>(onto(c.points(), dom)); }
+RationalBezier<double, 2> onto(const RationalBezier<double, 2>& c, const Interval<double>& dom) {
+  return RationalBezier<double, 2>(onto(c.points(), dom), c.weights());
+}
+
 /// A path's graph: each segment's graph mapped from [0, 1] onto its break interval.
 Path<double, 2> graph(const Path<double, 1>& c) {
   std::vector<Segment<double, 2>> segs;
   for (std::size_t i = 0; i < c.size(); ++i) {
     const auto dom = c.segment_domain(i);
-    Affine<double, 2> m;
-    m.linear = {{{dom.length(), 0.0}, {0.0, 1.0}}};
-    m.translation = Vector<double, 2>(dom.lo, 0.0);
-    segs.push_back(std::visit([&](const auto& s) { return Segment<double, 2>(graph(s).transform(m)); }, c.segments()[i]));
+    segs.push_back(std::visit([&](const auto& s) { return Segment<double, 2>(onto(graph(s), dom)); }, c.segments()[i]));
   }
   return Path<double, 2>(std::move(segs), c.breaks());
 }
@@ -595,6 +605,7 @@ void about_curve(const std::string& where, F&& f) {
   try {
     f();
   } catch (const InvalidArgument& e) {
+    if (e.where() == where) throw;  // already about the curve (a 3D curve)
     throw InvalidArgument(where, "cannot be drawn: " + (e.where() == "curve" ? e.problem() : std::string(e.what())));
   } catch (const NumericalError& e) {
     throw InvalidArgument(where, "cannot be drawn: " + std::string(e.what()));
@@ -673,7 +684,7 @@ std::string render_svg(std::span<const AnyCurve> curves, const RenderStyle& styl
   std::vector<Drawable> items;
   items.reserve(curves.size());
   const auto name = [&](std::size_t i) { return curves.size() == 1 ? std::string("curve") : "curves[" + std::to_string(i) + "]"; };
-  for (std::size_t i = 0; i < curves.size(); ++i) items.push_back(drawable(curves[i], name(i)));
+  for (std::size_t i = 0; i < curves.size(); ++i) about_curve(name(i), [&] { items.push_back(drawable(curves[i], name(i))); });
 
   Box2 box = Box2::empty_box();
   bool all_graphs = !items.empty();

@@ -248,6 +248,10 @@ class RenderExtentTest(HostileTest):
             pts = self.render_points(dict({"curve": c}, **extra))
             self.assert_spans(pts, 640, 480)
             self.assertAlmostEqual(pts[0][1], pts[-1][1])  # symmetric: both ends at one height
+        # A 1D path whose break interval is longer than the largest double: its graph.
+        path = {"type": "path", "segments": [bezier([[0], [1]])], "breaks": [-1e308, 1e308]}
+        pts = self.render_points({"curve": path})
+        self.assertAlmostEqual(pts[-1][0] - pts[0][0], 592, delta=1e-3)  # 640 - 2 * 24
         c = bezier([[-1.7976931348623157e308, -1.7976931348623157e308], [1.7976931348623157e308, 1.7976931348623157e308]])
         pts = self.render_points({"curve": c, "axes": True, "padding": 200})
         self.assertGreater(pts[-1][0] - pts[0][0], 70)
