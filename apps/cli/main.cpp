@@ -83,12 +83,29 @@ std::string one_line(std::string_view s) {
   return out;
 }
 
+/// s cut to about `limit` bytes: its start and its end (whole UTF-8 characters) around an
+/// ellipsis and the length. The io layer already cuts the user text it quotes; this keeps
+/// every message bounded whatever its source (CLI11's messages echo arguments).
+std::string clipped(std::string_view s, std::size_t limit) {
+  if (s.size() <= limit) return std::string(s);
+  const auto continuation = [&](std::size_t i) { return (static_cast<unsigned char>(s[i]) & 0xc0) == 0x80; };
+  std::size_t head = limit * 2 / 3, tail = s.size() - limit / 3;
+  while (head > 0 && continuation(head)) --head;
+  while (tail < s.size() && continuation(tail)) ++tail;
+  return std::string(s.substr(0, head)) + "\u2026 (" + std::to_string(s.size()) + " bytes) \u2026" + std::string(s.substr(tail));
+}
+
+/// Longest `<where>` and whole message written (bytes): far above any message the program
+/// composes, far below what hostile input could make of one.
+constexpr std::size_t max_where = 300;
+constexpr std::size_t max_message = 800;
+
 std::string where_what(const InvalidArgument& e) {
-  return (e.where().empty() ? std::string("request") : e.where()) + ": " + e.problem();
+  return clipped(e.where().empty() ? std::string("request") : e.where(), max_where) + ": " + e.problem();
 }
 
 void print_error(std::string_view message) {
-  const std::string line = "error: " + one_line(message) + "\n";
+  const std::string line = "error: " + one_line(clipped(message, max_message)) + "\n";
   std::fwrite(line.data(), 1, line.size(), stderr);
   std::fflush(stderr);
 }
@@ -99,7 +116,7 @@ bool write_stdout(std::string_view s) {
   return std::fflush(stdout) == 0;
 }
 
-/// Input: a named file, or stdin for "" and "-".
+/// Input: a named file, or stdin for "" (no FILE argument) and "-".
 class Input {
  public:
   explicit Input(const std::string& file) : name_(file.empty() || file == "-" ? "stdin" : file) {
@@ -217,7 +234,7 @@ int run_jsonl(const Command& command, const std::string& file) {
       const Answer a = answer(command, line, true);
       std::string out = a.text;
       if (a.status != exit_ok) {
-        out = OrderedJson{{"error", a.error}}.dump(-1, ' ', false, OrderedJson::error_handler_t::replace) + "\n";
+        out = OrderedJson{{"error", clipped(a.error, max_message)}}.dump(-1, ' ', false, OrderedJson::error_handler_t::replace) + "\n";
         bad_lines.push_back(count);
         if (status != exit_internal) status = a.status;
       }
@@ -262,12 +279,13 @@ int main(int argc, char** argv) {
 
   bool jsonl = false;
   std::string file;
+  std::vector<CLI::Option*> file_options;
   app.add_flag("--jsonl", jsonl, "One request per line in, one response per line out");
   for (const auto& c : casteljau::cli::commands()) {
     CLI::App* sub = app.add_subcommand(std::string(c.name), std::string(c.summary));
     sub->group("Commands");
     sub->footer(std::string(c.details));
-    sub->add_option("FILE", file, "Request file (default: stdin; - for stdin)")->type_name("");
+    file_options.push_back(sub->add_option("FILE", file, "Request file (default: stdin; - for stdin)")->type_name(""));
     sub->add_flag("--jsonl", jsonl, "One request per line in, one response per line out");
   }
 
@@ -276,7 +294,7 @@ int main(int argc, char** argv) {
     const std::string_view a = argv[i];
     if (a.empty() || a.front() != '-' || a == "-") {
       if (!casteljau::cli::find_command(a)) {
-        print_error("command: unknown command '" + std::string(a) + "' (commands: " + command_list() + ")");
+        print_error("command: unknown command " + casteljau::io::quoted(a) + " (commands: " + command_list() + ")");
         return exit_bad_input;
       }
       break;
@@ -307,6 +325,14 @@ int main(int argc, char** argv) {
     }
     print_error("command: command '" + std::string(command->name) + "' is not supported yet (supported: " + supported + ")");
     return exit_bad_input;
+  }
+  // An empty FILE (a script's unset variable: casteljau eval "$f") must not quietly read
+  // stdin, as a missing one does.
+  for (const CLI::Option* o : file_options) {
+    if (o->count() > 0 && file.empty()) {
+      print_error("arguments: FILE is an empty string (give a file name, or - or no FILE to read stdin)");
+      return exit_bad_input;
+    }
   }
   try {
     return jsonl ? run_jsonl(*command, file) : run_single(*command, file);

@@ -22,11 +22,74 @@ std::string index_path(std::string_view where, std::size_t i) {
   return std::string(where) + "[" + std::to_string(i) + "]";
 }
 
-/// A name in single quotes for a message, escaped as in a JSON string (so that a key
-/// holding a newline cannot break the one-line error contract).
-std::string quote_name(std::string_view s) {
+/// How much user text a message quotes: the first 64 characters (code points), enough
+/// to recognise a name or a value; a longer text is cut there, with its length stated, so
+/// that a 1 MB key cannot make a 2 MB error line.
+constexpr std::size_t quote_limit = 64;
+
+/// The byte offset after the first n characters of s (UTF-8: a character starts at every
+/// byte that is not a continuation byte 10xxxxxx, so the cut never splits a sequence), or
+/// s.size() when s is no longer.
+std::size_t after_characters(std::string_view s, std::size_t n) {
+  std::size_t count = 0;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    if ((static_cast<unsigned char>(s[i]) & 0xc0) != 0x80) {
+      if (count == n) return i;
+      ++count;
+    }
+  }
+  return s.size();
+}
+
+/// The byte offset before the last n characters of s, or 0 when s is no longer.
+std::size_t before_last_characters(std::string_view s, std::size_t n) {
+  std::size_t count = 0;
+  for (std::size_t i = s.size(); i-- > 0;) {
+    if ((static_cast<unsigned char>(s[i]) & 0xc0) != 0x80 && ++count == n) return i;
+  }
+  return 0;
+}
+
+/// s escaped as the inside of a JSON string (control characters, quotes, backslashes;
+/// bytes that are not UTF-8 become U+FFFD), so that user text holding a newline cannot
+/// break the one-line error contract.
+std::string escaped(std::string_view s) {
   const std::string j = Json(std::string(s)).dump(-1, ' ', false, nlohmann::detail::error_handler_t::replace);
-  return "'" + j.substr(1, j.size() - 2) + "'";
+  return j.substr(1, j.size() - 2);
+}
+
+/// A name in single quotes for a message: see quoted().
+std::string quote_name(std::string_view s) {
+  const std::size_t cut = after_characters(s, quote_limit);
+  if (cut == s.size()) return "'" + escaped(s) + "'";
+  return "'" + escaped(s.substr(0, cut)) + "\u2026' (" + std::to_string(s.size()) + " bytes)";
+}
+
+/// As quote_name, but keeping the end of s: for the text a parser read up to an error
+/// (the error is at its end).
+std::string quote_tail(std::string_view s) {
+  const std::size_t cut = before_last_characters(s, quote_limit);
+  if (cut == 0) return "'" + std::string(s) + "'";
+  return "'\u2026" + std::string(s.substr(cut)) + "' (" + std::to_string(s.size()) + " bytes)";
+}
+
+/// An object key as a path component: cut to quote_limit characters (marked with an
+/// ellipsis; the message says how long it was).
+std::string key_in_path(std::string_view k) {
+  const std::size_t cut = after_characters(k, quote_limit);
+  return cut == k.size() ? std::string(k) : std::string(k.substr(0, cut)) + "\u2026";
+}
+
+/// A path of at most about 256 bytes: a longer one (nesting 100000 levels deep) keeps its
+/// start and its end, an ellipsis standing for the middle.
+std::string clip_path(std::string p) {
+  constexpr std::size_t head_bytes = 160, tail_bytes = 80;
+  if (p.size() <= head_bytes + tail_bytes + 16) return p;
+  const auto continuation = [&](std::size_t i) { return (static_cast<unsigned char>(p[i]) & 0xc0) == 0x80; };
+  std::size_t head = head_bytes, tail = p.size() - tail_bytes;
+  while (head > 0 && continuation(head)) --head;  // whole characters only
+  while (tail < p.size() && continuation(tail)) ++tail;
+  return p.substr(0, head) + "\u2026" + p.substr(tail);
 }
 
 template <class Names>
@@ -61,25 +124,37 @@ class StrictBuilder : public nlohmann::json_sax<Json> {
   bool key(string_t& k) override {
     Frame& f = stack_.back();
     f.key = k;
-    if (f.node->contains(k)) return fail(path(), "duplicate field (each field may appear only once in an object)");
+    if (f.node->contains(k)) {
+      return fail(path(), "duplicate field " + quote_name(k) + " (each field may appear only once in an object)");
+    }
     return true;
   }
 
-  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception& ex) override {
+  bool parse_error(std::size_t position, const std::string& last_token, const nlohmann::detail::exception& ex) override {
+    syntax_error_at_ = position;
     if (ex.id == 406) {
-      // out_of_range.406: a number too large for a double. The token is the number.
-      std::string msg = ex.what();
-      const auto q = msg.find('\'');
-      const std::string token = q == std::string::npos ? std::string() : msg.substr(q);
-      return fail(path(), "number overflows a double: " + token);
+      // out_of_range.406: "number overflow parsing '<token>'", the token being the number
+      // (quoted here again, cut if it is long).
+      return fail(path(), "number overflows a double: " + quote_name(last_token));
     }
-    // "[json.exception.parse_error.101] parse error at line 1, column 5: syntax error ..."
+    // "[json.exception.parse_error.101] parse error at line 1, column 5: syntax error ...
+    // - invalid literal; last read: '<token>'; expected ...": the token is what the lexer
+    // read of the bad value, which may be a whole string; its end is kept.
     std::string msg = ex.what();
     const std::string marker = "parse error at ";
     const auto at = msg.find(marker);
     msg = at == std::string::npos ? msg : msg.substr(at + marker.size());
+    const std::string read = "last read: '" + last_token + "'";
+    if (const auto r = msg.find(read); r != std::string::npos) {
+      msg.replace(r, read.size(), "last read: " + quote_tail(last_token));
+    }
     return fail("request", "malformed JSON at " + msg);
   }
+
+  /// The byte count read when the parser reported a syntax error (the offending byte is
+  /// the last one read), or nullopt.
+  [[nodiscard]] std::optional<std::size_t> syntax_error_at() const { return syntax_error_at_; }
+  [[nodiscard]] bool failed() const { return error_.has_value(); }
 
   Json take_result() {
     if (error_) throw *error_;
@@ -92,21 +167,22 @@ class StrictBuilder : public nlohmann::json_sax<Json> {
     std::string key;  // the key being read, for objects
   };
 
-  /// The path of the value about to be read (or of the key just read).
+  /// The path of the value about to be read (or of the key just read); long keys and deep
+  /// paths are cut (key_in_path, clip_path).
   [[nodiscard]] std::string path() const {
     std::string p;
     for (std::size_t i = 0; i < stack_.size(); ++i) {
       const Frame& f = stack_[i];
       if (f.node->is_object()) {
         if (!p.empty()) p += '.';
-        p += f.key;
+        p += key_in_path(f.key);
       } else {
         // Containers below the top hold their open child as their last element.
         const std::size_t n = f.node->size();
         p += "[" + std::to_string(i + 1 < stack_.size() ? n - 1 : n) + "]";
       }
     }
-    return p;
+    return clip_path(std::move(p));
   }
 
   bool fail(std::string where, std::string problem) {
@@ -147,6 +223,7 @@ class StrictBuilder : public nlohmann::json_sax<Json> {
   Json root_;
   std::vector<Frame> stack_;
   std::optional<InvalidArgument> error_;
+  std::optional<std::size_t> syntax_error_at_;
 };
 
 template <class Names>
@@ -188,6 +265,20 @@ Json parse_json(std::string_view text) {
   StrictBuilder b;
   // strict = true: nothing but whitespace may follow the value.
   Json::sax_parse(text.begin(), text.end(), &b, nlohmann::json::input_format_t::json, true);
+  // nlohmann's lexer takes a NUL byte for the end of the input (as at the end of a C
+  // string), so "{...}\0garbage" would parse and the garbage be ignored. A NUL is not
+  // JSON text anywhere (in a string it must be written \u0000): unless the parser failed
+  // before reaching it, the NUL is the error.
+  if (const auto nul = text.find('\0'); nul != std::string_view::npos) {
+    const bool failed_before = b.failed() && !(b.syntax_error_at() && *b.syntax_error_at() > nul);
+    if (!failed_before) {
+      const std::size_t line_start = text.rfind('\n', nul) == std::string_view::npos ? 0 : text.rfind('\n', nul) + 1;
+      const auto line = 1 + std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(nul), '\n');
+      throw InvalidArgument("request", "malformed JSON at line " + std::to_string(line) + ", column " +
+                                           std::to_string(nul - line_start + 1) +
+                                           ": NUL byte (U+0000); JSON text may hold it only in a string, escaped as \\u0000");
+    }
+  }
   return b.take_result();
 }
 
@@ -216,23 +307,26 @@ double number_from_json(const Json& j, std::string_view where, std::string_view 
 
 int integer_from_json(const Json& j, std::string_view where) {
   const std::string w(where);
+  constexpr auto lo = std::numeric_limits<int>::min(), hi = std::numeric_limits<int>::max();
+  const std::string range = "integer out of range (" + std::to_string(lo) + " to " + std::to_string(hi) + "), got ";
   if (j.is_number_unsigned()) {
     const auto v = j.get<std::uint64_t>();
-    if (v > static_cast<std::uint64_t>(std::numeric_limits<int>::max())) throw InvalidArgument(w, "integer out of range, got " + j.dump());
+    if (v > static_cast<std::uint64_t>(hi)) throw InvalidArgument(w, range + std::to_string(v));
     return static_cast<int>(v);
   }
   if (j.is_number_integer()) {
     const auto v = j.get<std::int64_t>();
-    if (v < std::numeric_limits<int>::min() || v > std::numeric_limits<int>::max()) {
-      throw InvalidArgument(w, "integer out of range, got " + j.dump());
-    }
+    if (v < lo || v > hi) throw InvalidArgument(w, range + std::to_string(v));
     return static_cast<int>(v);
   }
   if (j.is_number_float()) {
     const double v = number_from_json(j, where);
     if (std::trunc(v) != v) throw InvalidArgument(w, "must be an integer, got " + casteljau::detail::format_number(v));
-    if (v < std::numeric_limits<int>::min() || v > std::numeric_limits<int>::max()) {
-      throw InvalidArgument(w, "integer out of range, got " + casteljau::detail::format_number(v));
+    if (v < lo || v > hi) {
+      // A JSON integer beyond 64 bits (-9223372036854775809), or a float token, arrives as
+      // the nearest double, whose digits may differ from the ones written (it printed as
+      // -9223372036854775808): echoing them would misquote the request, so say where it is.
+      throw InvalidArgument(w, range + (v < 0 ? "a number below " + std::to_string(lo) : "a number above " + std::to_string(hi)));
     }
     return static_cast<int>(v);
   }
@@ -273,7 +367,7 @@ const Json* Fields::optional(std::string_view name) const {
 void Fields::allow_only(std::initializer_list<std::string_view> allowed, std::string_view owner) const {
   for (const auto& [k, v] : j_.items()) {
     if (!one_of(k, allowed)) {
-      throw InvalidArgument(k, "unknown field " + quote_name(k) + " (" + std::string(owner) + " has: " + join(allowed) + ")");
+      throw InvalidArgument(key_in_path(k), "unknown field " + quote_name(k) + " (" + std::string(owner) + " has: " + join(allowed) + ")");
     }
   }
 }

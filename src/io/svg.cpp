@@ -5,6 +5,7 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <optional>
 #include <system_error>
@@ -30,6 +31,17 @@ void require_non_negative(double v, std::string_view where) {
 
 /// The resolution of the numbers svg_number writes, in px: 3 decimals.
 constexpr double written_resolution_px = 1e-3;
+
+/// Largest page width and height render_svg accepts, in px: far beyond any screen or print
+/// (a 1 m poster at 600 dpi is 24000 px). Curves are flattened to a fraction of a px, so
+/// the page size bounds the size and the cost of the document: with width 1e308 there
+/// would be no end to either.
+constexpr double max_page_px = 1e6;
+
+/// Smallest page side and drawing area (page less padding) render_svg accepts, in px:
+/// below one px nothing can be seen, and the page scale of a huge model could underflow
+/// to 0. The messages write both limits out (1, 1000000).
+constexpr double min_drawing_px = 1;
 
 }  // namespace
 
@@ -88,7 +100,8 @@ std::string_view palette(std::size_t i) {
 std::vector<double> nice_ticks(double lo, double hi, int count) {
   std::vector<double> ticks;
   if (!std::isfinite(lo) || !std::isfinite(hi) || !(hi > lo) || count < 1) return ticks;
-  const double raw = (hi - lo) / count;
+  // hi / count - lo / count: hi - lo overflows for [-1e308, 1e308].
+  const double raw = hi / count - lo / count;
   if (!(raw > 0) || !std::isfinite(raw)) return ticks;
   const double mag = std::pow(10.0, std::floor(std::log10(raw)));
   double step = 10 * mag;
@@ -98,12 +111,16 @@ std::vector<double> nice_ticks(double lo, double hi, int count) {
       break;
     }
   }
+  if (!std::isfinite(step)) return ticks;  // 2 x 1e308
   const double first = std::ceil(lo / step - 1e-9), last = std::floor(hi / step + 1e-9);
   // Far more ticks than asked means the interval is below the resolution of its
-  // position (huge offset, tiny width): no sensible ticks.
-  if (!(last - first < 10.0 * count + 10)) return ticks;
-  for (double k = first; k <= last; k += 1) {
-    double v = k * step;
+  // position (huge offset, tiny width): no sensible ticks. Beyond 2^52 steps from zero
+  // consecutive multiples of the step are no longer distinct doubles: the same.
+  if (!(last - first < 10.0 * count + 10) || !(std::abs(first) < 0x1p52 && std::abs(last) < 0x1p52)) return ticks;
+  // Counted in integers: k += 1 on a double would stop moving beyond 2^53.
+  for (auto k = static_cast<std::int64_t>(first); k <= static_cast<std::int64_t>(last); ++k) {
+    double v = static_cast<double>(k) * step;
+    if (!std::isfinite(v)) continue;
     if (std::abs(v) < step * 1e-9) v = 0;  // a clean zero, not 1e-17
     ticks.push_back(v);
   }
@@ -158,14 +175,19 @@ PageMap PageMap::fit(const Box2& model_in, const PageRect& page, Aspect aspect) 
   std::array<double, 2> centre{}, half{}, scale{};
   std::array<bool, 2> flat{};
   for (int i = 0; i < 2; ++i) {
-    // Halves first: max - min may overflow, max/2 - min/2 does not.
+    // Halves first: max - min may overflow (-1e308 to 1e308), max/2 - min/2 does not; and
+    // the scale is (avail / 2) / half, not avail / (2 half), which would overflow too.
     centre[i] = model.lo[i] / 2 + model.hi[i] / 2;
     half[i] = model.hi[i] / 2 - model.lo[i] / 2;
-    // Flat: no extent, or one below the resolution of the position (1e-12 relative), or
-    // so small that the scale would overflow.
-    flat[i] = !(half[i] > std::abs(centre[i]) * 1e-12) || !std::isfinite(avail[i] / half[i]);
+    // Flat: no extent; or a half extent within 2^-46 of the position (64 to 128 ulps),
+    // which is rounding in the bounds of a point or a straight line rather than geometry;
+    // or one so small that the scale would overflow. The test is against the resolution
+    // of the position, not a fixed fraction of it: a curve 4 units wide at 1e13 (ulp
+    // 0.002) spans 2000 ulps and is drawn as it is.
+    const double resolution = std::abs(centre[i]) * 0x1p-46;
+    flat[i] = !(half[i] > resolution) || !std::isfinite(avail[i] / 2 / half[i]);
     if (flat[i]) half[i] = std::max(1.0, std::abs(centre[i]) * 1e-3);
-    scale[i] = avail[i] / (2 * half[i]);
+    scale[i] = avail[i] / 2 / half[i];
   }
   if (aspect == Aspect::keep) {
     // A flat axis holds no extent to fit (its widened half is a placeholder): the other
@@ -174,6 +196,9 @@ PageMap PageMap::fit(const Box2& model_in, const PageRect& page, Aspect aspect) 
     if (flat[0] && !flat[1]) s = scale[1];
     if (flat[1] && !flat[0]) s = scale[0];
     scale = {s, s};
+  }
+  if (!(scale[0] > 0 && scale[1] > 0)) {
+    throw InvalidArgument("page", "too small for the extent of the model (the page scale underflows)");
   }
   return {centre[0], centre[1], page.x + page.width / 2, page.y + page.height / 2, scale[0], -scale[1]};
 }
@@ -188,9 +213,13 @@ Affine<double, 2> PageMap::affine() const {
 double PageMap::px_to_model(double px) const { return px / std::min(scale_x(), scale_y()); }
 
 Box2 PageMap::view(const PageRect& page) const {
+  // A wide padding around a model near the range of double can reach beyond it: the
+  // corners are clamped to the finite range (the map sends them off the page anyway).
+  constexpr double big = std::numeric_limits<double>::max();
+  const auto finite = [&](const Point2& p) { return Point2(std::clamp(p[0], -big, big), std::clamp(p[1], -big, big)); };
   Box2 b = Box2::empty_box();
-  b.add(to_model({page.x, page.y}));
-  b.add(to_model({page.x + page.width, page.y + page.height}));
+  b.add(finite(to_model({page.x, page.y})));
+  b.add(finite(to_model({page.x + page.width, page.y + page.height})));
   return b;
 }
 
@@ -525,16 +554,26 @@ RationalBezier<double, 2> graph(const RationalBezier<double, 1>& c) {
   return RationalBezier<double, 2>(std::move(P), std::move(W));
 }
 
+/// The control points with x in [0, 1] mapped onto [lo, hi] as (1 - x) lo + x hi: the
+/// affine map x -> lo + x (hi - lo) without forming hi - lo, which overflows for breaks
+/// [-1e308, 1e308] (it gave NaN coordinates).
+std::vector<Point2> onto(const std::vector<Point2>& P, const Interval<double>& dom) {
+  std::vector<Point2> Q(P.size());
+  std::transform(P.begin(), P.end(), Q.begin(), [&](const Point2& p) { return Point2((1 - p[0]) * dom.lo + p[0] * dom.hi, p[1]); });
+  return Q;
+}
+Bezier<double, 2> onto(const Bezier<double, 2>& c, const Interval<double>& dom) { return Bezier<double, 2>(onto(c.points(), dom)); }
+RationalBezier<double, 2> onto(const RationalBezier<double, 2>& c, const Interval<double>& dom) {
+  return RationalBezier<double, 2>(onto(c.points(), dom), c.weights());
+}
+
 /// The graph of a 1-D curve's pieces: each piece's graph mapped from [0, 1] onto its
 /// break interval.
 Pieces<double, 2> graph(const Pieces<double, 1>& c) {
   std::vector<BezierPiece<double, 2>> segs;
   for (std::size_t i = 0; i < c.size(); ++i) {
     const auto dom = c.segment_domain(i);
-    Affine<double, 2> m;
-    m.linear = {{{dom.length(), 0.0}, {0.0, 1.0}}};
-    m.translation = Vector<double, 2>(dom.lo, 0.0);
-    segs.push_back(std::visit([&](const auto& s) { return BezierPiece<double, 2>(graph(s).transform(m)); }, c.segments()[i]));
+    segs.push_back(std::visit([&](const auto& s) { return BezierPiece<double, 2>(onto(graph(s), dom)); }, c.segments()[i]));
   }
   return Pieces<double, 2>(std::move(segs), c.breaks());
 }
@@ -560,19 +599,46 @@ Drawable drawable(const AnyCurve& any, std::string_view where) {
       pieces(any));
 }
 
+/// Runs f, which computes from one curve (its bounds, its page points, its flattening),
+/// and reports a failure against that curve: an overflow when mapping it to the page, or
+/// a flattening tolerance below the resolution of its mapped control points, is about
+/// the curve, not about an argument the caller gave.
+template <class F>
+void about_curve(const std::string& where, F&& f) {
+  try {
+    f();
+  } catch (const InvalidArgument& e) {
+    if (e.where() == where) throw;  // already about the curve (a 3D curve)
+    throw InvalidArgument(where, "cannot be drawn: " + (e.where() == "curve" ? e.problem() : std::string(e.what())));
+  } catch (const NumericalError& e) {
+    throw InvalidArgument(where, "cannot be drawn: " + std::string(e.what()));
+  }
+}
+
 void validate(const RenderStyle& s) {
   require_positive(s.width, "width");
   require_positive(s.height, "height");
   require_non_negative(s.padding, "padding");
   require_positive(s.stroke_width, "stroke_width");
   require_non_negative(s.tolerance, "tolerance");
-  if (!(2 * s.padding < std::min(s.width, s.height))) {
-    throw InvalidArgument("padding", "leaves no room to draw: 2 * padding = " + casteljau::detail::format_number(2 * s.padding) +
-                                         " must be < min(width, height) = " +
-                                         casteljau::detail::format_number(std::min(s.width, s.height)));
+  for (const auto& [v, name] : {std::pair{s.width, "width"}, std::pair{s.height, "height"}}) {
+    if (!(v >= min_drawing_px && v <= max_page_px)) {
+      throw InvalidArgument(name, std::string(name) + " must be >= 1 and <= 1000000 px, got " + casteljau::detail::format_number(v));
+    }
+  }
+  // Compared as padding <= (side - 1) / 2, which cannot overflow as 2 * padding would.
+  const double side = std::min(s.width, s.height);
+  if (!(s.padding <= (side - min_drawing_px) / 2)) {
+    throw InvalidArgument("padding", "leaves no room to draw: min(width, height) - 2 * padding must be >= " +
+                                         casteljau::detail::format_number(min_drawing_px) + " px, got padding " +
+                                         casteljau::detail::format_number(s.padding) + " with min(width, height) = " +
+                                         casteljau::detail::format_number(side));
   }
 }
 
+/// The axes through the origin when it is in view, with ticks and labels. Positions are
+/// computed with the map and drawn in page px (identity map), so that a view reaching the
+/// range of double (clamped by PageMap::view) never has to be mapped back to the model.
 void draw_axes(SvgDocument& doc, const PageMap& map, const RenderStyle& style, bool graphs) {
   const PageRect page{0, 0, style.width, style.height};
   const Box2 v = map.view(page);
@@ -580,33 +646,38 @@ void draw_axes(SvgDocument& doc, const PageMap& map, const RenderStyle& style, b
   const Paint grid{.stroke = "#777", .stroke_width = 1};
   const TextStyle label{.size = 10, .colour = "#555", .family = "sans-serif"};
   const double tick_px = 4;
+  // About one tick per 90 px (x) and 70 px (y); validate() bounds the page, so these fit an int.
   const int count_x = std::max(2, static_cast<int>(style.width / 90)), count_y = std::max(2, static_cast<int>(style.height / 70));
+  doc.set_map(PageMap{});
   if (v.lo[1] <= 0 && 0 <= v.hi[1]) {
-    doc.arrow({v.lo[0], 0.0}, {v.hi[0], 0.0}, axis);
+    const double y0 = map({v.lo[0], 0.0})[1];
+    doc.arrow({0.0, y0}, {style.width, y0}, axis);
     const auto tx = nice_ticks(v.lo[0], v.hi[0], count_x);
     const double step = tx.size() > 1 ? tx[1] - tx[0] : 1;
     for (const double x : tx) {
       if (x == 0 && v.lo[0] <= 0 && 0 <= v.hi[0]) continue;  // the origin belongs to both axes
       const Point2 p = map({x, 0.0});
       if (p[0] > style.width - 12) continue;  // keep clear of the arrow head
-      doc.line({x, 0.0}, map.to_model({p[0], p[1] + tick_px}), grid);
-      doc.text({x, 0.0}, tick_label(x, step), TextStyle{.size = label.size, .colour = label.colour, .anchor = Anchor::middle, .dy = 15, .family = label.family});
+      doc.line(p, {p[0], p[1] + tick_px}, grid);
+      doc.text(p, tick_label(x, step), TextStyle{.size = label.size, .colour = label.colour, .anchor = Anchor::middle, .dy = 15, .family = label.family});
     }
-    doc.text({v.hi[0], 0.0}, graphs ? "t" : "x", TextStyle{.size = 12, .colour = "#555", .anchor = Anchor::end, .italic = true, .dx = -4, .dy = -6, .family = "serif"});
+    doc.text({style.width, y0}, graphs ? "t" : "x", TextStyle{.size = 12, .colour = "#555", .anchor = Anchor::end, .italic = true, .dx = -4, .dy = -6, .family = "serif"});
   }
   if (v.lo[0] <= 0 && 0 <= v.hi[0]) {
-    doc.arrow({0.0, v.lo[1]}, {0.0, v.hi[1]}, axis);
+    const double x0 = map({0.0, v.lo[1]})[0];
+    doc.arrow({x0, style.height}, {x0, 0.0}, axis);
     const auto ty = nice_ticks(v.lo[1], v.hi[1], count_y);
     const double step = ty.size() > 1 ? ty[1] - ty[0] : 1;
     for (const double y : ty) {
       if (y == 0 && v.lo[1] <= 0 && 0 <= v.hi[1]) continue;
       const Point2 p = map({0.0, y});
       if (p[1] < 12) continue;
-      doc.line({0.0, y}, map.to_model({p[0] - tick_px, p[1]}), grid);
-      doc.text({0.0, y}, tick_label(y, step), TextStyle{.size = label.size, .colour = label.colour, .anchor = Anchor::end, .dx = -6, .dy = 3.5, .family = label.family});
+      doc.line(p, {p[0] - tick_px, p[1]}, grid);
+      doc.text(p, tick_label(y, step), TextStyle{.size = label.size, .colour = label.colour, .anchor = Anchor::end, .dx = -6, .dy = 3.5, .family = label.family});
     }
-    doc.text({0.0, v.hi[1]}, "y", TextStyle{.size = 12, .colour = "#555", .italic = true, .dx = 8, .dy = 10, .family = "serif"});
+    doc.text({x0, 0.0}, "y", TextStyle{.size = 12, .colour = "#555", .italic = true, .dx = 8, .dy = 10, .family = "serif"});
   }
+  doc.set_map(map);
 }
 
 }  // namespace
@@ -615,16 +686,17 @@ std::string render_svg(std::span<const AnyCurve> curves, const RenderStyle& styl
   validate(style);
   std::vector<Drawable> items;
   items.reserve(curves.size());
-  for (std::size_t i = 0; i < curves.size(); ++i) {
-    items.push_back(drawable(curves[i], curves.size() == 1 ? std::string("curve") : "curves[" + std::to_string(i) + "]"));
-  }
+  const auto name = [&](std::size_t i) { return curves.size() == 1 ? std::string("curve") : "curves[" + std::to_string(i) + "]"; };
+  for (std::size_t i = 0; i < curves.size(); ++i) about_curve(name(i), [&] { items.push_back(drawable(curves[i], name(i))); });
 
   Box2 box = Box2::empty_box();
   bool all_graphs = !items.empty();
-  for (const auto& it : items) {
-    box.add(bounds(it.path));
-    if (style.control_polygon) box.add(it.path.control_bounds());
-    all_graphs = all_graphs && it.is_graph;
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    about_curve(name(i), [&] {
+      box.add(bounds(items[i].path));
+      if (style.control_polygon) box.add(items[i].path.control_bounds());
+    });
+    all_graphs = all_graphs && items[i].is_graph;
   }
   const PageRect inner{style.padding, style.padding, style.width - 2 * style.padding, style.height - 2 * style.padding};
   const PageMap map = PageMap::fit(box, inner, all_graphs ? Aspect::stretch : Aspect::keep);
@@ -646,23 +718,25 @@ std::string render_svg(std::span<const AnyCurve> curves, const RenderStyle& styl
     const std::string colour =
         stroke_unset ? std::string(items.size() > 1 ? palette(i) : palette(0)) : style.stroke;
     const auto& path = items[i].path;
-    doc.begin_group("curve");
-    if (style.control_polygon) {
-      for (const auto& s : path.segments()) {
-        std::visit([&](const auto& seg) {
-          doc.polyline(seg.points(), Paint{.stroke = colour, .stroke_width = 1, .opacity = 0.55, .dash = "4 3"});
-        }, s);
+    about_curve(name(i), [&] {
+      doc.begin_group("curve");
+      if (style.control_polygon) {
+        for (const auto& s : path.segments()) {
+          std::visit([&](const auto& seg) {
+            doc.polyline(seg.points(), Paint{.stroke = colour, .stroke_width = 1, .opacity = 0.55, .dash = "4 3"});
+          }, s);
+        }
       }
-    }
-    doc.curve(path, Paint{.stroke = colour, .stroke_width = style.stroke_width}, tolerance_px);
-    if (style.control_polygon) {
-      for (const auto& s : path.segments()) {
-        std::visit([&](const auto& seg) {
-          for (const auto& p : seg.points()) doc.circle(p, 3, Paint{.stroke = colour, .stroke_width = 1.25, .fill = "white"});
-        }, s);
+      doc.curve(path, Paint{.stroke = colour, .stroke_width = style.stroke_width}, tolerance_px);
+      if (style.control_polygon) {
+        for (const auto& s : path.segments()) {
+          std::visit([&](const auto& seg) {
+            for (const auto& p : seg.points()) doc.circle(p, 3, Paint{.stroke = colour, .stroke_width = 1.25, .fill = "white"});
+          }, s);
+        }
       }
-    }
-    doc.end_group();
+      doc.end_group();
+    });
   }
   return doc.str();
 }

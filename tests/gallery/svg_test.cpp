@@ -326,6 +326,138 @@ TEST(RenderSvg, SinglePointIsCentred) {
   EXPECT_EQ(d, "M320,240L320,240");
 }
 
+/// Every point of the first <path>'s data (command end points and inner control points):
+/// where the curve is drawn.
+std::vector<P2> path_points(const std::string& svg) {
+  static const std::regex num("[-+]?[0-9]*\\.?[0-9]+(?:[eE][-+]?[0-9]+)?");
+  const std::string d = path_data(svg).at(0);
+  std::vector<double> all;
+  for (auto it = std::sregex_iterator(d.begin(), d.end(), num); it != std::sregex_iterator(); ++it) all.push_back(std::stod(it->str()));
+  std::vector<P2> out;
+  for (std::size_t i = 0; i + 1 < all.size(); i += 2) out.emplace_back(all[i], all[i + 1]);
+  return out;
+}
+
+/// The drawn extent of the first path along x and y, in px.
+P2 drawn_extent(const std::string& svg) {
+  const auto pts = path_points(svg);
+  double x0 = pts.at(0)[0], x1 = x0, y0 = pts.at(0)[1], y1 = y0;
+  for (const P2& p : pts) {
+    x0 = std::min(x0, p[0]);
+    x1 = std::max(x1, p[0]);
+    y0 = std::min(y0, p[1]);
+    y1 = std::max(y1, p[1]);
+  }
+  return {x1 - x0, y1 - y0};
+}
+
+// Issue 5, defect 5: views whose extent overflows, or is small against its position.
+
+TEST(RenderSvg, ExtentBeyondTheRangeOfDoubleSpansTheView) {
+  // hi - lo = 2e308 overflows; the curve must fill the view, not collapse to a dot.
+  const Bezier<double, 2> c({{-1e308, 0.0}, {0.0, 1e308}, {1e308, 0.0}});
+  RenderStyle axes;
+  axes.axes = true;
+  RenderStyle bare;
+  bare.control_polygon = false;
+  for (const RenderStyle& s : {RenderStyle{}, axes, bare}) {
+    const std::string svg = checked(render(c, s));
+    expect_on_page(svg, s);
+    const P2 e = drawn_extent(svg);
+    // The view (the control box, or the tight box) is 2e308 x 1e308 (or x 0.5e308):
+    // fitted into 592 x 432 px, x sets the scale, 592 px for 2e308; the control point
+    // is 1e308 = 296 px above the ends.
+    EXPECT_NEAR(e[0], 592, 1e-3) << svg;
+    EXPECT_NEAR(e[1], 296, 1e-3) << svg;
+  }
+  // Corners at +-DBL_MAX, with a wide padding and axes (view beyond the doubles).
+  const double big = std::numeric_limits<double>::max();
+  RenderStyle wide = axes;
+  wide.padding = 200;
+  const std::string svg = checked(render(Bezier<double, 2>({{-big, -big}, {big, big}}), wide));
+  EXPECT_NEAR(drawn_extent(svg)[0], 80, 1e-3) << svg;  // 480 - 2 * 200
+  // A 1D path on breaks [-1e308, 1e308]: its graph spans t over the page width (the break
+  // interval's length overflowed, giving NaN control points).
+  const Path<double, 1> p({Segment<double, 1>(Bezier<double, 1>({P1(0.0), P1(1.0)}))}, {-1e308, 1e308});
+  const std::string g = checked(render(p));
+  EXPECT_NEAR(drawn_extent(g)[0], 592, 1e-3) << g;
+  EXPECT_NEAR(drawn_extent(g)[1], 432, 1e-3) << g;
+}
+
+TEST(RenderSvg, SmallCurveFarFromTheOriginIsDrawnAtFullSize) {
+  // 4 units at 1e13: the ulp of 1e13 is 0.002, so 2000 ulps across. It was taken for a
+  // point (extents below 1e-12 of the position counted as flat).
+  const double e = 1e13;
+  const Bezier<double, 2> both({{e, e}, {e + 2, e + 4}, {e + 4, e}});
+  const Bezier<double, 2> along_x({{e, 0.0}, {e + 2, 4.0}, {e + 4, 0.0}});
+  RenderStyle bare;
+  bare.control_polygon = false;
+  for (const RenderStyle& s : {RenderStyle{}, bare}) {
+    for (const auto& c : {both, along_x}) {
+      const std::string svg = checked(render(c, s));
+      expect_on_page(svg, s);
+      // Control box 4 x 4 fitted into 592 x 432: 432 px; tight box 4 x 2: 592 px wide.
+      EXPECT_NEAR(drawn_extent(svg)[0], s.control_polygon ? 432 : 592, 1e-3) << svg;
+    }
+  }
+  // A 1D graph far from the origin is stretched to the page height.
+  const std::string g = checked(render(Bezier<double, 1>({P1(e), P1(e + 8), P1(e)})));
+  EXPECT_NEAR(drawn_extent(g)[1], 432, 1e-3) << g;
+}
+
+TEST(PageMap, ExtentsAtTheLimitsOfDouble) {
+  const double big = std::numeric_limits<double>::max();
+  const io::PageRect page{0, 0, 400, 300};
+  const auto m = io::PageMap::fit({{-big, -big}, {big, big}}, page);
+  EXPECT_GT(m.scale_x(), 0);
+  EXPECT_NEAR(m({-big, 0.0})[0], 50, 1e-9);  // 300 x 300 square, centred
+  EXPECT_NEAR(m({big, 0.0})[0], 350, 1e-9);
+  const Box<double, 2> v = m.view(page);
+  EXPECT_EQ(v.lo[0], -big);  // beyond the doubles: clamped
+  EXPECT_EQ(v.hi[0], big);
+  // A point far out on the opposite side of the centre: p - c overflows.
+  const auto off = io::PageMap::fit({{big / 2, 0.0}, {big, 1.0}}, page);
+  EXPECT_TRUE(std::isfinite(off({-big, 0.0})[0]));
+  // Rounding-level extents are flat (a point), a few thousand ulps are not.
+  const double e = 1e13;
+  const auto point = io::PageMap::fit({{e, e}, {e + 0.002, e + 0.002}}, page);  // 1 ulp
+  EXPECT_DOUBLE_EQ(point.scale_x(), 150 / (e * 1e-3));
+  const auto small = io::PageMap::fit({{e, e}, {e + 4, e + 4}}, page);
+  EXPECT_DOUBLE_EQ(small.scale_x(), 75);
+}
+
+TEST(Ticks, HugeAndNarrowIntervals) {
+  const double big = std::numeric_limits<double>::max();
+  for (const auto& [lo, hi] : {std::pair{-1e308, 1e308}, std::pair{-big, big}, std::pair{0.0, big}}) {
+    for (const double v : io::nice_ticks(lo, hi, 5)) EXPECT_TRUE(std::isfinite(v)) << lo << " " << hi;
+  }
+  const auto t = io::nice_ticks(-1e308, 1e308, 2);  // step 1e308 (hi - lo overflowed)
+  ASSERT_EQ(t.size(), 3u);
+  EXPECT_DOUBLE_EQ(t[0], -1e308);
+  EXPECT_EQ(t[1], 0);
+  EXPECT_DOUBLE_EQ(t[2], 1e308);
+  // One ulp wide at 1e17: multiples of the step are beyond 2^53; this must end (it looped
+  // forever on k += 1) and give no ticks.
+  EXPECT_TRUE(io::nice_ticks(1e17, 1e17 + 16, 5).empty());
+}
+
+TEST(RenderSvg, StyleLimits) {
+  auto with = [](auto set) {
+    RenderStyle s;
+    set(s);
+    return s;
+  };
+  for (const double v : {1e308, 1e7, 0.5}) {
+    expect_invalid([&] { render(cubic(), with([&](RenderStyle& s) { s.width = v; s.padding = 0; })); }, "width");
+    expect_invalid([&] { render(cubic(), with([&](RenderStyle& s) { s.height = v; s.padding = 0; })); }, "height");
+  }
+  for (const double v : {1e308, std::numeric_limits<double>::max(), 240.0, 239.75}) {
+    expect_invalid([&] { render(cubic(), with([&](RenderStyle& s) { s.padding = v; })); }, "padding");
+  }
+  checked(render(cubic(), with([](RenderStyle& s) { s.padding = 239.5; s.axes = true; })));  // 1 px to draw in
+  checked(render(cubic(), with([](RenderStyle& s) { s.stroke_width = 1e308; s.axes = true; })));
+}
+
 // ---------------------------------------------------------------------------------------
 // The writer's pieces.
 

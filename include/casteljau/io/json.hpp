@@ -33,14 +33,19 @@ using OrderedJson = nlohmann::ordered_json;
 /// - malformed text: where "request", problem "malformed JSON at line L, column C: ...";
 /// - a number that overflows a double (1e999): where is its path, e.g. "t[3]";
 /// - an object key given twice: where is the key's path (the JSON RFC leaves duplicates
-///   undefined; silently keeping one would hide a user's mistake).
+///   undefined; silently keeping one would hide a user's mistake);
+/// - a NUL byte anywhere outside what a failed parse read first (nlohmann would take it
+///   for the end of the text and ignore what follows): malformed JSON at its position.
+/// Long keys in paths, deep paths and long tokens in messages are cut (see quoted).
 [[nodiscard]] Json parse_json(std::string_view text);
 
 /// The JSON type of j for messages: "null", "boolean", "number", "string", "array", "object".
 [[nodiscard]] std::string_view kind_of(const Json& j);
 
 /// s in single quotes for an error message, escaped as in a JSON string (so that user
-/// input holding a newline cannot break the one-line error contract).
+/// input holding a newline cannot break the one-line error contract). Text longer than 64
+/// characters is cut there and its length given: 'aaaa…' (1048576 bytes), so that a
+/// message stays short whatever the input.
 [[nodiscard]] std::string quoted(std::string_view s);
 
 /// j as a finite double; JSON integers and floats are numbers, booleans are not.
@@ -48,6 +53,8 @@ using OrderedJson = nlohmann::ordered_json;
 [[nodiscard]] double number_from_json(const Json& j, std::string_view where, std::string_view what = "value");
 
 /// j as an int: a JSON integer, or a float with an integral value (2.0), within int range.
+/// An out-of-range value is echoed only when its digits are exact (a JSON integer that
+/// fits 64 bits); otherwise (beyond 64 bits, or 3e9) it is "a number above/below ...".
 [[nodiscard]] int integer_from_json(const Json& j, std::string_view where);
 
 /// j as an array of finite numbers; element errors name "where[i]".

@@ -2,6 +2,7 @@
 // PageMap), and render_svg, the renderer of the `render` command and of the gallery.
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 #include <span>
 #include <string>
@@ -15,9 +16,9 @@ namespace casteljau::io {
 /// Styling of render_svg; every field has a default. The CLI reads these from the
 /// request's optional fields of the same names.
 struct RenderStyle {
-  double width = 640;                 ///< page width in px, > 0
-  double height = 480;                ///< page height in px, > 0
-  double padding = 24;                ///< margin around the curves' bounds in px, >= 0
+  double width = 640;                 ///< page width in px, 1..1e6
+  double height = 480;                ///< page height in px, 1..1e6
+  double padding = 24;                ///< margin around the curves' bounds in px, >= 0, leaving >= 1 px to draw in
   std::string background = "white";   ///< CSS colour, or "none"
   std::string stroke = "#1f77b4";     ///< curve colour (a palette is used when several curves are drawn and stroke is unset)
   double stroke_width = 2;            ///< px, > 0
@@ -31,18 +32,23 @@ struct RenderStyle {
 /// dimension 3 or 4 or a bad style.
 ///
 /// Details: a style field that breaks its rule is named in the error ("width", ...), as is
-/// a padding that leaves no room (2 padding >= width or height). A curve of the wrong
-/// dimension is named "curve" when it is the only one, "curves[i]" otherwise. The view is
-/// the union of the curves' tight bounds (and of their control points when the control
-/// polygon is drawn); 2D curves keep their aspect ratio, 1D graphs alone are stretched to
-/// the page. A view of zero width or height (a point, a horizontal line) is widened to a
-/// unit extent about its centre. Bézier segments of degree <= 3 are written exactly as
-/// SVG L/Q/C commands; other segments are flattened (flatten) in page space within
-/// style.tolerance times the page scale, or within 0.25 px when tolerance is 0, but never
-/// below 0.001 px, the resolution of the numbers written. A stroke that is empty or equal
-/// to the default means "unset": one curve is drawn in the default colour, several in
-/// palette colours. An empty background means "none". Colour strings are XML-escaped,
-/// not checked. No curves: an empty page (with axes about the origin if asked).
+/// a padding that leaves less than 1 px to draw in (min(width, height) - 2 padding < 1).
+/// Width and height are 1 to 1e6 px (curves are flattened to a fraction of a px: the page
+/// size bounds the document). A curve of the wrong dimension is named "curve" when it is
+/// the only one, "curves[i]" otherwise, as is a curve that cannot be drawn (its mapped
+/// control points overflow, or lie so far off the page that flattening it within the
+/// tolerance is below their resolution). The view is the union of the curves' tight
+/// bounds (and of their control points when the control polygon is drawn); 2D curves
+/// keep their aspect ratio, 1D graphs alone are stretched to the page. A view of zero
+/// width or height (a point, a horizontal line), or one within rounding of its position,
+/// is widened about its centre (PageMap::fit). Bézier segments of degree <= 3 are written
+/// exactly as SVG L/Q/C commands; other segments are flattened (flatten) in page space
+/// within style.tolerance times the page scale, or within 0.25 px when tolerance is 0,
+/// but never below 0.001 px, the resolution of the numbers written. A stroke that is
+/// empty or equal to the default means "unset": one curve is drawn in the default colour,
+/// several in palette colours. An empty background means "none". Colour strings are
+/// XML-escaped, not checked. No curves: an empty page (with axes about the origin if
+/// asked).
 std::string render_svg(std::span<const AnyCurve> curves, const RenderStyle& style = {});
 
 // ---------------------------------------------------------------------------------------
@@ -73,17 +79,21 @@ class PageMap {
  public:
   PageMap() = default;
 
-  /// The map that fits `model` into `page`, centred, y up. A zero (or below-resolution)
-  /// extent of the model box along an axis is widened to a unit extent, or to 1e-3 of the
-  /// centre's magnitude when that is larger, so that a point or a horizontal segment maps
-  /// to the centre of the page without dividing by zero; with Aspect::keep the other axis
-  /// then sets the scale. An empty model box is taken as [-1, 1]^2. Throws
+  /// The map that fits `model` into `page`, centred, y up. Extents are computed as
+  /// hi/2 - lo/2, so a model box spanning [-1e308, 1e308] fits. A zero extent along an
+  /// axis, or one within 2^-46 of the box's centre (64 to 128 ulps: rounding, not
+  /// geometry; a box 4 units wide at 1e13 is not flat), is widened to a unit extent, or to
+  /// 1e-3 of the centre's magnitude when that is larger, so that a point or a horizontal
+  /// segment maps to the centre of the page without dividing by zero; with Aspect::keep
+  /// the other axis then sets the scale. An empty model box is taken as [-1, 1]^2. Throws
   /// InvalidArgument("model", ...) for non-finite bounds and ("page", ...) for a
-  /// rectangle with a non-finite field or without positive width and height.
+  /// rectangle with a non-finite field or without positive width and height, or one so
+  /// small against the model that the scale underflows to 0.
   static PageMap fit(const Box2& model, const PageRect& page, Aspect aspect = Aspect::keep);
 
-  /// The page position of model point p.
-  [[nodiscard]] Point2 operator()(const Point2& p) const { return {qx_ + sx_ * (p[0] - cx_), qy_ + sy_ * (p[1] - cy_)}; }
+  /// The page position of model point p: q + s (p - c), or q + (s p - s c) where p - c
+  /// overflows (p and c near the range of double, of opposite signs; s is small there).
+  [[nodiscard]] Point2 operator()(const Point2& p) const { return {along(p[0], cx_, qx_, sx_), along(p[1], cy_, qy_, sy_)}; }
   /// The model point at page position q.
   [[nodiscard]] Point2 to_model(const Point2& q) const { return {cx_ + (q[0] - qx_) / sx_, cy_ + (q[1] - qy_) / sy_}; }
   /// The same map as an Affine A x + b. Less accurate than operator() for models far from
@@ -95,11 +105,15 @@ class PageMap {
   /// A page length in model units: px / min(scale_x, scale_y), so that a model distance
   /// below the result is below px on the page in every direction.
   [[nodiscard]] double px_to_model(double px) const;
-  /// The model box that the map sends onto the page rectangle it was fitted to (the
-  /// whole visible region, padding included when the rectangle is the page).
+  /// The model box that the map sends onto the page rectangle (the whole visible region,
+  /// padding included when the rectangle is the page), clamped to the finite doubles.
   [[nodiscard]] Box2 view(const PageRect& page) const;
 
  private:
+  static double along(double p, double c, double q, double s) {
+    const double d = p - c;
+    return q + (std::isfinite(d) ? s * d : s * p - s * c);
+  }
   PageMap(double cx, double cy, double qx, double qy, double sx, double sy)
       : cx_(cx), cy_(cy), qx_(qx), qy_(qy), sx_(sx), sy_(sy) {}
   double cx_ = 0, cy_ = 0;  ///< model centre
