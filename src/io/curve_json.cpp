@@ -197,6 +197,59 @@ struct Format<Polyline> {
   }
 };
 
+/// The degree, knots and points of a bspline or nurbs object: the optional `dim` must
+/// agree, the degree may not exceed max_degree; the knot rules are the constructor's.
+struct RawSpline {
+  int degree = 0;
+  std::vector<double> knots;
+  RawPoints P;
+};
+
+RawSpline read_spline(const Fields& f, std::string_view noun) {
+  RawSpline r;
+  const std::optional<int> dim = read_dim(f);
+  r.degree = integer_from_json(f.required("degree"), "degree");
+  if (r.degree < 1) throw InvalidArgument("degree", std::string(noun) + " needs degree >= 1, got " + std::to_string(r.degree));
+  if (r.degree > max_degree) {
+    throw InvalidArgument("degree", "degree " + std::to_string(r.degree) + " is above the highest supported degree " +
+                                        std::to_string(max_degree));
+  }
+  r.P = read_points(f.required("points"), 1, noun);
+  check_dim(dim, r.P.dim);
+  r.knots = numbers_from_json(f.required("knots"), "knots");
+  return r;
+}
+
+template <>
+struct Format<BSpline> {
+  static constexpr std::string_view name = "bspline";
+  static AnyCurve read(const Fields& f) {
+    f.allow_only({"type", "degree", "knots", "points", "dim"}, "a bspline");
+    const RawSpline r = read_spline(f, "a bspline");
+    return dispatch_dimension(r.P.dim, [&]<int D>() { return AnyCurve(BSpline<double, D>(r.degree, r.knots, r.P.points<D>())); });
+  }
+  template <int D>
+  static OrderedJson write(const BSpline<double, D>& c) {
+    return OrderedJson{{"type", name}, {"degree", c.degree()}, {"knots", c.knots()}, {"points", points_json(c.points())}};
+  }
+};
+
+template <>
+struct Format<Nurbs> {
+  static constexpr std::string_view name = "nurbs";
+  static AnyCurve read(const Fields& f) {
+    f.allow_only({"type", "degree", "knots", "points", "weights", "dim"}, "a nurbs");
+    const RawSpline r = read_spline(f, "a nurbs");
+    const std::vector<double> w = numbers_from_json(f.required("weights"), "weights");
+    return dispatch_dimension(r.P.dim, [&]<int D>() { return AnyCurve(Nurbs<double, D>(r.degree, r.knots, r.P.points<D>(), w)); });
+  }
+  template <int D>
+  static OrderedJson write(const Nurbs<double, D>& c) {
+    return OrderedJson{{"type", name}, {"degree", c.degree()}, {"knots", c.knots()}, {"points", points_json(c.points())},
+                       {"weights", c.weights()}};
+  }
+};
+
 /// How deeply paths may nest in curve JSON (a path segment may itself be a path): far
 /// more than any real use, and a bound on the reader's recursion.
 constexpr int max_path_nesting = 32;
@@ -229,7 +282,7 @@ std::vector<std::string_view> registered_names() {
 }
 
 /// Types of the contract that no Format entry serves yet.
-constexpr std::array<std::string_view, 6> later_types = {"bspline", "nurbs", "lagrange", "cubic_spline", "hermite", "catmull_rom"};
+constexpr std::array<std::string_view, 4> later_types = {"lagrange", "cubic_spline", "hermite", "catmull_rom"};
 
 thread_local int path_depth = 0;
 

@@ -471,7 +471,7 @@ class BadInputTest(CliTest):
         self.eval_bad({"points": CUBIC}, "curve.type", contains="missing")
         self.eval_bad(bezier(CUBIC, type=3), "curve.type", contains="string")
         self.eval_bad(bezier(CUBIC, type="bezzier"), "curve.type", contains="unknown curve type")
-        for ty in ("bspline", "nurbs", "lagrange", "cubic_spline", "hermite", "catmull_rom"):
+        for ty in ("lagrange", "cubic_spline", "hermite", "catmull_rom"):
             err = self.eval_bad(bezier(CUBIC, type=ty), "curve.type", contains="not supported yet")
             self.assertIn(f"'{ty}'", err)
         self.eval_bad([1, 2], "curve", contains="object")
@@ -583,7 +583,7 @@ class BadInputTest(CliTest):
         self.bad("render", {"curves": []}, "curves")
         self.bad("render", {}, "curve", contains="missing")
         self.bad("render", {"curves": [c, bezier([[0, 1], "x"])]}, "curves[1].points[1]")
-        self.bad("render", {"curve": {"type": "nurbs"}}, "curve.type", contains="not supported yet")
+        self.bad("render", {"curve": {"type": "hermite"}}, "curve.type", contains="not supported yet")
         # The renderer draws 1D and 2D curves; the refused curve is named as in the request.
         c3 = bezier([[0, 0, 0], [1, 1, 1]])
         self.bad("render", {"curve": c3}, "curve")

@@ -248,8 +248,14 @@ class RenderExtentTest(HostileTest):
             pts = self.render_points(dict({"curve": c}, **extra))
             self.assert_spans(pts, 640, 480)
             self.assertAlmostEqual(pts[0][1], pts[-1][1])  # symmetric: both ends at one height
-        # A 1D path whose break interval is longer than the largest double: its graph.
+        # A path whose domain is longer than the largest double is refused: parameters are
+        # mapped through break lengths (eval at t = 0 used to answer 0 instead of 0.5).
         path = {"type": "path", "segments": [bezier([[0], [1]])], "breaks": [-1e308, 1e308]}
+        self.bad("render", {"curve": path}, "curve.breaks", contains="longer than the largest double")
+        self.bad("eval", {"curve": path, "t": [0]}, "curve.breaks", contains="longer than the largest double")
+        path["breaks"] = [-0.8e308, 0.8e308]
+        r = json.loads(run("eval", {"curve": path, "t": [0]})[1])
+        self.assertEqual(r["points"], [[0.5]])
         pts = self.render_points({"curve": path})
         self.assertAlmostEqual(pts[-1][0] - pts[0][0], 592, delta=1e-3)  # 640 - 2 * 24
         c = bezier([[-1.7976931348623157e308, -1.7976931348623157e308], [1.7976931348623157e308, 1.7976931348623157e308]])

@@ -47,6 +47,23 @@ struct Samples<RationalBezier> {
 };
 
 template <>
+struct Samples<BSpline> {
+  template <int D>
+  static std::vector<BSpline<double, D>> make() {
+    return {BSpline<double, D>(1, {0, 0, 1, 1}, {pt<D>(0, 0), pt<D>(1, 1)}),
+            BSpline<double, D>(2, {-1, 0.1, 0.1, 2, 3, 7}, {pt<D>(0, 0), pt<D>(1, 1), pt<D>(2, -1)})};
+  }
+};
+
+template <>
+struct Samples<Nurbs> {
+  template <int D>
+  static std::vector<Nurbs<double, D>> make() {
+    return {Nurbs<double, D>(2, {0, 0, 0, 1, 1, 1}, {pt<D>(1, 0), pt<D>(1, 1), pt<D>(0, 1)}, {1, std::sqrt(0.5), 3e-7})};
+  }
+};
+
+template <>
 struct Samples<Polyline> {
   template <int D>
   static std::vector<Polyline<double, D>> make() {
@@ -131,7 +148,7 @@ TEST(Registry, ReaderErrors) {
                           "breaks[1]", "strictly increasing");
   EXPECT_INVALID_ARGUMENT(curve(R"({"type": "path", "segments": [{"type": "polyline", "points": [[0], [1]]}], "breaks": [0, 1, 2]})"),
                           "breaks", "one more break");
-  EXPECT_INVALID_ARGUMENT(curve(R"({"type": "path", "segments": [{"type": "nurbs"}]})"), "segments[0].type", "not supported yet");
+  EXPECT_INVALID_ARGUMENT(curve(R"({"type": "path", "segments": [{"type": "lagrange"}]})"), "segments[0].type", "not supported yet");
   // Input degree above the cap of the run-time interfaces.
   std::string big = R"({"type": "bezier", "points": [)";
   for (int i = 0; i <= io::max_degree + 1; ++i) big += std::string(i ? "," : "") + "[" + std::to_string(i) + "]";

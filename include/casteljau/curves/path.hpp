@@ -5,6 +5,7 @@
 #include <variant>
 #include <vector>
 
+#include "casteljau/curves/bspline.hpp"
 #include "casteljau/curves/piecewise.hpp"
 #include "casteljau/curves/polyline.hpp"
 
@@ -15,7 +16,7 @@ namespace casteljau {
 /// interfaces (io::AnyCurve) serve these and Path.
 template <template <class, int> class... C>
 struct CurveTypeList {};
-using SegmentTypes = CurveTypeList<Bezier, RationalBezier, Polyline>;
+using SegmentTypes = CurveTypeList<Bezier, RationalBezier, BSpline, Nurbs, Polyline>;
 
 namespace detail {
 template <class T, int D, class List>

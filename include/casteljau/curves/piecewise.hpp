@@ -4,6 +4,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <variant>
 #include <vector>
@@ -40,6 +41,11 @@ void check_breaks(const std::vector<T>& breaks, std::size_t k) {
       throw InvalidArgument(where, "breaks must be strictly increasing (" + format_number(breaks[i]) + " after " +
                                        format_number(breaks[i - 1]) + ")");
     }
+  }
+  // Parameters are mapped through break lengths: the domain's length must be a double.
+  if (!std::isfinite(breaks.back() - breaks.front())) {
+    throw InvalidArgument("breaks", "the domain [" + format_number(breaks.front()) + ", " + format_number(breaks.back()) +
+                                        "] is longer than the largest double");
   }
 }
 

@@ -24,6 +24,10 @@ inline constexpr int max_dimension = 4;
 /// request still answers in well under a second.
 inline constexpr int max_degree = 1000;
 
+/// The most vertices `flatten` answers with: a request whose Wang estimate (see
+/// src/io/any_curve.cpp) exceeds it is refused before any work, naming the tolerance.
+inline constexpr std::size_t max_flatten_vertices = 1'000'000;
+
 /// The registry: every curve type the run-time interfaces serve. Its curve-JSON name,
 /// fields, reader and writer are its Format entry in src/io/curve_json.cpp.
 template <class List>
@@ -100,6 +104,8 @@ struct AnyBox {
 [[nodiscard]] AnyBox bounds(const AnyCurve& c);
 
 /// A polyline within `tolerance` of the curve, from its start to its end (algo/flatten).
+/// Refused with InvalidArgument("tolerance", ...) when it would need more than about
+/// max_flatten_vertices vertices.
 [[nodiscard]] PointList flatten(const AnyCurve& c, double tolerance);
 
 /// The curve as a path of bezier / rational_bezier segments with the same parametrisation.
