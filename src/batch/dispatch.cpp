@@ -158,6 +158,10 @@ void evaluate_soa(const long double* c, int degree, int dims, const long double*
                   bool stream) {
   soa(c, degree, dims, ts, m, out, stream);
 }
+bool all_finite(const float* ts, std::size_t m) { return ops<float>().all_finite(ts, m); }
+bool all_finite(const double* ts, std::size_t m) { return ops<double>().all_finite(ts, m); }
+bool all_finite(const long double* ts, std::size_t m) { return ops<long double>().all_finite(ts, m); }
+
 void store_fence() {
 #if CASTELJAU_KERNELS_X86
   _mm_sfence();

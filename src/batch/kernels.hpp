@@ -29,6 +29,8 @@ struct Ops {
   /// out[d][0..m) = coordinate d at ts[0..m); non-temporal stores when `stream` and the
   /// kernel can (x86, float and double; the caller fences).
   void (*soa)(const Plan<T>& p, const T* ts, std::size_t m, T* const* out, bool stream);
+  /// Whether every ts[j], j < m, is finite.
+  bool (*all_finite)(const T* ts, std::size_t m);
 };
 
 struct Table {

@@ -20,8 +20,10 @@ inline constexpr std::size_t block = 64;
 ///   s = t/(1-t) (t < 1/2) or (1-t)/t on the coefficients C(n, j) P_j, times (1-t)^n or
 ///   t^n, with the roundings of 1 - t, of s and of the power corrected to second order:
 ///   O(n) per parameter (2n multiply-adds per coordinate), error measured at most
-///   6.2e-16 on unit-box data at degrees 4..60 (tests/reference, docs/accuracy.md), below
-///   de Casteljau's;
+///   6.2e-16 on unit-box data at degrees 4..60 (tests/reference), below de Casteljau's.
+///   The corrections use error-free products (Dekker 1971; a fused multiply-add where
+///   the instruction set has one) and apply the rest of s through the derivative, as
+///   compensated Horner schemes do (Graillat, Langlois, Louvet 2009);
 /// - above that degree, and in blocks with a parameter outside [0, 1]: de Casteljau
 ///   across the parameters of a block, O(n^2) per parameter.
 /// The binomials are exact in 64-bit integers up to degree 62, hence the limit.
@@ -37,6 +39,11 @@ void evaluate_soa(const float* c, int degree, int dims, const float* ts, std::si
 void evaluate_soa(const double* c, int degree, int dims, const double* ts, std::size_t m, double* const* out, bool stream);
 void evaluate_soa(const long double* c, int degree, int dims, const long double* ts, std::size_t m, long double* const* out,
                   bool stream);
+
+/// Whether every ts[j], j < m, is finite (vectorised: the check runs on every batch call).
+bool all_finite(const float* ts, std::size_t m);
+bool all_finite(const double* ts, std::size_t m);
+bool all_finite(const long double* ts, std::size_t m);
 
 /// Orders the non-temporal stores of evaluate_soa before later stores (sfence on x86).
 void store_fence();
