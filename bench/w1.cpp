@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstring>
 #include <span>
+#include <string>
 #include <vector>
 
 #if defined(__AVX2__) || defined(__AVX512F__)
@@ -136,6 +137,18 @@ void casteljau_batch_soa(benchmark::State& state, casteljau::Store store) {
     benchmark::ClobberMemory();
   }
   finish(state, w.diff_soa());
+}
+
+/// batch_soa with the kernels of one instruction set forced (the generic build chooses the
+/// best at run time; these rows show what each would give), then the choice restored.
+void casteljau_batch_soa_isa(benchmark::State& state, casteljau::batch::Isa isa) {
+  const casteljau::batch::Isa best = casteljau::batch::active_isa();
+  if (!casteljau::batch::select_isa(isa)) {
+    state.SkipWithError("instruction set not available");
+    return;
+  }
+  casteljau_batch_soa(state, casteljau::Store::automatic);
+  casteljau::batch::select_isa(best);
 }
 
 void casteljau_batch_aos(benchmark::State& state) {
@@ -435,6 +448,15 @@ int register_all() {
   benchmark::RegisterBenchmark("W1/casteljau/per_curve_soa_streaming", casteljau_per_curve_soa, casteljau::Store::streaming)
       ->Unit(benchmark::kMillisecond)
       ->UseRealTime();
+  // In the generic build (several kernel sets): each set the CPU runs, forced.
+  for (const auto isa : {casteljau::batch::Isa::baseline, casteljau::batch::Isa::avx2, casteljau::batch::Isa::avx512}) {
+    if (casteljau::batch::isa_available(isa) && casteljau::batch::isa_available(casteljau::batch::Isa::avx2)) {
+      benchmark::RegisterBenchmark((std::string("W1/casteljau/batch_soa_") + casteljau::batch::isa_name(isa)).c_str(),
+                                   casteljau_batch_soa_isa, isa)
+          ->Unit(benchmark::kMillisecond)
+          ->UseRealTime();
+    }
+  }
   reg("W1/casteljau/batch_aos", casteljau_batch_aos);
   reg("W1/casteljau/scalar_de_casteljau", casteljau_scalar);
   reg("W1/plain/horner_soa", plain_horner_soa);

@@ -151,7 +151,8 @@ void register_all() {
     for (const auto& P : s.in.P) curves->emplace_back(P);
 
     reg("W2/casteljau/fast_path/" + n, s, [curves, &ts](std::size_t c, double* o) {
-      // the batch API into SoA scratch, then interleaved for the common error check
+      // the batch API into SoA scratch, then interleaved for the common error check (the
+      // interleave is timed too, as in every row: each writes 1000 x 2 values per curve)
       thread_local std::vector<double> x, y;
       x.resize(ts.size());
       y.resize(ts.size());
@@ -161,6 +162,24 @@ void register_all() {
         o[2 * j + 1] = y[j];
       }
     });
+    // The same with the kernels of each other instruction set this CPU runs, forced (the
+    // row above takes the best, chosen at run time).
+    for (const auto isa : {casteljau::batch::Isa::baseline, casteljau::batch::Isa::avx2}) {
+      if (!casteljau::batch::isa_available(isa) || isa == casteljau::batch::active_isa()) continue;
+      reg(std::string("W2/casteljau/fast_path_") + casteljau::batch::isa_name(isa) + "/" + n, s, [curves, &ts, isa](std::size_t c, double* o) {
+        thread_local std::vector<double> x, y;
+        x.resize(ts.size());
+        y.resize(ts.size());
+        const casteljau::batch::Isa best = casteljau::batch::active_isa();
+        casteljau::batch::select_isa(isa);
+        casteljau::evaluate((*curves)[c], std::span<const double>(ts), std::array<std::span<double>, 2>{std::span(x), std::span(y)});
+        casteljau::batch::select_isa(best);
+        for (std::size_t j = 0; j < ts.size(); ++j) {
+          o[2 * j] = x[j];
+          o[2 * j + 1] = y[j];
+        }
+      });
+    }
     reg("W2/casteljau/scalar_de_casteljau/" + n, s, [curves, &ts](std::size_t c, double* o) {
       for (std::size_t j = 0; j < ts.size(); ++j) {
         const P2 p = (*curves)[c](ts[j]);
