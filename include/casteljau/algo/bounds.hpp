@@ -45,7 +45,7 @@ void add_extremes(Box<T, D>& b, int k, const std::vector<T>& rs, const std::vect
 /// Cost per coordinate: the root isolation (O(n^2) per subdivision step, O(n) per solve
 /// step past degree 32) plus O(n) per extremum to estimate its value and O(n^2) for the
 /// one or two that can be the min or max (detail::add_extremes). Measured on random
-/// curves: 0.3 ms at degree 125, 0.06 s at degree 1000 (docs/accuracy.md). See
+/// curves: 0.5 ms at degree 125, 0.07 s at degree 1000 (docs/accuracy.md). See
 /// control_bounds() for the cheap conservative box. Throws NumericalError if a root
 /// solve does not converge.
 template <class T, int D>
@@ -86,7 +86,7 @@ Box<T, D> bounds(const Bezier<T, D>& c) {
 /// free Bernstein products (degree 1000 and more). Candidates are estimated in O(n) as
 /// A_k / W and only the possible extremes evaluated by the rational de Casteljau
 /// algorithm (see detail::add_extremes). Cost O(D n^2) for the products plus the root
-/// finding on degree 2n - 1; measured on random curves: 2 ms at degree 125, 0.3 s at
+/// finding on degree 2n - 1; measured on random curves: 3 ms at degree 125, 0.4 s at
 /// degree 1000. Throws NumericalError if a root solve does not converge.
 template <class T, int D>
 Box<T, D> bounds(const RationalBezier<T, D>& c) {
