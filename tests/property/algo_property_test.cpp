@@ -32,6 +32,28 @@ RC_GTEST_PROP(AlgoProperty, FlattenWithinTolerance, ()) {
   for (int i = 0; i <= 1000; ++i) RC_ASSERT(test::polyline_distance(r(i / 1000.0), rp) <= tol);
 }
 
+// Scaling a curve and its tolerance by 2^k scales the polyline by exactly 2^k with the
+// same vertices (flatten works on a power-of-two-normalised copy), for k from tiny to
+// huge coordinates; the coordinates stay normal numbers (|x| >= 2^-1022) unless 0, since
+// the generator's nonzero coordinates are far above 2^-120.
+RC_GTEST_PROP(AlgoProperty, FlattenScalesExactlyByPowersOfTwo, ()) {
+  const int n = *rc::gen::inRange(1, 9);
+  const auto P = prop::control_points<2>(n);
+  const int k = *rc::gen::inRange(-900, 900);
+  const double tol = std::pow(10.0, -*rc::gen::inRange(1, 5));
+  std::vector<P2> Q(P.size());
+  for (std::size_t i = 0; i < P.size(); ++i) Q[i] = P2(std::ldexp(P[i][0], k), std::ldexp(P[i][1], k));
+  const auto a = flatten(Bezier<double, 2>(P), tol), b = flatten(Bezier<double, 2>(Q), std::ldexp(tol, k));
+  RC_ASSERT(a.size() == b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    RC_ASSERT(b[i][0] == std::ldexp(a[i][0], k));
+    RC_ASSERT(b[i][1] == std::ldexp(a[i][1], k));
+  }
+  const auto w = prop::weights(n);
+  const auto ra = flatten(RationalBezier<double, 2>(P, w), tol), rb = flatten(RationalBezier<double, 2>(Q, w), std::ldexp(tol, k));
+  RC_ASSERT(ra.size() == rb.size());
+}
+
 // cr_join_points for random degrees, interval lengths and orders: the joined path is C^r
 // at the joint. Derivative k (w.r.t. the path parameter) has size up to
 // D_max = max_k |c^(k)| / h^k; the construction's rounding is relative to it, so the

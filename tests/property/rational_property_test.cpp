@@ -55,6 +55,21 @@ RC_GTEST_PROP(RationalProperty, UnitWeightsEqualBezier, ()) {
   RC_ASSERT(diff(r.derivative_at(t), b.derivative_at(t)) <= 8.0 * n * n * eps);
 }
 
+// Elevation by r at once equals r single elevations: both are the unique degree-(n + r)
+// form of the curve. Each single step is a convex combination (error a few eps of the
+// control points' size <= 1), the direct one too: 16 (n + r) eps covers both.
+RC_GTEST_PROP(RationalProperty, ElevateAtOnceEqualsStepwise, ()) {
+  const int n = *rc::gen::inRange(1, 11), r = *rc::gen::inRange(1, 41);
+  const auto c = random_rational<2>(n);
+  const auto once = c.elevate(r);
+  auto steps = c;
+  for (int i = 0; i < r; ++i) steps = steps.elevate(1);
+  RC_ASSERT(once.degree() == n + r);
+  const double t = *prop::parameter();
+  RC_ASSERT(diff(once(t), steps(t)) <= 16.0 * (n + r) * eps);
+  RC_ASSERT(diff(once(t), c(t)) <= 16.0 * (n + r) * eps);
+}
+
 // Split: left(s) = r(s t), right(s) = r(t + s(1 - t)); three evaluations' worth plus the
 // parameter rounding (|r'| <= 2n * 16 for weights within a factor 16): 16 n eps * 4.
 RC_GTEST_PROP(RationalProperty, SplitReproducesCurve, ()) {

@@ -345,6 +345,14 @@ TEST(Honesty, BasisKernelsCheckPreconditions) {
   EXPECT_INVALID_ARGUMENT_AT((blossom<double, double>(c, u)), "u", "2 parameters");
 }
 
+// Binomials that do not fit a double are reported, never returned as infinity (C(1029,
+// 514) ~ 1.4e308 is the last middle entry that fits).
+TEST(Honesty, BinomialOverflowIsReported) {
+  EXPECT_TRUE(std::isfinite(binomial<double>(1029, 514)));
+  EXPECT_INVALID_ARGUMENT_AT(binomial<double>(2000, 1000), "n", "exceeds the floating point range");
+  EXPECT_INVALID_ARGUMENT_AT(binomial_row<double>(1100), "n", "C(1100, 550) exceeds the floating point range");
+}
+
 // bernstein_all is O(n) without overflow at any degree: the values at degree 2000 sum to
 // 1 (partition of unity; relative error ~4n eps per value).
 TEST(Honesty, BernsteinAllHighDegree) {

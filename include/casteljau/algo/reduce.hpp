@@ -56,6 +56,11 @@ Reduction<T, D> reduce_degree(const Bezier<T, D>& c, int m, Endpoints endpoints 
   if (endpoints == Endpoints::keep && m < 1) {
     throw InvalidArgument("degree", "keeping both end points needs target degree >= 1, got " + std::to_string(m));
   }
+  // The Gram entries use binomial rows up to C(m + n, .), which overflow a double past
+  // m + n = 1029; the least-squares solve is unreliable far earlier (see above).
+  if (n > 1000) {
+    throw InvalidArgument("curve", "degree reduction needs a curve of degree <= 1000, got degree " + std::to_string(n));
+  }
   const auto cm = binomial_row<T>(m), cn = binomial_row<T>(n), c2m = binomial_row<T>(2 * m),
              cmn = binomial_row<T>(m + n);
   // int B(j,m) B(k,m) dt = C(m,j) C(m,k) / (C(2m, j+k) (2m+1)); likewise for (m, n).

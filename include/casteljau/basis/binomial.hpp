@@ -2,6 +2,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <span>
 #include <string>
@@ -11,22 +12,10 @@
 
 namespace casteljau {
 
-/// Row n of Pascal's triangle, C(n, 0..n), built by additions [Farin02, 4.1]. Every entry
-/// is exact in double while it is below 2^53, which holds for all k when n <= 56; past
-/// that each entry carries a relative error of at most about n * epsilon. Cost O(n^2).
-template <class T>
-std::vector<T> binomial_row(int n) {
-  if (n < 0) throw InvalidArgument("n", "binomial row index must be >= 0, got " + std::to_string(n));
-  std::vector<T> row(static_cast<std::size_t>(n) + 1, T(0));
-  row[0] = 1;
-  for (int i = 1; i <= n; ++i) {
-    for (int k = i; k > 0; --k) row[static_cast<std::size_t>(k)] += row[static_cast<std::size_t>(k - 1)];
-  }
-  return row;
-}
-
 /// C(n, k) for 0 <= k <= n (0 otherwise), by the multiplicative formula with exact
-/// integer steps while they fit in 64 bits (n <= 62), else in floating point.
+/// integer steps while they fit in 64 bits (n <= 62), else in floating point (relative
+/// error about 2k eps). Throws InvalidArgument("n", ...) when C(n, k) overflows T, never
+/// returns infinity.
 template <class T>
 T binomial(int n, int k) {
   if (k < 0 || k > n) return T(0);
@@ -44,8 +33,31 @@ T binomial(int n, int k) {
     return static_cast<T>(r);
   }
   T r = 1;
-  for (int i = 1; i <= k; ++i) r = r * static_cast<T>(n - k + i) / static_cast<T>(i);
+  // r times the ratio (n-k+i)/i, not r (n-k+i) / i: the product alone would overflow
+  // before the division for results near the largest double (C(1029, 514) ~ 1.4e308).
+  for (int i = 1; i <= k; ++i) r *= static_cast<T>(n - k + i) / static_cast<T>(i);
+  if (!std::isfinite(r)) {
+    throw InvalidArgument("n", "binomial coefficient C(" + std::to_string(n) + ", " + std::to_string(k) +
+                                   ") exceeds the floating point range");
+  }
   return r;
+}
+
+/// Row n of Pascal's triangle, C(n, 0..n), built by additions [Farin02, 4.1]. Every entry
+/// is exact in double while it is below 2^53, which holds for all k when n <= 56; past
+/// that each entry carries a relative error of at most about n * epsilon. Throws
+/// InvalidArgument("n", ...) for n < 0 and when the middle entry overflows T (n > 1029
+/// in double): use detail::hypergeometric_row for ratios of binomials. Cost O(n^2).
+template <class T>
+std::vector<T> binomial_row(int n) {
+  if (n < 0) throw InvalidArgument("n", "binomial row index must be >= 0, got " + std::to_string(n));
+  (void)binomial<T>(n, n / 2);  // the largest entry: throws InvalidArgument("n", ...) if it overflows
+  std::vector<T> row(static_cast<std::size_t>(n) + 1, T(0));
+  row[0] = 1;
+  for (int i = 1; i <= n; ++i) {
+    for (int k = i; k > 0; --k) row[static_cast<std::size_t>(k)] += row[static_cast<std::size_t>(k - 1)];
+  }
+  return row;
 }
 
 namespace detail {

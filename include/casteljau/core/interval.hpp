@@ -23,6 +23,9 @@ struct Interval {
   /// [0, 0].
   constexpr Interval() = default;
   constexpr Interval(T lo_, T hi_) : lo(lo_), hi(hi_) {
+    // One comparison pair on the fast path: lo <= hi with a finite difference implies
+    // both ends finite; anything else (including a merely huge finite length) is sorted
+    // out by check().
     if (!(lo_ <= hi_) || !(hi_ - lo_ < std::numeric_limits<T>::infinity())) check(lo_, hi_);
   }
 
@@ -30,7 +33,8 @@ struct Interval {
   [[nodiscard]] constexpr bool contains(T x) const { return lo <= x && x <= hi; }
   /// The parameter lo + s (hi - lo) of the fraction s.
   [[nodiscard]] constexpr T at(T s) const { return lerp(lo, hi, s); }
-  /// The fraction s with at(s) == x.
+  /// The fraction s with at(s) == x. Precondition: length() > 0 (a one-point interval
+  /// has no fractions; the result would not be finite).
   [[nodiscard]] constexpr T fraction(T x) const { return (x - lo) / (hi - lo); }
   friend constexpr bool operator==(const Interval&, const Interval&) = default;
   /// Prints "[0, 1]" (shortest round-trip numbers).
@@ -39,8 +43,8 @@ struct Interval {
   }
 
  private:
-  // Out of line of the fast path: reached only for a violated invariant (or a length
-  // that overflows, which is checked here and allowed).
+  // Off the fast path: reached for a violated invariant, or for finite ends whose
+  // difference overflows (allowed).
   static void check(T a, T b) {
     require_finite(a, "interval.lo");
     require_finite(b, "interval.hi");
