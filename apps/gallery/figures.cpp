@@ -963,7 +963,7 @@ Figure degree_reduction() {
     doc.text({660, y}, std::to_string(targets[k]), small(12, Anchor::start, "#222"));
     doc.text({800, y}, plain(red[k].max_error, 4), small(12, Anchor::end, "#222"));
   }
-  std::string cap = "<code>reduce(m)</code> finds the degree-m curve closest to a degree-7 curve in the L<sup>2</sup> "
+  std::string cap = "<code>reduce_degree(c, m)</code> finds the degree-m curve closest to a degree-7 curve in the L<sup>2</sup> "
                     "sense with the end points kept. The error it reports (max distance sampled, and a guaranteed bound "
                     "from elevating back): ";
   for (std::size_t k = 0; k < red.size(); ++k) {

@@ -172,7 +172,13 @@ AnyCurve elevate(const AnyCurve& c, int times) {
             throw InvalidArgument("times", "elevating degree " + std::to_string(x.degree()) + " by " + std::to_string(times) +
                                                " exceeds the highest supported degree " + std::to_string(max_degree));
           }
-          return AnyCurve(x.elevate(times));
+          try {
+            return AnyCurve(x.elevate(times));
+          } catch (const InvalidArgument& e) {
+            // The library names the count r; the request calls it times.
+            if (e.where() == "r") throw InvalidArgument("times", e.problem());
+            throw;
+          }
         } else {
           throw InvalidArgument("curve.type", "elevate needs a bezier or rational_bezier curve, got a " + std::string(type_name(c)));
         }

@@ -62,7 +62,7 @@ TEST(Errors, BezierEntries) {
   EXPECT_INVALID_ARGUMENT(c.split(nan), "t", "finite");
   EXPECT_INVALID_ARGUMENT(c.portion(nan, 1), "a", "finite");
   EXPECT_INVALID_ARGUMENT(c.portion(0, -inf), "b", "finite");
-  EXPECT_INVALID_ARGUMENT(c.elevate(-1), "times", ">= 0");
+  EXPECT_INVALID_ARGUMENT(c.elevate(-1), "r", ">= 0");
   EXPECT_INVALID_ARGUMENT(reduce_degree(c, 3), "degree", "[0, 2]");
   EXPECT_INVALID_ARGUMENT(reduce_degree(c, -1, Endpoints::free), "degree", "[0, 2]");
   EXPECT_INVALID_ARGUMENT(reduce_degree(c, 0, Endpoints::keep), "degree", ">= 1");
@@ -98,7 +98,7 @@ TEST(Errors, RationalEntries) {
   EXPECT_INVALID_ARGUMENT(q.split(2.0), "t", "[0, 1]");
   EXPECT_INVALID_ARGUMENT(q.split(nan), "t", "finite");
   EXPECT_INVALID_ARGUMENT(q.portion(0, nan), "b", "finite");
-  EXPECT_INVALID_ARGUMENT(q.elevate(-2), "times", ">= 0");
+  EXPECT_INVALID_ARGUMENT(q.elevate(-2), "r", ">= 0");
   // The extension of a rational curve past a pole has a non-positive weight.
   const R2 r({{0, 0}, {1, 1}, {2, 0}}, {1, 4, 1});  // w(t) = 1 + 6t - 6t^2 vanishes near -0.16
   EXPECT_INVALID_ARGUMENT(r.portion(-1, 1), "weights[0]", "> 0");

@@ -401,4 +401,23 @@ TEST(Printing, ShortestRoundTrip) {
 }
 
 }  // namespace
+// Batch evaluation agrees with c(t) outside [0, 1] too: the kernels' plain de Casteljau
+// would overflow there (3t at t = 1e200 gave NaN); such parameters go through c(t),
+// which is exact for this curve (3t: all Taylor terms beyond the first vanish) or
+// throws naming t[j].
+TEST(BatchExtrapolation, FarOutsideTheDomainMatchesScalarEvaluation) {
+  const Bezier<double, 1> c({Point<double, 1>(0.0), Point<double, 1>(1.0), Point<double, 1>(2.0), Point<double, 1>(3.0)});
+  const std::vector<double> ts{0.5, 1e103, -1e200, 2.0, 1e300};
+  std::vector<double> x(ts.size());
+  evaluate(c, std::span<const double>(ts), std::array<std::span<double>, 1>{std::span<double>(x)});
+  EXPECT_EQ(x, (std::vector<double>{1.5, 3e103, -3e200, 6.0, 3e300}));
+  std::vector<Point<double, 1>> aos(ts.size());
+  evaluate(c, std::span<const double>(ts), std::span<Point<double, 1>>(aos));
+  for (std::size_t j = 0; j < ts.size(); ++j) EXPECT_EQ(aos[j][0], x[j]);
+  const std::vector<double> over{0.25, 1e308};
+  std::vector<double> y(2);
+  EXPECT_INVALID_ARGUMENT(evaluate(c, std::span<const double>(over), std::array<std::span<double>, 1>{std::span<double>(y)}), "t[1]",
+                          "not representable");
+}
+
 }  // namespace casteljau

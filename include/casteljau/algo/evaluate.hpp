@@ -83,12 +83,40 @@ void require_finite_params(std::span<const T> ts) {
     if (!std::isfinite(ts[j])) require_finite(ts[j], "t[" + std::to_string(j) + "]");
 }
 
+/// The indices j with ts[j] outside [0, 1]. There the kernels' de Casteljau (or power
+/// form) extrapolates without the scaling of Bezier::operator() and can overflow to NaN
+/// far out (3t at t = 1e200); those points are recomputed by c(t), which is exact there
+/// or throws when the value is not representable. One scan of the parameters per call.
+template <class T>
+std::vector<std::size_t> outside_unit_interval(std::span<const T> ts) {
+  std::vector<std::size_t> idx;
+  for (std::size_t j = 0; j < ts.size(); ++j) {
+    if (!(ts[j] >= 0 && ts[j] <= 1)) idx.push_back(j);
+  }
+  return idx;
+}
+
+/// Rewrites the points of curve c at the parameters `outside` through c(t), naming t[j]
+/// in an error.
+template <class T, int D, class Write>
+void extrapolate_exactly(const Bezier<T, D>& c, std::span<const T> ts, const std::vector<std::size_t>& outside, Write&& write) {
+  for (const std::size_t j : outside) {
+    try {
+      write(j, c(ts[j]));
+    } catch (const InvalidArgument& e) {
+      throw InvalidArgument("t[" + std::to_string(j) + "]", e.problem());
+    }
+  }
+}
+
 }  // namespace detail
 
 /// Evaluates c at every ts[j] into out[d][j] (structure of arrays: one span per
 /// coordinate, each of ts.size() values). Same results as c(t) up to the fast path's
-/// accuracy (basis/batch.hpp: within a few eps of max |P| for t in [0, 1]). Throws
-/// InvalidArgument for a non-finite parameter or a wrongly sized output span. Cost O(n)
+/// accuracy (basis/batch.hpp: within a few eps of max |P| for t in [0, 1]); parameters
+/// outside [0, 1] are evaluated as c(t) does (exact extrapolation, or InvalidArgument
+/// naming t[j] when the value is not representable). Throws InvalidArgument for a
+/// non-finite parameter or a wrongly sized output span. Cost O(n)
 /// per parameter up to batch::bernstein_horner_max_degree and for t in [0, 1], O(n^2)
 /// otherwise. float, double and long double run the compiled kernels
 /// (casteljau::kernels, chosen for the CPU at run time); other scalar types call c(t).
@@ -108,6 +136,9 @@ void evaluate(const Bezier<T, D>& c, std::span<const T> ts, std::array<std::span
     const detail::PackedPoints<T, D> P(c);
     batch::evaluate_soa(P.data(), c.degree(), D, ts.data(), ts.size(), ptr.data(), stream);
     if (stream) batch::store_fence();
+    detail::extrapolate_exactly(c, ts, detail::outside_unit_interval(ts), [&](std::size_t j, const Point<T, D>& p) {
+      for (int d = 0; d < D; ++d) ptr[static_cast<std::size_t>(d)][j] = p[d];
+    });
   } else {
     for (std::size_t j = 0; j < ts.size(); ++j) {
       const auto p = c(ts[j]);
@@ -130,12 +161,17 @@ void evaluate(std::span<const Bezier<T, D>> curves, std::span<const T> ts, std::
     }
   }
   const bool stream = detail::use_streaming(store, total * D * sizeof(T));
+  std::vector<std::size_t> outside;
+  if constexpr (detail::has_kernels<T>) outside = detail::outside_unit_interval(ts);
   for (std::size_t i = 0; i < curves.size(); ++i) {
     std::array<T*, std::size_t(D)> ptr;
     for (int d = 0; d < D; ++d) ptr[static_cast<std::size_t>(d)] = out[static_cast<std::size_t>(d)].data() + i * ts.size();
     if constexpr (detail::has_kernels<T>) {
       const detail::PackedPoints<T, D> P(curves[i]);
       batch::evaluate_soa(P.data(), curves[i].degree(), D, ts.data(), ts.size(), ptr.data(), stream);
+      detail::extrapolate_exactly(curves[i], ts, outside, [&](std::size_t j, const Point<T, D>& p) {
+        for (int d = 0; d < D; ++d) ptr[static_cast<std::size_t>(d)][j] = p[d];
+      });
     } else {
       for (std::size_t j = 0; j < ts.size(); ++j) {
         const auto p = curves[i](ts[j]);
@@ -170,6 +206,7 @@ void evaluate(const Bezier<T, D>& c, std::span<const T> ts, std::span<Point<T, D
       for (std::size_t l = 0; l < k; ++l)
         for (int d = 0; d < D; ++d) out[off + l][d] = buf[static_cast<std::size_t>(d)][l];
     }
+    detail::extrapolate_exactly(c, ts, detail::outside_unit_interval(ts), [&](std::size_t j, const Point<T, D>& p) { out[j] = p; });
   } else {
     for (std::size_t j = 0; j < ts.size(); ++j) out[j] = c(ts[j]);
   }

@@ -174,7 +174,7 @@ class Bezier {
   /// degree. Written as P_lo + sum h_ij (P_j - P_lo): exact for a constant curve. Error
   /// about (2 min(n, r) + 4) eps of the control polygon's extent. Cost O((n + r) min(n, r)).
   [[nodiscard]] Bezier elevate(int r = 1) const {
-    if (r < 0) throw InvalidArgument("times", "degree elevation count must be >= 0, got " + std::to_string(r));
+    if (r < 0) throw InvalidArgument("r", "degree elevation count must be >= 0, got " + std::to_string(r));
     if (r == 0) return *this;
     const int n = degree();
     std::vector<PointType> Q(P_.size() + static_cast<std::size_t>(r));
@@ -187,7 +187,7 @@ class Bezier {
       for (int j = lo + 1; j <= hi; ++j) s += h[static_cast<std::size_t>(j - lo)] * (P_[static_cast<std::size_t>(j)] - base);
       Q[static_cast<std::size_t>(i)] = base + s;
     }
-    return checked(std::move(Q), "times", "the elevated curve");
+    return checked(std::move(Q), "r", "the elevated curve");
   }
 
   /// Power-basis coefficients a_0..a_n with P(t) = sum_j a_j t^j: a = M P. Exact

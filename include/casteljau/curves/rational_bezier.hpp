@@ -210,7 +210,7 @@ class RationalBezier {
   /// spanning 1e-8..1e8 elevated by 300 at once the curve moves by about 1e-15 relative
   /// (measured in tests/unit/robustness_test.cpp). Cost O((n + r) min(n, r)).
   [[nodiscard]] RationalBezier elevate(int r = 1) const {
-    if (r < 0) throw InvalidArgument("times", "degree elevation count must be >= 0, got " + std::to_string(r));
+    if (r < 0) throw InvalidArgument("r", "degree elevation count must be >= 0, got " + std::to_string(r));
     if (r == 0) return *this;
     const int n = degree();
     std::vector<PointType> Q(P_.size() + static_cast<std::size_t>(r));
@@ -231,7 +231,7 @@ class RationalBezier {
       Q[static_cast<std::size_t>(i)] = base + sum;
       W[static_cast<std::size_t>(i)] = wi;
     }
-    return finish(std::move(Q), std::move(W), "times", "the elevated curve");
+    return finish(std::move(Q), std::move(W), "r", "the elevated curve");
   }
 
   [[nodiscard]] RationalBezier reverse() const {
