@@ -1,6 +1,8 @@
 // Affine maps x -> A x + b of D-space, applied to points (A x + b) and vectors (A x).
 #pragma once
 
+#include <vector>
+
 #include <array>
 
 #include "casteljau/core/point.hpp"
@@ -53,6 +55,16 @@ struct Affine {
     return r;
   }
 };
+
+/// The points mapped by m: the control points of every curve type's transform() (affine
+/// invariance).
+template <class T, int D>
+std::vector<Point<T, D>> mapped_points(const Affine<T, D>& m, const std::vector<Point<T, D>>& P) {
+  std::vector<Point<T, D>> Q;
+  Q.reserve(P.size());
+  for (const auto& p : P) Q.push_back(m(p));
+  return Q;
+}
 
 /// Rotation of the plane by `angle` radians counter-clockwise about the origin.
 template <class T>

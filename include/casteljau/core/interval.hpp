@@ -110,4 +110,12 @@ struct Box {
   }
 };
 
+/// The box of a set of points (empty for none): the control box of every curve type.
+template <class T, int D, class Points>
+Box<T, D> box_of(const Points& points) {
+  Box<T, D> b = Box<T, D>::empty_box();
+  for (const auto& p : points) b.add(p);
+  return b;
+}
+
 }  // namespace casteljau

@@ -162,8 +162,7 @@ class Bezier {
   /// The image under an affine map: by affine invariance, the curve of the mapped control
   /// points is the mapped curve (exactly, up to rounding).
   [[nodiscard]] Bezier transform(const Affine<T, D>& m) const {
-    std::vector<PointType> Q(P_.size());
-    std::transform(P_.begin(), P_.end(), Q.begin(), [&](const PointType& p) { return m(p); });
+    std::vector<PointType> Q = mapped_points(m, P_);
     return checked(std::move(Q), "m", "the transformed curve");
   }
 
@@ -207,11 +206,7 @@ class Bezier {
 
   /// The box of the control points: contains the curve on [0, 1] (convex hull property),
   /// not tight in general; see bounds() in algo/bounds.hpp for the tight box.
-  [[nodiscard]] Box<T, D> control_bounds() const {
-    Box<T, D> b = Box<T, D>::empty_box();
-    for (const auto& p : P_) b.add(p);
-    return b;
-  }
+  [[nodiscard]] Box<T, D> control_bounds() const { return box_of<T, D>(P_); }
 
   friend bool operator==(const Bezier&, const Bezier&) = default;
 

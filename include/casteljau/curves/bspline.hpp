@@ -1,6 +1,6 @@
 // B-spline and NURBS curves of any degree p >= 1 and dimension: evaluation by de Boor's
 // algorithm, derivatives from the basis-function derivatives, and the exact Bézier pieces
-// by blossoming [PT97, chapters 2-4; Ramshaw89].
+// by blossoming [PT97, chapters 2-4; Ramshaw87].
 #pragma once
 
 #include <algorithm>
@@ -17,7 +17,7 @@ namespace casteljau {
 namespace detail {
 
 /// The blossom of span s of the B-spline (U, p, P) at the p arguments u[0..p-1] by de
-/// Boor's recurrence with one argument per level [Ramshaw89; PT97, A3.1 for equal
+/// Boor's recurrence with one argument per level [Ramshaw87; PT97, A3.1 for equal
 /// arguments]: d_j = P_{s-p+j}; at level r, d_j = lerp(d_{j-1}, d_j, (u_r - U_i) /
 /// (U_{i+p+1-r} - U_i)), i = s - p + j. Symmetric in its arguments; equal arguments u
 /// give the curve point. Every denominator is a knot difference >= U_{s+1} - U_s > 0.
@@ -38,7 +38,7 @@ V de_boor_blossom(std::span<const T> U, int p, std::size_t s, std::span<const V>
 }
 
 /// The Bézier control points of span s: the blossom at (a^(p-j), b^j), j = 0..p, with
-/// [a, b] = [U_s, U_{s+1}] [Ramshaw89; Farin02, 8.4]. Exact up to rounding: the piece is
+/// [a, b] = [U_s, U_{s+1}] [Ramshaw87; Farin02, 8.4]. Exact up to rounding: the piece is
 /// the same polynomial.
 template <class V, class T>
 std::vector<V> span_bezier_points(std::span<const T> U, int p, std::size_t s, std::span<const V> P) {
@@ -154,17 +154,12 @@ class BSpline {
 
   /// The image under an affine map (affine invariance: map the control points).
   [[nodiscard]] BSpline transform(const Affine<T, D>& m) const {
-    std::vector<PointType> Q(P_.size());
-    std::transform(P_.begin(), P_.end(), Q.begin(), [&](const PointType& q) { return m(q); });
+    std::vector<PointType> Q = mapped_points(m, P_);
     return BSpline(p_, U_, std::move(Q));
   }
 
   /// The box of the control points: contains the curve over its domain.
-  [[nodiscard]] Box<T, D> control_bounds() const {
-    Box<T, D> b = Box<T, D>::empty_box();
-    for (const auto& q : P_) b.add(q);
-    return b;
-  }
+  [[nodiscard]] Box<T, D> control_bounds() const { return box_of<T, D>(P_); }
 
   friend bool operator==(const BSpline&, const BSpline&) = default;
 
@@ -229,22 +224,12 @@ class Nurbs {
   [[nodiscard]] VectorType derivative_at(T u, int k = 1) const {
     require_finite(u, "t");
     if (k < 0) throw InvalidArgument("k", "derivative order must be >= 0, got " + std::to_string(k));
-    std::vector<Vector<T, D + 1>> hd(static_cast<std::size_t>(k) + 1);
-    for (int j = 0; j <= k; ++j) hd[static_cast<std::size_t>(j)] = h_.derivative_at(u, j);
-    const T w = hd[0][D];
+    std::vector<Point<T, D + 1>> hd(static_cast<std::size_t>(k) + 1);
+    for (int j = 0; j <= k; ++j) hd[static_cast<std::size_t>(j)] = Point<T, D + 1>::from_vector(h_.derivative_at(u, j));
+    project(hd[0].to_vector(), u);  // the pole check
     std::vector<VectorType> r(static_cast<std::size_t>(k) + 1);
-    r[0] = project(hd[0], u).to_vector();
-    for (int j = 1; j <= k; ++j) {
-      VectorType a;
-      for (int d = 0; d < D; ++d) a[d] = hd[static_cast<std::size_t>(j)][d];
-      T binom = 1;  // C(j, i), built up along i
-      for (int i = 1; i <= j; ++i) {
-        binom = binom * static_cast<T>(j - i + 1) / static_cast<T>(i);
-        a -= (binom * hd[static_cast<std::size_t>(i)][D]) * r[static_cast<std::size_t>(j - i)];
-      }
-      r[static_cast<std::size_t>(j)] = a / w;
-      detail::require_representable(r[static_cast<std::size_t>(j)], static_cast<double>(u), "the derivative");
-    }
+    detail::quotient_rule<T, D>(hd, k, r.data());
+    detail::require_representable(r[static_cast<std::size_t>(k)], static_cast<double>(u), "the derivative");
     return r[static_cast<std::size_t>(k)];
   }
 
@@ -255,17 +240,12 @@ class Nurbs {
 
   /// Affine maps act on the Cartesian control points; weights are unchanged.
   [[nodiscard]] Nurbs transform(const Affine<T, D>& m) const {
-    std::vector<PointType> Q(P_.size());
-    std::transform(P_.begin(), P_.end(), Q.begin(), [&](const PointType& q) { return m(q); });
+    std::vector<PointType> Q = mapped_points(m, P_);
     return Nurbs(degree(), knots(), std::move(Q), w_);
   }
 
   /// The box of the control points: contains the curve over its domain (weights > 0).
-  [[nodiscard]] Box<T, D> control_bounds() const {
-    Box<T, D> b = Box<T, D>::empty_box();
-    for (const auto& q : P_) b.add(q);
-    return b;
-  }
+  [[nodiscard]] Box<T, D> control_bounds() const { return box_of<T, D>(P_); }
 
   friend bool operator==(const Nurbs& a, const Nurbs& b) { return a.P_ == b.P_ && a.w_ == b.w_ && a.knots() == b.knots() && a.degree() == b.degree(); }
 

@@ -75,17 +75,12 @@ class Polyline {
 
   /// The image under an affine map (the polyline through the mapped points).
   [[nodiscard]] Polyline transform(const Affine<T, D>& m) const {
-    std::vector<PointType> Q(P_.size());
-    std::transform(P_.begin(), P_.end(), Q.begin(), [&](const PointType& p) { return m(p); });
+    std::vector<PointType> Q = mapped_points(m, P_);
     return Polyline(std::move(Q));
   }
 
   /// The box of the points: for a polyline it is tight.
-  [[nodiscard]] Box<T, D> control_bounds() const {
-    Box<T, D> b = Box<T, D>::empty_box();
-    for (const auto& p : P_) b.add(p);
-    return b;
-  }
+  [[nodiscard]] Box<T, D> control_bounds() const { return box_of<T, D>(P_); }
   [[nodiscard]] Box<T, D> bounds() const { return control_bounds(); }
 
   friend bool operator==(const Polyline&, const Polyline&) = default;

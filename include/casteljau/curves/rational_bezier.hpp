@@ -12,6 +12,24 @@
 
 namespace casteljau {
 
+namespace detail {
+/// The derivatives 0..k of the rational curve A / w from those of its homogeneous form,
+/// hd[j] = (A^(j), w^(j)) with w = hd[0][D] != 0, by the quotient rule
+/// C^(j) = (A^(j) - sum_{i=1..j} C(j, i) w^(i) C^(j-i)) / w [PT97, eq. 4.8]. Shared by
+/// every rational curve type. Cost O(k^2 D).
+template <class T, int D>
+void quotient_rule(std::span<const Point<T, D + 1>> hd, int k, Vector<T, D>* out) {
+  const T w = hd[0][D];
+  for (int d = 0; d < D; ++d) out[0][d] = hd[0][d] / w;
+  for (int j = 1; j <= k; ++j) {
+    Vector<T, D> a;
+    for (int d = 0; d < D; ++d) a[d] = hd[static_cast<std::size_t>(j)][d];
+    for (int i = 1; i <= j; ++i) a -= (binomial<T>(j, i) * hd[static_cast<std::size_t>(i)][D]) * out[j - i];
+    out[j] = a / w;
+  }
+}
+}  // namespace detail
+
 /// A rational Bézier curve with control points P_0..P_n and weights w_0..w_n > 0 over the
 /// domain [0, 1]. Invariants (checked in the constructor): as many weights as points, at
 /// least one, all finite, weights > 0, and largest / smallest weight within the range of
@@ -242,8 +260,7 @@ class RationalBezier {
   /// Affine maps act on the control points; weights are unchanged. Throws
   /// InvalidArgument("m", ...) when a mapped control point is not representable.
   [[nodiscard]] RationalBezier transform(const Affine<T, D>& m) const {
-    std::vector<PointType> Q(P_.size());
-    std::transform(P_.begin(), P_.end(), Q.begin(), [&](const PointType& p) { return m(p); });
+    std::vector<PointType> Q = mapped_points(m, P_);
     for (std::size_t i = 0; i < Q.size(); ++i) {
       if (!detail::all_finite(Q[i])) {
         throw InvalidArgument("m", "the transformed curve is not representable: its control point " + std::to_string(i) +
@@ -254,11 +271,7 @@ class RationalBezier {
   }
 
   /// The box of the control points; contains the curve on [0, 1] since all weights > 0.
-  [[nodiscard]] Box<T, D> control_bounds() const {
-    Box<T, D> b = Box<T, D>::empty_box();
-    for (const auto& p : P_) b.add(p);
-    return b;
-  }
+  [[nodiscard]] Box<T, D> control_bounds() const { return box_of<T, D>(P_); }
 
   friend bool operator==(const RationalBezier&, const RationalBezier&) = default;
 
@@ -309,13 +322,7 @@ class RationalBezier {
       throw InvalidArgument("t", "the curve has a pole at t = " + detail::format_number(t) + " (its weight function vanishes there)");
     }
     // [PT97, eq. 4.8] in whichever variable the homogeneous derivatives are.
-    for (int d = 0; d < D; ++d) out[0][d] = hd[0][d] / w;
-    for (int j = 1; j <= k; ++j) {
-      VectorType a;
-      for (int d = 0; d < D; ++d) a[d] = hd[static_cast<std::size_t>(j)][d];
-      for (int i = 1; i <= j; ++i) a -= (binomial<T>(j, i) * hd[static_cast<std::size_t>(i)][D]) * out[j - i];
-      out[j] = a / w;
-    }
+    detail::quotient_rule<T, D>(hd, k, out);
     if (*var == detail::DerivativeVariable::u && k >= 1) {
       const T s = t > 1 ? t - 1 : t, u = 1 / s;
       VectorType r{};
