@@ -9,6 +9,7 @@
 
 #include "casteljau/algo/bounds.hpp"
 #include "casteljau/algo/flatten.hpp"
+#include "casteljau/basis/extrapolate.hpp"
 
 namespace casteljau::io {
 
@@ -46,11 +47,7 @@ double wang_estimate(const Piece& c, double tolerance) {
   const int n = static_cast<int>(P.size()) - 1;
   if (n < 2) return 1;
   constexpr int D = Piece::dimension;
-  double m = 0;
-  for (const auto& q : P)
-    for (int d = 0; d < D; ++d) m = std::max(m, std::abs(q[d]));
-  int e = 0;
-  std::frexp(m, &e);
+  const int e = casteljau::detail::scale_exponent<typename Piece::PointType>(P);
   double second = 0;
   for (int i = 0; i + 2 <= n; ++i) {
     double s2 = 0;
@@ -116,9 +113,10 @@ AnyBox bounds(const AnyCurve& c) {
 PointList flatten(const AnyCurve& c, double tolerance) {
   return std::visit(
       [&](const auto& x) {
+        // The pieces once: for the size estimate and for the flattening itself.
+        const auto p = casteljau::pieces(x);
         if (std::isfinite(tolerance) && tolerance > 0) {
           double estimate = 0;
-          const auto p = casteljau::pieces(x);
           for (const auto& piece : p.segments())
             estimate += std::visit([&](const auto& b) { return wang_estimate(b, tolerance); }, piece);
           if (!(estimate <= static_cast<double>(max_flatten_vertices))) {
@@ -128,7 +126,7 @@ PointList flatten(const AnyCurve& c, double tolerance) {
           }
         }
         PointList out{std::decay_t<decltype(x)>::dimension, {}};
-        for (const auto& p : casteljau::flatten(x, tolerance)) out.push_back(p);
+        for (const auto& q : casteljau::flatten(p, tolerance)) out.push_back(q);
         return out;
       },
       c);

@@ -13,22 +13,14 @@
 #include <vector>
 
 #include "casteljau/io/json.hpp"
+#include "text.hpp"
 
 namespace casteljau::io {
 
 namespace {
 
-std::string index_path(std::string_view where, std::size_t i) { return std::string(where) + "[" + std::to_string(i) + "]"; }
-
-template <class Names>
-std::string join(const Names& names) {
-  std::string s;
-  for (auto n : names) {
-    if (!s.empty()) s += ", ";
-    s += n;
-  }
-  return s;
-}
+using detail::index_path;
+using detail::join;
 
 // ---------------------------------------------------------------------------------------
 // Field readers shared by the entries.

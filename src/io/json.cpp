@@ -2,6 +2,8 @@
 // readers, and the conversion between curve objects and AnyCurve.
 #include "casteljau/io/json.hpp"
 
+#include "text.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -18,9 +20,8 @@ namespace casteljau::io {
 
 namespace {
 
-std::string index_path(std::string_view where, std::size_t i) {
-  return std::string(where) + "[" + std::to_string(i) + "]";
-}
+using detail::index_path;
+using detail::join;
 
 /// How much user text a message quotes: the first 64 characters (code points), enough
 /// to recognise a name or a value; a longer text is cut there, with its length stated, so
@@ -90,16 +91,6 @@ std::string clip_path(std::string p) {
   while (head > 0 && continuation(head)) --head;  // whole characters only
   while (tail < p.size() && continuation(tail)) ++tail;
   return p.substr(0, head) + "\u2026" + p.substr(tail);
-}
-
-template <class Names>
-std::string join(const Names& names) {
-  std::string s;
-  for (auto n : names) {
-    if (!s.empty()) s += ", ";
-    s += n;
-  }
-  return s;
 }
 
 // ---------------------------------------------------------------------------------------

@@ -139,7 +139,7 @@ Box<typename C::Scalar, C::dimension> bounds(const C& c) {
     return c.bounds();
   } else {
     Box<typename C::Scalar, C::dimension> b = Box<typename C::Scalar, C::dimension>::empty_box();
-    const auto p = pieces(c);
+    const auto& p = pieces(c);  // a reference to c itself when c is Pieces
     for (const auto& s : p.segments()) b.add(std::visit([](const auto& piece) { return bounds(piece); }, s));
     return b;
   }

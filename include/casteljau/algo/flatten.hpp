@@ -197,7 +197,7 @@ template <class C>
 std::vector<Point<typename C::Scalar, C::dimension>> flatten(const C& c, typename C::Scalar tolerance) {
   using T = typename C::Scalar;
   detail::require_tolerance(tolerance);
-  const Pieces<T, C::dimension> p = pieces(c);
+  const Pieces<T, C::dimension>& p = pieces(c);  // a reference to c itself when c is Pieces
   std::vector<Point<T, C::dimension>> out;
   for (std::size_t i = 0; i < p.size(); ++i) {
     const auto part = std::visit([&](const auto& s) { return flatten(s, tolerance); }, p.segments()[i]);

@@ -247,7 +247,7 @@ class Nurbs {
   /// The box of the control points: contains the curve over its domain (weights > 0).
   [[nodiscard]] Box<T, D> control_bounds() const { return box_of<T, D>(P_); }
 
-  friend bool operator==(const Nurbs& a, const Nurbs& b) { return a.P_ == b.P_ && a.w_ == b.w_ && a.knots() == b.knots() && a.degree() == b.degree(); }
+  friend bool operator==(const Nurbs&, const Nurbs&) = default;
 
  private:
   static Homogeneous make_homogeneous(int degree, std::vector<T> knots, const std::vector<PointType>& P, const std::vector<T>& w) {

@@ -223,8 +223,10 @@ template <class T, int D>
 Pieces<T, D> pieces(const RationalBezier<T, D>& c) {
   return Pieces<T, D>({BezierPiece<T, D>(c)}, {T(0), T(1)});
 }
+/// Pieces are their own piecewise form: returned by reference, so queries on pieces copy
+/// nothing.
 template <class T, int D>
-Pieces<T, D> pieces(const Pieces<T, D>& c) {
+const Pieces<T, D>& pieces(const Pieces<T, D>& c) {
   return c;
 }
 
