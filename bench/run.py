@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Runs the W1 and W2 benchmarks of bench/ and prints the tables of docs/performance.md.
+"""Runs the W1, W2 and W5 benchmarks of bench/ and prints the tables of docs/performance.md.
 
 Usage: bench/run.py BUILD_DIR [--repetitions N] [--min-time SECONDS] [--filter REGEX]
 
@@ -13,6 +13,7 @@ so that the shared machine's drift hits every row alike), keeps the median repet
     fastest lib2geom and OCCT variants measured in the same run, and the max abs
     difference from own scalar de Casteljau;
   * W2: max abs error against the 256-bit MPFR reference, per method and degree;
+  * W5: ns per point, sorted and random parameters, for us and the peers (OCCT, SISL, GSL);
   * the goals of the benchmark issue, met or not.
 The raw JSON and the tables in Markdown go to BUILD_DIR/bench-results/.
 """
@@ -29,6 +30,8 @@ W1_GOAL_GENERIC_VS_NATIVE = 1.15  # generic batch SoA time / native batch SoA ti
 W2_GOAL_ERROR = 2e-15  # fast path max error at every degree
 W2_GOAL_VS_LIB2GEOM = 2.0  # lib2geom valueAt time / fast path time, at every degree
 W2_DEGREES = (5, 10, 20, 40)
+W5_GOAL_VS_FASTEST_PEER = 0.5  # our time / the fastest peer's, sorted and random alike
+W5_POINTS = 1e6
 
 
 def run(exe, out_json, repetitions, min_time, bench_filter):
@@ -157,6 +160,38 @@ def w2_table(rows):
     return text, md, goals
 
 
+def w5_table(rows):
+    methods = []
+    for name in rows:
+        method = name.rsplit("/", 1)[0]
+        if method not in methods:
+            methods.append(method)
+    orders = ("sorted", "random")
+    headers = ["method"] + [f"ns/pt {o}" for o in orders] + [f"cpu ns/pt {o}" for o in orders] + ["max abs diff"]
+    out = []
+    for m in methods:
+        r = [m]
+        for key in ("real_time", "cpu_time"):
+            for o in orders:
+                b = rows.get(f"{m}/{o}")
+                r.append(f"{to_ms(b, key) * 1e6 / W5_POINTS:.1f}" if b else "-")
+        b = rows.get(f"{m}/sorted") or rows.get(f"{m}/random")
+        r.append(f"{b['max_abs_diff']:.1e}" if b and "max_abs_diff" in b else "-")
+        out.append(r)
+    text, md = table(headers, out)
+    goals = []
+    for o in orders:
+        ours = rows.get(f"W5/casteljau/span_table/{o}")
+        peers = [(to_ms(b), n) for n, b in rows.items()
+                 if n.endswith(f"/{o}") and not n.startswith("W5/casteljau/")]
+        if ours and peers:
+            t, name = min(peers)
+            ratio = to_ms(ours) / t
+            goals.append(f"W5 {o}: span_table / fastest peer ({name.rsplit('/', 1)[0]}) = {ratio:.2f} "
+                         f"(goal <= {W5_GOAL_VS_FASTEST_PEER}): " + ("MET" if ratio <= W5_GOAL_VS_FASTEST_PEER else "NOT MET"))
+    return text, md, goals
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("build_dir")
@@ -210,6 +245,18 @@ def main():
             goals += g
     else:
         print(f"run.py: {exe} not built (MPFR missing?), skipping W2", file=sys.stderr)
+
+    exe = os.path.join(bench_dir, "casteljau_bench_w5")
+    if os.path.exists(exe):
+        doc = run(exe, os.path.join(res_dir, "casteljau_bench_w5.json"), args.repetitions, 0.2, args.filter)
+        context = context or doc["context"]
+        rows = medians(doc)
+        if rows:
+            text, md, g = w5_table(rows)
+            title = "W5, cubic B-spline in 3-D, 1000 control points, 10^6 parameters"
+            text_all += f"\n{title}\n{text}"
+            md_all += f"\n### {title}\n\n{md}"
+            goals += g
 
     if context:
         head = (f"{context.get('host_name', '?')}: {context.get('num_cpus', '?')} CPUs at {context.get('mhz_per_cpu', '?')} MHz, "

@@ -14,7 +14,7 @@ build_pkgs=(
   python3-scipy
 )
 fuzz_pkgs=(clang libclang-rt-dev)
-bench_pkgs=(lib2geom-dev libocct-modeling-data-dev libocct-foundation-dev libboost-dev libdouble-conversion-dev libgsl-dev)
+bench_pkgs=(lib2geom-dev libocct-modeling-data-dev libocct-foundation-dev libboost-dev libdouble-conversion-dev libgsl-dev libsisl-dev)
 
 want=("${build_pkgs[@]}")
 for arg in "$@"; do

@@ -7,6 +7,7 @@
 #include "casteljau/algo/evaluate.hpp"
 #include "casteljau/algo/flatten.hpp"
 #include "casteljau/algo/reduce.hpp"
+#include "casteljau/algo/span_table.hpp"
 #include "casteljau/basis/batch.hpp"
 #include "casteljau/basis/bernstein.hpp"
 #include "casteljau/basis/bspline_basis.hpp"
