@@ -2,7 +2,7 @@
 # Installs the Debian packages casteljau needs; idempotent, runs `apt-get update` only
 # when something is missing. Usage: scripts/install-deps.sh [build|bench|fuzz]...
 #   build (default): compiler, CMake, libraries, test tools (enough for `make demo` and `make test`)
-#   bench: also the peer libraries benchmarked in bench/ (lib2geom, OpenCASCADE, MPFR)
+#   bench: also the peer libraries benchmarked in bench/ (lib2geom, OpenCASCADE, GSL, SISL)
 #   fuzz: also clang and its libFuzzer runtime (`make fuzz`)
 set -euo pipefail
 
@@ -12,6 +12,7 @@ build_pkgs=(
   libgtest-dev libgmock-dev librapidcheck-dev libbenchmark-dev
   libmpfr-dev libgmp-dev
   python3-scipy
+  libocct-modeling-data-dev libocct-foundation-dev
 )
 fuzz_pkgs=(clang libclang-rt-dev)
 bench_pkgs=(lib2geom-dev libocct-modeling-data-dev libocct-foundation-dev libboost-dev libdouble-conversion-dev libgsl-dev libsisl-dev)
