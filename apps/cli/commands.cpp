@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "casteljau/io/any_curve.hpp"
+#include "casteljau/io/knots.hpp"
 #include "casteljau/io/svg.hpp"
 
 namespace casteljau::cli {
@@ -75,7 +76,7 @@ void call_library(F&& f, std::string_view numerical_field = "curve") {
     f();
   } catch (const InvalidArgument& e) {
     const std::string root = e.where().substr(0, e.where().find_first_of(".["));
-    constexpr std::array<std::string_view, 5> fields = {"curve", "curves", "t", "times", "tolerance"};
+    constexpr std::array<std::string_view, 6> fields = {"curve", "curves", "t", "times", "tolerance", "knot"};
     if (std::find(fields.begin(), fields.end(), root) != fields.end()) throw;
     throw InvalidArgument("curve", "the computation failed on this curve: " + std::string(e.what()));
   } catch (const NumericalError& e) {
@@ -131,6 +132,42 @@ Response elevate(const Json& req) {
   const int times = io::integer_from_json(f.required("times"), "times");
   Response r;
   call_library([&] { r.json = OrderedJson{{"curve", io::to_json(io::elevate(curve, times))}}; });
+  return r;
+}
+
+/// `times` of insert_knot / remove_knot: an integer >= 1, default 1.
+int knot_times(const io::Fields& f) {
+  const Json* j = f.optional("times");
+  if (!j) return 1;
+  const int times = io::integer_from_json(*j, "times");
+  if (times < 1) throw InvalidArgument("times", "count must be >= 1, got " + std::to_string(times));
+  return times;
+}
+
+Response insert_knot(const Json& req) {
+  const io::Fields f(req, "an insert_knot request");
+  f.allow_only({"curve", "knot", "times"}, "an insert_knot request");
+  const io::AnyCurve curve = read_curve(f);
+  const double u = io::number_from_json(f.required("knot"), "knot", "knot");
+  const int times = knot_times(f);
+  Response r;
+  call_library([&] { r.json = OrderedJson{{"curve", io::to_json(io::insert_knot(curve, u, times))}}; });
+  return r;
+}
+
+Response remove_knot(const Json& req) {
+  const io::Fields f(req, "a remove_knot request");
+  f.allow_only({"curve", "knot", "times", "tolerance"}, "a remove_knot request");
+  const io::AnyCurve curve = read_curve(f);
+  const double u = io::number_from_json(f.required("knot"), "knot", "knot");
+  const int times = knot_times(f);
+  double tolerance = 1e-12;
+  if (const Json* j = f.optional("tolerance")) tolerance = io::number_from_json(*j, "tolerance", "tolerance");
+  Response r;
+  call_library([&] {
+    const io::AnyKnotRemoval k = io::remove_knot(curve, u, times, tolerance);
+    r.json = OrderedJson{{"curve", io::to_json(k.curve)}, {"removed", k.removed}};
+  });
   return r;
 }
 
@@ -251,24 +288,52 @@ Example:
   echo '{"curve": {"type": "bezier", "points": [[0,0],[1,2],[3,2],[4,0]]}, "t": [0, 0.5], "derivatives": 1}' | casteljau eval
   {"points":[[0.0,0.0],[2.0,1.5]],"derivatives":[[[3.0,6.0],[4.5,0.0]]]})";
 
-constexpr std::string_view split_details = R"(Splits a bezier or rational_bezier curve at t in [0, 1] into two curves of the
-same type, each on [0, 1].
+constexpr std::string_view split_details = R"(Splits a curve at t into two curves of the same type. Bezier and rational_bezier
+halves are each on [0, 1] (t in [0, 1]); bspline and nurbs halves keep their parameter
+(t strictly inside the domain; the knot t is inserted up to the degree).
 
-Request:  curve (bezier or rational_bezier), t (number in [0, 1])
+Request:  curve (bezier, rational_bezier, bspline or nurbs), t (number)
 Response: curves: [left, right]
 
 Example:
   echo '{"curve": {"type": "bezier", "points": [[0],[2],[4]]}, "t": 0.5}' | casteljau split
-  {"curves":[{"type":"bezier","points":[[0.0],[1.0],[2.0]]},{"type":"bezier","points":[[2.0],[3.0],[4.0]]}]})";
+  {"curves":[{"type":"bezier","points":[[0.0],[1.0],[2.0]]},{"type":"bezier","points":[[2.0],[3.0],[4.0]]}]}
+  echo '{"curve": {"type": "bspline", "degree": 1, "knots": [0,0,2,2], "points": [[0],[4]]}, "t": 1}' | casteljau split
+  {"curves":[{"type":"bspline","degree":1,"knots":[0.0,0.0,1.0,1.0],"points":[[0.0],[2.0]]},{"type":"bspline","degree":1,"knots":[1.0,1.0,2.0,2.0],"points":[[2.0],[4.0]]}]})";
 
-constexpr std::string_view elevate_details = R"(Raises the degree of a bezier or rational_bezier curve without changing it.
+constexpr std::string_view elevate_details = R"(Raises the degree of a curve without changing it. A bspline or nurbs keeps its
+continuity: every interior knot gains `times` copies (decompose into Bezier pieces,
+elevate each, remove the extra knots [PT97, 5.5]).
 
-Request:  curve (bezier or rational_bezier), times (integer r >= 1)
+Request:  curve (bezier, rational_bezier, bspline or nurbs), times (integer r >= 1)
 Response: curve (same type, degree + r)
 
 Example:
   echo '{"curve": {"type": "bezier", "points": [[0,0],[1,2],[2,0]]}, "times": 1}' | casteljau elevate
   {"curve":{"type":"bezier","points":[[0.0,0.0],[0.6666666666666666,1.3333333333333333],[1.3333333333333333,1.3333333333333335],[2.0,0.0]]}})";
+
+constexpr std::string_view insert_knot_details = R"(Inserts a knot into a bspline or nurbs curve without changing the curve
+(Boehm's algorithm [PT97, A5.1]).
+
+Request:  curve (bspline or nurbs), knot (in the domain), times (optional integer >= 1,
+          default 1; the knot's multiplicity afterwards is at most the degree)
+Response: curve
+
+Example:
+  echo '{"curve": {"type": "bspline", "degree": 1, "knots": [0,0,2,2], "points": [[0],[4]]}, "knot": 1}' | casteljau insert_knot
+  {"curve":{"type":"bspline","degree":1,"knots":[0.0,0.0,1.0,2.0,2.0],"points":[[0.0],[2.0],[4.0]]}})";
+
+constexpr std::string_view remove_knot_details = R"(Removes an interior knot of a bspline or nurbs curve up to `times` times, each
+removal kept only if the curve moves by at most `tolerance` (a guaranteed bound on the
+distance over the whole domain) [PT97, A5.8].
+
+Request:  curve (bspline or nurbs), knot (an interior knot), times (optional integer >= 1,
+          default 1, at most the knot's multiplicity), tolerance (optional, > 0, default 1e-12)
+Response: curve, removed (how many times the knot was removed)
+
+Example:
+  echo '{"curve": {"type": "bspline", "degree": 1, "knots": [0,0,1,2,2], "points": [[0],[2],[4]]}, "knot": 1}' | casteljau remove_knot
+  {"curve":{"type":"bspline","degree":1,"knots":[0.0,0.0,2.0,2.0],"points":[[0.0],[4.0]]},"removed":1})";
 
 constexpr std::string_view bounds_details = R"(The tight axis-aligned box of a curve over its domain (not of its control points).
 
@@ -320,18 +385,18 @@ version: running it is an error (exit status 2).)";
 // supported (the array's size is deduced, so adding a command touches one line).
 constexpr Command all_commands[] = {
     {"eval", "Evaluate a curve (and its derivatives) at parameters", eval_details, true},
-    {"split", "Split a bezier or rational_bezier curve at t in [0, 1]", split_details, true},
-    {"elevate", "Raise the degree of a bezier or rational_bezier curve", elevate_details, true},
+    {"split", "Split a bezier, rational_bezier, bspline or nurbs curve at t", split_details, true},
+    {"elevate", "Raise the degree of a bezier, rational_bezier, bspline or nurbs curve", elevate_details, true},
     {"bounds", "Tight axis-aligned bounding box of a curve", bounds_details, true},
     {"to_bezier", "Convert a curve to a path of Bezier segments", to_bezier_details, true},
     {"flatten", "Polyline within a distance tolerance of a curve", flatten_details, true},
     {"render", "Draw curves as an SVG document", render_details, true},
-    {"insert_knot", "Insert a knot into a B-spline (not supported yet)", later_details, false},
+    {"insert_knot", "Insert a knot into a bspline or nurbs curve", insert_knot_details, true},
     {"length", "Arc length of a curve (not supported yet)", later_details, false},
     {"project", "Nearest point of a curve (not supported yet)", later_details, false},
     {"intersect", "Intersections of plane curves (not supported yet)", later_details, false},
     {"fit", "Fit a B-spline to points (not supported yet)", later_details, false},
-    {"remove_knot", "Remove a knot from a B-spline within a tolerance (not supported yet)", later_details, false},
+    {"remove_knot", "Remove a knot from a bspline or nurbs curve within a tolerance", remove_knot_details, true},
     {"subdivide", "Subdivision curves: Chaikin, Lane-Riesenfeld, 4-point (not supported yet)", later_details, false},
     {"param_at_length", "Parameters at given arc lengths (not supported yet)", later_details, false},
     {"features", "Inflections, cusps and extrema of a curve (not supported yet)", later_details, false},
@@ -360,6 +425,8 @@ Response run(const Command& command, const Json& request) {
       {"to_bezier", to_bezier},
       {"flatten", flatten},
       {"render", render},
+      {"insert_knot", insert_knot},
+      {"remove_knot", remove_knot},
   };
   for (const auto& [name, handler] : handlers) {
     if (name == command.name) {
