@@ -158,10 +158,11 @@ KnotForm<T, V> with_outer_knots(const KnotForm<T, V>& f, const std::vector<T>& L
 /// of multiplicity m in U is removed q - (m + r) = p - m times (remove_knot_once: exact,
 /// since the elevated curve is still C^(p-m) there). Ends: a clamped end stays clamped;
 /// an unclamped one gets the outer knots U_0 (r + 1 times), U_1, .., U_{p-1} and its end
-/// points by blossoming (with_outer_knots). Cost O(spans (p + r) p + p^3) plus, for an
+/// points by blossoming (with_outer_knots), unless keep_unclamped_ends is false (then
+/// both ends are clamped). Cost O(spans (p + r) p + p^3) plus, for an
 /// unclamped end, O((p + r)^3).
 template <class T, int E>
-KnotForm<T, Point<T, E>> elevate(const KnotForm<T, Point<T, E>>& f, int r) {
+KnotForm<T, Point<T, E>> elevate(const KnotForm<T, Point<T, E>>& f, int r, bool keep_unclamped_ends = true) {
   using V = Point<T, E>;
   const int p = f.p, q = p + r;
   const std::span<const T> U(f.U);
@@ -231,7 +232,7 @@ KnotForm<T, Point<T, E>> elevate(const KnotForm<T, Point<T, E>>& f, int r) {
   extend_to(U0.size() + 1);
   g.U.insert(g.U.end(), W.U.begin(), W.U.end());
   g.P.insert(g.P.end(), W.P.begin(), W.P.end());
-  const bool clamped_left = U[0] == a, clamped_right = U[m] == b;
+  const bool clamped_left = U[0] == a || !keep_unclamped_ends, clamped_right = U[m] == b || !keep_unclamped_ends;
   if (clamped_left && clamped_right) return g;
   std::vector<T> L(static_cast<std::size_t>(q), a), R(static_cast<std::size_t>(q), b);
   if (!clamped_left) {
@@ -558,7 +559,14 @@ class Nurbs {
   [[nodiscard]] Nurbs elevate(int r = 1) const {
     if (r < 0) throw InvalidArgument("r", "degree elevation count must be >= 0, got " + std::to_string(r));
     if (r == 0) return *this;
-    return from_homogeneous(detail::elevate<T, D + 1>(h_.form(), r));
+    KnotForm<T, Point<T, D + 1>> g = detail::elevate<T, D + 1>(h_.form(), r);
+    for (const auto& q : g.P) {
+      // The outer points of an unclamped end can need a weight <= 0, which a Nurbs cannot
+      // hold: then the ends are clamped (the same curve on the domain, and the same end
+      // pieces beyond it).
+      if (!(q[D] > 0)) return from_homogeneous(detail::elevate<T, D + 1>(h_.form(), r, false));
+    }
+    return from_homogeneous(std::move(g));
   }
   [[nodiscard]] Nurbs clamp() const { return from_homogeneous(h_.clamp().form()); }
   /// Unclamping may make a weight non-positive (InvalidArgument "weights[i]").

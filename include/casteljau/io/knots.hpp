@@ -3,6 +3,9 @@
 // src/io/knots.cpp.
 #pragma once
 
+#include <optional>
+#include <string_view>
+
 #include "casteljau/io/any_curve.hpp"
 
 namespace casteljau::io {
@@ -23,5 +26,21 @@ struct AnyKnotRemoval {
 /// BSpline::remove_knot). Errors: "curve.type", "knot" (not an interior knot), "times"
 /// (< 1 or above the multiplicity), "tolerance" (not > 0).
 [[nodiscard]] AnyKnotRemoval remove_knot(const AnyCurve& c, double u, int times, double tolerance);
+
+/// The subdivision schemes of algo/subdivision.hpp.
+enum class SubdivisionScheme { chaikin, lane_riesenfeld, four_point };
+
+/// The polygon after the steps, and the limit curve where the scheme has one (a bspline;
+/// none for four_point).
+struct AnySubdivision {
+  PointList points;
+  std::optional<AnyCurve> limit;
+};
+
+/// `iterations` steps of the scheme on the polygon P (dimension 1..max_dimension); degree
+/// is used by lane_riesenfeld only, tension by four_point only. Errors name "points",
+/// "degree", "tension", "iterations" (see algo/subdivision.hpp).
+[[nodiscard]] AnySubdivision subdivide(const PointList& P, SubdivisionScheme scheme, int degree, double tension, int iterations,
+                                       bool closed);
 
 }  // namespace casteljau::io
