@@ -230,4 +230,53 @@ TEST(NurbsKnots, QuarterCircle) {
   EXPECT_NEAR(big.insert_knot(0.5).weights().front(), 1000, 1e-12);
 }
 
+// [PT97, Ex. 7.2]: the nine-point circle, knots {0,0,0,1/4,1/4,1/2,1/2,3/4,3/4,1,1,1},
+// control points the corners and edge midpoints of the square [-1, 1]^2, weights 1 at the
+// edge midpoints and 1/sqrt 2 at the corners; every point at radius 1 to 1e-14.
+TEST(Conics, NinePointCircle) {
+  const auto c = nurbs_circle(P2{{0, 0}}, 1.0);
+  EXPECT_EQ(c.knots(), (std::vector<double>{0, 0, 0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1, 1, 1}));
+  const std::vector<P2> want{P2{{1, 0}}, P2{{1, 1}}, P2{{0, 1}}, P2{{-1, 1}}, P2{{-1, 0}}, P2{{-1, -1}}, P2{{0, -1}}, P2{{1, -1}}, P2{{1, 0}}};
+  ASSERT_EQ(c.points().size(), 9u);
+  for (std::size_t i = 0; i < 9; ++i) {
+    EXPECT_LE(distance(c.points()[i], want[i]), 1e-15) << i;
+    EXPECT_NEAR(c.weights()[i], i % 2 == 1 ? std::sqrt(0.5) : 1.0, 1e-16) << i;
+  }
+  for (int i = 0; i <= 1000; ++i) {
+    const P2 q = c(i / 1000.0);
+    EXPECT_LE(std::abs(std::hypot(q[0], q[1]) - 1), 1e-14) << i;
+  }
+}
+
+// Arcs of every sweep: 1 to 4 pieces (a quarter at most each), end points at the angles,
+// every point on the circle; an ellipse through its axis points in 3-D; the errors.
+TEST(Conics, ArcsAndEllipses) {
+  for (const double sweep : {0.25, 1.5707963267948966, 2.5, 3.141592653589793, 4.5, 6.0, 6.283185307179586}) {
+    const double s0 = -0.7;
+    const auto c = nurbs_arc(P2{{2, -1}}, 3.0, s0, s0 + sweep);
+    const std::size_t pieces = static_cast<std::size_t>(std::ceil(sweep / (3.141592653589793 / 2) - 1e-12));
+    EXPECT_EQ(c.points().size(), 2 * pieces + 1) << sweep;
+    EXPECT_LE(distance(c(0.0), P2{{2 + 3 * std::cos(s0), -1 + 3 * std::sin(s0)}}), 1e-14);
+    EXPECT_LE(distance(c(1.0), P2{{2 + 3 * std::cos(s0 + sweep), -1 + 3 * std::sin(s0 + sweep)}}), 1e-14);
+    for (int i = 0; i <= 200; ++i) {
+      const P2 q = c(i / 200.0);
+      EXPECT_LE(std::abs(std::hypot(q[0] - 2, q[1] + 1) - 3), 3e-14) << sweep;  // radius 3: a few eps of it
+    }
+  }
+  using P3 = Point<double, 3>;
+  using V3 = Vector<double, 3>;
+  const auto e = nurbs_ellipse(P3{{1, 2, 3}}, V3(0.0, 5.0, 0.0), V3(0.0, 0.0, 2.0));
+  for (int i = 0; i <= 200; ++i) {
+    const P3 q = e(i / 200.0);
+    EXPECT_EQ(q[0], 1);
+    const double y = (q[1] - 2) / 5, z = (q[2] - 3) / 2;
+    EXPECT_LE(std::abs(y * y + z * z - 1), 1e-14);
+  }
+  EXPECT_LE(distance(e(0.25), P3{{1, 2, 5}}), 1e-14);  // a quarter of the parameter: a quarter turn
+  EXPECT_INVALID_ARGUMENT(nurbs_circle(P2{{0, 0}}, 0.0), "radius", "> 0");
+  EXPECT_INVALID_ARGUMENT(nurbs_arc(P2{{0, 0}}, 1.0, 1.0, 1.0), "end_angle", "sweep");
+  EXPECT_INVALID_ARGUMENT(nurbs_arc(P2{{0, 0}}, 1.0, 0.0, 7.0), "end_angle", "sweep");
+  EXPECT_INVALID_ARGUMENT(nurbs_ellipse(P2{{0, 0}}, Vector<double, 2>(1.0, 1.0), Vector<double, 2>(2.0, 2.0)), "axes", "independent");
+}
+
 }  // namespace
