@@ -11,6 +11,8 @@
 #include <vector>
 
 #include "casteljau/io/any_curve.hpp"
+#include "casteljau/io/fit.hpp"
+#include "casteljau/io/knots.hpp"
 #include "casteljau/io/svg.hpp"
 
 namespace casteljau::cli {
@@ -75,7 +77,7 @@ void call_library(F&& f, std::string_view numerical_field = "curve") {
     f();
   } catch (const InvalidArgument& e) {
     const std::string root = e.where().substr(0, e.where().find_first_of(".["));
-    constexpr std::array<std::string_view, 5> fields = {"curve", "curves", "t", "times", "tolerance"};
+    constexpr std::array<std::string_view, 6> fields = {"curve", "curves", "t", "times", "tolerance", "knot"};
     if (std::find(fields.begin(), fields.end(), root) != fields.end()) throw;
     throw InvalidArgument("curve", "the computation failed on this curve: " + std::string(e.what()));
   } catch (const NumericalError& e) {
@@ -132,6 +134,152 @@ Response elevate(const Json& req) {
   Response r;
   call_library([&] { r.json = OrderedJson{{"curve", io::to_json(io::elevate(curve, times))}}; });
   return r;
+}
+
+/// `times` of insert_knot / remove_knot: an integer >= 1, default 1.
+int knot_times(const io::Fields& f) {
+  const Json* j = f.optional("times");
+  if (!j) return 1;
+  const int times = io::integer_from_json(*j, "times");
+  if (times < 1) throw InvalidArgument("times", "count must be >= 1, got " + std::to_string(times));
+  return times;
+}
+
+Response insert_knot(const Json& req) {
+  const io::Fields f(req, "an insert_knot request");
+  f.allow_only({"curve", "knot", "times"}, "an insert_knot request");
+  const io::AnyCurve curve = read_curve(f);
+  const double u = io::number_from_json(f.required("knot"), "knot", "knot");
+  const int times = knot_times(f);
+  Response r;
+  call_library([&] { r.json = OrderedJson{{"curve", io::to_json(io::insert_knot(curve, u, times))}}; });
+  return r;
+}
+
+Response remove_knot(const Json& req) {
+  const io::Fields f(req, "a remove_knot request");
+  f.allow_only({"curve", "knot", "times", "tolerance"}, "a remove_knot request");
+  const io::AnyCurve curve = read_curve(f);
+  const double u = io::number_from_json(f.required("knot"), "knot", "knot");
+  const int times = knot_times(f);
+  double tolerance = 1e-12;
+  if (const Json* j = f.optional("tolerance")) tolerance = io::number_from_json(*j, "tolerance", "tolerance");
+  Response r;
+  call_library([&] {
+    const io::AnyKnotRemoval k = io::remove_knot(curve, u, times, tolerance);
+    r.json = OrderedJson{{"curve", io::to_json(k.curve)}, {"removed", k.removed}};
+  });
+  return r;
+}
+
+/// The polygon in field `name`: an array of points, each an array of 1..max_dimension
+/// finite numbers, all of one dimension.
+io::PointList polygon_from_json(const io::Fields& f, std::string_view name) {
+  const Json& j = f.required(name);
+  const std::string where(name);
+  if (!j.is_array()) throw InvalidArgument(where, "must be an array of points, got " + std::string(io::kind_of(j)));
+  io::PointList P;
+  for (std::size_t i = 0; i < j.size(); ++i) {
+    const std::string at = index_path(where, i);
+    const std::vector<double> x = io::numbers_from_json(j[i], at);
+    if (x.empty() || x.size() > static_cast<std::size_t>(io::max_dimension)) {
+      throw InvalidArgument(at, "a point has 1 to " + std::to_string(io::max_dimension) + " coordinates, got " + std::to_string(x.size()));
+    }
+    if (i == 0) P.dim = static_cast<int>(x.size());
+    if (x.size() != static_cast<std::size_t>(P.dim)) {
+      throw InvalidArgument(at, "all points must have the same dimension: " + std::to_string(x.size()) + " coordinates after " +
+                                    std::to_string(P.dim));
+    }
+    P.coords.insert(P.coords.end(), x.begin(), x.end());
+  }
+  if (P.dim == 0) throw InvalidArgument(where, "needs at least one point");
+  return P;
+}
+
+Response subdivide(const Json& req) {
+  const io::Fields f(req, "a subdivide request");
+  f.allow_only({"points", "scheme", "degree", "tension", "iterations", "closed"}, "a subdivide request");
+  const io::PointList P = polygon_from_json(f, "points");
+  const std::string name = io::string_from_json(f.required("scheme"), "scheme");
+  io::SubdivisionScheme scheme{};
+  if (name == "chaikin") {
+    scheme = io::SubdivisionScheme::chaikin;
+  } else if (name == "lane_riesenfeld") {
+    scheme = io::SubdivisionScheme::lane_riesenfeld;
+  } else if (name == "four_point") {
+    scheme = io::SubdivisionScheme::four_point;
+  } else {
+    throw InvalidArgument("scheme", "unknown scheme " + io::quoted(name) + " (chaikin, lane_riesenfeld, four_point)");
+  }
+  int degree = 2;
+  if (scheme == io::SubdivisionScheme::lane_riesenfeld) {
+    degree = io::integer_from_json(f.required("degree"), "degree");
+    if (degree < 1 || degree > io::max_degree) {
+      throw InvalidArgument("degree", "degree must be in 1.." + std::to_string(io::max_degree) + ", got " + std::to_string(degree));
+    }
+  } else if (f.has("degree")) {
+    throw InvalidArgument("degree", "only the lane_riesenfeld scheme takes a degree");
+  }
+  double tension = 1.0 / 16;
+  if (const Json* j = f.optional("tension")) {
+    if (scheme != io::SubdivisionScheme::four_point) throw InvalidArgument("tension", "only the four_point scheme takes a tension");
+    tension = io::number_from_json(*j, "tension", "tension");
+  }
+  const int iterations = io::integer_from_json(f.required("iterations"), "iterations");
+  bool closed = false;
+  if (const Json* j = f.optional("closed")) closed = io::boolean_from_json(*j, "closed");
+  Response r;
+  const io::AnySubdivision s = io::subdivide(P, scheme, degree, tension, iterations, closed);
+  r.json = OrderedJson{{"points", points_json(s.points)}};
+  if (s.limit) r.json["limit"] = io::to_json(*s.limit);
+  return r;
+}
+
+Response fit(const Json& req) {
+  const io::Fields f(req, "a fit request");
+  f.allow_only({"points", "degree", "control_points", "tolerance", "parametrization", "start_derivative", "end_derivative", "closed"},
+               "a fit request");
+  const io::PointList P = polygon_from_json(f, "points");
+  io::AnyFitRequest r;
+  r.degree = io::integer_from_json(f.required("degree"), "degree");
+  if (r.degree < 1 || r.degree > io::max_degree) {
+    throw InvalidArgument("degree", "degree must be in 1.." + std::to_string(io::max_degree) + ", got " + std::to_string(r.degree));
+  }
+  const Json* cp = f.optional("control_points");
+  const Json* tol = f.optional("tolerance");
+  if (cp && tol) throw InvalidArgument("tolerance", "give either control_points or tolerance, not both");
+  if (!cp && !tol) throw InvalidArgument("control_points", "required field is missing (or give tolerance)");
+  if (cp) {
+    const int n = io::integer_from_json(*cp, "control_points");
+    if (n < 1) throw InvalidArgument("control_points", "must be >= 1, got " + std::to_string(n));
+    r.control_points = static_cast<std::size_t>(n);
+  } else {
+    r.tolerance = io::number_from_json(*tol, "tolerance", "tolerance");
+    if (!(*r.tolerance > 0)) throw InvalidArgument("tolerance", "tolerance must be > 0, got " + number_text(*r.tolerance));
+  }
+  if (const Json* j = f.optional("parametrization")) {
+    const std::string s = io::string_from_json(*j, "parametrization");
+    if (s == "uniform") {
+      r.parametrization = 0;
+    } else if (s == "chord") {
+      r.parametrization = 1;
+    } else if (s == "centripetal") {
+      r.parametrization = 2;
+    } else {
+      throw InvalidArgument("parametrization", "unknown parametrization " + io::quoted(s) + " (uniform, chord, centripetal)");
+    }
+  }
+  if (const Json* j = f.optional("start_derivative")) r.start_derivative = io::numbers_from_json(*j, "start_derivative");
+  if (const Json* j = f.optional("end_derivative")) r.end_derivative = io::numbers_from_json(*j, "end_derivative");
+  if (const Json* j = f.optional("closed")) r.closed = io::boolean_from_json(*j, "closed");
+  Response out;
+  try {
+    const io::AnyFit a = io::fit(P, r);
+    out.json = OrderedJson{{"curve", io::to_json(a.curve)}, {"max_error", a.max_error}};
+  } catch (const NumericalError& e) {
+    throw InvalidArgument("points", e.what());
+  }
+  return out;
 }
 
 Response bounds(const Json& req) {
@@ -251,24 +399,90 @@ Example:
   echo '{"curve": {"type": "bezier", "points": [[0,0],[1,2],[3,2],[4,0]]}, "t": [0, 0.5], "derivatives": 1}' | casteljau eval
   {"points":[[0.0,0.0],[2.0,1.5]],"derivatives":[[[3.0,6.0],[4.5,0.0]]]})";
 
-constexpr std::string_view split_details = R"(Splits a bezier or rational_bezier curve at t in [0, 1] into two curves of the
-same type, each on [0, 1].
+constexpr std::string_view split_details = R"(Splits a curve at t into two curves of the same type. Bezier and rational_bezier
+halves are each on [0, 1] (t in [0, 1]); bspline and nurbs halves keep their parameter
+(t strictly inside the domain; the knot t is inserted up to the degree).
 
-Request:  curve (bezier or rational_bezier), t (number in [0, 1])
+Request:  curve (bezier, rational_bezier, bspline or nurbs), t (number)
 Response: curves: [left, right]
 
 Example:
   echo '{"curve": {"type": "bezier", "points": [[0],[2],[4]]}, "t": 0.5}' | casteljau split
-  {"curves":[{"type":"bezier","points":[[0.0],[1.0],[2.0]]},{"type":"bezier","points":[[2.0],[3.0],[4.0]]}]})";
+  {"curves":[{"type":"bezier","points":[[0.0],[1.0],[2.0]]},{"type":"bezier","points":[[2.0],[3.0],[4.0]]}]}
+  echo '{"curve": {"type": "bspline", "degree": 1, "knots": [0,0,2,2], "points": [[0],[4]]}, "t": 1}' | casteljau split
+  {"curves":[{"type":"bspline","degree":1,"knots":[0.0,0.0,1.0,1.0],"points":[[0.0],[2.0]]},{"type":"bspline","degree":1,"knots":[1.0,1.0,2.0,2.0],"points":[[2.0],[4.0]]}]})";
 
-constexpr std::string_view elevate_details = R"(Raises the degree of a bezier or rational_bezier curve without changing it.
+constexpr std::string_view elevate_details = R"(Raises the degree of a curve without changing it. A bspline or nurbs keeps its
+continuity: every interior knot gains `times` copies (decompose into Bezier pieces,
+elevate each, remove the extra knots [PT97, 5.5]).
 
-Request:  curve (bezier or rational_bezier), times (integer r >= 1)
+Request:  curve (bezier, rational_bezier, bspline or nurbs), times (integer r >= 1)
 Response: curve (same type, degree + r)
 
 Example:
   echo '{"curve": {"type": "bezier", "points": [[0,0],[1,2],[2,0]]}, "times": 1}' | casteljau elevate
   {"curve":{"type":"bezier","points":[[0.0,0.0],[0.6666666666666666,1.3333333333333333],[1.3333333333333333,1.3333333333333335],[2.0,0.0]]}})";
+
+constexpr std::string_view insert_knot_details = R"(Inserts a knot into a bspline or nurbs curve without changing the curve
+(Boehm's algorithm [PT97, A5.1]).
+
+Request:  curve (bspline or nurbs), knot (in the domain), times (optional integer >= 1,
+          default 1; the knot's multiplicity afterwards is at most the degree)
+Response: curve
+
+Example:
+  echo '{"curve": {"type": "bspline", "degree": 1, "knots": [0,0,2,2], "points": [[0],[4]]}, "knot": 1}' | casteljau insert_knot
+  {"curve":{"type":"bspline","degree":1,"knots":[0.0,0.0,1.0,2.0,2.0],"points":[[0.0],[2.0],[4.0]]}})";
+
+constexpr std::string_view remove_knot_details = R"(Removes an interior knot of a bspline or nurbs curve up to `times` times, each
+removal kept only if the curve moves by at most `tolerance` (a guaranteed bound on the
+distance over the whole domain) [PT97, A5.8].
+
+Request:  curve (bspline or nurbs), knot (an interior knot), times (optional integer >= 1,
+          default 1, at most the knot's multiplicity), tolerance (optional, > 0, default 1e-12)
+Response: curve, removed (how many times the knot was removed)
+
+Example:
+  echo '{"curve": {"type": "bspline", "degree": 1, "knots": [0,0,1,2,2], "points": [[0],[2],[4]]}, "knot": 1}' | casteljau remove_knot
+  {"curve":{"type":"bspline","degree":1,"knots":[0.0,0.0,2.0,2.0],"points":[[0.0],[4.0]]},"removed":1})";
+
+constexpr std::string_view subdivide_details = R"(Subdivision curves: `iterations` steps of a scheme on a control polygon. chaikin
+(corner cutting), lane_riesenfeld (degree p >= 1; chaikin is p = 2) and four_point
+(interpolating, Dyn-Levin-Gregory; tension in [0, 0.1545...), default 1/16). Open
+polygons keep their end points: Lane-Riesenfeld steps are then knot insertion at the
+span midpoints of the clamped uniform B-spline; the 4-point scheme reflects the end
+points. `limit` is the limit curve as a bspline (uniform knots; periodic when closed);
+four_point has none.
+
+Request:  points, scheme, degree (lane_riesenfeld only), tension (four_point only),
+          iterations (integer k >= 0), closed (optional boolean, default false)
+Response: points (after k steps), limit (bspline, except for four_point)
+
+Example:
+  echo '{"points": [[0,0],[4,0],[4,4],[0,4]], "scheme": "chaikin", "iterations": 1, "closed": true}' | casteljau subdivide
+  {"points":[[1.0,0.0],[3.0,0.0],[4.0,1.0],[4.0,3.0],[3.0,4.0],[1.0,4.0],[0.0,3.0],[0.0,1.0]],"limit":{"type":"bspline","degree":2,"knots":[0.0,1.0,2.0,3.0,4.0,5.0,6.0,7.0,8.0],"points":[[0.0,0.0],[4.0,0.0],[4.0,4.0],[0.0,4.0],[0.0,0.0],[4.0,0.0]]}})";
+
+constexpr std::string_view fit_details = R"(Fits a clamped bspline to points ([PT97] chapter 9). Parameters by the
+parametrization (uniform, chord (default), centripetal), divided by the last so that the
+curve's domain is [0, 1].
+
+  control_points = number of points (+ 1 per end derivative): global interpolation
+      (knots by averaging the parameters, [PT97] A9.1, eq. 9.8; end derivatives 9.2.2);
+  control_points smaller: least squares with the end points (and given end derivatives)
+      matched exactly, knots by [PT97] eq. 9.68-9.69;
+  tolerance: the fewest control points found (bisection) whose max_error is within it;
+      interpolation when nothing fewer is;
+  closed: periodic interpolation (C^(degree-1) where it closes; control_points, if given,
+      must be the number of distinct points; the last point may repeat the first).
+
+Request:  points, degree, control_points or tolerance, parametrization (optional),
+          start_derivative, end_derivative (optional vectors), closed (optional boolean)
+Response: curve (bspline), max_error (largest distance from a point to the curve at the
+          point's parameter)
+
+Example:
+  echo '{"points": [[0,0],[1,1],[2,0]], "degree": 2, "control_points": 3, "parametrization": "uniform"}' | casteljau fit
+  {"curve":{"type":"bspline","degree":2,"knots":[0.0,0.0,0.0,1.0,1.0,1.0],"points":[[0.0,0.0],[1.0,2.0],[2.0,0.0]]},"max_error":0.0})";
 
 constexpr std::string_view bounds_details = R"(The tight axis-aligned box of a curve over its domain (not of its control points).
 
@@ -320,19 +534,19 @@ version: running it is an error (exit status 2).)";
 // supported (the array's size is deduced, so adding a command touches one line).
 constexpr Command all_commands[] = {
     {"eval", "Evaluate a curve (and its derivatives) at parameters", eval_details, true},
-    {"split", "Split a bezier or rational_bezier curve at t in [0, 1]", split_details, true},
-    {"elevate", "Raise the degree of a bezier or rational_bezier curve", elevate_details, true},
+    {"split", "Split a bezier, rational_bezier, bspline or nurbs curve at t", split_details, true},
+    {"elevate", "Raise the degree of a bezier, rational_bezier, bspline or nurbs curve", elevate_details, true},
     {"bounds", "Tight axis-aligned bounding box of a curve", bounds_details, true},
     {"to_bezier", "Convert a curve to a path of Bezier segments", to_bezier_details, true},
     {"flatten", "Polyline within a distance tolerance of a curve", flatten_details, true},
     {"render", "Draw curves as an SVG document", render_details, true},
-    {"insert_knot", "Insert a knot into a B-spline (not supported yet)", later_details, false},
+    {"insert_knot", "Insert a knot into a bspline or nurbs curve", insert_knot_details, true},
     {"length", "Arc length of a curve (not supported yet)", later_details, false},
     {"project", "Nearest point of a curve (not supported yet)", later_details, false},
     {"intersect", "Intersections of plane curves (not supported yet)", later_details, false},
-    {"fit", "Fit a B-spline to points (not supported yet)", later_details, false},
-    {"remove_knot", "Remove a knot from a B-spline within a tolerance (not supported yet)", later_details, false},
-    {"subdivide", "Subdivision curves: Chaikin, Lane-Riesenfeld, 4-point (not supported yet)", later_details, false},
+    {"fit", "Fit a B-spline to points: interpolation, least squares, tolerance", fit_details, true},
+    {"remove_knot", "Remove a knot from a bspline or nurbs curve within a tolerance", remove_knot_details, true},
+    {"subdivide", "Subdivision curves: Chaikin, Lane-Riesenfeld, 4-point", subdivide_details, true},
     {"param_at_length", "Parameters at given arc lengths (not supported yet)", later_details, false},
     {"features", "Inflections, cusps and extrema of a curve (not supported yet)", later_details, false},
     {"distance", "Minimum distance between two curves (not supported yet)", later_details, false},
@@ -360,6 +574,10 @@ Response run(const Command& command, const Json& request) {
       {"to_bezier", to_bezier},
       {"flatten", flatten},
       {"render", render},
+      {"insert_knot", insert_knot},
+      {"remove_knot", remove_knot},
+      {"subdivide", subdivide},
+      {"fit", fit},
   };
   for (const auto& [name, handler] : handlers) {
     if (name == command.name) {

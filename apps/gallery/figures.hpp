@@ -21,6 +21,12 @@ using FigureFunction = Figure (*)();
 /// append it here (docs/gallery.md).
 const std::vector<FigureFunction>& figure_list();
 
+/// B-spline, NURBS and subdivision figures (figures_bspline.cpp).
+Figure knot_insertion();
+Figure nurbs_circle_figure();
+Figure subdivision_schemes();
+Figure four_point_scheme();
+
 /// The page: a self-contained HTML document (inline CSS and SVG, no scripts).
 std::string html_page(const std::vector<Figure>& figures);
 

@@ -1,4 +1,5 @@
-// The whole library in one include.
+// The whole library in one include, except algo/fit.hpp (it brings Eigen's sparse
+// solvers; include it where fitting is used).
 #pragma once
 
 #include "casteljau/algo/bounds.hpp"
@@ -8,12 +9,14 @@
 #include "casteljau/algo/flatten.hpp"
 #include "casteljau/algo/reduce.hpp"
 #include "casteljau/algo/span_table.hpp"
+#include "casteljau/algo/subdivision.hpp"
 #include "casteljau/basis/batch.hpp"
 #include "casteljau/basis/bernstein.hpp"
 #include "casteljau/basis/bspline_basis.hpp"
 #include "casteljau/basis/binomial.hpp"
 #include "casteljau/basis/de_casteljau.hpp"
 #include "casteljau/basis/extrapolate.hpp"
+#include "casteljau/basis/knot_ops.hpp"
 #include "casteljau/basis/power.hpp"
 #include "casteljau/basis/roots.hpp"
 #include "casteljau/core/affine.hpp"
@@ -23,6 +26,7 @@
 #include "casteljau/curves/bezier.hpp"
 #include "casteljau/curves/bspline.hpp"
 #include "casteljau/curves/concepts.hpp"
+#include "casteljau/curves/conics.hpp"
 #include "casteljau/curves/path.hpp"
 #include "casteljau/curves/piecewise.hpp"
 #include "casteljau/curves/polyline.hpp"

@@ -154,7 +154,7 @@ AnySplit split(const AnyCurve& c, double t) {
           auto halves = x.split(t);
           return {AnyCurve(std::move(halves.left)), AnyCurve(std::move(halves.right))};
         } else {
-          throw InvalidArgument("curve.type", "split needs a bezier or rational_bezier curve, got a " + std::string(type_name(c)) +
+          throw InvalidArgument("curve.type", "split needs a bezier, rational_bezier, bspline or nurbs curve, got a " + std::string(type_name(c)) +
                                                   (std::is_same_v<C, Path<double, C::dimension>> ? " (split its segments instead)" : ""));
         }
       },
@@ -178,7 +178,7 @@ AnyCurve elevate(const AnyCurve& c, int times) {
             throw;
           }
         } else {
-          throw InvalidArgument("curve.type", "elevate needs a bezier or rational_bezier curve, got a " + std::string(type_name(c)));
+          throw InvalidArgument("curve.type", "elevate needs a bezier, rational_bezier, bspline or nurbs curve, got a " + std::string(type_name(c)));
         }
       },
       c);

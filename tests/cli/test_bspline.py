@@ -210,11 +210,12 @@ class BSplineErrorsTest(CliTest):
         self.bad_curve(c(weights=[1, 1]), "curve.weights", "one weight per control point")
         self.bad_curve({"type": "nurbs", "degree": 2, "knots": [0, 0, 0, 1, 1, 1], "points": self.P}, "curve.weights", "missing")
 
-    def test_split_and_elevate_not_yet(self):
+    def test_split_needs_an_inner_parameter(self):
+        # split and elevate of bspline and nurbs: tests/cli/test_knots.py. A B-spline half
+        # keeps its parameter, so a split at a domain end (an empty half) is refused.
         c = {"type": "bspline", "degree": 2, "knots": [0, 0, 0, 1, 1, 1], "points": self.P}
-        self.bad("split", {"curve": c, "t": 0.5}, "curve.type", contains="bspline")
-        self.bad("elevate", {"curve": c, "times": 1}, "curve.type", contains="bspline")
-
+        self.bad("split", {"curve": c, "t": 1}, "t", contains="strictly inside")
+        self.bad("split", {"curve": c, "t": 0}, "t", contains="strictly inside")
 
 if __name__ == "__main__":
     test_cli.BINARY = os.path.abspath(sys.argv.pop(1))

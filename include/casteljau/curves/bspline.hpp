@@ -10,32 +10,12 @@
 #include <vector>
 
 #include "casteljau/basis/bspline_basis.hpp"
+#include "casteljau/basis/knot_ops.hpp"
 #include "casteljau/curves/piecewise.hpp"
 
 namespace casteljau {
 
 namespace detail {
-
-/// The blossom of span s of the B-spline (U, p, P) at the p arguments u[0..p-1] by de
-/// Boor's recurrence with one argument per level [Ramshaw87; PT97, A3.1 for equal
-/// arguments]: d_j = P_{s-p+j}; at level r, d_j = lerp(d_{j-1}, d_j, (u_r - U_i) /
-/// (U_{i+p+1-r} - U_i)), i = s - p + j. Symmetric in its arguments; equal arguments u
-/// give the curve point. Every denominator is a knot difference >= U_{s+1} - U_s > 0.
-/// Convex combinations for arguments in [U_s, U_{s+1}]. Cost O(p^2).
-template <class V, class T>
-V de_boor_blossom(std::span<const T> U, int p, std::size_t s, std::span<const V> P, std::span<const T> u) {
-  Scratch<V> scratch(static_cast<std::size_t>(p) + 1);
-  V* d = scratch.data();
-  for (int j = 0; j <= p; ++j) d[j] = P[s - static_cast<std::size_t>(p) + static_cast<std::size_t>(j)];
-  for (int r = 1; r <= p; ++r) {
-    for (int j = p; j >= r; --j) {
-      const std::size_t i = s - static_cast<std::size_t>(p) + static_cast<std::size_t>(j);
-      const T alpha = (u[static_cast<std::size_t>(r - 1)] - U[i]) / (U[i + static_cast<std::size_t>(p + 1 - r)] - U[i]);
-      d[j] = lerp(d[j - 1], d[j], alpha);
-    }
-  }
-  return d[p];
-}
 
 /// The Bézier control points of span s: the blossom at (a^(p-j), b^j), j = 0..p, with
 /// [a, b] = [U_s, U_{s+1}] [Ramshaw87; Farin02, 8.4]. Exact up to rounding: the piece is
@@ -64,6 +44,14 @@ std::vector<std::size_t> nonempty_spans(std::span<const T> U, int p) {
 }
 
 template <class V>
+bool all_finite_point(const V& v) {
+  for (int d = 0; d < V::dimension; ++d) {
+    if (!std::isfinite(v[d])) return false;
+  }
+  return true;
+}
+
+template <class V>
 void require_representable(const V& v, double u, const char* what) {
   for (int d = 0; d < V::dimension; ++d) {
     if (!std::isfinite(v[d])) {
@@ -72,7 +60,238 @@ void require_representable(const V& v, double u, const char* what) {
   }
 }
 
+/// Checks that u may be inserted `times` more times into the knots U of degree p: u
+/// finite and in the domain [U_p, U_n] (InvalidArgument "knot"), times >= 1 and the
+/// multiplicity afterwards at most p (InvalidArgument "times").
+template <class T>
+void check_insertion(std::span<const T> U, int p, T u, int times) {
+  require_finite(u, "knot");
+  const std::size_t n = U.size() - static_cast<std::size_t>(p) - 1;
+  const T a = U[static_cast<std::size_t>(p)], b = U[n];
+  if (u < a || u > b) {
+    throw InvalidArgument("knot", "a knot to insert must lie in the domain [" + format_number(a) + ", " + format_number(b) +
+                                      "], got " + format_number(u));
+  }
+  if (times < 1) throw InvalidArgument("times", "insertion count must be >= 1, got " + std::to_string(times));
+  const std::size_t s = knot_multiplicity<T>(U, u);
+  if (s + static_cast<std::size_t>(times) > static_cast<std::size_t>(p)) {
+    throw InvalidArgument("times", "knot " + format_number(u) + " has multiplicity " + std::to_string(s) + "; inserting it " +
+                                       std::to_string(times) + " more times would exceed the degree " + std::to_string(p));
+  }
+}
+
+/// f with u inserted `times` times (checked as check_insertion says).
+template <class T, class V>
+KnotForm<T, V> insert_knot(KnotForm<T, V> f, T u, int times) {
+  check_insertion<T>(f.U, f.p, u, times);
+  for (int j = 0; j < times; ++j) f = insert_knot_once(f, u);
+  return f;
+}
+
+/// f with the sorted knots X inserted (each in the domain, multiplicities at most p after;
+/// InvalidArgument naming "knots[j]" of X otherwise).
+template <class T, class V>
+KnotForm<T, V> refine(const KnotForm<T, V>& f, std::span<const T> X) {
+  const std::size_t n = f.U.size() - static_cast<std::size_t>(f.p) - 1;
+  for (std::size_t j = 0; j < X.size(); ++j) {
+    const std::string where = "knots[" + std::to_string(j) + "]";
+    require_finite(X[j], where);
+    if (j > 0 && X[j] < X[j - 1]) throw InvalidArgument(where, "knots to insert must be sorted");
+    if (X[j] < f.U[static_cast<std::size_t>(f.p)] || X[j] > f.U[n]) {
+      throw InvalidArgument(where, "a knot to insert must lie in the domain, got " + format_number(X[j]));
+    }
+    const std::size_t s = knot_multiplicity<T>(f.U, X[j]) + knot_multiplicity<T>(X, X[j]);
+    if (s > static_cast<std::size_t>(f.p)) {
+      throw InvalidArgument(where, "knot " + format_number(X[j]) + " would have multiplicity " + std::to_string(s) +
+                                       ", more than the degree " + std::to_string(f.p));
+    }
+  }
+  return refine_knots<T, V>(f, X);
+}
+
+/// The halves of f at u strictly inside the domain (InvalidArgument "t" otherwise): u is
+/// inserted up to multiplicity p [PT97, §5.3: splitting by knot insertion], the left half
+/// keeps the knots up to u plus one more u (clamped at u), the right half one u plus the
+/// rest. Both keep their parameter: left on [U_p, u], right on [u, U_n].
+template <class T, class V>
+std::pair<KnotForm<T, V>, KnotForm<T, V>> split(const KnotForm<T, V>& f, T u) {
+  require_finite(u, "t");
+  const std::size_t n = f.U.size() - static_cast<std::size_t>(f.p) - 1;
+  const T a = f.U[static_cast<std::size_t>(f.p)], b = f.U[n];
+  if (!(u > a && u < b)) {
+    throw InvalidArgument("t", "a B-spline splits at a parameter strictly inside its domain (" + format_number(a) + ", " +
+                                   format_number(b) + "), got " + format_number(u));
+  }
+  const std::size_t s = knot_multiplicity<T>(f.U, u);
+  KnotForm<T, V> g = f;
+  for (std::size_t j = s; j < static_cast<std::size_t>(f.p); ++j) g = insert_knot_once(g, u);
+  const std::size_t j0 = static_cast<std::size_t>(std::lower_bound(g.U.begin(), g.U.end(), u) - g.U.begin());
+  const std::size_t p = static_cast<std::size_t>(f.p);
+  KnotForm<T, V> left{f.p, std::vector<T>(g.U.begin(), g.U.begin() + static_cast<std::ptrdiff_t>(j0 + p)),
+                      std::vector<V>(g.P.begin(), g.P.begin() + static_cast<std::ptrdiff_t>(j0))};
+  left.U.push_back(u);
+  KnotForm<T, V> right{f.p, {u}, std::vector<V>(g.P.begin() + static_cast<std::ptrdiff_t>(j0 - 1), g.P.end())};
+  right.U.insert(right.U.end(), g.U.begin() + static_cast<std::ptrdiff_t>(j0), g.U.end());
+  return {std::move(left), std::move(right)};
+}
+
+/// The same curve with new outer knots: L (p knots <= U_p) before the domain knots
+/// U_p..U_n and R (p knots >= U_n) after them; the p - 1 points at each end whose knot
+/// windows change are the blossoms of the end pieces (reblossom_ends). Clamping
+/// (L = U_p repeated) and unclamping use it [PT97, §12.2 does the same by knot insertion
+/// and its inverse]. The caller validates the result (a BSpline constructor).
+template <class T, class V>
+KnotForm<T, V> with_outer_knots(const KnotForm<T, V>& f, const std::vector<T>& L, const std::vector<T>& R) {
+  const std::size_t p = static_cast<std::size_t>(f.p);
+  const std::size_t n = f.P.size();
+  std::vector<T> Ub(L);
+  Ub.insert(Ub.end(), f.U.begin() + static_cast<std::ptrdiff_t>(p), f.U.begin() + static_cast<std::ptrdiff_t>(n) + 1);
+  Ub.insert(Ub.end(), R.begin(), R.end());
+  std::vector<V> Q = reblossom_ends<T, V>(f, Ub, p - 1, p - 1, f.P);
+  return {f.p, std::move(Ub), std::move(Q)};
+}
+
+/// Degree elevation by r >= 1, by decomposition, elevation and recomposition [PT97, §5.5
+/// and A5.9, which interleaves the same three steps]: the exact Bézier pieces of the
+/// domain's spans are elevated (Bezier::elevate, Forrest's equations), joined into the
+/// C^0 B-spline of degree q = p + r (every interior knot q times), and each interior knot
+/// of multiplicity m in U is removed q - (m + r) = p - m times (remove_knot_once: exact,
+/// since the elevated curve is still C^(p-m) there). Ends: a clamped end stays clamped;
+/// an unclamped one gets the outer knots U_0 (r + 1 times), U_1, .., U_{p-1} and its end
+/// points by blossoming (with_outer_knots), unless keep_unclamped_ends is false (then
+/// both ends are clamped). Cost O(spans (p + r) p + p^3) plus, for an
+/// unclamped end, O((p + r)^3).
+template <class T, int E>
+KnotForm<T, Point<T, E>> elevate(const KnotForm<T, Point<T, E>>& f, int r, bool keep_unclamped_ends = true) {
+  using V = Point<T, E>;
+  const int p = f.p, q = p + r;
+  const std::span<const T> U(f.U);
+  const std::size_t n = f.P.size(), m = f.U.size() - 1;
+  const T a = U[static_cast<std::size_t>(p)], b = U[n];
+  const std::vector<std::size_t> spans = nonempty_spans(U, p);
+  // The C^0 form: every piece elevated, joined at the breaks (q copies of each).
+  std::vector<T> U0(static_cast<std::size_t>(q) + 1, a);
+  std::vector<V> P0;
+  for (std::size_t k = 0; k < spans.size(); ++k) {
+    const Bezier<T, E> piece(span_bezier_points<V, T>(U, p, spans[k], f.P));
+    const std::vector<V> Q = piece.elevate(r).points();
+    if (k == 0) {
+      P0.insert(P0.end(), Q.begin(), Q.end());
+    } else {
+      P0.back() = lerp(P0.back(), Q.front(), T(0.5));  // the same point from both sides, up to rounding
+      P0.insert(P0.end(), Q.begin() + 1, Q.end());
+      U0.insert(U0.end(), static_cast<std::size_t>(q), U[spans[k]]);
+    }
+  }
+  U0.insert(U0.end(), static_cast<std::size_t>(q) + 1, b);
+  // Knot removal, left to right, on a window W of the C^0 form that slides along: a
+  // removal at x reads and changes only points and knots within q + 1 indices of the run
+  // of x (and p removals there reach p further), so what lies more than 2 q + 2 left of
+  // the run is final and moves to the result. W keeps the pairing of the whole form
+  // (knot i with point i, q + 1 more knots than points), so remove_knot_once works on it
+  // as on a whole curve. Cost O(|P0| + removals q) instead of O(|P0| removals).
+  KnotForm<T, V> g{q, {}, {}}, W{q, {}, {}};
+  std::size_t next = 0;  // next point (and knot) of the C^0 form to move into W
+  const auto extend_to = [&](std::size_t knots_needed) {
+    while (W.U.size() < knots_needed && next + static_cast<std::size_t>(q) < U0.size()) {
+      if (next < P0.size()) W.P.push_back(P0[next]);
+      // Knot index = point index + (q + 1): the first q + 1 knots come with the first point.
+      if (next == 0) {
+        W.U.insert(W.U.end(), U0.begin(), U0.begin() + q + 1);
+        next = 1;
+        continue;
+      }
+      W.U.push_back(U0[next + static_cast<std::size_t>(q)]);
+      ++next;
+    }
+  };
+  extend_to(0);
+  extend_to(1);
+  for (std::size_t k = 1; k < spans.size(); ++k) {
+    const T x = U[spans[k]];
+    const int mult = static_cast<int>(knot_multiplicity<T>(U, x));
+    // x's run and q + 1 knots after it.
+    std::size_t after = static_cast<std::size_t>(std::upper_bound(W.U.begin(), W.U.end(), x) - W.U.begin());
+    while (after == W.U.size() || W.U.size() < after + static_cast<std::size_t>(q) + 1) {
+      const std::size_t before = W.U.size();
+      extend_to(before + 1);
+      if (W.U.size() == before) break;
+      after = static_cast<std::size_t>(std::upper_bound(W.U.begin(), W.U.end(), x) - W.U.begin());
+    }
+    for (int j = 0; j < p - mult; ++j) W = remove_knot_once(W, x);
+    const std::size_t run_end = static_cast<std::size_t>(std::upper_bound(W.U.begin(), W.U.end(), x) - W.U.begin());
+    const std::size_t reach = 2 * static_cast<std::size_t>(q) + 2;
+    if (run_end > reach) {
+      const std::size_t c = std::min(run_end - reach, W.P.size());
+      g.U.insert(g.U.end(), W.U.begin(), W.U.begin() + static_cast<std::ptrdiff_t>(c));
+      g.P.insert(g.P.end(), W.P.begin(), W.P.begin() + static_cast<std::ptrdiff_t>(c));
+      W.U.erase(W.U.begin(), W.U.begin() + static_cast<std::ptrdiff_t>(c));
+      W.P.erase(W.P.begin(), W.P.begin() + static_cast<std::ptrdiff_t>(c));
+    }
+  }
+  extend_to(U0.size() + 1);
+  g.U.insert(g.U.end(), W.U.begin(), W.U.end());
+  g.P.insert(g.P.end(), W.P.begin(), W.P.end());
+  const bool clamped_left = U[0] == a || !keep_unclamped_ends, clamped_right = U[m] == b || !keep_unclamped_ends;
+  if (clamped_left && clamped_right) return g;
+  std::vector<T> L(static_cast<std::size_t>(q), a), R(static_cast<std::size_t>(q), b);
+  if (!clamped_left) {
+    for (int j = 0; j < r; ++j) L[static_cast<std::size_t>(j)] = U[0];
+    for (int j = 0; j < p; ++j) L[static_cast<std::size_t>(r + j)] = U[static_cast<std::size_t>(j)];
+  }
+  if (!clamped_right) {
+    for (int j = 0; j < p; ++j) R[static_cast<std::size_t>(j)] = U[n + 1 + static_cast<std::size_t>(j)];
+    for (int j = 0; j < r; ++j) R[static_cast<std::size_t>(p + j)] = U[m];
+  }
+  return with_outer_knots<T, V>(g, L, R);
+}
+
+/// Outer knots for unclamping: p knots spaced by the length h of the end span, a - p h ..
+/// a - h on the left and b + h .. b + p h on the right.
+template <class T>
+std::pair<std::vector<T>, std::vector<T>> unclamped_outer_knots(std::span<const T> U, int p) {
+  const std::vector<std::size_t> spans = nonempty_spans(U, p);
+  const std::size_t n = U.size() - static_cast<std::size_t>(p) - 1;
+  const T a = U[static_cast<std::size_t>(p)], b = U[n];
+  const T ha = U[spans.front() + 1] - U[spans.front()], hb = U[spans.back() + 1] - U[spans.back()];
+  std::vector<T> L(static_cast<std::size_t>(p)), R(static_cast<std::size_t>(p));
+  for (int k = 1; k <= p; ++k) {
+    L[static_cast<std::size_t>(p - k)] = a - static_cast<T>(k) * ha;
+    R[static_cast<std::size_t>(k - 1)] = b + static_cast<T>(k) * hb;
+  }
+  return {std::move(L), std::move(R)};
+}
+
+/// Validates a knot to remove: finite, a knot strictly inside the domain (InvalidArgument
+/// "knot"), times >= 1 and at most its multiplicity ("times"), tolerance > 0 and finite
+/// ("tolerance").
+template <class T>
+void check_removal(std::span<const T> U, int p, T u, int times, T tolerance) {
+  require_finite(u, "knot");
+  const std::size_t n = U.size() - static_cast<std::size_t>(p) - 1;
+  const T a = U[static_cast<std::size_t>(p)], b = U[n];
+  const std::size_t s = knot_multiplicity<T>(U, u);
+  if (!(u > a && u < b) || s == 0) {
+    throw InvalidArgument("knot", format_number(u) + " is not a knot strictly inside the domain [" + format_number(a) + ", " +
+                                      format_number(b) + "]");
+  }
+  if (times < 1) throw InvalidArgument("times", "removal count must be >= 1, got " + std::to_string(times));
+  if (static_cast<std::size_t>(times) > s) {
+    throw InvalidArgument("times", "knot " + format_number(u) + " has multiplicity " + std::to_string(s) + ", cannot remove it " +
+                                       std::to_string(times) + " times");
+  }
+  require_finite(tolerance, "tolerance");
+  if (!(tolerance > 0)) throw InvalidArgument("tolerance", "tolerance must be > 0, got " + format_number(tolerance));
+}
+
 }  // namespace detail
+
+/// The result of a knot removal: the curve and how many times the knot was removed.
+template <class C>
+struct KnotRemoval {
+  C curve;
+  int removed = 0;
+};
 
 /// A B-spline curve C(u) = sum_i N_{i,p}(u) P_i with degree p >= 1, knots U_0..U_{n+p}
 /// and control points P_0..P_{n-1}, on the domain [U_p, U_n]. Invariants (checked in the
@@ -161,6 +380,83 @@ class BSpline {
   /// The box of the control points: contains the curve over its domain.
   [[nodiscard]] Box<T, D> control_bounds() const { return box_of<T, D>(P_); }
 
+  /// The degree, knots and points as plain data (basis/knot_ops.hpp).
+  [[nodiscard]] KnotForm<T, PointType> form() const { return {p_, U_, P_}; }
+  /// The curve of plain data, validated as by the constructor.
+  [[nodiscard]] static BSpline from_form(KnotForm<T, PointType> f) { return BSpline(f.p, std::move(f.U), std::move(f.P)); }
+
+  /// The same curve with u inserted `times` times (Boehm's algorithm, [PT97, A5.1] one
+  /// copy at a time): u in the domain (InvalidArgument "knot"), multiplicity afterwards at
+  /// most p ("times"). New points are convex combinations: the curve moves by a few eps.
+  [[nodiscard]] BSpline insert_knot(T u, int times = 1) const { return from_form(detail::insert_knot<T, PointType>(form(), u, times)); }
+
+  /// The same curve with the sorted knots X inserted at once [PT97, A5.4].
+  [[nodiscard]] BSpline refine_knots(std::span<const T> X) const { return from_form(detail::refine<T, PointType>(form(), X)); }
+
+  /// Removes the interior knot u up to `times` times while the curve moves by at most
+  /// `tolerance` (an absolute distance, over the whole domain): each extra removal is
+  /// computed from the previous one [PT97, eq. 5.28-5.29, A5.8], and accepted only if the
+  /// bound of removal_deviation (re-insert the knot, compare the control points: a
+  /// guaranteed bound, not an estimate) against the original curve is within tolerance.
+  /// Stops at the first removal refused. Errors: see detail::check_removal.
+  [[nodiscard]] KnotRemoval<BSpline> remove_knot(T u, int times = 1, T tolerance = T(1e-12)) const {
+    detail::check_removal<T>(U_, p_, u, times, tolerance);
+    const KnotForm<T, PointType> f = form();
+    KnotForm<T, PointType> best = f, g = f;
+    int removed = 0;
+    for (int j = 1; j <= times; ++j) {
+      g = remove_knot_once(g, u);
+      bool finite = true;
+      for (const auto& q : g.P) finite = finite && detail::all_finite_point(q);
+      if (!finite || !(removal_deviation(f, g, u, j) <= tolerance)) break;
+      best = g;
+      removed = j;
+    }
+    return {from_form(std::move(best)), removed};
+  }
+
+  /// The halves at u strictly inside the domain, each keeping its parameter (left on
+  /// [U_p, u], right on [u, U_n]), by knot insertion up to multiplicity p.
+  [[nodiscard]] Split<BSpline> split(T u) const {
+    auto [l, r] = detail::split<T, PointType>(form(), u);
+    return {from_form(std::move(l)), from_form(std::move(r))};
+  }
+
+  /// The same curve at degree p + r (r >= 0; InvalidArgument "r" otherwise), every
+  /// interior knot one r more times (continuity kept); see detail::elevate for the method.
+  [[nodiscard]] BSpline elevate(int r = 1) const {
+    if (r < 0) throw InvalidArgument("r", "degree elevation count must be >= 0, got " + std::to_string(r));
+    if (r == 0) return *this;
+    return from_form(detail::elevate<T, D>(form(), r));
+  }
+
+  /// Clamped at both ends: the end knots repeated p + 1 times, so the curve starts at the
+  /// first control point and ends at the last. The same curve on the same domain.
+  [[nodiscard]] BSpline clamp() const {
+    const Interval<T> d = domain();
+    return from_form(detail::with_outer_knots<T, PointType>(form(), std::vector<T>(static_cast<std::size_t>(p_), d.lo),
+                                                            std::vector<T>(static_cast<std::size_t>(p_), d.hi)));
+  }
+
+  /// Unclamped: the outer knots of detail::unclamped_outer_knots (spaced by the end spans),
+  /// the same curve on the same domain. Blossoming beyond the domain can amplify rounding
+  /// by the ratio of those spacings; the end points become ordinary control points.
+  [[nodiscard]] BSpline unclamp() const {
+    const auto [L, R] = detail::unclamped_outer_knots<T>(U_, p_);
+    return from_form(detail::with_outer_knots<T, PointType>(form(), L, R));
+  }
+
+  /// True when both end knots are repeated p + 1 times.
+  [[nodiscard]] bool is_clamped() const { return U_.front() == domain().lo && U_.back() == domain().hi; }
+
+  /// The Bézier curve as a B-spline: degree n, knots 0 (n + 1 times) and 1 (n + 1 times).
+  [[nodiscard]] static BSpline from_bezier(const Bezier<T, D>& c) {
+    const std::size_t k = c.points().size();
+    std::vector<T> U(k, T(0));
+    U.insert(U.end(), k, T(1));
+    return BSpline(c.degree(), std::move(U), c.points());
+  }
+
   friend bool operator==(const BSpline&, const BSpline&) = default;
 
  private:
@@ -246,6 +542,97 @@ class Nurbs {
 
   /// The box of the control points: contains the curve over its domain (weights > 0).
   [[nodiscard]] Box<T, D> control_bounds() const { return box_of<T, D>(P_); }
+
+  /// Every knot operation acts on the homogeneous B-spline (w_i P_i, w_i) and projects
+  /// back [PT97, §5.2-5.5: "apply the nonrational algorithm to the P_i^w"]. Weights are
+  /// returned at the scale of this curve's weights (the internal power of two undone).
+  [[nodiscard]] Nurbs insert_knot(T u, int times = 1) const {
+    return from_homogeneous(detail::insert_knot<T, Point<T, D + 1>>(h_.form(), u, times));
+  }
+  [[nodiscard]] Nurbs refine_knots(std::span<const T> X) const {
+    return from_homogeneous(detail::refine<T, Point<T, D + 1>>(h_.form(), X));
+  }
+  [[nodiscard]] Split<Nurbs> split(T u) const {
+    auto [l, r] = detail::split<T, Point<T, D + 1>>(h_.form(), u);
+    return {from_homogeneous(std::move(l)), from_homogeneous(std::move(r))};
+  }
+  [[nodiscard]] Nurbs elevate(int r = 1) const {
+    if (r < 0) throw InvalidArgument("r", "degree elevation count must be >= 0, got " + std::to_string(r));
+    if (r == 0) return *this;
+    KnotForm<T, Point<T, D + 1>> g = detail::elevate<T, D + 1>(h_.form(), r);
+    for (const auto& q : g.P) {
+      // The outer points of an unclamped end can need a weight <= 0, which a Nurbs cannot
+      // hold: then the ends are clamped (the same curve on the domain, and the same end
+      // pieces beyond it).
+      if (!(q[D] > 0)) return from_homogeneous(detail::elevate<T, D + 1>(h_.form(), r, false));
+    }
+    return from_homogeneous(std::move(g));
+  }
+  [[nodiscard]] Nurbs clamp() const { return from_homogeneous(h_.clamp().form()); }
+  /// Unclamping may make a weight non-positive (InvalidArgument "weights[i]").
+  [[nodiscard]] Nurbs unclamp() const { return from_homogeneous(h_.unclamp().form()); }
+  [[nodiscard]] bool is_clamped() const { return h_.is_clamped(); }
+
+  /// Knot removal as BSpline::remove_knot, on the homogeneous points, with the bound of
+  /// [PT97, eq. 5.30]: a homogeneous deviation d moves the Cartesian curve by at most
+  /// d sqrt(1 + R^2) / w_min, where R bounds |C - c| for the centre c of the control box
+  /// (the homogeneous points are taken relative to c, which the curve does not notice) and
+  /// w_min is the smallest weight. A removal that makes a weight non-positive is refused.
+  [[nodiscard]] KnotRemoval<Nurbs> remove_knot(T u, int times = 1, T tolerance = T(1e-12)) const {
+    detail::check_removal<T>(knots(), degree(), u, times, tolerance);
+    const Box<T, D> box = control_bounds();
+    PointType c;
+    for (int d = 0; d < D; ++d) c[d] = box.lo[d] / 2 + box.hi[d] / 2;
+    KnotForm<T, Point<T, D + 1>> f = h_.form();
+    for (auto& q : f.P)
+      for (int d = 0; d < D; ++d) q[d] -= q[D] * c[d];  // w (P - c)
+    T wmin = f.P.front()[D];
+    T radius = 0;
+    for (std::size_t i = 0; i < f.P.size(); ++i) {
+      wmin = std::min(wmin, f.P[i][D]);
+      radius = std::max(radius, norm(P_[i] - c));
+    }
+    KnotForm<T, Point<T, D + 1>> best = f, g = f;
+    int removed = 0;
+    for (int j = 1; j <= times; ++j) {
+      g = remove_knot_once(g, u);
+      bool ok = true;
+      T r = radius;
+      for (const auto& q : g.P) {
+        ok = ok && detail::all_finite_point(q) && q[D] > 0;
+        if (ok) {
+          T s2 = 0;
+          for (int d = 0; d < D; ++d) s2 += (q[d] / q[D]) * (q[d] / q[D]);
+          r = std::max(r, std::sqrt(s2));
+        }
+      }
+      if (!ok) break;
+      const T bound = removal_deviation(f, g, u, j) * std::sqrt(1 + r * r) / wmin;
+      if (!(bound <= tolerance)) break;
+      best = g;
+      removed = j;
+    }
+    for (auto& q : best.P)
+      for (int d = 0; d < D; ++d) q[d] += q[D] * c[d];
+    return {from_homogeneous(std::move(best)), removed};
+  }
+
+  /// The NURBS of a homogeneous B-spline (w_i P_i, w_i) at this curve's weight scale:
+  /// P_i = (w_i P_i) / w_i. Throws InvalidArgument naming "weights[i]" for a weight <= 0.
+  [[nodiscard]] Nurbs from_homogeneous(KnotForm<T, Point<T, D + 1>> f) const {
+    const T scale = w_.front() / h_.points().front()[D];  // a power of two
+    std::vector<PointType> P(f.P.size());
+    std::vector<T> w(f.P.size());
+    for (std::size_t i = 0; i < f.P.size(); ++i) {
+      const T wi = f.P[i][D];
+      if (!(wi > 0)) {
+        throw InvalidArgument("weights[" + std::to_string(i) + "]", "the operation gives a weight <= 0 (" + detail::format_number(wi * scale) + ")");
+      }
+      for (int d = 0; d < D; ++d) P[i][d] = f.P[i][d] / wi;
+      w[i] = wi * scale;
+    }
+    return Nurbs(f.p, std::move(f.U), std::move(P), std::move(w));
+  }
 
   friend bool operator==(const Nurbs&, const Nurbs&) = default;
 

@@ -115,9 +115,10 @@ struct AnyBox {
 using AnyPieces = typename detail::AnyCurveOf<CurveTypeList<Pieces>, std::make_integer_sequence<int, max_dimension>>::type;
 [[nodiscard]] AnyPieces pieces(const AnyCurve& c);
 
-/// The halves of a curve split at t (types with a split member: bezier, rational_bezier).
-/// Throws InvalidArgument("curve.type", ...) for other types, ("t", ...) for t outside the
-/// domain.
+/// The halves of a curve split at t (types with a split member: bezier, rational_bezier,
+/// bspline and nurbs, whose halves keep their parameter). Throws InvalidArgument
+/// ("curve.type", ...) for other types, ("t", ...) for t outside the domain (for bspline
+/// and nurbs: not strictly inside).
 struct AnySplit {
   AnyCurve left;
   AnyCurve right;

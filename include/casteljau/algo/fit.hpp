@@ -1,0 +1,393 @@
+// Fitting B-spline curves to points [PT97, chapter 9]: global interpolation with optional
+// end derivatives, closed (periodic) interpolation, least-squares approximation with a
+// given number of control points (end points interpolated), and approximation to a
+// tolerance with the fewest control points found. Sparse (banded) linear algebra with
+// Eigen. Not part of casteljau.hpp: it brings Eigen's sparse solvers; include it where
+// fitting is used (the io layer compiles it once).
+#pragma once
+
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
+#include <Eigen/SparseLU>
+#include <Eigen/SparseQR>
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "casteljau/curves/bspline.hpp"
+
+namespace casteljau {
+
+/// How data points get their parameters: steps of 1 (uniform), |Q_{k+1} - Q_k| (chord)
+/// or its square root (centripetal) [PT97, eq. 9.4-9.6; Lee89], divided by the total so
+/// that they run from 0 to 1.
+enum class Parametrization { uniform, chord, centripetal };
+
+/// Parameters 0 = t_0 < ... < t_last = 1 for the points Q (for a closed fit one more, for
+/// the closing edge Q_last -> Q_0). Errors: "points[k]" when a point equals the one before
+/// under chord or centripetal (a zero step), "points" when all steps are zero.
+template <class T, int D>
+std::vector<T> fit_parameters(const std::vector<Point<T, D>>& Q, Parametrization kind, bool closed) {
+  const std::size_t m = Q.size();
+  const std::size_t steps = closed ? m : m - 1;
+  std::vector<T> t(steps + 1, T(0));
+  for (std::size_t k = 1; k <= steps; ++k) {
+    const T len = distance(Q[k % m], Q[k - 1]);
+    T step = 1;
+    if (kind != Parametrization::uniform) {
+      if (!(len > 0)) {
+        throw InvalidArgument("points[" + std::to_string(k % m) + "]",
+                              std::string("equals the point before it; the ") + (kind == Parametrization::chord ? "chord" : "centripetal") +
+                                  " parametrization needs distinct consecutive points");
+      }
+      step = kind == Parametrization::chord ? len : std::sqrt(len);
+    }
+    t[k] = t[k - 1] + step;
+  }
+  const T total = t.back();
+  if (!(total > 0) || !std::isfinite(total)) throw InvalidArgument("points", "the points give no usable parametrization");
+  for (auto& x : t) x /= total;
+  t.back() = 1;
+  return t;
+}
+
+/// A fitted curve and its error: the largest |C(t_k) - Q_k| over the data.
+template <class T, int D>
+struct FitResult {
+  BSpline<T, D> curve;
+  T max_error;
+};
+
+namespace detail {
+
+template <class T, int D>
+using Rhs = Eigen::Matrix<T, Eigen::Dynamic, D>;
+
+/// The non-zero basis functions (derivative order k) at u on span s of U, as (column, value).
+template <class T>
+void basis_row(std::span<const T> U, int p, T u, int k, std::vector<std::pair<std::size_t, T>>& row) {
+  row.clear();
+  const std::size_t s = find_span<T>(U, p, u);
+  const auto ders = basis_function_derivatives<T>(U, p, s, u, k);
+  for (int r = 0; r <= p; ++r) row.emplace_back(s - static_cast<std::size_t>(p) + static_cast<std::size_t>(r), ders[static_cast<std::size_t>(k)][static_cast<std::size_t>(r)]);
+}
+
+template <class T, int D>
+T max_fit_error(const BSpline<T, D>& c, const std::vector<Point<T, D>>& Q, const std::vector<T>& t) {
+  T e = 0;
+  for (std::size_t k = 0; k < Q.size(); ++k) e = std::max(e, distance(c(t[k]), Q[k]));
+  return e;
+}
+
+template <class T, int D>
+std::vector<Point<T, D>> to_points(const Rhs<T, D>& x) {
+  std::vector<Point<T, D>> P(static_cast<std::size_t>(x.rows()));
+  for (std::size_t i = 0; i < P.size(); ++i)
+    for (int d = 0; d < D; ++d) P[i][d] = x(static_cast<Eigen::Index>(i), d);
+  return P;
+}
+
+inline void require_solved(Eigen::ComputationInfo info, const char* what) {
+  if (info != Eigen::Success) throw NumericalError(std::string("fit: the ") + what + " system is singular");
+}
+
+}  // namespace detail
+
+/// Global interpolation [PT97, A9.1]: the clamped degree-p B-spline with C(t_k) = Q_k,
+/// knots by averaging the parameters (eq. 9.8), and optionally C'(0) = d0, C'(1) = d1
+/// (derivatives with respect to the parameter on [0, 1]; [PT97, §9.2.2]: each adds a
+/// control point, and the averaging runs over the parameters with t_0 or t_last
+/// repeated, which is eq. 9.22 when both are given). The system is banded (bandwidth p)
+/// and solved by sparse LU. Requires p >= 1 (p >= 2 with a derivative), at least p + 1
+/// conditions, parameters strictly increasing. Cost O(m p^2).
+template <class T, int D>
+BSpline<T, D> interpolate(const std::vector<Point<T, D>>& Q, int p, const std::vector<T>& t, const std::optional<Vector<T, D>>& d0,
+                          const std::optional<Vector<T, D>>& d1) {
+  std::vector<T> ext;
+  ext.push_back(t.front());
+  if (d0) ext.push_back(t.front());
+  ext.insert(ext.end(), t.begin() + 1, t.end() - 1);
+  if (d1) ext.push_back(t.back());
+  ext.push_back(t.back());
+  const std::size_t N = ext.size();
+  const std::size_t P = static_cast<std::size_t>(p);
+  std::vector<T> U(P + 1, T(0));
+  for (std::size_t j = 1; j + P < N; ++j) {
+    T s = 0;
+    for (std::size_t i = j; i < j + P; ++i) s += ext[i];
+    U.push_back(s / static_cast<T>(p));
+  }
+  U.insert(U.end(), P + 1, T(1));
+  Eigen::SparseMatrix<T> A(static_cast<Eigen::Index>(N), static_cast<Eigen::Index>(N));
+  std::vector<Eigen::Triplet<T>> entries;
+  detail::Rhs<T, D> b(static_cast<Eigen::Index>(N), D);
+  std::vector<std::pair<std::size_t, T>> row;
+  std::size_t r = 0;
+  const auto add = [&](T u, int k, const auto& value) {
+    detail::basis_row<T>(U, p, u, k, row);
+    for (const auto& [col, v] : row)
+      if (v != 0) entries.emplace_back(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(col), v);
+    for (int d = 0; d < D; ++d) b(static_cast<Eigen::Index>(r), d) = value[d];
+    ++r;
+  };
+  add(t.front(), 0, Q.front());
+  if (d0) add(t.front(), 1, *d0);
+  for (std::size_t k = 1; k + 1 < Q.size(); ++k) add(t[k], 0, Q[k]);
+  if (d1) add(t.back(), 1, *d1);
+  add(t.back(), 0, Q.back());
+  A.setFromTriplets(entries.begin(), entries.end());
+  Eigen::SparseLU<Eigen::SparseMatrix<T>> lu;
+  lu.compute(A);
+  detail::require_solved(lu.info(), "interpolation");
+  const detail::Rhs<T, D> x = lu.solve(b);
+  detail::require_solved(lu.info(), "interpolation");
+  return BSpline<T, D>(p, std::move(U), detail::to_points<T, D>(x));
+}
+
+/// Closed (periodic) interpolation through Q_0..Q_{L-1} with the closing parameters t
+/// (L + 1 values, t_L = 1 for the return to Q_0): the periodic degree-p spline, C^(p-1)
+/// everywhere, with breakpoints at the parameters for odd p and halfway between them for
+/// even p (where knots at the data can make the cyclic system singular) [deBoor78,
+/// ch. XIII; PT97, §9.2.4 for the knot choice]. The cyclic banded system is solved by
+/// sparse LU. The result is written as an unclamped B-spline on [0, 1] (0 and 1 inserted
+/// as knots where they are not breakpoints). Requires L >= p + 1.
+template <class T, int D>
+BSpline<T, D> interpolate_closed(const std::vector<Point<T, D>>& Q, int p, const std::vector<T>& t) {
+  const std::ptrdiff_t L = static_cast<std::ptrdiff_t>(Q.size());
+  const bool odd = p % 2 == 1;
+  std::vector<T> b(static_cast<std::size_t>(L));
+  for (std::ptrdiff_t i = 0; i < L; ++i) b[static_cast<std::size_t>(i)] = odd ? t[static_cast<std::size_t>(i)] : t[static_cast<std::size_t>(i)] / 2 + t[static_cast<std::size_t>(i) + 1] / 2;
+  const auto floor_div = [&](std::ptrdiff_t j) { return j >= 0 ? j / L : -((-j + L - 1) / L); };
+  const auto knot = [&](std::ptrdiff_t j) {
+    const std::ptrdiff_t q = floor_div(j);
+    return b[static_cast<std::size_t>(j - q * L)] + static_cast<T>(q);
+  };
+  const auto wrap = [&](std::ptrdiff_t j) { return static_cast<std::size_t>(j - floor_div(j) * L); };
+  Eigen::SparseMatrix<T> A(L, L);
+  std::vector<Eigen::Triplet<T>> entries;
+  detail::Rhs<T, D> rhs(L, D);
+  std::vector<T> local(2 * static_cast<std::size_t>(p) + 2), N(static_cast<std::size_t>(p) + 1);
+  for (std::ptrdiff_t i = 0; i < L; ++i) {
+    const T u = t[static_cast<std::size_t>(i)];
+    const std::ptrdiff_t s = odd ? i : i - 1;  // knot(s) <= u < knot(s + 1)
+    for (std::ptrdiff_t j = 0; j < 2 * p + 2; ++j) local[static_cast<std::size_t>(j)] = knot(s - p + j);
+    basis_functions<T>(local, p, static_cast<std::size_t>(p), u, N);
+    std::vector<T> row(static_cast<std::size_t>(L), T(0));
+    for (int r = 0; r <= p; ++r) row[wrap(s - p + r)] += N[static_cast<std::size_t>(r)];
+    for (std::ptrdiff_t c = 0; c < L; ++c)
+      if (row[static_cast<std::size_t>(c)] != 0) entries.emplace_back(i, c, row[static_cast<std::size_t>(c)]);
+    for (int d = 0; d < D; ++d) rhs(i, d) = Q[static_cast<std::size_t>(i)][d];
+  }
+  A.setFromTriplets(entries.begin(), entries.end());
+  Eigen::SparseLU<Eigen::SparseMatrix<T>> lu;
+  lu.compute(A);
+  detail::require_solved(lu.info(), "closed interpolation");
+  const detail::Rhs<T, D> x = lu.solve(rhs);
+  detail::require_solved(lu.info(), "closed interpolation");
+  const std::vector<Point<T, D>> C = detail::to_points<T, D>(x);
+  // A long stretch of the periodic spline, then 0 and 1 as knots, then the window [0, 1].
+  KnotForm<T, Point<T, D>> f{p, {}, {}};
+  const std::ptrdiff_t lo = -2 * p - 2, hi = L + 2 * p + 2;
+  for (std::ptrdiff_t j = lo; j <= hi; ++j) f.U.push_back(knot(j));
+  for (std::ptrdiff_t j = lo; j + p + 1 <= hi; ++j) f.P.push_back(C[wrap(j)]);
+  for (const T u : {T(0), T(1)}) {
+    if (knot_multiplicity<T>(f.U, u) == 0) f = insert_knot_once(f, u);
+  }
+  const std::size_t i0 = static_cast<std::size_t>(std::lower_bound(f.U.begin(), f.U.end(), T(0)) - f.U.begin());
+  const std::size_t i1 = static_cast<std::size_t>(std::lower_bound(f.U.begin(), f.U.end(), T(1)) - f.U.begin());
+  const std::size_t P = static_cast<std::size_t>(p);
+  std::vector<T> U(f.U.begin() + static_cast<std::ptrdiff_t>(i0 - P), f.U.begin() + static_cast<std::ptrdiff_t>(i1 + P) + 1);
+  std::vector<Point<T, D>> Pts(f.P.begin() + static_cast<std::ptrdiff_t>(i0 - P), f.P.begin() + static_cast<std::ptrdiff_t>(i1));
+  return BSpline<T, D>(p, std::move(U), std::move(Pts));
+}
+
+/// Least-squares approximation [PT97, §9.4.1]: n + 1 control points, knots from the
+/// parameters by eq. 9.68-9.69, C(0) = Q_0 and C(1) = Q_last exactly (P_0, P_n fixed), and
+/// with d0 / d1 also C'(0) = d0, C'(1) = d1 exactly (P_1 = P_0 + U_{p+1} d0 / p,
+/// P_{n-1} = P_n - (1 - U_n) d1 / p); the other points minimise sum_k |C(t_k) - Q_k|^2
+/// over the interior data. [PT97] solves the normal equations (banded, symmetric positive
+/// definite); this solves the banded overdetermined system by sparse QR instead, whose
+/// error grows with its condition number rather than with its square (data clustered so
+/// that a knot span holds almost none make it large). Requires p + 1 <= n + 1 <= number
+/// of points + derivatives; a rank-deficient system is a NumericalError.
+template <class T, int D>
+BSpline<T, D> approximate(const std::vector<Point<T, D>>& Q, int p, const std::vector<T>& t, std::size_t count,
+                          const std::optional<Vector<T, D>>& d0, const std::optional<Vector<T, D>>& d1) {
+  const std::size_t n = count - 1, m = Q.size() - 1, P = static_cast<std::size_t>(p);
+  std::vector<T> U(P + 1, T(0));
+  const T d = static_cast<T>(m + 1) / static_cast<T>(n - P + 1);
+  for (std::size_t j = 1; j + P <= n; ++j) {
+    const T jd = static_cast<T>(j) * d;
+    const std::size_t i = static_cast<std::size_t>(jd);
+    const T alpha = jd - static_cast<T>(i);
+    U.push_back((1 - alpha) * t[i - 1] + alpha * t[std::min(i, m)]);
+  }
+  U.insert(U.end(), P + 1, T(1));
+  std::vector<Point<T, D>> C(count);
+  std::vector<bool> fixed(count, false);
+  C[0] = Q.front();
+  C[n] = Q.back();
+  fixed[0] = fixed[n] = true;
+  if (d0) {
+    C[1] = Q.front() + (U[P + 1] / static_cast<T>(p)) * *d0;
+    fixed[1] = true;
+  }
+  if (d1) {
+    C[n - 1] = Q.back() - ((1 - U[n]) / static_cast<T>(p)) * *d1;
+    fixed[n - 1] = true;
+  }
+  std::vector<Eigen::Index> column(count, -1);
+  Eigen::Index free = 0;
+  for (std::size_t i = 0; i < count; ++i)
+    if (!fixed[i]) column[i] = free++;
+  if (free > 0) {
+    // The overdetermined system itself (one row per interior data point, at most p + 1
+    // entries each), solved by sparse QR: the normal equations of [PT97] would square its
+    // condition number, which grows large when few data fall in a knot span.
+    std::vector<Eigen::Triplet<T>> entries;
+    const Eigen::Index rows = static_cast<Eigen::Index>(m) - 1;
+    if (rows < free) throw NumericalError("fit: fewer interior points than free control points");
+    detail::Rhs<T, D> rhs(rows, D);
+    std::vector<std::pair<std::size_t, T>> row;
+    for (std::size_t k = 1; k < m; ++k) {
+      const Eigen::Index r = static_cast<Eigen::Index>(k) - 1;
+      detail::basis_row<T>(U, p, t[k], 0, row);
+      Point<T, D> target = Q[k];
+      for (const auto& [col, v] : row) {
+        if (fixed[col]) {
+          target = target - v * (C[col] - Point<T, D>{});
+        } else if (v != 0) {
+          entries.emplace_back(r, column[col], v);
+        }
+      }
+      for (int dd = 0; dd < D; ++dd) rhs(r, dd) = target[dd];
+    }
+    Eigen::SparseMatrix<T> A(rows, free);
+    A.setFromTriplets(entries.begin(), entries.end());
+    A.makeCompressed();
+    Eigen::SparseQR<Eigen::SparseMatrix<T>, Eigen::COLAMDOrdering<int>> qr;
+    qr.compute(A);
+    detail::require_solved(qr.info(), "least-squares");
+    if (qr.rank() < free) throw NumericalError("fit: the least-squares system is singular (a knot span holds no data)");
+    const detail::Rhs<T, D> x = qr.solve(rhs);
+    detail::require_solved(qr.info(), "least-squares");
+    for (std::size_t i = 0; i < count; ++i)
+      if (!fixed[i])
+        for (int dd = 0; dd < D; ++dd) C[i][dd] = x(column[i], dd);
+    for (const auto& q : C)
+      if (!detail::all_finite_point(q)) throw NumericalError("fit: the least-squares system is singular");
+  }
+  return BSpline<T, D>(p, std::move(U), std::move(C));
+}
+
+/// What to fit: degree, and either a control point count (least squares; the point
+/// count plus the number of end derivatives means interpolation) or a tolerance (the
+/// fewest control points found whose max_error is within it).
+template <class T, int D>
+struct FitRequest {
+  int degree = 3;
+  std::optional<std::size_t> control_points;
+  std::optional<T> tolerance;
+  Parametrization parametrization = Parametrization::chord;
+  std::optional<Vector<T, D>> start_derivative;
+  std::optional<Vector<T, D>> end_derivative;
+  bool closed = false;
+};
+
+/// Fits the points as the request says; max_error is the largest distance from a data
+/// point to the curve at that point's parameter. With a tolerance the control point count
+/// is found by bisection between the least that can be fitted and interpolation, assuming
+/// the error falls as points are added (usual, not guaranteed: the count is the fewest
+/// found, not proven minimal); a count whose system is singular counts as too few; if
+/// only interpolation is within the tolerance it is the answer. Closed fits are
+/// interpolation only. Errors (InvalidArgument): "degree" (< 1; >= 2 with a derivative),
+/// "points" (too few: p + 1 conditions, or p + 1 distinct points closed; coincident
+/// consecutive points under chord / centripetal), "control_points" (below p + 1 or the
+/// ends it must hold, above the point count plus derivatives; closed: not the point
+/// count), "tolerance" (not > 0), "start_derivative" / "end_derivative" (with closed).
+template <class T, int D>
+FitResult<T, D> fit(std::vector<Point<T, D>> Q, const FitRequest<T, D>& req) {
+  const int p = req.degree;
+  if (p < 1) throw InvalidArgument("degree", "degree must be >= 1, got " + std::to_string(p));
+  for (std::size_t i = 0; i < Q.size(); ++i) require_finite_point(Q[i], "points[" + std::to_string(i) + "]");
+  const std::size_t extra = (req.start_derivative ? 1 : 0) + (req.end_derivative ? 1 : 0);
+  if (extra > 0 && p < 2) throw InvalidArgument("degree", "end derivatives need degree >= 2, got " + std::to_string(p));
+  if (req.tolerance && !(*req.tolerance > 0)) throw InvalidArgument("tolerance", "tolerance must be > 0, got " + detail::format_number(*req.tolerance));
+  if (req.closed) {
+    if (req.start_derivative) throw InvalidArgument("start_derivative", "a closed fit takes no end derivatives");
+    if (req.end_derivative) throw InvalidArgument("end_derivative", "a closed fit takes no end derivatives");
+    std::vector<Point<T, D>> R = Q;
+    if (R.size() > 1 && R.front() == R.back()) R.pop_back();  // the closing point may be repeated
+    if (R.size() < static_cast<std::size_t>(p) + 1) {
+      throw InvalidArgument("points", "a closed fit of degree " + std::to_string(p) + " needs at least " + std::to_string(p + 1) +
+                                          " distinct points, got " + std::to_string(R.size()));
+    }
+    if (req.control_points && *req.control_points != R.size()) {
+      throw InvalidArgument("control_points", "a closed fit interpolates: control_points must be the number of distinct points (" +
+                                                  std::to_string(R.size()) + "), got " + std::to_string(*req.control_points));
+    }
+    const std::vector<T> t = fit_parameters(R, req.parametrization, true);
+    BSpline<T, D> c = interpolate_closed(R, p, t);
+    const T e = detail::max_fit_error(c, R, t);
+    return {std::move(c), e};
+  }
+  const std::size_t most = Q.size() + extra;
+  const std::size_t least = std::max(static_cast<std::size_t>(p) + 1, 2 + extra);
+  if (Q.size() < 2 || most < static_cast<std::size_t>(p) + 1) {
+    throw InvalidArgument("points", "degree " + std::to_string(p) + " needs at least " + std::to_string(p + 1) +
+                                        " conditions (points and end derivatives), got " + std::to_string(most));
+  }
+  const std::vector<T> t = fit_parameters(Q, req.parametrization, false);
+  const auto with_count = [&](std::size_t count) {
+    if (count == most) return interpolate(Q, p, t, req.start_derivative, req.end_derivative);
+    return approximate(Q, p, t, count, req.start_derivative, req.end_derivative);
+  };
+  if (req.control_points) {
+    const std::size_t count = *req.control_points;
+    if (count < least || count > most) {
+      throw InvalidArgument("control_points", "must be in " + std::to_string(least) + ".." + std::to_string(most) + " for degree " +
+                                                  std::to_string(p) + " and these points, got " + std::to_string(count));
+    }
+    BSpline<T, D> c = with_count(count);
+    const T e = detail::max_fit_error(c, Q, t);
+    return {std::move(c), e};
+  }
+  const T tol = req.tolerance.value_or(T(0));
+  std::optional<FitResult<T, D>> best;
+  const auto try_count = [&](std::size_t count) -> bool {
+    try {
+      BSpline<T, D> c = with_count(count);
+      const T e = detail::max_fit_error(c, Q, t);
+      if (!(e <= tol)) return false;
+      best = FitResult<T, D>{std::move(c), e};
+      return true;
+    } catch (const NumericalError&) {
+      return false;
+    }
+  };
+  std::size_t lo = least, hi = most;  // invariant: every count below lo failed; hi passes or is the fallback
+  if (!try_count(hi)) {
+    BSpline<T, D> c = with_count(most);
+    const T e = detail::max_fit_error(c, Q, t);
+    return {std::move(c), e};
+  }
+  while (lo < hi) {
+    const std::size_t mid = lo + (hi - lo) / 2;
+    if (try_count(mid)) {
+      hi = mid;  // best now holds this fit
+    } else {
+      lo = mid + 1;
+    }
+  }
+  // best holds the fit at hi (the last success).
+  if (best->curve.points().size() != hi) {
+    BSpline<T, D> c = with_count(hi);
+    const T e = detail::max_fit_error(c, Q, t);
+    return {std::move(c), e};
+  }
+  return std::move(*best);
+}
+
+}  // namespace casteljau

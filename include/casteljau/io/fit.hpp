@@ -1,0 +1,31 @@
+// Run-time entry of B-spline fitting (algo/fit.hpp), compiled once in src/io/fit.cpp.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "casteljau/io/any_curve.hpp"
+
+namespace casteljau::io {
+
+/// The `fit` request at run time; derivatives have the points' dimension.
+struct AnyFitRequest {
+  int degree = 3;
+  std::optional<std::size_t> control_points;
+  std::optional<double> tolerance;
+  int parametrization = 1;  ///< 0 uniform, 1 chord, 2 centripetal
+  std::optional<std::vector<double>> start_derivative;
+  std::optional<std::vector<double>> end_derivative;
+  bool closed = false;
+};
+
+struct AnyFit {
+  AnyCurve curve;
+  double max_error = 0;
+};
+
+/// Fits a bspline to the points (dimension 1..max_dimension) as casteljau::fit does.
+/// Errors name the request's fields ("points[k]", "degree", "control_points", ...).
+[[nodiscard]] AnyFit fit(const PointList& points, const AnyFitRequest& request);
+
+}  // namespace casteljau::io

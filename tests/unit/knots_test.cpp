@@ -1,0 +1,282 @@
+// Knot operations on B-spline and NURBS curves: insertion, refinement, removal, split,
+// degree elevation, clamping and unclamping, against textbook numbers [PT97] and closed
+// forms, plus the error rules (knot outside the domain, multiplicity past the degree).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "test_support.hpp"
+
+namespace {
+
+using namespace casteljau;
+using P2 = Point<double, 2>;
+using Curve2 = BSpline<double, 2>;
+
+std::vector<P2> some_points(int n, std::uint64_t seed) {
+  test::SplitMix64 rng(seed);
+  std::vector<P2> P(static_cast<std::size_t>(n));
+  for (auto& q : P) q = P2{{rng.uniform(-5, 5), rng.uniform(-5, 5)}};
+  return P;
+}
+
+/// max |a(u) - b(u)| at 201 parameters of [lo, hi].
+template <class A, class B>
+double max_distance(const A& a, const B& b, double lo, double hi) {
+  double d = 0;
+  for (int i = 0; i <= 200; ++i) {
+    const double u = lo + (hi - lo) * i / 200;
+    d = std::max(d, distance(a(u), b(u)));
+  }
+  return d;
+}
+
+// [PT97, Ex. 5.1]: p = 3, U = {0,0,0,0,1,2,3,4,5,5,5,5}, insert u = 5/2 (span k = 5):
+// alpha_3 = 5/6, alpha_4 = 1/2, alpha_5 = 1/6, so Q_3 = 5/6 P_3 + 1/6 P_2,
+// Q_4 = 1/2 P_4 + 1/2 P_3, Q_5 = 1/6 P_5 + 5/6 P_4; Q_0..Q_2 = P_0..P_2, Q_6..Q_8 = P_5..P_7.
+TEST(KnotInsertion, NurbsBookExample5_1) {
+  const std::vector<P2> P = some_points(8, 51);
+  const Curve2 c(3, {0, 0, 0, 0, 1, 2, 3, 4, 5, 5, 5, 5}, P);
+  const Curve2 d = c.insert_knot(2.5);
+  EXPECT_EQ(d.knots(), (std::vector<double>{0, 0, 0, 0, 1, 2, 2.5, 3, 4, 5, 5, 5, 5}));
+  const auto& Q = d.points();
+  ASSERT_EQ(Q.size(), 9u);
+  const auto mix = [](const P2& a, const P2& b, double wa) { return P2{{wa * a[0] + (1 - wa) * b[0], wa * a[1] + (1 - wa) * b[1]}}; };
+  for (int i = 0; i < 3; ++i) EXPECT_EQ(Q[i], P[i]);
+  // A few ulps: the library forms the same combinations in another order.
+  EXPECT_LE(distance(Q[3], mix(P[3], P[2], 5.0 / 6)), 1e-14);
+  EXPECT_LE(distance(Q[4], mix(P[4], P[3], 0.5)), 1e-14);
+  EXPECT_LE(distance(Q[5], mix(P[5], P[4], 1.0 / 6)), 1e-14);
+  for (int i = 6; i < 9; ++i) EXPECT_EQ(Q[i], P[i - 1]);
+  EXPECT_LE(max_distance(c, d, 0, 5), 1e-14);
+}
+
+// Knot refinement [PT97, A5.4] inserts the same knots as one insertion at a time.
+TEST(KnotInsertion, RefinementEqualsSingleInsertions) {
+  const Curve2 c(3, {0, 0, 0, 0, 1, 2, 3, 4, 5, 5, 5, 5}, some_points(8, 52));
+  const std::vector<double> X{0.5, 2, 2, 2.5, 4.75, 4.75};
+  const Curve2 r = c.refine_knots(X);
+  Curve2 s = c;
+  for (const double x : X) s = s.insert_knot(x);
+  EXPECT_EQ(r.knots(), s.knots());
+  ASSERT_EQ(r.points().size(), s.points().size());
+  for (std::size_t i = 0; i < r.points().size(); ++i) EXPECT_LE(distance(r.points()[i], s.points()[i]), 1e-14) << i;
+  EXPECT_LE(max_distance(c, r, 0, 5), 1e-14);
+}
+
+TEST(KnotInsertion, Errors) {
+  const Curve2 c(2, {0, 0, 0, 0.5, 1, 1, 1}, some_points(4, 53));
+  EXPECT_INVALID_ARGUMENT(c.insert_knot(1.5), "knot", "domain");
+  EXPECT_INVALID_ARGUMENT(c.insert_knot(std::nan("")), "knot", "finite");
+  EXPECT_INVALID_ARGUMENT(c.insert_knot(0.5, 2), "times", "exceed the degree");
+  EXPECT_INVALID_ARGUMENT(c.insert_knot(1.0), "times", "exceed the degree");  // clamped end
+  EXPECT_INVALID_ARGUMENT(c.insert_knot(0.25, 0), "times", ">= 1");
+  const std::vector<double> X{0.5, 0.5};
+  EXPECT_INVALID_ARGUMENT(c.refine_knots(X), "knots[0]", "multiplicity 3");
+}
+
+// Removal undoes insertion exactly (up to rounding), and a knot the curve needs stays.
+TEST(KnotRemoval, UndoesInsertionAndKeepsNeededKnots) {
+  const Curve2 c(3, {0, 0, 0, 0, 1, 2, 3, 4, 5, 5, 5, 5}, some_points(8, 54));
+  const auto r = c.insert_knot(2.5, 3).remove_knot(2.5, 3);
+  EXPECT_EQ(r.removed, 3);
+  EXPECT_EQ(r.curve.knots(), c.knots());
+  for (std::size_t i = 0; i < c.points().size(); ++i) EXPECT_LE(distance(r.curve.points()[i], c.points()[i]), 1e-13) << i;
+  const auto keep = c.remove_knot(2.0);
+  EXPECT_EQ(keep.removed, 0);
+  EXPECT_EQ(keep.curve, c);
+  // A knot of multiplicity 2 of which one copy is redundant: exactly one goes.
+  const auto one = c.insert_knot(3.0).remove_knot(3.0, 2);
+  EXPECT_EQ(one.removed, 1);
+  EXPECT_LE(max_distance(one.curve, c, 0, 5), 1e-13);
+}
+
+// The tolerance bounds the curve's movement, measured independently by sampling.
+TEST(KnotRemoval, ToleranceBoundsTheDeviation) {
+  const Curve2 c(3, {0, 0, 0, 0, 1, 2, 3, 4, 5, 5, 5, 5}, some_points(8, 55));
+  int removed_somewhere = 0;
+  for (const double tol : {0.01, 0.1, 1.0, 10.0}) {
+    for (const double u : {1.0, 2.0, 3.0, 4.0}) {
+      const auto r = c.remove_knot(u, 1, tol);
+      EXPECT_LE(max_distance(c, r.curve, 0, 5), tol) << u << " " << tol;
+      removed_somewhere += r.removed;
+    }
+  }
+  EXPECT_GT(removed_somewhere, 0);  // the large tolerances do remove
+}
+
+TEST(KnotRemoval, Errors) {
+  const Curve2 c(2, {0, 0, 0, 0.5, 1, 1, 1}, some_points(4, 56));
+  EXPECT_INVALID_ARGUMENT(c.remove_knot(0.25), "knot", "not a knot");
+  EXPECT_INVALID_ARGUMENT(c.remove_knot(0.0), "knot", "not a knot");
+  EXPECT_INVALID_ARGUMENT(c.remove_knot(0.5, 2), "times", "multiplicity 1");
+  EXPECT_INVALID_ARGUMENT(c.remove_knot(0.5, 1, 0.0), "tolerance", "> 0");
+}
+
+// Split: the halves keep the parameter and meet at C(u); knot u clamped on both sides.
+TEST(BSplineSplit, HalvesKeepTheirParameter) {
+  const Curve2 c(3, {0, 0, 0, 0, 1, 2, 3, 4, 5, 5, 5, 5}, some_points(8, 57));
+  for (const double u : {0.3, 2.0, 2.5, 4.9}) {
+    const auto [l, r] = c.split(u);
+    EXPECT_EQ(l.domain().lo, 0);
+    EXPECT_EQ(l.domain().hi, u);
+    EXPECT_EQ(r.domain().lo, u);
+    EXPECT_EQ(r.domain().hi, 5);
+    EXPECT_LE(max_distance(c, l, 0, u), 1e-14);
+    EXPECT_LE(max_distance(c, r, u, 5), 1e-14);
+    EXPECT_EQ(l.points().back(), r.points().front());
+    EXPECT_LE(distance(l.points().back(), c(u)), 1e-14);
+  }
+  EXPECT_INVALID_ARGUMENT(c.split(0.0), "t", "strictly inside");
+  EXPECT_INVALID_ARGUMENT(c.split(5.0), "t", "strictly inside");
+}
+
+// Elevation of a degree-1 B-spline: every segment [A, B] becomes [A, (A + B) / 2, B], the
+// interior knot doubled (C^0 kept).
+TEST(BSplineElevate, PolylineToQuadratic) {
+  const Curve2 c(1, {0, 0, 1, 3, 3}, {P2{{0, 0}}, P2{{2, 4}}, P2{{6, 0}}});
+  const Curve2 e = c.elevate(1);
+  EXPECT_EQ(e.degree(), 2);
+  EXPECT_EQ(e.knots(), (std::vector<double>{0, 0, 0, 1, 1, 3, 3, 3}));
+  const std::vector<P2> want{P2{{0, 0}}, P2{{1, 2}}, P2{{2, 4}}, P2{{4, 2}}, P2{{6, 0}}};
+  ASSERT_EQ(e.points().size(), want.size());
+  for (std::size_t i = 0; i < want.size(); ++i) EXPECT_LE(distance(e.points()[i], want[i]), 1e-15) << i;
+}
+
+// Elevation keeps the curve, its continuity (interior multiplicity + r) and, for an
+// unclamped curve, the extrapolated end pieces.
+TEST(BSplineElevate, CurveAndContinuityKept) {
+  const Curve2 clamped(3, {0, 0, 0, 0, 1, 2, 2, 3, 4, 4, 4, 4}, some_points(8, 58));
+  const Curve2 unclamped(3, {0, 1, 2, 3, 4, 4, 5, 6, 7, 8, 9}, some_points(7, 59));
+  for (const Curve2* c : {&clamped, &unclamped}) {
+    for (const int r : {1, 2, 5}) {
+      const Curve2 e = c->elevate(r);
+      EXPECT_EQ(e.degree(), 3 + r);
+      EXPECT_EQ(e.domain(), c->domain());
+      const std::span<const double> U(c->knots()), V(e.knots());
+      for (const double x : c->knots()) {
+        if (x > c->domain().lo && x < c->domain().hi) {
+          EXPECT_EQ(knot_multiplicity(V, x), knot_multiplicity(U, x) + static_cast<std::size_t>(r));
+        }
+      }
+      const double lo = c->domain().lo, hi = c->domain().hi;
+      EXPECT_LE(max_distance(*c, e, lo - 0.5, hi + 0.5), 1e-12) << r;
+      EXPECT_EQ(e.is_clamped(), c->is_clamped());
+    }
+  }
+}
+
+// Clamping the uniform cubic on [3, 4] (knots 0..7, points P0..P3) gives its Bézier form:
+// (P0 + 4 P1 + P2) / 6, (2 P1 + P2) / 3, (P1 + 2 P2) / 3, (P1 + 4 P2 + P3) / 6 [PT97, §5.6;
+// Farin02, 7.? uniform B-spline to Bézier].
+TEST(BSplineClamp, UniformCubicToBezier) {
+  const std::vector<P2> P = some_points(4, 60);
+  const Curve2 c(3, {0, 1, 2, 3, 4, 5, 6, 7}, P);
+  const Curve2 k = c.clamp();
+  EXPECT_TRUE(k.is_clamped());
+  EXPECT_EQ(k.knots(), (std::vector<double>{3, 3, 3, 3, 4, 4, 4, 4}));
+  const auto comb = [&](double a, double b, double cc, double d) {
+    return P2{{a * P[0][0] + b * P[1][0] + cc * P[2][0] + d * P[3][0], a * P[0][1] + b * P[1][1] + cc * P[2][1] + d * P[3][1]}};
+  };
+  const std::vector<P2> want{comb(1. / 6, 4. / 6, 1. / 6, 0), comb(0, 2. / 3, 1. / 3, 0), comb(0, 1. / 3, 2. / 3, 0),
+                             comb(0, 1. / 6, 4. / 6, 1. / 6)};
+  for (std::size_t i = 0; i < 4; ++i) EXPECT_LE(distance(k.points()[i], want[i]), 1e-14) << i;
+  const Curve2 u = k.unclamp();
+  EXPECT_FALSE(u.is_clamped());
+  EXPECT_LE(max_distance(c, u, 2.5, 4.5), 1e-13);
+}
+
+TEST(BSplineFromBezier, SameCurve) {
+  const Bezier<double, 2> b(some_points(5, 61));
+  const Curve2 c = Curve2::from_bezier(b);
+  EXPECT_EQ(c.degree(), 4);
+  EXPECT_EQ(c.points(), b.points());
+  EXPECT_LE(max_distance(b, c, 0, 1), 1e-15);
+}
+
+// The quarter circle x = (1 - t^2) / (1 + t^2), y = 2t / (1 + t^2) as a NURBS: degree 2,
+// weights 1, 1/sqrt 2, 1. Elevated to degree 3 (Forrest on (wP, w)): weights 1,
+// (1 + sqrt 2) / 3 twice, 1, inner points (1, 2 - sqrt 2) and (2 - sqrt 2, 1).
+TEST(NurbsKnots, QuarterCircle) {
+  const double s = std::sqrt(0.5);
+  const Nurbs<double, 2> c(2, {0, 0, 0, 1, 1, 1}, {P2{{1, 0}}, P2{{1, 1}}, P2{{0, 1}}}, {1, s, 1});
+  const auto e = c.elevate(1);
+  const double w = (1 + std::sqrt(2.0)) / 3;
+  ASSERT_EQ(e.weights().size(), 4u);
+  EXPECT_NEAR(e.weights()[1], w, 1e-15);
+  EXPECT_NEAR(e.weights()[2], w, 1e-15);
+  EXPECT_NEAR(e.points()[1][1], 2 - std::sqrt(2.0), 1e-15);
+  EXPECT_NEAR(e.points()[2][0], 2 - std::sqrt(2.0), 1e-15);
+  const auto on_circle = [](const auto& q, double lo, double hi) {
+    double worst = 0;
+    for (int i = 0; i <= 100; ++i) {
+      const auto p = q(lo + (hi - lo) * i / 100);
+      worst = std::max(worst, std::abs(std::hypot(p[0], p[1]) - 1));
+    }
+    return worst;
+  };
+  EXPECT_LE(on_circle(e, 0, 1), 1e-15);
+  const auto k = c.insert_knot(0.3, 2);
+  EXPECT_LE(on_circle(k, 0, 1), 1e-15);
+  const auto [l, r] = c.split(0.6);
+  EXPECT_LE(on_circle(l, 0, 0.6), 1e-15);
+  EXPECT_LE(on_circle(r, 0.6, 1), 1e-15);
+  const auto back = k.remove_knot(0.3, 2);
+  EXPECT_EQ(back.removed, 2);
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(back.curve.weights()[static_cast<std::size_t>(i)], c.weights()[static_cast<std::size_t>(i)], 1e-15);
+  // Weights come back at the scale they were given (the internal power of two undone).
+  const Nurbs<double, 2> big(2, {0, 0, 0, 1, 1, 1}, {P2{{1, 0}}, P2{{1, 1}}, P2{{0, 1}}}, {1000, 1000 * s, 1000});
+  EXPECT_NEAR(big.insert_knot(0.5).weights().front(), 1000, 1e-12);
+}
+
+// [PT97, Ex. 7.2]: the nine-point circle, knots {0,0,0,1/4,1/4,1/2,1/2,3/4,3/4,1,1,1},
+// control points the corners and edge midpoints of the square [-1, 1]^2, weights 1 at the
+// edge midpoints and 1/sqrt 2 at the corners; every point at radius 1 to 1e-14.
+TEST(Conics, NinePointCircle) {
+  const auto c = nurbs_circle(P2{{0, 0}}, 1.0);
+  EXPECT_EQ(c.knots(), (std::vector<double>{0, 0, 0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1, 1, 1}));
+  const std::vector<P2> want{P2{{1, 0}}, P2{{1, 1}}, P2{{0, 1}}, P2{{-1, 1}}, P2{{-1, 0}}, P2{{-1, -1}}, P2{{0, -1}}, P2{{1, -1}}, P2{{1, 0}}};
+  ASSERT_EQ(c.points().size(), 9u);
+  for (std::size_t i = 0; i < 9; ++i) {
+    EXPECT_LE(distance(c.points()[i], want[i]), 1e-15) << i;
+    EXPECT_NEAR(c.weights()[i], i % 2 == 1 ? std::sqrt(0.5) : 1.0, 1e-16) << i;
+  }
+  for (int i = 0; i <= 1000; ++i) {
+    const P2 q = c(i / 1000.0);
+    EXPECT_LE(std::abs(std::hypot(q[0], q[1]) - 1), 1e-14) << i;
+  }
+}
+
+// Arcs of every sweep: 1 to 4 pieces (a quarter at most each), end points at the angles,
+// every point on the circle; an ellipse through its axis points in 3-D; the errors.
+TEST(Conics, ArcsAndEllipses) {
+  for (const double sweep : {0.25, 1.5707963267948966, 2.5, 3.141592653589793, 4.5, 6.0, 6.283185307179586}) {
+    const double s0 = -0.7;
+    const auto c = nurbs_arc(P2{{2, -1}}, 3.0, s0, s0 + sweep);
+    const std::size_t pieces = static_cast<std::size_t>(std::ceil(sweep / (3.141592653589793 / 2) - 1e-12));
+    EXPECT_EQ(c.points().size(), 2 * pieces + 1) << sweep;
+    EXPECT_LE(distance(c(0.0), P2{{2 + 3 * std::cos(s0), -1 + 3 * std::sin(s0)}}), 1e-14);
+    EXPECT_LE(distance(c(1.0), P2{{2 + 3 * std::cos(s0 + sweep), -1 + 3 * std::sin(s0 + sweep)}}), 1e-14);
+    for (int i = 0; i <= 200; ++i) {
+      const P2 q = c(i / 200.0);
+      EXPECT_LE(std::abs(std::hypot(q[0] - 2, q[1] + 1) - 3), 3e-14) << sweep;  // radius 3: a few eps of it
+    }
+  }
+  using P3 = Point<double, 3>;
+  using V3 = Vector<double, 3>;
+  const auto e = nurbs_ellipse(P3{{1, 2, 3}}, V3(0.0, 5.0, 0.0), V3(0.0, 0.0, 2.0));
+  for (int i = 0; i <= 200; ++i) {
+    const P3 q = e(i / 200.0);
+    EXPECT_EQ(q[0], 1);
+    const double y = (q[1] - 2) / 5, z = (q[2] - 3) / 2;
+    EXPECT_LE(std::abs(y * y + z * z - 1), 1e-14);
+  }
+  EXPECT_LE(distance(e(0.25), P3{{1, 2, 5}}), 1e-14);  // a quarter of the parameter: a quarter turn
+  EXPECT_INVALID_ARGUMENT(nurbs_circle(P2{{0, 0}}, 0.0), "radius", "> 0");
+  EXPECT_INVALID_ARGUMENT(nurbs_arc(P2{{0, 0}}, 1.0, 1.0, 1.0), "end_angle", "sweep");
+  EXPECT_INVALID_ARGUMENT(nurbs_arc(P2{{0, 0}}, 1.0, 0.0, 7.0), "end_angle", "sweep");
+  EXPECT_INVALID_ARGUMENT(nurbs_ellipse(P2{{0, 0}}, Vector<double, 2>(1.0, 1.0), Vector<double, 2>(2.0, 2.0)), "axes", "independent");
+}
+
+}  // namespace
