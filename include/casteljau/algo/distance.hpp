@@ -22,9 +22,11 @@ struct CurveDistance {
   std::array<Point<T, D>, 2> points;
 };
 
-/// The relative gap to the minimum that distance() guarantees before its refinement.
+/// The relative gap to the minimum that distance() guarantees before its refinement. It
+/// sets the search's depth where the distance is nearly constant (concentric arcs need
+/// parts of angle about sqrt(8 x 1e-7)): 1e-7 keeps that case to milliseconds.
 template <class T>
-inline constexpr T distance_tolerance = T(1e-9);
+inline constexpr T distance_tolerance = T(1e-7);
 
 namespace detail {
 
@@ -119,7 +121,7 @@ T lower_bound(const DistancePart<T, D>& x, const DistancePart<T, D>& y) {
 }  // namespace detail
 
 /// The minimum distance between curves a and b over both domains, with parameters where
-/// it is attained. Guarantee: the result is within distance_tolerance (1e-9) relative
+/// it is attained. Guarantee: the result is within distance_tolerance (1e-7) relative
 /// (plus 1e-13 of the curves' extent, for distances near 0) of the global minimum, by
 /// branch and bound on parts of the Bézier pieces, best lower bound first. Lower bound
 /// of a pair of parts: the larger of their control boxes' distance and their chords'
@@ -158,41 +160,64 @@ CurveDistance<typename CA::Scalar, CA::dimension> distance(const CA& a, const CB
   for (T ta : {pa.domain().lo, pa.domain().hi}) offer(ta, project(pb, pa(ta)).t);
   for (T tb : {pb.domain().lo, pb.domain().hi}) offer(project(pa, pb(tb)).t, tb);
 
+  // Parts live in one arena; the heap holds pairs of indices (no copies of control points).
   using Part = detail::DistancePart<T, D>;
+  std::vector<Part> arena;
   struct Pair {
     T lb;
-    Part x, y;
+    std::size_t x, y;
   };
   auto worse = [](const Pair& u, const Pair& v) { return u.lb > v.lb; };
   std::priority_queue<Pair, std::vector<Pair>, decltype(worse)> heap(worse);
-  const T extent = std::ldexp(T(1), 0);  // scaled coordinates are below 1
-  auto tol = [&] { return std::max(distance_tolerance<T> * std::ldexp(best.distance, -e), T(1e-13) * extent); };
-  auto push = [&](const Part& x, const Part& y) {
-    const T lb = detail::lower_bound(x, y);
+  // Scaled coordinates are below 1 in magnitude: 1e-13 of them is the absolute floor.
+  auto tol = [&] { return std::max(distance_tolerance<T> * std::ldexp(best.distance, -e), T(1e-13)); };
+  auto push = [&](std::size_t x, std::size_t y) {
+    const T lb = detail::lower_bound(arena[x], arena[y]);
     if (lb < std::ldexp(best.distance, -e) - tol()) heap.push({lb, x, y});
   };
-  std::vector<Part> xa, xb;
-  for (std::size_t i = 0; i < pa.size(); ++i) xa.push_back(detail::make_part<T, D>(pa.segments()[i], i, T(0), T(1), e));
-  for (std::size_t j = 0; j < pb.size(); ++j) xb.push_back(detail::make_part<T, D>(pb.segments()[j], j, T(0), T(1), e));
-  for (const auto& x : xa)
-    for (const auto& y : xb) push(x, y);
+  std::vector<std::size_t> xa, xb;
+  for (std::size_t i = 0; i < pa.size(); ++i) {
+    xa.push_back(arena.size());
+    arena.push_back(detail::make_part<T, D>(pa.segments()[i], i, T(0), T(1), e));
+  }
+  for (std::size_t j = 0; j < pb.size(); ++j) {
+    xb.push_back(arena.size());
+    arena.push_back(detail::make_part<T, D>(pb.segments()[j], j, T(0), T(1), e));
+  }
+  for (std::size_t x : xa)
+    for (std::size_t y : xb) push(x, y);
   std::size_t work = 0;
+  // Children of a part, made once however many pairs it is in.
+  std::vector<std::array<std::size_t, 2>> children(arena.size(), {0, 0});
+  auto split_part = [&](std::size_t x) {
+    if (children[x][0] == 0) {
+      auto h = detail::halve(arena[x], e);
+      arena.push_back(std::move(h[0]));
+      arena.push_back(std::move(h[1]));
+      children.push_back({0, 0});
+      children.push_back({0, 0});
+      children[x] = {arena.size() - 2, arena.size() - 1};
+    }
+    return children[x];
+  };
   while (!heap.empty()) {
     const Pair top = heap.top();
     heap.pop();
     if (!(top.lb < std::ldexp(best.distance, -e) - tol())) break;  // nothing left can improve enough
     if (++work > 2'000'000) throw NumericalError("distance: the search exceeded 2,000,000 pairs of parts");
+    const Part& x = arena[top.x];
+    const Part& y = arena[top.y];
     // Upper bound from the chords' closest parameters, evaluated on the curves.
-    const auto st = detail::closest_on_segments(top.x.p0, top.x.p1, top.y.p0, top.y.p1);
-    offer(pa.global_parameter(top.x.index, top.x.t0 + st[0] * (top.x.t1 - top.x.t0)),
-          pb.global_parameter(top.y.index, top.y.t0 + st[1] * (top.y.t1 - top.y.t0)));
-    const T sx = norm(top.x.box.hi - top.x.box.lo), sy = norm(top.y.box.hi - top.y.box.lo);
-    const bool can_x = top.x.t1 - top.x.t0 > T(1e-15), can_y = top.y.t1 - top.y.t0 > T(1e-15);
+    const auto st = detail::closest_on_segments(x.p0, x.p1, y.p0, y.p1);
+    offer(pa.global_parameter(x.index, x.t0 + st[0] * (x.t1 - x.t0)), pb.global_parameter(y.index, y.t0 + st[1] * (y.t1 - y.t0)));
+    const T sx = norm(x.box.hi - x.box.lo), sy = norm(y.box.hi - y.box.lo);
+    const bool can_x = x.t1 - x.t0 > T(1e-15), can_y = y.t1 - y.t0 > T(1e-15);
     if (!can_x && !can_y) continue;  // at the resolution of the parameter: the offer stands
+    const std::size_t ix = top.x, iy = top.y;
     if (can_x && (sx >= sy || !can_y)) {
-      for (const auto& h : detail::halve(top.x, e)) push(h, top.y);
+      for (std::size_t h : split_part(ix)) push(h, iy);
     } else {
-      for (const auto& h : detail::halve(top.y, e)) push(top.x, h);
+      for (std::size_t h : split_part(iy)) push(ix, h);
     }
   }
   // Newton on g(s, t) = (a(s) - b(t)) . (a'(s), -b'(t)) = 0 from the best candidate.
