@@ -220,8 +220,10 @@ CurveDistance<typename CA::Scalar, CA::dimension> distance(const CA& a, const CB
       for (std::size_t h : split_part(iy)) push(ix, h);
     }
   }
-  // Newton on g(s, t) = (a(s) - b(t)) . (a'(s), -b'(t)) = 0 from the best candidate.
-  {
+  // Newton on g(s, t) = (a(s) - b(t)) . (a'(s), -b'(t)) = 0 from the best candidate. A
+  // derivative that is not representable (coordinates near the largest double) ends the
+  // refinement: the candidate found by the search stands.
+  try {
     T s = best.t[0], t = best.t[1];
     const auto da = pa.domain(), db = pb.domain();
     for (int it = 0; it < 32; ++it) {
@@ -241,6 +243,7 @@ CurveDistance<typename CA::Scalar, CA::dimension> distance(const CA& a, const CB
       offer(s, t);
       if (done) break;
     }
+  } catch (const InvalidArgument&) {
   }
   return best;
 }

@@ -21,10 +21,12 @@ inline constexpr T arc_length_tolerance = T(1e-13);
 
 namespace detail {
 
-/// The speed |c'(t)| of a piece on [0, 1] from its scalar forms: 2^e |N(t)| / w(t)^2 with
-/// N_k the derivative numerators (w = 1 for a polynomial piece), and the parameters in
-/// (0, 1) where some N_k vanishes: the speed is smooth between them (a cusp, where all
-/// vanish, is among them).
+/// The speed |c'(t)| of a piece on [0, 1] from its scalar forms, as 2^e times the value of
+/// operator() = |N(t)| / w(t)^2 with N_k the derivative numerators (w = 1 for a polynomial
+/// piece): integrals are taken of the scaled speed and multiplied by 2^e once, so that
+/// coordinates near the largest double give a length that overflows only if the length
+/// itself does. Also the parameters in (0, 1) where some N_k vanishes: the speed is smooth
+/// between them (a cusp, where all vanish, is among them).
 template <class T, int D>
 struct PieceSpeed {
   ScalarForms<T, D> f;
@@ -53,12 +55,13 @@ struct PieceSpeed {
       const T w = de_casteljau<T, T>(std::span<const T>(f.w), t);
       s = s / w / w;
     }
-    return std::ldexp(s, f.e);
+    return s;
   }
 };
 
-/// Integrates the speed of one piece over [t0, t1] within [0, 1], split at its smooth
-/// breaks; appends the partition (piece parameters) to `parts` when given.
+/// Integrates the scaled speed of one piece over [t0, t1] within [0, 1], split at its
+/// smooth breaks (multiply by 2^sp.f.e for the length); appends the partition (piece
+/// parameters, scaled values) to `parts` when given.
 template <class T, int D>
 T piece_length(const PieceSpeed<T, D>& sp, T t0, T t1, std::vector<QuadratureInterval<T>>* parts = nullptr) {
   T total = 0;
@@ -107,9 +110,14 @@ typename C::Scalar arc_length(const C& c, typename C::Scalar from, typename C::S
     if (seg.hi <= from || seg.lo >= to) continue;
     const T t0 = from <= seg.lo ? T(0) : p.local_parameter(i, from);
     const T t1 = to >= seg.hi ? T(1) : p.local_parameter(i, to);
-    total += std::visit([&](const auto& piece) { return detail::piece_length<T, D>(detail::PieceSpeed<T, D>(piece), t0, t1); },
-                        p.segments()[i]);
+    total += std::visit(
+        [&](const auto& piece) {
+          const detail::PieceSpeed<T, D> sp(piece);
+          return std::ldexp(detail::piece_length<T, D>(sp, t0, t1), sp.f.e);
+        },
+        p.segments()[i]);
   }
+  if (!std::isfinite(total)) throw InvalidArgument("curve", "the arc length is not representable (it exceeds the largest double)");
   return total;
 }
 
@@ -136,13 +144,15 @@ class ArcLengthTable {
             speeds_.emplace_back(piece);
             std::vector<QuadratureInterval<T>> parts;
             detail::piece_length<T, D>(speeds_.back(), T(0), T(1), &parts);
+            const int e = speeds_.back().f.e;
             for (const auto& q : parts) {
-              cells_.push_back({i, q.a, q.b, total_, q.value});
-              total_ += q.value;
+              cells_.push_back({i, q.a, q.b, total_, std::ldexp(q.value, e)});
+              total_ += std::ldexp(q.value, e);
             }
           },
           pieces_.segments()[i]);
     }
+    if (!std::isfinite(total_)) throw InvalidArgument("curve", "the arc length is not representable (it exceeds the largest double)");
   }
 
   [[nodiscard]] T total() const { return total_; }
@@ -170,8 +180,10 @@ class ArcLengthTable {
                                      [](const Cell& c, T v) { return c.start + c.length < v; });
     const Cell& cell = it == cells_.end() ? cells_.back() : *it;
     const T target = std::clamp(s - cell.start, T(0), cell.length);
-    const auto& speed = speeds_[cell.piece];
-    auto partial = [&](T t) { return t <= cell.a ? T(0) : gauss_kronrod_15<T>(speed, cell.a, t).value; };
+    const auto& scaled_speed = speeds_[cell.piece];
+    const int e = scaled_speed.f.e;
+    auto speed = [&](T t) { return std::ldexp(scaled_speed(t), e); };
+    auto partial = [&](T t) { return t <= cell.a ? T(0) : std::ldexp(gauss_kronrod_15<T>(scaled_speed, cell.a, t).value, e); };
     T lo = cell.a, hi = cell.b;
     T t = cell.a + (cell.b - cell.a) * (cell.length > 0 ? target / cell.length : T(0));
     const T goal = 4 * std::numeric_limits<T>::epsilon() * total_;

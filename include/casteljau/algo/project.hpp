@@ -70,18 +70,23 @@ void projection_candidates(const Piece& c, const Point<T, D>& q, std::vector<T>&
     constant = true;
     return;
   }
-  const T noise = slack * std::numeric_limits<T>::epsilon() * detail::max_abs<T>(std::span<const T>(a));
-  for (const auto& r : bernstein_roots_with_multiplicity<T>(g, {T(0), T(1)}, noise))
-    if (r.t > 0 && r.t < 1) ts.push_back(r.t);
+  // An interior extremum of the distance is a sign change of g (or g vanishes on the whole
+  // piece, handled above): the sign-change roots of the root engine's first stage are all
+  // the candidates needed; a root of even multiplicity is a stationary inflection of the
+  // distance, never its extremum, so the engine's multiplicity stages (three more root
+  // isolations) are skipped here.
+  for (T r : bernstein_roots<T>(g))
+    if (r > 0 && r < 1) ts.push_back(r);
 }
 
 }  // namespace detail
 
 /// The point of the curve nearest to q over its whole domain (the farthest with
 /// `farthest`), guaranteed global: on every Bézier piece the extremum is at an end of the
-/// piece (the domain's ends and the breaks) or at a root of the derivative of the squared
-/// distance, and all real roots are found (bernstein_roots_with_multiplicity); every
-/// candidate is evaluated and the best kept. Ties (distances equal within 1e-12
+/// piece (the domain's ends and the breaks) or at a sign change of the derivative of the
+/// squared distance, and every sign change is found (bernstein_roots: Bernstein
+/// subdivision isolates them all, odd multiplicities included); every candidate is
+/// evaluated and the best kept. Ties (distances equal within 1e-12
 /// relative, plus 64 eps of the curve's extent from q for distances near 0) are all
 /// reported; a piece on which the distance is constant (the derivative vanishes within
 /// its rounding bound: a circular arc about q, a piece that is a point) gives an

@@ -202,14 +202,28 @@ std::vector<BernsteinRoot<T>> roots_with_multiplicity_rec(std::span<const T> c, 
   // de Casteljau's value error is below 2 n eps max|c| [Farin02, 3.1]; with the
   // coefficients' own noise, a smaller value is zero within what the data determine.
   const T bound = noise + 2 * static_cast<T>(n + 1) * std::numeric_limits<T>::epsilon() * max_abs<T>(c);
-  const T radius = T(1e-6);  // cluster radius, see bernstein_roots_with_multiplicity
   for (const auto& dr : roots_with_multiplicity_rec<T>(d, dnoise, level + 1)) {
     if (!(std::abs(de_casteljau<T, T>(c, dr.t)) <= bound)) continue;
+    const int m = std::min(dr.multiplicity + 1, max_root_multiplicity);
+    // The cluster radius: near a root of multiplicity m, p ~ p^(m)(r) (t - r)^m / m!, so
+    // p stays below its bound within (m! bound / |p^(m)(r)|)^(1/m) of r; rounding can put
+    // sign changes anywhere in there (about eps^(1/m): 6e-6 for a triple root). Twice
+    // that, at least 1e-9 and at most 1e-3 (of the interval).
+    std::vector<T> dm(c.begin(), c.end());
+    T factorial = 1;
+    for (int j = 0; j < m && dm.size() > 1; ++j) {
+      const std::size_t k = dm.size() - 1;
+      for (std::size_t i = 0; i < k; ++i) dm[i] = static_cast<T>(k) * (dm[i + 1] - dm[i]);
+      dm.pop_back();
+      factorial *= static_cast<T>(j + 1);
+    }
+    const T pm = std::abs(de_casteljau<T, T>(std::span<const T>(dm), dr.t));
+    const T radius = pm > 0 ? std::clamp(2 * std::pow(factorial * bound / pm, T(1) / static_cast<T>(m)), T(1e-9), T(1e-3)) : T(1e-3);
     // Merge the cluster of sign-change roots around it (a rounded multiple root splits
     // into nearby simple ones) into one root at the derivative's root, which is located
     // better: at the deepest level the root is simple and found to a few eps.
     std::erase_if(out, [&](const BernsteinRoot<T>& r) { return std::abs(r.t - dr.t) <= radius; });
-    out.push_back({dr.t, std::min(dr.multiplicity + 1, max_root_multiplicity)});
+    out.push_back({dr.t, m});
   }
   std::sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.t < b.t; });
   return out;
@@ -226,8 +240,10 @@ std::vector<BernsteinRoot<T>> roots_with_multiplicity_rec(std::span<const T> c, 
 /// for the Bernstein basis, then a safeguarded Illinois solve [Farin02, 5.5;
 /// LaneRiesenfeld81]); then, recursively, the roots of the derivative at which p is zero
 /// within its evaluation error bound (noise + 2 (n+1) eps |c|_inf) are roots of p of
-/// multiplicity one more than in p'. The sign-change roots of p within 1e-6 of such a
-/// root are the split images of the same rounded multiple root and are replaced by it.
+/// multiplicity one more than in p'. The sign-change roots of p near such a root (within
+/// twice the radius where the Taylor term p^(m)(r) (t - r)^m / m! stays below the bound,
+/// clamped to [1e-9, 1e-3]) are the split images of the same rounded multiple root and
+/// are replaced by it.
 ///
 /// `noise` is the absolute error of the coefficients themselves (0 when they are exact,
 /// the default); values of p below the bound are treated as zero.
@@ -235,8 +251,8 @@ std::vector<BernsteinRoot<T>> roots_with_multiplicity_rec(std::span<const T> c, 
 /// Accuracy (in units of b - a): a simple root to a few eps (the bracket ends at 4 eps)
 /// times the condition number 1 / |p'|; a root of multiplicity m is located as the
 /// simple root of p^(m-1), so to a few eps times the conditioning of that root.
-/// Multiplicity is a statement about the rounded data: distinct roots closer than about
-/// 1e-6 at which p is within its noise of 0 are reported as one multiple root, and a
+/// Multiplicity is a statement about the rounded data: distinct roots so close that p
+/// stays within its noise of 0 between them are reported as one multiple root, and a
 /// near-touch within the noise as a double root. Multiplicities above
 /// max_root_multiplicity are reported as max_root_multiplicity. An identically zero p
 /// (all |c_i| <= noise) has no isolated roots: the result is empty (callers test for it
