@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <initializer_list>
 #include <optional>
 #include <string>
 #include <variant>
@@ -13,6 +14,7 @@
 #include "casteljau/io/any_curve.hpp"
 #include "casteljau/io/fit.hpp"
 #include "casteljau/io/knots.hpp"
+#include "casteljau/io/queries.hpp"
 #include "casteljau/io/svg.hpp"
 
 namespace casteljau::cli {
@@ -89,7 +91,7 @@ void call_library(F&& f, std::string_view numerical_field = "curve") {
 
 Response eval(const Json& req) {
   const io::Fields f(req, "an eval request");
-  f.allow_only({"curve", "t", "derivatives"}, "an eval request");
+  f.allow_only({"curve", "t", "derivatives", "curvature"}, "an eval request");
   const io::AnyCurve curve = read_curve(f);
   const std::vector<double> ts = io::numbers_from_json(f.required("t"), "t");
   int k = 0;
@@ -101,6 +103,8 @@ Response eval(const Json& req) {
                                                std::to_string(k));
     }
   }
+  bool with_curvature = false;
+  if (const Json* cj = f.optional("curvature")) with_curvature = io::boolean_from_json(*cj, "curvature");
   Response r;
   call_library([&] {
     r.json = OrderedJson{{"points", points_json(io::evaluate(curve, ts))}};
@@ -109,6 +113,7 @@ Response eval(const Json& req) {
       for (int order = 1; order <= k; ++order) derivatives.push_back(points_json(io::derivatives(curve, ts, order)));
       r.json["derivatives"] = std::move(derivatives);
     }
+    if (with_curvature) r.json["curvature"] = numbers_json(io::curvature(curve, ts));
   });
   return r;
 }
@@ -386,14 +391,133 @@ Response render(const Json& req) {
 }
 
 // ---------------------------------------------------------------------------------------
+// Geometric queries (issue 8): length, param_at_length, project, features, distance,
+// area. The library names its own request fields ("point", "from", "lengths[2]"): those
+// pass through as they are.
+
+template <class F>
+void call_query(F&& f, std::initializer_list<std::string_view> own_fields) {
+  std::optional<InvalidArgument> own;
+  call_library([&] {
+    try {
+      f();
+    } catch (const InvalidArgument& e) {
+      const std::string root = e.where().substr(0, e.where().find_first_of(".["));
+      if (std::find(own_fields.begin(), own_fields.end(), root) == own_fields.end()) throw;
+      own = e;
+    }
+  });
+  if (own) throw *own;
+}
+
+std::optional<double> optional_number(const io::Fields& f, std::string_view name) {
+  const Json* j = f.optional(name);
+  if (!j) return std::nullopt;
+  return io::number_from_json(*j, name, std::string(name));
+}
+
+Response length(const Json& req) {
+  const io::Fields f(req, "a length request");
+  f.allow_only({"curve", "from", "to"}, "a length request");
+  const io::AnyCurve curve = read_curve(f);
+  const auto from = optional_number(f, "from"), to = optional_number(f, "to");
+  Response r;
+  call_query([&] { r.json = OrderedJson{{"length", io::length(curve, from, to)}}; }, {"from", "to"});
+  return r;
+}
+
+Response param_at_length(const Json& req) {
+  const io::Fields f(req, "a param_at_length request");
+  f.allow_only({"curve", "lengths"}, "a param_at_length request");
+  const io::AnyCurve curve = read_curve(f);
+  const std::vector<double> lengths = io::numbers_from_json(f.required("lengths"), "lengths");
+  Response r;
+  call_query([&] { r.json = OrderedJson{{"t", numbers_json(io::param_at_length(curve, lengths))}}; }, {"lengths"});
+  return r;
+}
+
+Response project(const Json& req) {
+  const io::Fields f(req, "a project request");
+  f.allow_only({"curve", "point", "farthest"}, "a project request");
+  const io::AnyCurve curve = read_curve(f);
+  const std::vector<double> point = io::numbers_from_json(f.required("point"), "point");
+  bool farthest = false;
+  if (const Json* j = f.optional("farthest")) farthest = io::boolean_from_json(*j, "farthest");
+  Response r;
+  call_query(
+      [&] {
+        const io::AnyProjection p = io::project(curve, point, farthest);
+        r.json = OrderedJson{{"t", p.t}, {"point", numbers_json(p.point)}, {"distance", p.distance}};
+        if (!p.all_t.empty()) r.json["all_t"] = numbers_json(p.all_t);
+        if (!p.intervals.empty()) {
+          OrderedJson iv = OrderedJson::array();
+          for (const auto& [lo, hi] : p.intervals) iv.push_back(OrderedJson::array({lo, hi}));
+          r.json["intervals"] = std::move(iv);
+        }
+      },
+      {"point"});
+  return r;
+}
+
+Response features(const Json& req) {
+  const io::Fields f(req, "a features request");
+  f.allow_only({"curve"}, "a features request");
+  const io::AnyCurve curve = read_curve(f);
+  Response r;
+  call_library([&] {
+    const io::AnyFeatures x = io::features(curve);
+    OrderedJson extrema = OrderedJson::array();
+    for (const auto& e : x.extrema) extrema.push_back(numbers_json(e));
+    r.json = OrderedJson{{"inflections", numbers_json(x.inflections)}, {"cusps", numbers_json(x.cusps)}, {"extrema", std::move(extrema)}};
+  });
+  return r;
+}
+
+Response distance(const Json& req) {
+  const io::Fields f(req, "a distance request");
+  f.allow_only({"curves"}, "a distance request");
+  const Json& cj = f.required("curves");
+  if (!cj.is_array()) throw InvalidArgument("curves", "must be an array of two curve objects, got " + std::string(io::kind_of(cj)));
+  if (cj.size() != 2) throw InvalidArgument("curves", "needs exactly two curves, got " + std::to_string(cj.size()));
+  std::vector<io::AnyCurve> curves;
+  for (std::size_t i = 0; i < 2; ++i) {
+    try {
+      curves.push_back(io::curve_from_json(cj[i]));
+    } catch (const InvalidArgument& e) {
+      throw e.within(index_path("curves", i));
+    }
+  }
+  Response r;
+  call_library([&] {
+    const io::AnyDistance d = io::distance(curves[0], curves[1]);
+    r.json = OrderedJson{{"distance", d.distance},
+                         {"t", OrderedJson::array({d.t[0], d.t[1]})},
+                         {"points", OrderedJson::array({numbers_json(d.points[0]), numbers_json(d.points[1])})}};
+  });
+  return r;
+}
+
+Response area(const Json& req) {
+  const io::Fields f(req, "an area request");
+  f.allow_only({"curve"}, "an area request");
+  const io::AnyCurve curve = read_curve(f);
+  Response r;
+  call_library([&] { r.json = OrderedJson{{"area", io::area(curve)}}; });
+  return r;
+}
+
+// ---------------------------------------------------------------------------------------
 // Descriptions. Examples are real responses of this program (checked by tests/cli).
 
 constexpr std::string_view eval_details = R"(Evaluates a curve at parameters, optionally with derivatives with respect to the
 curve's parameter.
 
-Request:  curve, t (array of numbers), derivatives (optional integer k >= 0, default 0)
+Request:  curve, t (array of numbers), derivatives (optional integer k >= 0, default 0),
+          curvature (optional boolean, default false)
 Response: points (one per t); when k > 0, derivatives: k arrays (orders 1..k), each with
-          one vector per t. Parameters outside the domain extrapolate the first or last piece.
+          one vector per t; with curvature, curvature: one number per t (signed in 2-D,
+          positive turning left; >= 0 otherwise; an error where the velocity is zero).
+          Parameters outside the domain extrapolate the first or last piece.
 
 Example:
   echo '{"curve": {"type": "bezier", "points": [[0,0],[1,2],[3,2],[4,0]]}, "t": [0, 0.5], "derivatives": 1}' | casteljau eval
@@ -527,6 +651,68 @@ Response: an SVG document
 Example:
   echo '{"curve": {"type": "bezier", "points": [[0,0],[1,2],[2,0]]}, "width": 320, "height": 240}' | casteljau render > curve.svg)";
 
+constexpr std::string_view length_details = R"(Arc length of a curve over its domain or between two parameters, to a relative
+accuracy of 1e-12 (adaptive Gauss-Kronrod on the Bezier pieces, split at cusps).
+
+Request:  curve, from, to (optional parameters in the domain, from <= to; default its ends)
+Response: length
+
+Example:
+  echo '{"curve": {"type": "bezier", "points": [[0,0],[3,4]]}}' | casteljau length
+  {"length":5.0})";
+
+constexpr std::string_view param_at_length_details = R"(The parameters at given arc lengths from the domain's start (the inverse of length).
+
+Request:  curve, lengths (array, each in [0, the curve's length])
+Response: t (one parameter per length)
+
+Example:
+  echo '{"curve": {"type": "bezier", "points": [[0,0],[1,0],[2,0]]}, "lengths": [0, 0.5, 2]}' | casteljau param_at_length
+  {"t":[0.0,0.25,1.0]})";
+
+constexpr std::string_view project_details = R"(The point of a curve nearest to a point (farthest with farthest: true), the global
+extremum over the whole domain.
+
+Request:  curve, point, farthest (optional boolean, default false)
+Response: t, point, distance; all_t when several parameters tie (distances equal within
+          1e-12 relative); intervals where the distance is constant and extreme on a whole
+          interval (a circular arc about the point, a curve that is a single point)
+
+Example:
+  echo '{"curve": {"type": "bezier", "points": [[0,0],[1,2],[2,0]]}, "point": [1,3]}' | casteljau project
+  {"t":0.5,"point":[1.0,1.0],"distance":2.0})";
+
+constexpr std::string_view features_details = R"(Inflections and cusps (plane curves) and, per axis, the parameters where that
+coordinate has a local extremum (inside the domain, breaks included).
+
+Request:  curve
+Response: inflections, cusps (parameters; empty unless the curve is 2-D), extrema (one
+          array of parameters per axis)
+
+Example:
+  echo '{"curve": {"type": "bezier", "points": [[0,0],[1,1],[2,-1],[3,0]]}}' | casteljau features
+  {"inflections":[0.5],"cusps":[],"extrema":[[],[0.21132486540518713,0.7886751345948129]]})";
+
+constexpr std::string_view distance_details = R"(The minimum distance between two curves of one dimension, over both domains.
+
+Request:  curves: [a, b]
+Response: distance, t: [ta, tb], points: [a(ta), b(tb)]
+
+Example:
+  echo '{"curves": [{"type": "bezier", "points": [[0,0],[2,0]]}, {"type": "bezier", "points": [[1,1],[1,3]]}]}' | casteljau distance
+  {"distance":1.0,"t":[0.5,0.0],"points":[[1.0,0.0],[1.0,1.0]]})";
+
+constexpr std::string_view area_details = R"(The signed area enclosed by a closed plane curve (its end equal to its start within
+1e-9 of its extent), positive counter-clockwise; exact for polynomial pieces (Green's
+theorem in Bernstein form).
+
+Request:  curve (2-D, closed)
+Response: area
+
+Example:
+  echo '{"curve": {"type": "polyline", "points": [[0,0],[2,0],[2,1],[0,1],[0,0]]}}' | casteljau area
+  {"area":2.0})";
+
 constexpr std::string_view later_details = R"(Defined by the command line contract (shared/spec/cli.md) but not supported by this
 version: running it is an error (exit status 2).)";
 
@@ -541,16 +727,16 @@ constexpr Command all_commands[] = {
     {"flatten", "Polyline within a distance tolerance of a curve", flatten_details, true},
     {"render", "Draw curves as an SVG document", render_details, true},
     {"insert_knot", "Insert a knot into a bspline or nurbs curve", insert_knot_details, true},
-    {"length", "Arc length of a curve (not supported yet)", later_details, false},
-    {"project", "Nearest point of a curve (not supported yet)", later_details, false},
+    {"length", "Arc length of a curve", length_details, true},
+    {"project", "Nearest (or farthest) point of a curve to a point", project_details, true},
     {"intersect", "Intersections of plane curves (not supported yet)", later_details, false},
     {"fit", "Fit a B-spline to points: interpolation, least squares, tolerance", fit_details, true},
     {"remove_knot", "Remove a knot from a bspline or nurbs curve within a tolerance", remove_knot_details, true},
     {"subdivide", "Subdivision curves: Chaikin, Lane-Riesenfeld, 4-point", subdivide_details, true},
-    {"param_at_length", "Parameters at given arc lengths (not supported yet)", later_details, false},
-    {"features", "Inflections, cusps and extrema of a curve (not supported yet)", later_details, false},
-    {"distance", "Minimum distance between two curves (not supported yet)", later_details, false},
-    {"area", "Signed area of a closed plane curve (not supported yet)", later_details, false},
+    {"param_at_length", "Parameters at given arc lengths", param_at_length_details, true},
+    {"features", "Inflections, cusps and extrema of a curve", features_details, true},
+    {"distance", "Minimum distance between two curves", distance_details, true},
+    {"area", "Signed area of a closed plane curve", area_details, true},
 };
 
 }  // namespace
@@ -578,6 +764,7 @@ Response run(const Command& command, const Json& request) {
       {"remove_knot", remove_knot},
       {"subdivide", subdivide},
       {"fit", fit},
+      {"length", length}, {"param_at_length", param_at_length}, {"project", project}, {"features", features}, {"distance", distance}, {"area", area},
   };
   for (const auto& [name, handler] : handlers) {
     if (name == command.name) {

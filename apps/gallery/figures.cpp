@@ -1051,6 +1051,7 @@ const std::vector<FigureFunction>& figure_list() {
       bernstein_basis, de_casteljau_construction, subdivision, degree_elevation, convex_hull_property,
       affine_invariance, continuity, rational_circle, tight_bounds, hodograph, degree_reduction, pieces_of_a_path,
       knot_insertion, nurbs_circle_figure, subdivision_schemes, four_point_scheme,
+      closest_points, curvature_comb,
   };
   return list;
 }

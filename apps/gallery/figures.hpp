@@ -17,6 +17,10 @@ struct Figure {
 
 using FigureFunction = Figure (*)();
 
+/// Figures of the geometric queries (figures_queries.cpp).
+Figure closest_points();
+Figure curvature_comb();
+
 /// Every figure in page order. To add one: write a FigureFunction in figures.cpp and
 /// append it here (docs/gallery.md).
 const std::vector<FigureFunction>& figure_list();

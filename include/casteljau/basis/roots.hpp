@@ -11,6 +11,7 @@
 
 #include "casteljau/basis/binomial.hpp"
 #include "casteljau/basis/de_casteljau.hpp"
+#include "casteljau/core/interval.hpp"
 
 namespace casteljau {
 
@@ -161,6 +162,122 @@ std::vector<T> bernstein_roots(std::span<const T> c, T merge = T(1e-10)) {
     if (merged.empty() || r - merged.back() > merge) merged.push_back(r);
   }
   return merged;
+}
+
+/// A real root of a polynomial and its multiplicity m >= 1 (see bernstein_roots_with_multiplicity).
+template <class T>
+struct BernsteinRoot {
+  T t;
+  int multiplicity;
+  friend bool operator==(const BernsteinRoot&, const BernsteinRoot&) = default;
+};
+
+/// The highest multiplicity bernstein_roots_with_multiplicity resolves: a root of
+/// multiplicity above it is reported with this multiplicity (meaning "at least"). Each
+/// level costs one more root isolation on a derivative.
+inline constexpr int max_root_multiplicity = 4;
+
+namespace detail {
+
+/// |c|_inf, the scale of a Bernstein form (its values on [0, 1] are convex combinations).
+template <class T>
+T max_abs(std::span<const T> c) {
+  T m = 0;
+  for (T x : c) m = std::max(m, std::abs(x));
+  return m;
+}
+
+template <class T>
+std::vector<BernsteinRoot<T>> roots_with_multiplicity_rec(std::span<const T> c, T noise, int level) {
+  std::vector<BernsteinRoot<T>> out;
+  for (T r : bernstein_roots<T>(c)) out.push_back({r, 1});
+  const std::size_t n = c.size() - 1;
+  if (n < 2 || level + 1 >= max_root_multiplicity) return out;
+  // The derivative n (c_{i+1} - c_i): a root of p of multiplicity m >= 2 is a root of p'
+  // of multiplicity m - 1 at which p vanishes. Each coefficient adds 2 n noise.
+  std::vector<T> d(n);
+  for (std::size_t i = 0; i < n; ++i) d[i] = static_cast<T>(n) * (c[i + 1] - c[i]);
+  const T dnoise = 2 * static_cast<T>(n) * (noise + std::numeric_limits<T>::epsilon() * max_abs<T>(c));
+  if (max_abs<T>(d) <= dnoise) return out;  // p constant within its noise
+  // de Casteljau's value error is below 2 n eps max|c| [Farin02, 3.1]; with the
+  // coefficients' own noise, a smaller value is zero within what the data determine.
+  const T bound = noise + 2 * static_cast<T>(n + 1) * std::numeric_limits<T>::epsilon() * max_abs<T>(c);
+  for (const auto& dr : roots_with_multiplicity_rec<T>(d, dnoise, level + 1)) {
+    if (!(std::abs(de_casteljau<T, T>(c, dr.t)) <= bound)) continue;
+    const int m = std::min(dr.multiplicity + 1, max_root_multiplicity);
+    // The cluster radius: near a root of multiplicity m, p ~ p^(m)(r) (t - r)^m / m!, so
+    // p stays below its bound within (m! bound / |p^(m)(r)|)^(1/m) of r; rounding can put
+    // sign changes anywhere in there (about eps^(1/m): 6e-6 for a triple root). Twice
+    // that, at least 1e-9 and at most 1e-3 (of the interval).
+    std::vector<T> dm(c.begin(), c.end());
+    T factorial = 1;
+    for (int j = 0; j < m && dm.size() > 1; ++j) {
+      const std::size_t k = dm.size() - 1;
+      for (std::size_t i = 0; i < k; ++i) dm[i] = static_cast<T>(k) * (dm[i + 1] - dm[i]);
+      dm.pop_back();
+      factorial *= static_cast<T>(j + 1);
+    }
+    const T pm = std::abs(de_casteljau<T, T>(std::span<const T>(dm), dr.t));
+    const T radius = pm > 0 ? std::clamp(2 * std::pow(factorial * bound / pm, T(1) / static_cast<T>(m)), T(1e-9), T(1e-3)) : T(1e-3);
+    // Merge the cluster of sign-change roots around it (a rounded multiple root splits
+    // into nearby simple ones) into one root at the derivative's root, which is located
+    // better: at the deepest level the root is simple and found to a few eps.
+    std::erase_if(out, [&](const BernsteinRoot<T>& r) { return std::abs(r.t - dr.t) <= radius; });
+    out.push_back({dr.t, m});
+  }
+  std::sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.t < b.t; });
+  return out;
+}
+
+}  // namespace detail
+
+/// The real roots in [a, b] of the polynomial whose Bernstein coefficients c are given
+/// on [a, b] (p(x) = sum c_i B(i,n)((x - a)/(b - a))), ascending, each with its
+/// multiplicity: all real roots, including those of even multiplicity that have no sign
+/// change (which bernstein_roots alone can miss once the coefficients are rounded).
+///
+/// Method: the sign-change roots of bernstein_roots (subdivision with Descartes' rule
+/// for the Bernstein basis, then a safeguarded Illinois solve [Farin02, 5.5;
+/// LaneRiesenfeld81]); then, recursively, the roots of the derivative at which p is zero
+/// within its evaluation error bound (noise + 2 (n+1) eps |c|_inf) are roots of p of
+/// multiplicity one more than in p'. The sign-change roots of p near such a root (within
+/// twice the radius where the Taylor term p^(m)(r) (t - r)^m / m! stays below the bound,
+/// clamped to [1e-9, 1e-3]) are the split images of the same rounded multiple root and
+/// are replaced by it.
+///
+/// `noise` is the absolute error of the coefficients themselves (0 when they are exact,
+/// the default); values of p below the bound are treated as zero.
+///
+/// Accuracy (in units of b - a): a simple root to a few eps (the bracket ends at 4 eps)
+/// times the condition number 1 / |p'|; a root of multiplicity m is located as the
+/// simple root of p^(m-1), so to a few eps times the conditioning of that root.
+/// Multiplicity is a statement about the rounded data: distinct roots so close that p
+/// stays within its noise of 0 between them are reported as one multiple root, and a
+/// near-touch within the noise as a double root. Multiplicities above
+/// max_root_multiplicity are reported as max_root_multiplicity. An identically zero p
+/// (all |c_i| <= noise) has no isolated roots: the result is empty (callers test for it
+/// with bernstein_negligible). Cost: up to max_root_multiplicity root isolations (p and
+/// its derivatives). Throws InvalidArgument("c[i]", ...) for a non-finite coefficient,
+/// ("interval", ...) unless a < b are finite, NumericalError if a solve does not converge.
+template <class T>
+std::vector<BernsteinRoot<T>> bernstein_roots_with_multiplicity(std::span<const T> c, Interval<T> ab = {T(0), T(1)},
+                                                                T noise = T(0)) {
+  for (std::size_t i = 0; i < c.size(); ++i) require_finite(c[i], "c[" + std::to_string(i) + "]");
+  require_finite(ab.lo, "interval.lo");
+  require_finite(ab.hi, "interval.hi");
+  if (!(ab.lo < ab.hi)) throw InvalidArgument("interval", "needs lo < hi");
+  std::vector<BernsteinRoot<T>> out;
+  if (c.empty() || detail::max_abs<T>(c) <= noise) return out;
+  out = detail::roots_with_multiplicity_rec<T>(c, noise, 0);
+  for (auto& r : out) r.t = (r.t == 0) ? ab.lo : (r.t == 1) ? ab.hi : ab.lo + (ab.hi - ab.lo) * r.t;
+  return out;
+}
+
+/// Whether the Bernstein form c is zero within `noise` (every |c_i| <= noise): then the
+/// polynomial is identically zero as far as the data determine (|p| <= |c|_inf on [0, 1]).
+template <class T>
+bool bernstein_negligible(std::span<const T> c, T noise) {
+  return detail::max_abs<T>(c) <= noise;
 }
 
 /// The product of two Bernstein forms f (degree m) and g (degree n) as one of degree m+n:

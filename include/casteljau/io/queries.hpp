@@ -1,0 +1,65 @@
+// The geometric queries on a run-time curve (AnyCurve): closest and farthest point, arc
+// length and its inverse, curvature, signed area, features and the distance between two
+// curves. Compiled once, in src/io/queries.cpp, on the curves' exact Bézier pieces (one
+// instantiation per dimension, not per curve type).
+#pragma once
+
+#include <array>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "casteljau/io/any_curve.hpp"
+
+namespace casteljau::io {
+
+/// See casteljau::project (algo/project.hpp).
+struct AnyProjection {
+  double t = 0;
+  std::vector<double> point;
+  double distance = 0;
+  std::vector<double> all_t;                       // every tied isolated parameter, when more than one
+  std::vector<std::array<double, 2>> intervals;  // parameter intervals of constant extreme distance
+};
+
+/// The nearest (farthest with `farthest`) point of the curve to `point` over its whole
+/// domain, global. Throws InvalidArgument("point", ...) when the point's dimension is not
+/// the curve's or a coordinate is not finite.
+[[nodiscard]] AnyProjection project(const AnyCurve& c, std::span<const double> point, bool farthest);
+
+/// The arc length between `from` and `to` (default: the domain's ends), relative accuracy
+/// 1e-12 (algo/length.hpp). Throws InvalidArgument("from"/"to", ...) for a range outside
+/// the domain or reversed.
+[[nodiscard]] double length(const AnyCurve& c, std::optional<double> from, std::optional<double> to);
+
+/// The parameter at each arc length (from the domain's start), each in [0, length].
+/// Throws InvalidArgument("lengths[i]", ...) for a length outside that range.
+[[nodiscard]] std::vector<double> param_at_length(const AnyCurve& c, std::span<const double> lengths);
+
+/// The curvature at each parameter (signed in 2-D, >= 0 otherwise; algo/curvature.hpp).
+/// Throws InvalidArgument("t[j]", ...) where it is undefined (zero velocity) or a
+/// derivative is not representable.
+[[nodiscard]] std::vector<double> curvature(const AnyCurve& c, std::span<const double> t);
+
+/// The signed area of a closed plane curve (algo/area.hpp). Throws
+/// InvalidArgument("curve", ...) for a curve that is not 2-D or not closed.
+[[nodiscard]] double area(const AnyCurve& c);
+
+/// Inflections and cusps (2-D; empty otherwise) and per-axis extrema (algo/features.hpp).
+struct AnyFeatures {
+  std::vector<double> inflections;
+  std::vector<double> cusps;
+  std::vector<std::vector<double>> extrema;  // one list per axis
+};
+[[nodiscard]] AnyFeatures features(const AnyCurve& c);
+
+/// The minimum distance between two curves of one dimension (algo/distance.hpp).
+/// Throws InvalidArgument("curves[1]", ...) when the dimensions differ.
+struct AnyDistance {
+  double distance = 0;
+  std::array<double, 2> t{};
+  std::array<std::vector<double>, 2> points;
+};
+[[nodiscard]] AnyDistance distance(const AnyCurve& a, const AnyCurve& b);
+
+}  // namespace casteljau::io

@@ -1,0 +1,140 @@
+// The geometric queries on AnyCurve, compiled once: every query is instantiated on
+// Pieces<double, D> for D = 1..4 only (a curve reaches it through its exact pieces).
+#include "casteljau/io/queries.hpp"
+
+#include <string>
+#include <variant>
+
+#include "casteljau/algo/area.hpp"
+#include "casteljau/algo/curvature.hpp"
+#include "casteljau/algo/distance.hpp"
+#include "casteljau/algo/features.hpp"
+#include "casteljau/algo/length.hpp"
+#include "casteljau/algo/project.hpp"
+
+namespace casteljau::io {
+
+namespace {
+
+using casteljau::detail::format_number;
+
+template <class V>
+std::vector<double> coords(const V& v) {
+  std::vector<double> out;
+  for (int k = 0; k < V::dimension; ++k) out.push_back(v[k]);
+  return out;
+}
+
+}  // namespace
+
+AnyProjection project(const AnyCurve& c, std::span<const double> point, bool farthest) {
+  return std::visit(
+      [&]<class P>(const P& p) {
+        constexpr int D = P::dimension;
+        if (point.size() != static_cast<std::size_t>(D)) {
+          throw InvalidArgument("point", "needs " + std::to_string(D) + " coordinates (the curve's dimension), got " +
+                                             std::to_string(point.size()));
+        }
+        Point<double, D> q;
+        for (int k = 0; k < D; ++k) {
+          require_finite(point[static_cast<std::size_t>(k)], "point[" + std::to_string(k) + "]");
+          q[k] = point[static_cast<std::size_t>(k)];
+        }
+        const auto r = casteljau::project(p, q, farthest);
+        AnyProjection out{r.t, coords(r.point), r.distance, r.all_t, {}};
+        for (const auto& iv : r.intervals) out.intervals.push_back({iv.lo, iv.hi});
+        return out;
+      },
+      pieces(c));
+}
+
+double length(const AnyCurve& c, std::optional<double> from, std::optional<double> to) {
+  return std::visit(
+      [&](const auto& p) {
+        const auto dom = p.domain();
+        return casteljau::arc_length(p, from.value_or(dom.lo), to.value_or(dom.hi));
+      },
+      pieces(c));
+}
+
+std::vector<double> param_at_length(const AnyCurve& c, std::span<const double> lengths) {
+  return std::visit(
+      [&]<class P>(const P& p) {
+        const ArcLengthTable<double, P::dimension> table(p);
+        std::vector<double> out;
+        for (std::size_t i = 0; i < lengths.size(); ++i) {
+          try {
+            out.push_back(table.parameter_at(lengths[i]));
+          } catch (const InvalidArgument& e) {
+            throw InvalidArgument("lengths[" + std::to_string(i) + "]", e.problem());
+          }
+        }
+        return out;
+      },
+      pieces(c));
+}
+
+std::vector<double> curvature(const AnyCurve& c, std::span<const double> t) {
+  const PointList d1 = derivatives(c, t, 1), d2 = derivatives(c, t, 2);
+  return std::visit(
+      [&]<class Curve>(const Curve&) {
+        constexpr int D = Curve::dimension;
+        std::vector<double> out;
+        for (std::size_t j = 0; j < t.size(); ++j) {
+          Vector<double, D> v1, v2;
+          for (int k = 0; k < D; ++k) {
+            v1[k] = d1[j][static_cast<std::size_t>(k)];
+            v2[k] = d2[j][static_cast<std::size_t>(k)];
+          }
+          const auto kappa = curvature_of(v1, v2);
+          if (!kappa || !std::isfinite(*kappa)) {
+            throw InvalidArgument("t[" + std::to_string(j) + "]",
+                                  "curvature is undefined at t = " + format_number(t[j]) +
+                                      (kappa ? " (it is not representable)" : ": the velocity is zero (a cusp or a stop)"));
+          }
+          out.push_back(*kappa);
+        }
+        return out;
+      },
+      pieces(c));
+}
+
+double area(const AnyCurve& c) {
+  return std::visit(
+      [&]<class P>(const P& p) -> double {
+        if constexpr (P::dimension == 2) {
+          return casteljau::area(p);
+        } else {
+          throw InvalidArgument("curve", "area needs a plane curve (dimension 2), got dimension " + std::to_string(P::dimension));
+        }
+      },
+      pieces(c));
+}
+
+AnyFeatures features(const AnyCurve& c) {
+  return std::visit(
+      [&](const auto& p) {
+        const auto f = casteljau::features(p);
+        AnyFeatures out{f.inflections, f.cusps, {}};
+        for (const auto& e : f.extrema) out.extrema.push_back(e);
+        return out;
+      },
+      pieces(c));
+}
+
+AnyDistance distance(const AnyCurve& a, const AnyCurve& b) {
+  const AnyPieces pa = pieces(a), pb = pieces(b);
+  return std::visit(
+      [&]<class PA, class PB>(const PA& x, const PB& y) -> AnyDistance {
+        if constexpr (PA::dimension == PB::dimension) {
+          const auto r = casteljau::distance(x, y);
+          return {r.distance, r.t, {coords(r.points[0]), coords(r.points[1])}};
+        } else {
+          throw InvalidArgument("curves[1]", "must have the dimension of curves[0] (" + std::to_string(PA::dimension) + "), got " +
+                                                 std::to_string(PB::dimension));
+        }
+      },
+      pa, pb);
+}
+
+}  // namespace casteljau::io

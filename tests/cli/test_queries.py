@@ -1,0 +1,617 @@
+#!/usr/bin/python3
+"""Black-box tests of the geometric queries (issue 8): project (nearest and farthest,
+ties, intervals), length, param_at_length, eval's curvature, area, features and distance,
+against closed forms and an independent high-precision oracle at test time: python3-mpmath
+(curves evaluated by de Casteljau / de Boor in 30-digit arithmetic, integrals by mpmath.quad,
+extrema by dense sampling refined with mpmath.findroot). Degenerate curves too: coincident
+control points, zero length, cusps, huge and tiny coordinates.
+
+Usage: test_queries.py PATH_TO_CASTELJAU [unittest options]
+"""
+import math
+import random
+import sys
+import unittest
+
+import mpmath
+from mpmath import mp, mpf
+
+import test_cli
+from test_cli import CliTest, bezier, run
+
+mp.dps = 30
+
+QUARTER = {"type": "rational_bezier", "points": [[1, 0], [1, 1], [0, 1]], "weights": [1, math.sqrt(0.5), 1]}
+
+
+def circle(r=1.0, cx=0.0, cy=0.0, ccw=True):
+    """A full circle as a path of four exact rational quarter arcs (domain [0, 4])."""
+    w = [1, math.sqrt(0.5), 1]
+    corners = [(1, 0), (1, 1), (0, 1), (-1, 1), (-1, 0), (-1, -1), (0, -1), (1, -1), (1, 0)]
+    if not ccw:
+        corners = [(x, -y) for x, y in corners]
+    segs = []
+    for i in range(4):
+        pts = [[cx + r * x, cy + r * y] for x, y in corners[2 * i:2 * i + 3]]
+        segs.append({"type": "rational_bezier", "points": pts, "weights": w})
+    return {"type": "path", "segments": segs}
+
+
+# ---------------------------------------------------------------------------------------
+# The oracle: curve pieces as functions of the parameter with analytic derivatives,
+# written independently of the library. They compute in the type of their argument: a
+# Python float for dense sampling, an mpf (30 digits) for references.
+
+def bern(P, t):
+    """sum_i B(i,n)(t) P_i for points P (lists), Bernstein polynomials written out."""
+    n = len(P) - 1
+    B = [math.comb(n, i) * t ** i * (1 - t) ** (n - i) for i in range(n + 1)]
+    return [sum(B[i] * P[i][k] for i in range(n + 1)) for k in range(len(P[0]))]
+
+
+def hodograph(P):
+    n = len(P) - 1
+    if n == 0:
+        return [[0.0] * len(P[0])]
+    return [[n * (y - x) for x, y in zip(P[i], P[i + 1])] for i in range(n)]
+
+
+class BezierPiece:
+    def __init__(self, P, w=None):
+        self.dim = len(P[0])
+        w = w or [1.0] * len(P)
+        self.H = [[wi * x for x in p] + [wi] for p, wi in zip(P, w)]  # homogeneous
+        self.dH = hodograph(self.H)
+        self.ddH = hodograph(self.dH)
+
+    def f(self, t):
+        h = bern(self.H, t)
+        return [x / h[-1] for x in h[:-1]]
+
+    def df(self, t, k=1):
+        h, d = bern(self.H, t), bern(self.dH, t)
+        c = [x / h[-1] for x in h[:-1]]
+        d1 = [(d[i] - d[-1] * c[i]) / h[-1] for i in range(self.dim)]
+        if k == 1:
+            return d1
+        dd = bern(self.ddH, t)
+        return [(dd[i] - 2 * d[-1] * d1[i] - dd[-1] * c[i]) / h[-1] for i in range(self.dim)]
+
+
+def deboor(U, p, P, t):
+    n = len(P)
+    span = p
+    while span < n - 1 and t >= U[span + 1]:
+        span += 1
+    d = [list(P[j + span - p]) for j in range(p + 1)]
+    for r in range(1, p + 1):
+        for j in range(p, r - 1, -1):
+            i = j + span - p
+            a = (t - U[i]) / (U[i + p + 1 - r] - U[i])
+            d[j] = [(1 - a) * x + a * y for x, y in zip(d[j - 1], d[j])]
+    return d[p]
+
+
+class SplinePiece:
+    """One knot span [a, b] of a B-spline: de Boor for the point, the derivative spline
+    (control points p (P_(i+1) - P_i) / (U_(i+p+1) - U_(i+1)), knots U[1:-1]) for c'."""
+
+    def __init__(self, U, p, P):
+        self.U, self.p, self.P = U, p, P
+        self.dim = len(P[0])
+        self.deriv = None
+        if p >= 1:
+            Q = [[p * (y - x) / (U[i + p + 1] - U[i + 1]) for x, y in zip(P[i], P[i + 1])] for i in range(len(P) - 1)]
+            self.deriv = SplinePiece(U[1:-1], p - 1, Q)
+
+    def f(self, t):
+        return deboor(self.U, self.p, self.P, t)
+
+    def df(self, t, k=1):
+        if self.deriv is None:
+            return [0.0] * self.dim
+        return self.deriv.f(t) if k == 1 else self.deriv.df(t, k - 1)
+
+
+class LinePiece:
+    def __init__(self, a, b, t0):
+        self.a, self.b, self.t0, self.dim = a, b, t0, len(a)
+
+    def f(self, t):
+        return [x + (t - self.t0) * (y - x) for x, y in zip(self.a, self.b)]
+
+    def df(self, t, k=1):
+        return [y - x for x, y in zip(self.a, self.b)] if k == 1 else [0.0] * self.dim
+
+
+class Mapped:
+    """A piece on [0, 1] seen on the break interval [a, b] of a path."""
+
+    def __init__(self, piece, a, b):
+        self.piece, self.a, self.b, self.dim = piece, a, b, piece.dim
+
+    def f(self, u):
+        return self.piece.f((u - self.a) / (self.b - self.a))
+
+    def df(self, u, k=1):
+        return [x / (self.b - self.a) ** k for x in self.piece.df((u - self.a) / (self.b - self.a), k)]
+
+
+def norm(v):
+    return sum(x * x for x in v) ** 0.5
+
+
+def roots_by_sampling(g, a, b, n=200):
+    """Sign changes of g on [a, b] by sampling (floats), refined in mpf by bisection-safe
+    Anderson iteration."""
+    out = []
+    us = [a + (b - a) * i / n for i in range(n + 1)]
+    vals = [g(u) for u in us]
+    for i in range(n):
+        if vals[i] == 0 and 0 < i:
+            out.append(mpf(us[i]))
+        elif vals[i] * vals[i + 1] < 0:
+            out.append(mpmath.findroot(lambda u: g(u), (mpf(us[i]), mpf(us[i + 1])), solver="anderson"))
+    return out
+
+
+class Oracle:
+    """A curve for the oracle: pieces (piece, t0, t1) in the curve's parameter."""
+
+    def __init__(self, pieces):
+        self.pieces = pieces
+
+    @staticmethod
+    def of(curve):
+        t = curve["type"]
+        if t == "bezier":
+            return Oracle([(BezierPiece(curve["points"]), 0.0, 1.0)])
+        if t == "rational_bezier":
+            return Oracle([(BezierPiece(curve["points"], curve["weights"]), 0.0, 1.0)])
+        if t == "polyline":
+            P = curve["points"]
+            return Oracle([(LinePiece(P[i], P[i + 1], float(i)), float(i), float(i + 1)) for i in range(len(P) - 1)])
+        if t == "bspline":
+            U, p, P = curve["knots"], curve["degree"], curve["points"]
+            ks = sorted(set(U[p:len(P) + 1]))
+            sp = SplinePiece(U, p, P)
+            return Oracle([(sp, ks[i], ks[i + 1]) for i in range(len(ks) - 1)])
+        if t == "path":
+            out = []
+            k = len(curve["segments"])
+            br = curve.get("breaks", list(range(k + 1)))
+            for seg, a, b in zip(curve["segments"], br, br[1:]):
+                for (g, t0, t1) in Oracle.of(seg).pieces:  # segments used here are on [0, 1]
+                    out.append((Mapped(g, a, b), a + t0 * (b - a), a + t1 * (b - a)))
+            return Oracle(out)
+        raise ValueError(t)
+
+    def piece_at(self, u):
+        for g, a, b in self.pieces:
+            if u <= b:
+                return g
+        return self.pieces[-1][0]
+
+    def at(self, u):
+        return self.piece_at(u).f(mpf(u))
+
+    def kinks(self, g, a, b):
+        """Where a coordinate of c' changes sign: |c'| can have a kink only there."""
+        out = []
+        for k in range(g.dim):
+            out += roots_by_sampling(lambda u: g.df(u)[k], a, b)
+        return sorted(out)
+
+    def length(self, lo=None, hi=None):
+        total = mpf(0)
+        for g, a, b in self.pieces:
+            a2 = max(a, lo) if lo is not None else a
+            b2 = min(b, hi) if hi is not None else b
+            if a2 >= b2:
+                continue
+            pts = [mpf(a2)] + [s for s in self.kinks(g, a, b) if a2 < s < b2] + [mpf(b2)]
+            total += mpmath.quad(lambda u: norm(g.df(u)), pts)
+        return total
+
+    def distance_extreme(self, q, farthest=False, samples=300):
+        """Extreme distance to q: every piece's ends and every sign change of
+        (c(u) - q) . c'(u) (dense float samples, refined in mpf)."""
+        best = None
+        for g, a, b in self.pieces:
+            h = lambda u: sum((x - y) * d for x, y, d in zip(g.f(u), q, g.df(u)))
+            for u in [mpf(a), mpf(b)] + roots_by_sampling(h, a, b, samples):
+                d = norm([x - y for x, y in zip(g.f(u), q)])
+                if best is None or (d > best[1] if farthest else d < best[1]):
+                    best = (u, d)
+        return best
+
+
+def random_cubic(rng, dim=2, scale=5.0):
+    return bezier([[rng.uniform(-scale, scale) for _ in range(dim)] for _ in range(4)])
+
+
+def random_rational(rng, dim=2):
+    n = rng.randint(2, 4)
+    return {"type": "rational_bezier", "points": [[rng.uniform(-5, 5) for _ in range(dim)] for _ in range(n + 1)],
+            "weights": [rng.uniform(0.3, 3) for _ in range(n + 1)]}
+
+
+def random_bspline(rng, dim=2):
+    p = rng.randint(2, 3)
+    n = rng.randint(p + 1, p + 4)
+    inner = sorted(rng.uniform(0, 1) for _ in range(n - p - 1))
+    U = [0.0] * (p + 1) + inner + [1.0] * (p + 1)
+    return {"type": "bspline", "degree": p, "knots": U, "points": [[rng.uniform(-5, 5) for _ in range(dim)] for _ in range(n)]}
+
+
+def random_curves(rng, count, dim=2):
+    out = []
+    for i in range(count):
+        kind = i % 4
+        if kind == 0:
+            out.append(random_cubic(rng, dim))
+        elif kind == 1:
+            out.append(random_rational(rng, dim))
+        elif kind == 2:
+            out.append(random_bspline(rng, dim))
+        else:
+            out.append({"type": "polyline", "points": [[rng.uniform(-5, 5) for _ in range(dim)] for _ in range(rng.randint(2, 6))]})
+    return out
+
+
+# ---------------------------------------------------------------------------------------
+
+class ProjectTest(CliTest):
+    def test_against_the_oracle(self):
+        rng = random.Random(8)
+        for dim in (1, 2, 3):
+            for curve in random_curves(rng, 8, dim):
+                q = [rng.uniform(-6, 6) for _ in range(dim)]
+                for farthest in (False, True):
+                    got = self.ok("project", {"curve": curve, "point": q, "farthest": farthest})
+                    u, d = Oracle.of(curve).distance_extreme(q, farthest)
+                    # Distances to 1e-12 relative (the oracle's 40 digits are exact here).
+                    self.assertLessEqual(abs(got["distance"] - float(d)), 1e-12 * max(1.0, float(d)), (curve, q, farthest))
+                    # The point is the curve's at t, at the reported distance.
+                    self.assert_close(got["point"], [float(x) for x in Oracle.of(curve).at(got["t"])], 1e-12)
+                    if "all_t" not in got:
+                        self.assertLessEqual(abs(got["t"] - float(u)), 1e-6, (curve, q, farthest, got, u))
+
+    def test_symmetric_tie_lists_all(self):
+        # Point (0, 0.5) above the tent polyline: feet at t = 0.75 and 1.25 (distance sqrt(2)/4 each).
+        got = self.ok("project", {"curve": {"type": "polyline", "points": [[-1, 0], [0, 1], [1, 0]]}, "point": [0, 0.5]})
+        self.assert_close([got["t"]], [0.75], 1e-15)
+        self.assert_close(got["all_t"], [0.75, 1.25], 1e-15)
+        self.assertAlmostEqual(got["distance"], math.sqrt(2) / 4, delta=1e-16)
+
+    def test_parabola_tie(self):
+        # y = x^2 as a quadratic from (-1, 1) to (1, 1); from (0, 2) the nearest points are at
+        # x = +-sqrt(3/2) / ... : d/dx (x^2 + (x^2 - 2)^2) = 0 -> x^2 = 3/2 outside [-1, 1],
+        # so the ends tie at distance sqrt(2).
+        got = self.ok("project", {"curve": bezier([[-1, 1], [0, -1], [1, 1]]), "point": [0, 2]})
+        self.assertAlmostEqual(got["distance"], math.sqrt(2), delta=1e-15)
+        self.assertEqual(got["all_t"], [0.0, 1.0])
+        far = self.ok("project", {"curve": bezier([[-1, 1], [0, -1], [1, 1]]), "point": [0, 2], "farthest": True})
+        self.assertEqual(far["t"], 0.5)
+        self.assertAlmostEqual(far["distance"], 2.0, delta=1e-15)
+
+    def test_circle_centre_is_an_interval(self):
+        got = self.ok("project", {"curve": QUARTER, "point": [0, 0]})
+        self.assertEqual(got["intervals"], [[0.0, 1.0]])
+        self.assertEqual(got["t"], 0.0)
+        self.assertAlmostEqual(got["distance"], 1.0, delta=1e-15)
+        full = self.ok("project", {"curve": circle(2.0, 1.0, -1.0), "point": [1, -1], "farthest": True})
+        self.assertEqual(full["intervals"], [[0.0, 4.0]])
+        self.assertAlmostEqual(full["distance"], 2.0, delta=1e-15)
+        # Off centre: a unique nearest point, no interval.
+        off = self.ok("project", {"curve": circle(), "point": [0.5, 0]})
+        self.assertNotIn("intervals", off)
+        self.assertEqual(off["t"], 0.0)
+        self.assertAlmostEqual(off["distance"], 0.5, delta=1e-15)
+
+    def test_single_point_curve(self):
+        got = self.ok("project", {"curve": bezier([[2, 3], [2, 3], [2, 3]]), "point": [5, 7]})
+        self.assertEqual((got["t"], got["point"], got["distance"]), (0.0, [2.0, 3.0], 5.0))
+        bs = {"type": "bspline", "degree": 2, "knots": [1, 1, 1, 2, 3, 3, 3], "points": [[1, 1]] * 4}
+        got = self.ok("project", {"curve": bs, "point": [1, 2]})
+        self.assertEqual((got["t"], got["distance"]), (1.0, 1.0))
+
+    def test_ends_and_breaks(self):
+        # Nearest at the domain's end (a segment), at a break (a polyline corner).
+        got = self.ok("project", {"curve": bezier([[0, 0], [2, 0]]), "point": [3, 1]})
+        self.assertEqual(got["t"], 1.0)
+        got = self.ok("project", {"curve": {"type": "polyline", "points": [[0, 0], [1, 0], [1, 1]]}, "point": [2, -1]})
+        self.assertEqual((got["t"], got["point"]), (1.0, [1.0, 0.0]))
+
+    def test_degenerate_and_scaled(self):
+        # Coincident control points, a cusp, huge and tiny coordinates: same answers scaled.
+        for pts in ([[0, 0], [0, 0], [1, 1], [1, 1]], [[0, 0], [1, 1], [0, 1], [1, 0]]):
+            for s in (1.0, 1e150, 1e-150):
+                c = bezier([[x * s for x in p] for p in pts])
+                q = [0.6 * s, 0.4 * s]
+                got = self.ok("project", {"curve": c, "point": q})
+                u, d = Oracle.of(bezier(pts)).distance_extreme([0.6, 0.4])
+                self.assertLessEqual(abs(got["distance"] / s - float(d)), 1e-12, (pts, s))
+
+    def test_bad_input(self):
+        self.bad("project", {"curve": bezier([[0, 0], [1, 1]]), "point": [1]}, "point", contains="2 coordinates")
+        self.bad("project", {"curve": bezier([[0, 0], [1, 1]])}, "point", contains="missing")
+        self.bad("project", {"curve": bezier([[0, 0], [1, 1]]), "point": [1, "a"]}, "point[1]")
+        self.bad("project", {"curve": bezier([[0, 0], [1, 1]]), "point": [0, 0], "farthest": 1}, "farthest")
+        self.bad("project", {"curve": bezier([[0, 0], [1, 1]]), "point": [0, 0], "nearest": True}, "nearest")
+
+
+class LengthTest(CliTest):
+    def test_closed_forms(self):
+        self.assertEqual(self.ok("length", {"curve": bezier([[0, 0], [3, 4]])})["length"], 5.0)
+        # A straight cubic with uneven control points: its length is the chord.
+        got = self.ok("length", {"curve": bezier([[0, 0], [3, 0], [1, 0], [4, 0]])})["length"]
+        # x(t) goes 0 -> 4 but not monotonically: the oracle integrates |x'|.
+        want = Oracle.of(bezier([[0, 0], [3, 0], [1, 0], [4, 0]])).length()
+        self.assertLessEqual(abs(got - float(want)), 1e-12 * float(want))
+        self.assertAlmostEqual(self.ok("length", {"curve": QUARTER})["length"], math.pi / 2, delta=1e-15 * math.pi)
+        self.assertAlmostEqual(self.ok("length", {"curve": circle(3.0)})["length"], 6 * math.pi, delta=1e-14 * 6 * math.pi)
+        got = self.ok("length", {"curve": bezier([[0, 0], [3, 4]]), "from": 0.2, "to": 0.7})["length"]
+        self.assertAlmostEqual(got, 2.5, delta=1e-15)
+        got = self.ok("length", {"curve": circle(), "from": 0.5, "to": 2.5})["length"]
+        self.assertAlmostEqual(got, math.pi, delta=1e-14)
+
+    def test_against_mpmath_quad(self):
+        rng = random.Random(88)
+        for dim in (1, 2, 3):
+            for curve in random_curves(rng, 8, dim):
+                got = self.ok("length", {"curve": curve})["length"]
+                o = Oracle.of(curve)
+                want = o.length()
+                self.assertLessEqual(abs(got - float(want)), 1e-12 * float(want), curve)
+
+    def test_cusp_and_degenerate(self):
+        cusp = bezier([[0, 0], [1, 1], [0, 1], [1, 0]])
+        want = Oracle.of(cusp).length()
+        for s in (1.0, 1e150, 1e-150):
+            c = bezier([[x * s for x in p] for p in cusp["points"]])
+            got = self.ok("length", {"curve": c})["length"]
+            self.assertLessEqual(abs(got / s - float(want)), 1e-12 * float(want), s)
+        # Coincident control points (zero speed at the ends): still the chord.
+        got = self.ok("length", {"curve": bezier([[0, 0], [0, 0], [1, 1], [1, 1]])})["length"]
+        self.assertAlmostEqual(got, math.sqrt(2), delta=1e-15)
+        # A point curve: exactly 0, no NaN (kurbo's arc length of a point cubic).
+        self.assertEqual(self.ok("length", {"curve": bezier([[1, 2]] * 4)})["length"], 0.0)
+        self.assertEqual(self.ok("length", {"curve": bezier([[1, 2]])})["length"], 0.0)
+        self.assertEqual(self.ok("length", {"curve": bezier([[0, 0], [3, 4]]), "from": 0.3, "to": 0.3})["length"], 0.0)
+
+    def test_bad_range(self):
+        c = bezier([[0, 0], [3, 4]])
+        self.bad("length", {"curve": c, "from": -0.1}, "from", contains="domain")
+        self.bad("length", {"curve": c, "to": 1.5}, "to", contains="domain")
+        self.bad("length", {"curve": c, "from": 0.6, "to": 0.5}, "to")
+        self.bad("length", {"curve": c, "from": "a"}, "from")
+
+
+class ParamAtLengthTest(CliTest):
+    def test_closed_form(self):
+        # x(t) = 2t + 2t^2 on [0, 1] (control points 0, 1, 4): s = 2t + 2t^2, t = (-2 + sqrt(4 + 8s)) / 4.
+        c = bezier([[0, 0], [1, 0], [4, 0]])
+        ss = [0, 0.1, 1, 2.5, 3.999, 4]
+        got = self.ok("param_at_length", {"curve": c, "lengths": ss})["t"]
+        self.assert_close(got, [(-2 + math.sqrt(4 + 8 * s)) / 4 for s in ss], 1e-14)
+        self.assertEqual(got[0], 0.0)
+        self.assertEqual(got[-1], 1.0)
+
+    def test_inverse_of_length(self):
+        rng = random.Random(5)
+        for curve in random_curves(rng, 8, 2):
+            total = self.ok("length", {"curve": curve})["length"]
+            ss = [total * rng.random() for _ in range(3)] + [total]
+            ts = self.ok("param_at_length", {"curve": curve, "lengths": ss})["t"]
+            o = Oracle.of(curve)
+            for s, t in zip(ss, ts):
+                want = o.length(hi=t)
+                self.assertLessEqual(abs(float(want) - s), 1e-12 * total, (curve, s, t))
+
+    def test_circle_equal_steps(self):
+        ts = self.ok("param_at_length", {"curve": circle(), "lengths": [k * math.pi / 2 for k in range(5)]})["t"]
+        self.assert_close(ts, [0, 1, 2, 3, 4], 1e-13)
+
+    def test_bad_lengths(self):
+        c = bezier([[0, 0], [3, 4]])
+        self.bad("param_at_length", {"curve": c, "lengths": [1, -0.5]}, "lengths[1]", contains="[0, 5]")
+        self.bad("param_at_length", {"curve": c, "lengths": [5.1]}, "lengths[0]")
+        self.bad("param_at_length", {"curve": c}, "lengths", contains="missing")
+        # A point curve has length 0: only 0 is valid.
+        self.assertEqual(self.ok("param_at_length", {"curve": bezier([[1, 1]] * 3), "lengths": [0]})["t"], [0.0])
+        self.bad("param_at_length", {"curve": bezier([[1, 1]] * 3), "lengths": [1e-3]}, "lengths[0]")
+
+
+class CurvatureTest(CliTest):
+    def test_circle_signs(self):
+        ts = [0, 0.3, 1, 2.5, 4]
+        got = self.ok("eval", {"curve": circle(2.0), "t": ts, "curvature": True})["curvature"]
+        self.assert_close(got, [0.5] * len(ts), 1e-14)
+        got = self.ok("eval", {"curve": circle(2.0, ccw=False), "t": ts, "curvature": True})["curvature"]
+        self.assert_close(got, [-0.5] * len(ts), 1e-14)
+        # Without the flag there is no curvature field.
+        self.assertNotIn("curvature", self.ok("eval", {"curve": circle(), "t": [0]}))
+
+    def test_against_mpmath(self):
+        rng = random.Random(3)
+        for dim in (2, 3):
+            for _ in range(4):
+                c = random_cubic(rng, dim)
+                ts = [rng.random() for _ in range(5)]
+                got = self.ok("eval", {"curve": c, "t": ts, "curvature": True})["curvature"]
+                g = BezierPiece(c["points"])
+                for t, k in zip(ts, got):
+                    d1, d2 = g.df(mpf(t)), g.df(mpf(t), 2)
+                    sp = mpmath.sqrt(sum(x * x for x in d1))
+                    if dim == 2:
+                        want = (d1[0] * d2[1] - d1[1] * d2[0]) / sp ** 3
+                    else:
+                        cr = [d1[1] * d2[2] - d1[2] * d2[1], d1[2] * d2[0] - d1[0] * d2[2], d1[0] * d2[1] - d1[1] * d2[0]]
+                        want = mpmath.sqrt(sum(x * x for x in cr)) / sp ** 3
+                    self.assertLessEqual(abs(k - float(want)), 1e-10 * max(1, abs(float(want))), (c, t))
+                    if dim == 3:
+                        self.assertGreaterEqual(k, 0)
+
+    def test_line_and_cusp(self):
+        got = self.ok("eval", {"curve": bezier([[0], [1], [3]]), "t": [0.5], "curvature": True})["curvature"]
+        self.assertEqual(got, [0.0])
+        self.bad("eval", {"curve": bezier([[0, 0], [1, 1], [0, 1], [1, 0]]), "t": [0.2, 0.5], "curvature": True}, "t[1]",
+                 contains="velocity is zero")
+        self.bad("eval", {"curve": bezier([[0, 0], [1, 1]]), "t": [0.5], "curvature": "yes"}, "curvature")
+
+
+class AreaTest(CliTest):
+    def test_polygons_and_circles(self):
+        square = [[0, 0], [2, 0], [2, 1], [0, 1], [0, 0]]
+        self.assertEqual(self.ok("area", {"curve": {"type": "polyline", "points": square}})["area"], 2.0)
+        self.assertEqual(self.ok("area", {"curve": {"type": "polyline", "points": square[::-1]}})["area"], -2.0)
+        got = self.ok("area", {"curve": circle(3.0, 10.0, -7.0)})["area"]
+        self.assertAlmostEqual(got, 9 * math.pi, delta=1e-13 * 9 * math.pi)
+        got = self.ok("area", {"curve": circle(3.0, ccw=False)})["area"]
+        self.assertAlmostEqual(got, -9 * math.pi, delta=1e-13 * 9 * math.pi)
+
+    def test_cubic_loops_against_mpmath(self):
+        rng = random.Random(11)
+        for _ in range(6):
+            P = [[rng.uniform(-5, 5), rng.uniform(-5, 5)] for _ in range(3)]
+            pts = P + [P[0]]
+            got = self.ok("area", {"curve": bezier(pts)})["area"]
+            g = BezierPiece(pts)
+            want = mpmath.quad(lambda t: (g.f(t)[0] * g.df(t)[1] - g.f(t)[1] * g.df(t)[0]) / 2, [0, 1])
+            scale = max(abs(x) for p in pts for x in p) ** 2
+            self.assertLessEqual(abs(got - float(want)), 1e-14 * scale, pts)
+
+    def test_translation_invariant_far_away(self):
+        # The same unit square far from the origin: exactly 1 (coordinates relative to the start).
+        sq = [[1e8, 1e8], [1e8 + 1, 1e8], [1e8 + 1, 1e8 + 1], [1e8, 1e8 + 1], [1e8, 1e8]]
+        self.assertEqual(self.ok("area", {"curve": {"type": "polyline", "points": sq}})["area"], 1.0)
+
+    def test_bad(self):
+        self.bad("area", {"curve": bezier([[0, 0], [1, 1], [2, 0]])}, "curve", contains="closed")
+        self.bad("area", {"curve": bezier([[0, 0, 0], [1, 1, 1], [0, 0, 0]])}, "curve", contains="dimension 2")
+
+
+class FeaturesTest(CliTest):
+    def test_closed_forms(self):
+        got = self.ok("features", {"curve": bezier([[0, 0], [1, 1], [2, -1], [3, 0]])})
+        self.assert_close(got["inflections"], [0.5], 1e-15)
+        self.assert_close(got["extrema"][1], [0.5 - math.sqrt(3) / 6, 0.5 + math.sqrt(3) / 6], 1e-15)
+        self.assertEqual(got["extrema"][0], [])
+        self.assertEqual(got["cusps"], [])
+        cusp = self.ok("features", {"curve": bezier([[0, 0], [1, 1], [0, 1], [1, 0]])})
+        self.assert_close(cusp["cusps"], [0.5], 1e-8)  # a double root of x': eps^(1/2) at worst
+        self.assertEqual(cusp["inflections"], [])
+        # A polyline's corner is an extremum of y at the break.
+        got = self.ok("features", {"curve": {"type": "polyline", "points": [[0, 0], [1, 1], [2, 0], [3, 0]]}})
+        self.assertEqual(got["extrema"], [[], [1.0]])
+        # Straight lines and conics have no inflections.
+        self.assertEqual(self.ok("features", {"curve": bezier([[0, 0], [1, 1], [3, 3], [4, 4]])})["inflections"], [])
+        self.assertEqual(self.ok("features", {"curve": circle()})["inflections"], [])
+        # A flat point (y = x^4 near 0) is not an inflection.
+        flat = bezier([[-1, 1], [-0.5, -1], [0, 5 / 3 - 2], [0.5, -1], [1, 1]])
+        self.assertEqual(self.ok("features", {"curve": flat})["inflections"], [])
+        # 3-D: extrema only.
+        got = self.ok("features", {"curve": bezier([[0, 0, 0], [1, 2, -1], [2, 0, 1]])})
+        self.assertEqual((got["inflections"], got["cusps"]), ([], []))
+        self.assert_close(got["extrema"], [[], [0.5], [1 / 3]], 1e-15)  # z = 3t^2 - 2t
+
+    def test_random_cubics_against_sampling(self):
+        rng = random.Random(21)
+        for _ in range(10):
+            c = random_cubic(rng)
+            got = self.ok("features", {"curve": c})
+            g = BezierPiece(c["points"])
+            def cross(t):
+                d1, d2 = g.df(t), g.df(t, 2)
+                return d1[0] * d2[1] - d1[1] * d2[0]
+            want = [float(r) for r in roots_by_sampling(cross, 0.0, 1.0, 400)]
+            self.assert_close(got["inflections"], want, 1e-12)
+            for k in range(2):
+                want = [float(r) for r in roots_by_sampling(lambda t: g.df(t)[k], 0.0, 1.0, 400)]
+                self.assert_close(got["extrema"][k], want, 1e-12)
+
+
+class DistanceTest(CliTest):
+    def test_closed_forms(self):
+        got = self.ok("distance", {"curves": [bezier([[0, 0], [2, 0]]), bezier([[1, 1], [1, 3]])]})
+        self.assertEqual((got["distance"], got["t"]), (1.0, [0.5, 0.0]))
+        # Concentric circles: the radii's difference, at any parameters (a constant distance).
+        got = self.ok("distance", {"curves": [circle(1.0), circle(2.5)]})
+        self.assertAlmostEqual(got["distance"], 1.5, delta=1e-14)
+        # Crossing curves: 0 at the crossing.
+        got = self.ok("distance", {"curves": [bezier([[0, 0], [1, 2], [2, 0]]), bezier([[0, 1], [2, 1]])]})
+        self.assertLessEqual(got["distance"], 1e-15)
+        self.assertLessEqual(abs(got["points"][0][1] - 1), 1e-14)
+        # The same curve twice: 0.
+        c = random_cubic(random.Random(1))
+        self.assertEqual(self.ok("distance", {"curves": [c, c]})["distance"], 0.0)
+
+    def test_random_pairs_against_oracle(self):
+        rng = random.Random(42)
+        for i in range(12):
+            dim = 2 if i < 8 else 3
+            a, b = random_curves(rng, 2, dim) if i % 2 else (random_cubic(rng, dim), random_cubic(rng, dim, 3.0))
+            b = dict(b)
+            # Move b away so that most pairs do not cross.
+            shift = [rng.uniform(-4, 4) for _ in range(dim)]
+            b["points"] = [[x + s for x, s in zip(p, shift)] for p in b["points"]]
+            got = self.ok("distance", {"curves": [a, b]})
+            want = self.oracle(a, b)
+            # Never below the true minimum (beyond rounding), and within the guaranteed 1e-7
+            # relative of it (in practice the Newton refinement gives full precision).
+            self.assertGreaterEqual(got["distance"], float(want) - 1e-13, (a, b))
+            self.assertLessEqual(got["distance"], float(want) * (1 + 1e-7) + 1e-13, (a, b, got, want))
+            self.assertLessEqual(abs(got["distance"] - float(want)), 1e-12 * max(1, float(want)), (a, b, got, want))
+            oa, ob = Oracle.of(a), Oracle.of(b)
+            self.assert_close(got["points"][0], [float(x) for x in oa.at(got["t"][0])], 1e-12)
+            self.assert_close(got["points"][1], [float(x) for x in ob.at(got["t"][1])], 1e-12)
+
+    @staticmethod
+    def oracle(a, b, n=100):
+        """Dense float grid on both curves; the best pairs refined by Newton on the
+        gradient of |a(s) - b(t)|^2 in mpf; and the exact projections of every piece's
+        ends on the other curve (a minimum may lie at an end)."""
+        oa, ob = Oracle.of(a), Oracle.of(b)
+        def grid(o):
+            return [(g, lo, hi, lo + (hi - lo) * i / n) for g, lo, hi in o.pieces for i in range(n + 1)]
+        ga, gb = grid(oa), grid(ob)
+        fa = [x[0].f(x[3]) for x in ga]
+        fb = [x[0].f(x[3]) for x in gb]
+        pairs = sorted((sum((x - y) ** 2 for x, y in zip(pa, pb)), i, j) for i, pa in enumerate(fa) for j, pb in enumerate(fb))
+        best = mpf(pairs[0][0]) ** 0.5
+        for _, i, j in pairs[:6]:
+            (g, la, ha, s), (h, lb, hb, t) = ga[i], gb[j]
+            s, t = mpf(s), mpf(t)
+            for _ in range(40):
+                r = [x - y for x, y in zip(g.f(s), h.f(t))]
+                a1, b1, a2, b2 = g.df(s), h.df(t), g.df(s, 2), h.df(t, 2)
+                dot = lambda u, v: sum(x * y for x, y in zip(u, v))
+                gs, gt = dot(r, a1), -dot(r, b1)
+                # Newton on the gradient of |r|^2 / 2, with its exact Hessian.
+                h00, h01, h11 = dot(a1, a1) + dot(r, a2), -dot(a1, b1), dot(b1, b1) - dot(r, b2)
+                det = h00 * h11 - h01 * h01
+                if det == 0:
+                    break
+                s2 = min(max(s - (h11 * gs - h01 * gt) / det, mpf(la)), mpf(ha))
+                t2 = min(max(t - (h00 * gt - h01 * gs) / det, mpf(lb)), mpf(hb))
+                if abs(s2 - s) < mpf(10) ** -25 and abs(t2 - t) < mpf(10) ** -25:
+                    break
+                s, t = s2, t2
+            best = min(best, norm([x - y for x, y in zip(g.f(s), h.f(t))]))
+        for o, other in ((oa, ob), (ob, oa)):
+            for g, lo, hi in o.pieces:
+                for u in (lo, hi):
+                    best = min(best, other.distance_extreme([mpf(x) for x in g.f(mpf(u))], samples=100)[1])
+        return best
+
+    def test_bad(self):
+        self.bad("distance", {"curves": [bezier([[0, 0], [1, 1]])]}, "curves", contains="two")
+        self.bad("distance", {"curves": [bezier([[0, 0], [1, 1]]), bezier([[0], [1]])]}, "curves[1]", contains="dimension")
+        self.bad("distance", {"curves": [bezier([[0, 0], [1, 1]]), {"type": "bezier"}]}, "curves[1].points")
+        self.bad("distance", {"curves": 3}, "curves")
+
+
+if __name__ == "__main__":
+    test_cli.BINARY = sys.argv.pop(1)
+    unittest.main()
