@@ -13,8 +13,16 @@ namespace {
 
 Pieces<double, 2> planar(const AnyCurve& c, const char* where) {
   AnyPieces p = pieces(c);
-  if (auto* q = std::get_if<Pieces<double, 2>>(&p)) return std::move(*q);
-  throw InvalidArgument(where, "intersect needs 2-D curves, got a curve of dimension " + std::to_string(dimension(c)));
+  auto* q = std::get_if<Pieces<double, 2>>(&p);
+  if (!q) throw InvalidArgument(where, "intersect needs 2-D curves, got a curve of dimension " + std::to_string(dimension(c)));
+  for (const auto& s : q->segments()) {
+    const int n = std::visit([](const auto& x) { return x.degree(); }, s);
+    if (n > max_intersect_degree) {
+      throw InvalidArgument(where, "intersect handles pieces up to degree " + std::to_string(max_intersect_degree) + ", got degree " +
+                                       std::to_string(n) + " (the cost grows about as the cube of the degree)");
+    }
+  }
+  return std::move(*q);
 }
 
 AnyIntersections convert(const Intersections<double>& r) {

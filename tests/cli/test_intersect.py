@@ -363,6 +363,8 @@ class BadInputTest(CliTest):
         self.bad("intersect", {"curves": [bezier([[0], [1]])]}, "curves[0]", contains="2-D")
         self.bad("intersect", {"curves": [line, {"type": "bezier", "points": [[0, 0], [1, "x"]]}]}, "curves[1].points[1][1]")
         self.bad("intersect", {"curves": [line, line], "tolerance": 1}, "tolerance", contains="unknown")
+        high = bezier([[i / 300, (i % 7) / 7] for i in range(302)])  # degree 301
+        self.bad("intersect", {"curves": [line, high]}, "curves[1]", contains="degree 200")
 
 
 if __name__ == "__main__":

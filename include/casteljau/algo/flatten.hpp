@@ -109,6 +109,11 @@ C part(const C& c, typename C::Scalar t0, typename C::Scalar t1) {
   return t0 <= 0 ? c : c.split(t0).right;
 }
 
+/// Highest degree whose steps the exact deviation checks: above it a root solve per step
+/// costs more than the vertices it saves (degree 200: 7 s against 0.1 s), and the hull
+/// test (conservative) decides alone.
+inline constexpr int exact_check_degree = 12;
+
 /// The largest distance from the piece c on [t0, t1] to the chord segment c(t0) c(t1), when
 /// it can be computed exactly: the sub-piece's control points must project inside the
 /// chord (then by the convex hull property the whole sub-piece does, and its distance to
@@ -228,7 +233,9 @@ std::optional<typename C::Scalar> chord_deviation(const C& c, typename C::Scalar
 /// convex hull test (guaranteed, conservative) or the exact deviation (chord_deviation).
 template <class C>
 bool chord_within(const C& c, typename C::Scalar t0, typename C::Scalar t1, typename C::Scalar tol) {
-  if (auto d = chord_deviation(c, t0, t1)) return *d <= tol;
+  if (c.degree() <= exact_check_degree) {
+    if (auto d = chord_deviation(c, t0, t1)) return *d <= tol;
+  }
   return is_flat(part(c, t0, t1), tol);
 }
 
@@ -252,8 +259,37 @@ void flatten_uniform(const C& c, typename C::Scalar tol, std::vector<Point<typen
     if (ok) break;
     n *= 2;
   }
-  for (double i = 1; i < n; ++i) out.push_back(c(static_cast<T>(i / n)));
-  out.push_back(c.points().back());
+  constexpr int D = C::dimension;
+  const auto& P = c.points();
+  const std::size_t m = P.size();
+  // Past degree 32 de Casteljau's O(p^2) per vertex dominates (degree 1000 at 1e5 vertices:
+  // a minute): the Bernstein-Horner form (O(p), error about p eps of the unit-scale
+  // coordinates) when the tolerance is 1000 times that error, else de Casteljau.
+  const bool horner = m > 33 && tol > T(1000) * static_cast<T>(m) * std::numeric_limits<T>::epsilon();
+  std::vector<std::vector<T>> coef;
+  std::vector<T> wts;
+  if (horner) {
+    wts.assign(m, T(1));
+    if constexpr (rational) {
+      const T wmax = *std::max_element(c.weights().begin(), c.weights().end());
+      for (std::size_t i = 0; i < m; ++i) wts[i] = c.weights()[i] / wmax;
+    }
+    coef.assign(D, std::vector<T>(m));
+    for (int d = 0; d < D; ++d)
+      for (std::size_t i = 0; i < m; ++i) coef[d][i] = wts[i] * P[i][d];
+  }
+  for (double i = 1; i < n; ++i) {
+    const T t = static_cast<T>(i / n);
+    if (horner) {
+      const T w = rational ? bernstein_value_fast<T>(wts, t) : T(1);
+      Point<T, D> q;
+      for (int d = 0; d < D; ++d) q[d] = bernstein_value_fast<T>(coef[d], t) / w;
+      out.push_back(q);
+    } else {
+      out.push_back(c(t));
+    }
+  }
+  out.push_back(P.back());
 }
 
 /// The density of the near-optimal flattening at t: sqrt(|B' x B''| / |B'|), with |B' x
@@ -271,7 +307,7 @@ T flatten_density(const Vector<T, D>& d1, const Vector<T, D>& d2) {
   return std::sqrt(std::sqrt(std::max(T(0), squared_norm(d2) - along * along)));
 }
 
-/// Samples of the near-optimal density per degree (trapezoid rule on 8 p intervals).
+/// Samples of the near-optimal density per degree (trapezoid rule on 8 p intervals, p <= 16).
 inline constexpr int density_samples_per_degree = 8;
 
 /// Cumulative near-optimal segment count F(t_j) at t_j = j / m (F(0) = 0), trapezoid rule.
@@ -279,7 +315,9 @@ template <class C>
 std::vector<typename C::Scalar> flatten_cumulative(const C& c, typename C::Scalar tol) {
   using T = typename C::Scalar;
   const int p = static_cast<int>(c.points().size()) - 1;
-  const int m = density_samples_per_degree * std::max(p, 1);
+  // Capped at degree 16 (128 samples): above it each sample costs O(p^2) and the density
+  // only guesses the first step length, which the checks correct.
+  const int m = density_samples_per_degree * std::clamp(p, 1, 16);
   std::vector<T> F(static_cast<std::size_t>(m) + 1, T(0));
   if (p < 2) return F;
   const T scale = 1 / std::sqrt(8 * tol);
@@ -336,7 +374,9 @@ void flatten_optimal(const C& c, typename C::Scalar tol, std::vector<Point<typen
     return (static_cast<T>(j) + std::clamp(frac, T(0), T(1))) / static_cast<T>(m);
   };
   auto deviation = [&](T t0, T t1) -> T {  // infinity when only the hull test could decide and it fails
-    if (auto d = chord_deviation(c, t0, t1)) return *d;
+    if (c.degree() <= exact_check_degree) {
+      if (auto d = chord_deviation(c, t0, t1)) return *d;
+    }
     return is_flat(part(c, t0, t1), tol) ? T(0) : std::numeric_limits<T>::infinity();
   };
   T t = 0;

@@ -517,7 +517,7 @@ Prepared<T> prepare(const Pieces<T, 2>& c, const Point<T, 2>& origin, int e) {
   p.size = diagonal(box);
   make_arcs(p);
   for (const auto& r : p.arcs) {
-    p.arc_parts.push_back(std::visit([&](const auto& x) { return Piece<T>(x.portion(r.lo, r.hi)); }, p.unit[r.piece]));
+    p.arc_parts.push_back(std::visit([&](const auto& x) { return Piece<T>(part(x, r.lo, r.hi)); }, p.unit[r.piece]));
     p.arc_boxes.push_back(std::visit([](const auto& x) { return x.control_bounds(); }, p.arc_parts.back()));
   }
   return p;
@@ -690,7 +690,7 @@ Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
       Box<T, 2> loop = Box<T, 2>::empty_box();
       for (std::size_t p = ca.segment_index(h.ta); p <= ca.segment_index(h.tb) && p < A.unit.size(); ++p) {
         const T s0 = std::clamp(ca.local_parameter(p, h.ta), T(0), T(1)), s1 = std::clamp(ca.local_parameter(p, h.tb), T(0), T(1));
-        if (s1 > s0) loop.add(std::visit([&](const auto& x) { return x.portion(s0, s1).control_bounds(); }, A.unit[p]));
+        if (s1 > s0) loop.add(std::visit([&](const auto& x) { return part(x, s0, s1).control_bounds(); }, A.unit[p]));
       }
       if (!loop.empty() && diagonal(loop) <= 100 * tol) continue;
     }
