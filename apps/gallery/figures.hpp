@@ -17,6 +17,10 @@ struct Figure {
 
 using FigureFunction = Figure (*)();
 
+/// Figures of intersections and flattening (figures_intersect.cpp).
+Figure intersections();
+Figure flattening_methods();
+
 /// Every figure in page order. To add one: write a FigureFunction in figures.cpp and
 /// append it here (docs/gallery.md).
 const std::vector<FigureFunction>& figure_list();
