@@ -1052,6 +1052,7 @@ const std::vector<FigureFunction>& figure_list() {
       affine_invariance, continuity, rational_circle, tight_bounds, hodograph, degree_reduction, pieces_of_a_path,
       knot_insertion, nurbs_circle_figure, subdivision_schemes, four_point_scheme,
       closest_points, curvature_comb,
+      intersections, flattening_methods,
   };
   return list;
 }

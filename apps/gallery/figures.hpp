@@ -20,6 +20,9 @@ using FigureFunction = Figure (*)();
 /// Figures of the geometric queries (figures_queries.cpp).
 Figure closest_points();
 Figure curvature_comb();
+/// Figures of intersections and flattening (figures_intersect.cpp).
+Figure intersections();
+Figure flattening_methods();
 
 /// Every figure in page order. To add one: write a FigureFunction in figures.cpp and
 /// append it here (docs/gallery.md).

@@ -1,0 +1,106 @@
+#!/usr/bin/python3
+"""Black-box tests of the three `flatten` methods (uniform, subdivision, optimal): every
+method's polyline within the tolerance of the curve by dense sampling with a de Casteljau
+and a rational evaluator written here (cubics with cusps, loops and inflections, the
+quarter circle, a NURBS circle, a path), the optimal method's count below the others, the
+default method, and bad methods.
+
+Usage: test_flatten.py PATH_TO_CASTELJAU [unittest options]
+"""
+import math
+import os
+import random
+import sys
+import unittest
+
+import numpy as np
+
+import test_cli
+from test_cli import CliTest, QUARTER_CIRCLE, bezier, de_casteljau, rational_point
+
+METHODS = ("uniform", "subdivision", "optimal")
+
+
+class FlattenMethodsTest(CliTest):
+    def flat(self, curve, tol, method):
+        return self.ok("flatten", {"curve": curve, "tolerance": tol, "method": method})["points"]
+
+    def check(self, point_at, poly, tol, samples=3000):
+        """Largest distance from samples of the curve to the polyline (numpy, vectorised
+        over segments)."""
+        a = np.array(poly[:-1], dtype=float)
+        ab = np.array(poly[1:], dtype=float) - a
+        l2 = np.maximum((ab * ab).sum(axis=1), 1e-300)
+        worst = 0.0
+        for i in range(samples + 1):
+            p = np.array(point_at(i / samples), dtype=float)
+            s = np.clip(((p - a) * ab).sum(axis=1) / l2, 0, 1)
+            d = np.sqrt((((a + s[:, None] * ab) - p) ** 2).sum(axis=1)).min()
+            worst = max(worst, d)
+        self.assertLessEqual(worst, tol)
+        return worst
+
+    def test_cubics_with_cusp_loop_inflection(self):
+        curves = {
+            "cusp": [[0, 0], [2, 2], [0, 2], [2, 0]],  # cusp at t = 1/2 (x' = 6 (1 - 2t)^2 = y' = 0)
+            "loop": [[0, 0], [3, 3], [-1, 3], [2, 0]],
+            "inflection": [[0, 0], [1, 3], [3, -1], [4, 2]],
+            "end_cusp": [[0, 0], [0, 0], [1, 2], [3, 0]],
+        }
+        for name, P in curves.items():
+            for method in METHODS:
+                for tol in (0.1, 1e-3):
+                    poly = self.flat(bezier(P), tol, method)
+                    self.assertEqual(poly[0], [float(x) for x in P[0]])
+                    self.assertEqual(poly[-1], [float(x) for x in P[-1]])
+                    with self.subTest(curve=name, method=method, tol=tol):
+                        self.check(lambda t: de_casteljau(P, t), poly, tol)
+
+    def test_quarter_circle_and_nurbs_circle(self):
+        P, w = QUARTER_CIRCLE["points"], QUARTER_CIRCLE["weights"]
+        s = math.sqrt(2) / 2
+        circle = {"type": "nurbs", "degree": 2, "knots": [0, 0, 0, 1, 1, 2, 2, 3, 3, 4, 4, 4],
+                  "points": [[1, 0], [1, 1], [0, 1], [-1, 1], [-1, 0], [-1, -1], [0, -1], [1, -1], [1, 0]],
+                  "weights": [1, s, 1, s, 1, s, 1, s, 1]}
+        fewest = math.ceil(math.pi / math.acos(1 - 1e-3))  # chords of angle <= 2 acos(1 - h)
+        for method in METHODS:
+            poly = self.flat(QUARTER_CIRCLE, 1e-3, method)
+            self.check(lambda t: rational_point(P, w, t), poly, 1e-3)
+            full = self.flat(circle, 1e-3, method)
+            for v in full:
+                self.assertAlmostEqual(math.hypot(*v), 1, delta=1e-15)
+            for a, b in zip(full, full[1:]):
+                self.assertGreaterEqual(math.hypot((a[0] + b[0]) / 2, (a[1] + b[1]) / 2), 1 - 1e-3)
+            self.assertGreaterEqual(len(full) - 1, fewest)
+            if method == "optimal":
+                self.assertLessEqual(len(full) - 1, 1.06 * fewest)
+
+    def test_path_of_mixed_segments(self):
+        path = {"type": "path", "segments": [bezier([[0, 0], [1, 2], [2, 0]]), bezier([[2, 0], [2, 0], [3, 1], [4, -1]])]}
+        for method in METHODS:
+            poly = self.flat(path, 1e-3, method)
+            self.check(lambda u: de_casteljau([[0, 0], [1, 2], [2, 0]], u * 2) if u <= 0.5
+                       else de_casteljau([[2, 0], [2, 0], [3, 1], [4, -1]], 2 * u - 1), poly, 1e-3)
+
+    def test_counts_and_default(self):
+        rng = random.Random(42)
+        totals = dict.fromkeys(METHODS, 0)
+        for _ in range(40):
+            P = [[rng.uniform(0, 100), rng.uniform(0, 100)] for _ in range(4)]
+            for method in METHODS:
+                totals[method] += len(self.flat(bezier(P), 0.1, method)) - 1
+            default = self.ok("flatten", {"curve": bezier(P), "tolerance": 0.1})["points"]
+            self.assertEqual(default, self.flat(bezier(P), 0.1, "optimal"))
+        self.assertLess(totals["optimal"], totals["subdivision"])
+        self.assertLess(totals["subdivision"], totals["uniform"])
+
+    def test_bad_method(self):
+        c = bezier([[0, 0], [1, 1], [2, 0]])
+        self.bad("flatten", {"curve": c, "tolerance": 0.1, "method": "fast"}, "method", contains="optimal")
+        self.bad("flatten", {"curve": c, "tolerance": 0.1, "method": 3}, "method")
+        self.bad("flatten", {"curve": c, "tolerance": 0, "method": "uniform"}, "tolerance")
+
+
+if __name__ == "__main__":
+    test_cli.BINARY = os.path.abspath(sys.argv.pop(1))
+    unittest.main(verbosity=1)
