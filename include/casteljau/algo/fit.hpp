@@ -86,6 +86,10 @@ std::vector<Point<T, D>> to_points(const Rhs<T, D>& x) {
   std::vector<Point<T, D>> P(static_cast<std::size_t>(x.rows()));
   for (std::size_t i = 0; i < P.size(); ++i)
     for (int d = 0; d < D; ++d) P[i][d] = x(static_cast<Eigen::Index>(i), d);
+  // Overflow (coordinates near the largest double) or a singular system that the solver
+  // did not flag: reported, not passed on as a curve error naming an output index.
+  for (const auto& q : P)
+    if (!all_finite_point(q)) throw NumericalError("fit: the solution is not finite (overflow or a singular system)");
   return P;
 }
 
