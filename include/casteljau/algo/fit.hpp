@@ -62,8 +62,11 @@ struct FitResult {
 
 namespace detail {
 
+/// Right-hand sides and solutions: one column per coordinate, the column count a run-time
+/// value, so that the sparse solvers are instantiated once per scalar type and not once
+/// per dimension (their compile time dominates this header's).
 template <class T, int D>
-using Rhs = Eigen::Matrix<T, Eigen::Dynamic, D>;
+using Rhs = Eigen::Matrix<T, Eigen::Dynamic, Eigen::Dynamic>;
 
 /// The non-zero basis functions (derivative order k) at u on span s of U, as (column, value).
 template <class T>
