@@ -251,9 +251,9 @@ BSpline<T, D> approximate(const std::vector<Point<T, D>>& Q, int p, const std::v
   if (free > 0) {
     // The overdetermined system itself (one row per interior data point, at most p + 1
     // consecutive entries each), reduced row by row to an upper triangular band R
-    // (bandwidth p + 1) by Givens rotations [GolubVanLoan13, §5.2.5 and 5.3.5; de Boor's
-    // banded least squares]: the normal equations of [PT97] would square the condition
-    // number, which grows large when few data fall in a knot span. The free columns are
+    // (bandwidth p + 1) by Givens rotations [GolubVanLoan13, §5.1.8, 5.3]: the normal
+    // equations of [PT97] would square the condition number, which grows large when few
+    // data fall in a knot span. The free columns are
     // contiguous, so a row is a window starting at its first free column; rotating it
     // against R's rows slides the window right until it meets an empty row of R or dies.
     // Cost O(m p^2), memory O(n p).
