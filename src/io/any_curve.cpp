@@ -170,6 +170,20 @@ AnyCurve elevate(const AnyCurve& c, int times) {
             throw InvalidArgument("times", "elevating degree " + std::to_string(x.degree()) + " by " + std::to_string(times) +
                                                " exceeds the highest supported degree " + std::to_string(max_degree));
           }
+          if constexpr (requires { x.knots(); }) {
+            // B-spline and NURBS: every distinct knot of the domain's interior gains
+            // `times` copies; refuse a response larger than flatten's.
+            const auto& U = x.knots();
+            const auto dom = x.domain();
+            std::size_t distinct = 0;
+            for (std::size_t i = 0; i < U.size(); ++i)
+              if (U[i] > dom.lo && U[i] < dom.hi && (i == 0 || U[i] != U[i - 1])) ++distinct;
+            const double count = static_cast<double>(x.points().size()) + static_cast<double>(times) * static_cast<double>(distinct + 1);
+            if (count > static_cast<double>(max_flatten_vertices)) {
+              throw InvalidArgument("times", "the elevated curve would have about " + casteljau::detail::format_number(count) +
+                                                 " control points, more than the limit of " + std::to_string(max_flatten_vertices));
+            }
+          }
           try {
             return AnyCurve(x.elevate(times));
           } catch (const InvalidArgument& e) {

@@ -67,14 +67,14 @@ def cases(seed, count_per_degree=4, nurbs=False):
 
 
 class KnotTest(CliTest):
-    def assert_traces(self, curve, ref, lo, hi, msg=""):
+    def assert_traces(self, curve, ref, lo, hi, msg="", tol=TOL * 10):
         """curve (a response curve) equals ref (a callable) on [lo, hi]."""
         ts = samples(lo, hi)
         got = self.ok("eval", {"curve": curve, "t": ts})["points"]
         for t, g in zip(ts, got):
             want = np.atleast_1d(ref(t)).tolist()
             scale = max(1.0, max(map(abs, want)))  # extrapolated values grow
-            self.assertLessEqual(max(abs(a - b) for a, b in zip(g, want)), TOL * 10 * scale, f"t={t} {g} vs {want} {msg}")
+            self.assertLessEqual(max(abs(a - b) for a, b in zip(g, want)), tol * scale, f"t={t} {g} vs {want} {msg}")
 
 
 class InsertKnotTest(KnotTest):
@@ -222,6 +222,17 @@ class ElevateTest(KnotTest):
             c = dict(bspline(U, P, p), type="nurbs", weights=w)
             r = self.ok("elevate", {"curve": c, "times": 2})["curve"]
             self.assert_traces(r, nurbs_oracle(U, P, w, p), lo, hi, f"p={p}")
+
+    def test_high_degree_unclamped(self):
+        # Degree 1000 from an unclamped cubic: the ends come back clamped (blossoming the
+        # end pieces beyond the domain would overflow), the curve is unchanged.
+        U, P = [0, 1, 2, 3, 4, 5, 6, 7, 8], [[0], [1], [0], [1], [2]]
+        r = self.ok("elevate", {"curve": bspline(U, P, 3), "times": 997})["curve"]
+        self.assertEqual(r["degree"], 1000)
+        self.assertEqual(r["knots"][:1001], [3] * 1001)
+        self.assert_traces(r, oracle(U, P, 3), 3, 5)
+        self.bad("elevate", {"curve": bspline([0, 0, 0, 0] + list(range(1, 2001)) + [2001] * 4, [[0]] * 2004, 3),
+                             "times": 600}, "times", contains="control points")
 
     def test_degree_limit(self):
         c = bspline([0, 0, 0, 1, 1, 1], [[0], [1], [0]], 2)

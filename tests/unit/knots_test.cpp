@@ -230,6 +230,21 @@ TEST(NurbsKnots, QuarterCircle) {
   EXPECT_NEAR(big.insert_knot(0.5).weights().front(), 1000, 1e-12);
 }
 
+// Decomposition and back: the Bézier pieces of a cubic joined at C^0, then each interior
+// knot removed while the curve does not move, give the original knots and points.
+TEST(BSplineFromPieces, RoundTrip) {
+  const Curve2 c(3, {0, 0, 0, 0, 1, 2, 2, 3, 3, 3, 3}, some_points(7, 62));
+  const auto pc = pieces(c);
+  std::vector<Bezier<double, 2>> segs;
+  for (const auto& s : pc.segments()) segs.push_back(std::get<Bezier<double, 2>>(s));
+  Curve2 d = Curve2::from_pieces(segs, pc.breaks());
+  EXPECT_EQ(d.knots(), (std::vector<double>{0, 0, 0, 0, 1, 1, 1, 2, 2, 2, 3, 3, 3, 3}));
+  EXPECT_LE(max_distance(c, d, 0, 3), 1e-14);
+  for (const double u : {1.0, 2.0}) d = d.remove_knot(u, 2, 1e-12).curve;
+  EXPECT_EQ(d.knots(), c.knots());
+  for (std::size_t i = 0; i < c.points().size(); ++i) EXPECT_LE(distance(d.points()[i], c.points()[i]), 1e-13) << i;
+}
+
 // [PT97, Ex. 7.2]: the nine-point circle, knots {0,0,0,1/4,1/4,1/2,1/2,3/4,3/4,1,1,1},
 // control points the corners and edge midpoints of the square [-1, 1]^2, weights 1 at the
 // edge midpoints and 1/sqrt 2 at the corners; every point at radius 1 to 1e-14.

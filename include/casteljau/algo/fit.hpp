@@ -9,7 +9,6 @@
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 #include <Eigen/SparseLU>
-#include <Eigen/SparseQR>
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -62,8 +61,11 @@ struct FitResult {
 
 namespace detail {
 
+/// Right-hand sides and solutions: one column per coordinate, the column count a run-time
+/// value, so that the sparse solvers are instantiated once per scalar type and not once
+/// per dimension (their compile time dominates this header's).
 template <class T, int D>
-using Rhs = Eigen::Matrix<T, Eigen::Dynamic, D>;
+using Rhs = Eigen::Matrix<T, Eigen::Dynamic, Eigen::Dynamic>;
 
 /// The non-zero basis functions (derivative order k) at u on span s of U, as (column, value).
 template <class T>
@@ -86,6 +88,10 @@ std::vector<Point<T, D>> to_points(const Rhs<T, D>& x) {
   std::vector<Point<T, D>> P(static_cast<std::size_t>(x.rows()));
   for (std::size_t i = 0; i < P.size(); ++i)
     for (int d = 0; d < D; ++d) P[i][d] = x(static_cast<Eigen::Index>(i), d);
+  // Overflow (coordinates near the largest double) or a singular system that the solver
+  // did not flag: reported, not passed on as a curve error naming an output index.
+  for (const auto& q : P)
+    if (!all_finite_point(q)) throw NumericalError("fit: the solution is not finite (overflow or a singular system)");
   return P;
 }
 
@@ -208,7 +214,7 @@ BSpline<T, D> interpolate_closed(const std::vector<Point<T, D>>& Q, int p, const
 /// with d0 / d1 also C'(0) = d0, C'(1) = d1 exactly (P_1 = P_0 + U_{p+1} d0 / p,
 /// P_{n-1} = P_n - (1 - U_n) d1 / p); the other points minimise sum_k |C(t_k) - Q_k|^2
 /// over the interior data. [PT97] solves the normal equations (banded, symmetric positive
-/// definite); this solves the banded overdetermined system by sparse QR instead, whose
+/// definite); this solves the banded overdetermined system by Givens QR instead, whose
 /// error grows with its condition number rather than with its square (data clustered so
 /// that a knot span holds almost none make it large). Requires p + 1 <= n + 1 <= number
 /// of points + derivatives; a rank-deficient system is a NumericalError.
@@ -244,38 +250,74 @@ BSpline<T, D> approximate(const std::vector<Point<T, D>>& Q, int p, const std::v
     if (!fixed[i]) column[i] = free++;
   if (free > 0) {
     // The overdetermined system itself (one row per interior data point, at most p + 1
-    // entries each), solved by sparse QR: the normal equations of [PT97] would square its
-    // condition number, which grows large when few data fall in a knot span.
-    std::vector<Eigen::Triplet<T>> entries;
-    const Eigen::Index rows = static_cast<Eigen::Index>(m) - 1;
-    if (rows < free) throw NumericalError("fit: fewer interior points than free control points");
-    detail::Rhs<T, D> rhs(rows, D);
+    // consecutive entries each), reduced row by row to an upper triangular band R
+    // (bandwidth p + 1) by Givens rotations [GolubVanLoan13, §5.1.8, 5.3]: the normal
+    // equations of [PT97] would square the condition number, which grows large when few
+    // data fall in a knot span. The free columns are
+    // contiguous, so a row is a window starting at its first free column; rotating it
+    // against R's rows slides the window right until it meets an empty row of R or dies.
+    // Cost O(m p^2), memory O(n p).
+    const std::size_t F = static_cast<std::size_t>(free), W = P + 1;
+    std::vector<T> R(F * W, T(0));                 // R[i * W + l] = entry (i, i + l)
+    std::vector<T> z(F * D, T(0));                 // rotated right-hand sides
+    std::vector<T> w(2 * W + 1), rhs_row(D);
     std::vector<std::pair<std::size_t, T>> row;
     for (std::size_t k = 1; k < m; ++k) {
-      const Eigen::Index r = static_cast<Eigen::Index>(k) - 1;
       detail::basis_row<T>(U, p, t[k], 0, row);
       Point<T, D> target = Q[k];
+      std::size_t c0 = F;  // first free column of the row
       for (const auto& [col, v] : row) {
         if (fixed[col]) {
           target = target - v * (C[col] - Point<T, D>{});
-        } else if (v != 0) {
-          entries.emplace_back(r, column[col], v);
+        } else {
+          c0 = std::min(c0, static_cast<std::size_t>(column[col]));
         }
       }
-      for (int dd = 0; dd < D; ++dd) rhs(r, dd) = target[dd];
+      if (c0 == F) continue;  // a row with only fixed columns: nothing to fit
+      std::fill(w.begin(), w.end(), T(0));
+      for (const auto& [col, v] : row)
+        if (!fixed[col]) w[static_cast<std::size_t>(column[col]) - c0] = v;
+      for (int dd = 0; dd < D; ++dd) rhs_row[static_cast<std::size_t>(dd)] = target[dd];
+      // w holds columns c0 + j; rotate against row c = c0 + j of R while w[j] != 0.
+      for (std::size_t j = 0; j < W + W && c0 + j < F; ++j) {
+        const T a = w[j];
+        if (a == 0) continue;
+        const std::size_t c = c0 + j;
+        T* Rc = &R[c * W];
+        const T r = Rc[0];
+        const T rho = std::hypot(r, a);
+        const T cs = r / rho, sn = a / rho;
+        for (std::size_t l = 0; l < W; ++l) {
+          const std::size_t wi = j + l;
+          const T wl = wi < w.size() ? w[wi] : T(0);
+          const T rl = Rc[l];
+          Rc[l] = cs * rl + sn * wl;
+          if (wi < w.size()) w[wi] = -sn * rl + cs * wl;
+        }
+        w[j] = 0;
+        for (std::size_t dd = 0; dd < static_cast<std::size_t>(D); ++dd) {
+          const T zl = z[c * D + dd], bl = rhs_row[dd];
+          z[c * D + dd] = cs * zl + sn * bl;
+          rhs_row[dd] = -sn * zl + cs * bl;
+        }
+      }
     }
-    Eigen::SparseMatrix<T> A(rows, free);
-    A.setFromTriplets(entries.begin(), entries.end());
-    A.makeCompressed();
-    Eigen::SparseQR<Eigen::SparseMatrix<T>, Eigen::COLAMDOrdering<int>> qr;
-    qr.compute(A);
-    detail::require_solved(qr.info(), "least-squares");
-    if (qr.rank() < free) throw NumericalError("fit: the least-squares system is singular (a knot span holds no data)");
-    const detail::Rhs<T, D> x = qr.solve(rhs);
-    detail::require_solved(qr.info(), "least-squares");
+    // Back substitution; a zero (or negligible) diagonal is a span without data.
+    T rmax = 0;
+    for (std::size_t i = 0; i < F; ++i) rmax = std::max(rmax, std::abs(R[i * W]));
+    std::vector<T> x(F * D, T(0));
+    for (std::size_t i = F; i-- > 0;) {
+      const T diag = R[i * W];
+      if (!(std::abs(diag) > rmax * T(1e-14))) throw NumericalError("fit: the least-squares system is singular (a knot span holds no data)");
+      for (std::size_t dd = 0; dd < static_cast<std::size_t>(D); ++dd) {
+        T sum = z[i * D + dd];
+        for (std::size_t l = 1; l < W && i + l < F; ++l) sum -= R[i * W + l] * x[(i + l) * D + dd];
+        x[i * D + dd] = sum / diag;
+      }
+    }
     for (std::size_t i = 0; i < count; ++i)
       if (!fixed[i])
-        for (int dd = 0; dd < D; ++dd) C[i][dd] = x(column[i], dd);
+        for (int dd = 0; dd < D; ++dd) C[i][dd] = x[static_cast<std::size_t>(column[i]) * D + static_cast<std::size_t>(dd)];
     for (const auto& q : C)
       if (!detail::all_finite_point(q)) throw NumericalError("fit: the least-squares system is singular");
   }

@@ -158,8 +158,8 @@ KnotForm<T, V> with_outer_knots(const KnotForm<T, V>& f, const std::vector<T>& L
 /// of multiplicity m in U is removed q - (m + r) = p - m times (remove_knot_once: exact,
 /// since the elevated curve is still C^(p-m) there). Ends: a clamped end stays clamped;
 /// an unclamped one gets the outer knots U_0 (r + 1 times), U_1, .., U_{p-1} and its end
-/// points by blossoming (with_outer_knots), unless keep_unclamped_ends is false (then
-/// both ends are clamped). Cost O(spans (p + r) p + p^3) plus, for an
+/// points by blossoming (with_outer_knots), unless keep_unclamped_ends is false, the new
+/// degree is above 100 or a blossom value overflows (then both ends are clamped). Cost O(spans (p + r) p + p^3) plus, for an
 /// unclamped end, O((p + r)^3).
 template <class T, int E>
 KnotForm<T, Point<T, E>> elevate(const KnotForm<T, Point<T, E>>& f, int r, bool keep_unclamped_ends = true) {
@@ -232,7 +232,13 @@ KnotForm<T, Point<T, E>> elevate(const KnotForm<T, Point<T, E>>& f, int r, bool 
   extend_to(U0.size() + 1);
   g.U.insert(g.U.end(), W.U.begin(), W.U.end());
   g.P.insert(g.P.end(), W.P.begin(), W.P.end());
-  const bool clamped_left = U[0] == a || !keep_unclamped_ends, clamped_right = U[m] == b || !keep_unclamped_ends;
+  // Re-blossoming an unclamped end evaluates the end piece beyond the domain: O(q^3), and
+  // at high degree the blossom values overflow. Above degree max_unclamped_elevation, or
+  // when a value is not finite, the ends are clamped instead (the same curve on the
+  // domain, the same end pieces beyond it).
+  constexpr int max_unclamped_elevation = 100;
+  const bool keep = keep_unclamped_ends && q <= max_unclamped_elevation;
+  const bool clamped_left = U[0] == a || !keep, clamped_right = U[m] == b || !keep;
   if (clamped_left && clamped_right) return g;
   std::vector<T> L(static_cast<std::size_t>(q), a), R(static_cast<std::size_t>(q), b);
   if (!clamped_left) {
@@ -243,7 +249,10 @@ KnotForm<T, Point<T, E>> elevate(const KnotForm<T, Point<T, E>>& f, int r, bool 
     for (int j = 0; j < p; ++j) R[static_cast<std::size_t>(j)] = U[n + 1 + static_cast<std::size_t>(j)];
     for (int j = 0; j < r; ++j) R[static_cast<std::size_t>(p + j)] = U[m];
   }
-  return with_outer_knots<T, V>(g, L, R);
+  KnotForm<T, V> h = with_outer_knots<T, V>(g, L, R);
+  for (const auto& pt : h.P)
+    if (!all_finite_point(pt)) return g;
+  return h;
 }
 
 /// Outer knots for unclamping: p knots spaced by the length h of the end span, a - p h ..
@@ -455,6 +464,36 @@ class BSpline {
     std::vector<T> U(k, T(0));
     U.insert(U.end(), k, T(1));
     return BSpline(c.degree(), std::move(U), c.points());
+  }
+
+  /// Bézier pieces back to a B-spline: piece i on [breaks[i], breaks[i+1]] (breaks
+  /// strictly increasing, one more than the pieces; InvalidArgument "breaks"), each
+  /// elevated to the highest degree p among them, joined with every interior break p
+  /// times (C^0 form; the join point is the mean of the two pieces' end points, which
+  /// should agree). remove_knot then restores any continuity the pieces have.
+  [[nodiscard]] static BSpline from_pieces(const std::vector<Bezier<T, D>>& segs, const std::vector<T>& breaks) {
+    if (segs.empty()) throw InvalidArgument("pieces", "needs at least one piece");
+    if (breaks.size() != segs.size() + 1) throw InvalidArgument("breaks", "needs one more break than pieces");
+    for (std::size_t i = 0; i + 1 < breaks.size(); ++i) {
+      require_finite(breaks[i + 1], "breaks[" + std::to_string(i + 1) + "]");
+      if (!(breaks[i] < breaks[i + 1])) throw InvalidArgument("breaks[" + std::to_string(i + 1) + "]", "breaks must increase");
+    }
+    int p = 1;
+    for (const auto& b : segs) p = std::max(p, b.degree());
+    std::vector<T> U(static_cast<std::size_t>(p) + 1, breaks.front());
+    std::vector<PointType> P;
+    for (std::size_t i = 0; i < segs.size(); ++i) {
+      const std::vector<PointType> Q = segs[i].elevate(p - segs[i].degree()).points();
+      if (i == 0) {
+        P.insert(P.end(), Q.begin(), Q.end());
+      } else {
+        P.back() = lerp(P.back(), Q.front(), T(0.5));
+        P.insert(P.end(), Q.begin() + 1, Q.end());
+        U.insert(U.end(), static_cast<std::size_t>(p), breaks[i]);
+      }
+    }
+    U.insert(U.end(), static_cast<std::size_t>(p) + 1, breaks.back());
+    return BSpline(p, std::move(U), std::move(P));
   }
 
   friend bool operator==(const BSpline&, const BSpline&) = default;
