@@ -535,7 +535,7 @@ struct Hit {
 
 /// Subdivision steps of the first pass over a pair of arcs, before the overlap test: a
 /// few hundred suffice for transversal arcs; coinciding arcs take many more.
-inline constexpr std::size_t lazy_nodes = 20'000;
+inline constexpr std::size_t lazy_nodes = 2000;
 
 /// The common points of two arcs (subdivision, then refinement of each seed) appended to
 /// hits. Returns false when the arcs may overlap: the node limit was reached (the seeds
