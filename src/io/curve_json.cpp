@@ -211,6 +211,29 @@ struct Format<Lagrange> {
   }
 };
 
+template <>
+struct Format<CatmullRom> {
+  static constexpr std::string_view name = "catmull_rom";
+  static AnyCurve read(const Fields& f) {
+    f.allow_only({"type", "points", "alpha", "closed", "dim"}, "a catmull_rom");
+    const std::optional<int> dim = read_dim(f);
+    const bool closed = f.has("closed") && boolean_from_json(*f.optional("closed"), "closed");
+    const RawPoints P = read_points(f.required("points"), closed ? 3 : 4, closed ? "a closed catmull_rom" : "an open catmull_rom");
+    check_dim(dim, P.dim);
+    const double alpha = f.has("alpha") ? number_from_json(*f.optional("alpha"), "alpha") : 0.5;
+    // The alpha range and the coincident points are the constructor's checks.
+    return dispatch_dimension(P.dim, [&]<int D>() { return AnyCurve(CatmullRom<double, D>(P.points<D>(), alpha, closed)); });
+  }
+  template <int D>
+  static OrderedJson write(const CatmullRom<double, D>& c) {
+    if (!c.knots_follow_points()) {
+      throw InvalidArgument("curve", "this catmull_rom curve (an image under a map that is not a similarity) keeps knots that its "
+                                     "points do not give: curve JSON cannot express it");
+    }
+    return OrderedJson{{"type", name}, {"points", points_json(c.points())}, {"alpha", c.alpha()}, {"closed", c.closed()}};
+  }
+};
+
 /// The degree, knots and points of a bspline or nurbs object: the optional `dim` must
 /// agree, the degree may not exceed max_degree; the knot rules are the constructor's.
 struct RawSpline {
@@ -296,7 +319,7 @@ std::vector<std::string_view> registered_names() {
 }
 
 /// Types of the contract that no Format entry serves yet.
-constexpr std::array<std::string_view, 3> later_types = {"cubic_spline", "hermite", "catmull_rom"};
+constexpr std::array<std::string_view, 2> later_types = {"cubic_spline", "hermite"};
 
 thread_local int path_depth = 0;
 

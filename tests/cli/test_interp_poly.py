@@ -257,6 +257,132 @@ class LagrangeTest(CliTest):
         self.bad("eval", {"curve": lagrange([0, 1, 2, 3], [[0], [1], [8], [27]]), "t": [0, 1e200]}, "t[1]")
 
 
+def barry_goldman(P, s, t):
+    """The Barry-Goldman pyramid for the segment from P[1] to P[2] with knots s[0..3], at t:
+    three levels of lerps with the knots (a direct implementation, in mpmath)."""
+    def lerp(a, b, ta, tb):
+        return [(tb - t) / (tb - ta) * x + (t - ta) / (tb - ta) * y for x, y in zip(a, b)]
+    A1 = lerp(P[0], P[1], s[0], s[1])
+    A2 = lerp(P[1], P[2], s[1], s[2])
+    A3 = lerp(P[2], P[3], s[2], s[3])
+    B1 = lerp(A1, A2, s[0], s[2])
+    B2 = lerp(A2, A3, s[1], s[3])
+    return lerp(B1, B2, s[1], s[2])
+
+
+def catmull_rom_oracle(P, alpha, closed, t, order):
+    """The curve of the contract's table at t: the segment whose interval holds t (the
+    first or last one outside the domain), by the pyramid; derivatives by mpmath.diff of
+    the pyramid (a polynomial in t) at 50 digits."""
+    N = len(P)
+    M = [[mpmath.mpf(x) for x in p] for p in P]
+    dist = lambda a, b: mpmath.sqrt(sum((x - y) ** 2 for x, y in zip(a, b)))
+    d = lambda i: mpmath.mpf(1) if alpha == 0 else dist(M[(i + 1) % N], M[i % N]) ** alpha
+    if closed:
+        s = [mpmath.mpf(0)]
+        for i in range(N):
+            s.append(s[-1] + d(i))
+        j = 0
+        while j < N - 1 and t >= s[j + 1]:
+            j += 1
+        pts = [M[(j - 1) % N], M[j], M[(j + 1) % N], M[(j + 2) % N]]
+        knots = [s[j] - d((j - 1) % N), s[j], s[j + 1], s[j + 1] + d((j + 1) % N)]
+    else:
+        s = [mpmath.mpf(0)]
+        for i in range(N - 1):
+            s.append(s[-1] + d(i))
+        s = [x - s[1] for x in s]
+        j = 0
+        while j < N - 4 and t >= s[j + 2]:
+            j += 1
+        pts = M[j:j + 4]
+        knots = s[j:j + 4]
+    T = mpmath.mpf(t)
+    out = []
+    for k in range(order + 1):
+        out.append([float(mpmath.diff(lambda x, c=c: barry_goldman(pts, knots, x)[c], T, k)) for c in range(len(P[0]))])
+    return out
+
+
+def catmull_rom(points, **extra):
+    return dict({"type": "catmull_rom", "points": points}, **extra)
+
+
+class CatmullRomTest(CliTest):
+    def test_uniform_closed_form(self):
+        # Uniform segment j: f(j) = p[j+1] exactly, f'(j) = (p[j+2] - p[j]) / 2 to a few ulps
+        # (the derivative of the Bézier form, 3 (B_1 - B_0) with B_1 = B_0 + m / 3).
+        P = [[0, 0], [1, 3], [4, 4], [6, 1], [9, 2], [10, -1]]
+        ts = [0, 1, 2, 3]
+        r = self.ok("eval", {"curve": catmull_rom(P, alpha=0), "t": ts, "derivatives": 1})
+        for j in range(4):
+            self.assertEqual(r["points"][j], P[j + 1])
+            for got, want in zip(r["derivatives"][0][j], [(a - b) / 2 for a, b in zip(P[j + 2], P[j])]):
+                self.assertAlmostEqual(got, want, delta=1e-14)
+
+    def test_matches_the_barry_goldman_pyramid(self):
+        rng = random.Random(66)
+        for alpha in (0, 0.5, 1, 0.3):
+            for closed in (False, True):
+                for dim in (1, 2, 3):
+                    N = rng.randint(3 if closed else 4, 8)
+                    P = [[rng.uniform(-5, 5) for _ in range(dim)] for _ in range(N)]
+                    c = catmull_rom(P, alpha=alpha, closed=closed)
+                    tb = self.ok("to_bezier", {"curve": c})["curve"]
+                    breaks = tb["breaks"]
+                    self.assertEqual(len(tb["segments"]), N if closed else N - 3)
+                    lo, hi = breaks[0], breaks[-1]
+                    ts = breaks + [rng.uniform(lo, hi) for _ in range(12)] + [lo - 0.2 * (hi - lo), hi + 0.2 * (hi - lo)]
+                    r = self.ok("eval", {"curve": c, "t": ts, "derivatives": 2})
+                    scale = max(abs(x) for p in P for x in p)
+                    # Knot intervals as short as ~1e-2 here: a derivative of order k grows
+                    # like 1 / shortest^k; the tolerance scales with it.
+                    shortest = min(b - a for a, b in zip(breaks, breaks[1:]))
+                    for j, t in enumerate(ts):
+                        want = catmull_rom_oracle(P, alpha, closed, t, 2)
+                        # The second derivative jumps at a joint: there the library's
+                        # right-hand segment and the oracle's (chosen by the 50-digit knot,
+                        # which may lie just above the double break) may differ.
+                        at_joint = any(abs(t - b) <= 1e-9 * (hi - lo) for b in breaks[1:-1])
+                        for k in range(2 if at_joint else 3):
+                            got = r["points"][j] if k == 0 else r["derivatives"][k - 1][j]
+                            tol = 1e-12 * scale * (1 + 1 / shortest) ** k * (1 + abs(t - lo) / (hi - lo)) ** 3
+                            for a, b in zip(got, want[k]):
+                                self.assertLessEqual(abs(a - b), tol,
+                                                     f"alpha={alpha} closed={closed} P={P} t={t} k={k}: {got} vs {want[k]}")
+
+    def test_closed_curve_closes_with_c1(self):
+        P = [[0, 0], [4, 0], [5, 3], [1, 4]]
+        c = catmull_rom(P, closed=True)
+        tb = self.ok("to_bezier", {"curve": c})["curve"]
+        hi = tb["breaks"][-1]
+        r = self.ok("eval", {"curve": c, "t": [0, hi, hi - 1e-9], "derivatives": 1})
+        self.assertEqual(r["points"][0], P[0])
+        self.assertEqual(r["points"][1], P[0])
+        # The tangent arriving at the end equals the one leaving the start.
+        for a, b in zip(r["derivatives"][0][2], r["derivatives"][0][0]):
+            self.assertAlmostEqual(a, b, delta=1e-7)
+
+    def test_errors(self):
+        P = [[0, 0], [1, 1], [2, 0], [3, 1]]
+        self.bad("eval", {"curve": catmull_rom(P[:3]), "t": [0]}, "curve.points", contains="at least 4")
+        self.bad("eval", {"curve": catmull_rom(P[:2], closed=True), "t": [0]}, "curve.points", contains="at least 3")
+        self.bad("eval", {"curve": catmull_rom([[0, 0], [1, 1], [1, 1], [3, 1]]), "t": [0]}, "curve.points[2]",
+                 contains="equals points[1]")
+        self.ok("eval", {"curve": catmull_rom([[0, 0], [1, 1], [1, 1], [3, 1]], alpha=0), "t": [0]})
+        self.bad("eval", {"curve": catmull_rom(P, alpha=1.5), "t": [0]}, "curve.alpha", contains="[0, 1]")
+        self.bad("eval", {"curve": catmull_rom(P, alpha=-0.1), "t": [0]}, "curve.alpha")
+        self.bad("eval", {"curve": catmull_rom(P, alpha="x"), "t": [0]}, "curve.alpha")
+        self.bad("eval", {"curve": catmull_rom(P, closed="yes"), "t": [0]}, "curve.closed")
+        self.bad("eval", {"curve": catmull_rom(P, tension=0.5), "t": [0]}, "curve.tension", contains="unknown field")
+        self.bad("eval", {"curve": catmull_rom(P, dim=3), "t": [0]}, "curve.dim")
+        self.bad("eval", {"curve": catmull_rom([[0, 0], [1, 1], [2], [3, 1]]), "t": [0]}, "curve.points[2]")
+        self.bad("eval", {"curve": catmull_rom(P), "t": [0]}, "curve.points[1][1]",
+                 text='{"curve": {"type": "catmull_rom", "points": [[0, 0], [1, 1e999], [2, 0], [3, 1]]}, "t": [0]}')
+        self.bad("eval", {"curve": catmull_rom(P), "t": [float("nan")]}, "request",
+                 text='{"curve": {"type": "catmull_rom", "points": [[0, 0], [1, 1], [2, 0], [3, 1]]}, "t": [NaN]}')
+
+
 if __name__ == "__main__":
     test_cli.BINARY = os.path.abspath(sys.argv.pop(1))
     unittest.main(verbosity=1)

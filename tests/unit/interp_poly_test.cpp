@@ -8,6 +8,7 @@
 #include <numbers>
 #include <vector>
 
+#include "casteljau/io/json.hpp"
 #include "test_support.hpp"
 
 namespace {
@@ -247,6 +248,92 @@ TEST(Lagrange, Errors) {
   EXPECT_INVALID_ARGUMENT((Lagrange<double, 2>({-1e308, 1e308}, {P2(0, 0), P2(1, 1)})), "params", "longer than");
   const auto c = cubic_through({0, 1, 2, 3});
   EXPECT_INVALID_ARGUMENT(c.derivative_at(0.5, -1), "k", ">= 0");
+}
+
+// ---------------------------------------------------------------------------------------
+// Catmull-Rom splines.
+
+const std::vector<P2> kCr{{0, 0}, {1, 2}, {3, 3}, {4, 1}, {6, 0}, {5, -2}};
+
+// Uniform (alpha 0): segment j on [j, j + 1] runs from p[j+1] to p[j+2] with the tangents
+// (p[j+2] - p[j]) / 2 and (p[j+3] - p[j+1]) / 2 (the contract's closed form).
+TEST(CatmullRom, UniformSegmentsFollowTheContract) {
+  const CatmullRom<double, 2> c(kCr, 0.0);
+  EXPECT_EQ(c.domain(), (Interval<double>{0, 3}));
+  for (int j = 0; j < 3; ++j) {
+    EXPECT_EQ(c(j), kCr[j + 1]);
+    // The derivative 3 (B_1 - B_0) with B_1 = B_0 + m / 3: a few ulps of the coordinates.
+    EXPECT_LE(test::max_coord_diff(c.derivative_at(j), (kCr[j + 2] - kCr[j]) / 2.0), 4e-15);
+    // The left limit at j + 1 (from inside segment j): the next tangent.
+    EXPECT_LE(test::max_coord_diff(c.bezier_pieces().one_sided_derivative(j, 1.0, 1), (kCr[j + 3] - kCr[j + 1]) / 2.0), 4e-15);
+  }
+  EXPECT_EQ(c(3.0), kCr[4]);
+  EXPECT_LE(test::max_coord_diff(c.derivative_at(3.0), (kCr[5] - kCr[3]) / 2.0), 4e-15);
+  // Zero above the cubic.
+  EXPECT_EQ(c.derivative_at(1.5, 4), V2(0, 0));
+}
+
+// Any alpha: the curve passes through the points at the knots s_i - s_1, with the
+// Barry-Goldman tangent there, and is C1 at every joint.
+TEST(CatmullRom, KnotsTangentsAndContinuity) {
+  for (double alpha : {0.0, 0.25, 0.5, 1.0}) {
+    const CatmullRom<double, 2> c(kCr, alpha);
+    std::vector<double> d;
+    for (std::size_t i = 0; i + 1 < kCr.size(); ++i) d.push_back(alpha == 0 ? 1.0 : std::pow(distance(kCr[i], kCr[i + 1]), alpha));
+    double s = 0;
+    for (std::size_t i = 1; i + 1 < kCr.size(); ++i) {
+      EXPECT_NEAR(c.breaks()[i - 1], s, 1e-15 * (1 + s));
+      EXPECT_LE(test::max_coord_diff(c(c.breaks()[i - 1]), kCr[i]), 1e-14);
+      // m_i = (P_i - P_{i-1}) / d_{i-1} - (P_{i+1} - P_{i-1}) / (d_{i-1} + d_i) + (P_{i+1} - P_i) / d_i
+      const V2 m = (kCr[i] - kCr[i - 1]) / d[i - 1] - (kCr[i + 1] - kCr[i - 1]) / (d[i - 1] + d[i]) + (kCr[i + 1] - kCr[i]) / d[i];
+      EXPECT_LE(test::max_coord_diff(c.derivative_at(c.breaks()[i - 1]), m), 1e-13) << alpha << " " << i;
+      if (i + 2 < kCr.size()) s += d[i];
+    }
+    const auto& p = c.bezier_pieces();
+    for (std::size_t j = 0; j + 1 < p.size(); ++j) {
+      EXPECT_LE(test::max_coord_diff(p.one_sided_derivative(j, 1.0, 1), p.one_sided_derivative(j + 1, 0.0, 1)), 1e-13);
+    }
+  }
+}
+
+// Closed: N segments, the domain [0, s_N], and the curve closes with C1 continuity.
+TEST(CatmullRom, ClosedCurvesCloseWithC1) {
+  for (double alpha : {0.0, 0.5, 1.0}) {
+    const CatmullRom<double, 2> c(kCr, alpha, true);
+    const auto& p = c.bezier_pieces();
+    ASSERT_EQ(p.size(), kCr.size());
+    EXPECT_EQ(c(c.domain().lo), kCr[0]);
+    EXPECT_EQ(c(c.domain().hi), kCr[0]);
+    EXPECT_LE(test::max_coord_diff(p.one_sided_derivative(p.size() - 1, 1.0, 1), p.one_sided_derivative(0, 0.0, 1)), 1e-13);
+    for (std::size_t j = 0; j < kCr.size(); ++j) EXPECT_EQ(c(p.breaks()[j]), kCr[j]);
+  }
+}
+
+// Affine maps: the image keeps the knots (exact image); only a similarity leaves them
+// equal to the mapped points' own.
+TEST(CatmullRom, TransformKeepsTheKnots) {
+  const CatmullRom<double, 2> c(kCr, 0.5);
+  Affine<double, 2> shear = Affine<double, 2>::identity();
+  shear.linear[0][1] = 2;
+  const auto s = c.transform(shear);
+  EXPECT_FALSE(s.knots_follow_points());
+  for (double t = 0; t <= c.domain().hi; t += 0.25) EXPECT_LE(test::max_coord_diff(s(t), shear(c(t))), 1e-13);
+  EXPECT_TRUE(c.transform(rotation(0.7)).knots_follow_points());
+  EXPECT_INVALID_ARGUMENT(io::to_json(io::AnyCurve(s)), "curve", "cannot express");
+}
+
+TEST(CatmullRom, Errors) {
+  EXPECT_INVALID_ARGUMENT((CatmullRom<double, 2>({P2(0, 0), P2(1, 1), P2(2, 0)})), "points", "at least 4");
+  EXPECT_INVALID_ARGUMENT((CatmullRom<double, 2>({P2(0, 0), P2(1, 1)}, 0.5, true)), "points", "at least 3");
+  EXPECT_INVALID_ARGUMENT((CatmullRom<double, 2>({P2(0, 0), P2(1, 1), P2(1, 1), P2(2, 0)})), "points[2]", "equals points[1]");
+  EXPECT_INVALID_ARGUMENT((CatmullRom<double, 2>({P2(0, 0), P2(1, 1), P2(0, 0)}, 1.0, true)), "points[0]", "closed");
+  EXPECT_INVALID_ARGUMENT((CatmullRom<double, 2>(kCr, 1.5)), "alpha", "[0, 1]");
+  EXPECT_INVALID_ARGUMENT((CatmullRom<double, 2>(kCr, NAN)), "alpha", "finite");
+  EXPECT_INVALID_ARGUMENT((CatmullRom<double, 2>({P2(0, 0), P2(1, NAN), P2(1, 1), P2(2, 0)})), "points[1][1]", "finite");
+  // Uniform knots allow repeated points (the curve rests there).
+  const CatmullRom<double, 2> rest({P2(0, 0), P2(1, 1), P2(1, 1), P2(2, 0)}, 0.0);
+  EXPECT_EQ(rest(0.0), P2(1, 1));
+  EXPECT_EQ(rest(1.0), P2(1, 1));
 }
 
 }  // namespace

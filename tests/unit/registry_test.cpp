@@ -84,6 +84,16 @@ struct Samples<Lagrange> {
 };
 
 template <>
+struct Samples<CatmullRom> {
+  template <int D>
+  static std::vector<CatmullRom<double, D>> make() {
+    const std::vector<Point<double, D>> P{pt<D>(0, 0), pt<D>(1, 1), pt<D>(-0.3, 2.5), pt<D>(2, 0.1), pt<D>(3, 3)};
+    return {CatmullRom<double, D>(P), CatmullRom<double, D>(P, 0.0, true), CatmullRom<double, D>(P, 1.0 / 3, false),
+            CatmullRom<double, D>({P[0], P[0], P[0], P[0]}, 0.0)};
+  }
+};
+
+template <>
 struct Samples<Path> {
   template <int D>
   static std::vector<Path<double, D>> make() {
