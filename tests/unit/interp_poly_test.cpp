@@ -336,4 +336,76 @@ TEST(CatmullRom, Errors) {
   EXPECT_EQ(rest(1.0), P2(1, 1));
 }
 
+// ---------------------------------------------------------------------------------------
+// The matrix view.
+
+constexpr CubicForm kForms[] = {CubicForm::bezier, CubicForm::hermite, CubicForm::catmull_rom, CubicForm::bspline};
+
+// B = C^-1 exactly (rational arithmetic), both ways, for every form.
+TEST(BasisMatrix, BasisIsTheInverseOfTheConstraints) {
+  for (CubicForm f : kForms) {
+    EXPECT_EQ(basis_matrix(f) * constraint_matrix(f), RationalMatrix4::identity());
+    EXPECT_EQ(constraint_matrix(f) * basis_matrix(f), RationalMatrix4::identity());
+    EXPECT_EQ(conversion_matrix(f, f), RationalMatrix4::identity());
+  }
+}
+
+// The seed's Catmull-Rom B, the Bézier B of [Farin02, 5.8] (bernstein_to_power_matrix), the
+// Hermite B from h00 = 1 - 3t^2 + 2t^3, h01 = 3t^2 - 2t^3, h10 = t - 2t^2 + t^3,
+// h11 = t^3 - t^2, and the uniform B-spline B (1 4 1 0 / -3 0 3 0 / 3 -6 3 0 / -1 3 -3 1) / 6.
+TEST(BasisMatrix, TextbookNumbers) {
+  const double cr[4][4] = {{0, 1, 0, 0}, {-0.5, 0, 0.5, 0}, {1, -2.5, 2, -0.5}, {-0.5, 1.5, -1.5, 0.5}};
+  const double he[4][4] = {{1, 0, 0, 0}, {0, 0, 1, 0}, {-3, 3, -2, -1}, {2, -2, 1, 1}};
+  const double bs[4][4] = {{1, 4, 1, 0}, {-3, 0, 3, 0}, {3, -6, 3, 0}, {-1, 3, -3, 1}};
+  const Matrix<double> bz = bernstein_to_power_matrix<double>(3);
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) {
+      EXPECT_EQ(basis_matrix(CubicForm::catmull_rom).at<double>(i, j), cr[i][j]);
+      EXPECT_EQ(basis_matrix(CubicForm::hermite).at<double>(i, j), he[i][j]);
+      EXPECT_EQ(basis_matrix(CubicForm::bspline).at<double>(i, j), bs[i][j] / 6);
+      EXPECT_EQ(basis_matrix(CubicForm::bezier).at<double>(i, j), bz(i, j));
+    }
+  // Catmull-Rom to Bézier: P_1, P_1 + (P_2 - P_0) / 6, P_2 - (P_3 - P_1) / 6, P_2.
+  const RationalMatrix4 want{{{{0, 6, 0, 0}, {-1, 6, 1, 0}, {0, 1, 6, -1}, {0, 0, 6, 0}}}, 6};
+  EXPECT_EQ(conversion_matrix(CubicForm::catmull_rom, CubicForm::bezier), want);
+}
+
+/// [1 t t^2 t^3] B G: the segment by its matrix form.
+V2 matrix_form(CubicForm f, const std::array<V2, 4>& g, double t) {
+  const double tp[4] = {1, t, t * t, t * t * t};
+  V2 s{};
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) s += tp[i] * basis_matrix(f).at<double>(i, j) * g[static_cast<std::size_t>(j)];
+  return s;
+}
+
+// Converted geometry describes the same cubic: the Bézier curve of the converted points
+// equals the matrix form of the original, for every pair of forms (rounding of O(10)
+// coordinates through two 4 x 4 products: 1e-13).
+TEST(BasisMatrix, ConversionsKeepTheCurve) {
+  const std::array<V2, 4> g{V2(0, 0), V2(1, 3), V2(4, 2.5), V2(5, -1)};
+  for (CubicForm from : kForms) {
+    const auto b = convert_geometry<double>(from, CubicForm::bezier, g);
+    const Bezier<double, 2> c({P2::from_vector(b[0]), P2::from_vector(b[1]), P2::from_vector(b[2]), P2::from_vector(b[3])});
+    for (double t = 0; t <= 1; t += 0.125) EXPECT_LE(test::max_coord_diff(c(t).to_vector(), matrix_form(from, g, t)), 1e-13);
+    for (CubicForm to : kForms) {
+      const auto h = convert_geometry<double>(from, to, g);
+      for (double t = 0; t <= 1; t += 0.25) EXPECT_LE(test::max_coord_diff(matrix_form(to, h, t), matrix_form(from, g, t)), 1e-12);
+    }
+  }
+  // The uniform B-spline span's Bézier points are those of the B-spline's own pieces
+  // (blossoming), and the Catmull-Rom ones those of the uniform CatmullRom curve.
+  const std::vector<P2> P{P2(0, 0), P2(1, 3), P2(4, 2.5), P2(5, -1)};
+  const auto bs = convert_geometry<double>(CubicForm::bspline, CubicForm::bezier, g);
+  const auto bs_pieces = pieces(BSpline<double, 2>(3, {0, 1, 2, 3, 4, 5, 6, 7}, P));  // a local: no dangling reference
+  const auto& piece = std::get<Bezier<double, 2>>(bs_pieces.segments()[0]);
+  const auto cr = convert_geometry<double>(CubicForm::catmull_rom, CubicForm::bezier, g);
+  const CatmullRom<double, 2> crc(P, 0.0);
+  const auto& crp = std::get<Bezier<double, 2>>(crc.bezier_pieces().segments()[0]);
+  for (std::size_t i = 0; i < 4; ++i) {
+    EXPECT_LE(test::max_coord_diff(piece.points()[i].to_vector(), bs[i]), 1e-14);
+    EXPECT_LE(test::max_coord_diff(crp.points()[i].to_vector(), cr[i]), 1e-14);
+  }
+}
+
 }  // namespace
