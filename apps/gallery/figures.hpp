@@ -17,6 +17,10 @@ struct Figure {
 
 using FigureFunction = Figure (*)();
 
+/// Figures of the interpolating polynomial curves (figures_interp_poly.cpp).
+Figure runge_phenomenon();
+Figure catmull_rom_alpha();
+
 /// Every figure in page order. To add one: write a FigureFunction in figures.cpp and
 /// append it here (docs/gallery.md).
 const std::vector<FigureFunction>& figure_list();
