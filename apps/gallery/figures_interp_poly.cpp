@@ -44,11 +44,12 @@ double runge_error(Nodes kind, std::size_t n, std::vector<P2>* graph = nullptr) 
   return e;
 }
 
-void frame(SvgDocument& doc, const PageRect& r, const Box<double, 2>& model, const std::string& title) {
+void frame(SvgDocument& doc, const PageRect& r, const Box<double, 2>& model, const std::string& title,
+           io::Aspect aspect = io::Aspect::keep) {
   doc.set_map(PageMap{});
   doc.rect(r, Paint{.stroke = "#ccc", .stroke_width = 1});
   doc.text({r.x + 6, r.y + 16}, title, TextStyle{.size = 13, .bold = true});
-  doc.set_map(PageMap::fit(model, r));
+  doc.set_map(PageMap::fit(model, r, aspect));
 }
 
 }  // namespace
@@ -62,7 +63,7 @@ Figure runge_phenomenon() {
   const char* names[2] = {"11 equispaced nodes", "11 Chebyshev nodes (first kind)"};
   for (int k = 0; k < 2; ++k) {
     const PageRect r{10.0 + 430 * k, 10, 410, 320};
-    frame(doc, r, Box<double, 2>{{-1.05, -0.6}, {1.05, 2.05}}, names[k]);
+    frame(doc, r, Box<double, 2>{{-1.05, -0.6}, {1.05, 2.05}}, names[k], io::Aspect::stretch);
     doc.line({-1, 0}, {1, 0}, Paint{.stroke = "#999"});
     doc.polyline(fx, Paint{.stroke = "#555", .stroke_width = 1.5, .dash = "5 3"});
     std::vector<P2> g;
@@ -115,6 +116,40 @@ Figure catmull_rom_alpha() {
       "loops between the two close points P<sub>2</sub> and P<sub>3</sub>; the centripetal and chordal ones do not. "
       "Self-crossings of the segment from P<sub>2</sub> to P<sub>3</sub> (400 samples): " + notes + ".";
   return {"catmull-rom", "Catmull-Rom: uniform, centripetal, chordal", doc.str(), cap};
+}
+
+Figure hermite_basis() {
+  SvgDocument doc(860, 300);
+  const PageRect r{10, 10, 840, 280};
+  frame(doc, r, Box<double, 2>{{-0.05, -0.25}, {1.05, 1.1}}, "Hermite basis functions from the basis matrix",
+        io::Aspect::stretch);
+  doc.line({0, 0}, {1, 0}, Paint{.stroke = "#999"});
+  // h_j(t) = [1 t t^2 t^3] B e_j: column j of the Hermite basis matrix.
+  const RationalMatrix4 B = basis_matrix(CubicForm::hermite);
+  const char* names[4] = {"h00", "h01", "h10", "h11"};
+  double worst_sum = 0;
+  for (int j = 0; j < 4; ++j) {
+    std::vector<P2> g;
+    for (int i = 0; i <= 200; ++i) {
+      const double t = i / 200.0, tp[4] = {1, t, t * t, t * t * t};
+      double h = 0, h_other = 0;
+      for (int k = 0; k < 4; ++k) {
+        h += tp[k] * B.at<double>(k, j);
+        if (j == 0) h_other += tp[k] * B.at<double>(k, 1);
+      }
+      if (j == 0) worst_sum = std::max(worst_sum, std::abs(h + h_other - 1));
+      g.push_back({t, h});
+    }
+    doc.polyline(g, Paint{.stroke = std::string(io::palette(static_cast<std::size_t>(j))), .stroke_width = 2});
+    doc.text(g[j == 1 || j == 3 ? 170 : 30], names[j], TextStyle{.size = 13, .colour = std::string(io::palette(static_cast<std::size_t>(j))), .dy = -6});
+  }
+  std::string cap =
+      "The cubic Hermite basis h00 = 1 &minus; 3t<sup>2</sup> + 2t<sup>3</sup>, h01 = 3t<sup>2</sup> &minus; 2t<sup>3</sup>, "
+      "h10 = t &minus; 2t<sup>2</sup> + t<sup>3</sup>, h11 = t<sup>3</sup> &minus; t<sup>2</sup>: the columns of the "
+      "Hermite basis matrix B = C<sup>&minus;1</sup> (<code>basis_matrix(CubicForm::hermite)</code>, exact rationals), "
+      "weights of p(0), p(1), p'(0), p'(1). h00 + h01 = 1 (measured max deviation " + sci2(worst_sum) + " over 201 "
+      "parameters), so the end points carry the position and the tangent functions vanish at both ends.";
+  return {"hermite-basis", "Hermite basis functions", doc.str(), cap};
 }
 
 }  // namespace casteljau::gallery
