@@ -1053,6 +1053,7 @@ const std::vector<FigureFunction>& figure_list() {
       knot_insertion, nurbs_circle_figure, subdivision_schemes, four_point_scheme,
       closest_points, curvature_comb,
       intersections, flattening_methods,
+      runge_phenomenon, catmull_rom_alpha, hermite_basis,
   };
   return list;
 }

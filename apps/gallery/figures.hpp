@@ -23,6 +23,10 @@ Figure curvature_comb();
 /// Figures of intersections and flattening (figures_intersect.cpp).
 Figure intersections();
 Figure flattening_methods();
+/// Figures of the interpolating polynomial curves (figures_interp_poly.cpp).
+Figure runge_phenomenon();
+Figure catmull_rom_alpha();
+Figure hermite_basis();
 
 /// Every figure in page order. To add one: write a FigureFunction in figures.cpp and
 /// append it here (docs/gallery.md).

@@ -189,6 +189,51 @@ struct Format<Polyline> {
   }
 };
 
+template <>
+struct Format<Lagrange> {
+  static constexpr std::string_view name = "lagrange";
+  static AnyCurve read(const Fields& f) {
+    f.allow_only({"type", "params", "points", "dim"}, "a lagrange");
+    const std::optional<int> dim = read_dim(f);
+    const RawPoints P = read_points(f.required("points"), 2, "a lagrange curve");
+    check_dim(dim, P.dim);
+    if (P.size() - 1 > static_cast<std::size_t>(max_degree)) {
+      throw InvalidArgument("points", std::to_string(P.size()) + " points give degree " + std::to_string(P.size() - 1) +
+                                          ", above the highest supported degree " + std::to_string(max_degree));
+    }
+    // The count, distinctness and weight checks are the constructor's.
+    const std::vector<double> u = numbers_from_json(f.required("params"), "params");
+    return dispatch_dimension(P.dim, [&]<int D>() { return AnyCurve(Lagrange<double, D>(u, P.points<D>())); });
+  }
+  template <int D>
+  static OrderedJson write(const Lagrange<double, D>& c) {
+    return OrderedJson{{"type", name}, {"params", c.params()}, {"points", points_json(c.points())}};
+  }
+};
+
+template <>
+struct Format<CatmullRom> {
+  static constexpr std::string_view name = "catmull_rom";
+  static AnyCurve read(const Fields& f) {
+    f.allow_only({"type", "points", "alpha", "closed", "dim"}, "a catmull_rom");
+    const std::optional<int> dim = read_dim(f);
+    const bool closed = f.has("closed") && boolean_from_json(*f.optional("closed"), "closed");
+    const RawPoints P = read_points(f.required("points"), closed ? 3 : 4, closed ? "a closed catmull_rom" : "an open catmull_rom");
+    check_dim(dim, P.dim);
+    const double alpha = f.has("alpha") ? number_from_json(*f.optional("alpha"), "alpha") : 0.5;
+    // The alpha range and the coincident points are the constructor's checks.
+    return dispatch_dimension(P.dim, [&]<int D>() { return AnyCurve(CatmullRom<double, D>(P.points<D>(), alpha, closed)); });
+  }
+  template <int D>
+  static OrderedJson write(const CatmullRom<double, D>& c) {
+    if (!c.knots_follow_points()) {
+      throw InvalidArgument("curve", "this catmull_rom curve (an image under a map that is not a similarity) keeps knots that its "
+                                     "points do not give: curve JSON cannot express it");
+    }
+    return OrderedJson{{"type", name}, {"points", points_json(c.points())}, {"alpha", c.alpha()}, {"closed", c.closed()}};
+  }
+};
+
 /// The degree, knots and points of a bspline or nurbs object: the optional `dim` must
 /// agree, the degree may not exceed max_degree; the knot rules are the constructor's.
 struct RawSpline {
@@ -274,7 +319,7 @@ std::vector<std::string_view> registered_names() {
 }
 
 /// Types of the contract that no Format entry serves yet.
-constexpr std::array<std::string_view, 4> later_types = {"lagrange", "cubic_spline", "hermite", "catmull_rom"};
+constexpr std::array<std::string_view, 2> later_types = {"cubic_spline", "hermite"};
 
 thread_local int path_depth = 0;
 

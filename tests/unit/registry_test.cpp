@@ -72,6 +72,28 @@ struct Samples<Polyline> {
 };
 
 template <>
+struct Samples<Lagrange> {
+  template <int D>
+  static std::vector<Lagrange<double, D>> make() {
+    // Params in any order, uneven; a straight line through many points; Chebyshev nodes.
+    return {Lagrange<double, D>({0.5, -1.25, 3}, {pt<D>(0, 0), pt<D>(1, 1), pt<D>(-0.3, 2.5)}),
+            Lagrange<double, D>({0, 1, 2, 3, 4}, {pt<D>(0, 0), pt<D>(0, 1), pt<D>(0, 2), pt<D>(0, 3), pt<D>(0, 4)}),
+            Lagrange<double, D>(interpolation_nodes<double>(Nodes::chebyshev1, 4, -1, 1),
+                                {pt<D>(1, 0), pt<D>(1.0 / 3, 2), pt<D>(0, 0), pt<D>(-1, 1e-3)})};
+  }
+};
+
+template <>
+struct Samples<CatmullRom> {
+  template <int D>
+  static std::vector<CatmullRom<double, D>> make() {
+    const std::vector<Point<double, D>> P{pt<D>(0, 0), pt<D>(1, 1), pt<D>(-0.3, 2.5), pt<D>(2, 0.1), pt<D>(3, 3)};
+    return {CatmullRom<double, D>(P), CatmullRom<double, D>(P, 0.0, true), CatmullRom<double, D>(P, 1.0 / 3, false),
+            CatmullRom<double, D>({P[0], P[0], P[0], P[0]}, 0.0)};
+  }
+};
+
+template <>
 struct Samples<Path> {
   template <int D>
   static std::vector<Path<double, D>> make() {
@@ -148,7 +170,7 @@ TEST(Registry, ReaderErrors) {
                           "breaks[1]", "strictly increasing");
   EXPECT_INVALID_ARGUMENT(curve(R"({"type": "path", "segments": [{"type": "polyline", "points": [[0], [1]]}], "breaks": [0, 1, 2]})"),
                           "breaks", "one more break");
-  EXPECT_INVALID_ARGUMENT(curve(R"({"type": "path", "segments": [{"type": "lagrange"}]})"), "segments[0].type", "not supported yet");
+  EXPECT_INVALID_ARGUMENT(curve(R"({"type": "path", "segments": [{"type": "lagrangian"}]})"), "segments[0].type", "unknown curve type");
   // Input degree above the cap of the run-time interfaces.
   std::string big = R"({"type": "bezier", "points": [)";
   for (int i = 0; i <= io::max_degree + 1; ++i) big += std::string(i ? "," : "") + "[" + std::to_string(i) + "]";

@@ -6,6 +6,8 @@
 #include <vector>
 
 #include "casteljau/curves/bspline.hpp"
+#include "casteljau/curves/catmull_rom.hpp"
+#include "casteljau/curves/lagrange.hpp"
 #include "casteljau/curves/piecewise.hpp"
 #include "casteljau/curves/polyline.hpp"
 
@@ -16,7 +18,7 @@ namespace casteljau {
 /// interfaces (io::AnyCurve) serve these and Path.
 template <template <class, int> class... C>
 struct CurveTypeList {};
-using SegmentTypes = CurveTypeList<Bezier, RationalBezier, BSpline, Nurbs, Polyline>;
+using SegmentTypes = CurveTypeList<Bezier, RationalBezier, BSpline, Nurbs, Polyline, Lagrange, CatmullRom>;
 
 namespace detail {
 template <class T, int D, class List>
