@@ -368,8 +368,9 @@ struct Format<Hermite> {
       return AnyCurve(Hermite<double, D>(r.params, P, std::move(m)));
     });
   }
-  /// One tangent per point; a curve with one-sided tangents (Kochanek-Bartels continuity)
-  /// has no such form and is written as a path of two-point hermite segments on the same
+  /// One tangent per point (the outgoing ones, and the incoming one at the last point);
+  /// a curve with different tangents on the two sides of an interior point
+  /// (Kochanek-Bartels continuity) has no such form and is written as a path of two-point hermite segments on the same
   /// breaks (the same curve and parametrisation).
   template <int D>
   static OrderedJson write(const Hermite<double, D>& c) {
@@ -382,8 +383,10 @@ struct Format<Hermite> {
       }
       return OrderedJson{{"type", "path"}, {"segments", std::move(segs)}, {"breaks", c.params()}};
     }
+    // The tangent at the last point is the one its piece uses: the incoming one.
     OrderedJson m = OrderedJson::array();
-    for (const auto& v : c.tangents()) m.push_back(to_json(v));
+    for (std::size_t i = 0; i + 1 < c.tangents().size(); ++i) m.push_back(to_json(c.tangents()[i]));
+    m.push_back(to_json(c.incoming_tangents().back()));
     return OrderedJson{{"type", name}, {"params", c.params()}, {"points", points_json(c.points())}, {"tangents", std::move(m)}};
   }
 };

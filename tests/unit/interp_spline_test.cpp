@@ -239,4 +239,32 @@ TEST(Hermite, ConstructionErrors) {
   EXPECT_EQ(centripetal, (std::vector<double>{0, std::sqrt(5.0), std::sqrt(5.0) + 2}));
 }
 
+// Curve JSON holds one tangent per point: the writer gives the ones the pieces use (the
+// incoming tangent at the last point), and a curve with a corner becomes a path of
+// two-point hermite segments; either way the curve read back is the same curve.
+TEST(Hermite, JsonKeepsTheCurve) {
+  const Hermite<double, 1> ends({0, 1, 2}, ys({0, 1, 0}), {V1(9.0), V1(1.0), V1(5.0)}, {V1(2.0), V1(1.0), V1(7.0)});
+  const std::vector<double> u = {0, 1, 1.5, 3};
+  const std::vector<Point<double, 2>> P = {{0, 0}, {1, 2}, {2.5, 1.5}, {3, -1}};
+  const auto kb = kochanek_bartels_tangents(u, P, KochanekBartels<double>{0.25, -0.5, 0.5});
+  const Hermite<double, 2> corner(u, P, kb.incoming, kb.outgoing);
+  ASSERT_FALSE(ends.one_sided());
+  ASSERT_TRUE(corner.one_sided());
+  const auto back_ends = io::curve_from_json(io::parse_json(io::to_json(io::AnyCurve(ends)).dump()));
+  const auto back_corner = io::curve_from_json(io::parse_json(io::to_json(io::AnyCurve(corner)).dump()));
+  EXPECT_EQ(io::type_name(back_ends), "hermite");
+  EXPECT_EQ(io::type_name(back_corner), "path");
+  for (double t : {-0.5, 0.0, 0.5, 1.0, 1.25, 1.5, 2.0, 2.5, 3.0, 3.5}) {
+    for (int k = 0; k <= 3; ++k) {
+      const auto a = io::derivatives(back_ends, std::span<const double>(&t, 1), k);
+      EXPECT_NEAR(a.coords[0], ends.derivative_at(t, k)[0], 1e-14 * (1 + std::abs(a.coords[0]))) << t << " " << k;
+      const auto b = io::derivatives(back_corner, std::span<const double>(&t, 1), k);
+      const auto c = corner.derivative_at(t, k);
+      // The path maps each segment's own domain [u_i, u_(i+1)] onto the same break interval:
+      // the same polynomials, up to the rounding of that identity map.
+      for (int d = 0; d < 2; ++d) EXPECT_NEAR(b.coords[static_cast<std::size_t>(d)], c[d], 1e-13 * (1 + std::abs(c[d]))) << t << " " << k;
+    }
+  }
+}
+
 }  // namespace

@@ -48,12 +48,12 @@ namespace detail {
 
 /// Solves the tridiagonal system a_i x_(i-1) + b_i x_i + c_i x_(i+1) = r_i (a_0 and
 /// c_(m-1) unused) by Thomas' algorithm (Gaussian elimination without pivoting)
-/// [GolubVanLoan13, 4.3.6], in place on r, O(m). Stable for the spline systems: their
+/// [GolubVanLoan13, 4.3.6], in place on r (the solution) and b (overwritten), O(m). Stable for the spline systems: their
 /// interior rows are strictly diagonally dominant (2 (h_(i-1) + h_i) > h_(i-1) + h_i), and
 /// the pivots stay >= the row's off-diagonal sum. Throws NumericalError for a zero or
 /// non-finite pivot (not reached by the spline systems).
 template <class T, class V>
-void solve_tridiagonal(std::vector<T> a, std::vector<T> b, std::vector<T> c, std::vector<V>& r) {
+void solve_tridiagonal(const std::vector<T>& a, std::vector<T>& b, const std::vector<T>& c, std::vector<V>& r) {
   const std::size_t m = b.size();
   for (std::size_t i = 1; i < m; ++i) {
     if (!(b[i - 1] != 0) || !std::isfinite(b[i - 1])) throw NumericalError("solve_tridiagonal: zero pivot");
@@ -79,8 +79,9 @@ void solve_cyclic(const std::vector<T>& a, std::vector<T> b, const std::vector<T
   std::vector<T> z(m, T(0));
   z[0] = gamma;
   z[m - 1] = alpha;
+  std::vector<T> b2 = b;  // both solves need the modified diagonal
   solve_tridiagonal(a, b, c, r);
-  solve_tridiagonal(a, b, c, z);
+  solve_tridiagonal(a, b2, c, z);
   const V fact = (r[0] + (beta / gamma) * r[m - 1]) / (1 + z[0] + beta * z[m - 1] / gamma);
   for (std::size_t i = 0; i < m; ++i) r[i] -= z[i] * fact;
 }

@@ -49,8 +49,7 @@ class Hermite {
   /// "points", "points[i][j]", "tangents", "tangents[i][j]".
   Hermite(std::vector<T> params, std::vector<PointType> points, std::vector<VectorType> tangents)
       : u_(std::move(params)), P_(std::move(points)), out_(std::move(tangents)) {
-    in_ = out_;
-    validate();
+    validate(false);
   }
 
   /// One-sided tangents: `incoming[i]` is the derivative at u_i from the left (the end of
@@ -60,7 +59,8 @@ class Hermite {
   /// "tangents" (the outgoing ones).
   Hermite(std::vector<T> params, std::vector<PointType> points, std::vector<VectorType> incoming, std::vector<VectorType> outgoing)
       : u_(std::move(params)), P_(std::move(points)), in_(std::move(incoming)), out_(std::move(outgoing)) {
-    validate();
+    validate(true);
+    if (in_ == out_) in_.clear();  // one tangent per point after all: one representation
   }
 
   [[nodiscard]] const std::vector<T>& params() const { return u_; }
@@ -68,10 +68,12 @@ class Hermite {
   /// The outgoing tangents m_i (the only tangents unless one_sided()).
   [[nodiscard]] const std::vector<VectorType>& tangents() const { return out_; }
   /// The incoming tangents m'_i.
-  [[nodiscard]] const std::vector<VectorType>& incoming_tangents() const { return in_; }
+  [[nodiscard]] const std::vector<VectorType>& incoming_tangents() const { return in_.empty() ? out_ : in_; }
   /// Whether some interior point has different incoming and outgoing tangents (a corner
-  /// unless they are parallel).
+  /// unless they are parallel). The pieces use the outgoing tangents at u_0..u_(n-1) and
+  /// the incoming ones at u_1..u_n; incoming[0] and outgoing[n] play no part.
   [[nodiscard]] bool one_sided() const {
+    if (in_.empty()) return false;
     for (std::size_t i = 1; i + 1 < P_.size(); ++i)
       if (!(in_[i] == out_[i])) return true;
     return false;
@@ -131,7 +133,7 @@ class Hermite {
   /// Piece i (0 <= i < n) as a cubic Bézier curve on [0, 1] (its own parameter t).
   [[nodiscard]] Bezier<T, D> piece(std::size_t i) const {
     const T h3 = (u_[i + 1] - u_[i]) / 3;
-    return Bezier<T, D>({P_[i], P_[i] + h3 * out_[i], P_[i + 1] - h3 * in_[i + 1], P_[i + 1]});
+    return Bezier<T, D>({P_[i], P_[i] + h3 * out_[i], P_[i + 1] - h3 * incoming(i + 1), P_[i + 1]});
   }
 
   /// The same curve traversed backwards on the same domain: u -> u_0 + u_n - u; params
@@ -141,24 +143,24 @@ class Hermite {
     const std::size_t m = u_.size();
     std::vector<T> v(m);
     std::vector<PointType> Q(P_.rbegin(), P_.rend());
-    std::vector<VectorType> in(m), out(m);
+    std::vector<VectorType> in(in_.empty() ? 0 : m), out(m);
     for (std::size_t i = 0; i < m; ++i) {
       v[i] = u_.front() + u_.back() - u_[m - 1 - i];
-      in[i] = -out_[m - 1 - i];
-      out[i] = -in_[m - 1 - i];
+      out[i] = -incoming(m - 1 - i);
+      if (!in_.empty()) in[i] = -out_[m - 1 - i];
     }
     v.front() = u_.front();  // exact ends despite rounding
     v.back() = u_.back();
+    if (in_.empty()) return Hermite(std::move(v), std::move(Q), std::move(out));
     return Hermite(std::move(v), std::move(Q), std::move(in), std::move(out));
   }
 
   /// The image under an affine map: points mapped, tangents mapped by the linear part.
   [[nodiscard]] Hermite transform(const Affine<T, D>& m) const {
     std::vector<VectorType> in(in_.size()), out(out_.size());
-    for (std::size_t i = 0; i < in_.size(); ++i) {
-      in[i] = m(in_[i]);
-      out[i] = m(out_[i]);
-    }
+    for (std::size_t i = 0; i < out_.size(); ++i) out[i] = m(out_[i]);
+    for (std::size_t i = 0; i < in_.size(); ++i) in[i] = m(in_[i]);
+    if (in_.empty()) return Hermite(u_, mapped_points(m, P_), std::move(out));
     return Hermite(u_, mapped_points(m, P_), std::move(in), std::move(out));
   }
 
@@ -177,7 +179,7 @@ class Hermite {
     const T h = u_[i + 1] - u_[i];
     const T t = (u - u_[i]) / h;  // exactly 1 at u = u_(i+1): the same rounded h
     const HermiteBasis<T> b = hermite_basis(t, 0);
-    const VectorType tangent_part = h * (b.h10 * out_[i] + b.h11 * in_[i + 1]);
+    const VectorType tangent_part = h * (b.h10 * out_[i] + b.h11 * incoming(i + 1));
     PointType p = t <= T(0.5) ? P_[i] + (b.h01 * (P_[i + 1] - P_[i]) + tangent_part)
                               : P_[i + 1] + (b.h00 * (P_[i] - P_[i + 1]) + tangent_part);
     check_representable(p, u, "the curve's point");
@@ -188,7 +190,7 @@ class Hermite {
     const T h = u_[i + 1] - u_[i];
     const T t = (u - u_[i]) / h;
     const HermiteBasis<T> b = hermite_basis(t, k);
-    VectorType v = b.h01 * ((P_[i + 1] - P_[i]) / h) + b.h10 * out_[i] + b.h11 * in_[i + 1];
+    VectorType v = b.h01 * ((P_[i + 1] - P_[i]) / h) + b.h10 * out_[i] + b.h11 * incoming(i + 1);
     for (int j = 1; j < k; ++j) v /= h;
     check_representable(v, u, "the derivative");
     return v;
@@ -203,7 +205,10 @@ class Hermite {
     }
   }
 
-  void validate() const {
+  /// The incoming tangent at u_i (the outgoing one unless one-sided tangents were given).
+  const VectorType& incoming(std::size_t i) const { return in_.empty() ? out_[i] : in_[i]; }
+
+  void validate(bool check_incoming) const {
     if (u_.size() < 2) throw InvalidArgument("params", "a Hermite curve needs at least 2 params, got " + std::to_string(u_.size()));
     for (std::size_t i = 0; i < u_.size(); ++i) {
       if (std::isfinite(u_[i]) && (i == 0 || u_[i] > u_[i - 1])) continue;  // no string unless it fails
@@ -224,7 +229,7 @@ class Hermite {
     };
     count(P_.size(), "points", "point");
     count(out_.size(), "tangents", "tangent");
-    count(in_.size(), "incoming_tangents", "tangent");
+    if (check_incoming) count(in_.size(), "incoming_tangents", "tangent");
     for (std::size_t i = 0; i < P_.size(); ++i)
       if (!detail::all_coordinates_finite(P_[i])) require_finite_point(P_[i], "points[" + std::to_string(i) + "]");
     for (std::size_t i = 0; i < out_.size(); ++i)
@@ -234,7 +239,7 @@ class Hermite {
     // The Bézier form must exist too: P_i + h m_i / 3 and P_(i+1) - h m'_(i+1) / 3 finite.
     for (std::size_t i = 0; i + 1 < u_.size(); ++i) {
       const T h3 = (u_[i + 1] - u_[i]) / 3;
-      const PointType a = P_[i] + h3 * out_[i], b = P_[i + 1] - h3 * in_[i + 1];
+      const PointType a = P_[i] + h3 * out_[i], b = P_[i + 1] - h3 * incoming(i + 1);
       for (int d = 0; d < D; ++d) {
         if (!std::isfinite(a[d]) || !std::isfinite(b[d])) {
           throw InvalidArgument("tangents[" + std::to_string(std::isfinite(a[d]) ? i + 1 : i) + "]",
@@ -246,7 +251,7 @@ class Hermite {
 
   std::vector<T> u_;
   std::vector<PointType> P_;
-  std::vector<VectorType> in_;
+  std::vector<VectorType> in_;  ///< empty when equal to out_ (one tangent per point)
   std::vector<VectorType> out_;
 };
 
