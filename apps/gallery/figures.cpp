@@ -1054,6 +1054,7 @@ const std::vector<FigureFunction>& figure_list() {
       closest_points, curvature_comb,
       intersections, flattening_methods,
       runge_phenomenon, catmull_rom_alpha, hermite_basis,
+      spline_boundaries, monotone_vs_natural,
   };
   return list;
 }

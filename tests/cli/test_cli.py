@@ -606,7 +606,7 @@ class BadInputTest(CliTest):
         self.bad("render", {"curves": []}, "curves")
         self.bad("render", {}, "curve", contains="missing")
         self.bad("render", {"curves": [c, bezier([[0, 1], "x"])]}, "curves[1].points[1]")
-        self.bad("render", {"curve": {"type": "hermite"}}, "curve.type", contains="not supported yet")
+        self.bad("render", {"curve": {"type": "hermit"}}, "curve.type", contains="unknown curve type")
         # The renderer draws 1D and 2D curves; the refused curve is named as in the request.
         c3 = bezier([[0, 0, 0], [1, 1, 1]])
         self.bad("render", {"curve": c3}, "curve")

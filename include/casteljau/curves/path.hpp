@@ -8,6 +8,8 @@
 #include "casteljau/curves/bspline.hpp"
 #include "casteljau/curves/catmull_rom.hpp"
 #include "casteljau/curves/lagrange.hpp"
+#include "casteljau/curves/cubic_spline.hpp"
+#include "casteljau/curves/hermite.hpp"
 #include "casteljau/curves/piecewise.hpp"
 #include "casteljau/curves/polyline.hpp"
 
@@ -18,7 +20,8 @@ namespace casteljau {
 /// interfaces (io::AnyCurve) serve these and Path.
 template <template <class, int> class... C>
 struct CurveTypeList {};
-using SegmentTypes = CurveTypeList<Bezier, RationalBezier, BSpline, Nurbs, Polyline, Lagrange, CatmullRom>;
+using SegmentTypes =
+    CurveTypeList<Bezier, RationalBezier, BSpline, Nurbs, Polyline, Lagrange, CatmullRom, CubicSpline, Hermite>;
 
 namespace detail {
 template <class T, int D, class List>
