@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "casteljau/io/any_curve.hpp"
+#include "casteljau/io/intersect.hpp"
 #include "casteljau/io/svg.hpp"
 
 namespace casteljau::cli {
@@ -166,6 +167,44 @@ Response flatten(const Json& req) {
   return r;
 }
 
+Response intersect(const Json& req) {
+  const io::Fields f(req, "an intersect request");
+  f.allow_only({"curves"}, "an intersect request");
+  const Json& cj = f.required("curves");
+  if (!cj.is_array()) throw InvalidArgument("curves", "must be an array of one or two curve objects, got " + std::string(io::kind_of(cj)));
+  if (cj.empty() || cj.size() > 2) {
+    throw InvalidArgument("curves", "needs one curve (self-intersections) or two, got " + std::to_string(cj.size()));
+  }
+  std::vector<io::AnyCurve> curves;
+  for (std::size_t i = 0; i < cj.size(); ++i) {
+    try {
+      curves.push_back(io::curve_from_json(cj[i]));
+    } catch (const InvalidArgument& e) {
+      throw e.within(index_path("curves", i));
+    }
+    if (io::dimension(curves.back()) != 2) {
+      throw InvalidArgument(index_path("curves", i), "intersect needs 2-D curves, got dimension " +
+                                                         std::to_string(io::dimension(curves.back())));
+    }
+  }
+  Response r;
+  call_library(
+      [&] {
+        const io::AnyIntersections x = curves.size() == 1 ? io::self_intersect(curves[0]) : io::intersect(curves[0], curves[1]);
+        OrderedJson points = OrderedJson::array(), overlaps = OrderedJson::array();
+        for (const auto& p : x.points) {
+          points.push_back(OrderedJson{{"t", OrderedJson::array({p.ta, p.tb})},
+                                       {"point", OrderedJson::array({p.point[0], p.point[1]})},
+                                       {"kind", p.tangent ? "tangent" : "crossing"}});
+        }
+        for (const auto& o : x.overlaps)
+          overlaps.push_back(OrderedJson{{"a", OrderedJson::array({o.a0, o.a1})}, {"b", OrderedJson::array({o.b0, o.b1})}});
+        r.json = OrderedJson{{"intersections", std::move(points)}, {"overlaps", std::move(overlaps)}};
+      },
+      "curves");
+  return r;
+}
+
 double positive(const io::Fields& f, std::string_view name, double fallback, bool allow_zero) {
   const Json* j = f.optional(name);
   if (!j) return fallback;
@@ -299,6 +338,20 @@ Example:
   echo '{"curve": {"type": "bezier", "points": [[0,0],[1,1],[2,0]]}, "tolerance": 0.2}' | casteljau flatten
   {"points":[[0.0,0.0],[0.5,0.375],[1.0,0.5],[1.5,0.375],[2.0,0.0]]})";
 
+constexpr std::string_view intersect_details = R"(The common points of two plane curves, or the self-intersections of one.
+
+Request:  curves: [a, b] (2-D curves of any type; a line segment is a degree-1 bezier or a
+          polyline), or [a] alone for the points where a meets itself
+Response: intersections: [{t: [ta, tb], point, kind: "crossing" or "tangent"}], sorted by
+          ta (ta < tb for self-intersections); overlaps: [{a: [t0, t1], b: [u0, u1]}],
+          where a on [t0, t1] (t0 < t1) traces b from u0 to u1. Points are common when
+          the curves come within 1e-10 of their size; crossings are refined to full
+          double precision.
+
+Example:
+  echo '{"curves": [{"type": "bezier", "points": [[0,0],[2,2]]}, {"type": "polyline", "points": [[0,2],[2,0]]}]}' | casteljau intersect
+  {"intersections":[{"t":[0.5,0.5],"point":[1.0,1.0],"kind":"crossing"}],"overlaps":[]})";
+
 constexpr std::string_view render_details = R"(Draws curves as an SVG document, written to stdout as is (not JSON; with --jsonl,
 each answer is {"svg": "..."}). 1D curves are drawn as graphs y(t).
 
@@ -329,7 +382,7 @@ constexpr Command all_commands[] = {
     {"insert_knot", "Insert a knot into a B-spline (not supported yet)", later_details, false},
     {"length", "Arc length of a curve (not supported yet)", later_details, false},
     {"project", "Nearest point of a curve (not supported yet)", later_details, false},
-    {"intersect", "Intersections of plane curves (not supported yet)", later_details, false},
+    {"intersect", "Intersections and overlaps of plane curves, or of one curve with itself", intersect_details, true},
     {"fit", "Fit a B-spline to points (not supported yet)", later_details, false},
     {"remove_knot", "Remove a knot from a B-spline within a tolerance (not supported yet)", later_details, false},
     {"subdivide", "Subdivision curves: Chaikin, Lane-Riesenfeld, 4-point (not supported yet)", later_details, false},
@@ -360,6 +413,7 @@ Response run(const Command& command, const Json& request) {
       {"to_bezier", to_bezier},
       {"flatten", flatten},
       {"render", render},
+      {"intersect", intersect},
   };
   for (const auto& [name, handler] : handlers) {
     if (name == command.name) {

@@ -1,0 +1,698 @@
+// Intersections of plane curves: curve with curve (a line segment or polyline is a curve)
+// and the self-intersections of one curve, with tangential touches and overlaps.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <optional>
+#include <span>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "casteljau/algo/flatten.hpp"
+#include "casteljau/basis/roots.hpp"
+#include "casteljau/curves/path.hpp"
+
+namespace casteljau {
+
+/// How two curves meet at an isolated common point.
+enum class IntersectionKind {
+  crossing,  ///< the tangents differ (sine of their angle above 1e-6)
+  tangent,   ///< the tangents are parallel: a touch, or a crossing with parallel tangents
+};
+
+/// An isolated common point: a(ta) = b(tb) (for self-intersections ta < tb).
+template <class T>
+struct CurveIntersection {
+  T ta{};
+  T tb{};
+  Point<T, 2> point;  ///< a(ta)
+  IntersectionKind kind = IntersectionKind::crossing;
+};
+
+/// A stretch where the curves coincide: a over [a.lo, a.hi] (a.lo < a.hi) traces the same
+/// points as b from b_start to b_end (b_start > b_end when b runs the other way).
+template <class T>
+struct CurveOverlap {
+  Interval<T> a;
+  T b_start{};
+  T b_end{};
+};
+
+/// The result of intersect(): isolated points sorted by ta, and overlaps sorted by a.lo.
+template <class T>
+struct Intersections {
+  std::vector<CurveIntersection<T>> points;
+  std::vector<CurveOverlap<T>> overlaps;
+};
+
+namespace detail::isect {
+
+template <class T>
+using Piece = BezierPiece<T, 2>;
+
+/// Part [lo, hi] of piece `piece` (its own parameters) on which both coordinates are
+/// monotone: a graph over x and over y, so it cannot meet itself, and two such arcs that
+/// coincide somewhere coincide on one interval whose ends are arc ends.
+template <class T>
+struct Arc {
+  std::size_t piece;
+  T lo, hi;
+};
+
+/// The curve prepared for intersection: its pieces translated and scaled by a power of
+/// two (shared by both curves, so that coordinates are O(1)), and its monotone arcs.
+template <class T>
+struct Prepared {
+  const Pieces<T, 2>* curve;
+  std::vector<Piece<T>> unit;
+  std::vector<std::vector<T>> weights;  // normalised weights per piece (1 for polynomial)
+  std::vector<Arc<T>> arcs;
+  std::vector<Box<T, 2>> arc_boxes;  // control box of each arc's portion
+  T size = 0;  // diagonal of the control box, in unit coordinates
+};
+
+template <class T>
+Point<T, 2> at(const Piece<T>& c, T t) {
+  return std::visit([&](const auto& x) { return x(t); }, c);
+}
+template <class T>
+Vector<T, 2> derivative(const Piece<T>& c, T t, int k = 1) {
+  return std::visit([&](const auto& x) { return x.derivative_at(t, k); }, c);
+}
+template <class T>
+const std::vector<Point<T, 2>>& points(const Piece<T>& c) {
+  return std::visit([](const auto& x) -> const std::vector<Point<T, 2>>& { return x.points(); }, c);
+}
+template <class T>
+int degree(const Piece<T>& c) {
+  return static_cast<int>(points(c).size()) - 1;
+}
+
+/// Bernstein coefficients of the numerator of coordinate k minus X: w_i (P_ik - X)
+/// (weights 1 for a polynomial piece). Its roots are where the piece meets the line
+/// coordinate k = X; the sign is the side.
+template <class T>
+std::vector<T> coordinate_numerator(const Piece<T>& c, const std::vector<T>& w, int k, T X) {
+  const auto& P = points(c);
+  std::vector<T> a(P.size());
+  for (std::size_t i = 0; i < P.size(); ++i) a[i] = w[i] * (P[i][k] - X);
+  return a;
+}
+
+/// Coefficients of a polynomial whose sign is that of d/dt coordinate k: the hodograph
+/// n (P_(i+1) - P_i) for a polynomial piece; N' w - N w' (degree 2n - 1, quotient rule)
+/// with N the numerator (P - P_0) w for a rational piece.
+template <class T>
+std::vector<T> derivative_numerator(const Piece<T>& c, const std::vector<T>& w, int k) {
+  const auto& P = points(c);
+  const std::size_t n = P.size() - 1;
+  std::vector<T> d(n);
+  if (std::holds_alternative<Bezier<T, 2>>(c)) {
+    for (std::size_t i = 0; i < n; ++i) d[i] = P[i + 1][k] - P[i][k];
+    return d;
+  }
+  const std::vector<T> N = coordinate_numerator(c, w, k, P[0][k]);
+  std::vector<T> dw(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    d[i] = N[i + 1] - N[i];
+    dw[i] = w[i + 1] - w[i];
+  }
+  const auto p1 = bernstein_product<T>(d, w), p2 = bernstein_product<T>(N, dw);
+  std::vector<T> r(p1.size());
+  for (std::size_t i = 0; i < r.size(); ++i) r[i] = p1[i] - p2[i];
+  return r;
+}
+
+template <class T>
+Box<T, 2> grown(Box<T, 2> b, T by) {
+  for (int d = 0; d < 2; ++d) {
+    b.lo[d] -= by;
+    b.hi[d] += by;
+  }
+  return b;
+}
+template <class T>
+bool boxes_meet(const Box<T, 2>& a, const Box<T, 2>& b, T slack) {
+  for (int d = 0; d < 2; ++d) {
+    if (a.lo[d] > b.hi[d] + slack || b.lo[d] > a.hi[d] + slack) return false;
+  }
+  return true;
+}
+template <class T>
+T diagonal(const Box<T, 2>& b) {
+  return norm(b.hi - b.lo);
+}
+
+/// Closest points of the segments [p0, p1] and [q0, q1]: their parameters (u, v) in
+/// [0, 1] and distance [Ericson05, 5.1.9].
+template <class T>
+struct SegmentClosest {
+  T u, v, distance;
+};
+template <class T>
+SegmentClosest<T> closest_on_segments(const Point<T, 2>& p0, const Point<T, 2>& p1, const Point<T, 2>& q0, const Point<T, 2>& q1) {
+  const Vector<T, 2> d1 = p1 - p0, d2 = q1 - q0, r = p0 - q0;
+  const T a = dot(d1, d1), e = dot(d2, d2), f = dot(d2, r);
+  T u = 0, v = 0;
+  if (a == 0 && e == 0) {
+    // both points
+  } else if (a == 0) {
+    v = std::clamp(f / e, T(0), T(1));
+  } else {
+    const T c = dot(d1, r);
+    if (e == 0) {
+      u = std::clamp(-c / a, T(0), T(1));
+    } else {
+      const T b = dot(d1, d2), den = a * e - b * b;
+      u = den > 0 ? std::clamp((b * f - c * e) / den, T(0), T(1)) : T(0);
+      v = (b * u + f) / e;
+      if (v < 0) {
+        v = 0;
+        u = std::clamp(-c / a, T(0), T(1));
+      } else if (v > 1) {
+        v = 1;
+        u = std::clamp((b - c) / a, T(0), T(1));
+      }
+    }
+  }
+  return {u, v, norm((p0 + u * d1) - (q0 + v * d2))};
+}
+
+/// Tolerances of one intersection problem, in unit coordinates.
+template <class T>
+struct Context {
+  T tol;    // near-miss distance: points closer than this are common points
+  T flat;   // subdivision stops when both parts are within `flat` of their chords
+  T slack;  // box rejection slack: tol plus rounding
+  std::size_t nodes = 0;
+  std::vector<std::pair<T, T>> seeds;
+};
+
+/// Largest number of subdivision steps one pair of arcs may take; a pair of transversal
+/// arcs takes a few hundred. Hitting it means the curves run within the tolerance of each
+/// other over a long stretch without coinciding: reported, not silently truncated.
+inline constexpr std::size_t max_nodes = 2'000'000;
+/// Depth at which a part counts as flat whatever its shape (2^-50 of the piece: below the
+/// resolution of the parameters of double).
+inline constexpr int max_depth = 50;
+
+/// Bounding-box subdivision of two arcs (Bezier or RationalBezier parts a on [alo, ahi],
+/// b on [blo, bhi] of their pieces' parameters) down to parts flat within ctx.flat; each
+/// pair of flat parts whose chords come within 2 flat + slack gives a seed (the chords'
+/// closest points), later refined on the curves themselves.
+template <class T, class CA, class CB>
+void subdivide(const CA& a, T alo, T ahi, int da, const CB& b, T blo, T bhi, int db, Context<T>& ctx) {
+  if (++ctx.nodes > max_nodes) {
+    throw NumericalError("intersect: more than " + std::to_string(max_nodes) +
+                         " subdivision steps: the curves run within 1e-10 of their size of each other without coinciding");
+  }
+  const Box<T, 2> ba = a.control_bounds(), bb = b.control_bounds();
+  if (!boxes_meet(ba, bb, ctx.slack)) return;
+  const bool fa = da >= max_depth || is_flat(a, ctx.flat), fb = db >= max_depth || is_flat(b, ctx.flat);
+  if (fa && fb) {
+    const auto& P = a.points();
+    const auto& Q = b.points();
+    const auto c = closest_on_segments(P.front(), P.back(), Q.front(), Q.back());
+    if (c.distance <= 2 * ctx.flat + ctx.slack) ctx.seeds.emplace_back(alo + c.u * (ahi - alo), blo + c.v * (bhi - blo));
+    return;
+  }
+  if (!fa && (fb || diagonal(ba) >= diagonal(bb))) {
+    const auto h = a.split(T(0.5));
+    const T m = alo + (ahi - alo) / 2;
+    subdivide(h.left, alo, m, da + 1, b, blo, bhi, db, ctx);
+    subdivide(h.right, m, ahi, da + 1, b, blo, bhi, db, ctx);
+  } else {
+    const auto h = b.split(T(0.5));
+    const T m = blo + (bhi - blo) / 2;
+    subdivide(a, alo, ahi, da, h.left, blo, m, db + 1, ctx);
+    subdivide(a, alo, ahi, da, h.right, m, bhi, db + 1, ctx);
+  }
+}
+
+/// Refined common point (s, t) of pieces a and b within [a_lo, a_hi] x [b_lo, b_hi],
+/// started at a seed, and its distance |a(s) - b(t)|.
+template <class T>
+struct Refined {
+  T s, t, distance;
+};
+
+/// Newton's method on F(s, t) = a(s) - b(t) = 0 with the Jacobian [a'(s), -b'(t)]; where
+/// that is near singular (tangent curves, a vanishing derivative) a Levenberg-Marquardt
+/// step on |F|^2 instead, and steps halved until |F| decreases. Parameters stay in the
+/// arcs. Quadratic convergence to about eps / sin(angle) at crossings, linear at touches
+/// (which are located to about sqrt(eps) in the parameters, the conditioning of a double
+/// root). At most 100 steps; returns the best point seen.
+template <class T>
+Refined<T> refine(const Piece<T>& a, const Arc<T>& aa, const Piece<T>& b, const Arc<T>& ab, T s, T t) {
+  constexpr T eps = std::numeric_limits<T>::epsilon();
+  auto clamp_s = [&](T x) { return std::clamp(x, aa.lo, aa.hi); };
+  auto clamp_t = [&](T x) { return std::clamp(x, ab.lo, ab.hi); };
+  s = clamp_s(s);
+  t = clamp_t(t);
+  Vector<T, 2> F = at(a, s) - at(b, t);
+  T f = norm(F);
+  for (int it = 0; it < 100 && f > 0; ++it) {
+    const Vector<T, 2> Ja = derivative(a, s), Jb = derivative(b, t);
+    const T det = cross(Ja, Jb), na = norm(Ja), nb = norm(Jb);
+    T ds, dt;
+    if (std::abs(det) > T(1e-8) * na * nb && na > 0 && nb > 0) {
+      ds = -cross(F, Jb) / det;
+      dt = cross(Ja, F) / det;
+    } else {
+      // (M^T M + mu I) d = -M^T F with M = [Ja, -Jb].
+      const T aa2 = dot(Ja, Ja), bb2 = dot(Jb, Jb), ab2 = -dot(Ja, Jb);
+      const T mu = T(1e-12) * (aa2 + bb2) + std::numeric_limits<T>::min();
+      const T g0 = dot(Ja, F), g1 = -dot(Jb, F);
+      const T m00 = aa2 + mu, m11 = bb2 + mu, dd = m00 * m11 - ab2 * ab2;
+      if (!(dd > 0)) break;
+      ds = -(m11 * g0 - ab2 * g1) / dd;
+      dt = -(m00 * g1 - ab2 * g0) / dd;
+    }
+    if (!std::isfinite(ds) || !std::isfinite(dt)) break;
+    bool improved = false;
+    for (int half = 0; half < 30; ++half) {
+      const T s2 = clamp_s(s + ds), t2 = clamp_t(t + dt);
+      const Vector<T, 2> F2 = at(a, s2) - at(b, t2);
+      const T f2 = norm(F2);
+      if (f2 < f || (f2 == f && (s2 != s || t2 != t) && half == 0)) {
+        const bool tiny = std::abs(s2 - s) <= 2 * eps * std::max(T(1), std::abs(s)) && std::abs(t2 - t) <= 2 * eps * std::max(T(1), std::abs(t));
+        s = s2;
+        t = t2;
+        F = F2;
+        improved = f2 < f;
+        f = f2;
+        if (tiny) improved = false;
+        break;
+      }
+      ds /= 2;
+      dt /= 2;
+    }
+    if (!improved) break;
+  }
+  return {s, t, f};
+}
+
+/// Polish of a touch (s, t) found by refine(): Newton's method on G(s, t) = ((a(s) -
+/// b(t)) . b'(t), a'(s) x b'(t)) = 0 (a(s)'s foot on b is b(t), and the tangents are
+/// parallel), whose root is simple at a touch of curves with different curvatures,
+/// where F = a - b has a double root. Gives the touch to a few eps instead of sqrt(eps).
+/// Returns the polished point if Newton converged (at most 16 steps) to a common point
+/// (distance <= tol) within 1e-5 of the start, else nothing.
+template <class T>
+std::optional<Refined<T>> polish_touch(const Piece<T>& a, const Arc<T>& aa, const Piece<T>& b, const Arc<T>& ab, Refined<T> r,
+                                       T tol) {
+  constexpr T eps = std::numeric_limits<T>::epsilon();
+  T s = r.s, t = r.t;
+  for (int it = 0; it < 16; ++it) {
+    const Vector<T, 2> F = at(a, s) - at(b, t), a1 = derivative(a, s), a2 = derivative(a, s, 2), b1 = derivative(b, t),
+                       b2 = derivative(b, t, 2);
+    const T g1 = dot(F, b1), g2 = cross(a1, b1);
+    const T j11 = dot(a1, b1), j12 = dot(F, b2) - dot(b1, b1), j21 = cross(a2, b1), j22 = cross(a1, b2);
+    const T det = j11 * j22 - j12 * j21;
+    if (!(std::abs(det) > 0)) return std::nullopt;
+    const T ds = -(g1 * j22 - j12 * g2) / det, dt = -(j11 * g2 - j21 * g1) / det;
+    if (!std::isfinite(ds) || !std::isfinite(dt)) return std::nullopt;
+    s = std::clamp(s + ds, aa.lo, aa.hi);
+    t = std::clamp(t + dt, ab.lo, ab.hi);
+    if (std::abs(s - r.s) > T(1e-5) || std::abs(t - r.t) > T(1e-5)) return std::nullopt;
+    if (std::abs(ds) <= 4 * eps * std::max(T(1), std::abs(s)) && std::abs(dt) <= 4 * eps * std::max(T(1), std::abs(t))) {
+      const T d = distance(at(a, s), at(b, t));
+      if (d <= tol) return Refined<T>{s, t, d};
+      return std::nullopt;
+    }
+  }
+  return std::nullopt;
+}
+
+/// A direction of the curve at t: the first non-zero derivative (a cusp's direction comes
+/// from the second).
+template <class T>
+Vector<T, 2> direction(const Piece<T>& c, T t) {
+  for (int k = 1; k <= std::max(1, degree(c)); ++k) {
+    const Vector<T, 2> v = derivative(c, t, k);
+    const T n = norm(v);
+    if (n > 0) return v / n;
+  }
+  return Vector<T, 2>{};
+}
+
+/// The parameter in arc `r` of piece c (weights w) of the point q, if q lies within tol
+/// of the arc: the roots of each coordinate's numerator minus q (the arc is monotone in
+/// both, so at most one lies in the arc unless that coordinate is constant) and the
+/// arc's ends, each polished by Newton steps on (c(t) - q) . c'(t), the closest kept.
+template <class T>
+std::optional<T> locate(const Piece<T>& c, const std::vector<T>& w, const Arc<T>& r, const Point<T, 2>& q, T tol) {
+  std::vector<T> cand{r.lo, r.hi};
+  const T margin = T(1e-9) * (r.hi - r.lo);
+  for (int k = 0; k < 2; ++k) {
+    const std::vector<T> num = coordinate_numerator(c, w, k, q[k]);
+    for (T x : bernstein_roots<T>(num))
+      if (x >= r.lo - margin && x <= r.hi + margin) cand.push_back(std::clamp(x, r.lo, r.hi));
+  }
+  std::optional<T> best;
+  T best_d = std::numeric_limits<T>::infinity();
+  for (T t : cand) {
+    for (int it = 0; it < 4; ++it) {
+      const Vector<T, 2> e = at(c, t) - q, d1 = derivative(c, t), d2 = derivative(c, t, 2);
+      const T den = dot(d1, d1) + dot(e, d2);
+      if (!(den > 0)) break;
+      const T t2 = std::clamp(t - dot(e, d1) / den, r.lo, r.hi);
+      if (!(distance(at(c, t2), q) <= norm(e))) break;
+      t = t2;
+    }
+    const T d = distance(at(c, t), q);
+    if (d < best_d) {
+      best_d = d;
+      best = t;
+    }
+  }
+  if (best_d <= tol) return best;
+  return std::nullopt;
+}
+
+/// Overlap of arcs ra (of piece a) and rb (of piece b), as piece parameters: a on
+/// [s0, s1] traces b from t0 to t1.
+template <class T>
+struct ArcOverlap {
+  T s0, s1, t0, t1;
+};
+
+/// Whether the arcs coincide on an interval. Its ends are arc ends (see Arc), so the
+/// candidates are the ends of each arc located on the other; the two extreme ones bound
+/// the interval, which is then confirmed at m n + 1 interior points (m, n the degrees,
+/// at least 3, at most 64): two distinct algebraic curves of degrees m and n share at
+/// most m n points (Bézout), so curves that share more are the same curve there.
+template <class T>
+std::optional<ArcOverlap<T>> arc_overlap(const Prepared<T>& A, const Arc<T>& ra, const Prepared<T>& B, const Arc<T>& rb, T tol) {
+  const Piece<T>& a = A.unit[ra.piece];
+  const Piece<T>& b = B.unit[rb.piece];
+  const auto& wa = A.weights[ra.piece];
+  const auto& wb = B.weights[rb.piece];
+  std::vector<std::pair<T, T>> ends;  // (s, t)
+  for (T s : {ra.lo, ra.hi})
+    if (auto t = locate(b, wb, rb, at(a, s), tol)) ends.emplace_back(s, *t);
+  for (T t : {rb.lo, rb.hi})
+    if (auto s = locate(a, wa, ra, at(b, t), tol)) ends.emplace_back(*s, t);
+  if (ends.size() < 2) return std::nullopt;
+  std::sort(ends.begin(), ends.end());
+  const auto [s0, t0] = ends.front();
+  const auto [s1, t1] = ends.back();
+  if (!(s1 - s0 > T(1e-9) * (ra.hi - ra.lo)) || !(std::abs(t1 - t0) > T(1e-9) * (rb.hi - rb.lo))) return std::nullopt;
+  const int k = std::clamp(degree(a) * degree(b) + 1, 3, 64);
+  const T tlo = std::min(t0, t1), thi = std::max(t0, t1), tm = T(1e-9) * (rb.hi - rb.lo);
+  for (int j = 1; j <= k; ++j) {
+    const T s = s0 + (s1 - s0) * static_cast<T>(j) / static_cast<T>(k + 1);
+    const auto t = locate(b, wb, rb, at(a, s), tol);
+    if (!t || *t < tlo - tm || *t > thi + tm) return std::nullopt;
+  }
+  return ArcOverlap<T>{s0, s1, t0, t1};
+}
+
+/// Splits every piece at the roots of its coordinates' derivatives (interior ones), so
+/// that each arc is monotone in x and in y.
+template <class T>
+void make_arcs(Prepared<T>& p) {
+  for (std::size_t i = 0; i < p.unit.size(); ++i) {
+    std::vector<T> cuts{T(0), T(1)};
+    if (degree(p.unit[i]) >= 2) {
+      for (int k = 0; k < 2; ++k) {
+        const auto num = derivative_numerator(p.unit[i], p.weights[i], k);
+        for (T r : bernstein_roots<T>(num))
+          if (r > 0 && r < 1) cuts.push_back(r);
+      }
+    }
+    std::sort(cuts.begin(), cuts.end());
+    for (std::size_t j = 0; j + 1 < cuts.size(); ++j) {
+      if (cuts[j + 1] - cuts[j] > T(1e-12)) p.arcs.push_back({i, cuts[j], cuts[j + 1]});
+      else if (j + 2 == cuts.size() && !p.arcs.empty() && p.arcs.back().piece == i) p.arcs.back().hi = cuts[j + 1];
+    }
+  }
+}
+
+/// Prepares a curve: unit-scale copies of its pieces (origin and e shared by both
+/// curves: coordinates (P - origin) 2^-e) and its arcs.
+template <class T>
+Prepared<T> prepare(const Pieces<T, 2>& c, const Point<T, 2>& origin, int e) {
+  Prepared<T> p{&c, {}, {}, {}, {}, 0};
+  Box<T, 2> box = Box<T, 2>::empty_box();
+  for (const auto& s : c.segments()) {
+    std::visit(
+        [&](const auto& x) {
+          auto u = normalised_copy(x, origin, e);
+          box.add(u.control_bounds());
+          std::vector<T> w(x.points().size(), T(1));
+          if constexpr (requires { x.weights(); }) {
+            const T wmax = *std::max_element(x.weights().begin(), x.weights().end());
+            for (std::size_t i = 0; i < w.size(); ++i) w[i] = x.weights()[i] / wmax;
+          }
+          p.unit.emplace_back(std::move(u));
+          p.weights.push_back(std::move(w));
+        },
+        s);
+  }
+  p.size = diagonal(box);
+  make_arcs(p);
+  for (const auto& r : p.arcs)
+    p.arc_boxes.push_back(std::visit([&](const auto& x) { return x.portion(r.lo, r.hi).control_bounds(); }, p.unit[r.piece]));
+  return p;
+}
+
+/// A common point in piece parameters before it is lifted to the curves' parameters.
+template <class T>
+struct Hit {
+  T ta, tb;  // curve parameters
+  std::size_t pa, pb;
+  T sa, sb;  // piece parameters
+  T distance;
+  bool touch = false;  // two crossings merged into a touch
+};
+
+template <class T>
+void intersect_arcs(const Prepared<T>& A, const Arc<T>& ra, const Prepared<T>& B, const Arc<T>& rb, Context<T>& ctx,
+                    std::vector<Hit<T>>& hits) {
+  const Piece<T>& a = A.unit[ra.piece];
+  const Piece<T>& b = B.unit[rb.piece];
+  ctx.seeds.clear();
+  ctx.nodes = 0;
+  std::visit(
+      [&](const auto& x, const auto& y) {
+        const auto xa = x.portion(ra.lo, ra.hi);
+        const auto yb = y.portion(rb.lo, rb.hi);
+        subdivide(xa, ra.lo, ra.hi, 0, yb, rb.lo, rb.hi, 0, ctx);
+      },
+      a, b);
+  std::vector<std::pair<T, T>> done;
+  for (const auto& [s0, t0] : ctx.seeds) {
+    Refined<T> r = refine(a, ra, b, rb, s0, t0);
+    if (!(r.distance <= ctx.tol)) continue;
+    if (std::abs(cross(direction(a, r.s), direction(b, r.t))) <= T(1e-6)) {
+      if (auto p = polish_touch(a, ra, b, rb, r, ctx.tol)) r = *p;
+    }
+    bool dup = false;
+    for (const auto& [s, t] : done) dup = dup || (std::abs(s - r.s) <= T(1e-12) && std::abs(t - r.t) <= T(1e-12));
+    if (dup) continue;
+    done.emplace_back(r.s, r.t);
+    hits.push_back({A.curve->global_parameter(ra.piece, r.s), B.curve->global_parameter(rb.piece, r.t), ra.piece, rb.piece, r.s,
+                    r.t, r.distance, false});
+  }
+}
+
+/// Common points closer than this fraction of their pieces' parameter intervals (in
+/// both parameters) are one point: touches are located to about sqrt(eps) ~ 1e-8, so a
+/// touch found from several seeds or from two arcs meeting at it is reported once.
+inline constexpr double merge_fraction = 1e-6;
+
+template <class T>
+Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
+  const bool self = cb == nullptr;
+  if (self) cb = &ca;
+  // Shared unit frame: origin at a's first control point, scale the power of two that
+  // brings the largest |P - origin| of both curves into [0.5, 1).
+  const Point<T, 2> origin = points(ca.segments().front()).front();
+  T extent = 0;
+  for (const auto* c : {&ca, cb})
+    for (const auto& s : c->segments())
+      for (const auto& q : points(s))
+        for (int d = 0; d < 2; ++d) extent = std::max(extent, std::abs(q[d] / 2 - origin[d] / 2));
+  int e = 0;
+  if (extent > 0) {
+    (void)std::frexp(extent, &e);
+    ++e;
+  }
+  const Prepared<T> A = prepare(ca, origin, e);
+  const Prepared<T> B = self ? Prepared<T>{} : prepare(*cb, origin, e);
+  const Prepared<T>& PB = self ? A : B;
+  constexpr T eps = std::numeric_limits<T>::epsilon();
+  // 1e-10 of the curves' size: the near-miss threshold of the contract. 64 eps of the unit
+  // coordinates (|P| < 1) covers rounding when the curves are points or tiny far apart.
+  const T tol = std::max(T(1e-10) * std::max(A.size, PB.size), 64 * eps);
+  Context<T> ctx{tol, tol, tol + 16 * eps, 0, {}};
+
+  std::vector<Hit<T>> hits;
+  std::vector<CurveOverlap<T>> overlaps;
+  for (std::size_t i = 0; i < A.arcs.size(); ++i) {
+    for (std::size_t j = self ? i + 1 : 0; j < PB.arcs.size(); ++j) {
+      const Arc<T>& ra = A.arcs[i];
+      const Arc<T>& rb = PB.arcs[j];
+      if (!boxes_meet(A.arc_boxes[i], PB.arc_boxes[j], ctx.slack)) continue;
+      if (auto o = arc_overlap(A, ra, PB, rb, tol)) {
+        overlaps.push_back({{ca.global_parameter(ra.piece, o->s0), ca.global_parameter(ra.piece, o->s1)},
+                            cb->global_parameter(rb.piece, o->t0), cb->global_parameter(rb.piece, o->t1)});
+        continue;
+      }
+      intersect_arcs(A, ra, PB, rb, ctx, hits);
+    }
+  }
+
+  // Overlaps found arc by arc: join the ones that continue each other.
+  const T la = ca.domain().length(), lb = cb->domain().length();
+  std::sort(overlaps.begin(), overlaps.end(), [](const auto& x, const auto& y) { return x.a.lo < y.a.lo; });
+  std::vector<CurveOverlap<T>> joined;
+  for (const auto& o : overlaps) {
+    if (!joined.empty()) {
+      auto& p = joined.back();
+      if (std::abs(o.a.lo - p.a.hi) <= T(1e-9) * la && std::abs(o.b_start - p.b_end) <= T(1e-9) * lb &&
+          ((o.b_end > o.b_start) == (p.b_end > p.b_start))) {
+        p.a.hi = o.a.hi;
+        p.b_end = o.b_end;
+        continue;
+      }
+    }
+    joined.push_back(o);
+  }
+
+  auto piece_length = [](const Pieces<T, 2>& c, std::size_t i) { return c.segment_domain(i).length(); };
+  // The unit-frame point of a curve at its parameter g (pieces chosen as evaluation does).
+  auto unit_at = [](const Pieces<T, 2>& c, const Prepared<T>& P, T g) {
+    const std::size_t p = c.segment_index(g);
+    return at(P.unit[p], c.local_parameter(p, g));
+  };
+  if (self) {
+    for (auto& h : hits) {
+      if (h.ta > h.tb) {
+        std::swap(h.ta, h.tb);
+        std::swap(h.pa, h.pb);
+        std::swap(h.sa, h.sb);
+      }
+    }
+  }
+  std::sort(hits.begin(), hits.end(), [](const auto& x, const auto& y) { return x.ta < y.ta; });
+  std::vector<Hit<T>> kept;
+  for (const auto& h : hits) {
+    // Inside (or at the end of) an overlap: part of it, not an isolated point.
+    bool in_overlap = false;
+    for (const auto& o : joined) {
+      const T blo = std::min(o.b_start, o.b_end), bhi = std::max(o.b_start, o.b_end);
+      const T ma = T(1e-7) * piece_length(ca, h.pa), mb = T(1e-7) * piece_length(*cb, h.pb);
+      in_overlap = in_overlap || (h.ta >= o.a.lo - ma && h.ta <= o.a.hi + ma && h.tb >= blo - mb && h.tb <= bhi + mb);
+      if (self)  // the same stretch seen from the other side
+        in_overlap = in_overlap || (h.tb >= o.a.lo - ma && h.tb <= o.a.hi + ma && h.ta >= blo - mb && h.ta <= bhi + mb);
+    }
+    if (in_overlap) continue;
+    if (self) {
+      // The curve meets itself where consecutive arcs join, at its closing point, and
+      // at a cusp: none is a self-intersection. A "loop" whose extent is below the
+      // near-miss distance (x 100) is one of these at the resolution of double.
+      if (h.tb - h.ta <= T(1e-12) * la) continue;
+      const Interval<T> dom = ca.domain();
+      if (h.ta == dom.lo && h.tb == dom.hi) continue;
+      Box<T, 2> loop = Box<T, 2>::empty_box();
+      for (std::size_t p = ca.segment_index(h.ta); p <= ca.segment_index(h.tb) && p < A.unit.size(); ++p) {
+        const T s0 = std::clamp(ca.local_parameter(p, h.ta), T(0), T(1)), s1 = std::clamp(ca.local_parameter(p, h.tb), T(0), T(1));
+        if (s1 > s0) loop.add(std::visit([&](const auto& x) { return x.portion(s0, s1).control_bounds(); }, A.unit[p]));
+      }
+      if (!loop.empty() && diagonal(loop) <= 100 * tol) continue;
+    }
+    bool merged = false;
+    for (auto& k : kept) {
+      const T ma = T(merge_fraction) * piece_length(ca, h.pa), mb = T(merge_fraction) * piece_length(*cb, h.pb);
+      const T da = std::abs(k.ta - h.ta), db = std::abs(k.tb - h.tb);
+      if (da <= ma && db <= mb && distance(at(A.unit[k.pa], k.sa), at(A.unit[h.pa], h.sa)) <= 1e4 * tol) {
+        if (h.distance < k.distance) k = h;
+        merged = true;
+        break;
+      }
+      // Two crossings between which the curves stay within the near-miss distance (the
+      // separation peaks near the middle) are one touch at that resolution: reported
+      // once, at the middle, as tangent.
+      if (da <= T(1e3) * ma && db <= T(1e3) * mb) {
+        const T mta = (k.ta + h.ta) / 2, mtb = (k.tb + h.tb) / 2;
+        if (distance(unit_at(ca, A, mta), unit_at(*cb, PB, mtb)) <= tol) {
+          const std::size_t pa = ca.segment_index(mta), pb = cb->segment_index(mtb);
+          k = Hit<T>{mta, mtb, pa, pb, ca.local_parameter(pa, mta), cb->local_parameter(pb, mtb), k.distance, true};
+          merged = true;
+          break;
+        }
+      }
+    }
+    if (!merged) kept.push_back(h);
+  }
+
+  Intersections<T> out;
+  for (const auto& h : kept) {
+    const Vector<T, 2> da = direction(A.unit[h.pa], h.sa), db = direction(PB.unit[h.pb], h.sb);
+    // A curve that is a point has no direction: its meeting with another is a crossing.
+    const bool tangent = h.touch || (norm(da) > 0 && norm(db) > 0 && std::abs(cross(da, db)) <= T(1e-6));
+    out.points.push_back({h.ta, h.tb, std::visit([&](const auto& x) { return x(h.sa); }, ca.segments()[h.pa]),
+                          tangent ? IntersectionKind::tangent : IntersectionKind::crossing});
+  }
+  std::sort(out.points.begin(), out.points.end(), [](const auto& x, const auto& y) { return x.ta < y.ta; });
+  out.overlaps = std::move(joined);
+  return out;
+}
+
+}  // namespace detail::isect
+
+/// The common points and overlaps of two plane curves of any types (through their exact
+/// Bézier pieces; a line segment is a degree-1 Bézier or a polyline).
+///
+/// Method: every piece is cut at the zeros of its coordinates' derivatives into arcs
+/// monotone in x and y (for rational pieces the numerators of the quotient rule). For
+/// each pair of arcs whose control boxes meet: first an overlap test (arc_overlap: the
+/// arcs' ends located on each other, confirmed at m n + 1 points by Bézout's bound),
+/// else recursive halving with control-box rejection down to parts flat within 1e-10 of
+/// the curves' size, then Newton refinement of each candidate on the curves themselves
+/// (Levenberg-Marquardt where the Jacobian is near singular) [SederbergNishita90 for the
+/// subdivision family; Dennis-Schnabel96 for the damped Newton].
+///
+/// Guarantees and accuracy: a point is reported when the curves come within 1e-10 of
+/// their size (the larger control-box diagonal) there, and only then: near-misses
+/// farther apart are not reported. Transversal crossings are refined to full precision
+/// (parameters to a few eps relative, eps / sin(angle) near tangency); touches to about
+/// sqrt(eps) in the parameters, and reported once with kind `tangent` (tangent
+/// directions within 1e-6 radians). Points closer than 1e-6 of their pieces' parameter
+/// intervals in both parameters are merged into one. Overlaps are reported as parameter
+/// intervals (joined across arcs and pieces), never as points; a point inside an overlap
+/// (or at its ends) is not reported separately.
+///
+/// Scale: computed on copies translated and scaled by a power of two, so huge and tiny
+/// coordinates behave as unit ones. Cost: about a hundred subdivision steps and a few
+/// Newton steps per crossing for cubics; O(arcs_a x arcs_b) pairs. Throws NumericalError
+/// when a pair of arcs needs more than 2 10^6 subdivision steps (curves within the
+/// tolerance of each other along a stretch without coinciding).
+template <class CA, class CB>
+  requires PiecewiseBezierCurve<CA> && PiecewiseBezierCurve<CB> && (CA::dimension == 2) && (CB::dimension == 2) &&
+           std::same_as<typename CA::Scalar, typename CB::Scalar>
+Intersections<typename CA::Scalar> intersect(const CA& a, const CB& b) {
+  const auto& pa = pieces(a);
+  const auto& pb = pieces(b);
+  return detail::isect::solve(pa, &pb);
+}
+
+/// The self-intersections of a plane curve: pairs ta < tb with c(ta) = c(tb), and the
+/// stretches where the curve runs over itself (overlaps, a before b). Not reported: the
+/// joints of consecutive pieces, the closing point of a closed curve (c at the start and
+/// end of its domain), and cusps (a "loop" smaller than 1e-8 of the curve's size).
+/// Method, accuracy and cost as intersect(), on the pairs of distinct arcs of one curve.
+template <class C>
+  requires PiecewiseBezierCurve<C> && (C::dimension == 2)
+Intersections<typename C::Scalar> self_intersect(const C& c) {
+  const auto& p = pieces(c);
+  return detail::isect::solve(p, static_cast<decltype(&p)>(nullptr));
+}
+
+}  // namespace casteljau

@@ -1,0 +1,370 @@
+#!/usr/bin/python3
+"""Black-box tests of `intersect`: closed forms (lines, the 9 crossings of y = T3(x) and
+x = T3(y), a loop cubic's double point, a parabola and a circle touching lines), overlaps
+(a cubic and its own halves, reversed, collinear segments, a curve running over itself),
+mpmath as the oracle for the parameters of random crossings (findroot at 50 digits), and a
+seeded random property: every reported point lies on both curves, and dense polylines
+find no crossing that the program missed.
+
+Usage: test_intersect.py PATH_TO_CASTELJAU [unittest options]
+"""
+import math
+import os
+import random
+import sys
+import unittest
+
+import mpmath
+import numpy as np
+
+import test_cli
+from test_cli import CliTest, bezier, de_casteljau, dist, rational_point
+
+
+def split_points(P, t):
+    """de Casteljau's triangle: the control points of the halves [0, t] and [t, 1]."""
+    left, right, pts = [], [], [list(p) for p in P]
+    while pts:
+        left.append(pts[0])
+        right.append(pts[-1])
+        pts = [[(1 - t) * a + t * b for a, b in zip(pts[i], pts[i + 1])] for i in range(len(pts) - 1)]
+    return left, right[::-1]
+
+
+def mp_bezier(P, t):
+    """Bernstein sum in mpmath (t an mpf)."""
+    n = len(P) - 1
+    return [sum(mpmath.binomial(n, i) * t ** i * (1 - t) ** (n - i) * mpmath.mpf(P[i][k]) for i in range(n + 1))
+            for k in range(2)]
+
+
+def mp_refine(A, B, ta, tb):
+    """The root of A(s) - B(t) = 0 near (ta, tb) at 50 digits."""
+    with mpmath.workdps(50):
+        f = lambda s, t: [x - y for x, y in zip(mp_bezier(A, s), mp_bezier(B, t))]
+        s, t = mpmath.findroot(f, (mpmath.mpf(ta), mpmath.mpf(tb)))
+        return float(s), float(t)
+
+
+def T3_cubics():
+    """y = T3(x) = 4x^3 - 3x on [-1, 1] as a cubic in t = (x + 1) / 2, and its mirror
+    x = T3(y). Control points from the end derivatives: y'(t) = 2 T3'(x) = 18 at both ends."""
+    A = [[-1, -1], [-1 / 3, 5], [1 / 3, -5], [1, 1]]
+    B = [[y, x] for x, y in A]
+    return A, B
+
+
+class LineTest(CliTest):
+    def test_segments_cross_at_known_point(self):
+        # (0,0)-(4,2) and the polyline (0,2)-(4,0)-(5,3): cross at (2, 1), t = 0.5 on both.
+        r = self.ok("intersect", {"curves": [bezier([[0, 0], [4, 2]]), {"type": "polyline", "points": [[0, 2], [4, 0], [5, 3]]}]})
+        self.assertEqual(r["overlaps"], [])
+        self.assertEqual(len(r["intersections"]), 1)
+        x = r["intersections"][0]
+        self.assert_close(x["t"], [0.5, 0.5], 1e-15)
+        self.assert_close(x["point"], [2, 1], 1e-15)
+        self.assertEqual(x["kind"], "crossing")
+
+    def test_polyline_vertex_hit_once(self):
+        # The segment passes through the polyline's vertex (4, 0) at t = 1 of both segments:
+        # one point, not two.
+        r = self.ok("intersect", {"curves": [bezier([[2, -2], [6, 2]]), {"type": "polyline", "points": [[0, 2], [4, 0], [5, 3]]}]})
+        self.assertEqual(len(r["intersections"]), 1, r)
+        self.assert_close(r["intersections"][0]["t"], [0.5, 1.0], 1e-15)
+
+    def test_curve_and_line_segment(self):
+        # y = 0 meets the cubic (0,-1),(1,3),(2,-3),(3,1) at the three roots of its y(t),
+        # found by mpmath at 50 digits; x(t) = 3t, so tb = (3 ta + 1) / 5.
+        P = [[0, -1], [1, 3], [2, -3], [3, 1]]
+        r = self.ok("intersect", {"curves": [bezier(P), bezier([[-1, 0], [4, 0]])]})
+        with mpmath.workdps(50):
+            y = lambda t: mp_bezier(P, t)[1]
+            roots = sorted(float(mpmath.findroot(y, t0)) for t0 in (0.1, 0.5, 0.9))
+        got = [x["t"][0] for x in r["intersections"]]
+        self.assertEqual(len(got), 3, r)
+        for g, w in zip(got, roots):
+            self.assertAlmostEqual(g, w, delta=4e-16)
+        for x in r["intersections"]:
+            self.assertAlmostEqual(x["t"][1], (de_casteljau(P, x["t"][0])[0] + 1) / 5, delta=1e-15)
+
+
+class NineCrossingsTest(CliTest):
+    def test_T3_and_its_mirror_cross_nine_times(self):
+        # x = cos(theta), y = cos(3 theta) with T3(T3(x)) = T9(x) = x: theta = pi k / 4
+        # (k = 0..4) and pi k / 5 (k = 0..5), nine distinct points, all transversal.
+        A, B = T3_cubics()
+        r = self.ok("intersect", {"curves": [bezier(A), bezier(B)]})
+        thetas = sorted(set([math.pi * k / 4 for k in range(5)] + [math.pi * k / 5 for k in range(6)]))
+        want = sorted(((math.cos(th) + 1) / 2, (math.cos(3 * th) + 1) / 2) for th in thetas)
+        self.assertEqual(len(want), 9)
+        got = r["intersections"]
+        self.assertEqual(len(got), 9, r)
+        self.assertEqual(r["overlaps"], [])
+        for x, (ta, tb) in zip(got, want):
+            # Parameters to a few eps (Newton to full precision on a well-conditioned
+            # crossing; the reference cosines carry an error of about 1 ulp).
+            self.assertAlmostEqual(x["t"][0], ta, delta=8e-16)
+            self.assertAlmostEqual(x["t"][1], tb, delta=8e-16)
+            self.assertEqual(x["kind"], "crossing")
+        self.assertEqual([x["t"][0] for x in got], sorted(x["t"][0] for x in got))
+
+    def test_nine_crossings_through_other_types(self):
+        # The same curves as a path of two halves and as a clamped bspline of one piece:
+        # the same nine points in the curve's own parameters.
+        A, B = T3_cubics()
+        L, R = split_points(A, 0.5)
+        path = {"type": "path", "segments": [bezier(L), bezier(R)], "breaks": [0, 1, 2]}
+        spline = {"type": "bspline", "degree": 3, "knots": [0, 0, 0, 0, 1, 1, 1, 1], "points": B}
+        r = self.ok("intersect", {"curves": [path, spline]})
+        ref = self.ok("intersect", {"curves": [bezier(A), bezier(B)]})["intersections"]
+        self.assertEqual(len(r["intersections"]), 9, r)
+        for x, y in zip(r["intersections"], ref):
+            self.assertAlmostEqual(x["t"][0], 2 * y["t"][0], delta=1e-14)
+            self.assertAlmostEqual(x["t"][1], y["t"][1], delta=1e-14)
+
+
+class TangentTest(CliTest):
+    def test_parabola_touches_line_once(self):
+        # y(t) = (2t - 1)^2 >= 0 touches y = 0 at t = 1/2, x = 1.
+        r = self.ok("intersect", {"curves": [bezier([[0, 1], [1, -1], [2, 1]]), bezier([[0, 0], [2, 0]])]})
+        self.assertEqual(len(r["intersections"]), 1, r)
+        x = r["intersections"][0]
+        self.assertEqual(x["kind"], "tangent")
+        self.assert_close(x["t"], [0.5, 0.5], 1e-15)
+        self.assert_close(x["point"], [1, 0], 1e-15)
+
+    def test_rotated_touch_found_once(self):
+        # The same touch rotated by several angles: rounded coordinates may make the curves
+        # miss or cross twice by ~1e-16; still exactly one tangent point, at the closed form.
+        for deg in (17, 30, 45, 101, 200):
+            a = math.radians(deg)
+            rot = lambda p: [math.cos(a) * p[0] - math.sin(a) * p[1] + 3, math.sin(a) * p[0] + math.cos(a) * p[1] - 1]
+            r = self.ok("intersect", {"curves": [bezier([rot(p) for p in [[0, 1], [1, -1], [2, 1]]]),
+                                                 bezier([rot(p) for p in [[0, 0], [2, 0]]])]})
+            self.assertEqual(len(r["intersections"]), 1, (deg, r))
+            x = r["intersections"][0]
+            self.assertEqual(x["kind"], "tangent")
+            # A double root: parameters to about sqrt(eps), here better thanks to the polish.
+            self.assert_close(x["t"], [0.5, 0.5], 1e-7)
+
+    def test_circle_touches_line(self):
+        # Quarter circle (rational quadratic) and the line x + y = sqrt(2): touch at 45 deg.
+        s = math.sqrt(2)
+        circle = {"type": "rational_bezier", "points": [[1, 0], [1, 1], [0, 1]], "weights": [1, s / 2, 1]}
+        r = self.ok("intersect", {"curves": [circle, bezier([[s, 0], [0, s]])]})
+        self.assertEqual(len(r["intersections"]), 1, r)
+        x = r["intersections"][0]
+        self.assertEqual(x["kind"], "tangent")
+        self.assert_close(x["point"], [s / 2, s / 2], 1e-8)
+        self.assert_close(x["t"], [0.5, 0.5], 1e-7)
+
+    def test_near_miss_not_reported(self):
+        # Lifted by 1e-8 of the size (well above the 1e-10 threshold): no point; lowered by
+        # 1e-12: two crossings closer than sqrt(1e-12) merge into one tangent point.
+        up = self.ok("intersect", {"curves": [bezier([[0, 1 + 2e-8], [1, -1 + 2e-8], [2, 1 + 2e-8]]), bezier([[0, 0], [2, 0]])]})
+        self.assertEqual(up["intersections"], [])
+        down = self.ok("intersect", {"curves": [bezier([[0, 1 - 2e-12], [1, -1 - 2e-12], [2, 1 - 2e-12]]), bezier([[0, 0], [2, 0]])]})
+        self.assertEqual(len(down["intersections"]), 1, down)
+        self.assertEqual(down["intersections"][0]["kind"], "tangent")
+
+    def test_endpoints_meeting(self):
+        # Two curves that share an end point and leave it in different directions.
+        r = self.ok("intersect", {"curves": [bezier([[0, 0], [1, 2], [2, 0]]), bezier([[2, 0], [3, 1], [4, 0]])]})
+        self.assertEqual(len(r["intersections"]), 1, r)
+        self.assertEqual(r["intersections"][0]["t"], [1.0, 0.0])
+        self.assertEqual(r["intersections"][0]["kind"], "crossing")
+
+
+class OverlapTest(CliTest):
+    P = [[0, 0], [1, 3], [3, -1], [4, 2]]
+
+    def test_cubic_and_its_own_halves(self):
+        L, R = split_points(self.P, 0.5)
+        r = self.ok("intersect", {"curves": [bezier(self.P), bezier(L)]})
+        self.assertEqual(r["intersections"], [])
+        self.assertEqual(len(r["overlaps"]), 1, r)
+        o = r["overlaps"][0]
+        self.assert_close(o["a"], [0, 0.5], 1e-12)
+        self.assert_close(o["b"], [0, 1], 1e-12)
+        r = self.ok("intersect", {"curves": [bezier(R[::-1]), bezier(self.P)]})
+        self.assertEqual(r["intersections"], [])
+        self.assertEqual(len(r["overlaps"]), 1, r)
+        self.assert_close(r["overlaps"][0]["a"], [0, 1], 1e-12)
+        self.assert_close(r["overlaps"][0]["b"], [1, 0.5], 1e-12)
+
+    def test_sub_curve_of_a_path_and_a_bspline(self):
+        # The middle third [1/3, 2/3] of the cubic against the cubic as a bspline on [0, 3].
+        L, _ = split_points(self.P, 2 / 3)
+        _, mid = split_points(L, 0.5)
+        spline = {"type": "bspline", "degree": 3, "knots": [0, 0, 0, 0, 3, 3, 3, 3], "points": self.P}
+        r = self.ok("intersect", {"curves": [spline, bezier(mid)]})
+        self.assertEqual(r["intersections"], [])
+        self.assertEqual(len(r["overlaps"]), 1, r)
+        self.assert_close(r["overlaps"][0]["a"], [1, 2], 1e-11)
+        self.assert_close(r["overlaps"][0]["b"], [0, 1], 1e-11)
+
+    def test_same_curve_twice(self):
+        r = self.ok("intersect", {"curves": [bezier(self.P), bezier(self.P)]})
+        self.assertEqual(r, {"intersections": [], "overlaps": [{"a": [0.0, 1.0], "b": [0.0, 1.0]}]})
+
+    def test_collinear_segments(self):
+        # (0,0)-(4,4) and the polyline (2,2)-(6,6)-(6,0): overlap on (2,2)-(4,4), and the
+        # polyline's second segment does not touch the first curve.
+        r = self.ok("intersect", {"curves": [bezier([[0, 0], [4, 4]]), {"type": "polyline", "points": [[2, 2], [6, 6], [6, 0]]}]})
+        self.assertEqual(r["intersections"], [])
+        self.assertEqual(len(r["overlaps"]), 1, r)
+        self.assert_close(r["overlaps"][0]["a"], [0.5, 1], 1e-15)
+        self.assert_close(r["overlaps"][0]["b"], [0, 0.5], 1e-15)
+
+    def test_curve_running_over_itself(self):
+        # x(t) = 6t - 15t^2 + 10t^3 on y = 0 turns back at t = 1/2 -+ sqrt(5)/10 and covers
+        # [x(t2), x(t1)] three times: three overlaps, no points.
+        t1, t2 = 0.5 - math.sqrt(5) / 10, 0.5 + math.sqrt(5) / 10
+        r = self.ok("intersect", {"curves": [bezier([[0, 0], [2, 0], [-1, 0], [1, 0]])]})
+        self.assertEqual(r["intersections"], [])
+        self.assertEqual(len(r["overlaps"]), 3, r)
+        x = lambda t: 6 * t - 15 * t * t + 10 * t ** 3
+        for o in r["overlaps"]:
+            self.assertLess(o["a"][0], o["a"][1])
+            for ta, tb in zip(o["a"], o["b"]):
+                self.assertAlmostEqual(x(ta), x(tb), delta=1e-12)
+        starts = sorted(o["a"][0] for o in r["overlaps"])
+        # The low end x(t2) is reached on the first arc at the root of x(t) = x(t2) below t1.
+        s0 = float(mpmath.findroot(lambda t: 6 * t - 15 * t ** 2 + 10 * t ** 3 - x(t2), 0.05))
+        self.assertAlmostEqual(starts[0], s0, delta=1e-9)
+        self.assertAlmostEqual(starts[2], t1, delta=1e-9)
+
+
+class SelfTest(CliTest):
+    def test_symmetric_loop(self):
+        # P = (0,0),(3,3),(-1,3),(2,0) is symmetric about x = 1: x(1-t) = 2 - x(t) and
+        # y(1-t) = y(t), so the double point is at x = 1, t and 1 - t, with t a root of
+        # x(t) - 1 = -1 + 9t - 21t^2 + 14t^3 = (2t - 1)(7t^2 - 7t + 1): t = 1/2 - sqrt(21)/14.
+        P = [[0, 0], [3, 3], [-1, 3], [2, 0]]
+        r = self.ok("intersect", {"curves": [bezier(P)]})
+        self.assertEqual(r["overlaps"], [])
+        self.assertEqual(len(r["intersections"]), 1, r)
+        x = r["intersections"][0]
+        closed = 0.5 - math.sqrt(21) / 14
+        with mpmath.workdps(50):
+            ta = float(mpmath.findroot(lambda t: mp_bezier(P, t)[0] - 1, closed))
+        self.assertAlmostEqual(ta, closed, delta=1e-15)
+        self.assertAlmostEqual(x["t"][0], ta, delta=4e-16)
+        self.assertAlmostEqual(x["t"][1], 1 - ta, delta=4e-16)
+        self.assertAlmostEqual(x["point"][0], 1, delta=1e-15)
+        self.assertEqual(x["kind"], "crossing")
+
+    def test_no_self_intersections(self):
+        for c in (bezier([[0, 0], [1, 3], [3, 3], [4, 0]]), bezier([[0, 0], [1, 1]]),
+                  {"type": "polyline", "points": [[0, 0], [1, 0], [1, 1], [0, 1]]},
+                  bezier([[0, 0], [2, 2], [0, 2], [2, 0]])):  # a cusp, not a loop
+            r = self.ok("intersect", {"curves": [c]})
+            self.assertEqual(r, {"intersections": [], "overlaps": []}, c)
+
+    def test_closed_polyline_and_figure_eight(self):
+        # A closed square: its closing point is not a self-intersection. A bow tie polyline
+        # crosses itself at (1, 1): segment 0 at t = 0.5 and segment 2 at t = 2.5.
+        sq = {"type": "polyline", "points": [[0, 0], [2, 0], [2, 2], [0, 2], [0, 0]]}
+        self.assertEqual(self.ok("intersect", {"curves": [sq]}), {"intersections": [], "overlaps": []})
+        bow = {"type": "polyline", "points": [[0, 0], [2, 2], [2, 0], [0, 2]]}
+        r = self.ok("intersect", {"curves": [bow]})
+        self.assertEqual(len(r["intersections"]), 1, r)
+        self.assert_close(r["intersections"][0]["t"], [0.5, 2.5], 1e-15)
+        self.assert_close(r["intersections"][0]["point"], [1, 1], 1e-15)
+
+
+def random_cubic(rng):
+    return [[rng.random(), rng.random()] for _ in range(4)]
+
+
+def polyline_crossings(A, B, n=1500):
+    """Crossings of the n-segment polylines of A and B (sampled at uniform parameters), as
+    approximate parameter pairs: an independent estimate, vectorised with numpy."""
+    t = np.linspace(0, 1, n + 1)
+
+    def sample(P):
+        P = np.array(P, dtype=float)
+        m = len(P) - 1
+        Bm = np.array([math.comb(m, i) * t ** i * (1 - t) ** (m - i) for i in range(m + 1)])
+        return Bm.T @ P
+
+    a, b = sample(A), sample(B)
+    p, r = a[:-1], a[1:] - a[:-1]
+    q, s = b[:-1], b[1:] - b[:-1]
+    rxs = r[:, None, 0] * s[None, :, 1] - r[:, None, 1] * s[None, :, 0]
+    qp = q[None, :, :] - p[:, None, :]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        u = (qp[..., 0] * s[None, :, 1] - qp[..., 1] * s[None, :, 0]) / rxs
+        v = (qp[..., 0] * r[:, None, 1] - qp[..., 1] * r[:, None, 0]) / rxs
+    ok = (rxs != 0) & (u >= 0) & (u <= 1) & (v >= 0) & (v <= 1)
+    i, j = np.nonzero(ok)
+    return [((i[k] + u[i[k], j[k]]) / n, (j[k] + v[i[k], j[k]]) / n) for k in range(len(i))]
+
+
+class RandomPropertyTest(CliTest):
+    def test_random_cubic_pairs(self):
+        rng = random.Random(20261130)
+        pairs = found = 0
+        for _ in range(60):
+            A, B = random_cubic(rng), random_cubic(rng)
+            r = self.ok("intersect", {"curves": [bezier(A), bezier(B)]})
+            pairs += 1
+            self.assertEqual(r["overlaps"], [])
+            hits = r["intersections"]
+            found += len(hits)
+            for h in hits:
+                # On both curves to 1e-9 of the size (unit square: size <= sqrt(2)).
+                self.assertLess(dist(de_casteljau(A, h["t"][0]), de_casteljau(B, h["t"][1])), 1e-9)
+                self.assertLess(dist(de_casteljau(A, h["t"][0]), h["point"]), 1e-12)
+                # mpmath oracle for crossings: parameters to ~1e-15 / sin(angle).
+                if h["kind"] == "crossing":
+                    s, t = mp_refine(A, B, h["t"][0], h["t"][1])
+                    self.assertAlmostEqual(h["t"][0], s, delta=1e-13)
+                    self.assertAlmostEqual(h["t"][1], t, delta=1e-13)
+            # Every crossing of the dense polylines is near a reported point.
+            for (ta, tb) in polyline_crossings(A, B):
+                near = [h for h in hits if abs(h["t"][0] - ta) < 2e-3 and abs(h["t"][1] - tb) < 2e-3]
+                self.assertTrue(near, f"missed a crossing near {(ta, tb)} of {A} and {B}: {hits}")
+        self.assertGreater(found, 20)  # the sample does exercise crossings
+
+    def test_random_rational_pairs_lie_on_both(self):
+        rng = random.Random(7)
+        for _ in range(20):
+            A, B = random_cubic(rng), random_cubic(rng)
+            wa = [rng.uniform(0.2, 5) for _ in range(4)]
+            wb = [rng.uniform(0.2, 5) for _ in range(4)]
+            r = self.ok("intersect", {"curves": [{"type": "rational_bezier", "points": A, "weights": wa},
+                                                 {"type": "rational_bezier", "points": B, "weights": wb}]})
+            for h in r["intersections"]:
+                self.assertLess(dist(rational_point(A, wa, h["t"][0]), rational_point(B, wb, h["t"][1])), 1e-9)
+
+    def test_random_self_intersections_are_double_points(self):
+        rng = random.Random(11)
+        loops = 0
+        for _ in range(40):
+            P = [[rng.uniform(-1, 1), rng.uniform(-1, 1)] for _ in range(5)]
+            r = self.ok("intersect", {"curves": [bezier(P)]})
+            for h in r["intersections"]:
+                loops += 1
+                self.assertLess(h["t"][0], h["t"][1])
+                self.assertGreater(h["t"][1] - h["t"][0], 1e-6)
+                self.assertLess(dist(de_casteljau(P, h["t"][0]), de_casteljau(P, h["t"][1])), 1e-9)
+        self.assertGreater(loops, 3)
+
+
+class BadInputTest(CliTest):
+    def test_errors(self):
+        line = bezier([[0, 0], [1, 1]])
+        self.bad("intersect", {"curves": []}, "curves", contains="one curve")
+        self.bad("intersect", {"curves": [line, line, line]}, "curves", contains="got 3")
+        self.bad("intersect", {"curves": line}, "curves", contains="array")
+        self.bad("intersect", {}, "curves", contains="missing")
+        self.bad("intersect", {"curves": [line, bezier([[0, 0, 0], [1, 1, 1]])]}, "curves[1]", contains="2-D")
+        self.bad("intersect", {"curves": [bezier([[0], [1]])]}, "curves[0]", contains="2-D")
+        self.bad("intersect", {"curves": [line, {"type": "bezier", "points": [[0, 0], [1, "x"]]}]}, "curves[1].points[1][1]")
+        self.bad("intersect", {"curves": [line, line], "tolerance": 1}, "tolerance", contains="unknown")
+
+
+if __name__ == "__main__":
+    test_cli.BINARY = os.path.abspath(sys.argv.pop(1))
+    unittest.main(verbosity=1)
