@@ -10,11 +10,20 @@
 #include <cmath>
 #include <cstdint>
 #include <functional>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "common.hpp"
+
+// Our spline comes from the interpolating-curves work (issue 6); without it only GSL runs.
+#if __has_include("casteljau/curves/cubic_spline.hpp")
+#include "casteljau/curves/cubic_spline.hpp"
+#define CASTELJAU_BENCH_HAVE_CUBIC_SPLINE 1
+#else
+#define CASTELJAU_BENCH_HAVE_CUBIC_SPLINE 0
+#endif
 
 #if CASTELJAU_BENCH_HAVE_GSL
 #include <gsl/gsl_errno.h>
@@ -89,6 +98,50 @@ void gsl_build(benchmark::State& state) {
 }
 #endif
 
+#if CASTELJAU_BENCH_HAVE_CUBIC_SPLINE
+using Spline = casteljau::CubicSpline<double, 1>;
+using P1 = casteljau::Point<double, 1>;
+
+/// The data values as the 1-D points the spline takes, made once.
+const std::vector<P1>& y_points() {
+  static const std::vector<P1> P = [] {
+    std::vector<P1> v(W4Data::n);
+    for (std::size_t i = 0; i < W4Data::n; ++i) v[i][0] = data().y[i];
+    return v;
+  }();
+  return P;
+}
+
+/// casteljau::CubicSpline with natural ends; the constructor takes its params and points by
+/// value, so each build copies them (as gsl_spline_init copies x and y).
+void casteljau_build(benchmark::State& state) {
+  const W4Data& d = data();
+  const auto& P = y_points();
+  for (auto _ : state) {
+    const Spline s(d.x, P, Spline::Boundary::natural());
+    benchmark::DoNotOptimize(&s);
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * W4Data::n));
+}
+
+const Spline& casteljau_built() {
+  static const Spline s(data().x, y_points(), Spline::Boundary::natural());
+  return s;
+}
+
+/// One call s(q) per query (binary search for the piece).
+void casteljau_eval_random(const std::vector<double>& q, std::vector<double>& out) {
+  const Spline& s = casteljau_built();
+  for (std::size_t k = 0; k < q.size(); ++k) out[k] = s(q[k])[0];
+}
+
+/// The sorted batch: evaluate_sorted (a linear merge of the queries with the params).
+void casteljau_eval_sorted(const std::vector<double>& q, std::vector<double>& out) {
+  const auto v = casteljau_built().evaluate_sorted(std::span<const double>(q));
+  for (std::size_t k = 0; k < q.size(); ++k) out[k] = v[k][0];
+}
+#endif
+
 /// Runs one evaluation method: eval(queries, out) fills out, then out is compared with GSL.
 void run_eval(benchmark::State& state, bool is_sorted, const std::function<void(const std::vector<double>&, std::vector<double>&)>& eval) {
   const W4Data& d = data();
@@ -106,21 +159,24 @@ void run_eval(benchmark::State& state, bool is_sorted, const std::function<void(
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * q.size()));
 }
 
-void reg_eval(const std::string& library, void (*eval)(const std::vector<double>&, std::vector<double>&)) {
-  for (const bool is_sorted : {false, true}) {
-    benchmark::RegisterBenchmark(("W4/" + library + (is_sorted ? "/eval_sorted" : "/eval_random")).c_str(),
-                                 [is_sorted, eval](benchmark::State& st) { run_eval(st, is_sorted, eval); })
-        ->Unit(benchmark::kMillisecond)
-        ->UseRealTime();
-  }
+void reg_eval(const std::string& name, bool is_sorted, void (*eval)(const std::vector<double>&, std::vector<double>&)) {
+  benchmark::RegisterBenchmark(name.c_str(), [is_sorted, eval](benchmark::State& st) { run_eval(st, is_sorted, eval); })
+      ->Unit(benchmark::kMillisecond)
+      ->UseRealTime();
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
+#if CASTELJAU_BENCH_HAVE_CUBIC_SPLINE
+  benchmark::RegisterBenchmark("W4/casteljau/build", casteljau_build)->Unit(benchmark::kMillisecond)->UseRealTime();
+  reg_eval("W4/casteljau/eval_random", false, casteljau_eval_random);
+  reg_eval("W4/casteljau/eval_sorted", true, casteljau_eval_sorted);
+#endif
 #if CASTELJAU_BENCH_HAVE_GSL
   benchmark::RegisterBenchmark("W4/gsl/build", gsl_build)->Unit(benchmark::kMillisecond)->UseRealTime();
-  reg_eval("gsl", gsl_eval);
+  reg_eval("W4/gsl/eval_random", false, gsl_eval);
+  reg_eval("W4/gsl/eval_sorted", true, gsl_eval);
 #endif
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
