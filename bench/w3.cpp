@@ -24,6 +24,15 @@
 #include "casteljau/curves/bezier.hpp"
 #include "common.hpp"
 
+// The three methods of issue 8 (uniform, subdivision, optimal); before them, flatten() is
+// the subdivision alone.
+#if __has_include("casteljau/algo/flatten_method.hpp")
+#include "casteljau/algo/flatten_method.hpp"
+#define CASTELJAU_BENCH_HAVE_FLATTEN_METHODS 1
+#else
+#define CASTELJAU_BENCH_HAVE_FLATTEN_METHODS 0
+#endif
+
 #if CASTELJAU_BENCH_HAVE_FREETYPE
 #include <ft2build.h>
 #include FT_FREETYPE_H
@@ -338,19 +347,34 @@ void wang_uniform(const std::vector<Cubic>& cs, Polylines& out) {
   }
 }
 
-/// casteljau::flatten (main's recursive subdivision: control points within tol of the
-/// chord segment) on Bezier<double, 2> curves built before timing.
-void casteljau_subdivision(const std::vector<Cubic>& cs, Polylines& out) {
+/// casteljau::flatten on Bezier<double, 2> curves built before timing (per dataset).
+const std::vector<casteljau::Bezier<double, 2>>& casteljau_curves(const std::vector<Cubic>& cs) {
   static std::map<const std::vector<Cubic>*, std::vector<casteljau::Bezier<double, 2>>> built;
   auto& curves = built[&cs];
   if (curves.empty())
     for (const Cubic& c : cs) curves.emplace_back(std::vector<P2>(c.begin(), c.end()));
-  for (const auto& c : curves) {
+  return curves;
+}
+
+#if CASTELJAU_BENCH_HAVE_FLATTEN_METHODS
+template <casteljau::FlattenMethod M>
+void casteljau_flatten(const std::vector<Cubic>& cs, Polylines& out) {
+  for (const auto& c : casteljau_curves(cs)) {
+    const auto v = casteljau::flatten(c, tolerance, M);
+    out.points.insert(out.points.end(), v.begin(), v.end());
+    out.end_curve();
+  }
+}
+#else
+/// flatten(): the recursive subdivision (control points within tol of the chord segment).
+void casteljau_subdivision(const std::vector<Cubic>& cs, Polylines& out) {
+  for (const auto& c : casteljau_curves(cs)) {
     const auto v = casteljau::flatten(c, tolerance);
     out.points.insert(out.points.end(), v.begin(), v.end());
     out.end_curve();
   }
 }
+#endif
 
 // ---- peers -----------------------------------------------------------------------------
 
@@ -457,7 +481,13 @@ int main(int argc, char** argv) {
   for (const std::string& set : sets) {
     reg("near_optimal/greedy", set, near_optimal);
     reg("plain/wang_uniform", set, wang_uniform);
+#if CASTELJAU_BENCH_HAVE_FLATTEN_METHODS
+    reg("casteljau/uniform", set, casteljau_flatten<casteljau::FlattenMethod::uniform>);
+    reg("casteljau/subdivision", set, casteljau_flatten<casteljau::FlattenMethod::subdivision>);
+    reg("casteljau/optimal", set, casteljau_flatten<casteljau::FlattenMethod::optimal>);
+#else
     reg("casteljau/subdivision", set, casteljau_subdivision);
+#endif
 #if CASTELJAU_BENCH_HAVE_CAIRO
     {
       const std::string name = "W3/cairo/copy_path_flat/" + set;
