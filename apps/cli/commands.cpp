@@ -158,12 +158,20 @@ Response to_bezier(const Json& req) {
 
 Response flatten(const Json& req) {
   const io::Fields f(req, "a flatten request");
-  f.allow_only({"curve", "tolerance"}, "a flatten request");
+  f.allow_only({"curve", "tolerance", "method"}, "a flatten request");
   const io::AnyCurve curve = read_curve(f);
   const double tolerance = io::number_from_json(f.required("tolerance"), "tolerance", "tolerance");
+  FlattenMethod method = FlattenMethod::optimal;
+  if (const Json* mj = f.optional("method")) {
+    const std::string m = io::string_from_json(*mj, "method");
+    if (m == "uniform") method = FlattenMethod::uniform;
+    else if (m == "subdivision") method = FlattenMethod::subdivision;
+    else if (m == "optimal") method = FlattenMethod::optimal;
+    else throw InvalidArgument("method", "must be \"uniform\", \"subdivision\" or \"optimal\", got \"" + m.substr(0, 40) + "\"");
+  }
   Response r;
   // The tolerance below the resolution of the coordinates (NumericalError) is a bad request.
-  call_library([&] { r.json = OrderedJson{{"points", points_json(io::flatten(curve, tolerance))}}; }, "tolerance");
+  call_library([&] { r.json = OrderedJson{{"points", points_json(io::flatten(curve, tolerance, method))}}; }, "tolerance");
   return r;
 }
 
@@ -331,11 +339,14 @@ Example:
 constexpr std::string_view flatten_details = R"(A polyline from the curve's start to its end within `tolerance` (model units) of
 the curve; its vertices lie on the curve.
 
-Request:  curve, tolerance (number > 0)
+Request:  curve, tolerance (number > 0), method (optional): "uniform" (equal parameter
+          steps, their count from Wang's bound), "subdivision" (recursive halving with the
+          flatness test), "optimal" (default: near the fewest segments, each step checked
+          exactly)
 Response: points (the polyline's vertices)
 
 Example:
-  echo '{"curve": {"type": "bezier", "points": [[0,0],[1,1],[2,0]]}, "tolerance": 0.2}' | casteljau flatten
+  echo '{"curve": {"type": "bezier", "points": [[0,0],[1,1],[2,0]]}, "tolerance": 0.2, "method": "subdivision"}' | casteljau flatten
   {"points":[[0.0,0.0],[0.5,0.375],[1.0,0.5],[1.5,0.375],[2.0,0.0]]})";
 
 constexpr std::string_view intersect_details = R"(The common points of two plane curves, or the self-intersections of one.

@@ -110,7 +110,7 @@ AnyBox bounds(const AnyCurve& c) {
       c);
 }
 
-PointList flatten(const AnyCurve& c, double tolerance) {
+PointList flatten(const AnyCurve& c, double tolerance, FlattenMethod method) {
   return std::visit(
       [&](const auto& x) {
         // The pieces once: for the size estimate and for the flattening itself.
@@ -126,7 +126,7 @@ PointList flatten(const AnyCurve& c, double tolerance) {
           }
         }
         PointList out{std::decay_t<decltype(x)>::dimension, {}};
-        for (const auto& q : casteljau::flatten(p, tolerance)) out.push_back(q);
+        for (const auto& q : casteljau::flatten(p, tolerance, method)) out.push_back(q);
         return out;
       },
       c);

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <numbers>
 #include <optional>
 #include <span>
 #include <string>
@@ -71,7 +72,8 @@ struct Prepared {
   std::vector<Piece<T>> unit;
   std::vector<std::vector<T>> weights;  // normalised weights per piece (1 for polynomial)
   std::vector<Arc<T>> arcs;
-  std::vector<Box<T, 2>> arc_boxes;  // control box of each arc's portion
+  std::vector<Piece<T>> arc_parts;   // each arc as a curve of its own on [0, 1]
+  std::vector<Box<T, 2>> arc_boxes;  // control box of each arc's part
   T size = 0;  // diagonal of the control box, in unit coordinates
 };
 
@@ -189,8 +191,53 @@ struct Context {
   T flat;   // subdivision stops when both parts are within `flat` of their chords
   T slack;  // box rejection slack: tol plus rounding
   std::size_t nodes = 0;
+  std::size_t node_limit = 0;
+  bool exhausted = false;  // node_limit reached: the seeds are incomplete
   std::vector<std::pair<T, T>> seeds;
 };
+
+/// The tangent cone of a Bézier or rational Bézier part: the directions of its control
+/// polygon's legs P_(i+1) - P_i, which contain every tangent direction (for rational
+/// pieces too: the derivative is a non-negative combination of the P_j - P_i [Floater92]),
+/// as angles [lo, hi] relative to the first non-zero leg `ref`. False when every leg is
+/// zero or the cone is wider than 0.5 rad (not worth testing).
+template <class T>
+struct Cone {
+  Vector<T, 2> ref;
+  T lo, hi;
+};
+template <class C>
+std::optional<Cone<typename C::Scalar>> tangent_cone(const C& c) {
+  using T = typename C::Scalar;
+  const auto& P = c.points();
+  std::optional<Cone<T>> k;
+  for (std::size_t i = 0; i + 1 < P.size(); ++i) {
+    const Vector<T, 2> v = P[i + 1] - P[i];
+    if (v[0] == 0 && v[1] == 0) continue;
+    if (!k) {
+      k = Cone<T>{v, 0, 0};
+      continue;
+    }
+    const T a = std::atan2(cross(k->ref, v), dot(k->ref, v));
+    k->lo = std::min(k->lo, a);
+    k->hi = std::max(k->hi, a);
+    if (k->hi - k->lo > T(0.5)) return std::nullopt;
+  }
+  return k;
+}
+
+/// Whether no tangent line of one part is parallel to a tangent line of the other: then
+/// the parts meet at most once [SederbergMeyers88] and one refined seed finds the point.
+template <class T>
+bool cones_separated(const Cone<T>& a, const Cone<T>& b) {
+  constexpr T pi = std::numbers::pi_v<T>;
+  const T phi = std::atan2(cross(a.ref, b.ref), dot(a.ref, b.ref));
+  // Angles of b's directions minus a's, and their range; no multiple of pi inside it.
+  const T lo = b.lo + phi - a.hi, hi = b.hi + phi - a.lo;
+  const T margin = T(1e-6);
+  const T k = std::ceil((lo - margin) / pi);
+  return k * pi > hi + margin;
+}
 
 /// Largest number of subdivision steps one pair of arcs may take; a pair of transversal
 /// arcs takes a few hundred. Hitting it means the curves run within the tolerance of each
@@ -206,9 +253,10 @@ inline constexpr int max_depth = 50;
 /// closest points), later refined on the curves themselves.
 template <class T, class CA, class CB>
 void subdivide(const CA& a, T alo, T ahi, int da, const CB& b, T blo, T bhi, int db, Context<T>& ctx) {
-  if (++ctx.nodes > max_nodes) {
-    throw NumericalError("intersect: more than " + std::to_string(max_nodes) +
-                         " subdivision steps: the curves run within 1e-10 of their size of each other without coinciding");
+  if (ctx.exhausted) return;
+  if (++ctx.nodes > ctx.node_limit) {
+    ctx.exhausted = true;
+    return;
   }
   const Box<T, 2> ba = a.control_bounds(), bb = b.control_bounds();
   if (!boxes_meet(ba, bb, ctx.slack)) return;
@@ -219,6 +267,18 @@ void subdivide(const CA& a, T alo, T ahi, int da, const CB& b, T blo, T bhi, int
     const auto c = closest_on_segments(P.front(), P.back(), Q.front(), Q.back());
     if (c.distance <= 2 * ctx.flat + ctx.slack) ctx.seeds.emplace_back(alo + c.u * (ahi - alo), blo + c.v * (bhi - blo));
     return;
+  }
+  // Parts whose tangent cones are separated meet at most once: one seed, at the closest
+  // points of their chords, which the refinement takes to the crossing or, where the
+  // parts do not meet, to their closest approach (then discarded as a near miss).
+  if (const auto ka = tangent_cone(a)) {
+    if (const auto kb = tangent_cone(b); kb && cones_separated(*ka, *kb)) {
+      const auto& P = a.points();
+      const auto& Q = b.points();
+      const auto c = closest_on_segments(P.front(), P.back(), Q.front(), Q.back());
+      ctx.seeds.emplace_back(alo + c.u * (ahi - alo), blo + c.v * (bhi - blo));
+      return;
+    }
   }
   if (!fa && (fb || diagonal(ba) >= diagonal(bb))) {
     const auto h = a.split(T(0.5));
@@ -437,7 +497,7 @@ void make_arcs(Prepared<T>& p) {
 /// curves: coordinates (P - origin) 2^-e) and its arcs.
 template <class T>
 Prepared<T> prepare(const Pieces<T, 2>& c, const Point<T, 2>& origin, int e) {
-  Prepared<T> p{&c, {}, {}, {}, {}, 0};
+  Prepared<T> p{&c, {}, {}, {}, {}, {}, 0};
   Box<T, 2> box = Box<T, 2>::empty_box();
   for (const auto& s : c.segments()) {
     std::visit(
@@ -456,8 +516,10 @@ Prepared<T> prepare(const Pieces<T, 2>& c, const Point<T, 2>& origin, int e) {
   }
   p.size = diagonal(box);
   make_arcs(p);
-  for (const auto& r : p.arcs)
-    p.arc_boxes.push_back(std::visit([&](const auto& x) { return x.portion(r.lo, r.hi).control_bounds(); }, p.unit[r.piece]));
+  for (const auto& r : p.arcs) {
+    p.arc_parts.push_back(std::visit([&](const auto& x) { return Piece<T>(x.portion(r.lo, r.hi)); }, p.unit[r.piece]));
+    p.arc_boxes.push_back(std::visit([](const auto& x) { return x.control_bounds(); }, p.arc_parts.back()));
+  }
   return p;
 }
 
@@ -471,25 +533,35 @@ struct Hit {
   bool touch = false;  // two crossings merged into a touch
 };
 
+/// Subdivision steps of the first pass over a pair of arcs, before the overlap test: a
+/// few hundred suffice for transversal arcs; coinciding arcs take many more.
+inline constexpr std::size_t lazy_nodes = 20'000;
+
+/// The common points of two arcs (subdivision, then refinement of each seed) appended to
+/// hits. Returns false when the arcs may overlap: the node limit was reached (the seeds
+/// are then incomplete) or a point has parallel tangents (every point of an overlap does).
 template <class T>
-void intersect_arcs(const Prepared<T>& A, const Arc<T>& ra, const Prepared<T>& B, const Arc<T>& rb, Context<T>& ctx,
-                    std::vector<Hit<T>>& hits) {
+bool intersect_arcs(const Prepared<T>& A, std::size_t ia, const Prepared<T>& B, std::size_t ib, Context<T>& ctx,
+                    std::size_t node_limit, std::vector<Hit<T>>& hits) {
+  const Arc<T>& ra = A.arcs[ia];
+  const Arc<T>& rb = B.arcs[ib];
   const Piece<T>& a = A.unit[ra.piece];
   const Piece<T>& b = B.unit[rb.piece];
   ctx.seeds.clear();
   ctx.nodes = 0;
+  ctx.node_limit = node_limit;
+  ctx.exhausted = false;
   std::visit(
-      [&](const auto& x, const auto& y) {
-        const auto xa = x.portion(ra.lo, ra.hi);
-        const auto yb = y.portion(rb.lo, rb.hi);
-        subdivide(xa, ra.lo, ra.hi, 0, yb, rb.lo, rb.hi, 0, ctx);
-      },
-      a, b);
+      [&](const auto& x, const auto& y) { subdivide(x, ra.lo, ra.hi, 0, y, rb.lo, rb.hi, 0, ctx); }, A.arc_parts[ia],
+      B.arc_parts[ib]);
+  if (ctx.exhausted) return false;
+  bool clean = true;
   std::vector<std::pair<T, T>> done;
   for (const auto& [s0, t0] : ctx.seeds) {
     Refined<T> r = refine(a, ra, b, rb, s0, t0);
     if (!(r.distance <= ctx.tol)) continue;
     if (std::abs(cross(direction(a, r.s), direction(b, r.t))) <= T(1e-6)) {
+      clean = false;
       if (auto p = polish_touch(a, ra, b, rb, r, ctx.tol)) r = *p;
     }
     bool dup = false;
@@ -499,6 +571,7 @@ void intersect_arcs(const Prepared<T>& A, const Arc<T>& ra, const Prepared<T>& B
     hits.push_back({A.curve->global_parameter(ra.piece, r.s), B.curve->global_parameter(rb.piece, r.t), ra.piece, rb.piece, r.s,
                     r.t, r.distance, false});
   }
+  return clean;
 }
 
 /// Common points closer than this fraction of their pieces' parameter intervals (in
@@ -530,7 +603,7 @@ Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
   // 1e-10 of the curves' size: the near-miss threshold of the contract. 64 eps of the unit
   // coordinates (|P| < 1) covers rounding when the curves are points or tiny far apart.
   const T tol = std::max(T(1e-10) * std::max(A.size, PB.size), 64 * eps);
-  Context<T> ctx{tol, tol, tol + 16 * eps, 0, {}};
+  Context<T> ctx{tol, tol, tol + 16 * eps, 0, 0, false, {}};
 
   std::vector<Hit<T>> hits;
   std::vector<CurveOverlap<T>> overlaps;
@@ -539,12 +612,26 @@ Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
       const Arc<T>& ra = A.arcs[i];
       const Arc<T>& rb = PB.arcs[j];
       if (!boxes_meet(A.arc_boxes[i], PB.arc_boxes[j], ctx.slack)) continue;
-      if (auto o = arc_overlap(A, ra, PB, rb, tol)) {
-        overlaps.push_back({{ca.global_parameter(ra.piece, o->s0), ca.global_parameter(ra.piece, o->s1)},
-                            cb->global_parameter(rb.piece, o->t0), cb->global_parameter(rb.piece, o->t1)});
-        continue;
+      // The overlap test (a few root solves) only where the arcs may overlap: a tangent
+      // point found, or the subdivision running long.
+      std::vector<Hit<T>> found;
+      if (!intersect_arcs(A, i, PB, j, ctx, lazy_nodes, found)) {
+        if (auto o = arc_overlap(A, ra, PB, rb, tol)) {
+          overlaps.push_back({{ca.global_parameter(ra.piece, o->s0), ca.global_parameter(ra.piece, o->s1)},
+                              cb->global_parameter(rb.piece, o->t0), cb->global_parameter(rb.piece, o->t1)});
+          continue;
+        }
+        if (ctx.exhausted) {
+          found.clear();
+          intersect_arcs(A, i, PB, j, ctx, max_nodes, found);
+          if (ctx.exhausted) {
+            throw NumericalError("intersect: more than " + std::to_string(max_nodes) +
+                                 " subdivision steps for one pair of arcs: the curves run within 1e-10 of their size of each "
+                                 "other without coinciding");
+          }
+        }
       }
-      intersect_arcs(A, ra, PB, rb, ctx, hits);
+      hits.insert(hits.end(), found.begin(), found.end());
     }
   }
 

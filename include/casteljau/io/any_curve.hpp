@@ -11,6 +11,7 @@
 #include <variant>
 #include <vector>
 
+#include "casteljau/algo/flatten_method.hpp"
 #include "casteljau/curves/path.hpp"
 
 namespace casteljau::io {
@@ -103,10 +104,10 @@ struct AnyBox {
 /// The tight axis-aligned box of the curve over its domain.
 [[nodiscard]] AnyBox bounds(const AnyCurve& c);
 
-/// A polyline within `tolerance` of the curve, from its start to its end (algo/flatten).
-/// Refused with InvalidArgument("tolerance", ...) when it would need more than about
-/// max_flatten_vertices vertices.
-[[nodiscard]] PointList flatten(const AnyCurve& c, double tolerance);
+/// A polyline within `tolerance` of the curve, from its start to its end (algo/flatten),
+/// by the given method. Refused with InvalidArgument("tolerance", ...) when it would need
+/// more than about max_flatten_vertices vertices.
+[[nodiscard]] PointList flatten(const AnyCurve& c, double tolerance, FlattenMethod method = FlattenMethod::subdivision);
 
 /// The curve as a path of bezier / rational_bezier segments with the same parametrisation.
 [[nodiscard]] AnyCurve to_bezier(const AnyCurve& c);

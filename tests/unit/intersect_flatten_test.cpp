@@ -1,0 +1,132 @@
+// Intersections (algo/intersect.hpp) through the library API and the three flattening
+// methods on the shared degenerate fixtures and on NURBS. The closed-form and oracle cases
+// of intersect are in tests/cli/test_intersect.py; these check the C++ entry points, the
+// degenerate fixtures and the curve types the CLI tests do not reach the same way.
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include "casteljau/algo/intersect.hpp"
+#include "degenerate_fixtures.hpp"
+#include "test_support.hpp"
+
+namespace {
+
+using namespace casteljau;
+using P2 = Point<double, 2>;
+using B2 = Bezier<double, 2>;
+
+constexpr FlattenMethod all_methods[] = {FlattenMethod::uniform, FlattenMethod::subdivision, FlattenMethod::optimal};
+
+/// The unit circle as a NURBS of four rational quadratic quarters (weights sqrt(2)/2 at the
+/// corners) [PT97, 7.5].
+Nurbs<double, 2> circle() {
+  const double w = std::sqrt(2.0) / 2;
+  return Nurbs<double, 2>(2, {0, 0, 0, 1, 1, 2, 2, 3, 3, 4, 4, 4},
+                          {{1, 0}, {1, 1}, {0, 1}, {-1, 1}, {-1, 0}, {-1, -1}, {0, -1}, {1, -1}, {1, 0}},
+                          {1, w, 1, w, 1, w, 1, w, 1});
+}
+
+TEST(FlattenMethods, DegenerateFixturesEveryMethod) {
+  for (const auto& f : test::degenerate_fixtures()) {
+    const double tol = 1e-3 * f.scale;
+    for (const FlattenMethod m : all_methods) {
+      const auto poly = flatten(f.curve, tol, m);
+      ASSERT_GE(poly.size(), 2u) << f.name;
+      EXPECT_EQ(poly.front(), f.curve.points().front()) << f.name;
+      EXPECT_EQ(poly.back(), f.curve.points().back()) << f.name;
+      for (int i = 0; i <= 2000; ++i)
+        EXPECT_LE(test::polyline_distance(f.curve(i / 2000.0), poly), tol * (1 + 1e-12)) << f.name << " " << static_cast<int>(m);
+    }
+  }
+}
+
+TEST(FlattenMethods, NurbsCircleEveryMethod) {
+  // Every vertex on the circle (radius 1 to rounding), every chord's midpoint inside it by
+  // at most the tolerance: the exact geometry of a circle's polyline.
+  const auto c = circle();
+  for (const FlattenMethod m : all_methods) {
+    const auto poly = flatten(c, 1e-3, m);
+    for (const auto& v : poly) EXPECT_NEAR(norm(v.to_vector()), 1.0, 1e-15);
+    for (std::size_t i = 0; i + 1 < poly.size(); ++i) {
+      const double r = norm((poly[i].to_vector() + poly[i + 1].to_vector()) / 2.0);
+      EXPECT_GE(r, 1 - 1e-3);
+    }
+  }
+  // The fewest chords of a circle within tolerance h: each spans at most 2 acos(1 - h)
+  // radians, so at least 2 pi / (2 acos(1 - h)) = 70.2 -> 71 at h = 1e-3. Optimal is
+  // within 5% of it (vertices per quarter: the pieces start at the quarter points).
+  const double fewest = std::ceil(std::numbers::pi / std::acos(1 - 1e-3));
+  const auto opt = flatten(c, 1e-3, FlattenMethod::optimal);
+  EXPECT_GE(static_cast<double>(opt.size() - 1), fewest);
+  EXPECT_LE(static_cast<double>(opt.size() - 1), 1.06 * fewest);
+  EXPECT_NEAR(flatten_count_estimate(c, 1e-3), static_cast<double>(opt.size() - 1), 3);
+}
+
+TEST(Intersect, LibraryEntryPointsAcrossTypes) {
+  // Cubic against a polyline: x(t) = 3t, y(t) = (1-t)^3 (-1) + ... crosses y = 0 three times.
+  const B2 c{{0, -1}, {1, 3}, {2, -3}, {3, 1}};
+  const Polyline<double, 2> line{{-1, 0}, {1.5, 0}, {4, 0}};
+  const auto r = intersect(c, line);
+  ASSERT_EQ(r.points.size(), 3u);
+  EXPECT_TRUE(r.overlaps.empty());
+  for (const auto& h : r.points) {
+    EXPECT_NEAR(c(h.ta)[1], 0, 1e-15);
+    EXPECT_NEAR(line(h.tb)[0], c(h.ta)[0], 1e-14);
+    EXPECT_EQ(h.kind, IntersectionKind::crossing);
+  }
+  EXPECT_DOUBLE_EQ(r.points[1].ta, 0.5);  // the middle root by symmetry: x = 1.5, tb = 1
+  EXPECT_DOUBLE_EQ(r.points[1].tb, 1.0);
+  // The circle and the line x = 0.6 meet at (0.6, +-0.8), on pieces 0 and 1 ...; the
+  // line y = 1 touches it at (0, 1) where two pieces join (t = 1): once, tangent.
+  const auto cc = circle();
+  const auto vert = intersect(cc, B2{{0.6, -2}, {0.6, 2}});
+  ASSERT_EQ(vert.points.size(), 2u);
+  for (const auto& h : vert.points) {
+    EXPECT_NEAR(std::abs(h.point[1]), 0.8, 1e-15);
+    EXPECT_NEAR(h.point[0], 0.6, 1e-15);
+  }
+  const auto top = intersect(cc, B2{{-2, 1}, {2, 1}});
+  ASSERT_EQ(top.points.size(), 1u);
+  EXPECT_EQ(top.points[0].kind, IntersectionKind::tangent);
+  EXPECT_NEAR(top.points[0].ta, 1.0, 1e-7);
+  EXPECT_NEAR(top.points[0].tb, 0.5, 1e-7);
+  // The circle with itself: one overlap over its whole domain; no self-intersection (its
+  // closing point is not one).
+  const auto same = intersect(cc, cc);
+  EXPECT_TRUE(same.points.empty());
+  ASSERT_EQ(same.overlaps.size(), 1u);
+  EXPECT_EQ(same.overlaps[0].a, (Interval<double>{0, 4}));
+  const auto self = self_intersect(cc);
+  EXPECT_TRUE(self.points.empty());
+  EXPECT_TRUE(self.overlaps.empty());
+}
+
+TEST(Intersect, DegenerateFixturesGiveCommonPointsOnly) {
+  // Each fixture against itself and a crossing line, and alone: no throw, no NaN, and every
+  // reported point on both curves (1e-9 of the size; the near-miss rule is 1e-10).
+  for (const auto& f : test::degenerate_fixtures()) {
+    const auto& c = f.curve;
+    const auto box = c.control_bounds();
+    const B2 diag{box.lo, box.hi};
+    for (const auto& r : {intersect(c, c), intersect(c, diag), self_intersect(c)}) {
+      for (const auto& h : r.points) {
+        ASSERT_TRUE(std::isfinite(h.ta) && std::isfinite(h.tb)) << f.name;
+        EXPECT_GE(h.ta, 0);
+        EXPECT_LE(h.tb, 1);
+        EXPECT_LE(distance(c(h.ta), h.point), 1e-9 * f.scale) << f.name;
+      }
+      for (const auto& o : r.overlaps) EXPECT_LT(o.a.lo, o.a.hi) << f.name;
+    }
+    // A curve with extent overlaps itself over its whole domain.
+    if (box.lo != box.hi && f.curve.degree() >= 1) {
+      const auto r = intersect(c, c);
+      ASSERT_FALSE(r.overlaps.empty()) << f.name;
+      EXPECT_EQ(r.overlaps.front().a.lo, 0.0) << f.name;
+      EXPECT_EQ(r.overlaps.back().a.hi, 1.0) << f.name;
+      EXPECT_TRUE(r.points.empty()) << f.name;
+    }
+  }
+}
+
+}  // namespace
