@@ -12,6 +12,7 @@
 #include <variant>
 #include <vector>
 
+#include "casteljau/curves/parametrization.hpp"
 #include "casteljau/io/json.hpp"
 #include "text.hpp"
 
@@ -242,6 +243,243 @@ struct Format<Nurbs> {
   }
 };
 
+// ---------------------------------------------------------------------------------------
+// Interpolating types: params given or computed from the points.
+
+/// Vectors of the curve's dimension d (derivative values): an array of d finite numbers.
+std::array<double, max_dimension> read_vector(const Json& j, const std::string& where, int d) {
+  const std::vector<double> v = numbers_from_json(j, where);
+  if (v.size() != static_cast<std::size_t>(d)) {
+    throw InvalidArgument(where, "has " + std::to_string(v.size()) + " coordinates but the points have " + std::to_string(d));
+  }
+  std::array<double, max_dimension> a{};
+  std::copy(v.begin(), v.end(), a.begin());
+  return a;
+}
+
+template <int D>
+Vector<double, D> vector_of(const std::array<double, max_dimension>& a) {
+  Vector<double, D> v;
+  for (int k = 0; k < D; ++k) v[k] = a[static_cast<std::size_t>(k)];
+  return v;
+}
+
+/// The name of `j` among `names` (a string field), or InvalidArgument(where, "must be 'a',
+/// 'b' or 'c', got 'x'").
+std::size_t choice_from_json(const Json& j, std::string_view where, std::initializer_list<std::string_view> names) {
+  const std::string s = string_from_json(j, where);
+  std::size_t i = 0;
+  std::string list;
+  for (const std::string_view n : names) {
+    if (s == n) return i;
+    list += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + io::quoted(n);
+    ++i;
+  }
+  throw InvalidArgument(std::string(where), "must be " + list + ", got " + io::quoted(s));
+}
+
+/// The points and params of a cubic_spline or hermite: `params`, or `parametrization`
+/// (uniform, chord, centripetal) to compute them from the points; one of the two.
+struct RawInterpolation {
+  RawPoints P;
+  std::vector<double> params;
+};
+
+RawInterpolation read_interpolation_data(const Fields& f, std::string_view noun) {
+  RawInterpolation r;
+  const std::optional<int> dim = read_dim(f);
+  r.P = read_points(f.required("points"), 2, noun);
+  check_dim(dim, r.P.dim);
+  const Json* pj = f.optional("params");
+  const Json* rule = f.optional("parametrization");
+  if (pj && rule) throw InvalidArgument("parametrization", "give params or parametrization, not both");
+  if (pj) {
+    r.params = numbers_from_json(*pj, "params");
+  } else if (rule) {
+    const auto kind = static_cast<Parametrization>(choice_from_json(*rule, "parametrization", {"uniform", "chord", "centripetal"}));
+    static_assert(max_dimension == 4, "extend the parametrization dispatch with the new dimensions");
+    switch (r.P.dim) {
+      case 1: r.params = parameters_from_points(r.P.points<1>(), kind); break;
+      case 2: r.params = parameters_from_points(r.P.points<2>(), kind); break;
+      case 3: r.params = parameters_from_points(r.P.points<3>(), kind); break;
+      default: r.params = parameters_from_points(r.P.points<4>(), kind); break;
+    }
+  } else {
+    throw InvalidArgument("params", "required field is missing (or give parametrization)");
+  }
+  return r;
+}
+
+template <>
+struct Format<Hermite> {
+  static constexpr std::string_view name = "hermite";
+  static AnyCurve read(const Fields& f) {
+    f.allow_only({"type", "params", "parametrization", "points", "tangents", "tangent_rule", "tension", "continuity", "bias", "dim"},
+                 "a hermite");
+    const RawInterpolation r = read_interpolation_data(f, "a hermite");
+    const Json* tj = f.optional("tangents");
+    const Json* rj = f.optional("tangent_rule");
+    if (tj && rj) throw InvalidArgument("tangent_rule", "give tangents or tangent_rule, not both");
+    if (!tj && !rj) throw InvalidArgument("tangents", "required field is missing (or give tangent_rule)");
+    enum Rule { finite_difference, catmull_rom, cardinal, kochanek_bartels, monotone, akima, given };
+    const Rule rule = rj ? static_cast<Rule>(choice_from_json(*rj, "tangent_rule", {"finite_difference", "catmull_rom", "cardinal",
+                                                                                     "kochanek_bartels", "monotone", "akima"}))
+                         : given;
+    const std::string rule_name = rj ? string_from_json(*rj, "tangent_rule") : std::string();
+    // The shape parameters belong to their rules.
+    for (const char* field : {"tension", "continuity", "bias"}) {
+      if (!f.has(field)) continue;
+      const bool tension = std::string_view(field) == "tension";
+      const bool ok = rule == kochanek_bartels || (tension && rule == cardinal);
+      if (!ok) {
+        throw InvalidArgument(field, std::string("belongs to tangent_rule ") + (tension ? "'cardinal' or " : "") +
+                                         "'kochanek_bartels'" +
+                                         (rj ? ", not " + io::quoted(rule_name) : std::string(" (this hermite gives tangents)")));
+      }
+    }
+    const auto number_or_zero = [&](const char* field) {
+      const Json* j = f.optional(field);
+      return j ? number_from_json(*j, field) : 0.0;
+    };
+    std::vector<std::array<double, max_dimension>> tangents;
+    if (tj) {
+      if (!tj->is_array()) throw InvalidArgument("tangents", "must be an array of vectors, got " + std::string(kind_of(*tj)));
+      for (std::size_t i = 0; i < tj->size(); ++i) tangents.push_back(read_vector((*tj)[i], index_path("tangents", i), r.P.dim));
+    }
+    return dispatch_dimension(r.P.dim, [&]<int D>() {
+      using V = Vector<double, D>;
+      const std::vector<Point<double, D>> P = r.P.points<D>();
+      std::vector<V> m;
+      switch (rule) {
+        case given:
+          for (const auto& a : tangents) m.push_back(vector_of<D>(a));
+          break;
+        case finite_difference: m = finite_difference_tangents(r.params, P); break;
+        case catmull_rom: m = catmull_rom_tangents(r.params, P); break;
+        case cardinal: m = cardinal_tangents(r.params, P, number_or_zero("tension")); break;
+        case monotone: m = monotone_tangents(r.params, P); break;
+        case akima: m = akima_tangents(r.params, P); break;
+        case kochanek_bartels: {
+          const KochanekBartels<double> kb{number_or_zero("tension"), number_or_zero("continuity"), number_or_zero("bias")};
+          auto s = kochanek_bartels_tangents(r.params, P, kb);
+          return AnyCurve(Hermite<double, D>(r.params, P, std::move(s.incoming), std::move(s.outgoing)));
+        }
+      }
+      return AnyCurve(Hermite<double, D>(r.params, P, std::move(m)));
+    });
+  }
+  /// One tangent per point; a curve with one-sided tangents (Kochanek-Bartels continuity)
+  /// has no such form and is written as a path of two-point hermite segments on the same
+  /// breaks (the same curve and parametrisation).
+  template <int D>
+  static OrderedJson write(const Hermite<double, D>& c) {
+    if (c.one_sided()) {
+      OrderedJson segs = OrderedJson::array();
+      for (std::size_t i = 0; i < c.size(); ++i) {
+        const Hermite<double, D> one({c.params()[i], c.params()[i + 1]}, {c.points()[i], c.points()[i + 1]},
+                                     {c.tangents()[i], c.incoming_tangents()[i + 1]});
+        segs.push_back(write(one));
+      }
+      return OrderedJson{{"type", "path"}, {"segments", std::move(segs)}, {"breaks", c.params()}};
+    }
+    OrderedJson m = OrderedJson::array();
+    for (const auto& v : c.tangents()) m.push_back(to_json(v));
+    return OrderedJson{{"type", name}, {"params", c.params()}, {"points", points_json(c.points())}, {"tangents", std::move(m)}};
+  }
+};
+
+template <>
+struct Format<CubicSpline> {
+  static constexpr std::string_view name = "cubic_spline";
+  static AnyCurve read(const Fields& f) {
+    f.allow_only({"type", "params", "parametrization", "points", "boundary", "start_derivative", "end_derivative", "dim"},
+                 "a cubic_spline");
+    const RawInterpolation r = read_interpolation_data(f, "a cubic_spline");
+    const int d = r.P.dim;
+    enum Kind { natural, clamped, not_a_knot, periodic, general };
+    Kind kind = natural;
+    std::array<int, 2> order{2, 2};
+    std::array<std::array<double, max_dimension>, 2> value{};
+    if (const Json* bj = f.optional("boundary")) {
+      if (bj->is_object()) {
+        kind = general;
+        const Fields b(*bj, "boundary");
+        try {
+          b.allow_only({"start", "end"}, "a general boundary");
+        } catch (const InvalidArgument& err) {
+          throw err.within("boundary");
+        }
+        for (int e = 0; e < 2; ++e) {
+          const char* side = e == 0 ? "start" : "end";
+          const Json* sj = b.optional(side);
+          if (!sj) throw InvalidArgument(std::string("boundary.") + side, "required field is missing");
+          try {
+            const Fields s(*sj, "an end condition");
+            s.allow_only({"order", "value"}, "an end condition");
+            order[e] = integer_from_json(s.required("order"), "order");
+            if (order[e] != 1 && order[e] != 2) {
+              throw InvalidArgument("order", "the derivative order must be 1 or 2, got " + std::to_string(order[e]));
+            }
+            value[e] = read_vector(s.required("value"), "value", d);
+          } catch (const InvalidArgument& err) {
+            throw err.within(side).within("boundary");
+          }
+        }
+      } else if (bj->is_string()) {
+        kind = static_cast<Kind>(choice_from_json(*bj, "boundary", {"natural", "clamped", "not-a-knot", "periodic"}));
+      } else {
+        throw InvalidArgument("boundary", "must be a string or an object {start, end}, got " + std::string(kind_of(*bj)));
+      }
+    }
+    constexpr std::array<std::string_view, 5> label = {"'natural'", "'clamped'", "'not-a-knot'", "'periodic'", "the general form"};
+    for (int e = 0; e < 2; ++e) {
+      const char* field = e == 0 ? "start_derivative" : "end_derivative";
+      const Json* j = f.optional(field);
+      if (kind == clamped) {
+        if (!j) throw InvalidArgument(field, "required field is missing (boundary 'clamped' gives both end derivatives)");
+        order[e] = 1;
+        value[e] = read_vector(*j, field, d);
+      } else if (j) {
+        throw InvalidArgument(field, "belongs to boundary 'clamped', not " + std::string(label[kind]) +
+                                         (f.has("boundary") ? "" : " (the default)"));
+      }
+    }
+    return dispatch_dimension(d, [&]<int D>() {
+      using B = SplineBoundary<double, D>;
+      B bc;
+      switch (kind) {
+        case natural: bc = B::natural(); break;
+        case clamped: bc = B::clamped(vector_of<D>(value[0]), vector_of<D>(value[1])); break;
+        case not_a_knot: bc = B::not_a_knot(); break;
+        case periodic: bc = B::periodic(); break;
+        case general: bc = B::general({order[0], vector_of<D>(value[0])}, {order[1], vector_of<D>(value[1])}); break;
+      }
+      return AnyCurve(CubicSpline<double, D>(r.params, r.P.points<D>(), bc));
+    });
+  }
+  template <int D>
+  static OrderedJson write(const CubicSpline<double, D>& c) {
+    using Kind = typename SplineBoundary<double, D>::Kind;
+    const auto& b = c.boundary();
+    OrderedJson out{{"type", name}, {"params", c.params()}, {"points", points_json(c.points())}};
+    switch (b.kind) {
+      case Kind::natural: out["boundary"] = "natural"; break;
+      case Kind::not_a_knot: out["boundary"] = "not-a-knot"; break;
+      case Kind::periodic: out["boundary"] = "periodic"; break;
+      case Kind::clamped:
+        out["boundary"] = "clamped";
+        out["start_derivative"] = to_json(b.start.value);
+        out["end_derivative"] = to_json(b.end.value);
+        break;
+      case Kind::general:
+        out["boundary"] = OrderedJson{{"start", {{"order", b.start.order}, {"value", to_json(b.start.value)}}},
+                                      {"end", {{"order", b.end.order}, {"value", to_json(b.end.value)}}}};
+        break;
+    }
+    return out;
+  }
+};
+
 /// How deeply paths may nest in curve JSON (a path segment may itself be a path): far
 /// more than any real use, and a bound on the reader's recursion.
 constexpr int max_path_nesting = 32;
@@ -274,7 +512,7 @@ std::vector<std::string_view> registered_names() {
 }
 
 /// Types of the contract that no Format entry serves yet.
-constexpr std::array<std::string_view, 4> later_types = {"lagrange", "cubic_spline", "hermite", "catmull_rom"};
+constexpr std::array<std::string_view, 2> later_types = {"lagrange", "catmull_rom"};
 
 thread_local int path_depth = 0;
 

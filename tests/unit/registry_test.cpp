@@ -72,6 +72,32 @@ struct Samples<Polyline> {
 };
 
 template <>
+struct Samples<Hermite> {
+  template <int D>
+  static std::vector<Hermite<double, D>> make() {
+    const auto v = [](double a) { return pt<D>(a, 0.5 * a).to_vector(); };
+    return {Hermite<double, D>({0, 1}, {pt<D>(0, 0), pt<D>(1, 1)}, {v(1), v(-2)}),
+            Hermite<double, D>({-1.5, 0.1, 1e-3 + 0.1, 7}, {pt<D>(0, 0), pt<D>(1, 1), pt<D>(2, -1), pt<D>(1.0 / 3, 3)},
+                               {v(0.3), v(0), v(-1e5), v(1.0 / 7)})};
+  }
+};
+
+template <>
+struct Samples<CubicSpline> {
+  template <int D>
+  static std::vector<CubicSpline<double, D>> make() {
+    using B = SplineBoundary<double, D>;
+    const std::vector<double> u = {-1, 0.25, 0.3, 2};
+    const std::vector<Point<double, D>> P = {pt<D>(0, 0), pt<D>(1, 1), pt<D>(2, -1), pt<D>(0.1, 3)};
+    const std::vector<Point<double, D>> closed = {pt<D>(0, 0), pt<D>(1, 1), pt<D>(2, -1), pt<D>(0, 0)};
+    const auto v = [](double a) { return pt<D>(a, 1.0 / 3).to_vector(); };
+    return {CubicSpline<double, D>(u, P), CubicSpline<double, D>(u, P, B::clamped(v(1), v(-2))),
+            CubicSpline<double, D>(u, P, B::not_a_knot()), CubicSpline<double, D>(u, closed, B::periodic()),
+            CubicSpline<double, D>(u, P, B::general({1, v(0.5)}, {2, v(-7)})), CubicSpline<double, D>({0, 1}, {P[0], P[1]})};
+  }
+};
+
+template <>
 struct Samples<Path> {
   template <int D>
   static std::vector<Path<double, D>> make() {

@@ -6,6 +6,8 @@
 #include <vector>
 
 #include "casteljau/curves/bspline.hpp"
+#include "casteljau/curves/cubic_spline.hpp"
+#include "casteljau/curves/hermite.hpp"
 #include "casteljau/curves/piecewise.hpp"
 #include "casteljau/curves/polyline.hpp"
 
@@ -16,7 +18,7 @@ namespace casteljau {
 /// interfaces (io::AnyCurve) serve these and Path.
 template <template <class, int> class... C>
 struct CurveTypeList {};
-using SegmentTypes = CurveTypeList<Bezier, RationalBezier, BSpline, Nurbs, Polyline>;
+using SegmentTypes = CurveTypeList<Bezier, RationalBezier, BSpline, Nurbs, Polyline, CubicSpline, Hermite>;
 
 namespace detail {
 template <class T, int D, class List>

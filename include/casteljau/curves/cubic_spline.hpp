@@ -1,0 +1,358 @@
+// Interpolating cubic splines (C^2 through the data) with natural, clamped, not-a-knot,
+// periodic and general end conditions, built in O(n) and stored as Hermite curves; their
+// integrals, antiderivatives and, for d = 1, the solutions of y(x) = c.
+#pragma once
+
+#include <cmath>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "casteljau/basis/roots.hpp"
+#include "casteljau/curves/hermite_tangents.hpp"
+
+namespace casteljau {
+
+/// One end condition of the general form: the first (order 1) or second (order 2)
+/// derivative with respect to the parameter at that end.
+template <class T, int D>
+struct SplineEnd {
+  int order = 2;
+  Vector<T, D> value{};
+  friend bool operator==(const SplineEnd&, const SplineEnd&) = default;
+};
+
+/// The end conditions of a cubic spline. natural: second derivatives 0 at both ends;
+/// clamped: given first derivatives; not_a_knot: the third derivative continuous at the
+/// second and the second-to-last params (the first two and last two pieces are one cubic
+/// each); periodic: first and second derivatives equal at both ends (the first and last
+/// points must be equal); general: `start` and `end` each give a first or second
+/// derivative. natural and clamped are kept apart from general only to write them back as
+/// given; `start` and `end` hold their values.
+template <class T, int D>
+struct SplineBoundary {
+  enum class Kind { natural, clamped, not_a_knot, periodic, general };
+  Kind kind = Kind::natural;
+  SplineEnd<T, D> start{};
+  SplineEnd<T, D> end{};
+
+  static SplineBoundary natural() { return {}; }
+  static SplineBoundary clamped(const Vector<T, D>& a, const Vector<T, D>& b) { return {Kind::clamped, {1, a}, {1, b}}; }
+  static SplineBoundary not_a_knot() { return {Kind::not_a_knot, {}, {}}; }
+  static SplineBoundary periodic() { return {Kind::periodic, {}, {}}; }
+  static SplineBoundary general(const SplineEnd<T, D>& a, const SplineEnd<T, D>& b) { return {Kind::general, a, b}; }
+  friend bool operator==(const SplineBoundary&, const SplineBoundary&) = default;
+};
+
+namespace detail {
+
+/// Solves the tridiagonal system a_i x_(i-1) + b_i x_i + c_i x_(i+1) = r_i (a_0 and
+/// c_(m-1) unused) by Thomas' algorithm (Gaussian elimination without pivoting)
+/// [GolubVanLoan13, 4.3.6], in place on r, O(m). Stable for the spline systems: their
+/// interior rows are strictly diagonally dominant (2 (h_(i-1) + h_i) > h_(i-1) + h_i), and
+/// the pivots stay >= the row's off-diagonal sum. Throws NumericalError for a zero or
+/// non-finite pivot (not reached by the spline systems).
+template <class T, class V>
+void solve_tridiagonal(std::vector<T> a, std::vector<T> b, std::vector<T> c, std::vector<V>& r) {
+  const std::size_t m = b.size();
+  for (std::size_t i = 1; i < m; ++i) {
+    if (!(b[i - 1] != 0) || !std::isfinite(b[i - 1])) throw NumericalError("solve_tridiagonal: zero pivot");
+    const T w = a[i] / b[i - 1];
+    b[i] -= w * c[i - 1];
+    r[i] -= w * r[i - 1];
+  }
+  if (!(b[m - 1] != 0) || !std::isfinite(b[m - 1])) throw NumericalError("solve_tridiagonal: zero pivot");
+  r[m - 1] /= b[m - 1];
+  for (std::size_t i = m - 1; i-- > 0;) r[i] = (r[i] - c[i] * r[i + 1]) / b[i];
+}
+
+/// Solves the cyclic tridiagonal system (row 0 also has a_0 x_(m-1), row m-1 also c_(m-1)
+/// x_0; m >= 3) by the Sherman-Morrison formula on two tridiagonal solves [NR07, 2.7.2]:
+/// the corner entries move into a rank-one update, the modified diagonal (b_0 - g,
+/// b_(m-1) - c_(m-1) a_0 / g with g = -b_0) stays dominant. O(m).
+template <class T, class V>
+void solve_cyclic(const std::vector<T>& a, std::vector<T> b, const std::vector<T>& c, std::vector<V>& r) {
+  const std::size_t m = b.size();
+  const T alpha = c[m - 1], beta = a[0], gamma = -b[0];
+  b[0] -= gamma;
+  b[m - 1] -= alpha * beta / gamma;
+  std::vector<T> z(m, T(0));
+  z[0] = gamma;
+  z[m - 1] = alpha;
+  solve_tridiagonal(a, b, c, r);
+  solve_tridiagonal(a, b, c, z);
+  const V fact = (r[0] + (beta / gamma) * r[m - 1]) / (1 + z[0] + beta * z[m - 1] / gamma);
+  for (std::size_t i = 0; i < m; ++i) r[i] -= z[i] * fact;
+}
+
+}  // namespace detail
+
+/// The slopes s_0..s_n at the params of the C^2 cubic spline through (u_i, P_i) with the
+/// given end conditions: the tridiagonal system of the C^2 conditions [deBoor01, IV (4.4)]
+///   h_i s_(i-1) + 2 (h_(i-1) + h_i) s_i + h_(i-1) s_(i+1) = 3 (h_i d_(i-1) + h_(i-1) d_i)
+/// (h_i = u_(i+1) - u_i, d_i the chord slopes), with the end rows of scipy 1.10's
+/// CubicSpline: first derivative s_0 = v; second derivative 2 s_0 + s_1 = 3 d_0 - v h_0 / 2;
+/// not-a-knot h_1 s_0 + (h_0 + h_1) s_1 = ((h_0 + 2 (h_0 + h_1)) h_1 d_0 + h_0^2 d_1) / (h_0 +
+/// h_1); likewise at the end; periodic: a cyclic system in s_0..s_(n-1) (s_n = s_0).
+/// Small n as scipy: with 2 points not-a-knot and periodic ends become s = d_0 (the line;
+/// periodic: the constant); 3 points with not-a-knot at both ends give the parabola, 3
+/// periodic points the common slope (h_1 d_0 + h_0 d_1) / (h_0 + h_1). Cost O(n).
+/// Throws InvalidArgument naming "points" (fewer than 2), "params[i]" and "points[i]"
+/// as Hermite, "points[n]" when periodic ends differ, "boundary.start.order" /
+/// "boundary.end.order" for an order other than 1 or 2.
+template <class T, int D>
+std::vector<Vector<T, D>> cubic_spline_slopes(const std::vector<T>& u, const std::vector<Point<T, D>>& P,
+                                               const SplineBoundary<T, D>& bc) {
+  using V = Vector<T, D>;
+  using Kind = typename SplineBoundary<T, D>::Kind;
+  if (P.size() < 2) throw InvalidArgument("points", "a cubic spline needs at least 2 points, got " + std::to_string(P.size()));
+  detail::check_rule_data(u, P, 2, "cubic spline");
+  const std::size_t n = P.size() - 1;  // pieces
+  if (bc.kind == Kind::periodic && !(P[n] == P[0])) {
+    throw InvalidArgument("points[" + std::to_string(n) + "]", "must equal points[0] for a periodic boundary");
+  }
+  for (const auto* e : {&bc.start, &bc.end}) {
+    if (e->order != 1 && e->order != 2) {
+      throw InvalidArgument(e == &bc.start ? "boundary.start.order" : "boundary.end.order",
+                            "the derivative order must be 1 or 2, got " + std::to_string(e->order));
+    }
+    require_finite_point(e->value, e == &bc.start ? "boundary.start.value" : "boundary.end.value");
+  }
+  std::vector<T> h(n);
+  for (std::size_t i = 0; i < n; ++i) h[i] = u[i + 1] - u[i];
+  const std::vector<V> d = detail::chord_slopes(u, P);
+
+  // The end conditions, with scipy's small-n replacements.
+  enum class End { first, second, not_a_knot };
+  struct Cond {
+    End type;
+    V value;
+  };
+  const auto cond = [&](const SplineEnd<T, D>& e) -> Cond {
+    switch (bc.kind) {
+      case Kind::not_a_knot: return {End::not_a_knot, V{}};
+      case Kind::periodic: return {End::not_a_knot, V{}};  // not used: periodic is solved apart
+      default: return {e.order == 1 ? End::first : End::second, e.value};
+    }
+  };
+  Cond cs = cond(bc.start), ce = cond(bc.end);
+  if (n == 1) {
+    if (bc.kind == Kind::periodic || bc.kind == Kind::not_a_knot) return {d[0], d[0]};
+  }
+  if (bc.kind == Kind::periodic) {
+    if (n == 2) {
+      const V s = (h[1] * d[0] + h[0] * d[1]) / (h[0] + h[1]);
+      return {s, s, s};
+    }
+    // Unknowns s_0..s_(n-1); row i couples s_(i-1), s_i, s_(i+1) cyclically.
+    std::vector<T> a(n), b(n), c(n);
+    std::vector<V> r(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::size_t p = i == 0 ? n - 1 : i - 1;
+      a[i] = h[i];
+      b[i] = 2 * (h[p] + h[i]);
+      c[i] = h[p];
+      r[i] = T(3) * (h[i] * d[p] + h[p] * d[i]);
+    }
+    detail::solve_cyclic(a, b, c, r);
+    r.push_back(r[0]);
+    return r;
+  }
+  if (n == 2 && cs.type == End::not_a_knot && ce.type == End::not_a_knot) {
+    // The parabola through the three points: p'(u) = d_0 + q (2u - u_0 - u_1) with q =
+    // (d_1 - d_0) / (u_2 - u_0).
+    const V q = (d[1] - d[0]) / (h[0] + h[1]);
+    return {d[0] - h[0] * q, d[0] + h[0] * q, d[0] + (h[0] + 2 * h[1]) * q};
+  }
+  const std::size_t m = n + 1;
+  std::vector<T> a(m, T(0)), b(m, T(0)), c(m, T(0));
+  std::vector<V> r(m);
+  for (std::size_t i = 1; i < n; ++i) {
+    a[i] = h[i];
+    b[i] = 2 * (h[i - 1] + h[i]);
+    c[i] = h[i - 1];
+    r[i] = T(3) * (h[i] * d[i - 1] + h[i - 1] * d[i]);
+  }
+  switch (cs.type) {
+    case End::first: b[0] = 1; c[0] = 0; r[0] = cs.value; break;
+    case End::second: b[0] = 2; c[0] = 1; r[0] = T(3) * d[0] - (h[0] / 2) * cs.value; break;
+    case End::not_a_knot: {
+      const T s = h[0] + h[1];
+      b[0] = h[1];
+      c[0] = s;
+      r[0] = ((h[0] + 2 * s) * h[1] * d[0] + (h[0] * h[0]) * d[1]) / s;
+      break;
+    }
+  }
+  switch (ce.type) {
+    case End::first: b[n] = 1; a[n] = 0; r[n] = ce.value; break;
+    case End::second: b[n] = 2; a[n] = 1; r[n] = T(3) * d[n - 1] + (h[n - 1] / 2) * ce.value; break;
+    case End::not_a_knot: {
+      const T s = h[n - 1] + h[n - 2];
+      b[n] = h[n - 2];
+      a[n] = s;
+      r[n] = ((h[n - 1] * h[n - 1]) * d[n - 2] + (2 * s + h[n - 1]) * h[n - 2] * d[n - 1]) / s;
+      break;
+    }
+  }
+  detail::solve_tridiagonal(a, b, c, r);
+  return r;
+}
+
+/// The interpolating C^2 cubic spline through (u_i, P_i), i = 0..n (n >= 1), with the end
+/// conditions of SplineBoundary (default natural); d = 1 is the classic y(x) spline, d >= 2
+/// a parametric curve (periodic: closed). Stored as the Hermite curve of its values and
+/// slopes (cubic_spline_slopes), which it shares for evaluation (binary search, or a
+/// linear merge for sorted batches), derivatives (orders 1..3, zero above; the right piece
+/// answers at a param, the last one at u_n), extrapolation and the exact Bézier pieces.
+/// reverse() and transform() act on that Hermite form (no new solve): reversing swaps
+/// the end conditions (first derivatives negated), an affine map maps the derivative
+/// values by its linear part; either way the result is the spline of the mapped data.
+template <class T, int D>
+class CubicSpline {
+ public:
+  using Scalar = T;
+  using PointType = Point<T, D>;
+  using VectorType = Vector<T, D>;
+  using Boundary = SplineBoundary<T, D>;
+  static constexpr int dimension = D;
+
+  /// Throws as cubic_spline_slopes.
+  CubicSpline(std::vector<T> params, std::vector<PointType> points, Boundary boundary = Boundary::natural())
+      : bc_(boundary), h_(make(std::move(params), std::move(points), boundary)) {}
+
+  [[nodiscard]] const Boundary& boundary() const { return bc_; }
+  /// The spline as a Hermite curve (its values and slopes at the params).
+  [[nodiscard]] const Hermite<T, D>& hermite() const { return h_; }
+  [[nodiscard]] const std::vector<T>& params() const { return h_.params(); }
+  [[nodiscard]] const std::vector<PointType>& points() const { return h_.points(); }
+  /// The first derivatives at the params.
+  [[nodiscard]] const std::vector<VectorType>& slopes() const { return h_.tangents(); }
+  [[nodiscard]] std::size_t size() const { return h_.size(); }
+  [[nodiscard]] Interval<T> domain() const { return h_.domain(); }
+
+  [[nodiscard]] PointType operator()(T u) const { return h_(u); }
+  [[nodiscard]] VectorType derivative_at(T u, int k = 1) const { return h_.derivative_at(u, k); }
+  [[nodiscard]] std::vector<PointType> evaluate_sorted(std::span<const T> u) const { return h_.evaluate_sorted(u); }
+
+  [[nodiscard]] CubicSpline reverse() const {
+    Boundary b = bc_;
+    std::swap(b.start, b.end);
+    if (b.start.order == 1) b.start.value = -b.start.value;
+    if (b.end.order == 1) b.end.value = -b.end.value;
+    return CubicSpline(b, h_.reverse());
+  }
+
+  [[nodiscard]] CubicSpline transform(const Affine<T, D>& m) const {
+    Boundary b = bc_;
+    b.start.value = m(b.start.value);
+    b.end.value = m(b.end.value);
+    return CubicSpline(b, h_.transform(m));
+  }
+
+  [[nodiscard]] Box<T, D> control_bounds() const { return h_.control_bounds(); }
+
+  friend bool operator==(const CubicSpline&, const CubicSpline&) = default;
+
+ private:
+  CubicSpline(const Boundary& b, Hermite<T, D> h) : bc_(b), h_(std::move(h)) {}
+
+  static Hermite<T, D> make(std::vector<T> u, std::vector<PointType> P, const Boundary& b) {
+    std::vector<VectorType> s = cubic_spline_slopes(u, P, b);
+    return Hermite<T, D>(std::move(u), std::move(P), std::move(s));
+  }
+
+  Boundary bc_;
+  Hermite<T, D> h_;
+};
+
+template <class T, int D>
+Pieces<T, D> pieces(const CubicSpline<T, D>& c) {
+  return pieces(c.hermite());
+}
+
+static_assert(DifferentiableCurve<CubicSpline<double, 2>>);
+
+/// The antiderivative F(u) = integral from u_0 to u of C, as exact quartic Bézier pieces
+/// on the same breaks (a "curve" whose points are the integral vectors): on a piece with
+/// control points Q_0..Q_3 and length h, F's control points are F(u_i) + (h / 4) (Q_0 +
+/// ... + Q_(j-1)), j = 0..4 [Farin02, 5.3 integral of a Bernstein polynomial]. Outside
+/// the domain the end pieces extend (the integral of the extrapolated cubics). Cost O(n).
+template <class T, int D>
+Pieces<T, D> antiderivative(const Hermite<T, D>& c) {
+  std::vector<BezierPiece<T, D>> segs;
+  segs.reserve(c.size());
+  Point<T, D> F{};
+  for (std::size_t i = 0; i < c.size(); ++i) {
+    const T h4 = (c.params()[i + 1] - c.params()[i]) / 4;
+    const Bezier<T, D> piece = c.piece(i);  // bound to a local: points() refers into it
+    const auto& Q = piece.points();
+    std::vector<Point<T, D>> R(5);
+    R[0] = F;
+    for (std::size_t j = 0; j < 4; ++j) R[j + 1] = R[j] + h4 * Q[j].to_vector();
+    F = R[4];
+    segs.emplace_back(Bezier<T, D>(std::move(R)));
+  }
+  return Pieces<T, D>(std::move(segs), c.params());
+}
+template <class T, int D>
+Pieces<T, D> antiderivative(const CubicSpline<T, D>& c) {
+  return antiderivative(c.hermite());
+}
+
+/// The integral of C from a to b (any finite a, b; b < a gives the negative), as
+/// F(b) - F(a) on the antiderivative. Error a few eps of the integral of |C| over the
+/// span of [u_0, a, b]. Throws InvalidArgument("a" / "b", ...) for non-finite bounds.
+template <class T, int D>
+Vector<T, D> integral(const Hermite<T, D>& c, T a, T b) {
+  require_finite(a, "a");
+  require_finite(b, "b");
+  const Pieces<T, D> F = antiderivative(c);
+  return F(b) - F(a);
+}
+template <class T, int D>
+Vector<T, D> integral(const CubicSpline<T, D>& c, T a, T b) {
+  return integral(c.hermite(), a, b);
+}
+
+/// The solutions of y(u) = value over the domain of a 1-D Hermite curve or spline.
+struct Solutions {
+  std::vector<double> t;                   ///< isolated solutions, ascending
+  std::vector<Interval<double>> intervals; ///< pieces on which y is identically the value
+};
+
+/// Every u in the domain with y(u) = value, as scipy's PPoly.solve (with extrapolate off):
+/// on each piece the roots of the Bézier form Q_j - value by basis/roots.hpp
+/// (bernstein_roots: subdivision and a bracketed solve, a few eps of the piece's
+/// parameter), lifted to the params; a root at a shared param is reported once; a piece
+/// on which y equals the value throughout is reported in `intervals` (scipy gives NaN
+/// there). Accuracy and the multiple-root caveats are bernstein_roots'. Throws
+/// InvalidArgument("value", ...) for a non-finite value.
+template <class T>
+Solutions solve(const Hermite<T, 1>& c, T value) {
+  require_finite(value, "value");
+  Solutions s;
+  const auto& u = c.params();
+  for (std::size_t i = 0; i < c.size(); ++i) {
+    const Bezier<T, 1> piece = c.piece(i);  // bound to a local: points() refers into it
+    const auto& Q = piece.points();
+    std::vector<T> coef(4);
+    for (std::size_t j = 0; j < 4; ++j) coef[j] = Q[j][0] - value;
+    if (coef[0] == 0 && coef[1] == 0 && coef[2] == 0 && coef[3] == 0) {
+      s.intervals.push_back({static_cast<double>(u[i]), static_cast<double>(u[i + 1])});
+      continue;
+    }
+    for (const T t : bernstein_roots<T>(coef)) {
+      const T x = t == 0 ? u[i] : t == 1 ? u[i + 1] : u[i] + t * (u[i + 1] - u[i]);
+      if (!s.t.empty() && static_cast<double>(x) <= s.t.back()) continue;  // the shared param, once
+      s.t.push_back(static_cast<double>(x));
+    }
+  }
+  return s;
+}
+template <class T>
+Solutions solve(const CubicSpline<T, 1>& c, T value) {
+  return solve(c.hermite(), value);
+}
+
+}  // namespace casteljau
