@@ -1050,6 +1050,7 @@ const std::vector<FigureFunction>& figure_list() {
   static const std::vector<FigureFunction> list = {
       bernstein_basis, de_casteljau_construction, subdivision, degree_elevation, convex_hull_property,
       affine_invariance, continuity, rational_circle, tight_bounds, hodograph, degree_reduction, pieces_of_a_path,
+      spline_boundaries, monotone_vs_natural,
   };
   return list;
 }

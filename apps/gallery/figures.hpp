@@ -21,6 +21,11 @@ using FigureFunction = Figure (*)();
 /// append it here (docs/gallery.md).
 const std::vector<FigureFunction>& figure_list();
 
+/// Interpolating cubics (figures_interp.cpp): the four cubic spline end conditions on one
+/// data set; monotone (PCHIP) Hermite interpolation against the natural spline.
+Figure spline_boundaries();
+Figure monotone_vs_natural();
+
 /// The page: a self-contained HTML document (inline CSS and SVG, no scripts).
 std::string html_page(const std::vector<Figure>& figures);
 

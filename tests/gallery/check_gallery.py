@@ -19,6 +19,8 @@ REQUIRED_CAPTIONS = [
     "Affine invariance",
     "Continuity of a composite curve",
     "Rational quarter circle",
+    "Cubic spline end conditions",
+    "Monotone interpolation against spline overshoot",
 ]
 
 # A NaN or infinity as C++ streams or to_chars would write it, as a whole word.

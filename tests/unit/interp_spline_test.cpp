@@ -177,7 +177,9 @@ TEST(CubicSpline, MillionPoints) {
   const auto t0 = std::chrono::steady_clock::now();
   const CubicSpline<double, 1> s(x, P, SplineBoundary<double, 1>::clamped(V1(-1.0), V1(3 * x.back() * x.back() - 1)));
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  EXPECT_LT(secs, 5.0);  // O(n): well under a second in Release
+  // O(n): about 0.1 s here in Release on a loaded 2-core machine; a generous bound that
+  // an O(n^2) build (hours) could not meet, even under the sanitizers.
+  EXPECT_LT(secs, 60.0);
   double worst = 0;
   for (std::size_t i = 0; i + 1 < n; i += 997) worst = std::max(worst, std::abs(s.slopes()[i][0] - (3 * x[i] * x[i] - 1)));
   // Slopes from differences of values ~0.5 over steps ~5e-7: eps * 0.5 / 5e-7 ~ 2e-10 per

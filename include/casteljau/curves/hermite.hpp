@@ -13,6 +13,17 @@
 
 namespace casteljau {
 
+namespace detail {
+/// Whether every coordinate of v is finite: the cheap test, so that the message (and its
+/// string) is built only for the element that fails.
+template <class V>
+bool all_coordinates_finite(const V& v) {
+  for (int d = 0; d < V::dimension; ++d)
+    if (!std::isfinite(v[d])) return false;
+  return true;
+}
+}  // namespace detail
+
 /// The piecewise cubic Hermite curve through P_0..P_n at the parameters u_0 < ... < u_n
 /// (n >= 1): on [u_i, u_(i+1)], with h = u_(i+1) - u_i and t = (u - u_i) / h,
 ///   C(u) = h00(t) P_i + h01(t) P_(i+1) + h (h10(t) m_i + h11(t) m'_(i+1))
@@ -195,12 +206,11 @@ class Hermite {
   void validate() const {
     if (u_.size() < 2) throw InvalidArgument("params", "a Hermite curve needs at least 2 params, got " + std::to_string(u_.size()));
     for (std::size_t i = 0; i < u_.size(); ++i) {
+      if (std::isfinite(u_[i]) && (i == 0 || u_[i] > u_[i - 1])) continue;  // no string unless it fails
       const std::string where = "params[" + std::to_string(i) + "]";
       require_finite(u_[i], where);
-      if (i > 0 && !(u_[i] > u_[i - 1])) {
-        throw InvalidArgument(where, "params must be strictly increasing (" + detail::format_number(u_[i]) + " after " +
-                                         detail::format_number(u_[i - 1]) + ")");
-      }
+      throw InvalidArgument(where, "params must be strictly increasing (" + detail::format_number(u_[i]) + " after " +
+                                       detail::format_number(u_[i - 1]) + ")");
     }
     if (!std::isfinite(u_.back() - u_.front())) {
       throw InvalidArgument("params", "the domain [" + detail::format_number(u_.front()) + ", " + detail::format_number(u_.back()) +
@@ -215,9 +225,12 @@ class Hermite {
     count(P_.size(), "points", "point");
     count(out_.size(), "tangents", "tangent");
     count(in_.size(), "incoming_tangents", "tangent");
-    for (std::size_t i = 0; i < P_.size(); ++i) require_finite_point(P_[i], "points[" + std::to_string(i) + "]");
-    for (std::size_t i = 0; i < out_.size(); ++i) require_finite_point(out_[i], "tangents[" + std::to_string(i) + "]");
-    for (std::size_t i = 0; i < in_.size(); ++i) require_finite_point(in_[i], "incoming_tangents[" + std::to_string(i) + "]");
+    for (std::size_t i = 0; i < P_.size(); ++i)
+      if (!detail::all_coordinates_finite(P_[i])) require_finite_point(P_[i], "points[" + std::to_string(i) + "]");
+    for (std::size_t i = 0; i < out_.size(); ++i)
+      if (!detail::all_coordinates_finite(out_[i])) require_finite_point(out_[i], "tangents[" + std::to_string(i) + "]");
+    for (std::size_t i = 0; i < in_.size(); ++i)
+      if (!detail::all_coordinates_finite(in_[i])) require_finite_point(in_[i], "incoming_tangents[" + std::to_string(i) + "]");
     // The Bézier form must exist too: P_i + h m_i / 3 and P_(i+1) - h m'_(i+1) / 3 finite.
     for (std::size_t i = 0; i + 1 < u_.size(); ++i) {
       const T h3 = (u_[i + 1] - u_[i]) / 3;

@@ -27,14 +27,15 @@ void check_rule_data(const std::vector<T>& u, const std::vector<Point<T, D>>& P,
     throw InvalidArgument("points", "needs one point per param: " + std::to_string(u.size()) + " params but " +
                                         std::to_string(P.size()) + " points");
   }
+  // Messages (and their strings) only for the element that fails: O(n) without allocation.
   for (std::size_t i = 0; i < u.size(); ++i) {
+    if (std::isfinite(u[i]) && (i == 0 || u[i] > u[i - 1])) continue;
     const std::string where = "params[" + std::to_string(i) + "]";
     require_finite(u[i], where);
-    if (i > 0 && !(u[i] > u[i - 1])) {
-      throw InvalidArgument(where, "params must be strictly increasing (" + format_number(u[i]) + " after " + format_number(u[i - 1]) + ")");
-    }
+    throw InvalidArgument(where, "params must be strictly increasing (" + format_number(u[i]) + " after " + format_number(u[i - 1]) + ")");
   }
-  for (std::size_t i = 0; i < P.size(); ++i) require_finite_point(P[i], "points[" + std::to_string(i) + "]");
+  for (std::size_t i = 0; i < P.size(); ++i)
+    if (!all_coordinates_finite(P[i])) require_finite_point(P[i], "points[" + std::to_string(i) + "]");
 }
 
 /// The chord slopes d_i = (P_(i+1) - P_i) / (u_(i+1) - u_i), i = 0..n-1.
