@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
-"""Runs the W1, W2 and W5 benchmarks of bench/ and prints the tables of docs/performance.md.
+"""Runs the W1-W6 benchmarks of bench/ and prints the tables of docs/performance.md.
 
 Usage: bench/run.py BUILD_DIR [--repetitions N] [--min-time SECONDS] [--filter REGEX]
 
-Runs BUILD_DIR/bench/casteljau_bench_{w1_native,w1_generic,w2} (those that were built:
+Runs BUILD_DIR/bench/casteljau_bench_{w1_native,w1_generic,w2,w3,w4,w5,w6} (those that were built:
 a missing peer or MPFR drops rows or executables, see bench/CMakeLists.txt) with
 Google Benchmark's JSON output (repetitions of different benchmarks interleaved at random,
 so that the shared machine's drift hits every row alike), keeps the median repetition
@@ -14,6 +14,10 @@ so that the shared machine's drift hits every row alike), keeps the median repet
     difference from own scalar de Casteljau;
   * W2: max abs error against the 256-bit MPFR reference, per method and degree;
   * W5: ns per point, sorted and random parameters, for us and the peers (OCCT, SISL, GSL);
+  * W3 per dataset: us per curve, segments against the near-optimal count, curves over the
+    tolerance and the max deviation, time against the uniform method (Wang's bound);
+  * W4: build ns per knot, random and sorted evaluation ns per point, us against GSL;
+  * W6: us per pair, intersections, pairs missed and extra against the reference, max distance;
   * the goals of the benchmark issue, met or not.
 The raw JSON and the tables in Markdown go to BUILD_DIR/bench-results/.
 """
@@ -32,6 +36,14 @@ W2_GOAL_VS_LIB2GEOM = 2.0  # lib2geom valueAt time / fast path time, at every de
 W2_DEGREES = (5, 10, 20, 40)
 W5_GOAL_VS_FASTEST_PEER = 0.5  # our time / the fastest peer's, sorted and random alike
 W5_POINTS = 1e6
+W3_GOAL_VS_NEAR_OPTIMAL = 1.05  # segments / near-optimal count, casteljau/optimal
+W3_GOAL_VS_UNIFORM = 2.2  # casteljau/optimal time / our uniform method's time (Wang's bound)
+W3_TOLERANCE = 0.1
+W4_GOAL_VS_GSL = 0.5  # our time / GSL's, for build, eval_random and eval_sorted each
+W4_KNOTS = 1e6
+W4_QUERIES = 1e6
+W6_GOAL_VS_LIB2GEOM = 0.5  # our time / the fastest lib2geom method's
+W6_PAIRS = 1e4
 
 
 def run(exe, out_json, repetitions, min_time, bench_filter):
@@ -49,7 +61,9 @@ def run(exe, out_json, repetitions, min_time, bench_filter):
     subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
     print(f"  ({time.time() - t0:.0f} s)", file=sys.stderr, flush=True)
     with open(out_json) as f:
-        return json.load(f)
+        text = f.read()
+    # A filter that matches nothing in this executable leaves the file empty.
+    return json.loads(text) if text.strip() else {"benchmarks": [], "context": None}
 
 
 def medians(doc):
@@ -192,6 +206,110 @@ def w5_table(rows):
     return text, md, goals
 
 
+def w3_tables(rows):
+    """One table per dataset; the goals of issue 8 for casteljau/optimal."""
+    out_text, out_md, goals = "", "", []
+    sets = []
+    for name in rows:
+        ds = name.rsplit("/", 1)[1]
+        if ds not in sets:
+            sets.append(ds)
+    for ds in sets:
+        sub = {n.rsplit("/", 1)[0]: b for n, b in rows.items() if n.endswith("/" + ds)}
+        near = sub.get("W3/near_optimal/greedy")
+        uniform_name = "W3/casteljau/uniform" if "W3/casteljau/uniform" in sub else "W3/plain/wang_uniform"
+        uniform = sub.get(uniform_name)
+        headers = ["method", "ms", "cpu ms", "us/curve", "segments", "x near-opt", "over tol", "max deviation", "time x uniform"]
+        out = []
+        for m, b in sub.items():
+            curves = b.get("curves", 0) or 1
+            ms = to_ms(b)
+            out.append([m, f"{ms:.1f}", f"{to_ms(b, 'cpu_time'):.1f}", f"{ms * 1e3 / curves:.2f}", f"{b.get('segments', 0):.0f}",
+                        f"{b['segments'] / near['segments']:.3f}" if near else "-", f"{b.get('over_tolerance', 0):.0f}",
+                        f"{b.get('max_deviation', 0):.4g}", fmt_ratio(ms / to_ms(uniform)) if uniform else "-"])
+        text, md = table(headers, out)
+        curves = int(next(iter(sub.values())).get("curves", 0))
+        title = f"W3, flattening at tolerance {W3_TOLERANCE}, dataset {ds} ({curves} cubics; uniform = {uniform_name.split('/', 1)[1]})"
+        out_text += f"\n{title}\n{text}"
+        out_md += f"\n### {title}\n\n{md}"
+        ours = sub.get("W3/casteljau/optimal")
+        if not ours:
+            goals.append(f"W3 {ds}: no casteljau/optimal row (the near-optimal method is not in this build): NOT MEASURED")
+            continue
+        if near and uniform:
+            count = ours["segments"] / near["segments"]
+            time_ratio = to_ms(ours) / to_ms(uniform)
+            over = int(ours.get("over_tolerance", 0))
+            ok = count <= W3_GOAL_VS_NEAR_OPTIMAL and time_ratio <= W3_GOAL_VS_UNIFORM and over == 0
+            goals.append(f"W3 {ds}: optimal = {count:.3f}x the near-optimal count (goal <= {W3_GOAL_VS_NEAR_OPTIMAL}), "
+                         f"{time_ratio:.2f}x the time of {uniform_name.split('/', 1)[1]} (goal <= {W3_GOAL_VS_UNIFORM}), "
+                         f"{over} curves over the tolerance (goal 0): " + ("MET" if ok else "NOT MET"))
+    return out_text, out_md, goals
+
+
+def w4_table(rows):
+    libs = []
+    for name in rows:
+        lib = name.split("/")[1]
+        if lib not in libs:
+            libs.append(lib)
+    headers = ["library", "build ms", "build ns/knot", "eval_random ns/pt", "eval_sorted ns/pt",
+               "cpu build / random / sorted (ms)", "max abs diff from GSL (random / sorted)"]
+    out = []
+    for lib in libs:
+        b, r, s = (rows.get(f"W4/{lib}/{v}") for v in ("build", "eval_random", "eval_sorted"))
+        diffs = [x.get("max_abs_diff") for x in (r, s) if x]
+        out.append([lib, f"{to_ms(b):.1f}" if b else "-", f"{to_ms(b) * 1e6 / W4_KNOTS:.1f}" if b else "-",
+                    f"{to_ms(r) * 1e6 / W4_QUERIES:.1f}" if r else "-", f"{to_ms(s) * 1e6 / W4_QUERIES:.1f}" if s else "-",
+                    " / ".join(f"{to_ms(x, 'cpu_time'):.1f}" if x else "-" for x in (b, r, s)),
+                    " / ".join(f"{d:.1e}" if d is not None and d >= 0 else "-" for d in diffs) or "-"])
+    text, md = table(headers, out)
+    goals = []
+    for v in ("build", "eval_random", "eval_sorted"):
+        ours, gsl = rows.get(f"W4/casteljau/{v}"), rows.get(f"W4/gsl/{v}")
+        if not gsl:
+            continue
+        if not ours:
+            goals.append(f"W4 {v}: no casteljau row (the cubic spline is not in this build): NOT MEASURED")
+            continue
+        ratio = to_ms(ours) / to_ms(gsl)
+        goals.append(f"W4 {v}: casteljau / GSL = {ratio:.2f} (goal <= {W4_GOAL_VS_GSL}): " + ("MET" if ratio <= W4_GOAL_VS_GSL else "NOT MET"))
+    return text, md, goals
+
+
+def w6_table(rows):
+    ref = rows.get("W6/reference/long_double_subdivision")
+    geom = [(to_ms(b), n) for n, b in rows.items() if n.startswith("W6/lib2geom/")]
+    fastest_geom = min(geom) if geom else None
+    headers = ["method", "ms", "cpu ms", "us/pair", "intersections", "pairs missed", "pairs extra", "max distance"]
+    if fastest_geom:
+        headers.append(f"time x lib2geom ({fastest_geom[1].split('/')[-1]})")
+    out = []
+    for n, b in rows.items():
+        ms = to_ms(b)
+        r = [n, f"{ms:.1f}", f"{to_ms(b, 'cpu_time'):.1f}", f"{ms * 1e3 / W6_PAIRS:.2f}", f"{b.get('intersections', 0):.0f}",
+             f"{b.get('pairs_missed', 0):.0f}", f"{b.get('pairs_extra', 0):.0f}", f"{b.get('max_distance', 0):.1e}"]
+        if fastest_geom:
+            r.append(fmt_ratio(ms / fastest_geom[0]))
+        out.append(r)
+    text, md = table(headers, out)
+    goals = []
+    ours = rows.get("W6/casteljau/intersect")
+    if not ours:
+        goals.append("W6: no casteljau/intersect row (the intersection is not in this build): NOT MEASURED")
+    else:
+        missed, extra = int(ours.get("pairs_missed", 0)), int(ours.get("pairs_extra", 0))
+        found = f"{ours.get('intersections', 0):.0f} of {ref.get('intersections', 0):.0f}" if ref else f"{ours.get('intersections', 0):.0f}"
+        goal = f"W6: {found} intersections, {missed} pairs missed, {extra} pairs extra (goal 0 and 0)"
+        ok = missed == 0 and extra == 0
+        if fastest_geom:
+            ratio = to_ms(ours) / fastest_geom[0]
+            goal += f", time / lib2geom {fastest_geom[1].split('/')[-1]} = {ratio:.2f} (goal <= {W6_GOAL_VS_LIB2GEOM})"
+            ok = ok and ratio <= W6_GOAL_VS_LIB2GEOM
+        goals.append(goal + (": MET" if ok else ": NOT MET"))
+    return text, md, goals
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("build_dir")
@@ -254,6 +372,41 @@ def main():
         if rows:
             text, md, g = w5_table(rows)
             title = "W5, cubic B-spline in 3-D, 1000 control points, 10^6 parameters"
+            text_all += f"\n{title}\n{text}"
+            md_all += f"\n### {title}\n\n{md}"
+            goals += g
+
+    exe = os.path.join(bench_dir, "casteljau_bench_w3")
+    if os.path.exists(exe):
+        doc = run(exe, os.path.join(res_dir, "casteljau_bench_w3.json"), args.repetitions, 0.2, args.filter)
+        context = context or doc["context"]
+        rows = medians(doc)
+        if rows:
+            text, md, g = w3_tables(rows)
+            text_all += text
+            md_all += md
+            goals += g
+
+    exe = os.path.join(bench_dir, "casteljau_bench_w4")
+    if os.path.exists(exe):
+        doc = run(exe, os.path.join(res_dir, "casteljau_bench_w4.json"), args.repetitions, 0.2, args.filter)
+        context = context or doc["context"]
+        rows = medians(doc)
+        if rows:
+            text, md, g = w4_table(rows)
+            title = "W4, natural cubic spline through 10^6 points, 10^6 queries"
+            text_all += f"\n{title}\n{text}"
+            md_all += f"\n### {title}\n\n{md}"
+            goals += g
+
+    exe = os.path.join(bench_dir, "casteljau_bench_w6")
+    if os.path.exists(exe):
+        doc = run(exe, os.path.join(res_dir, "casteljau_bench_w6.json"), args.repetitions, 0.2, args.filter)
+        context = context or doc["context"]
+        rows = medians(doc)
+        if rows:
+            text, md, g = w6_table(rows)
+            title = "W6, 10,000 random cubic pairs"
             text_all += f"\n{title}\n{text}"
             md_all += f"\n### {title}\n\n{md}"
             goals += g

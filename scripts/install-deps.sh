@@ -2,7 +2,7 @@
 # Installs the Debian packages casteljau needs; idempotent, runs `apt-get update` only
 # when something is missing. Usage: scripts/install-deps.sh [build|bench|fuzz]...
 #   build (default): compiler, CMake, libraries, test tools (enough for `make demo` and `make test`)
-#   bench: also the peer libraries benchmarked in bench/ (lib2geom, OpenCASCADE, GSL, SISL)
+#   bench: also the peer libraries benchmarked in bench/ (lib2geom, OpenCASCADE, GSL, SISL, cairo) and the W3 font
 #   fuzz: also clang and its libFuzzer runtime (`make fuzz`)
 set -euo pipefail
 
@@ -15,7 +15,8 @@ build_pkgs=(
   libocct-modeling-data-dev libocct-foundation-dev
 )
 fuzz_pkgs=(clang libclang-rt-dev)
-bench_pkgs=(lib2geom-dev libocct-modeling-data-dev libocct-foundation-dev libboost-dev libdouble-conversion-dev libgsl-dev libsisl-dev)
+bench_pkgs=(lib2geom-dev libocct-modeling-data-dev libocct-foundation-dev libocct-modeling-algorithms-dev libboost-dev libdouble-conversion-dev libgsl-dev libsisl-dev
+            libcairo2-dev libfreetype-dev fonts-dejavu-core)
 
 want=("${build_pkgs[@]}")
 for arg in "$@"; do
