@@ -80,6 +80,10 @@ struct Samples<Lagrange> {
             Lagrange<double, D>({0, 1, 2, 3, 4}, {pt<D>(0, 0), pt<D>(0, 1), pt<D>(0, 2), pt<D>(0, 3), pt<D>(0, 4)}),
             Lagrange<double, D>(interpolation_nodes<double>(Nodes::chebyshev1, 4, -1, 1),
                                 {pt<D>(1, 0), pt<D>(1.0 / 3, 2), pt<D>(0, 0), pt<D>(-1, 1e-3)})};
+  }
+};
+
+template <>
 struct Samples<Hermite> {
   template <int D>
   static std::vector<Hermite<double, D>> make() {
@@ -97,6 +101,10 @@ struct Samples<CatmullRom> {
     const std::vector<Point<double, D>> P{pt<D>(0, 0), pt<D>(1, 1), pt<D>(-0.3, 2.5), pt<D>(2, 0.1), pt<D>(3, 3)};
     return {CatmullRom<double, D>(P), CatmullRom<double, D>(P, 0.0, true), CatmullRom<double, D>(P, 1.0 / 3, false),
             CatmullRom<double, D>({P[0], P[0], P[0], P[0]}, 0.0)};
+  }
+};
+
+template <>
 struct Samples<CubicSpline> {
   template <int D>
   static std::vector<CubicSpline<double, D>> make() {
