@@ -155,13 +155,6 @@ P2 nearest(const P2& p, std::span<const P2> pts) {
   return *std::min_element(pts.begin(), pts.end(), [&](const P2& a, const P2& b) { return distance(p, a) < distance(p, b); });
 }
 
-double distance_to_segment(const P2& p, const P2& a, const P2& b) {
-  const V2 ab = b - a, ap = p - a;
-  const double l2 = squared_norm(ab);
-  const double s = l2 > 0 ? std::clamp(dot(ap, ab) / l2, 0.0, 1.0) : 0.0;
-  return norm(ap - s * ab);
-}
-
 double distance_to_polyline(const P2& p, std::span<const P2> poly) {
   double d = distance(p, poly.front());
   for (std::size_t i = 1; i < poly.size(); ++i) d = std::min(d, distance_to_segment(p, poly[i - 1], poly[i]));

@@ -56,14 +56,13 @@ Box2 grown(Box2 b, double m) {
 void dot(SvgDocument& doc, const P2& p, const std::string& colour, double r = 4.5) {
   doc.circle(p, r, Paint{.stroke = "white", .stroke_width = 1.2, .fill = colour});
 }
-double segment_distance(const P2& p, const P2& a, const P2& b) { return detail::distance_to_segment(p, a, b); }
 template <class C>
 double deviation(const C& c, const std::vector<P2>& poly) {
   double worst = 0;
   for (int k = 0; k <= 4000; ++k) {
     const P2 q = c(k / 4000.0);
     double d = 1e300;
-    for (std::size_t i = 0; i + 1 < poly.size(); ++i) d = std::min(d, segment_distance(q, poly[i], poly[i + 1]));
+    for (std::size_t i = 0; i + 1 < poly.size(); ++i) d = std::min(d, distance_to_segment(q, poly[i], poly[i + 1]));
     worst = std::max(worst, d);
   }
   return worst;

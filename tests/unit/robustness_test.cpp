@@ -24,7 +24,9 @@
 #include "test_support.hpp"
 
 // Allocation counting for the no-allocation claim of rational evaluation: the global
-// operator new is replaced for this executable; it counts only while `counting` is set.
+// operator new is replaced for this executable (every non-aligned form, so that memory
+// from any of them, e.g. std::stable_sort's nothrow buffer, meets the matching delete:
+// ASan checks the pairing); it counts only while `counting` is set.
 // g++ 12 inlines the replacement pair and then misreports free() of operator new's
 // memory as a mismatch; it is malloc/free on both sides.
 #if defined(__GNUC__) && !defined(__clang__)
@@ -39,8 +41,18 @@ void* operator new(std::size_t n) {
   if (void* p = std::malloc(n == 0 ? 1 : n)) return p;
   throw std::bad_alloc();
 }
+void* operator new(std::size_t n, const std::nothrow_t&) noexcept {
+  if (counting.load(std::memory_order_relaxed)) allocations.fetch_add(1, std::memory_order_relaxed);
+  return std::malloc(n == 0 ? 1 : n);
+}
+void* operator new[](std::size_t n) { return operator new(n); }
+void* operator new[](std::size_t n, const std::nothrow_t& t) noexcept { return operator new(n, t); }
 void operator delete(void* p) noexcept { std::free(p); }
 void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete(void* p, const std::nothrow_t&) noexcept { std::free(p); }
+void operator delete[](void* p) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+void operator delete[](void* p, const std::nothrow_t&) noexcept { std::free(p); }
 
 namespace casteljau {
 namespace {

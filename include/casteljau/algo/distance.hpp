@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "casteljau/algo/project.hpp"
+#include "casteljau/core/segment.hpp"
 #include "casteljau/curves/concepts.hpp"
 
 namespace casteljau {
@@ -45,39 +46,6 @@ struct DistancePart {
 };
 
 template <class T, int D>
-T point_segment_distance(const Point<T, D>& p, const Point<T, D>& a, const Point<T, D>& b) {
-  const Vector<T, D> ab = b - a, ap = p - a;
-  const T l2 = dot(ab, ab);
-  const T s = l2 > 0 ? std::clamp(dot(ap, ab) / l2, T(0), T(1)) : T(0);
-  return norm(ap - s * ab);
-}
-
-/// Closest points of segments [p1, q1] and [p2, q2]: the parameters (s, t) in [0, 1]^2
-/// minimising |p1 + s d1 - p2 - t d2|, by clamping the unconstrained minimiser one
-/// parameter at a time [Ericson05, 5.1.9].
-template <class T, int D>
-std::array<T, 2> closest_on_segments(const Point<T, D>& p1, const Point<T, D>& q1, const Point<T, D>& p2, const Point<T, D>& q2) {
-  const Vector<T, D> d1 = q1 - p1, d2 = q2 - p2, r = p1 - p2;
-  const T a = dot(d1, d1), e = dot(d2, d2), f = dot(d2, r);
-  const T tiny = std::numeric_limits<T>::min();
-  if (a <= tiny && e <= tiny) return {T(0), T(0)};
-  if (a <= tiny) return {T(0), std::clamp(f / e, T(0), T(1))};
-  const T c = dot(d1, r);
-  if (e <= tiny) return {std::clamp(-c / a, T(0), T(1)), T(0)};
-  const T b = dot(d1, d2), denom = a * e - b * b;
-  T s = denom > 0 ? std::clamp((b * f - c * e) / denom, T(0), T(1)) : T(0);
-  T t = (b * s + f) / e;
-  if (t < 0) {
-    t = 0;
-    s = std::clamp(-c / a, T(0), T(1));
-  } else if (t > 1) {
-    t = 1;
-    s = std::clamp((b - c) / a, T(0), T(1));
-  }
-  return {s, t};
-}
-
-template <class T, int D>
 T box_distance(const Box<T, D>& x, const Box<T, D>& y) {
   Vector<T, D> v;
   for (int k = 0; k < D; ++k) v[k] = std::max({T(0), x.lo[k] - y.hi[k], y.lo[k] - x.hi[k]});
@@ -93,7 +61,7 @@ DistancePart<T, D> make_part(BezierPiece<T, D> piece, std::size_t index, T t0, T
         for (const auto& q : P) part.box.add(scaled(q, -e));
         part.p0 = scaled(P.front(), -e);
         part.p1 = scaled(P.back(), -e);
-        for (const auto& q : P) part.flat = std::max(part.flat, point_segment_distance(scaled(q, -e), part.p0, part.p1));
+        for (const auto& q : P) part.flat = std::max(part.flat, distance_to_segment(scaled(q, -e), part.p0, part.p1));
       },
       part.piece);
   return part;
@@ -208,7 +176,7 @@ CurveDistance<typename CA::Scalar, CA::dimension> distance(const CA& a, const CB
     const Part& x = arena[top.x];
     const Part& y = arena[top.y];
     // Upper bound from the chords' closest parameters, evaluated on the curves.
-    const auto st = detail::closest_on_segments(x.p0, x.p1, y.p0, y.p1);
+    const auto st = closest_on_segments(x.p0, x.p1, y.p0, y.p1);
     offer(pa.global_parameter(x.index, x.t0 + st[0] * (x.t1 - x.t0)), pb.global_parameter(y.index, y.t0 + st[1] * (y.t1 - y.t0)));
     const T sx = norm(x.box.hi - x.box.lo), sy = norm(y.box.hi - y.box.lo);
     const bool can_x = x.t1 - x.t0 > T(1e-15), can_y = y.t1 - y.t0 > T(1e-15);

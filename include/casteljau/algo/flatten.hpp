@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "casteljau/core/segment.hpp"
 #include "casteljau/algo/flatten_method.hpp"
 #include "casteljau/basis/roots.hpp"
 #include "casteljau/curves/path.hpp"
@@ -17,22 +18,6 @@
 namespace casteljau {
 
 namespace detail {
-
-/// Distance from p to the segment [a, b], without overflow or underflow (norm() scales
-/// by the largest coordinate) and with NaN propagated, never turned into a pass.
-template <class T, int D>
-T distance_to_segment(const Point<T, D>& p, const Point<T, D>& a, const Point<T, D>& b) {
-  const Vector<T, D> ab = b - a, ap = p - a;
-  const T len = norm(ab);
-  if (len == 0) return norm(ap);
-  // Projection parameter s = (ap . ab) / |ab|^2, computed on unit-length ab so that
-  // neither the dot product nor the squared length over- or underflows.
-  const Vector<T, D> u = ab / len;
-  const T s = dot(ap, u) / len;
-  if (!(s > 0)) return s == s ? norm(ap) : s;  // NaN stays NaN
-  if (s >= 1) return norm(p - b);
-  return norm(ap - (s * len) * u);
-}
 
 /// Flat when every control point is within tol of the chord segment: the curve lies in
 /// the convex hull of its control points, and every point of that hull is within tol of

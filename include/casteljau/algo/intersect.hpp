@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "casteljau/algo/flatten.hpp"
+#include "casteljau/core/segment.hpp"
 #include "casteljau/basis/roots.hpp"
 #include "casteljau/curves/path.hpp"
 
@@ -149,39 +150,16 @@ T diagonal(const Box<T, 2>& b) {
   return norm(b.hi - b.lo);
 }
 
-/// Closest points of the segments [p0, p1] and [q0, q1]: their parameters (u, v) in
-/// [0, 1] and distance [Ericson05, 5.1.9].
+/// The closest points of the chords [p0, p1] and [q0, q1] (core/segment.hpp): their
+/// parameters (u, v) in [0, 1] and distance.
 template <class T>
 struct SegmentClosest {
   T u, v, distance;
 };
 template <class T>
-SegmentClosest<T> closest_on_segments(const Point<T, 2>& p0, const Point<T, 2>& p1, const Point<T, 2>& q0, const Point<T, 2>& q1) {
-  const Vector<T, 2> d1 = p1 - p0, d2 = q1 - q0, r = p0 - q0;
-  const T a = dot(d1, d1), e = dot(d2, d2), f = dot(d2, r);
-  T u = 0, v = 0;
-  if (a == 0 && e == 0) {
-    // both points
-  } else if (a == 0) {
-    v = std::clamp(f / e, T(0), T(1));
-  } else {
-    const T c = dot(d1, r);
-    if (e == 0) {
-      u = std::clamp(-c / a, T(0), T(1));
-    } else {
-      const T b = dot(d1, d2), den = a * e - b * b;
-      u = den > 0 ? std::clamp((b * f - c * e) / den, T(0), T(1)) : T(0);
-      v = (b * u + f) / e;
-      if (v < 0) {
-        v = 0;
-        u = std::clamp(-c / a, T(0), T(1));
-      } else if (v > 1) {
-        v = 1;
-        u = std::clamp((b - c) / a, T(0), T(1));
-      }
-    }
-  }
-  return {u, v, norm((p0 + u * d1) - (q0 + v * d2))};
+SegmentClosest<T> chord_closest(const Point<T, 2>& p0, const Point<T, 2>& p1, const Point<T, 2>& q0, const Point<T, 2>& q1) {
+  const auto [u, v] = casteljau::closest_on_segments(p0, p1, q0, q1);
+  return {u, v, norm((p0 + u * (p1 - p0)) - (q0 + v * (q1 - q0)))};
 }
 
 /// Tolerances of one intersection problem, in unit coordinates.
@@ -264,7 +242,7 @@ void subdivide(const CA& a, T alo, T ahi, int da, const CB& b, T blo, T bhi, int
   if (fa && fb) {
     const auto& P = a.points();
     const auto& Q = b.points();
-    const auto c = closest_on_segments(P.front(), P.back(), Q.front(), Q.back());
+    const auto c = chord_closest(P.front(), P.back(), Q.front(), Q.back());
     if (c.distance <= 2 * ctx.flat + ctx.slack) ctx.seeds.emplace_back(alo + c.u * (ahi - alo), blo + c.v * (bhi - blo));
     return;
   }
@@ -275,7 +253,7 @@ void subdivide(const CA& a, T alo, T ahi, int da, const CB& b, T blo, T bhi, int
     if (const auto kb = tangent_cone(b); kb && cones_separated(*ka, *kb)) {
       const auto& P = a.points();
       const auto& Q = b.points();
-      const auto c = closest_on_segments(P.front(), P.back(), Q.front(), Q.back());
+      const auto c = chord_closest(P.front(), P.back(), Q.front(), Q.back());
       ctx.seeds.emplace_back(alo + c.u * (ahi - alo), blo + c.v * (bhi - blo));
       return;
     }

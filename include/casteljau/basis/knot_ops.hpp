@@ -68,7 +68,9 @@ template <class T, class V>
 KnotForm<T, V> insert_knot_once(const KnotForm<T, V>& f, T u) {
   const std::span<const T> U(f.U);
   const std::size_t p = detail::sz(f.p);
-  const std::size_t k = detail::last_knot_at_or_below(U, u);
+  // At the domain's right end u = U_(n+1) the span is the last one, n (u ends its run
+  // there, and the formula needs P_(k-p) .. P_k).
+  const std::size_t k = std::min(detail::last_knot_at_or_below(U, u), f.P.size() - 1);
   KnotForm<T, V> g{f.p, {}, {}};
   g.U.reserve(f.U.size() + 1);
   g.U.insert(g.U.end(), f.U.begin(), f.U.begin() + static_cast<std::ptrdiff_t>(k) + 1);
