@@ -12,6 +12,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -48,12 +49,12 @@ class SpanTable {
 
   /// The table of p's pieces, or nothing when a piece is rational, the degrees differ or
   /// exceed max_degree (the caller then evaluates point by point).
-  [[nodiscard]] static std::optional<SpanTable> of(const Pieces<T, D>& p) {
-    const auto& segs = p.segments();
-    const auto* first = std::get_if<Bezier<T, D>>(&segs.front());
+  [[nodiscard]] static std::optional<SpanTable> of(Pieces<T, D> p) {
+    const auto* first = std::get_if<Bezier<T, D>>(&p.segments().front());
     if (first == nullptr || first->degree() > max_degree) return std::nullopt;
     const int degree = first->degree();
-    SpanTable table(p, degree);
+    SpanTable table(std::move(p), degree);
+    const auto& segs = table.pieces_.segments();
     const std::size_t n1 = static_cast<std::size_t>(degree) + 1;
     table.coef_.resize(segs.size() * n1 * std::size_t(D));
     for (std::size_t i = 0; i < segs.size(); ++i) {
@@ -74,9 +75,10 @@ class SpanTable {
   /// The index of the piece that answers at u (u inside the domain), starting from the
   /// guess `hint` (any index; the previous answer for sorted parameters).
   [[nodiscard]] std::size_t piece_at(T u, std::size_t hint) const {
+    const std::vector<T>& breaks = pieces_.breaks();
     const std::size_t k = pieces_.size();
-    if (hint < k && breaks_[hint] <= u && (u < breaks_[hint + 1] || hint + 1 == k)) return hint;
-    const T x = (u - breaks_.front()) * bucket_scale_;
+    if (hint < k && breaks[hint] <= u && (u < breaks[hint + 1] || hint + 1 == k)) return hint;
+    const T x = (u - breaks.front()) * bucket_scale_;
     std::size_t j = x > 0 ? static_cast<std::size_t>(x) : 0;
     if (j >= buckets_.size() - 1) j = buckets_.size() - 2;
     std::size_t lo = buckets_[j], hi = buckets_[j + 1];
@@ -84,17 +86,17 @@ class SpanTable {
     if (lo > 0) --lo;
     hi = std::min(hi + 1, k - 1);
     if (hi - lo > 8) {
-      // breaks_[lo + 1 .. hi] holds the first break above u, or u is in the last piece.
-      const auto it = std::upper_bound(breaks_.begin() + static_cast<std::ptrdiff_t>(lo) + 1,
-                                       breaks_.begin() + static_cast<std::ptrdiff_t>(hi) + 1, u);
-      const std::size_t i = static_cast<std::size_t>(it - breaks_.begin()) - 1;
-      if (breaks_[i] > u || (i + 1 < k && breaks_[i + 1] <= u)) return pieces_.segment_index(u);
+      // breaks[lo + 1 .. hi] holds the first break above u, or u is in the last piece.
+      const auto it = std::upper_bound(breaks.begin() + static_cast<std::ptrdiff_t>(lo) + 1,
+                                       breaks.begin() + static_cast<std::ptrdiff_t>(hi) + 1, u);
+      const std::size_t i = static_cast<std::size_t>(it - breaks.begin()) - 1;
+      if (breaks[i] > u || (i + 1 < k && breaks[i + 1] <= u)) return pieces_.segment_index(u);
       return i;
     }
     std::size_t i = lo;
-    while (i < hi && breaks_[i + 1] <= u) ++i;
+    while (i < hi && breaks[i + 1] <= u) ++i;
     // Breaks a few ulps apart can defeat the widening: check, and search all breaks then.
-    if (breaks_[i] > u || (i + 1 < k && breaks_[i + 1] <= u)) return pieces_.segment_index(u);
+    if (breaks[i] > u || (i + 1 < k && breaks[i + 1] <= u)) return pieces_.segment_index(u);
     return i;
   }
 
@@ -115,21 +117,24 @@ class SpanTable {
   }
 
  private:
-  SpanTable(const Pieces<T, D>& p, int degree) : degree_(degree), pieces_(p), breaks_(p.breaks()) {
-    const std::size_t k = p.size();
+  SpanTable(Pieces<T, D> p, int degree) : degree_(degree), pieces_(std::move(p)) {
+    const std::vector<T>& breaks = pieces_.breaks();
+    const std::size_t k = pieces_.size();
+    // C(p, j), for the degrees without an unrolled case.
+    for (int j = 0; j <= degree_; ++j) binomial_.push_back(binomial<T>(degree_, j));
     inv_length_.resize(k);
-    for (std::size_t i = 0; i < k; ++i) inv_length_[i] = T(1) / (breaks_[i + 1] - breaks_[i]);
+    for (std::size_t i = 0; i < k; ++i) inv_length_[i] = T(1) / (breaks[i + 1] - breaks[i]);
     // Bucket j covers [lo + j w, lo + (j + 1) w); buckets_[j] is the piece at its left
     // edge, buckets_[nb] = k - 1 closes the grid.
     const std::size_t nb = std::clamp<std::size_t>(k, 1, std::size_t{1} << 20);
-    const T lo = breaks_.front(), len = breaks_.back() - lo;
+    const T lo = breaks.front(), len = breaks.back() - lo;
     bucket_scale_ = T(nb) / len;
     if (!std::isfinite(bucket_scale_)) bucket_scale_ = 0;  // a domain too short or too long for the grid: one bucket
     buckets_.resize(nb + 1);
     std::size_t i = 0;
     for (std::size_t j = 0; j < nb; ++j) {
       const T edge = lo + len * (T(j) / T(nb));
-      while (i + 1 < k && breaks_[i + 1] <= edge) ++i;
+      while (i + 1 < k && breaks[i + 1] <= edge) ++i;
       buckets_[j] = static_cast<std::uint32_t>(i);
     }
     buckets_[nb] = static_cast<std::uint32_t>(k - 1);
@@ -172,14 +177,9 @@ class SpanTable {
 
   template <int P>
   void run(std::span<const T> ts, std::span<Point<T, D>> out) const {
-    if constexpr (P == 0) {
-      if (binomial_.empty()) {
-        binomial_.resize(static_cast<std::size_t>(degree_) + 1);
-        for (int i = 0; i <= degree_; ++i) binomial_[static_cast<std::size_t>(i)] = binomial<T>(degree_, i);
-      }
-    }
+    const std::vector<T>& breaks = pieces_.breaks();
     const std::size_t n1 = static_cast<std::size_t>(P > 0 ? P : degree_) + 1;
-    const T lo = breaks_.front(), hi = breaks_.back();
+    const T lo = breaks.front(), hi = breaks.back();
     std::array<T, max_degree + 1> b;
     std::size_t i = 0;
     for (std::size_t j = 0; j < ts.size(); ++j) {
@@ -192,7 +192,7 @@ class SpanTable {
         continue;
       }
       i = piece_at(u, i);
-      T s = (u - breaks_[i]) * inv_length_[i];
+      T s = (u - breaks[i]) * inv_length_[i];
       s = std::clamp(s, T(0), T(1));
       bernstein_values<P>(s, b.data());
       const T* c = coef_.data() + i * n1 * std::size_t(D);
@@ -208,12 +208,11 @@ class SpanTable {
 
   int degree_;
   Pieces<T, D> pieces_;
-  std::vector<T> breaks_;
   std::vector<T> inv_length_;
   std::vector<T> coef_;
   std::vector<std::uint32_t> buckets_;
   T bucket_scale_ = 0;
-  mutable std::vector<T> binomial_;
+  std::vector<T> binomial_;
 };
 
 /// Any piecewise polynomial curve at many parameters through its SpanTable (built once
@@ -230,8 +229,7 @@ void evaluate_pieces(const C& c, std::span<const typename C::Scalar> ts,
                                      std::to_string(out.size()) + " points");
   }
   if (ts.empty()) return;
-  const Pieces<T, D> p = pieces(c);
-  if (const auto table = SpanTable<T, D>::of(p)) {
+  if (const auto table = SpanTable<T, D>::of(pieces(c))) {
     table->evaluate(ts, out);
     return;
   }
