@@ -1,20 +1,20 @@
 #!/usr/bin/env bash
 # Installs the Debian packages casteljau needs; idempotent, runs `apt-get update` only
 # when something is missing. Usage: scripts/install-deps.sh [build|bench|fuzz]...
-#   build (default): compiler, CMake, libraries, test tools (enough for `make demo` and `make test`)
+#   build (default): compilers (g++; clang for the sanitizer build), CMake, libraries, test tools (enough for `make demo` and `make test`)
 #   bench: also the peer libraries benchmarked in bench/ (lib2geom, OpenCASCADE, GSL, SISL, cairo) and the W3 font
-#   fuzz: also clang and its libFuzzer runtime (`make fuzz`)
+#   fuzz: nothing more (clang and its libFuzzer runtime are in build; kept for `make fuzz`)
 set -euo pipefail
 
 build_pkgs=(
-  g++ make cmake pkg-config python3
+  g++ clang libclang-rt-dev make cmake pkg-config python3
   libeigen3-dev nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev librapidcheck-dev libbenchmark-dev
   libmpfr-dev libgmp-dev
   python3-scipy python3-mpmath
   libocct-modeling-data-dev libocct-foundation-dev
 )
-fuzz_pkgs=(clang libclang-rt-dev)
+fuzz_pkgs=()
 bench_pkgs=(lib2geom-dev libocct-modeling-data-dev libocct-foundation-dev libocct-modeling-algorithms-dev libboost-dev libdouble-conversion-dev libgsl-dev libsisl-dev
             libcairo2-dev libfreetype-dev fonts-dejavu-core)
 

@@ -777,9 +777,6 @@ Example:
   echo '{"curve": {"type": "polyline", "points": [[0,0],[2,0],[2,1],[0,1],[0,0]]}}' | casteljau area
   {"area":2.0})";
 
-constexpr std::string_view later_details = R"(Defined by the command line contract (shared/spec/cli.md) but not supported by this
-version: running it is an error (exit status 2).)";
-
 // One line per command of the contract; a helper's command flips its own line to
 // supported (the array's size is deduced, so adding a command touches one line).
 constexpr Command all_commands[] = {
