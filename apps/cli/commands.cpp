@@ -643,8 +643,9 @@ curve's domain is [0, 1].
       matched exactly, knots by [PT97] eq. 9.68-9.69;
   tolerance: the fewest control points found (bisection) whose max_error is within it;
       interpolation when nothing fewer is;
-  closed: periodic interpolation (C^(degree-1) where it closes; control_points, if given,
-      must be the number of distinct points; the last point may repeat the first).
+  closed: a periodic curve (C^(degree-1) where it closes; the last point may repeat the
+      first): interpolation with control_points = the number of distinct points, periodic
+      least squares with fewer (at least degree + 1), or the fewest within tolerance.
 
 Request:  points, degree, control_points or tolerance, parametrization (optional),
           start_derivative, end_derivative (optional vectors), closed (optional boolean)

@@ -1043,7 +1043,7 @@ const std::vector<FigureFunction>& figure_list() {
   static const std::vector<FigureFunction> list = {
       bernstein_basis, de_casteljau_construction, subdivision, degree_elevation, convex_hull_property,
       affine_invariance, continuity, rational_circle, tight_bounds, hodograph, degree_reduction, pieces_of_a_path,
-      knot_insertion, nurbs_circle_figure, subdivision_schemes, four_point_scheme,
+      bspline_basis_functions, local_control, knot_insertion, nurbs_circle_figure, noisy_fit, subdivision_schemes, four_point_scheme,
       closest_points, curvature_comb,
       intersections, flattening_methods,
       runge_phenomenon, catmull_rom_alpha, hermite_basis,

@@ -37,6 +37,10 @@ Figure knot_insertion();
 Figure nurbs_circle_figure();
 Figure subdivision_schemes();
 Figure four_point_scheme();
+/// B-spline bases, local control and fitting (figures_bspline_basis.cpp).
+Figure bspline_basis_functions();
+Figure local_control();
+Figure noisy_fit();
 /// Interpolating cubics (figures_interp.cpp): the four cubic spline end conditions on one
 /// data set; monotone (PCHIP) Hermite interpolation against the natural spline.
 Figure spline_boundaries();

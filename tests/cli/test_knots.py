@@ -582,7 +582,8 @@ class FitTest(CliTest):
         self.bad("fit", {"points": Q, "degree": 1, "control_points": 5, "start_derivative": [1, 0]}, "degree")
         self.bad("fit", {"points": Q, "degree": 3, "control_points": 4, "closed": True, "end_derivative": [1, 0]},
                  "end_derivative")
-        self.bad("fit", {"points": Q, "degree": 2, "control_points": 3, "closed": True}, "control_points")
+        self.bad("fit", {"points": Q, "degree": 2, "control_points": 2, "closed": True}, "control_points")
+        self.bad("fit", {"points": Q, "degree": 2, "control_points": 5, "closed": True}, "control_points")
         self.bad("fit", {"points": Q, "degree": 3, "control_points": 4, "weights": [1]}, "weights")
 
 

@@ -1,7 +1,7 @@
 // Fitting B-spline curves to points [PT97, chapter 9]: global interpolation with optional
 // end derivatives, closed (periodic) interpolation, least-squares approximation with a
-// given number of control points (end points interpolated), and approximation to a
-// tolerance with the fewest control points found. Sparse (banded) linear algebra with
+// given number of control points (open: end points interpolated; closed: periodic), and
+// approximation to a tolerance with the fewest control points found. Sparse (banded) linear algebra with
 // Eigen. Not part of casteljau.hpp: it brings Eigen's sparse solvers; include it where
 // fitting is used (the io layer compiles it once).
 #pragma once
@@ -152,6 +152,83 @@ BSpline<T, D> interpolate(const std::vector<Point<T, D>>& Q, int p, const std::v
   return BSpline<T, D>(p, std::move(U), detail::to_points<T, D>(x));
 }
 
+namespace detail {
+
+/// The knots of a periodic spline of period 1: breakpoints b_0 < ... < b_{n-1} in one
+/// period, knot(j) = b_(j mod n) + floor(j / n) for every integer j (simple knots, so
+/// the spline is C^(p-1) everywhere), and control point j is C_(j mod n).
+template <class T>
+struct PeriodicKnots {
+  std::vector<T> b;
+
+  [[nodiscard]] std::ptrdiff_t size() const { return static_cast<std::ptrdiff_t>(b.size()); }
+  [[nodiscard]] std::ptrdiff_t floor_div(std::ptrdiff_t j) const {
+    const std::ptrdiff_t n = size();
+    return j >= 0 ? j / n : -((-j + n - 1) / n);
+  }
+  [[nodiscard]] std::size_t wrap(std::ptrdiff_t j) const { return static_cast<std::size_t>(j - floor_div(j) * size()); }
+  [[nodiscard]] T knot(std::ptrdiff_t j) const { return b[wrap(j)] + static_cast<T>(floor_div(j)); }
+  /// The span s with knot(s) <= u < knot(s + 1), for u in [0, 1) (b_0 may exceed 0: then
+  /// s = -1 for u < b_0).
+  [[nodiscard]] std::ptrdiff_t span(T u) const {
+    return static_cast<std::ptrdiff_t>(std::upper_bound(b.begin(), b.end(), u) - b.begin()) - 1;
+  }
+  /// The p + 1 non-zero basis functions at u on span s (knot(s) <= u < knot(s + 1)),
+  /// for control points s - p .. s (before wrapping) [PT97, A2.2 on the local knots].
+  void basis(int p, std::ptrdiff_t s, T u, std::vector<T>& local, std::vector<T>& N) const {
+    local.resize(2 * static_cast<std::size_t>(p) + 2);
+    N.resize(static_cast<std::size_t>(p) + 1);
+    for (std::ptrdiff_t j = 0; j < 2 * p + 2; ++j) local[static_cast<std::size_t>(j)] = knot(s - p + j);
+    basis_functions<T>(local, p, static_cast<std::size_t>(p), u, N);
+  }
+};
+
+/// The periodic spline (degree p, knots K, control points C wrapped) written as an
+/// unclamped B-spline on [0, 1]: a long stretch of it, then 0 and 1 inserted as knots
+/// where they are not breakpoints (Boehm, exact up to rounding), then the window [0, 1]
+/// with its p knots on either side. The result has len(C) + (0 or 1) control points
+/// (one more when 0 is not a breakpoint) and C^(p-1) continuity across the seam.
+template <class T, int D>
+BSpline<T, D> periodic_bspline(int p, const PeriodicKnots<T>& K, const std::vector<Point<T, D>>& C) {
+  const std::ptrdiff_t L = K.size();
+  KnotForm<T, Point<T, D>> f{p, {}, {}};
+  const std::ptrdiff_t lo = -2 * p - 2, hi = L + 2 * p + 2;
+  for (std::ptrdiff_t j = lo; j <= hi; ++j) f.U.push_back(K.knot(j));
+  for (std::ptrdiff_t j = lo; j + p + 1 <= hi; ++j) f.P.push_back(C[K.wrap(j)]);
+  for (const T u : {T(0), T(1)}) {
+    if (knot_multiplicity<T>(f.U, u) == 0) f = insert_knot_once(f, u);
+  }
+  const std::size_t i0 = static_cast<std::size_t>(std::lower_bound(f.U.begin(), f.U.end(), T(0)) - f.U.begin());
+  const std::size_t i1 = static_cast<std::size_t>(std::lower_bound(f.U.begin(), f.U.end(), T(1)) - f.U.begin());
+  const std::size_t P = static_cast<std::size_t>(p);
+  std::vector<T> U(f.U.begin() + static_cast<std::ptrdiff_t>(i0 - P), f.U.begin() + static_cast<std::ptrdiff_t>(i1 + P) + 1);
+  std::vector<Point<T, D>> Pts(f.P.begin() + static_cast<std::ptrdiff_t>(i0 - P), f.P.begin() + static_cast<std::ptrdiff_t>(i1));
+  return BSpline<T, D>(p, std::move(U), std::move(Pts));
+}
+
+/// The breakpoints of a closed fit with n control points through L data with closed
+/// parameters t_0 = 0 < ... < t_L = 1: b_j = t at the fractional index (j + delta) L / n,
+/// linearly interpolated between neighbouring parameters, delta = 0 for odd p and 1/2 for
+/// even p. This is the periodic form of [PT97, eq. 9.68-9.69]: every knot span holds at
+/// least one parameter when n <= L (the spans are L / n >= 1 indices wide), and for
+/// n = L it gives the knots of closed interpolation (the parameters, or the midpoints
+/// between them for even p, where knots at the data can make the cyclic system singular).
+template <class T>
+PeriodicKnots<T> closed_fit_knots(const std::vector<T>& t, int p, std::size_t n) {
+  const std::size_t L = t.size() - 1;
+  const T d = static_cast<T>(L) / static_cast<T>(n), delta = p % 2 == 1 ? T(0) : T(0.5);
+  PeriodicKnots<T> K;
+  for (std::size_t j = 0; j < n; ++j) {
+    const T x = (static_cast<T>(j) + delta) * d;
+    const std::size_t i = std::min(static_cast<std::size_t>(x), L - 1);
+    const T alpha = x - static_cast<T>(i);
+    K.b.push_back(alpha == 0 ? t[i] : (1 - alpha) * t[i] + alpha * t[i + 1]);
+  }
+  return K;
+}
+
+}  // namespace detail
+
 /// Closed (periodic) interpolation through Q_0..Q_{L-1} with the closing parameters t
 /// (L + 1 values, t_L = 1 for the return to Q_0): the periodic degree-p spline, C^(p-1)
 /// everywhere, with breakpoints at the parameters for odd p and halfway between them for
@@ -162,26 +239,17 @@ BSpline<T, D> interpolate(const std::vector<Point<T, D>>& Q, int p, const std::v
 template <class T, int D>
 BSpline<T, D> interpolate_closed(const std::vector<Point<T, D>>& Q, int p, const std::vector<T>& t) {
   const std::ptrdiff_t L = static_cast<std::ptrdiff_t>(Q.size());
-  const bool odd = p % 2 == 1;
-  std::vector<T> b(static_cast<std::size_t>(L));
-  for (std::ptrdiff_t i = 0; i < L; ++i) b[static_cast<std::size_t>(i)] = odd ? t[static_cast<std::size_t>(i)] : t[static_cast<std::size_t>(i)] / 2 + t[static_cast<std::size_t>(i) + 1] / 2;
-  const auto floor_div = [&](std::ptrdiff_t j) { return j >= 0 ? j / L : -((-j + L - 1) / L); };
-  const auto knot = [&](std::ptrdiff_t j) {
-    const std::ptrdiff_t q = floor_div(j);
-    return b[static_cast<std::size_t>(j - q * L)] + static_cast<T>(q);
-  };
-  const auto wrap = [&](std::ptrdiff_t j) { return static_cast<std::size_t>(j - floor_div(j) * L); };
+  const detail::PeriodicKnots<T> K = detail::closed_fit_knots(t, p, Q.size());
   Eigen::SparseMatrix<T> A(L, L);
   std::vector<Eigen::Triplet<T>> entries;
   detail::Rhs<T, D> rhs(L, D);
-  std::vector<T> local(2 * static_cast<std::size_t>(p) + 2), N(static_cast<std::size_t>(p) + 1);
+  std::vector<T> local, N;
   for (std::ptrdiff_t i = 0; i < L; ++i) {
     const T u = t[static_cast<std::size_t>(i)];
-    const std::ptrdiff_t s = odd ? i : i - 1;  // knot(s) <= u < knot(s + 1)
-    for (std::ptrdiff_t j = 0; j < 2 * p + 2; ++j) local[static_cast<std::size_t>(j)] = knot(s - p + j);
-    basis_functions<T>(local, p, static_cast<std::size_t>(p), u, N);
+    const std::ptrdiff_t s = K.span(u);
+    K.basis(p, s, u, local, N);
     std::vector<T> row(static_cast<std::size_t>(L), T(0));
-    for (int r = 0; r <= p; ++r) row[wrap(s - p + r)] += N[static_cast<std::size_t>(r)];
+    for (int r = 0; r <= p; ++r) row[K.wrap(s - p + r)] += N[static_cast<std::size_t>(r)];
     for (std::ptrdiff_t c = 0; c < L; ++c)
       if (row[static_cast<std::size_t>(c)] != 0) entries.emplace_back(i, c, row[static_cast<std::size_t>(c)]);
     for (int d = 0; d < D; ++d) rhs(i, d) = Q[static_cast<std::size_t>(i)][d];
@@ -192,21 +260,118 @@ BSpline<T, D> interpolate_closed(const std::vector<Point<T, D>>& Q, int p, const
   detail::require_solved(lu.info(), "closed interpolation");
   const detail::Rhs<T, D> x = lu.solve(rhs);
   detail::require_solved(lu.info(), "closed interpolation");
-  const std::vector<Point<T, D>> C = detail::to_points<T, D>(x);
-  // A long stretch of the periodic spline, then 0 and 1 as knots, then the window [0, 1].
-  KnotForm<T, Point<T, D>> f{p, {}, {}};
-  const std::ptrdiff_t lo = -2 * p - 2, hi = L + 2 * p + 2;
-  for (std::ptrdiff_t j = lo; j <= hi; ++j) f.U.push_back(knot(j));
-  for (std::ptrdiff_t j = lo; j + p + 1 <= hi; ++j) f.P.push_back(C[wrap(j)]);
-  for (const T u : {T(0), T(1)}) {
-    if (knot_multiplicity<T>(f.U, u) == 0) f = insert_knot_once(f, u);
+  return detail::periodic_bspline<T, D>(p, K, detail::to_points<T, D>(x));
+}
+
+/// Closed (periodic) least-squares approximation: the periodic degree-p spline with
+/// n control points (wrapped, C^(p-1) everywhere, including the seam) and the breakpoints
+/// of detail::closed_fit_knots, minimising sum_k |C(t_k) - Q_k|^2 over the L distinct
+/// points Q_k at their closed parameters t_0..t_{L-1} [PT97, §9.4.1 made periodic, as
+/// in their closed-curve variants of §9.2.4]. No point is held fixed: a closed curve has
+/// no ends. For n = L it is closed interpolation (the same knots; the square system then
+/// has the interpolant as its exact solution).
+///
+/// The design matrix is cyclic-banded: each row has p + 1 consecutive columns modulo n.
+/// With the columns ordered p, .., n - 1, 0, .., p - 1, every row is a band part (a
+/// window of at most p + 1 columns below n - p) plus a border of the last p columns, and
+/// Givens QR row by row [GolubVanLoan13, §5.1.8] keeps that shape in R: a band of
+/// width p + 1 plus a dense border of p columns (the wrap-around as a rank-p border, in
+/// place of a dense solve or the normal equations, whose condition number is the square).
+/// Cost O(L p^2) time, O(n p) memory. Requires p + 1 <= n <= L; a rank-deficient system
+/// (a negligible diagonal of R) is a NumericalError.
+template <class T, int D>
+BSpline<T, D> approximate_closed(const std::vector<Point<T, D>>& Q, int p, const std::vector<T>& t, std::size_t n) {
+  const detail::PeriodicKnots<T> K = detail::closed_fit_knots(t, p, n);
+  const std::size_t P = static_cast<std::size_t>(p), W = P + 1, nb = n - P;
+  std::vector<T> Rb(nb * W, T(0));  // Rb[i * W + l] = R(i, i + l), band columns i < nb
+  std::vector<T> Re(n * P, T(0));   // Re[i * P + e] = R(i, nb + e), the border
+  std::vector<T> z(n * D, T(0));    // the rotated right-hand sides
+  std::vector<T> wb(W), we(P), rhs(D), local, N;
+  const auto rotate = [](T& r, T& w, T cs, T sn) {
+    const T rl = r, wl = w;
+    r = cs * rl + sn * wl;
+    w = -sn * rl + cs * wl;
+  };
+  for (std::size_t k = 0; k + 1 < t.size(); ++k) {
+    const T u = t[k];
+    const std::ptrdiff_t s = K.span(u);
+    K.basis(p, s, u, local, N);
+    std::fill(wb.begin(), wb.end(), T(0));
+    std::fill(we.begin(), we.end(), T(0));
+    // Original column c >= p is band column c - p, c < p is border column c; the band
+    // part of the window is contiguous and starts at c0.
+    std::size_t c0 = nb;
+    for (int r = 0; r <= p; ++r) {
+      const std::size_t c = K.wrap(s - p + r);
+      if (c >= P) c0 = std::min(c0, c - P);
+    }
+    for (int r = 0; r <= p; ++r) {
+      const std::size_t c = K.wrap(s - p + r);
+      if (c >= P) {
+        wb[c - P - c0] += N[static_cast<std::size_t>(r)];
+      } else {
+        we[c] += N[static_cast<std::size_t>(r)];
+      }
+    }
+    for (int d = 0; d < D; ++d) rhs[static_cast<std::size_t>(d)] = Q[k][d];
+    // Band columns: rotate the row against R's row c while its window holds anything.
+    for (std::size_t c = c0; c < nb; ++c) {
+      if (std::all_of(wb.begin(), wb.end(), [](T v) { return v == 0; })) break;
+      const T a = wb[0];
+      if (a != 0) {
+        const T rho = std::hypot(Rb[c * W], a);
+        const T cs = Rb[c * W] / rho, sn = a / rho;
+        for (std::size_t l = 0; l < W; ++l) rotate(Rb[c * W + l], wb[l], cs, sn);
+        for (std::size_t e = 0; e < P; ++e) rotate(Re[c * P + e], we[e], cs, sn);
+        for (std::size_t d = 0; d < static_cast<std::size_t>(D); ++d) rotate(z[c * D + d], rhs[d], cs, sn);
+      }
+      std::rotate(wb.begin(), wb.begin() + 1, wb.end());  // slide the window one column right
+      wb[W - 1] = 0;
+    }
+    // Border columns: R's rows nb .. n - 1 are a dense upper triangle there.
+    for (std::size_t e = 0; e < P; ++e) {
+      const T a = we[e];
+      if (a == 0) continue;
+      const std::size_t i = nb + e;
+      const T rho = std::hypot(Re[i * P + e], a);
+      const T cs = Re[i * P + e] / rho, sn = a / rho;
+      for (std::size_t l = e; l < P; ++l) rotate(Re[i * P + l], we[l], cs, sn);
+      for (std::size_t d = 0; d < static_cast<std::size_t>(D); ++d) rotate(z[i * D + d], rhs[d], cs, sn);
+    }
   }
-  const std::size_t i0 = static_cast<std::size_t>(std::lower_bound(f.U.begin(), f.U.end(), T(0)) - f.U.begin());
-  const std::size_t i1 = static_cast<std::size_t>(std::lower_bound(f.U.begin(), f.U.end(), T(1)) - f.U.begin());
-  const std::size_t P = static_cast<std::size_t>(p);
-  std::vector<T> U(f.U.begin() + static_cast<std::ptrdiff_t>(i0 - P), f.U.begin() + static_cast<std::ptrdiff_t>(i1 + P) + 1);
-  std::vector<Point<T, D>> Pts(f.P.begin() + static_cast<std::ptrdiff_t>(i0 - P), f.P.begin() + static_cast<std::ptrdiff_t>(i1));
-  return BSpline<T, D>(p, std::move(U), std::move(Pts));
+  // Back substitution; a negligible diagonal (relative to the largest) is rank deficiency.
+  T rmax = 0;
+  for (std::size_t i = 0; i < nb; ++i) rmax = std::max(rmax, std::abs(Rb[i * W]));
+  for (std::size_t e = 0; e < P; ++e) rmax = std::max(rmax, std::abs(Re[(nb + e) * P + e]));
+  const auto check = [&](T diag) {
+    if (!(std::abs(diag) > rmax * T(1e-14))) throw NumericalError("fit: the closed least-squares system is singular (too few data for the control points)");
+  };
+  std::vector<T> x(n * D, T(0));  // in the permuted column order
+  for (std::size_t e = P; e-- > 0;) {
+    const std::size_t i = nb + e;
+    check(Re[i * P + e]);
+    for (std::size_t d = 0; d < static_cast<std::size_t>(D); ++d) {
+      T sum = z[i * D + d];
+      for (std::size_t l = e + 1; l < P; ++l) sum -= Re[i * P + l] * x[(nb + l) * D + d];
+      x[i * D + d] = sum / Re[i * P + e];
+    }
+  }
+  for (std::size_t i = nb; i-- > 0;) {
+    check(Rb[i * W]);
+    for (std::size_t d = 0; d < static_cast<std::size_t>(D); ++d) {
+      T sum = z[i * D + d];
+      for (std::size_t l = 1; l < W && i + l < nb; ++l) sum -= Rb[i * W + l] * x[(i + l) * D + d];
+      for (std::size_t e = 0; e < P; ++e) sum -= Re[i * P + e] * x[(nb + e) * D + d];
+      x[i * D + d] = sum / Rb[i * W];
+    }
+  }
+  std::vector<Point<T, D>> C(n);
+  for (std::size_t c = 0; c < n; ++c) {
+    const std::size_t j = c >= P ? c - P : nb + c;
+    for (int d = 0; d < D; ++d) C[c][d] = x[j * D + static_cast<std::size_t>(d)];
+    if (!detail::all_finite_point(C[c])) throw NumericalError("fit: the closed least-squares system is singular");
+  }
+  return detail::periodic_bspline<T, D>(p, K, C);
 }
 
 /// Least-squares approximation [PT97, §9.4.1]: n + 1 control points, knots from the
@@ -343,12 +508,16 @@ struct FitRequest {
 /// is found by bisection between the least that can be fitted and interpolation, assuming
 /// the error falls as points are added (usual, not guaranteed: the count is the fewest
 /// found, not proven minimal); a count whose system is singular counts as too few; if
-/// only interpolation is within the tolerance it is the answer. Closed fits are
-/// interpolation only. Errors (InvalidArgument): "degree" (< 1; >= 2 with a derivative),
-/// "points" (too few: p + 1 conditions, or p + 1 distinct points closed; coincident
-/// consecutive points under chord / centripetal), "control_points" (below p + 1 or the
-/// ends it must hold, above the point count plus derivatives; closed: not the point
-/// count), "tolerance" (not > 0), "start_derivative" / "end_derivative" (with closed).
+/// only interpolation is within the tolerance it is the answer. Closed fits (the closing
+/// point may repeat the first; L distinct points remain) are periodic: n control points
+/// with p + 1 <= n <= L, least squares below L (approximate_closed) and interpolation at
+/// L (interpolate_closed); the curve is written on [0, 1] with n + p control points (odd
+/// p) or n + p + 1 (even p, whose breakpoints miss 0), the first p repeated at the end
+/// (odd p). Errors (InvalidArgument): "degree" (< 1; >= 2 with a derivative), "points"
+/// (too few: p + 1 conditions, or p + 1 distinct points closed; coincident consecutive
+/// points under chord / centripetal), "control_points" (below p + 1 or the ends it must
+/// hold, above the point count plus derivatives; closed: outside p + 1 .. L),
+/// "tolerance" (not > 0), "start_derivative" / "end_derivative" (with closed).
 template <class T, int D>
 FitResult<T, D> fit(std::vector<Point<T, D>> Q, const FitRequest<T, D>& req) {
   const int p = req.degree;
@@ -357,64 +526,63 @@ FitResult<T, D> fit(std::vector<Point<T, D>> Q, const FitRequest<T, D>& req) {
   const std::size_t extra = (req.start_derivative ? 1 : 0) + (req.end_derivative ? 1 : 0);
   if (extra > 0 && p < 2) throw InvalidArgument("degree", "end derivatives need degree >= 2, got " + std::to_string(p));
   if (req.tolerance && !(*req.tolerance > 0)) throw InvalidArgument("tolerance", "tolerance must be > 0, got " + detail::format_number(*req.tolerance));
+  std::size_t least = 0, most = 0;
+  std::vector<T> t;
+  std::vector<T> t_data;  // the data's parameters (closed: without the closing one)
   if (req.closed) {
     if (req.start_derivative) throw InvalidArgument("start_derivative", "a closed fit takes no end derivatives");
     if (req.end_derivative) throw InvalidArgument("end_derivative", "a closed fit takes no end derivatives");
-    std::vector<Point<T, D>> R = Q;
-    if (R.size() > 1 && R.front() == R.back()) R.pop_back();  // the closing point may be repeated
-    if (R.size() < static_cast<std::size_t>(p) + 1) {
+    if (Q.size() > 1 && Q.front() == Q.back()) Q.pop_back();  // the closing point may be repeated
+    if (Q.size() < static_cast<std::size_t>(p) + 1) {
       throw InvalidArgument("points", "a closed fit of degree " + std::to_string(p) + " needs at least " + std::to_string(p + 1) +
-                                          " distinct points, got " + std::to_string(R.size()));
+                                          " distinct points, got " + std::to_string(Q.size()));
     }
-    if (req.control_points && *req.control_points != R.size()) {
-      throw InvalidArgument("control_points", "a closed fit interpolates: control_points must be the number of distinct points (" +
-                                                  std::to_string(R.size()) + "), got " + std::to_string(*req.control_points));
+    least = static_cast<std::size_t>(p) + 1;
+    most = Q.size();
+    t = fit_parameters(Q, req.parametrization, true);
+    t_data.assign(t.begin(), t.end() - 1);
+  } else {
+    most = Q.size() + extra;
+    least = std::max(static_cast<std::size_t>(p) + 1, 2 + extra);
+    if (Q.size() < 2 || most < static_cast<std::size_t>(p) + 1) {
+      throw InvalidArgument("points", "degree " + std::to_string(p) + " needs at least " + std::to_string(p + 1) +
+                                          " conditions (points and end derivatives), got " + std::to_string(most));
     }
-    const std::vector<T> t = fit_parameters(R, req.parametrization, true);
-    BSpline<T, D> c = interpolate_closed(R, p, t);
-    const T e = detail::max_fit_error(c, R, t);
+    t = fit_parameters(Q, req.parametrization, false);
+    t_data = t;
+  }
+  const auto with_count = [&](std::size_t count) -> FitResult<T, D> {
+    BSpline<T, D> c = req.closed ? (count == most ? interpolate_closed(Q, p, t) : approximate_closed(Q, p, t, count))
+                                 : (count == most ? interpolate(Q, p, t, req.start_derivative, req.end_derivative)
+                                                  : approximate(Q, p, t, count, req.start_derivative, req.end_derivative));
+    const T e = detail::max_fit_error(c, Q, t_data);
     return {std::move(c), e};
-  }
-  const std::size_t most = Q.size() + extra;
-  const std::size_t least = std::max(static_cast<std::size_t>(p) + 1, 2 + extra);
-  if (Q.size() < 2 || most < static_cast<std::size_t>(p) + 1) {
-    throw InvalidArgument("points", "degree " + std::to_string(p) + " needs at least " + std::to_string(p + 1) +
-                                        " conditions (points and end derivatives), got " + std::to_string(most));
-  }
-  const std::vector<T> t = fit_parameters(Q, req.parametrization, false);
-  const auto with_count = [&](std::size_t count) {
-    if (count == most) return interpolate(Q, p, t, req.start_derivative, req.end_derivative);
-    return approximate(Q, p, t, count, req.start_derivative, req.end_derivative);
   };
   if (req.control_points) {
     const std::size_t count = *req.control_points;
     if (count < least || count > most) {
       throw InvalidArgument("control_points", "must be in " + std::to_string(least) + ".." + std::to_string(most) + " for degree " +
-                                                  std::to_string(p) + " and these points, got " + std::to_string(count));
+                                                  std::to_string(p) + (req.closed ? " and these distinct points (closed)" : " and these points") +
+                                                  ", got " + std::to_string(count));
     }
-    BSpline<T, D> c = with_count(count);
-    const T e = detail::max_fit_error(c, Q, t);
-    return {std::move(c), e};
+    return with_count(count);
   }
   const T tol = req.tolerance.value_or(T(0));
   std::optional<FitResult<T, D>> best;
+  std::size_t best_count = 0;
   const auto try_count = [&](std::size_t count) -> bool {
     try {
-      BSpline<T, D> c = with_count(count);
-      const T e = detail::max_fit_error(c, Q, t);
-      if (!(e <= tol)) return false;
-      best = FitResult<T, D>{std::move(c), e};
+      FitResult<T, D> f = with_count(count);
+      if (!(f.max_error <= tol)) return false;
+      best = std::move(f);
+      best_count = count;
       return true;
     } catch (const NumericalError&) {
       return false;
     }
   };
   std::size_t lo = least, hi = most;  // invariant: every count below lo failed; hi passes or is the fallback
-  if (!try_count(hi)) {
-    BSpline<T, D> c = with_count(most);
-    const T e = detail::max_fit_error(c, Q, t);
-    return {std::move(c), e};
-  }
+  if (!try_count(hi)) return with_count(most);
   while (lo < hi) {
     const std::size_t mid = lo + (hi - lo) / 2;
     if (try_count(mid)) {
@@ -423,12 +591,8 @@ FitResult<T, D> fit(std::vector<Point<T, D>> Q, const FitRequest<T, D>& req) {
       lo = mid + 1;
     }
   }
-  // best holds the fit at hi (the last success).
-  if (best->curve.points().size() != hi) {
-    BSpline<T, D> c = with_count(hi);
-    const T e = detail::max_fit_error(c, Q, t);
-    return {std::move(c), e};
-  }
+  // best holds the last success, which is the fit at hi.
+  if (best_count != hi) return with_count(hi);
   return std::move(*best);
 }
 

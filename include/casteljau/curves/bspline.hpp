@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -671,6 +672,102 @@ class Nurbs {
       w[i] = wi * scale;
     }
     return Nurbs(f.p, std::move(f.U), std::move(P), std::move(w));
+  }
+
+  /// Rational and polynomial Bézier pieces back to a NURBS [PT97, A5.6 read backwards; the
+  /// rational form of BSpline::from_pieces]: piece i on [breaks[i], breaks[i+1]]
+  /// (breaks finite, strictly increasing, one more than the pieces; InvalidArgument
+  /// "pieces" / "breaks" / "breaks[i]"), a polynomial piece with weights 1, each elevated
+  /// to the highest degree p among them (p >= 1), joined with every interior break p
+  /// times: the C^0 form. A rational piece is unchanged when all its weights are scaled,
+  /// so piece i + 1 is scaled by w_end(i) / w_start(i + 1): the homogeneous curve is then
+  /// continuous too and the join is one control point (the mean of the two end points and
+  /// weights, which agree up to rounding). The scale factors chain along the pieces and
+  /// are carried as (mantissa, exponent) so that they cannot overflow; at the end all
+  /// weights are divided by a power of two so that the largest is in [0.5, 1). Weights
+  /// spanning more than the floating point range are an InvalidArgument ("pieces").
+  /// With removal_tolerance, each interior break is then removed up to p times with
+  /// remove_knot(x, p, tolerance) (the [PT97, eq. 5.30] bound, within the tolerance of
+  /// the curve before that break's removal, so at most the tolerance per break and
+  /// (breaks - 1) times it in all), restoring the continuity the pieces have. The pieces
+  /// are exact: the result traces them up to rounding. Cost O(pieces p^2) plus the
+  /// removals, O(pieces (n + p^2)) each of n control points.
+  [[nodiscard]] static Nurbs from_pieces(const std::vector<BezierPiece<T, D>>& segs, const std::vector<T>& breaks,
+                                         std::optional<T> removal_tolerance = std::nullopt) {
+    if (segs.empty()) throw InvalidArgument("pieces", "needs at least one piece");
+    if (breaks.size() != segs.size() + 1) throw InvalidArgument("breaks", "needs one more break than pieces");
+    require_finite(breaks.front(), "breaks[0]");
+    for (std::size_t i = 0; i + 1 < breaks.size(); ++i) {
+      require_finite(breaks[i + 1], "breaks[" + std::to_string(i + 1) + "]");
+      if (!(breaks[i] < breaks[i + 1])) throw InvalidArgument("breaks[" + std::to_string(i + 1) + "]", "breaks must increase");
+    }
+    int p = 1;
+    for (const auto& s : segs) p = std::max(p, std::visit([](const auto& b) { return b.degree(); }, s));
+    std::vector<T> U(static_cast<std::size_t>(p) + 1, breaks.front());
+    std::vector<PointType> P;
+    std::vector<T> mant;   // weight = mant[i] 2^expo[i], mant in [0.5, 1)
+    std::vector<int> expo;
+    T scale_m = 1;  // the current piece's scale factor, scale_m 2^scale_e
+    int scale_e = 0;
+    for (std::size_t i = 0; i < segs.size(); ++i) {
+      std::vector<PointType> Q;
+      std::vector<T> W;
+      if (const auto* b = std::get_if<Bezier<T, D>>(&segs[i])) {
+        Q = b->elevate(p - b->degree()).points();
+        W.assign(Q.size(), T(1));
+      } else {
+        const auto& r = std::get<RationalBezier<T, D>>(segs[i]);
+        const RationalBezier<T, D> e = r.elevate(p - r.degree());
+        Q = e.points();
+        W = e.weights();
+      }
+      if (i > 0) {
+        // Scale so that this piece's first weight equals the previous piece's last one.
+        int ea = 0, eb = 0;
+        const T ma = std::frexp(mant.back(), &ea), mb = std::frexp(W.front(), &eb);
+        scale_m = std::frexp(ma / mb, &scale_e);
+        scale_e += ea + expo.back() - eb;
+      }
+      for (std::size_t j = 0; j < Q.size(); ++j) {
+        int e = 0;
+        const T m = std::frexp(W[j] * scale_m, &e);
+        if (i > 0 && j == 0) {
+          // The join: one point and one weight for both pieces.
+          P.back() = lerp(P.back(), Q.front(), T(0.5));
+          mant.back() = mant.back() / 2 + std::ldexp(m, e + scale_e - expo.back()) / 2;
+          continue;
+        }
+        P.push_back(Q[j]);
+        mant.push_back(m);
+        expo.push_back(e + scale_e);
+      }
+      if (i > 0) U.insert(U.end(), static_cast<std::size_t>(p), breaks[i]);
+    }
+    U.insert(U.end(), static_cast<std::size_t>(p) + 1, breaks.back());
+    int top = expo.front();
+    for (std::size_t j = 0; j < mant.size(); ++j) {
+      int e = 0;
+      (void)std::frexp(mant[j], &e);
+      top = std::max(top, expo[j] + e);
+    }
+    std::vector<T> w(mant.size());
+    for (std::size_t j = 0; j < mant.size(); ++j) {
+      w[j] = std::ldexp(mant[j], expo[j] - top);
+      if (!(w[j] > 0)) throw InvalidArgument("pieces", "the weights of the joined pieces span more than the floating point range");
+    }
+    Nurbs c(p, std::move(U), std::move(P), std::move(w));
+    if (removal_tolerance) {
+      for (std::size_t i = 1; i + 1 < breaks.size(); ++i) c = c.remove_knot(breaks[i], p, *removal_tolerance).curve;
+    }
+    return c;
+  }
+  [[nodiscard]] static Nurbs from_pieces(const std::vector<RationalBezier<T, D>>& segs, const std::vector<T>& breaks,
+                                         std::optional<T> removal_tolerance = std::nullopt) {
+    return from_pieces(std::vector<BezierPiece<T, D>>(segs.begin(), segs.end()), breaks, removal_tolerance);
+  }
+  /// The NURBS of exact pieces (pieces(c) of any curve), as from_pieces above.
+  [[nodiscard]] static Nurbs from_pieces(const Pieces<T, D>& pc, std::optional<T> removal_tolerance = std::nullopt) {
+    return from_pieces(pc.segments(), pc.breaks(), removal_tolerance);
   }
 
   friend bool operator==(const Nurbs&, const Nurbs&) = default;
