@@ -135,10 +135,13 @@ void casteljau_eval_random(const std::vector<double>& q, std::vector<double>& ou
   for (std::size_t k = 0; k < q.size(); ++k) out[k] = s(q[k])[0];
 }
 
-/// The sorted batch: evaluate_sorted (a linear merge of the queries with the params).
+/// The sorted batch: evaluate_sorted (a linear merge of the queries with the params) into
+/// the caller's storage, as GSL's rows write into `out` (a 1-D point is one double).
 void casteljau_eval_sorted(const std::vector<double>& q, std::vector<double>& out) {
-  const auto v = casteljau_built().evaluate_sorted(std::span<const double>(q));
-  for (std::size_t k = 0; k < q.size(); ++k) out[k] = v[k][0];
+  static_assert(sizeof(P1) == sizeof(double));
+  static std::vector<P1> points(W4Data::queries);
+  casteljau_built().evaluate_sorted(std::span<const double>(q), std::span<P1>(points));
+  for (std::size_t k = 0; k < q.size(); ++k) out[k] = points[k][0];
 }
 #endif
 

@@ -28,8 +28,10 @@ std::string sci2(double v) {
   return buf;
 }
 
-/// Max error to Runge's function over 2001 points of the interpolant on n nodes.
-double runge_error(Nodes kind, std::size_t n, std::vector<P2>* graph = nullptr) {
+/// Max error to Runge's function over 2001 points of the interpolant on n nodes; graph
+/// gets the interpolant (clipped to [-1, 2]), error_graph log10 |f - p_n| (floored at
+/// -6: the error is 0 at the nodes, and the dips there would hide the envelopes).
+double runge_error(Nodes kind, std::size_t n, std::vector<P2>* graph = nullptr, std::vector<P2>* error_graph = nullptr) {
   const auto f = [](double x) { return 1 / (1 + 25 * x * x); };
   std::vector<P1> P;
   for (double v : interpolation_nodes<double>(kind, n, -1.0, 1.0)) P.emplace_back(f(v));
@@ -40,6 +42,7 @@ double runge_error(Nodes kind, std::size_t n, std::vector<P2>* graph = nullptr) 
     const double y = c(x)[0];
     e = std::max(e, std::abs(y - f(x)));
     if (graph) graph->push_back({x, std::clamp(y, -1.0, 2.0)});
+    if (error_graph) error_graph->push_back({x, std::log10(std::max(std::abs(y - f(x)), 1e-6))});
   }
   return e;
 }
@@ -55,7 +58,7 @@ void frame(SvgDocument& doc, const PageRect& r, const Box<double, 2>& model, con
 }  // namespace
 
 Figure runge_phenomenon() {
-  SvgDocument doc(860, 340);
+  SvgDocument doc(860, 640);
   const auto f = [](double x) { return 1 / (1 + 25 * x * x); };
   std::vector<P2> fx;
   for (int i = 0; i <= 400; ++i) fx.push_back({-1 + i / 200.0, f(-1 + i / 200.0)});
@@ -71,6 +74,29 @@ Figure runge_phenomenon() {
     doc.polyline(g, Paint{.stroke = std::string(io::palette(static_cast<std::size_t>(k))), .stroke_width = 2});
     for (double v : interpolation_nodes<double>(kinds[k], 11, -1.0, 1.0)) doc.circle({v, f(v)}, 3, Paint{.stroke = "#222", .fill = "white"});
   }
+  // The error curves |f - p_n| on a log scale: n = 11 (solid) and 21 (dashed), both kinds.
+  {
+    const PageRect r{10, 340, 840, 290};
+    const Box<double, 2> model{{-1.12, -6.3}, {1.05, 1.9}};
+    frame(doc, r, model, "Error |f \u2212 p_n| (log scale): equispaced vs Chebyshev, n = 11 solid, n = 21 dashed",
+          io::Aspect::stretch);
+    for (int e = 0; e >= -6; e -= 2) {
+      doc.line({-1, double(e)}, {1, double(e)}, Paint{.stroke = "#ddd"});
+      const PageMap m = doc.map();
+      const P2 at = m({-1.02, double(e)});
+      doc.set_map(PageMap{});
+      doc.text({at[0] - 34, at[1] + 4}, e == 0 ? "1" : "1e" + std::to_string(e), TextStyle{.size = 11});
+      doc.set_map(m);
+    }
+    for (int k = 0; k < 2; ++k) {
+      for (const std::size_t n : {std::size_t{11}, std::size_t{21}}) {
+        std::vector<P2> err;
+        runge_error(kinds[k], n, nullptr, &err);
+        doc.polyline(err, Paint{.stroke = std::string(io::palette(static_cast<std::size_t>(k))), .stroke_width = 1.5,
+                                .dash = n == 11 ? "" : "6 3"});
+      }
+    }
+  }
   std::string eq, ch;
   for (std::size_t n = 5; n <= 40; n += 5) {
     eq += (n > 5 ? ", " : "") + sci2(runge_error(Nodes::equispaced, n));
@@ -79,7 +105,9 @@ Figure runge_phenomenon() {
   std::string cap =
       "Lagrange interpolation of 1/(1 + 25x<sup>2</sup>) (dashed) on [&minus;1, 1] with 11 nodes, evaluated by the "
       "barycentric formula (<code>Lagrange::on_nodes</code>; values clipped to [&minus;1, 2]). On equispaced nodes the "
-      "interpolant swings near the ends and gets worse with more nodes; on Chebyshev nodes it converges. Max error for "
+      "interpolant swings near the ends and gets worse with more nodes; on Chebyshev nodes it converges. Below, the "
+      "error |f &minus; p<sub>n</sub>| on a log scale (0 at the nodes; drawn down to 1e-6) for n = 11 and 21: equispaced "
+      "(first colour) grows near the ends with n, Chebyshev (second colour) falls evenly over the interval. Max error for "
       "n = 5, 10, ..., 40: equispaced " + eq + "; Chebyshev " + ch + ".";
   return {"runge", "The Runge phenomenon: equispaced vs Chebyshev nodes", doc.str(), cap};
 }

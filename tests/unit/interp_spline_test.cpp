@@ -3,9 +3,11 @@
 // tangent rules and n = 10^6.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <random>
+#include <span>
 #include <vector>
 
 #include "test_support.hpp"
@@ -265,6 +267,151 @@ TEST(Hermite, JsonKeepsTheCurve) {
       for (int d = 0; d < 2; ++d) EXPECT_NEAR(b.coords[static_cast<std::size_t>(d)], c[d], 1e-13 * (1 + std::abs(c[d]))) << t << " " << k;
     }
   }
+}
+
+// The Hermite curve with the Catmull-Rom tangent rule on the uniform params u_i = i is the
+// uniform (alpha 0) catmull_rom curve on the interior pieces. The rule gives m_i = (P_(i+1)
+// - P_(i-1)) / (u_(i+1) - u_(i-1)) = (P_(i+1) - P_(i-1)) / 2 at i = 1..N-2, the Catmull-Rom
+// tangent; but at the ends it takes the end chord (m_0 = P_1 - P_0), while the open
+// catmull_rom curve drops P_0 and P_(N-1) (they only shape the end tangents) and starts at
+// P_1 with parameter 0. So Hermite piece i (i = 1..N-3, on [i, i+1]) is catmull_rom segment
+// i - 1 (on [i - 1, i]): H(u) = CR(u - 1) for u in [1, N - 2], derivatives alike (both
+// with respect to unit-spaced params); the end pieces differ. Bound 1e-14 of the data's
+// size (8 times that for derivatives): both sides are a few flops from the same data
+// (Hermite form against de Casteljau on the Bézier form).
+TEST(HermiteTangents, CatmullRomRuleOnUniformParamsIsTheUniformCatmullRomCurve) {
+  const std::vector<Point<double, 2>> P = {{0, 0}, {1, 3}, {2.5, 2}, {3, -1}, {5, 0.5}, {6, 4}, {4, 6}};
+  std::vector<double> u(P.size());
+  for (std::size_t i = 0; i < u.size(); ++i) u[i] = static_cast<double>(i);
+  const Hermite<double, 2> h(u, P, catmull_rom_tangents(u, P));
+  const CatmullRom<double, 2> cr(P, 0.0);
+  const double n2 = static_cast<double>(P.size()) - 2;
+  ASSERT_EQ(cr.domain().lo, 0.0);
+  ASSERT_EQ(cr.domain().hi, n2 - 1);
+  const double size = 6;  // max |coordinate| of the data
+  for (int j = 0; j <= 400; ++j) {
+    const double x = 1 + (n2 - 1) * j / 400;
+    EXPECT_LE(test::max_coord_diff(h(x), cr(x - 1)), 1e-14 * size) << x;
+    // At x = N - 2 the Hermite curve's right-hand piece (the end piece) answers but the
+    // catmull_rom curve's last segment (its domain's end): their second and third
+    // derivatives differ there by design; the first derivatives agree (C^1).
+    for (int k = 1; k <= (j < 400 ? 3 : 1); ++k) {
+      EXPECT_LE(test::max_coord_diff(h.derivative_at(x, k), cr.derivative_at(x - 1, k)), 8e-14 * size) << x << " " << k;
+    }
+  }
+  // The end pieces differ: the rule's end tangent is the end chord (Catmull-Rom's curve
+  // has no piece there).
+  EXPECT_EQ(h.derivative_at(0.0, 1), P[1] - P[0]);
+  EXPECT_EQ(h.derivative_at(6.0, 1), P[6] - P[5]);
+}
+
+// Derivatives of every interpolating type to any order: zero above the degree; at an
+// interior param the right-hand piece answers, at the domain's end the last piece. The
+// expected values are the Hermite basis's closed forms at a piece's start (t = 0) and end
+// (t = 1), with h the piece's length and m its end tangents:
+//   second derivative at the start  6 (P_(i+1) - P_i) / h^2 - (4 m_i + 2 m_(i+1)) / h,
+//   second derivative at the end   -6 (P_(i+1) - P_i) / h^2 + (2 m_i + 4 m_(i+1)) / h,
+//   third derivative               12 (P_i - P_(i+1)) / h^3 + 6 (m_i + m_(i+1)) / h^2.
+// Bounds: a few eps of values up to ~100.
+TEST(InterpolatingCurves, DerivativesOfAnyOrderAndTheRightHandPiece) {
+  using V2 = Vector<double, 2>;
+  using Pt = Point<double, 2>;
+  const auto second_start = [](Pt a, Pt b, V2 ma, V2 mb, double h) { return 6 * (b - a) / (h * h) - (4 * ma + 2 * mb) / h; };
+  const auto second_end = [](Pt a, Pt b, V2 ma, V2 mb, double h) { return -6 * (b - a) / (h * h) + (2 * ma + 4 * mb) / h; };
+  const auto third = [](Pt a, Pt b, V2 ma, V2 mb, double h) { return 12 * (a - b) / (h * h * h) + 6 * (ma + mb) / (h * h); };
+  const std::vector<double> u = {0, 0.5, 2, 3};
+  const std::vector<Pt> P = {{0, 0}, {1, 2}, {2, -1}, {4, 1}};
+  // Hermite with given tangents and the natural spline (with its slopes): the same checks.
+  const std::vector<V2> m = {{1, 0}, {0, 3}, {2, -2}, {1, 1}};
+  const Hermite<double, 2> hermite(u, P, m);
+  const CubicSpline<double, 2> spline(u, P);
+  for (int which = 0; which < 2; ++which) {
+    const auto& t = which == 0 ? m : spline.slopes();
+    const auto D = [&](double x, int k) { return which == 0 ? hermite.derivative_at(x, k) : spline.derivative_at(x, k); };
+    for (std::size_t i = 1; i < 3; ++i) {  // the interior params: piece i answers
+      const double h = u[i + 1] - u[i], hl = u[i] - u[i - 1];
+      EXPECT_LE(test::max_coord_diff(D(u[i], 2), second_start(P[i], P[i + 1], t[i], t[i + 1], h)), 1e-13) << which << i;
+      EXPECT_LE(test::max_coord_diff(D(u[i], 3), third(P[i], P[i + 1], t[i], t[i + 1], h)), 1e-12) << which << i;
+      // ... and not the left piece (its third derivative differs on this data).
+      EXPECT_GT(test::max_coord_diff(D(u[i], 3), third(P[i - 1], P[i], t[i - 1], t[i], hl)), 0.1) << which << i;
+    }
+    // At the domain's end the last piece answers.
+    EXPECT_LE(test::max_coord_diff(D(3, 2), second_end(P[2], P[3], t[2], t[3], 1)), 1e-13) << which;
+    for (int k = 4; k <= 6; ++k) {
+      EXPECT_EQ(D(1.0, k), V2(0, 0)) << which << k;
+      EXPECT_EQ(D(3.0, k), V2(0, 0)) << which << k;
+    }
+  }
+  // Catmull-Rom, alpha 0 (unit knot intervals, tangents (P_(i+1) - P_(i-1)) / 2); its
+  // segment j runs from P_(j+1) to P_(j+2) on [j, j + 1].
+  const std::vector<Pt> Q = {{0, 0}, {1, 2}, {2, -1}, {4, 1}, {5, 3}};
+  const CatmullRom<double, 2> cr(Q, 0.0);
+  const auto tan = [&](std::size_t i) { return (Q[i + 1] - Q[i - 1]) / 2; };
+  EXPECT_LE(test::max_coord_diff(cr.derivative_at(1.0, 2), second_start(Q[2], Q[3], tan(2), tan(3), 1)), 1e-13);
+  EXPECT_GT(test::max_coord_diff(cr.derivative_at(1.0, 2), second_end(Q[1], Q[2], tan(1), tan(2), 1)), 0.1);
+  EXPECT_LE(test::max_coord_diff(cr.derivative_at(2.0, 2), second_end(Q[2], Q[3], tan(2), tan(3), 1)), 1e-13);  // the end
+  EXPECT_LE(test::max_coord_diff(cr.derivative_at(1.5, 3), third(Q[2], Q[3], tan(2), tan(3), 1)), 1e-12);
+  for (int k = 4; k <= 6; ++k) EXPECT_EQ(cr.derivative_at(0.5, k), V2(0, 0)) << k;
+  // Lagrange: one polynomial piece of degree n; the n-th derivative is constant, n! times
+  // the leading coefficient: on y = x^3 through 4 nodes, y''' = 6, and zero above.
+  const Lagrange<double, 1> lag({-1, 0, 0.5, 2}, {P1(-1.0), P1(0.0), P1(0.125), P1(8.0)});
+  for (const double x : {-1.0, 0.3, 2.0}) {
+    EXPECT_NEAR(lag.derivative_at(x, 3)[0], 6, 1e-12) << x;
+    EXPECT_NEAR(lag.derivative_at(x, 2)[0], 6 * x, 1e-12) << x;
+    for (int k = 4; k <= 6; ++k) EXPECT_EQ(lag.derivative_at(x, k)[0], 0.0) << x << k;
+  }
+}
+
+// The fast paths against plain references: segment_index (a branch-free search over every
+// 64th param, then over a block) against std::upper_bound at every param, between params
+// and outside the domain, for sizes around the block length; the fused spline solve
+// against cubic_spline_slopes (the unfused Thomas solve) for the non-periodic boundaries:
+// the same diagonally dominant system solved with other roundings (spacing ratios up to
+// 100 here), so 1e-13 of the largest slope; evaluate_sorted into caller storage, and its
+// size check.
+TEST(CubicSpline, FastPathsAgreeWithTheReferences) {
+  std::mt19937_64 rng(6);
+  std::uniform_real_distribution<double> U(0.0, 1.0);
+  for (const std::size_t n : {1, 2, 3, 4, 63, 64, 65, 66, 127, 128, 129, 1000}) {
+    std::vector<double> u(n + 1);
+    std::vector<P1> P(n + 1);
+    u[0] = -3;
+    P[0] = P1(U(rng));
+    for (std::size_t i = 1; i <= n; ++i) {
+      u[i] = u[i - 1] + 0.01 + U(rng);
+      P[i] = P1(U(rng));
+    }
+    const Hermite<double, 1> h(u, P, finite_difference_tangents(u, P));
+    std::vector<double> q = {u[0] - 1, u[n] + 1};
+    for (std::size_t i = 0; i <= n; ++i) q.push_back(u[i]);
+    for (std::size_t i = 0; i < n; ++i) q.push_back((u[i] + u[i + 1]) / 2);
+    for (const double x : q) {
+      const auto expected = static_cast<std::size_t>(std::upper_bound(u.begin() + 1, u.end() - 1, x) - (u.begin() + 1));
+      EXPECT_EQ(h.segment_index(x), expected) << n << " " << x;
+    }
+    std::sort(q.begin(), q.end());
+    std::vector<P1> out(q.size());
+    h.evaluate_sorted(std::span<const double>(q), std::span<P1>(out));
+    for (std::size_t k = 0; k < q.size(); ++k) EXPECT_EQ(out[k], h(q[k])) << n << " " << q[k];
+    using B = CubicSpline<double, 1>::Boundary;
+    std::vector<B> boundaries = {B::natural(), B::clamped(V1(0.5), V1(-2.0)), B::general({1, V1(1.0)}, {2, V1(3.0)}),
+                                 B::general({2, V1(-1.0)}, {1, V1(0.25)})};
+    if (n >= 3) boundaries.push_back(B::not_a_knot());
+    for (const B& b : boundaries) {
+      const CubicSpline<double, 1> s(u, P, b);
+      const auto ref = cubic_spline_slopes(u, P, b);
+      double scale = 1, worst = 0;
+      for (std::size_t i = 0; i <= n; ++i) {
+        scale = std::max(scale, std::abs(ref[i][0]));
+        worst = std::max(worst, std::abs(s.slopes()[i][0] - ref[i][0]));
+      }
+      EXPECT_LE(worst, 1e-13 * scale) << n << " " << static_cast<int>(b.kind);
+    }
+  }
+  const CubicSpline<double, 1> s({0, 1, 2}, ys({0, 1, 0}));
+  const std::vector<double> t = {0.5, 1.5};
+  std::vector<P1> small(1);
+  EXPECT_INVALID_ARGUMENT(s.evaluate_sorted(std::span<const double>(t), std::span<P1>(small)), "out", "one point per parameter");
 }
 
 }  // namespace

@@ -4,6 +4,8 @@
 #pragma once
 
 #include <cmath>
+#include <limits>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -200,6 +202,104 @@ std::vector<Vector<T, D>> cubic_spline_slopes(const std::vector<T>& u, const std
   return r;
 }
 
+namespace detail {
+
+/// The slopes of a non-periodic cubic spline, as cubic_spline_slopes computes them, in
+/// two sweeps over the data and one scratch array: the forward sweep builds each row of
+/// the system from the data as it goes (no arrays of h_i, d_i or of the three diagonals)
+/// and eliminates it at once (Thomas' algorithm [GolubVanLoan13, 4.3.6], keeping only the
+/// multipliers c_i / pivot_i that back substitution needs, one reciprocal per row); the
+/// backward sweep substitutes and checks that the Hermite curve's Bézier control points
+/// P_i + h_i s_i / 3 and P_(i+1) - h_i s_(i+1) / 3 are finite. The checks of the data are
+/// folded into the sweeps without branches: every h_i in (0, inf) (params finite and
+/// strictly increasing), every control point finite (points finite, no overflow; a
+/// non-finite point or slope makes some control point non-finite). Returns false, leaving
+/// s unspecified, for a case it does not take (periodic; not-a-knot below 4 points, whose
+/// small-n forms cubic_spline_slopes gives; an order or end value that is not valid) and
+/// for data failing a check: the caller then runs cubic_spline_slopes and the checking
+/// Hermite constructor, which name the faulty field. Same arithmetic as
+/// cubic_spline_slopes up to rounding (multiplication by the pivot's reciprocal). O(n).
+template <class T, int D>
+bool cubic_spline_slopes_fused(const std::vector<T>& u, const std::vector<Point<T, D>>& P, const SplineBoundary<T, D>& bc,
+                               std::vector<Vector<T, D>>& s) {
+  using V = Vector<T, D>;
+  using Kind = typename SplineBoundary<T, D>::Kind;
+  if (P.size() < 2 || u.size() != P.size() || bc.kind == Kind::periodic) return false;
+  const std::size_t n = P.size() - 1;
+  const bool nak = bc.kind == Kind::not_a_knot;
+  if (nak && n < 3) return false;
+  for (const auto* e : {&bc.start, &bc.end}) {
+    if (e->order != 1 && e->order != 2) return false;
+    if (!all_coordinates_finite(e->value)) return false;
+  }
+  if (!std::isfinite(u[n] - u[0])) return false;  // also catches a non-finite end param
+  const auto hh = [&](std::size_t i) { return u[i + 1] - u[i]; };
+  const auto dd = [&](std::size_t i) { return (P[i + 1] - P[i]) / hh(i); };
+
+  // The end rows: b0 s_0 + c0 s_1 = r0 and an s_(n-1) + bn s_n = rn (as cubic_spline_slopes).
+  T b0, c0, an, bn;
+  V r0, rn;
+  if (nak) {
+    const T h0 = hh(0), h1 = hh(1), s0 = h0 + h1;
+    b0 = h1;
+    c0 = s0;
+    r0 = ((h0 + 2 * s0) * h1 * dd(0) + (h0 * h0) * dd(1)) / s0;
+    const T g0 = hh(n - 1), g1 = hh(n - 2), s1 = g0 + g1;
+    bn = g1;
+    an = s1;
+    rn = ((g0 * g0) * dd(n - 2) + (2 * s1 + g0) * g1 * dd(n - 1)) / s1;
+  } else {
+    if (bc.start.order == 1) {
+      b0 = 1, c0 = 0, r0 = bc.start.value;
+    } else {
+      b0 = 2, c0 = 1, r0 = T(3) * dd(0) - (hh(0) / 2) * bc.start.value;
+    }
+    if (bc.end.order == 1) {
+      bn = 1, an = 0, rn = bc.end.value;
+    } else {
+      bn = 2, an = 1, rn = T(3) * dd(n - 1) + (hh(n - 1) / 2) * bc.end.value;
+    }
+  }
+
+  s.resize(n + 1);
+  const auto cp = std::make_unique_for_overwrite<T[]>(n + 1);  // the multipliers, not zeroed first
+  constexpr T big = std::numeric_limits<T>::max();
+  bool ok = true;
+  T inv = 1 / b0;
+  cp[0] = c0 * inv;
+  s[0] = r0 * inv;
+  T h_prev = hh(0);
+  ok &= (h_prev > 0) & (h_prev <= big);
+  V d_prev = (P[1] - P[0]) / h_prev;
+  for (std::size_t i = 1; i < n; ++i) {
+    const T h = u[i + 1] - u[i];
+    ok &= (h > 0) & (h <= big);
+    const V d = (P[i + 1] - P[i]) / h;
+    // Row i: h_i s_(i-1) + 2 (h_(i-1) + h_i) s_i + h_(i-1) s_(i+1) = 3 (h_i d_(i-1) + h_(i-1) d_i).
+    inv = 1 / (2 * (h_prev + h) - h * cp[i - 1]);
+    cp[i] = h_prev * inv;
+    s[i] = (T(3) * (h * d_prev + h_prev * d) - h * s[i - 1]) * inv;
+    h_prev = h;
+    d_prev = d;
+  }
+  const T pivot = bn - an * cp[n - 1];
+  ok &= std::isfinite(pivot) & (pivot != 0);
+  s[n] = (rn - an * s[n - 1]) / pivot;
+
+  // Back substitution; the Bézier control points' finiteness accumulates in acc (x * 0 is 0
+  // for finite x, NaN otherwise).
+  T acc = 0;
+  for (std::size_t i = n; i-- > 0;) {
+    s[i] -= cp[i] * s[i + 1];
+    const T h3 = (u[i + 1] - u[i]) / 3;
+    const Point<T, D> a = P[i] + h3 * s[i], b = P[i + 1] - h3 * s[i + 1];
+    for (int k = 0; k < D; ++k) acc += a[k] * 0 + b[k] * 0;
+  }
+  return ok && acc == 0;
+}
+
+}  // namespace detail
+
 /// The interpolating C^2 cubic spline through (u_i, P_i), i = 0..n (n >= 1), with the end
 /// conditions of SplineBoundary (default natural); d = 1 is the classic y(x) spline, d >= 2
 /// a parametric curve (periodic: closed). Stored as the Hermite curve of its values and
@@ -235,6 +335,7 @@ class CubicSpline {
   [[nodiscard]] PointType operator()(T u) const { return h_(u); }
   [[nodiscard]] VectorType derivative_at(T u, int k = 1) const { return h_.derivative_at(u, k); }
   [[nodiscard]] std::vector<PointType> evaluate_sorted(std::span<const T> u) const { return h_.evaluate_sorted(u); }
+  void evaluate_sorted(std::span<const T> u, std::span<PointType> out) const { h_.evaluate_sorted(u, out); }
 
   [[nodiscard]] CubicSpline reverse() const {
     Boundary b = bc_;
@@ -258,8 +359,12 @@ class CubicSpline {
  private:
   CubicSpline(const Boundary& b, Hermite<T, D> h) : bc_(b), h_(std::move(h)) {}
 
+  /// The fused solve (checks included) when it takes the case, else cubic_spline_slopes and
+  /// the checking Hermite constructor, which throw naming the field.
   static Hermite<T, D> make(std::vector<T> u, std::vector<PointType> P, const Boundary& b) {
-    std::vector<VectorType> s = cubic_spline_slopes(u, P, b);
+    std::vector<VectorType> s;
+    if (detail::cubic_spline_slopes_fused(u, P, b, s)) return Hermite<T, D>(detail::Unchecked{}, std::move(u), std::move(P), std::move(s));
+    s = cubic_spline_slopes(u, P, b);
     return Hermite<T, D>(std::move(u), std::move(P), std::move(s));
   }
 
