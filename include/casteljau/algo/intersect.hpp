@@ -751,6 +751,25 @@ std::optional<Intersections<T>> low_degree_pieces(const Pieces<T, 2>& pa, const 
   if (!collect(pa, sa) || !collect(pb, sb)) return std::nullopt;
   const auto frame = isect_fast::unit_frame<T>(sa, sb);
   if (!frame) return std::nullopt;
+  // Control boxes of the pieces, so that pairs far apart cost one box test (as the general
+  // engine's arcs): within twice the near-miss distance (in model units) they go on.
+  auto boxes = [](const std::vector<Span>& pieces_points) {
+    std::vector<Box<T, 2>> out;
+    out.reserve(pieces_points.size());
+    for (const auto& P : pieces_points) {
+      Box<T, 2> b = Box<T, 2>::empty_box();
+      for (const auto& q : P) b.add(q);
+      out.push_back(b);
+    }
+    return out;
+  };
+  const std::vector<Box<T, 2>> ba = boxes(sa), bb = boxes(sb);
+  const T slack = 2 * frame->tol / frame->scale;
+  // b's pieces in runs of 16 consecutive ones with the box of the run: consecutive pieces
+  // are neighbours in the plane, so a piece of a far from a run costs one test for all 16.
+  constexpr std::size_t run = 16;
+  std::vector<Box<T, 2>> runs((sb.size() + run - 1) / run, Box<T, 2>::empty_box());
+  for (std::size_t j = 0; j < sb.size(); ++j) runs[j / run].add(bb[j]);
   constexpr T joint = T(1e-9);
   struct Found {
     T ta, tb, s;
@@ -759,6 +778,11 @@ std::optional<Intersections<T>> low_degree_pieces(const Pieces<T, 2>& pa, const 
   std::vector<Found> found;
   for (std::size_t i = 0; i < sa.size(); ++i) {
     for (std::size_t j = 0; j < sb.size(); ++j) {
+      if (j % run == 0 && !boxes_meet(ba[i], runs[j / run], slack)) {
+        j += run - 1;
+        continue;
+      }
+      if (!boxes_meet(ba[i], bb[j], slack)) continue;
       const auto r = isect_fast::intersect_in_frame<T>(sa[i], sb[j], *frame);
       if (!r) return std::nullopt;
       for (int k = 0; k < r->count; ++k) {
