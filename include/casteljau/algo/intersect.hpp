@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "casteljau/algo/flatten.hpp"
+#include "casteljau/algo/intersect_low_degree.hpp"
 #include "casteljau/core/segment.hpp"
 #include "casteljau/basis/roots.hpp"
 #include "casteljau/curves/path.hpp"
@@ -710,6 +711,106 @@ Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
   return out;
 }
 
+/// The fast path (algo/intersect_low_degree.hpp) for two polynomial pieces of degree 1 to
+/// 3 whose parameters map affinely onto the curves' domains da and db; nothing when it
+/// does not apply or refuses. Its points are the general engine's answer: isolated
+/// crossings, reported with the pieces' own values at their parameters.
+template <class T>
+std::optional<Intersections<T>> low_degree(const Bezier<T, 2>& a, const Interval<T>& da, const Bezier<T, 2>& b, const Interval<T>& db) {
+  const auto r = isect_fast::intersect_low_degree<T>(a.points(), b.points());
+  if (!r) return std::nullopt;
+  Intersections<T> out;
+  out.points.reserve(static_cast<std::size_t>(r->count));
+  for (int i = 0; i < r->count; ++i) {
+    const auto [s, t] = r->st[static_cast<std::size_t>(i)];
+    // Lifted as Pieces::global_parameter does.
+    const T ta = casteljau::detail::map_parameter(s, a.domain(), da), tb = casteljau::detail::map_parameter(t, b.domain(), db);
+    out.points.push_back({ta, tb, a(s), IntersectionKind::crossing});
+  }
+  return out;
+}
+
+/// The fast path for two curves whose pieces are all polynomial of degree 1 to 3: every
+/// pair of pieces in one shared frame (the general engine's). Nothing when a piece does
+/// not qualify, a pair is refused, a point lies within 1e-9 of a joint of pieces (the
+/// general engine merges what both pieces see there), or two points of different pairs
+/// are closer than 1e-3 of their pieces in both parameters (see Limits::near_pair).
+template <class T>
+std::optional<Intersections<T>> low_degree_pieces(const Pieces<T, 2>& pa, const Pieces<T, 2>& pb) {
+  using Span = std::span<const Point<T, 2>>;
+  std::vector<Span> sa, sb;
+  auto collect = [](const Pieces<T, 2>& p, std::vector<Span>& out) {
+    out.reserve(p.size());
+    for (const auto& seg : p.segments()) {
+      const auto* z = std::get_if<Bezier<T, 2>>(&seg);
+      if (!z || z->degree() < 1 || z->degree() > isect_fast::max_degree) return false;
+      out.emplace_back(z->points());
+    }
+    return true;
+  };
+  if (!collect(pa, sa) || !collect(pb, sb)) return std::nullopt;
+  const auto frame = isect_fast::unit_frame<T>(sa, sb);
+  if (!frame) return std::nullopt;
+  // Control boxes of the pieces, so that pairs far apart cost one box test (as the general
+  // engine's arcs): within twice the near-miss distance (in model units) they go on.
+  auto boxes = [](const std::vector<Span>& pieces_points) {
+    std::vector<Box<T, 2>> out;
+    out.reserve(pieces_points.size());
+    for (const auto& P : pieces_points) {
+      Box<T, 2> b = Box<T, 2>::empty_box();
+      for (const auto& q : P) b.add(q);
+      out.push_back(b);
+    }
+    return out;
+  };
+  const std::vector<Box<T, 2>> ba = boxes(sa), bb = boxes(sb);
+  const T slack = 2 * frame->tol / frame->scale;
+  // b's pieces in runs of 16 consecutive ones with the box of the run: consecutive pieces
+  // are neighbours in the plane, so a piece of a far from a run costs one test for all 16.
+  constexpr std::size_t run = 16;
+  std::vector<Box<T, 2>> runs((sb.size() + run - 1) / run, Box<T, 2>::empty_box());
+  for (std::size_t j = 0; j < sb.size(); ++j) runs[j / run].add(bb[j]);
+  constexpr T joint = T(1e-9);
+  struct Found {
+    T ta, tb, s;
+    std::size_t i, j;
+  };
+  std::vector<Found> found;
+  for (std::size_t i = 0; i < sa.size(); ++i) {
+    for (std::size_t j = 0; j < sb.size(); ++j) {
+      if (j % run == 0 && !boxes_meet(ba[i], runs[j / run], slack)) {
+        j += run - 1;
+        continue;
+      }
+      if (!boxes_meet(ba[i], bb[j], slack)) continue;
+      const auto r = isect_fast::intersect_in_frame<T>(sa[i], sb[j], *frame);
+      if (!r) return std::nullopt;
+      for (int k = 0; k < r->count; ++k) {
+        const auto [s, t] = r->st[static_cast<std::size_t>(k)];
+        if ((i > 0 && s < joint) || (i + 1 < sa.size() && s > 1 - joint) || (j > 0 && t < joint) || (j + 1 < sb.size() && t > 1 - joint))
+          return std::nullopt;
+        found.push_back({pa.global_parameter(i, s), pb.global_parameter(j, t), s, i, j});
+      }
+    }
+  }
+  std::sort(found.begin(), found.end(), [](const Found& x, const Found& y) { return x.ta < y.ta; });
+  const T near = isect_fast::Limits<T>::near_pair;
+  T longest = 0;  // the longest piece of a: no pair farther apart than near * longest in ta is near
+  for (std::size_t i = 0; i < pa.size(); ++i) longest = std::max(longest, pa.segment_domain(i).length());
+  for (std::size_t k = 0; k < found.size(); ++k) {
+    for (std::size_t l = k + 1; l < found.size() && found[l].ta - found[k].ta < near * longest; ++l) {
+      const Found &x = found[k], &y = found[l];
+      const T la = std::max(pa.segment_domain(x.i).length(), pa.segment_domain(y.i).length());
+      const T lb = std::max(pb.segment_domain(x.j).length(), pb.segment_domain(y.j).length());
+      if (y.ta - x.ta < near * la && std::abs(y.tb - x.tb) < near * lb) return std::nullopt;
+    }
+  }
+  Intersections<T> out;
+  out.points.reserve(found.size());
+  for (const auto& h : found) out.points.push_back({h.ta, h.tb, std::get<Bezier<T, 2>>(pa.segments()[h.i])(h.s), IntersectionKind::crossing});
+  return out;
+}
+
 }  // namespace detail::isect
 
 /// The common points and overlaps of two plane curves of any types (through their exact
@@ -743,8 +844,18 @@ template <class CA, class CB>
   requires PiecewiseBezierCurve<CA> && PiecewiseBezierCurve<CB> && (CA::dimension == 2) && (CB::dimension == 2) &&
            std::same_as<typename CA::Scalar, typename CB::Scalar>
 Intersections<typename CA::Scalar> intersect(const CA& a, const CB& b) {
+  using T = typename CA::Scalar;
+  // Two Bézier curves of degree <= 3 (the common case, W6): the fast path, on their
+  // control points directly, without building pieces.
+  if constexpr (std::same_as<CA, Bezier<T, 2>> && std::same_as<CB, Bezier<T, 2>>) {
+    if (auto r = detail::isect::low_degree(a, a.domain(), b, b.domain())) return std::move(*r);
+  }
   const auto& pa = pieces(a);
   const auto& pb = pieces(b);
+  if constexpr (!(std::same_as<CA, Bezier<T, 2>> && std::same_as<CB, Bezier<T, 2>>)) {
+    // Polynomial pieces of degree <= 3 on both sides (polylines, paths, cubic splines...).
+    if (auto r = detail::isect::low_degree_pieces(pa, pb)) return std::move(*r);
+  }
   return detail::isect::solve(pa, &pb);
 }
 
