@@ -200,6 +200,46 @@ TEST(IntersectLowDegree, AgreesWithGeneralEngineOnRandomPairs) {
   EXPECT_GT(points, pairs / 3);  // the sample does exercise crossings
 }
 
+TEST(IntersectLowDegree, ShallowCrossingsRefusedOrAgree) {
+  // A random cubic and its copy turned by a small angle about one of its points: a
+  // crossing there at that angle, the curves within about angle x size of each other
+  // everywhere (farther than the near-miss distance). Wherever the fast path answers, the
+  // general engine finds the same points; the crossing itself is always found.
+  test::SplitMix64 rng(10);
+  int answered = 0;
+  // (Smaller angles keep the general engine subdividing for long: curves within 1e-6 of
+  // their size everywhere take it about 0.5 s.)
+  for (int i = 0; i < 20; ++i) {
+    const B2 a(test::random_points<double, 2>(rng, 3));
+    const double t0 = rng.uniform(0.1, 0.9);
+    const P2 c = a(t0);
+    for (const double angle : {1e-2, 1e-3}) {
+      const double co = std::cos(angle), si = std::sin(angle);
+      std::vector<P2> Q;
+      for (const auto& p : a.points()) {
+        const auto v = p - c;
+        Q.push_back(c + Vector<double, 2>{co * v[0] - si * v[1], si * v[0] + co * v[1]});
+      }
+      const B2 b(Q);
+      const auto f = fast(a, b);
+      const auto g = general(a, b);
+      const auto r = intersect(a, b);
+      // The crossing at t0 (on b at t0 too), to eps / angle in the parameters.
+      bool found = false;
+      for (const auto& h : r.points) found = found || (std::abs(h.ta - t0) < 1e-13 / angle && std::abs(h.tb - t0) < 1e-13 / angle);
+      EXPECT_TRUE(found) << i << " " << angle;
+      if (!f) continue;
+      ++answered;
+      ASSERT_EQ(f->count, static_cast<int>(g.points.size())) << i << " " << angle;
+      for (int k = 0; k < f->count; ++k) {
+        EXPECT_NEAR(f->st[std::size_t(k)].first, g.points[std::size_t(k)].ta, 1e-13 / angle);
+        EXPECT_NEAR(f->st[std::size_t(k)].second, g.points[std::size_t(k)].tb, 1e-13 / angle);
+      }
+    }
+  }
+  EXPECT_GE(answered, 20);  // at 1e-2 at least
+}
+
 TEST(IntersectLowDegree, PiecewiseCurvesAgreeWithGeneralEngine) {
   // A random polyline of 6 segments and a random cubic B-spline of 3 pieces against a
   // random cubic: every pair of pieces in one frame, points lifted to the curves'
