@@ -633,9 +633,9 @@ Example:
   echo '{"points": [[0,0],[4,0],[4,4],[0,4]], "scheme": "chaikin", "iterations": 1, "closed": true}' | casteljau subdivide
   {"points":[[1.0,0.0],[3.0,0.0],[4.0,1.0],[4.0,3.0],[3.0,4.0],[1.0,4.0],[0.0,3.0],[0.0,1.0]],"limit":{"type":"bspline","degree":2,"knots":[0.0,1.0,2.0,3.0,4.0,5.0,6.0,7.0,8.0],"points":[[0.0,0.0],[4.0,0.0],[4.0,4.0],[0.0,4.0],[0.0,0.0],[4.0,0.0]]}})";
 
-constexpr std::string_view fit_details = R"(Fits a clamped bspline to points ([PT97] chapter 9). Parameters by the
-parametrization (uniform, chord (default), centripetal), divided by the last so that the
-curve's domain is [0, 1].
+constexpr std::string_view fit_details = R"(Fits a bspline to points ([PT97] chapter 9): clamped, or unclamped and
+periodic when closed. Parameters by the parametrization (uniform, chord (default),
+centripetal), divided by the last so that the curve's domain is [0, 1].
 
   control_points = number of points (+ 1 per end derivative): global interpolation
       (knots by averaging the parameters, [PT97] A9.1, eq. 9.8; end derivatives 9.2.2);

@@ -198,6 +198,12 @@ class ClosedFitTest(CliTest):
         self.bad("fit", {"points": Q[:3], "degree": 3, "control_points": 3, "closed": True}, "points")
         self.bad("fit", {"points": Q, "degree": 3, "control_points": 5, "closed": True, "start_derivative": [1, 0]},
                  "start_derivative")
+        # Coordinates near the largest double: the rotations overflow; reported, never output
+        # as inf or NaN.
+        B = np.array(blob(40, seed=81))
+        huge = (B * (1.7e308 / np.max(np.abs(B)))).tolist()
+        self.bad("fit", {"points": huge, "degree": 3, "control_points": 10, "closed": True, "parametrization": "uniform"},
+                 "points", contains="not finite")
 
 
 if __name__ == "__main__":

@@ -369,7 +369,9 @@ BSpline<T, D> approximate_closed(const std::vector<Point<T, D>>& Q, int p, const
   for (std::size_t c = 0; c < n; ++c) {
     const std::size_t j = c >= P ? c - P : nb + c;
     for (int d = 0; d < D; ++d) C[c][d] = x[j * D + static_cast<std::size_t>(d)];
-    if (!detail::all_finite_point(C[c])) throw NumericalError("fit: the closed least-squares system is singular");
+    if (!detail::all_finite_point(C[c])) {
+      throw NumericalError("fit: the closed least-squares solution is not finite (overflow near the largest double, or a singular system)");
+    }
   }
   return detail::periodic_bspline<T, D>(p, K, C);
 }
