@@ -146,6 +146,19 @@ class FrameTest(CliTest):
             self.assert_close([got["frame"]["curvature"][j]], [1 / 3], 1e-15)
         self.assertNotIn("binormal", got["frame"])
         self.assertNotIn("torsion", got["frame"])
+        # The nine-point NURBS circle of radius 2 about (-1, 0.5) [PT97, Ex. 7.2]: at every
+        # parameter (the knots included, where the right-hand span answers) kappa = 1/2.
+        s = math.sqrt(0.5)
+        corners = [(1, 0), (1, 1), (0, 1), (-1, 1), (-1, 0), (-1, -1), (0, -1), (1, -1), (1, 0)]
+        nurbs = {"type": "nurbs", "degree": 2, "knots": [0, 0, 0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1, 1, 1],
+                 "points": [[-1 + 2 * x, 0.5 + 2 * y] for x, y in corners], "weights": [1, s, 1, s, 1, s, 1, s, 1]}
+        ts = [0, 0.1, 0.25, 0.5, 0.6, 0.75, 0.99, 1]
+        got = self.ok("eval", {"curve": nurbs, "t": ts, "frame": True})
+        for j, p in enumerate(got["points"]):
+            radial = [(p[0] + 1) / 2, (p[1] - 0.5) / 2]
+            self.assert_close(got["frame"]["tangent"][j], [-radial[1], radial[0]], 1e-15)
+            self.assert_close(got["frame"]["normal"][j], [-radial[0], -radial[1]], 1e-15)
+            self.assert_close([got["frame"]["curvature"][j]], [0.5], 1e-15)
         # 3-D: a NURBS quarter circle of radius 3 in the plane spanned by (1,0,0), (0,1,1)/sqrt 2:
         # torsion 0, binormal the plane's normal (0,-1,1)/sqrt 2, normal to the centre.
         s = math.sqrt(0.5)
