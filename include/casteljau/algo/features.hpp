@@ -164,7 +164,7 @@ std::optional<Vector<T, 2>> end_direction(const Piece& c, bool at_end) {
 /// the rules above and not at all at the domain's ends. Parameters are accurate to a few eps of the piece's parameter range at
 /// simple roots. Features at the domain's ends are not reported. Cost per piece: root
 /// isolation on D forms of degree up to 2n - 1 and one of degree up to 3n - 3 (about
-/// 0.3 s of CPU at degree 1000, 1.1 s rational; docs/accuracy.md).
+/// 0.3 s of CPU at degree 1000, 1 s rational; docs/accuracy.md).
 template <class C>
   requires PiecewiseBezierCurve<C>
 Features<typename C::Scalar, C::dimension> features(const C& c) {
