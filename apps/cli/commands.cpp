@@ -88,11 +88,31 @@ void call_library(F&& f, std::string_view numerical_field = "curve") {
   }
 }
 
+/// eval's `frame`: one list per quantity, one entry per parameter; the lists a dimension
+/// does not have (normal in 1-D, binormal and torsion outside 3-D) are left out.
+OrderedJson frame_json(const std::vector<io::AnyFrame>& frames) {
+  OrderedJson tangent = OrderedJson::array(), normal = OrderedJson::array(), binormal = OrderedJson::array(),
+              curvature = OrderedJson::array(), torsion = OrderedJson::array();
+  for (const auto& f : frames) {
+    tangent.push_back(numbers_json(f.tangent));
+    if (!f.normal.empty()) normal.push_back(numbers_json(f.normal));
+    if (!f.binormal.empty()) binormal.push_back(numbers_json(f.binormal));
+    curvature.push_back(f.curvature);
+    if (f.torsion) torsion.push_back(*f.torsion);
+  }
+  OrderedJson out{{"tangent", std::move(tangent)}};
+  if (!normal.empty()) out["normal"] = std::move(normal);
+  if (!binormal.empty()) out["binormal"] = std::move(binormal);
+  out["curvature"] = std::move(curvature);
+  if (!torsion.empty()) out["torsion"] = std::move(torsion);
+  return out;
+}
+
 // ---------------------------------------------------------------------------------------
 
 Response eval(const Json& req) {
   const io::Fields f(req, "an eval request");
-  f.allow_only({"curve", "t", "derivatives", "curvature"}, "an eval request");
+  f.allow_only({"curve", "t", "derivatives", "curvature", "frame"}, "an eval request");
   const io::AnyCurve curve = read_curve(f);
   const std::vector<double> ts = io::numbers_from_json(f.required("t"), "t");
   int k = 0;
@@ -106,6 +126,8 @@ Response eval(const Json& req) {
   }
   bool with_curvature = false;
   if (const Json* cj = f.optional("curvature")) with_curvature = io::boolean_from_json(*cj, "curvature");
+  bool with_frame = false;  // beyond shared/spec/cli.md (docs/cli.md)
+  if (const Json* fj = f.optional("frame")) with_frame = io::boolean_from_json(*fj, "frame");
   Response r;
   call_library([&] {
     r.json = OrderedJson{{"points", points_json(io::evaluate(curve, ts))}};
@@ -115,6 +137,7 @@ Response eval(const Json& req) {
       r.json["derivatives"] = std::move(derivatives);
     }
     if (with_curvature) r.json["curvature"] = numbers_json(io::curvature(curve, ts));
+    if (with_frame) r.json["frame"] = frame_json(io::frames(curve, ts));
   });
   return r;
 }
@@ -286,18 +309,6 @@ Response fit(const Json& req) {
     throw InvalidArgument("points", e.what());
   }
   return out;
-}
-
-Response bounds(const Json& req) {
-  const io::Fields f(req, "a bounds request");
-  f.allow_only({"curve"}, "a bounds request");
-  const io::AnyCurve curve = read_curve(f);
-  Response r;
-  call_library([&] {
-    const io::AnyBox box = io::bounds(curve);
-    r.json = OrderedJson{{"min", numbers_json(box.lo)}, {"max", numbers_json(box.hi)}};
-  });
-  return r;
 }
 
 Response to_bezier(const Json& req) {
@@ -473,6 +484,23 @@ Response length(const Json& req) {
   return r;
 }
 
+// bounds (here beside the other queries for call_query: its optional from / to go
+// beyond shared/spec/cli.md, see docs/cli.md).
+Response bounds(const Json& req) {
+  const io::Fields f(req, "a bounds request");
+  f.allow_only({"curve", "from", "to"}, "a bounds request");
+  const io::AnyCurve curve = read_curve(f);
+  const auto from = optional_number(f, "from"), to = optional_number(f, "to");
+  Response r;
+  call_query(
+      [&] {
+        const io::AnyBox box = from || to ? io::bounds(curve, from, to) : io::bounds(curve);
+        r.json = OrderedJson{{"min", numbers_json(box.lo)}, {"max", numbers_json(box.hi)}};
+      },
+      {"from", "to"});
+  return r;
+}
+
 Response param_at_length(const Json& req) {
   const io::Fields f(req, "a param_at_length request");
   f.allow_only({"curve", "lengths"}, "a param_at_length request");
@@ -560,15 +588,22 @@ constexpr std::string_view eval_details = R"(Evaluates a curve at parameters, op
 curve's parameter.
 
 Request:  curve, t (array of numbers), derivatives (optional integer k >= 0, default 0),
-          curvature (optional boolean, default false)
+          curvature (optional boolean, default false), frame (optional boolean, default
+          false; an extension of the contract)
 Response: points (one per t); when k > 0, derivatives: k arrays (orders 1..k), each with
           one vector per t; with curvature, curvature: one number per t (signed in 2-D,
           positive turning left; >= 0 otherwise; an error where the velocity is zero).
-          Parameters outside the domain extrapolate the first or last piece.
+          With frame, frame: {tangent, normal, binormal, curvature, torsion}, one entry
+          per t: unit tangent; normal (2-D: the tangent turned left; 3-D, 4-D: the
+          principal normal, an error where the curvature is zero); binormal and torsion in
+          3-D only; an error where the velocity is zero. At a break the right-hand piece
+          answers. Parameters outside the domain extrapolate the first or last piece.
 
 Example:
   echo '{"curve": {"type": "bezier", "points": [[0,0],[1,2],[3,2],[4,0]]}, "t": [0, 0.5], "derivatives": 1}' | casteljau eval
-  {"points":[[0.0,0.0],[2.0,1.5]],"derivatives":[[[3.0,6.0],[4.5,0.0]]]})";
+  {"points":[[0.0,0.0],[2.0,1.5]],"derivatives":[[[3.0,6.0],[4.5,0.0]]]}
+  echo '{"curve": {"type": "bezier", "points": [[0,0,0],[1,0,0],[1,1,0],[1,1,1]]}, "t": [0], "frame": true}' | casteljau eval
+  {"points":[[0.0,0.0,0.0]],"frame":{"tangent":[[1.0,0.0,0.0]],"normal":[[0.0,1.0,0.0]],"binormal":[[0.0,0.0,1.0]],"curvature":[0.6666666666666666],"torsion":[0.3333333333333333]}})";
 
 constexpr std::string_view split_details = R"(Splits a curve at t into two curves of the same type. Bezier and rational_bezier
 halves are each on [0, 1] (t in [0, 1]); bspline and nurbs halves keep their parameter
@@ -656,14 +691,18 @@ Example:
   echo '{"points": [[0,0],[1,1],[2,0]], "degree": 2, "control_points": 3, "parametrization": "uniform"}' | casteljau fit
   {"curve":{"type":"bspline","degree":2,"knots":[0.0,0.0,0.0,1.0,1.0,1.0],"points":[[0.0,0.0],[1.0,2.0],[2.0,0.0]]},"max_error":0.0})";
 
-constexpr std::string_view bounds_details = R"(The tight axis-aligned box of a curve over its domain (not of its control points).
+constexpr std::string_view bounds_details = R"(The tight axis-aligned box of a curve over its domain (not of its control points),
+or over the parameter range [from, to] (an extension of the contract).
 
-Request:  curve
+Request:  curve, from, to (optional numbers in the domain, from <= to; default: the
+          domain's ends)
 Response: min, max (points)
 
 Example:
   echo '{"curve": {"type": "bezier", "points": [[0,0],[1,2],[2,0]]}}' | casteljau bounds
-  {"min":[0.0,0.0],"max":[2.0,1.0]})";
+  {"min":[0.0,0.0],"max":[2.0,1.0]}
+  echo '{"curve": {"type": "bezier", "points": [[0,0],[1,2],[2,0]]}, "to": 0.25}' | casteljau bounds
+  {"min":[0.0,0.0],"max":[0.5,0.75]})";
 
 constexpr std::string_view to_bezier_details = R"(Converts a curve to a path of bezier / rational_bezier segments with the same
 parametrisation (the same breaks). A bezier or rational_bezier becomes one segment on [0, 1].

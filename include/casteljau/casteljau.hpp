@@ -10,6 +10,7 @@
 #include "casteljau/algo/evaluate.hpp"
 #include "casteljau/algo/features.hpp"
 #include "casteljau/algo/flatten.hpp"
+#include "casteljau/algo/frame.hpp"
 #include "casteljau/algo/length.hpp"
 #include "casteljau/algo/project.hpp"
 #include "casteljau/algo/reduce.hpp"

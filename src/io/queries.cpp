@@ -2,13 +2,17 @@
 // Pieces<double, D> for D = 1..4 only (a curve reaches it through its exact pieces).
 #include "casteljau/io/queries.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 #include <variant>
 
 #include "casteljau/algo/area.hpp"
+#include "casteljau/algo/bounds.hpp"
 #include "casteljau/algo/curvature.hpp"
 #include "casteljau/algo/distance.hpp"
 #include "casteljau/algo/features.hpp"
+#include "casteljau/algo/frame.hpp"
 #include "casteljau/algo/length.hpp"
 #include "casteljau/algo/project.hpp"
 
@@ -57,6 +61,21 @@ double length(const AnyCurve& c, std::optional<double> from, std::optional<doubl
       pieces(c));
 }
 
+AnyBox bounds(const AnyCurve& c, std::optional<double> from, std::optional<double> to) {
+  return std::visit(
+      [&]<class P>(const P& p) {
+        const auto dom = p.domain();
+        const auto b = casteljau::bounds(p, from.value_or(dom.lo), to.value_or(dom.hi));
+        AnyBox out;
+        for (int k = 0; k < P::dimension; ++k) {
+          out.lo.push_back(b.lo[k]);
+          out.hi.push_back(b.hi[k]);
+        }
+        return out;
+      },
+      pieces(c));
+}
+
 std::vector<double> param_at_length(const AnyCurve& c, std::span<const double> lengths) {
   return std::visit(
       [&]<class P>(const P& p) {
@@ -93,6 +112,45 @@ std::vector<double> curvature(const AnyCurve& c, std::span<const double> t) {
                                       (kappa ? " (it is not representable)" : ": the velocity is zero (a cusp or a stop)"));
           }
           out.push_back(*kappa);
+        }
+        return out;
+      },
+      pieces(c));
+}
+
+std::vector<AnyFrame> frames(const AnyCurve& c, std::span<const double> t) {
+  return std::visit(
+      [&]<class P>(const P& p) {
+        constexpr int D = P::dimension;
+        std::vector<AnyFrame> out;
+        for (std::size_t j = 0; j < t.size(); ++j) {
+          const std::string where = "t[" + std::to_string(j) + "]";
+          std::optional<Frame<double, D>> f;
+          try {
+            f = casteljau::frame(p, t[j]);
+          } catch (const InvalidArgument& e) {
+            throw InvalidArgument(where, e.problem());
+          }
+          if (!f) {
+            throw InvalidArgument(where, "the frame is undefined at t = " + format_number(t[j]) +
+                                             ": the velocity is zero (a cusp or a stop), the tangent has no direction");
+          }
+          if (D >= 3 && !f->normal) {
+            throw InvalidArgument(where, "the principal normal is undefined at t = " + format_number(t[j]) +
+                                             ": the curvature is zero (a straight stretch or a point of zero curvature)");
+          }
+          AnyFrame a;
+          a.tangent = coords(f->tangent);
+          if (f->normal) a.normal = coords(*f->normal);
+          if (f->binormal) a.binormal = coords(*f->binormal);
+          a.curvature = f->curvature;
+          a.torsion = f->torsion;
+          const auto finite = [](const std::vector<double>& v) { return std::all_of(v.begin(), v.end(), [](double x) { return std::isfinite(x); }); };
+          if (!finite(a.tangent) || !finite(a.normal) || !finite(a.binormal) || !std::isfinite(a.curvature) ||
+              (a.torsion && !std::isfinite(*a.torsion))) {
+            throw InvalidArgument(where, "the frame at t = " + format_number(t[j]) + " is not representable");
+          }
+          out.push_back(std::move(a));
         }
         return out;
       },

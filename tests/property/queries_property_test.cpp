@@ -1,8 +1,9 @@
 // Properties of the geometric queries on random curves: the closest point is no farther
 // than any sample (and the farthest no nearer), the arc length lies between the chord and
 // the control polygon's length and is additive, param_at_length inverts length, the
-// distance between curves is no larger than any sampled pair, and roots with their
-// multiplicities are recovered from products of linear factors.
+// distance between curves is no larger than any sampled pair, roots with their
+// multiplicities are recovered from products of linear factors, bounds over a range hold
+// their samples, and the Frenet frame is orthonormal with the textbook curvature and torsion.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -86,6 +87,60 @@ RC_GTEST_PROP(QueriesProperty, RootsWithMultiplicities, ()) {
     RC_ASSERT(std::abs(roots[i].t - slots[i] / 16.0) <= 1e-9);
     RC_ASSERT(roots[i].multiplicity == mult[i]);
   }
+}
+
+// bounds(c, from, to) holds every sample of the range, lies inside the whole box, and
+// touches the curve: each face equals the extreme sample refined by a ternary search over
+// its two neighbouring sample gaps (the coordinate is unimodal there unless two extrema
+// lie within 2/1000 of the range, when their values differ by far less than 1e-9).
+RC_GTEST_PROP(QueriesProperty, BoundsOverARangeHoldsAndTouchesItsSamples, ()) {
+  const int n = *rc::gen::inRange(1, 8);
+  const bool rational = *rc::gen::arbitrary<bool>();
+  const auto P = prop::control_points<2>(n);
+  const Pieces<double, 2> c = rational ? pieces(RationalBezier<double, 2>(P, prop::weights(n))) : pieces(Bezier<double, 2>(P));
+  double a = *prop::parameter(), b = *prop::parameter();
+  if (a > b) std::swap(a, b);
+  const auto box = bounds(c, a, b), whole = bounds(c);
+  auto at = [&](int i) { return a + (b - a) * i / 1000.0; };
+  for (int k = 0; k < 2; ++k) {
+    RC_ASSERT(box.lo[k] >= whole.lo[k] - 8 * eps && box.hi[k] <= whole.hi[k] + 8 * eps);
+    for (const double sign : {1.0, -1.0}) {  // the min of sign * x_k
+      int best = 0;
+      for (int i = 0; i <= 1000; ++i) {
+        const double v = sign * c(at(i))[k];
+        RC_ASSERT(v >= sign * (sign > 0 ? box.lo[k] : box.hi[k]) - 8 * eps);
+        if (v < sign * c(at(best))[k]) best = i;
+      }
+      double lo = at(std::max(best - 1, 0)), hi = at(std::min(best + 1, 1000));
+      for (int it = 0; it < 200 && hi - lo > 4 * eps; ++it) {
+        const double m1 = lo + (hi - lo) / 3, m2 = hi - (hi - lo) / 3;
+        if (sign * c(m1)[k] <= sign * c(m2)[k]) hi = m2; else lo = m1;
+      }
+      const double refined = std::min(sign * c(lo)[k], sign * c(hi)[k]);
+      RC_ASSERT(std::abs(refined - sign * (sign > 0 ? box.lo[k] : box.hi[k])) <= 1e-9);
+    }
+  }
+}
+
+// The Frenet frame of a random space cubic: T, N, B orthonormal and right-handed where
+// defined, curvature |c' x c''| / |c'|^3 and torsion det(c', c'', c''') / |c' x c''|^2
+// computed here from the derivatives by the textbook formulas.
+RC_GTEST_PROP(QueriesProperty, FrenetFrameIsOrthonormal, ()) {
+  const Bezier<double, 3> c(prop::control_points<3>(3));
+  const double t = *prop::parameter();
+  const auto f = frame(c, t);
+  const auto d1 = c.derivative_at(t, 1), d2 = c.derivative_at(t, 2), d3 = c.derivative_at(t, 3);
+  const Vector<double, 3> x(d1[1] * d2[2] - d1[2] * d2[1], d1[2] * d2[0] - d1[0] * d2[2], d1[0] * d2[1] - d1[1] * d2[0]);
+  // Well-conditioned points only (c'' at least 1/100 rad off c'): there the frame's
+  // directions are accurate to about 100 eps and the comparisons below are fair.
+  RC_PRE(f.has_value() && f->normal.has_value() && norm(x) > 1e-2 * norm(d1) * norm(d2));
+  RC_ASSERT(std::abs(norm(f->tangent) - 1) <= 4 * eps);
+  RC_ASSERT(std::abs(norm(*f->normal) - 1) <= 4 * eps);
+  RC_ASSERT(std::abs(dot(f->tangent, *f->normal)) <= 1e-14);
+  RC_ASSERT(std::abs(dot(*f->binormal, x) / norm(x) - 1) <= 1e-12);  // B along c' x c''
+  const double s = norm(d1);
+  RC_ASSERT(std::abs(f->curvature - norm(x) / (s * s * s)) <= 1e-10 * f->curvature);
+  RC_ASSERT(std::abs(*f->torsion - dot(x, d3) / dot(x, x)) <= 1e-8 * (1 + std::abs(*f->torsion)));
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 #include <vector>
 
 #include "casteljau/basis/roots.hpp"
@@ -50,9 +51,20 @@ void add_extremes(Box<T, D>& b, int k, const std::vector<T>& rs, const std::vect
 /// solve does not converge.
 template <class T, int D>
 Box<T, D> bounds(const Bezier<T, D>& c) {
+  return bounds(c, T(0), T(1));
+}
+
+/// The tight box of a Bézier curve over [from, to] within [0, 1]: c(from), c(to) and the
+/// curve at the roots of the hodograph's coordinates inside (from, to) (the same root
+/// finding as over [0, 1], filtered; accuracy and cost as bounds(c)). from == to gives
+/// the one point. Throws InvalidArgument("from"/"to", ...) unless 0 <= from <= to <= 1.
+template <class T, int D>
+Box<T, D> bounds(const Bezier<T, D>& c, std::type_identity_t<T> from, std::type_identity_t<T> to) {
+  detail::check_range<T>({T(0), T(1)}, from, to);
   Box<T, D> b = Box<T, D>::empty_box();
-  b.add(c(T(0)));
-  b.add(c(T(1)));
+  b.add(c(from));
+  b.add(c(to));
+  if (from == to) return b;
   const auto& P = c.points();
   const int n = c.degree();
   if (n < 2) return b;
@@ -68,7 +80,7 @@ Box<T, D> bounds(const Bezier<T, D>& c) {
     rs.clear();
     est.clear();
     for (T r : bernstein_roots<T>(d)) {
-      if (r > 0 && r < 1) {
+      if (r > from && r < to) {
         rs.push_back(r);
         est.push_back(detail::bernstein_value_fast<T>(x, r));
       }
@@ -90,11 +102,20 @@ Box<T, D> bounds(const Bezier<T, D>& c) {
 /// degree 1000. Throws NumericalError if a root solve does not converge.
 template <class T, int D>
 Box<T, D> bounds(const RationalBezier<T, D>& c) {
+  return bounds(c, T(0), T(1));
+}
+
+/// The tight box of a rational Bézier curve over [from, to] within [0, 1]: the ends and
+/// the candidates of bounds(c) inside (from, to). Accuracy and cost as bounds(c).
+/// Throws InvalidArgument("from"/"to", ...) unless 0 <= from <= to <= 1.
+template <class T, int D>
+Box<T, D> bounds(const RationalBezier<T, D>& c, std::type_identity_t<T> from, std::type_identity_t<T> to) {
+  detail::check_range<T>({T(0), T(1)}, from, to);
   Box<T, D> b = Box<T, D>::empty_box();
-  b.add(c(T(0)));
-  b.add(c(T(1)));
+  b.add(c(from));
+  b.add(c(to));
   const int n = c.degree();
-  if (n < 1) return b;
+  if (n < 1 || from == to) return b;
   const auto& P = c.points();
   const int e = detail::scale_exponent<Point<T, D>>(P);
   // Scaling all weights by one constant leaves the curve unchanged; dividing by the
@@ -117,7 +138,7 @@ Box<T, D> bounds(const RationalBezier<T, D>& c) {
     rs.clear();
     est.clear();
     for (T r : bernstein_roots<T>(num)) {
-      if (r > 0 && r < 1) {
+      if (r > from && r < to) {
         rs.push_back(r);
         est.push_back(std::ldexp(detail::bernstein_value_fast<T>(A, r) / detail::bernstein_value_fast<T>(w, r), e));
       }
@@ -143,6 +164,35 @@ Box<typename C::Scalar, C::dimension> bounds(const C& c) {
     for (const auto& s : p.segments()) b.add(std::visit([](const auto& piece) { return bounds(piece); }, s));
     return b;
   }
+}
+
+/// The tight box of any curve over the parameter range [from, to] of its domain: the
+/// union over the Bézier pieces meeting [from, to] of their tight boxes over the part
+/// inside it (each piece's own parameters through local_parameter, so the range's ends
+/// are evaluated on the piece that holds them). Ends at a break give the break's point
+/// from both sides (the same point for a continuous curve; both for a path with a gap).
+/// from == to gives the curve's point there (the right piece at a break). Accuracy and
+/// cost as for the pieces, only the pieces meeting the range examined. Throws
+/// InvalidArgument("from"/"to", ...) for a range outside the domain or reversed.
+template <class C>
+  requires PiecewiseBezierCurve<C> && (!detail::is_bezier_piece<C>)
+Box<typename C::Scalar, C::dimension> bounds(const C& c, typename C::Scalar from, typename C::Scalar to) {
+  using T = typename C::Scalar;
+  const auto& p = pieces(c);  // a reference to c itself when c is Pieces
+  detail::check_range<T>(p.domain(), from, to);
+  Box<T, C::dimension> b = Box<T, C::dimension>::empty_box();
+  if (from == to) {
+    b.add(p(from));
+    return b;
+  }
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const Interval<T> seg = p.segment_domain(i);
+    if (seg.hi <= from || seg.lo >= to) continue;
+    const T t0 = from <= seg.lo ? T(0) : p.local_parameter(i, from);
+    const T t1 = to >= seg.hi ? T(1) : p.local_parameter(i, to);
+    b.add(std::visit([&](const auto& piece) { return bounds(piece, t0, t1); }, p.segments()[i]));
+  }
+  return b;
 }
 
 }  // namespace casteljau

@@ -47,12 +47,18 @@ struct PieceSpeed {
     splits.erase(std::unique(splits.begin(), splits.end()), splits.end());
   }
 
+  /// The scaled speed at t in [0, 1]: O(n) per call past degree 32 (the Bernstein-Horner
+  /// scheme of bernstein_value_fast, de Casteljau below). Quadrature evaluates the speed
+  /// thousands of times at high degree, where O(n^2) de Casteljau made a degree-1000 arc
+  /// length take 30 s; the Horner scheme's error was measured no worse than de
+  /// Casteljau's on random degree-1000 hodographs (about 1e-13 of max |coefficient|
+  /// against an mpmath reference, 2e-14 relative on the speed; docs/accuracy.md).
   T operator()(T t) const {
     Vector<T, D> v;
-    for (int k = 0; k < D; ++k) v[k] = de_casteljau<T, T>(std::span<const T>(num[k]), t);
+    for (int k = 0; k < D; ++k) v[k] = bernstein_value_fast<T>(std::span<const T>(num[k]), t);
     T s = norm(v);
     if (f.rational) {
-      const T w = de_casteljau<T, T>(std::span<const T>(f.w), t);
+      const T w = bernstein_value_fast<T>(std::span<const T>(f.w), t);
       s = s / w / w;
     }
     return s;
@@ -75,16 +81,6 @@ T piece_length(const PieceSpeed<T, D>& sp, T t0, T t1, std::vector<QuadratureInt
   return total;
 }
 
-template <class T>
-void check_range(Interval<T> dom, T from, T to) {
-  require_finite(from, "from");
-  require_finite(to, "to");
-  const std::string d = "[" + format_number(dom.lo) + ", " + format_number(dom.hi) + "]";
-  if (from < dom.lo || from > dom.hi) throw InvalidArgument("from", "must lie in the domain " + d + ", got " + format_number(from));
-  if (to < dom.lo || to > dom.hi) throw InvalidArgument("to", "must lie in the domain " + d + ", got " + format_number(to));
-  if (from > to) throw InvalidArgument("to", "must be >= from (" + format_number(from) + "), got " + format_number(to));
-}
-
 }  // namespace detail
 
 /// The arc length of the curve between the parameters from <= to (both in the domain):
@@ -95,8 +91,10 @@ void check_range(Interval<T> dom, T from, T to) {
 /// gauss_kronrod_15). A curve or range of length zero (coincident control points) gives
 /// exactly 0. Throws InvalidArgument("from"/"to", ...) for a range outside the domain or
 /// reversed, NumericalError if the quadrature cannot meet its target (never observed:
-/// the speed is smooth between the splits). Cost: 15 speed evaluations (O(n^2) each) per
-/// quadrature interval; a cubic needs 1 to 4 intervals.
+/// the speed is smooth between the splits). Cost: the root isolation of the D derivative
+/// numerators plus 15 speed evaluations (O(n) each, see PieceSpeed) per quadrature
+/// interval; a cubic needs 1 to 4 intervals, a random degree-1000 curve about 2000
+/// (0.08 s of CPU in all; docs/accuracy.md).
 template <class C>
   requires PiecewiseBezierCurve<C>
 typename C::Scalar arc_length(const C& c, typename C::Scalar from, typename C::Scalar to) {

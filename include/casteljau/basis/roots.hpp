@@ -202,7 +202,13 @@ std::vector<BernsteinRoot<T>> roots_with_multiplicity_rec(std::span<const T> c, 
   // de Casteljau's value error is below 2 n eps max|c| [Farin02, 3.1]; with the
   // coefficients' own noise, a smaller value is zero within what the data determine.
   const T bound = noise + 2 * static_cast<T>(n + 1) * std::numeric_limits<T>::epsilon() * max_abs<T>(c);
+  // Past degree 32 an O(n) estimate first (bernstein_value_fast, error below 16 (n + 1)
+  // eps max|c|): a value clearly above the bound is not a multiple root, and the O(n^2)
+  // de Casteljau check runs only on the few that may be (at degree 2000 it was most of
+  // the time of features()).
+  const T margin = 32 * static_cast<T>(n + 1) * std::numeric_limits<T>::epsilon() * max_abs<T>(c);
   for (const auto& dr : roots_with_multiplicity_rec<T>(d, dnoise, level + 1)) {
+    if (std::abs(bernstein_value_fast<T>(c, dr.t)) > bound + margin) continue;  // (a NaN estimate is checked)
     if (!(std::abs(de_casteljau<T, T>(c, dr.t)) <= bound)) continue;
     const int m = std::min(dr.multiplicity + 1, max_root_multiplicity);
     // The cluster radius: near a root of multiplicity m, p ~ p^(m)(r) (t - r)^m / m!, so

@@ -118,4 +118,20 @@ Box<T, D> box_of(const Points& points) {
   return b;
 }
 
+namespace detail {
+
+/// Checks a parameter range [from, to] of a query against the domain dom: both finite,
+/// inside dom, from <= to. Throws InvalidArgument("from" / "to", ...) naming the rule.
+template <class T>
+void check_range(Interval<T> dom, T from, T to) {
+  require_finite(from, "from");
+  require_finite(to, "to");
+  const std::string d = "[" + format_number(dom.lo) + ", " + format_number(dom.hi) + "]";
+  if (from < dom.lo || from > dom.hi) throw InvalidArgument("from", "must lie in the domain " + d + ", got " + format_number(from));
+  if (to < dom.lo || to > dom.hi) throw InvalidArgument("to", "must lie in the domain " + d + ", got " + format_number(to));
+  if (from > to) throw InvalidArgument("to", "must be >= from (" + format_number(from) + "), got " + format_number(to));
+}
+
+}  // namespace detail
+
 }  // namespace casteljau

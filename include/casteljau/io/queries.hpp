@@ -1,7 +1,8 @@
 // The geometric queries on a run-time curve (AnyCurve): closest and farthest point, arc
-// length and its inverse, curvature, signed area, features and the distance between two
-// curves. Compiled once, in src/io/queries.cpp, on the curves' exact Bézier pieces (one
-// instantiation per dimension, not per curve type).
+// length and its inverse, bounds over a parameter range, curvature, the Frenet frame,
+// signed area, features and the distance between two curves. Compiled once, in
+// src/io/queries.cpp, on the curves' exact Bézier pieces (one instantiation per
+// dimension, not per curve type).
 #pragma once
 
 #include <array>
@@ -32,6 +33,11 @@ struct AnyProjection {
 /// the domain or reversed.
 [[nodiscard]] double length(const AnyCurve& c, std::optional<double> from, std::optional<double> to);
 
+/// The tight box of the curve over [from, to] (default: the domain's ends; algo/bounds.hpp
+/// on the curve's pieces). Throws InvalidArgument("from"/"to", ...) for a range outside
+/// the domain or reversed.
+[[nodiscard]] AnyBox bounds(const AnyCurve& c, std::optional<double> from, std::optional<double> to);
+
 /// The parameter at each arc length (from the domain's start), each in [0, length].
 /// Throws InvalidArgument("lengths[i]", ...) for a length outside that range.
 [[nodiscard]] std::vector<double> param_at_length(const AnyCurve& c, std::span<const double> lengths);
@@ -40,6 +46,23 @@ struct AnyProjection {
 /// Throws InvalidArgument("t[j]", ...) where it is undefined (zero velocity) or a
 /// derivative is not representable.
 [[nodiscard]] std::vector<double> curvature(const AnyCurve& c, std::span<const double> t);
+
+/// The Frenet frame at one parameter (algo/frame.hpp): unit tangent; the normal (2-D: the
+/// left normal; 3-D and 4-D: the principal normal); the binormal and torsion (3-D only);
+/// the curvature (signed in 2-D). Vectors are empty where the dimension has none.
+struct AnyFrame {
+  std::vector<double> tangent;
+  std::vector<double> normal;
+  std::vector<double> binormal;
+  double curvature = 0;
+  std::optional<double> torsion;
+};
+
+/// The frame at each parameter (any finite t; at a break the right-hand piece, at the
+/// domain's end the last). Throws InvalidArgument("t[j]", ...) where it is undefined: the
+/// velocity vanishes (a cusp or a stop), or in 3-D and 4-D the curvature does (no
+/// principal normal: a straight stretch, a point of zero curvature).
+[[nodiscard]] std::vector<AnyFrame> frames(const AnyCurve& c, std::span<const double> t);
 
 /// The signed area of a closed plane curve (algo/area.hpp). Throws
 /// InvalidArgument("curve", ...) for a curve that is not 2-D or not closed.
