@@ -118,14 +118,8 @@ BSpline<T, D> interpolate(const std::vector<Point<T, D>>& Q, int p, const std::v
   if (d1) ext.push_back(t.back());
   ext.push_back(t.back());
   const std::size_t N = ext.size();
-  const std::size_t P = static_cast<std::size_t>(p);
-  std::vector<T> U(P + 1, T(0));
-  for (std::size_t j = 1; j + P < N; ++j) {
-    T s = 0;
-    for (std::size_t i = j; i < j + P; ++i) s += ext[i];
-    U.push_back(s / static_cast<T>(p));
-  }
-  U.insert(U.end(), P + 1, T(1));
+  KnotVector<T> knots = KnotVector<T>::averaging(p, ext);
+  const std::span<const T> U = knots.span();
   Eigen::SparseMatrix<T> A(static_cast<Eigen::Index>(N), static_cast<Eigen::Index>(N));
   std::vector<Eigen::Triplet<T>> entries;
   detail::Rhs<T, D> b(static_cast<Eigen::Index>(N), D);
@@ -149,7 +143,7 @@ BSpline<T, D> interpolate(const std::vector<Point<T, D>>& Q, int p, const std::v
   detail::require_solved(lu.info(), "interpolation");
   const detail::Rhs<T, D> x = lu.solve(b);
   detail::require_solved(lu.info(), "interpolation");
-  return BSpline<T, D>(p, std::move(U), detail::to_points<T, D>(x));
+  return BSpline<T, D>(std::move(knots), detail::to_points<T, D>(x));
 }
 
 /// Closed (periodic) interpolation through Q_0..Q_{L-1} with the closing parameters t
@@ -163,13 +157,19 @@ template <class T, int D>
 BSpline<T, D> interpolate_closed(const std::vector<Point<T, D>>& Q, int p, const std::vector<T>& t) {
   const std::ptrdiff_t L = static_cast<std::ptrdiff_t>(Q.size());
   const bool odd = p % 2 == 1;
-  std::vector<T> b(static_cast<std::size_t>(L));
-  for (std::ptrdiff_t i = 0; i < L; ++i) b[static_cast<std::size_t>(i)] = odd ? t[static_cast<std::size_t>(i)] : t[static_cast<std::size_t>(i)] / 2 + t[static_cast<std::size_t>(i) + 1] / 2;
+  // The breaks b_i in [0, 1) repeat with period 1: knot(j) = b_(j mod L) + floor(j / L).
+  // The periodic knot vector of three periods from -1 holds every knot needed below:
+  // its U_j is knot(j - p - L) (KnotVector::periodic), and its point i is C_(i - p mod L).
+  std::vector<T> breaks;
+  for (int q = -1; q <= 1; ++q) {
+    for (std::ptrdiff_t i = 0; i < L; ++i) {
+      const std::size_t k = static_cast<std::size_t>(i);
+      breaks.push_back((odd ? t[k] : t[k] / 2 + t[k + 1] / 2) + static_cast<T>(q));
+    }
+  }
+  const KnotVector<T> periodic = KnotVector<T>::periodic(p, breaks, T(3));
+  const auto knot = [&](std::ptrdiff_t j) { return periodic[static_cast<std::size_t>(j + p + L)]; };
   const auto floor_div = [&](std::ptrdiff_t j) { return j >= 0 ? j / L : -((-j + L - 1) / L); };
-  const auto knot = [&](std::ptrdiff_t j) {
-    const std::ptrdiff_t q = floor_div(j);
-    return b[static_cast<std::size_t>(j - q * L)] + static_cast<T>(q);
-  };
   const auto wrap = [&](std::ptrdiff_t j) { return static_cast<std::size_t>(j - floor_div(j) * L); };
   Eigen::SparseMatrix<T> A(L, L);
   std::vector<Eigen::Triplet<T>> entries;
@@ -193,11 +193,9 @@ BSpline<T, D> interpolate_closed(const std::vector<Point<T, D>>& Q, int p, const
   const detail::Rhs<T, D> x = lu.solve(rhs);
   detail::require_solved(lu.info(), "closed interpolation");
   const std::vector<Point<T, D>> C = detail::to_points<T, D>(x);
-  // A long stretch of the periodic spline, then 0 and 1 as knots, then the window [0, 1].
-  KnotForm<T, Point<T, D>> f{p, {}, {}};
-  const std::ptrdiff_t lo = -2 * p - 2, hi = L + 2 * p + 2;
-  for (std::ptrdiff_t j = lo; j <= hi; ++j) f.U.push_back(knot(j));
-  for (std::ptrdiff_t j = lo; j + p + 1 <= hi; ++j) f.P.push_back(C[wrap(j)]);
+  // The three periods of the periodic spline, then 0 and 1 as knots, then the window [0, 1].
+  KnotForm<T, Point<T, D>> f{p, periodic.knots(), {}};
+  for (std::size_t i = 0; i < periodic.points(); ++i) f.P.push_back(C[wrap(static_cast<std::ptrdiff_t>(i) - p)]);
   for (const T u : {T(0), T(1)}) {
     if (knot_multiplicity<T>(f.U, u) == 0) f = insert_knot_once(f, u);
   }
