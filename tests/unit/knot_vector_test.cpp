@@ -301,6 +301,25 @@ TEST(DegreeReduction, CubicToQuadraticBoundHolds) {
   EXPECT_INVALID_ARGUMENT(c.reduce_degree(r.error_bound / 100), "tolerance", "more than the tolerance");
 }
 
+// A true rational cubic reduced to degree 2: the Cartesian bound (homogeneous bound times
+// sqrt(1 + R^2) / w_min) holds against dense sampling; below it the reduction is refused.
+TEST(DegreeReduction, NurbsBoundHolds) {
+  test::SplitMix64 rng(9);
+  const Knots U{0, 0, 0, 0, 0.3, 0.6, 1, 1, 1, 1};
+  const auto P = test::random_points<double, 2>(rng, 5);
+  const Nurbs<double, 2> c(3, U, P, {1, 2, 0.5, 1.5, 1, 3});
+  const auto r = c.reduce_degree(100.0);
+  EXPECT_EQ(r.curve.degree(), 2);
+  double worst = 0;
+  for (int i = 0; i <= 100000; ++i) worst = std::max(worst, distance(c(i / 1e5), r.curve(i / 1e5)));
+  EXPECT_LE(worst, r.error_bound);
+  RecordProperty("nurbs_bound_over_measured", std::to_string(r.error_bound / worst));
+  EXPECT_LT(distance(r.curve(0.0), c(0.0)), 1e-15);
+  EXPECT_LT(distance(r.curve(1.0), c(1.0)), 1e-15);
+  // Far below: the first reduced piece already exceeds it.
+  EXPECT_INVALID_ARGUMENT(c.reduce_degree(worst / 1000), "tolerance", "more than the tolerance");
+}
+
 TEST(DegreeReduction, BadInput) {
   const BSpline<double, 2> line(1, {0, 0, 1, 1}, std::vector<P2>{{0, 0}, {1, 1}});
   EXPECT_INVALID_ARGUMENT(line.reduce_degree(1.0), "degree", "degree >= 2");
