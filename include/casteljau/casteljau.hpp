@@ -28,6 +28,7 @@
 #include "casteljau/basis/hermite_basis.hpp"
 #include "casteljau/basis/extrapolate.hpp"
 #include "casteljau/basis/knot_ops.hpp"
+#include "casteljau/basis/knot_vector.hpp"
 #include "casteljau/basis/power.hpp"
 #include "casteljau/basis/quadrature.hpp"
 #include "casteljau/basis/roots.hpp"

@@ -118,14 +118,8 @@ BSpline<T, D> interpolate(const std::vector<Point<T, D>>& Q, int p, const std::v
   if (d1) ext.push_back(t.back());
   ext.push_back(t.back());
   const std::size_t N = ext.size();
-  const std::size_t P = static_cast<std::size_t>(p);
-  std::vector<T> U(P + 1, T(0));
-  for (std::size_t j = 1; j + P < N; ++j) {
-    T s = 0;
-    for (std::size_t i = j; i < j + P; ++i) s += ext[i];
-    U.push_back(s / static_cast<T>(p));
-  }
-  U.insert(U.end(), P + 1, T(1));
+  KnotVector<T> knots = KnotVector<T>::averaging(p, ext);
+  const std::span<const T> U = knots.span();
   Eigen::SparseMatrix<T> A(static_cast<Eigen::Index>(N), static_cast<Eigen::Index>(N));
   std::vector<Eigen::Triplet<T>> entries;
   detail::Rhs<T, D> b(static_cast<Eigen::Index>(N), D);
@@ -149,7 +143,7 @@ BSpline<T, D> interpolate(const std::vector<Point<T, D>>& Q, int p, const std::v
   detail::require_solved(lu.info(), "interpolation");
   const detail::Rhs<T, D> x = lu.solve(b);
   detail::require_solved(lu.info(), "interpolation");
-  return BSpline<T, D>(p, std::move(U), detail::to_points<T, D>(x));
+  return BSpline<T, D>(std::move(knots), detail::to_points<T, D>(x));
 }
 
 namespace detail {

@@ -217,8 +217,9 @@ class SpanTable {
 
 /// Any piecewise polynomial curve at many parameters through its SpanTable (built once
 /// per call: O(k p^2) for k pieces); curves with rational pieces or pieces of different
-/// degrees evaluate point by point. Build a SpanTable yourself to evaluate one curve in
-/// many calls.
+/// degrees evaluate point by point (B-splines and NURBS through their own batch
+/// evaluate, which searches each span from the previous one). Build a SpanTable yourself
+/// to evaluate one curve in many calls.
 template <PiecewiseBezierCurve C>
 void evaluate_pieces(const C& c, std::span<const typename C::Scalar> ts,
                      std::span<Point<typename C::Scalar, C::dimension>> out) {
@@ -233,9 +234,13 @@ void evaluate_pieces(const C& c, std::span<const typename C::Scalar> ts,
     table->evaluate(ts, out);
     return;
   }
-  for (std::size_t j = 0; j < ts.size(); ++j) {
-    require_finite(ts[j], "t[" + std::to_string(j) + "]");
-    out[j] = c(ts[j]);
+  if constexpr (requires { c.evaluate(ts, out); }) {
+    c.evaluate(ts, out);  // B-splines and NURBS: de Boor with the span search hinted
+  } else {
+    for (std::size_t j = 0; j < ts.size(); ++j) {
+      require_finite(ts[j], "t[" + std::to_string(j) + "]");
+      out[j] = c(ts[j]);
+    }
   }
 }
 

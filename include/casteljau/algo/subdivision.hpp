@@ -44,34 +44,23 @@ inline void check_iterations(std::size_t points, int k) {
   }
 }
 
-/// The uniform knots of the open limit: 0 (p + 1 times), 1, .., n - p - 1, n - p (p + 1
-/// times), for n points.
-template <class T>
-std::vector<T> clamped_uniform_knots(std::size_t n, int p) {
-  const std::size_t P = static_cast<std::size_t>(p);
-  std::vector<T> U(P + 1, T(0));
-  for (std::size_t i = 1; i + P < n; ++i) U.push_back(static_cast<T>(i));
-  U.insert(U.end(), P + 1, static_cast<T>(n - P));
-  return U;
-}
-
 }  // namespace detail
 
 /// The limit of the Lane-Riesenfeld scheme of degree p on the polygon P: for an open
-/// polygon the clamped uniform B-spline (knots detail::clamped_uniform_knots, domain
-/// [0, n - p]); for a closed one the periodic uniform B-spline with points P_0..P_{n-1},
-/// P_0..P_{p-1} and knots 0, 1, .., n + 2p (domain [p, n + p], closed with C^(p-1)).
+/// polygon the clamped uniform B-spline (KnotVector::clamped_uniform on [0, n - p]: knots
+/// 0 (p + 1 times), 1, .., n - p - 1, n - p (p + 1 times)); for a closed one the periodic
+/// uniform B-spline with points P_0..P_{n-1}, P_0..P_{p-1} and knots 0, 1, .., n + 2p
+/// (KnotVector::periodic_uniform on [p, n + p], closed with C^(p-1)).
 /// Chaikin is p = 2. Errors as lane_riesenfeld.
 template <class T, int D>
 BSpline<T, D> lane_riesenfeld_limit(const std::vector<Point<T, D>>& P, int p, bool closed) {
   if (p < 1) throw InvalidArgument("degree", "Lane-Riesenfeld needs degree >= 1, got " + std::to_string(p));
   detail::check_polygon(P, closed ? 3 : static_cast<std::size_t>(p) + 1, closed, closed ? "" : " (degree + 1)");
-  if (!closed) return BSpline<T, D>(p, detail::clamped_uniform_knots<T>(P.size(), p), P);
+  const std::size_t n = P.size(), pp = static_cast<std::size_t>(p);
+  if (!closed) return BSpline<T, D>(KnotVector<T>::clamped_uniform(n, p, T(0), static_cast<T>(n - pp)), P);
   std::vector<Point<T, D>> Q(P);
-  for (int i = 0; i < p; ++i) Q.push_back(P[static_cast<std::size_t>(i) % P.size()]);
-  std::vector<T> U(Q.size() + static_cast<std::size_t>(p) + 1);
-  for (std::size_t i = 0; i < U.size(); ++i) U[i] = static_cast<T>(i);
-  return BSpline<T, D>(p, std::move(U), std::move(Q));
+  for (std::size_t i = 0; i < pp; ++i) Q.push_back(P[i % n]);
+  return BSpline<T, D>(KnotVector<T>::periodic_uniform(n, p, static_cast<T>(pp), static_cast<T>(n + pp)), std::move(Q));
 }
 
 /// k steps of the Lane-Riesenfeld scheme of degree p >= 1 [LR80]. Closed: each step

@@ -14,6 +14,21 @@
 
 namespace casteljau {
 
+/// Checks the sizes of a B-spline: degree p >= 1 ("degree"), at least p + 1 control
+/// points ("points") and points + p + 1 knots ("knots"). The one place these messages
+/// live: the curve constructors and KnotVector call it before check_knots.
+inline void check_knot_count(int p, std::size_t knots, std::size_t points) {
+  if (p < 1) throw InvalidArgument("degree", "a B-spline needs degree >= 1, got " + std::to_string(p));
+  if (points < static_cast<std::size_t>(p) + 1) {
+    throw InvalidArgument("points", "degree " + std::to_string(p) + " needs at least " + std::to_string(p + 1) +
+                                        " control points, got " + std::to_string(points));
+  }
+  if (knots != points + static_cast<std::size_t>(p) + 1) {
+    throw InvalidArgument("knots", "needs len(points) + degree + 1 = " + std::to_string(points + static_cast<std::size_t>(p) + 1) +
+                                       " knots, got " + std::to_string(knots));
+  }
+}
+
 /// Checks a knot vector U_0..U_m for degree p >= 1 with n = m - p control points
 /// (m + 1 = n + p + 1 knots): every knot finite, non-decreasing, an interior knot repeated
 /// at most p times, an end knot at most p + 1 times, n >= p + 1, and U_p < U_n (a non-empty

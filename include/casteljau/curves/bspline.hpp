@@ -12,6 +12,7 @@
 
 #include "casteljau/basis/bspline_basis.hpp"
 #include "casteljau/basis/knot_ops.hpp"
+#include "casteljau/basis/knot_vector.hpp"
 #include "casteljau/curves/piecewise.hpp"
 
 namespace casteljau {
@@ -294,7 +295,208 @@ void check_removal(std::span<const T> U, int p, T u, int times, T tolerance) {
   if (!(tolerance > 0)) throw InvalidArgument("tolerance", "tolerance must be > 0, got " + format_number(tolerance));
 }
 
+/// Validates a degree reduction: degree >= 2 ("degree"), tolerance finite and > 0
+/// ("tolerance").
+template <class T>
+void check_reduction(int p, T tolerance) {
+  if (p < 2) throw InvalidArgument("degree", "degree reduction needs degree >= 2 (the result has degree >= 1), got " + std::to_string(p));
+  require_finite(tolerance, "tolerance");
+  if (!(tolerance > 0)) throw InvalidArgument("tolerance", "tolerance must be > 0, got " + format_number(tolerance));
+}
+
+/// One degree less for the Bézier points P_0..P_p (p >= 2) [PT97, eq. 5.41-5.44, the
+/// reduction step of A5.11]: with alpha_i = i / p, the forward recurrence
+/// Q_i = (P_i - alpha_i Q_(i-1)) / (1 - alpha_i) from Q_0 = P_0 and the backward one
+/// Q_(i-1) = (P_i - (1 - alpha_i) Q_i) / alpha_i from Q_(p-1) = P_p, each used on its
+/// half (r = (p - 1) / 2: forward up to Q_r for even p, up to Q_(r-1) for odd p, where
+/// Q_r is the mean of both). Both are exact when P is an elevated degree-(p-1) curve.
+/// The end points are kept, and for even p also the end tangents. Returns the points and
+/// the bound max_i |P_i - R_i|, R the reduced curve elevated back (Forrest's equations):
+/// the difference of the two curves is a Bézier curve with those control point
+/// differences, so the bound holds at every parameter (guaranteed, up to rounding).
+template <class V, class T>
+std::pair<std::vector<V>, T> reduce_bezier_once(const std::vector<V>& P) {
+  const int p = static_cast<int>(P.size()) - 1;
+  const int r = (p - 1) / 2;
+  const auto alpha = [&](int i) { return static_cast<T>(i) / static_cast<T>(p); };
+  std::vector<V> Q(static_cast<std::size_t>(p));
+  const auto forward = [&](int i) {  // Q_i from P_i and Q_(i-1)
+    if (i == 0) return P[0];
+    const T a = alpha(i);
+    return P[sz(i)] + (a / (1 - a)) * (P[sz(i)] - Q[sz(i - 1)]);
+  };
+  const auto backward = [&](int i) {  // Q_(i-1) from P_i and Q_i
+    if (i == p) return P[sz(p)];
+    const T a = alpha(i);
+    return P[sz(i)] + ((1 - a) / a) * (P[sz(i)] - Q[sz(i)]);
+  };
+  const bool even = p % 2 == 0;
+  const int forward_last = even ? r : r - 1;
+  for (int i = 0; i <= forward_last; ++i) Q[sz(i)] = forward(i);
+  for (int i = p; i - 1 > r; --i) Q[sz(i - 1)] = backward(i);
+  if (!even) {
+    const V left = forward(r);
+    const V right = backward(r + 1);
+    Q[sz(r)] = lerp(left, right, T(0.5));
+  }
+  T bound = 0;
+  for (int i = 0; i <= p; ++i) {
+    const V R = i == 0 ? Q[0] : i == p ? Q[sz(p - 1)] : lerp(Q[sz(i)], Q[sz(i - 1)], alpha(i));
+    bound = std::max(bound, norm(P[sz(i)] - R));
+  }
+  return {std::move(Q), bound};
+}
+
+/// What reduce_degree_form returns: the reduced form, the largest per-span error bound and
+/// how many knot copies were kept beyond the target multiplicities (0: the original
+/// continuity, C^(p-1-m) at a knot of multiplicity m, except C^(p-2) at simple knots).
+template <class T, class V>
+struct FormReduction {
+  KnotForm<T, V> form;
+  T error_bound = 0;
+  int kept_knots = 0;
+};
+
+/// Degree reduction p -> p - 1 of the B-spline f (p >= 2) within `tolerance`, an error e
+/// in V's norm counting as `scale` e (1 for a B-spline; NURBS pass the factor that turns
+/// a homogeneous deviation into a Cartesian bound) [PT97, A5.11]: (1) the exact Bézier pieces of the domain's spans, (2) each
+/// reduced by one degree (reduce_bezier_once, its bound e_j), refused with InvalidArgument
+/// "tolerance" if some e_j > tolerance, (3) joined as the C^0 B-spline of degree q = p - 1,
+/// (4) each interior knot of multiplicity m in f removed from q copies down to max(m - 1, 1)
+/// (the multiplicity the reduced curve needs for f's continuity; a simple knot stays),
+/// one copy at a time (remove_knot_once), each removal accepted only if the per-span
+/// error stays within tolerance. The error is accumulated per span as A5.11 does: a removal
+/// changes the control points by d_i (measured by re-inserting the knot), which moves the
+/// curve on a span by at most the largest d_i of the points whose support covers it
+/// (basis functions >= 0 summing to 1); the sum of the span's bounds bounds its error
+/// (triangle inequality). A refused removal keeps that copy (kept_knots counts them). The
+/// result is clamped on f's domain. Cost O(k p^3): the pieces, then the removals on a
+/// sliding window of O(p) knots (k spans).
+template <class T, class V>
+FormReduction<T, V> reduce_degree_form(const KnotForm<T, V>& f, T tolerance, T scale = T(1)) {
+  const std::span<const T> U(f.U);
+  const int p = f.p, q = p - 1;
+  const std::vector<std::size_t> spans = nonempty_spans(U, p);
+  const std::size_t k = spans.size();
+  std::vector<T> breaks;
+  for (const std::size_t s : spans) breaks.push_back(U[s]);
+  breaks.push_back(U[f.P.size()]);
+  std::vector<T> err(k);
+  KnotForm<T, V> cur{q, std::vector<T>(sz(q) + 1, breaks.front()), {}};
+  for (std::size_t j = 0; j < k; ++j) {
+    auto [Q, e] = reduce_bezier_once<V, T>(span_bezier_points<V, T>(U, p, spans[j], f.P));
+    if (!(e * scale <= tolerance)) {
+      throw InvalidArgument("tolerance", "reducing the degree from " + std::to_string(p) + " to " + std::to_string(q) +
+                                             " moves the curve by up to " + format_number(e * scale) + " on [" + format_number(breaks[j]) +
+                                             ", " + format_number(breaks[j + 1]) + "], more than the tolerance " +
+                                             format_number(tolerance));
+    }
+    err[j] = e;
+    if (j == 0) {
+      cur.P.insert(cur.P.end(), Q.begin(), Q.end());
+    } else {
+      cur.P.back() = lerp(cur.P.back(), Q.front(), T(0.5));  // the same point from both pieces, up to rounding
+      cur.P.insert(cur.P.end(), Q.begin() + 1, Q.end());
+      cur.U.insert(cur.U.end(), sz(q), breaks[j]);
+    }
+  }
+  cur.U.insert(cur.U.end(), sz(q) + 1, breaks.back());
+  // Knot removal on a window W of the C^0 form that slides from left to right, as in
+  // elevate: a removal at x reads and changes only knots and points within q + 1 indices
+  // of x's run, so what lies more than 2 q + 2 left of the run is final and moves to the
+  // result. W keeps the whole form's pairing (knot i with point i), so remove_knot_once
+  // and insert_knot_once work on it as on a whole curve. Cost O(N q) instead of O(N^2).
+  const std::vector<T>& U0 = cur.U;
+  const std::vector<V>& P0 = cur.P;
+  const std::size_t Q1 = sz(q) + 1;
+  KnotForm<T, V> out{q, {}, {}}, W{q, {}, {}};
+  std::size_t next = 0;  // the next point (and knot) of the C^0 form to move into W
+  const auto extend_to = [&](std::size_t knots_needed) {
+    while (W.U.size() < knots_needed && next + sz(q) < U0.size()) {
+      if (next < P0.size()) W.P.push_back(P0[next]);
+      if (next == 0) {  // the first q + 1 knots come with the first point
+        W.U.insert(W.U.end(), U0.begin(), U0.begin() + static_cast<std::ptrdiff_t>(Q1));
+        next = 1;
+        continue;
+      }
+      W.U.push_back(U0[next + sz(q)]);
+      ++next;
+    }
+  };
+  extend_to(1);
+  int kept = 0;
+  std::vector<T> add(k, T(0));
+  for (std::size_t j = 1; j < k; ++j) {
+    const T x = breaks[j];
+    // x's run and q + 1 knots after it in W.
+    std::size_t after = static_cast<std::size_t>(std::upper_bound(W.U.begin(), W.U.end(), x) - W.U.begin());
+    while (after == W.U.size() || W.U.size() < after + Q1) {
+      const std::size_t before = W.U.size();
+      extend_to(before + 1);
+      if (W.U.size() == before) break;
+      after = static_cast<std::size_t>(std::upper_bound(W.U.begin(), W.U.end(), x) - W.U.begin());
+    }
+    const int m = static_cast<int>(knot_multiplicity<T>(U, x));
+    const int wanted = q - std::max(m - 1, 1);
+    for (int c = 0; c < wanted; ++c) {
+      KnotForm<T, V> g = remove_knot_once(W, x);
+      bool ok = true;
+      for (const auto& pt : g.P) ok = ok && all_finite_point(pt);
+      std::size_t s_lo = k, s_hi = 0;  // the spans the removal moves
+      if (ok) {
+        const KnotForm<T, V> back = insert_knot_once(g, x);
+        for (std::size_t i = 0; i < W.P.size() && i + Q1 < W.U.size(); ++i) {
+          const T d = norm(W.P[i] - back.P[i]);
+          if (!(d > 0)) continue;
+          // N_i is supported on [U_i, U_(i+q+1)]: the spans inside it.
+          const T lo = W.U[i], hi = W.U[i + Q1];
+          for (std::size_t s = static_cast<std::size_t>(std::lower_bound(breaks.begin(), breaks.end(), lo) - breaks.begin());
+               s < k && breaks[s + 1] <= hi; ++s) {
+            add[s] = std::max(add[s], d);
+            s_lo = std::min(s_lo, s);
+            s_hi = std::max(s_hi, s);
+          }
+        }
+        for (std::size_t s = s_lo; s <= s_hi && s < k && ok; ++s) ok = (err[s] + add[s]) * scale <= tolerance;
+      }
+      for (std::size_t s = s_lo; s <= s_hi && s < k; ++s) {
+        if (ok) err[s] += add[s];
+        add[s] = 0;
+      }
+      if (!ok) {
+        kept += wanted - c;
+        break;
+      }
+      W = std::move(g);
+    }
+    const std::size_t run_end = static_cast<std::size_t>(std::upper_bound(W.U.begin(), W.U.end(), x) - W.U.begin());
+    const std::size_t reach = 2 * sz(q) + 2;
+    if (run_end > reach) {
+      const std::size_t c = std::min(run_end - reach, W.P.size());
+      out.U.insert(out.U.end(), W.U.begin(), W.U.begin() + static_cast<std::ptrdiff_t>(c));
+      out.P.insert(out.P.end(), W.P.begin(), W.P.begin() + static_cast<std::ptrdiff_t>(c));
+      W.U.erase(W.U.begin(), W.U.begin() + static_cast<std::ptrdiff_t>(c));
+      W.P.erase(W.P.begin(), W.P.begin() + static_cast<std::ptrdiff_t>(c));
+    }
+  }
+  extend_to(U0.size() + 1);
+  out.U.insert(out.U.end(), W.U.begin(), W.U.end());
+  out.P.insert(out.P.end(), W.P.begin(), W.P.end());
+  return {std::move(out), *std::max_element(err.begin(), err.end()) * scale, kept};
+}
+
 }  // namespace detail
+
+/// The result of a degree reduction: the curve of degree one less, a guaranteed bound on
+/// its distance from the original over the domain (the same parameter on both), and how
+/// many knot copies were kept beyond those the original continuity needs (0 normally; see
+/// detail::reduce_degree_form).
+template <class C>
+struct DegreeReduction {
+  C curve;
+  typename C::Scalar error_bound = 0;
+  int kept_knots = 0;
+};
 
 /// The result of a knot removal: the curve and how many times the knot was removed.
 template <class C>
@@ -318,36 +520,64 @@ class BSpline {
   static constexpr int dimension = D;
 
   BSpline(int degree, std::vector<T> knots, std::vector<PointType> points)
-      : p_(degree), U_(std::move(knots)), P_(std::move(points)) {
-    if (p_ < 1) throw InvalidArgument("degree", "a B-spline needs degree >= 1, got " + std::to_string(p_));
-    if (P_.size() < static_cast<std::size_t>(p_) + 1) {
-      throw InvalidArgument("points", "degree " + std::to_string(p_) + " needs at least " + std::to_string(p_ + 1) +
-                                          " control points, got " + std::to_string(P_.size()));
-    }
-    if (U_.size() != P_.size() + static_cast<std::size_t>(p_) + 1) {
-      throw InvalidArgument("knots", "needs len(points) + degree + 1 = " + std::to_string(P_.size() + static_cast<std::size_t>(p_) + 1) +
-                                         " knots, got " + std::to_string(U_.size()));
-    }
-    check_knots<T>(U_, p_);
-    for (std::size_t i = 0; i < P_.size(); ++i) require_finite_point(P_[i], "points[" + std::to_string(i) + "]");
+      : kv_(degree, std::move(knots), points.size()), P_(std::move(points)) {
+    check_points();
   }
 
-  [[nodiscard]] int degree() const { return p_; }
-  [[nodiscard]] const std::vector<T>& knots() const { return U_; }
+  /// The curve on validated knots: only the point count (check_knot_count) and the
+  /// points are checked.
+  BSpline(KnotVector<T> knots, std::vector<PointType> points) : kv_(std::move(knots)), P_(std::move(points)) {
+    check_knot_count(kv_.degree(), kv_.size(), P_.size());
+    check_points();
+  }
+
+  [[nodiscard]] int degree() const { return kv_.degree(); }
+  [[nodiscard]] const std::vector<T>& knots() const { return kv_.knots(); }
+  /// The validated knot vector (a reference: no copy), with its span search and
+  /// multiplicities.
+  [[nodiscard]] const KnotVector<T>& knot_vector() const { return kv_; }
   [[nodiscard]] const std::vector<PointType>& points() const { return P_; }
-  [[nodiscard]] Interval<T> domain() const { return {U_[static_cast<std::size_t>(p_)], U_[P_.size()]}; }
+  [[nodiscard]] Interval<T> domain() const { return kv_.domain(); }
 
   /// C(u) by de Boor's algorithm [PT97, A3.1 in its de Boor form]: convex combinations
   /// inside the domain, error a few eps of max |P|. Throws InvalidArgument("t", ...) for
   /// a non-finite u or an extrapolated point that overflows. Cost O(log n + p^2).
   [[nodiscard]] PointType operator()(T u) const {
     require_finite(u, "t");
-    const std::size_t s = find_span<T>(U_, p_, u);
-    detail::Scratch<T> args(static_cast<std::size_t>(p_));
-    std::fill(args.data(), args.data() + p_, u);
-    const PointType c = detail::de_boor_blossom<PointType, T>(U_, p_, s, P_, std::span<const T>(args.data(), static_cast<std::size_t>(p_)));
+    const std::size_t s = kv_.find_span(u);
+    detail::Scratch<T> args(static_cast<std::size_t>(kv_.degree()));
+    std::fill(args.data(), args.data() + kv_.degree(), u);
+    const PointType c = detail::de_boor_blossom<PointType, T>(kv_.knots(), kv_.degree(), s, P_, std::span<const T>(args.data(), static_cast<std::size_t>(kv_.degree())));
     detail::require_representable(c, static_cast<double>(u), "the curve's point");
     return c;
+  }
+
+  /// C(ts[j]) for every parameter into out[j], bit for bit as operator() gives them, with
+  /// each span searched from the previous one (KnotVector::find_span(u, hint)): O(p^2) a
+  /// point for sorted parameters, O(log n + p^2) for scattered ones. Throws
+  /// InvalidArgument "out" for a size mismatch, "t[j]" for a non-finite parameter or an
+  /// extrapolated point that overflows. (algo/span_table.hpp's table is faster for many
+  /// parameters at low degree; evaluate_pieces falls back to this above its degrees.)
+  void evaluate(std::span<const T> ts, std::span<PointType> out) const {
+    if (out.size() != ts.size()) {
+      throw InvalidArgument("out", "needs one point per parameter: " + std::to_string(ts.size()) + " parameters, " +
+                                       std::to_string(out.size()) + " points");
+    }
+    const int p = kv_.degree();
+    detail::Scratch<T> args(static_cast<std::size_t>(p));
+    const std::span<const T> arg(args.data(), static_cast<std::size_t>(p));
+    std::size_t s = kv_.first_span();
+    for (std::size_t j = 0; j < ts.size(); ++j) {
+      const T u = ts[j];
+      if (!std::isfinite(u)) require_finite(u, "t[" + std::to_string(j) + "]");
+      s = kv_.find_span(u, s);
+      std::fill(args.data(), args.data() + p, u);
+      out[j] = detail::de_boor_blossom<PointType, T>(kv_.knots(), p, s, P_, arg);
+      if (!detail::all_finite_point(out[j])) {
+        throw InvalidArgument("t[" + std::to_string(j) + "]",
+                              "the curve's point at t = " + detail::format_number(u) + " is not representable (overflow)");
+      }
+    }
   }
 
   /// The k-th derivative (k >= 0; zero for k > p) at u: sum_j N^(k)_{s-p+j,p}(u) P_{s-p+j}
@@ -356,15 +586,15 @@ class BSpline {
     require_finite(u, "t");
     if (k < 0) throw InvalidArgument("k", "derivative order must be >= 0, got " + std::to_string(k));
     if (k == 0) return (*this)(u).to_vector();
-    if (k > p_) return VectorType{};
-    const std::size_t s = find_span<T>(U_, p_, u);
-    const auto ders = basis_function_derivatives<T>(U_, p_, s, u, k);
+    if (k > kv_.degree()) return VectorType{};
+    const std::size_t s = kv_.find_span(u);
+    const auto ders = basis_function_derivatives<T>(kv_.knots(), kv_.degree(), s, u, k);
     // Differences from the span's first point: the derivative weights sum to 0, so the
     // origin cancels and translations do not cost accuracy.
-    const PointType& base = P_[s - static_cast<std::size_t>(p_)];
+    const PointType& base = P_[s - static_cast<std::size_t>(kv_.degree())];
     VectorType v{};
-    for (int j = 1; j <= p_; ++j) {
-      v += ders[static_cast<std::size_t>(k)][static_cast<std::size_t>(j)] * (P_[s - static_cast<std::size_t>(p_) + static_cast<std::size_t>(j)] - base);
+    for (int j = 1; j <= kv_.degree(); ++j) {
+      v += ders[static_cast<std::size_t>(k)][static_cast<std::size_t>(j)] * (P_[s - static_cast<std::size_t>(kv_.degree()) + static_cast<std::size_t>(j)] - base);
     }
     detail::require_representable(v, static_cast<double>(u), "the derivative");
     return v;
@@ -374,24 +604,24 @@ class BSpline {
   /// reflected and reversed, points reversed.
   [[nodiscard]] BSpline reverse() const {
     const T a = domain().lo, b = domain().hi;
-    std::vector<T> V(U_.size());
-    for (std::size_t i = 0; i < U_.size(); ++i) V[i] = a + b - U_[U_.size() - 1 - i];
-    V[static_cast<std::size_t>(p_)] = a;  // exact domain ends despite rounding
+    std::vector<T> V(kv_.knots().size());
+    for (std::size_t i = 0; i < kv_.knots().size(); ++i) V[i] = a + b - kv_.knots()[kv_.knots().size() - 1 - i];
+    V[static_cast<std::size_t>(kv_.degree())] = a;  // exact domain ends despite rounding
     V[P_.size()] = b;
-    return BSpline(p_, std::move(V), std::vector<PointType>(P_.rbegin(), P_.rend()));
+    return BSpline(kv_.degree(), std::move(V), std::vector<PointType>(P_.rbegin(), P_.rend()));
   }
 
   /// The image under an affine map (affine invariance: map the control points).
   [[nodiscard]] BSpline transform(const Affine<T, D>& m) const {
     std::vector<PointType> Q = mapped_points(m, P_);
-    return BSpline(p_, U_, std::move(Q));
+    return BSpline(kv_, std::move(Q));
   }
 
   /// The box of the control points: contains the curve over its domain.
   [[nodiscard]] Box<T, D> control_bounds() const { return box_of<T, D>(P_); }
 
   /// The degree, knots and points as plain data (basis/knot_ops.hpp).
-  [[nodiscard]] KnotForm<T, PointType> form() const { return {p_, U_, P_}; }
+  [[nodiscard]] KnotForm<T, PointType> form() const { return {kv_.degree(), kv_.knots(), P_}; }
   /// The curve of plain data, validated as by the constructor.
   [[nodiscard]] static BSpline from_form(KnotForm<T, PointType> f) { return BSpline(f.p, std::move(f.U), std::move(f.P)); }
 
@@ -410,7 +640,7 @@ class BSpline {
   /// guaranteed bound, not an estimate) against the original curve is within tolerance.
   /// Stops at the first removal refused. Errors: see detail::check_removal.
   [[nodiscard]] KnotRemoval<BSpline> remove_knot(T u, int times = 1, T tolerance = T(1e-12)) const {
-    detail::check_removal<T>(U_, p_, u, times, tolerance);
+    detail::check_removal<T>(kv_.knots(), kv_.degree(), u, times, tolerance);
     const KnotForm<T, PointType> f = form();
     KnotForm<T, PointType> best = f, g = f;
     int removed = 0;
@@ -440,24 +670,39 @@ class BSpline {
     return from_form(detail::elevate<T, D>(form(), r));
   }
 
+  /// The curve at degree p - 1 within `tolerance` (an absolute distance over the domain,
+  /// at equal parameters) [PT97, A5.11]: the Bézier pieces reduced by one degree, joined
+  /// and their knots removed back to the original continuity, the error bound accumulated
+  /// per span (detail::reduce_degree_form). The result is clamped on the same domain and
+  /// keeps the end points of the domain exactly (up to rounding); an elevated curve comes
+  /// back exactly (error bound ~ eps). Errors: "degree" for p < 2, "tolerance" not finite
+  /// or <= 0, or when a piece cannot be reduced within it (the message gives the bound
+  /// and the span). A knot removal that would exceed the tolerance is skipped (the knot
+  /// keeps one more copy: kept_knots > 0). Cost O(k p^3) for k spans.
+  [[nodiscard]] DegreeReduction<BSpline> reduce_degree(T tolerance) const {
+    detail::check_reduction<T>(degree(), tolerance);
+    detail::FormReduction<T, PointType> r = detail::reduce_degree_form<T, PointType>(form(), tolerance);
+    return {from_form(std::move(r.form)), r.error_bound, r.kept_knots};
+  }
+
   /// Clamped at both ends: the end knots repeated p + 1 times, so the curve starts at the
   /// first control point and ends at the last. The same curve on the same domain.
   [[nodiscard]] BSpline clamp() const {
     const Interval<T> d = domain();
-    return from_form(detail::with_outer_knots<T, PointType>(form(), std::vector<T>(static_cast<std::size_t>(p_), d.lo),
-                                                            std::vector<T>(static_cast<std::size_t>(p_), d.hi)));
+    return from_form(detail::with_outer_knots<T, PointType>(form(), std::vector<T>(static_cast<std::size_t>(kv_.degree()), d.lo),
+                                                            std::vector<T>(static_cast<std::size_t>(kv_.degree()), d.hi)));
   }
 
   /// Unclamped: the outer knots of detail::unclamped_outer_knots (spaced by the end spans),
   /// the same curve on the same domain. Blossoming beyond the domain can amplify rounding
   /// by the ratio of those spacings; the end points become ordinary control points.
   [[nodiscard]] BSpline unclamp() const {
-    const auto [L, R] = detail::unclamped_outer_knots<T>(U_, p_);
+    const auto [L, R] = detail::unclamped_outer_knots<T>(kv_.knots(), kv_.degree());
     return from_form(detail::with_outer_knots<T, PointType>(form(), L, R));
   }
 
   /// True when both end knots are repeated p + 1 times.
-  [[nodiscard]] bool is_clamped() const { return U_.front() == domain().lo && U_.back() == domain().hi; }
+  [[nodiscard]] bool is_clamped() const { return kv_.is_clamped(); }
 
   /// The Bézier curve as a B-spline: degree n, knots 0 (n + 1 times) and 1 (n + 1 times).
   [[nodiscard]] static BSpline from_bezier(const Bezier<T, D>& c) {
@@ -500,8 +745,11 @@ class BSpline {
   friend bool operator==(const BSpline&, const BSpline&) = default;
 
  private:
-  int p_;
-  std::vector<T> U_;
+  void check_points() const {
+    for (std::size_t i = 0; i < P_.size(); ++i) require_finite_point(P_[i], "points[" + std::to_string(i) + "]");
+  }
+
+  KnotVector<T> kv_;
   std::vector<PointType> P_;
 };
 
@@ -538,10 +786,15 @@ class Nurbs {
   static constexpr int dimension = D;
 
   Nurbs(int degree, std::vector<T> knots, std::vector<PointType> points, std::vector<T> weights)
-      : P_(std::move(points)), w_(std::move(weights)), h_(make_homogeneous(degree, std::move(knots), P_, w_)) {}
+      : P_(std::move(points)), w_(std::move(weights)), h_(degree, std::move(knots), homogeneous_points(P_, w_)) {}
+
+  /// The curve on validated knots (the weights and points are checked as above).
+  Nurbs(KnotVector<T> knots, std::vector<PointType> points, std::vector<T> weights)
+      : P_(std::move(points)), w_(std::move(weights)), h_(std::move(knots), homogeneous_points(P_, w_)) {}
 
   [[nodiscard]] int degree() const { return h_.degree(); }
   [[nodiscard]] const std::vector<T>& knots() const { return h_.knots(); }
+  [[nodiscard]] const KnotVector<T>& knot_vector() const { return h_.knot_vector(); }
   [[nodiscard]] const std::vector<PointType>& points() const { return P_; }
   [[nodiscard]] const std::vector<T>& weights() const { return w_; }
   [[nodiscard]] Interval<T> domain() const { return h_.domain(); }
@@ -553,6 +806,25 @@ class Nurbs {
   [[nodiscard]] PointType operator()(T u) const {
     require_finite(u, "t");
     return project(h_(u).to_vector(), u);
+  }
+
+  /// C(ts[j]) for every parameter into out[j], as operator() gives them: the homogeneous
+  /// points by BSpline::evaluate (spans searched from the previous one), then projected.
+  /// Errors as BSpline::evaluate, and "t[j]" at a pole.
+  void evaluate(std::span<const T> ts, std::span<PointType> out) const {
+    if (out.size() != ts.size()) {
+      throw InvalidArgument("out", "needs one point per parameter: " + std::to_string(ts.size()) + " parameters, " +
+                                       std::to_string(out.size()) + " points");
+    }
+    std::vector<Point<T, D + 1>> h(ts.size());
+    h_.evaluate(ts, h);
+    for (std::size_t j = 0; j < ts.size(); ++j) {
+      try {
+        out[j] = project(h[j].to_vector(), ts[j]);
+      } catch (const InvalidArgument& e) {
+        throw InvalidArgument("t[" + std::to_string(j) + "]", e.problem());
+      }
+    }
   }
 
   /// The k-th derivative (k >= 0) by the quotient rule on the homogeneous derivatives
@@ -607,6 +879,47 @@ class Nurbs {
       if (!(q[D] > 0)) return from_homogeneous(detail::elevate<T, D + 1>(h_.form(), r, false));
     }
     return from_homogeneous(std::move(g));
+  }
+
+  /// Degree reduction as BSpline::reduce_degree, on the homogeneous points (taken about
+  /// the centre c of the control box, which the curve does not notice). Error measure:
+  /// the Cartesian distance at equal parameters, bounded from the homogeneous bound d
+  /// by d sqrt(1 + R^2) / w_min as remove_knot does ([PT97, eq. 5.30]; R bounds |C - c|
+  /// on both curves, w_min is the smallest original weight): the per-span acceptance uses
+  /// R of the original points, the reported bound R of both, and a result whose bound then
+  /// exceeds the tolerance, or that needs a weight <= 0, is refused ("tolerance").
+  [[nodiscard]] DegreeReduction<Nurbs> reduce_degree(T tolerance) const {
+    detail::check_reduction<T>(degree(), tolerance);
+    const Box<T, D> box = control_bounds();
+    PointType c;
+    for (int d = 0; d < D; ++d) c[d] = box.lo[d] / 2 + box.hi[d] / 2;
+    KnotForm<T, Point<T, D + 1>> f = h_.form();
+    for (auto& q : f.P)
+      for (int d = 0; d < D; ++d) q[d] -= q[D] * c[d];  // w (P - c)
+    T wmin = f.P.front()[D], radius = 0;
+    for (std::size_t i = 0; i < f.P.size(); ++i) {
+      wmin = std::min(wmin, f.P[i][D]);
+      radius = std::max(radius, norm(P_[i] - c));
+    }
+    const T scale = std::sqrt(1 + radius * radius) / wmin;
+    detail::FormReduction<T, Point<T, D + 1>> r = detail::reduce_degree_form<T, Point<T, D + 1>>(f, tolerance, scale);
+    T reach = radius;
+    for (const auto& q : r.form.P) {
+      if (!(q[D] > 0)) {
+        throw InvalidArgument("tolerance", "the reduced curve would need a weight <= 0: this NURBS has no reduced form here");
+      }
+      T s2 = 0;
+      for (int d = 0; d < D; ++d) s2 += (q[d] / q[D]) * (q[d] / q[D]);
+      reach = std::max(reach, std::sqrt(s2));
+    }
+    const T bound = r.error_bound / scale * std::sqrt(1 + reach * reach) / wmin;
+    if (!(bound <= tolerance)) {
+      throw InvalidArgument("tolerance", "reducing the degree moves the curve by up to " + detail::format_number(bound) +
+                                             ", more than the tolerance " + detail::format_number(tolerance));
+    }
+    for (auto& q : r.form.P)
+      for (int d = 0; d < D; ++d) q[d] += q[D] * c[d];
+    return {from_homogeneous(std::move(r.form)), bound, r.kept_knots};
   }
   [[nodiscard]] Nurbs clamp() const { return from_homogeneous(h_.clamp().form()); }
   /// Unclamping may make a weight non-positive (InvalidArgument "weights[i]").
@@ -773,7 +1086,9 @@ class Nurbs {
   friend bool operator==(const Nurbs&, const Nurbs&) = default;
 
  private:
-  static Homogeneous make_homogeneous(int degree, std::vector<T> knots, const std::vector<PointType>& P, const std::vector<T>& w) {
+  /// (w_i P_i, w_i) with the weights scaled as the class comment says; checks the weights
+  /// and points (the knots are checked by the B-spline made of them).
+  static std::vector<Point<T, D + 1>> homogeneous_points(const std::vector<PointType>& P, const std::vector<T>& w) {
     if (w.size() != P.size()) {
       throw InvalidArgument("weights", "needs one weight per control point: " + std::to_string(P.size()) + " points but " +
                                            std::to_string(w.size()) + " weights");
@@ -800,8 +1115,8 @@ class Nurbs {
       H[i][D] = wi;
     }
     // The homogeneous points are finite products of finite values: only the degree and
-    // knot errors can come from here, and they name the fields as they are.
-    return Homogeneous(degree, std::move(knots), std::move(H));
+    // knot errors can come from the B-spline, and they name the fields as they are.
+    return H;
   }
 
   PointType project(const Vector<T, D + 1>& h, T u) const {
