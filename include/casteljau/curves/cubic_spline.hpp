@@ -205,11 +205,12 @@ std::vector<Vector<T, D>> cubic_spline_slopes(const std::vector<T>& u, const std
 namespace detail {
 
 /// The slopes of a non-periodic cubic spline, as cubic_spline_slopes computes them, in
-/// two sweeps over the data and one scratch array: the forward sweep builds each row of
-/// the system from the data as it goes (no arrays of h_i, d_i or of the three diagonals)
-/// and eliminates it at once (Thomas' algorithm [GolubVanLoan13, 4.3.6], keeping only the
-/// multipliers c_i / pivot_i that back substitution needs, one reciprocal per row); the
-/// backward sweep substitutes and checks that the Hermite curve's Bézier control points
+/// two sweeps over the data and one scratch array: the elimination sweep builds each row
+/// of the system from the data as it goes (no arrays of h_i, d_i or of the three
+/// diagonals) and eliminates it at once (Thomas' algorithm [GolubVanLoan13, 4.3.6],
+/// keeping only the multipliers that substitution needs, one reciprocal per row; from 5
+/// points on from both ends towards the middle row, see below); the substitution sweep
+/// checks that the Hermite curve's Bézier control points
 /// P_i + h_i s_i / 3 and P_(i+1) - h_i s_(i+1) / 3 are finite. The checks of the data are
 /// folded into the sweeps without branches: every h_i in (0, inf) (params finite and
 /// strictly increasing), every control point finite (points finite, no overflow; a
@@ -217,8 +218,9 @@ namespace detail {
 /// s unspecified, for a case it does not take (periodic; not-a-knot below 4 points, whose
 /// small-n forms cubic_spline_slopes gives; an order or end value that is not valid) and
 /// for data failing a check: the caller then runs cubic_spline_slopes and the checking
-/// Hermite constructor, which name the faulty field. Same arithmetic as
-/// cubic_spline_slopes up to rounding (multiplication by the pivot's reciprocal). O(n).
+/// Hermite constructor, which name the faulty field. The same system as
+/// cubic_spline_slopes, the same values up to rounding (the order of elimination, the
+/// pivot's reciprocal). O(n).
 template <class T, int D>
 bool cubic_spline_slopes_fused(const std::vector<T>& u, const std::vector<Point<T, D>>& P, const SplineBoundary<T, D>& bc,
                                std::vector<Vector<T, D>>& s) {
@@ -262,38 +264,93 @@ bool cubic_spline_slopes_fused(const std::vector<T>& u, const std::vector<Point<
   }
 
   s.resize(n + 1);
-  const auto cp = std::make_unique_for_overwrite<T[]>(n + 1);  // the multipliers, not zeroed first
+  const auto w = std::make_unique_for_overwrite<T[]>(n + 1);  // the multipliers, not zeroed first
   constexpr T big = std::numeric_limits<T>::max();
   bool ok = true;
-  T inv = 1 / b0;
-  cp[0] = c0 * inv;
-  s[0] = r0 * inv;
-  T h_prev = hh(0);
-  ok &= (h_prev > 0) & (h_prev <= big);
-  V d_prev = (P[1] - P[0]) / h_prev;
-  for (std::size_t i = 1; i < n; ++i) {
-    const T h = u[i + 1] - u[i];
-    ok &= (h > 0) & (h <= big);
-    const V d = (P[i + 1] - P[i]) / h;
-    // Row i: h_i s_(i-1) + 2 (h_(i-1) + h_i) s_i + h_(i-1) s_(i+1) = 3 (h_i d_(i-1) + h_(i-1) d_i).
-    inv = 1 / (2 * (h_prev + h) - h * cp[i - 1]);
-    cp[i] = h_prev * inv;
-    s[i] = (T(3) * (h * d_prev + h_prev * d) - h * s[i - 1]) * inv;
-    h_prev = h;
-    d_prev = d;
-  }
-  const T pivot = bn - an * cp[n - 1];
-  ok &= std::isfinite(pivot) & (pivot != 0);
-  s[n] = (rn - an * s[n - 1]) / pivot;
-
-  // Back substitution; the Bézier control points' finiteness accumulates in acc (x * 0 is 0
-  // for finite x, NaN otherwise).
+  // The Bézier control points' finiteness accumulates in acc (x * 0 is 0 for finite x, NaN
+  // otherwise); piece i is checked once s_i and s_(i+1) are final.
   T acc = 0;
-  for (std::size_t i = n; i-- > 0;) {
-    s[i] -= cp[i] * s[i + 1];
+  const auto check_piece = [&](std::size_t i) {
     const T h3 = (u[i + 1] - u[i]) / 3;
     const Point<T, D> a = P[i] + h3 * s[i], b = P[i + 1] - h3 * s[i + 1];
     for (int k = 0; k < D; ++k) acc += a[k] * 0 + b[k] * 0;
+  };
+  // Row i (0 < i < n): h_i s_(i-1) + 2 (h_(i-1) + h_i) s_i + h_(i-1) s_(i+1) = 3 (h_i d_(i-1) + h_(i-1) d_i).
+  T inv = 1 / b0;
+  w[0] = c0 * inv;
+  s[0] = r0 * inv;
+  T hl = hh(0);  // the downward sweep's h_(i-1), d_(i-1)
+  ok &= (hl > 0) & (hl <= big);
+  V dl = (P[1] - P[0]) / hl;
+  const auto down = [&](std::size_t i) {  // eliminates x_(i-1) from row i: x_i + w_i x_(i+1) = s_i
+    const T h = u[i + 1] - u[i];
+    ok &= (h > 0) & (h <= big);
+    const V d = (P[i + 1] - P[i]) / h;
+    const T r = 1 / (2 * (hl + h) - h * w[i - 1]);
+    w[i] = hl * r;
+    s[i] = (T(3) * (h * dl + hl * d) - h * s[i - 1]) * r;
+    hl = h;
+    dl = d;
+  };
+  if (n < 4) {
+    for (std::size_t i = 1; i < n; ++i) down(i);
+    const T pivot = bn - an * w[n - 1];
+    ok &= std::isfinite(pivot) & (pivot != 0);
+    s[n] = (rn - an * s[n - 1]) / pivot;
+    for (std::size_t i = n; i-- > 0;) {
+      s[i] -= w[i] * s[i + 1];
+      check_piece(i);
+    }
+    return ok && acc == 0;
+  }
+  // A twisted factorization [ParlettDhillon97]: downward from row 0 to row k - 1 and upward from row n
+  // to row k + 1 in the same loop, two independent chains (each step waits for the
+  // division of the one before it), met at row k; then substitution outward from x_k,
+  // again two chains. Each sweep meets the same diagonally dominant rows as one-way
+  // elimination does, the not-a-knot end row first (as the downward sweep meets row 0).
+  const std::size_t k = n / 2;
+  inv = 1 / bn;
+  w[n] = an * inv;
+  s[n] = rn * inv;
+  T hr = hh(n - 1);  // the upward sweep's h_i, d_i
+  ok &= (hr > 0) & (hr <= big);
+  V dr = (P[n] - P[n - 1]) / hr;
+  const auto up = [&](std::size_t i) {  // eliminates x_(i+1) from row i: x_i + w_i x_(i-1) = s_i
+    const T g = u[i] - u[i - 1];
+    ok &= (g > 0) & (g <= big);
+    const V e = (P[i] - P[i - 1]) / g;
+    const T r = 1 / (2 * (g + hr) - g * w[i + 1]);
+    w[i] = hr * r;
+    s[i] = (T(3) * (hr * e + g * dr) - g * s[i + 1]) * r;
+    hr = g;
+    dr = e;
+  };
+  std::size_t top = 1, bottom = n - 1;
+  for (; top < k && bottom > k; ++top, --bottom) {
+    down(top);
+    up(bottom);
+  }
+  for (; top < k; ++top) down(top);
+  for (; bottom > k; --bottom) up(bottom);
+  // Row k with x_(k-1) = s_(k-1) - w_(k-1) x_k and x_(k+1) = s_(k+1) - w_(k+1) x_k; here
+  // hl, dl = h_(k-1), d_(k-1) and hr, dr = h_k, d_k.
+  const T pivot = 2 * (hl + hr) - hr * w[k - 1] - hl * w[k + 1];
+  ok &= std::isfinite(pivot) & (pivot != 0);
+  s[k] = (T(3) * (hr * dl + hl * dr) - hr * s[k - 1] - hl * s[k + 1]) / pivot;
+  std::size_t i = k, j = k;
+  for (; i > 0 && j < n; --i, ++j) {
+    s[i - 1] -= w[i - 1] * s[i];
+    check_piece(i - 1);
+    s[j + 1] -= w[j + 1] * s[j];
+    check_piece(j);
+  }
+  for (; i > 0; --i) {
+    s[i - 1] -= w[i - 1] * s[i];
+    check_piece(i - 1);
+  }
+  for (; j < n; ++j) {
+    s[j + 1] -= w[j + 1] * s[j];
+    check_piece(j);
   }
   return ok && acc == 0;
 }
