@@ -1,6 +1,8 @@
-// Properties of the B-spline knot operations [PT97, ch. 5]: knot insertion, refinement,
-// degree elevation and splitting leave the curve unchanged; removal undoes insertion; the
-// closed Lane-Riesenfeld limit closes with C^(p-1). Random degrees 1..5, clamped and
+// Properties of the B-spline basis [PT97, ch. 2]: non-negativity, partition of unity,
+// local support, agreement with the recursive Cox-de Boor definition; of the knot
+// operations [PT97, ch. 5]: knot insertion, refinement, degree elevation, splitting and
+// Bézier decomposition leave the curve unchanged; removal undoes insertion; the closed
+// Lane-Riesenfeld limit closes with C^(p-1). Random degrees 1..5, clamped and
 // unclamped knot vectors on a grid of 1/16 (so repeated knots are frequent).
 #include <algorithm>
 #include <cmath>
@@ -41,6 +43,79 @@ double gap(const A& a, const B& b, double lo, double hi) {
     d = std::max(d, distance(a(u), b(u)));
   }
   return d;
+}
+
+/// N_{i,p}(u) by the recursive definition [PT97, eq. 2.5] with 0/0 = 0 and the half-open
+/// spans [U_i, U_{i+1}), except that the last non-empty span is closed at its right end
+/// (the domain's end belongs to it). Written here from the definition, independently of
+/// basis_functions' triangular scheme.
+double cox_de_boor(const std::vector<double>& U, int i, int p, double u, double right_end) {
+  const std::size_t I = static_cast<std::size_t>(i), P = static_cast<std::size_t>(p);
+  if (p == 0) {
+    if (u == right_end) return U[I] < U[I + 1] && U[I + 1] == right_end ? 1 : 0;
+    return U[I] <= u && u < U[I + 1] ? 1 : 0;
+  }
+  double v = 0;
+  if (U[I + P] != U[I]) v += (u - U[I]) / (U[I + P] - U[I]) * cox_de_boor(U, i, p - 1, u, right_end);
+  if (U[I + P + 1] != U[I + 1]) v += (U[I + P + 1] - u) / (U[I + P + 1] - U[I + 1]) * cox_de_boor(U, i + 1, p - 1, u, right_end);
+  return v;
+}
+
+// The p + 1 functions of A2.2 on span s are N_{s-p..s} of the definition; the others
+// vanish there (local support); all are >= 0 and they sum to 1 on the domain.
+RC_GTEST_PROP(KnotProperty, BasisIsTheCoxDeBoorDefinition, ()) {
+  const C2 c = random_bspline();
+  const std::vector<double>& U = c.knots();
+  const int p = c.degree(), n = static_cast<int>(c.points().size());
+  const auto [a, b] = c.domain();
+  const double u = a + (b - a) * *rc::gen::inRange(0, 257) / 256.0;  // knots included
+  const std::size_t s = find_span<double>(U, p, u);
+  std::vector<double> N(static_cast<std::size_t>(p) + 1);
+  basis_functions<double>(U, p, s, u, N);
+  double sum = 0;
+  for (int i = 0; i < n; ++i) {
+    const double reference = cox_de_boor(U, i, p, u, b);
+    RC_ASSERT(reference >= 0);
+    const int r = i - (static_cast<int>(s) - p);
+    const double ours = r >= 0 && r <= p ? N[static_cast<std::size_t>(r)] : 0.0;
+    RC_ASSERT(std::abs(ours - reference) <= 1e-13);
+    if (r < 0 || r > p) RC_ASSERT(reference == 0);  // local support: zero off span s's p + 1
+    sum += ours;
+  }
+  RC_ASSERT(std::abs(sum - 1) <= 1e-14);
+}
+
+// Moving control point i changes the curve only on [U_i, U_(i+p+1)]: elsewhere de Boor
+// reads the same p + 1 points, so the values are identical, not just close.
+RC_GTEST_PROP(KnotProperty, MovingOnePointChangesOnlyItsSupport, ()) {
+  const C2 c = random_bspline();
+  const std::vector<double>& U = c.knots();
+  const int p = c.degree();
+  const std::size_t i = static_cast<std::size_t>(*rc::gen::inRange(0, static_cast<int>(c.points().size())));
+  std::vector<Point<double, 2>> P = c.points();
+  P[i] = P[i] + Vector<double, 2>{0.5, -0.25};
+  const C2 moved(p, U, P);
+  const auto [a, b] = c.domain();
+  bool changed_inside = false;
+  for (int k = 0; k <= 256; ++k) {
+    const double u = a + (b - a) * k / 256.0;
+    const bool inside = U[i] <= u && u <= U[i + static_cast<std::size_t>(p) + 1];
+    if (!inside) RC_ASSERT(c(u) == moved(u));
+    if (inside && distance(c(u), moved(u)) > 0) changed_inside = true;
+  }
+  RC_ASSERT(changed_inside || U[i + static_cast<std::size_t>(p) + 1] <= a || U[i] >= b);
+}
+
+// Bézier decomposition and back: the pieces trace the curve, and joining them again
+// (each interior break p times, C^0) gives the same curve.
+RC_GTEST_PROP(KnotProperty, BezierDecompositionKeepsTheCurve, ()) {
+  const C2 c = random_bspline();
+  const auto pc = pieces(c);
+  std::vector<Bezier<double, 2>> segs;
+  for (const auto& s : pc.segments()) segs.push_back(std::get<Bezier<double, 2>>(s));
+  const auto [a, b] = c.domain();
+  RC_ASSERT(gap(c, pc, a, b) <= 1e-12);
+  RC_ASSERT(gap(c, C2::from_pieces(segs, pc.breaks()), a, b) <= 1e-12);
 }
 
 // Each new point is a convex combination of two old ones (insertion, refinement) or the
