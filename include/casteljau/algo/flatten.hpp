@@ -753,11 +753,16 @@ void flatten_piece(const C& c, typename C::Scalar tolerance, FlattenMethod metho
       if (P.size() <= 4 && (method == FlattenMethod::uniform || (D == 2 && method == FlattenMethod::optimal))) {
         SmallPiece<T, D> s;
         s.m = static_cast<int>(P.size());
+        // q 2^-e as normalised_points computes it; by one multiplication (correctly
+        // rounded, so equal to ldexp) while 2^-e is representable (e >= -1023).
+        const bool multiply = e >= -1023;
+        const T down = multiply ? std::ldexp(T(1), -e) : T(0);
         for (int i = 0; i < s.m; ++i)
           for (int d = 0; d < D; ++d) {
             const T q = P[static_cast<std::size_t>(i)][d] - origin[d];
-            s.q[static_cast<std::size_t>(i)][d] =
-                std::isfinite(q) ? std::ldexp(q, -e) : std::ldexp(P[static_cast<std::size_t>(i)][d] / 2 - origin[d] / 2, 1 - e);
+            s.q[static_cast<std::size_t>(i)][d] = !std::isfinite(q) ? std::ldexp(P[static_cast<std::size_t>(i)][d] / 2 - origin[d] / 2, 1 - e)
+                                                  : multiply         ? q * down
+                                                                     : std::ldexp(q, -e);
           }
         auto emit = [&](const Point<T, D>& q) {
           Point<T, D> r;
