@@ -357,11 +357,17 @@ const std::vector<casteljau::Bezier<double, 2>>& casteljau_curves(const std::vec
 }
 
 #if CASTELJAU_BENCH_HAVE_FLATTEN_METHODS
+/// Every polyline appended to the one output vector (flatten's appending overload, where
+/// the library has it: no allocation per curve).
 template <casteljau::FlattenMethod M>
 void casteljau_flatten(const std::vector<Cubic>& cs, Polylines& out) {
   for (const auto& c : casteljau_curves(cs)) {
+#ifdef CASTELJAU_FLATTEN_APPENDS
+    casteljau::flatten(c, tolerance, M, out.points);
+#else
     const auto v = casteljau::flatten(c, tolerance, M);
     out.points.insert(out.points.end(), v.begin(), v.end());
+#endif
     out.end_curve();
   }
 }

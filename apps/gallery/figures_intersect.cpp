@@ -152,7 +152,7 @@ Figure flattening_methods() {
   const std::string cap = "<code>flatten</code> by its three methods at tolerance " + num(tol, 2) + ": " + counts +
                           " (4001 samples each). The optimal method's count was told before emitting as " +
                           num(flatten_count_estimate(c, tol), 0) +
-                          " (the integral of &radic;curvature); on W3's random cubics it is within 2.4% of the greedy "
+                          " (the integral of &radic;curvature); on W3's random cubics it is within 3.8% of the greedy "
                           "near-optimal count, subdivision 1.67x and uniform 2.08x (docs/accuracy.md).";
   return {"flatten-methods", "Flattening three ways: uniform, subdivision, optimal", doc.str(), cap};
 }

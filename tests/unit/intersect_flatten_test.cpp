@@ -63,6 +63,64 @@ TEST(FlattenMethods, NurbsCircleEveryMethod) {
   EXPECT_NEAR(flatten_count_estimate(c, 1e-3), static_cast<double>(opt.size() - 1), 3);
 }
 
+// Lines, quadratics and cubics take allocation-free kernels (uniform and, in the plane,
+// optimal). Uniform: n from Wang's bound computed here (n = ceil(sqrt(p (p-1) / 8 max|second
+// difference| / tol))) and vertices c(i / n). Curve of W3 size (0..100), tolerance 0.1.
+TEST(FlattenMethods, SmallUniformIsWangsSteps) {
+  const B2 c{{10, 20}, {90, 95}, {5, 80}, {70, 3}};
+  const auto P = c.points();
+  double second = 0;
+  for (int i = 0; i < 2; ++i) second = std::max(second, norm((P[i + 2] - P[i + 1]) - (P[i + 1] - P[i])));
+  const int n = static_cast<int>(std::ceil(std::sqrt(6.0 / 8.0 * second / 0.1)));
+  const auto poly = flatten(c, 0.1, FlattenMethod::uniform);
+  ASSERT_EQ(poly.size(), static_cast<std::size_t>(n) + 1);
+  for (int i = 0; i <= n; ++i) EXPECT_LE(norm(poly[static_cast<std::size_t>(i)] - c(static_cast<double>(i) / n)), 1e-12);
+}
+
+// A cubic on a line that runs past its end and back: every point lies on the line
+// through any chord, so only the distance to the chord *segment* (the part beyond its
+// ends) can fail a step. Every method within tolerance.
+TEST(FlattenMethods, CollinearCurveDoublingBack) {
+  // Control points 0, 3, -2, 1 on the x axis: x(t) = 9 t - 24 t^2 + 16 t^3, extremes at
+  // t = 1/4 (x = 1) and t = 3/4 (x = 0); x(1) = 1. Also B'(0) = 0 at a collinear start
+  // (0, 0, 3, 1), which stalled an early version of the optimal kernel.
+  for (const B2& c : {B2{{0, 0}, {3, 0}, {-2, 0}, {1, 0}}, B2{{0, 0}, {0, 0}, {3, 0}, {1, 0}}}) {
+    for (const FlattenMethod m : all_methods) {
+      const auto poly = flatten(c, 0.1, m);
+      for (int i = 0; i <= 4000; ++i) EXPECT_LE(test::polyline_distance(c(i / 4000.0), poly), 0.1) << static_cast<int>(m);
+    }
+  }
+}
+
+// The appending overload: the same polyline as the returning one, after what out held;
+// out unchanged when it throws (tolerance below the coordinates' resolution; a path whose
+// pieces do not meet).
+TEST(FlattenMethods, AppendingOverload) {
+  const B2 cubic{{0, 0}, {1, 2}, {2, -1}, {3, 1}};
+  const B2 quintic{{0, 0}, {1, 2}, {2, -1}, {3, 1}, {4, 0}, {5, 2}};
+  const RationalBezier<double, 2> conic({{1, 0}, {1, 1}, {0, 1}}, {1, std::sqrt(0.5), 1});
+  const P2 marker(-7, -7);
+  for (const FlattenMethod m : all_methods) {
+    auto check = [&](const auto& c) {
+      std::vector<P2> out{marker};
+      flatten(c, 1e-3, m, out);
+      const auto alone = flatten(c, 1e-3, m);
+      ASSERT_EQ(out.size(), alone.size() + 1);
+      EXPECT_EQ(out[0], marker);
+      for (std::size_t i = 0; i < alone.size(); ++i) EXPECT_EQ(out[i + 1], alone[i]);
+    };
+    check(cubic);
+    check(quintic);
+    check(conic);
+    check(circle());
+    std::vector<P2> out{marker};
+    EXPECT_THROW(flatten(B2{{1e10, 0}, {1e10, 1}, {1e10 + 1, 1}}, 1e-9, m, out), NumericalError);
+    const Path<double, 2> broken({cubic, B2{{3.5, 1}, {4, 2}, {5, 0}}});
+    EXPECT_THROW(flatten(broken, 0.1, m, out), InvalidArgument);
+    EXPECT_EQ(out, std::vector<P2>{marker});
+  }
+}
+
 TEST(Intersect, LibraryEntryPointsAcrossTypes) {
   // Cubic against a polyline: x(t) = 3t, y(t) = (1-t)^3 (-1) + ... crosses y = 0 three times.
   const B2 c{{0, -1}, {1, 3}, {2, -3}, {3, 1}};
