@@ -209,4 +209,39 @@ TEST(Intersect, ReparametrisedAndSubIntervalOverlaps) {
   EXPECT_NEAR(r.overlaps[0].b_end, 1.0 / 3, 1e-9);
 }
 
+TEST(Intersect, SerpentineCrossesItselfAtEveryGridPoint) {
+  // A polyline sweeping the rows y = 0..k (x from 0.5 to k + 0.5, back and forth), then the
+  // columns x = 1..k (y from k + 1 or k + 0.5 down to -0.5 and back): every row crosses
+  // every column once, at (j, i), and the connectors cross nothing: k (k + 1) crossings,
+  // each found once (the merge of points compares neighbours in ta only).
+  const int k = 40;
+  std::vector<P2> v;
+  for (int i = 0; i <= k; ++i) {
+    const bool even = i % 2 == 0;
+    v.push_back(P2{even ? 0.5 : k + 0.5, double(i)});
+    v.push_back(P2{even ? k + 0.5 : 0.5, double(i)});
+  }
+  v.push_back(P2{k + 0.5, k + 1.0});  // k even: the last row ends at x = k + 0.5
+  for (int j = 1; j <= k; ++j) {
+    const bool down = j % 2 == 1;
+    v.push_back(P2{double(j), down ? (j == 1 ? k + 1.0 : k + 0.5) : -0.5});
+    v.push_back(P2{double(j), down ? -0.5 : k + 0.5});
+  }
+  const Polyline<double, 2> serpentine(v);
+  const auto r = self_intersect(serpentine);
+  EXPECT_TRUE(r.overlaps.empty());
+  ASSERT_EQ(r.points.size(), static_cast<std::size_t>(k * (k + 1)));
+  std::vector<int> seen(static_cast<std::size_t>(k * (k + 1)), 0);
+  for (const auto& h : r.points) {
+    EXPECT_LT(h.ta, h.tb);
+    EXPECT_EQ(h.kind, IntersectionKind::crossing);
+    const double j = std::round(h.point[0]), i = std::round(h.point[1]);
+    EXPECT_NEAR(h.point[0], j, 1e-14);
+    EXPECT_NEAR(h.point[1], i, 1e-14);
+    ASSERT_TRUE(j >= 1 && j <= k && i >= 0 && i <= k) << h.point[0] << " " << h.point[1];
+    ++seen[static_cast<std::size_t>((j - 1) * (k + 1) + i)];
+  }
+  for (int c : seen) EXPECT_EQ(c, 1);
+}
+
 }  // namespace

@@ -696,6 +696,14 @@ Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
   }
   std::sort(hits.begin(), hits.end(), [](const auto& x, const auto& y) { return x.ta < y.ta; });
   std::vector<Hit<T>> kept;
+  // Hits merge only with kept points within 1e3 merge_fraction of the longest piece of a in
+  // ta (see below); kept stays sorted by ta to within that window (a merge moves a kept
+  // point towards the later hit), so each hit is compared with the kept points from 4
+  // windows back only: linear in the number of points, not quadratic (a polyline crossing
+  // itself 10^5 times).
+  T longest_a = 0;
+  for (std::size_t p = 0; p < ca.size(); ++p) longest_a = std::max(longest_a, piece_length(ca, p));
+  const T window = T(1e3) * T(merge_fraction) * longest_a;
   for (const auto& h : hits) {
     // Inside (or at the end of) an overlap: part of it, not an isolated point.
     bool in_overlap = false;
@@ -718,11 +726,15 @@ Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
       for (std::size_t p = ca.segment_index(h.ta); p <= ca.segment_index(h.tb) && p < A.unit.size(); ++p) {
         const T s0 = std::clamp(ca.local_parameter(p, h.ta), T(0), T(1)), s1 = std::clamp(ca.local_parameter(p, h.tb), T(0), T(1));
         if (s1 > s0) loop.add(std::visit([&](const auto& x) { return part(x, s0, s1).control_bounds(); }, A.unit[p]));
+        if (!loop.empty() && diagonal(loop) > 100 * tol) break;  // a loop: no need to see the rest of it
       }
       if (!loop.empty() && diagonal(loop) <= 100 * tol) continue;
     }
     bool merged = false;
-    for (auto& k : kept) {
+    std::size_t first = kept.size();
+    while (first > 0 && kept[first - 1].ta >= h.ta - 4 * window) --first;
+    for (std::size_t ki = first; ki < kept.size(); ++ki) {
+      auto& k = kept[ki];
       const T ma = T(merge_fraction) * piece_length(ca, h.pa), mb = T(merge_fraction) * piece_length(*cb, h.pb);
       const T da = std::abs(k.ta - h.ta), db = std::abs(k.tb - h.tb);
       if (da <= ma && db <= mb && distance(at(A.unit[k.pa], k.sa), at(A.unit[h.pa], h.sa)) <= 1e4 * tol) {
