@@ -352,6 +352,66 @@ class RandomPropertyTest(CliTest):
         self.assertGreater(loops, 3)
 
 
+class HardInputTest(CliTest):
+    """The general engine on near-coincident curves and at high degree, checked by mpmath."""
+
+    def on_both(self, A, B, r, size):
+        """Every reported point lies on both curves to 1e-12 of the size (mpmath, 30 digits)."""
+        with mpmath.workdps(30):
+            for h in r["intersections"]:
+                pa = mp_bezier(A, mpmath.mpf(h["t"][0]))
+                pb = mp_bezier(B, mpmath.mpf(h["t"][1]))
+                self.assertLess(float(mpmath.sqrt(sum((x - y) ** 2 for x, y in zip(pa, pb)))), 1e-12 * size, h)
+                self.assertLess(float(mpmath.sqrt(sum((x - y) ** 2 for x, y in zip(pa, h["point"])))), 1e-12 * size, h)
+
+    def test_turned_copy(self):
+        # A cubic and its copy turned by 1e-6 about c(0.5): one crossing there (an angle of
+        # 1e-6, so parameters to about eps / 1e-6); the refined mpmath root agrees.
+        P = [[0, 0], [1, 2], [3, -1], [4, 1]]
+        o = mp_bezier(P, mpmath.mpf("0.5"))
+        a = 1e-6
+        Q = [[float(o[0]) + math.cos(a) * (x - float(o[0])) - math.sin(a) * (y - float(o[1])),
+              float(o[1]) + math.sin(a) * (x - float(o[0])) + math.cos(a) * (y - float(o[1]))] for x, y in P]
+        r = self.ok("intersect", {"curves": [bezier(P), bezier(Q)]})
+        self.assertEqual(r["overlaps"], [])
+        self.assertEqual(len(r["intersections"]), 1, r)
+        self.on_both(P, Q, r, 5)
+        s, t = mp_refine(P, Q, *r["intersections"][0]["t"])
+        self.assert_close(r["intersections"][0]["t"], [s, t], 1e-9)
+        self.assert_close([s, t], [0.5, 0.5], 1e-9)
+
+    def test_translated_copies(self):
+        # Apart by 1e-9 of the size (5): a near miss, nothing; by 1e-11: one overlap.
+        P = [[0, 0], [1, 2], [3, -1], [4, 1]]
+        far = self.ok("intersect", {"curves": [bezier(P), bezier([[x, y + 5e-9] for x, y in P])]})
+        self.assertEqual(far, {"intersections": [], "overlaps": []})
+        near = self.ok("intersect", {"curves": [bezier(P), bezier([[x, y + 5e-11] for x, y in P])]})
+        self.assertEqual(near["intersections"], [])
+        self.assertEqual(len(near["overlaps"]), 1, near)
+        self.assert_close(near["overlaps"][0]["a"], [0, 1], 1e-12)
+        self.assert_close(near["overlaps"][0]["b"], [0, 1], 1e-12)
+
+    def test_high_degree_pair(self):
+        # Two random degree-120 curves (the limit is 500): every point on both curves
+        # (mpmath), sorted by ta.
+        rng = random.Random(120)
+        A = [[rng.random(), rng.random()] for _ in range(121)]
+        B = [[rng.random(), rng.random()] for _ in range(121)]
+        r = self.ok("intersect", {"curves": [bezier(A), bezier(B)]})
+        self.assertGreater(len(r["intersections"]), 10)
+        self.on_both(A, B, r, math.sqrt(2))
+        ts = [h["t"][0] for h in r["intersections"]]
+        self.assertEqual(ts, sorted(ts))
+        # Degree 300 (refused up to the limit's raise from 200) against the line y = 0.5:
+        # accepted, every point on the line and on the curve (de Casteljau in Python).
+        C = [[i / 300, rng.random()] for i in range(301)]
+        r = self.ok("intersect", {"curves": [bezier(C), bezier([[-1, 0.5], [2, 0.5]])]})
+        self.assertGreater(len(r["intersections"]), 0)
+        for h in r["intersections"]:
+            self.assertLess(abs(h["point"][1] - 0.5), 1e-12, h)
+            self.assertLess(dist(de_casteljau(C, h["t"][0]), h["point"]), 1e-12, h)
+
+
 class BadInputTest(CliTest):
     def test_errors(self):
         line = bezier([[0, 0], [1, 1]])
@@ -363,8 +423,8 @@ class BadInputTest(CliTest):
         self.bad("intersect", {"curves": [bezier([[0], [1]])]}, "curves[0]", contains="2-D")
         self.bad("intersect", {"curves": [line, {"type": "bezier", "points": [[0, 0], [1, "x"]]}]}, "curves[1].points[1][1]")
         self.bad("intersect", {"curves": [line, line], "tolerance": 1}, "tolerance", contains="unknown")
-        high = bezier([[i / 300, (i % 7) / 7] for i in range(302)])  # degree 301
-        self.bad("intersect", {"curves": [line, high]}, "curves[1]", contains="degree 200")
+        high = bezier([[i / 500, (i % 7) / 7] for i in range(502)])  # degree 501
+        self.bad("intersect", {"curves": [line, high]}, "curves[1]", contains="degree 500")
 
 
 if __name__ == "__main__":

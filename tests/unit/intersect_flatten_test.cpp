@@ -187,4 +187,119 @@ TEST(Intersect, DegenerateFixturesGiveCommonPointsOnly) {
   }
 }
 
+/// c turned by angle a about o (rounded coordinates: the copy is exact to a few eps).
+B2 turned(const B2& c, const P2& o, double a) {
+  std::vector<P2> q;
+  for (const auto& p : c.points()) {
+    const auto v = p - o;
+    q.push_back(P2{o[0] + std::cos(a) * v[0] - std::sin(a) * v[1], o[1] + std::sin(a) * v[0] + std::cos(a) * v[1]});
+  }
+  return B2(q);
+}
+
+TEST(Intersect, NearCoincidentCurves) {
+  // The general engine (detail::isect::solve: the fast path refuses these pairs). A cubic
+  // and its copy turned by 1e-6 about c(0.5) cross there once, at an angle of 1e-6
+  // (parameters to about eps / 1e-6); turned about its start they meet there.
+  using PC = Pieces<double, 2>;
+  auto general = [](const B2& a, const B2& b) {
+    const PC pa(std::vector<BezierPiece<double, 2>>{a}), pb(std::vector<BezierPiece<double, 2>>{b});
+    return detail::isect::solve(pa, &pb);
+  };
+  const B2 c{{0, 0}, {1, 2}, {3, -1}, {4, 1}};
+  const auto mid = general(c, turned(c, c(0.5), 1e-6));
+  ASSERT_EQ(mid.points.size(), 1u);
+  EXPECT_TRUE(mid.overlaps.empty());
+  EXPECT_NEAR(mid.points[0].ta, 0.5, 1e-8);
+  EXPECT_NEAR(mid.points[0].tb, 0.5, 1e-8);
+  const auto start = general(c, turned(c, c(0.0), 1e-6));
+  ASSERT_EQ(start.points.size(), 1u);
+  EXPECT_TRUE(start.overlaps.empty());
+  EXPECT_NEAR(start.points[0].ta, 0.0, 1e-8);
+  EXPECT_NEAR(start.points[0].tb, 0.0, 1e-8);
+  // Translated copies: apart by 1e-9 of the size (the control-box diagonal, 5): a near
+  // miss, nothing; by 1e-11 of it, within the near-miss distance everywhere: one overlap.
+  const double size = 5;
+  for (double d : {1e-9, 1e-8}) {
+    const B2 up{{0, d * size}, {1, 2 + d * size}, {3, -1 + d * size}, {4, 1 + d * size}};
+    const auto r = general(c, up);
+    EXPECT_TRUE(r.points.empty()) << d;
+    EXPECT_TRUE(r.overlaps.empty()) << d;
+  }
+  const B2 close{{0, 1e-11 * size}, {1, 2 + 1e-11 * size}, {3, -1 + 1e-11 * size}, {4, 1 + 1e-11 * size}};
+  const auto ov = general(c, close);
+  EXPECT_TRUE(ov.points.empty());
+  ASSERT_EQ(ov.overlaps.size(), 1u);
+  EXPECT_EQ(ov.overlaps[0].a, (Interval<double>{0, 1}));
+  EXPECT_EQ(ov.overlaps[0].b_start, 0.0);
+  EXPECT_EQ(ov.overlaps[0].b_end, 1.0);
+}
+
+TEST(Intersect, ReparametrisedAndSubIntervalOverlaps) {
+  // The halves of a cubic split at 0.3 (a path on [0, 2]) against the whole: one overlap,
+  // joined across the joint, both ways round.
+  using PC = Pieces<double, 2>;
+  const B2 c{{0, 0}, {1, 2}, {3, -1}, {4, 1}};
+  const auto h = c.split(0.3);
+  const PC halves(std::vector<BezierPiece<double, 2>>{h.left, h.right});
+  const PC whole(std::vector<BezierPiece<double, 2>>{c});
+  for (const bool swap : {false, true}) {
+    const auto r = swap ? detail::isect::solve(whole, &halves) : detail::isect::solve(halves, &whole);
+    EXPECT_TRUE(r.points.empty());
+    ASSERT_EQ(r.overlaps.size(), 1u);
+    EXPECT_NEAR(r.overlaps[0].a.lo, 0, 1e-12);
+    EXPECT_NEAR(r.overlaps[0].a.hi, swap ? 1 : 2, 1e-12);
+    EXPECT_NEAR(r.overlaps[0].b_start, 0, 1e-12);
+    EXPECT_NEAR(r.overlaps[0].b_end, swap ? 2 : 1, 1e-12);
+  }
+  // A degree-12 curve (points on a wave: no loops) cut into its parts on [0, 0.6] and
+  // [0.4, 1]: they share c on [0.4, 0.6], which is [2/3, 1] of the first and [0, 1/3] of
+  // the second.
+  std::vector<P2> q;
+  for (int i = 0; i <= 12; ++i) q.push_back(P2{i / 12.0, std::sin(i * 0.7)});
+  const B2 w(q);
+  const auto r = intersect(detail::part(w, 0.0, 0.6), detail::part(w, 0.4, 1.0));
+  EXPECT_TRUE(r.points.empty());
+  ASSERT_EQ(r.overlaps.size(), 1u);
+  EXPECT_NEAR(r.overlaps[0].a.lo, 2.0 / 3, 1e-9);
+  EXPECT_NEAR(r.overlaps[0].a.hi, 1, 1e-12);
+  EXPECT_NEAR(r.overlaps[0].b_start, 0, 1e-12);
+  EXPECT_NEAR(r.overlaps[0].b_end, 1.0 / 3, 1e-9);
+}
+
+TEST(Intersect, SerpentineCrossesItselfAtEveryGridPoint) {
+  // A polyline sweeping the rows y = 0..k (x from 0.5 to k + 0.5, back and forth), then the
+  // columns x = 1..k (y from k + 1 or k + 0.5 down to -0.5 and back): every row crosses
+  // every column once, at (j, i), and the connectors cross nothing: k (k + 1) crossings,
+  // each found once (the merge of points compares neighbours in ta only).
+  const int k = 40;
+  std::vector<P2> v;
+  for (int i = 0; i <= k; ++i) {
+    const bool even = i % 2 == 0;
+    v.push_back(P2{even ? 0.5 : k + 0.5, double(i)});
+    v.push_back(P2{even ? k + 0.5 : 0.5, double(i)});
+  }
+  v.push_back(P2{k + 0.5, k + 1.0});  // k even: the last row ends at x = k + 0.5
+  for (int j = 1; j <= k; ++j) {
+    const bool down = j % 2 == 1;
+    v.push_back(P2{double(j), down ? (j == 1 ? k + 1.0 : k + 0.5) : -0.5});
+    v.push_back(P2{double(j), down ? -0.5 : k + 0.5});
+  }
+  const Polyline<double, 2> serpentine(v);
+  const auto r = self_intersect(serpentine);
+  EXPECT_TRUE(r.overlaps.empty());
+  ASSERT_EQ(r.points.size(), static_cast<std::size_t>(k * (k + 1)));
+  std::vector<int> seen(static_cast<std::size_t>(k * (k + 1)), 0);
+  for (const auto& h : r.points) {
+    EXPECT_LT(h.ta, h.tb);
+    EXPECT_EQ(h.kind, IntersectionKind::crossing);
+    const double j = std::round(h.point[0]), i = std::round(h.point[1]);
+    EXPECT_NEAR(h.point[0], j, 1e-14);
+    EXPECT_NEAR(h.point[1], i, 1e-14);
+    ASSERT_TRUE(j >= 1 && j <= k && i >= 0 && i <= k) << h.point[0] << " " << h.point[1];
+    ++seen[static_cast<std::size_t>((j - 1) * (k + 1) + i)];
+  }
+  for (int c : seen) EXPECT_EQ(c, 1);
+}
+
 }  // namespace

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <map>
 #include <numbers>
 #include <optional>
 #include <span>
@@ -218,6 +219,37 @@ bool cones_separated(const Cone<T>& a, const Cone<T>& b) {
   return k * pi > hi + margin;
 }
 
+/// Whether the control points of b all lie outside the fat line of a (the band along a's
+/// chord holding a's control points, widened by slack) on one side: then the parts are
+/// apart [SederbergNishita90]. Unlike control boxes, fat lines follow the parts' direction,
+/// so two curves running side by side at a distance d (near-coincident curves) are told
+/// apart once their parts bend by less than d, not only once the parts are shorter than d:
+/// a few hundred parts instead of millions. Rational parts too (their points lie in the
+/// convex hull of their control points, the weights being positive).
+template <class CA, class CB>
+bool fat_line_apart(const CA& a, const CB& b, typename CA::Scalar slack) {
+  using T = typename CA::Scalar;
+  const auto& P = a.points();
+  const Vector<T, 2> chord = P.back() - P.front();
+  const T len = norm(chord);
+  if (!(len > 0)) return false;
+  const Vector<T, 2> n{-chord[1] / len, chord[0] / len};
+  T dmin = 0, dmax = 0;
+  for (const auto& p : P) {
+    const T d = dot(p - P.front(), n);
+    dmin = std::min(dmin, d);
+    dmax = std::max(dmax, d);
+  }
+  bool above = true, below = true;
+  for (const auto& q : b.points()) {
+    const T d = dot(q - P.front(), n);
+    above = above && d > dmax + slack;
+    below = below && d < dmin - slack;
+    if (!above && !below) return false;
+  }
+  return true;
+}
+
 /// Largest number of subdivision steps one pair of arcs may take; a pair of transversal
 /// arcs takes a few hundred. Hitting it means the curves run within the tolerance of each
 /// other over a long stretch without coinciding: reported, not silently truncated.
@@ -239,6 +271,7 @@ void subdivide(const CA& a, T alo, T ahi, int da, const CB& b, T blo, T bhi, int
   }
   const Box<T, 2> ba = a.control_bounds(), bb = b.control_bounds();
   if (!boxes_meet(ba, bb, ctx.slack)) return;
+  if (fat_line_apart(a, b, ctx.slack) || fat_line_apart(b, a, ctx.slack)) return;
   const bool fa = da >= max_depth || is_flat(a, ctx.flat), fb = db >= max_depth || is_flat(b, ctx.flat);
   if (fa && fb) {
     const auto& P = a.points();
@@ -312,6 +345,18 @@ Refined<T> refine(const Piece<T>& a, const Arc<T>& aa, const Piece<T>& b, const 
       dt = -(m00 * g1 - ab2 * g0) / dd;
     }
     if (!std::isfinite(ds) || !std::isfinite(dt)) break;
+    // A step at the resolution of the parameters: converged. Taken if it helps, without
+    // the halvings below (which would cost 30 evaluations of each curve for nothing).
+    if (std::abs(ds) <= 4 * eps * std::max(T(1), std::abs(s)) && std::abs(dt) <= 4 * eps * std::max(T(1), std::abs(t))) {
+      const T s2 = clamp_s(s + ds), t2 = clamp_t(t + dt);
+      const Vector<T, 2> F2 = at(a, s2) - at(b, t2);
+      if (norm(F2) < f) {
+        s = s2;
+        t = t2;
+        f = norm(F2);
+      }
+      break;
+    }
     bool improved = false;
     for (int half = 0; half < 30; ++half) {
       const T s2 = clamp_s(s + ds), t2 = clamp_t(t + dt);
@@ -535,7 +580,9 @@ bool intersect_arcs(const Prepared<T>& A, std::size_t ia, const Prepared<T>& B, 
       B.arc_parts[ib]);
   if (ctx.exhausted) return false;
   bool clean = true;
-  std::vector<std::pair<T, T>> done;
+  // Refined points so far, by s: seeds from neighbouring parts refine to the same point
+  // (thousands of them along near-coincident curves), found again in O(log) each.
+  std::multimap<T, T> done;
   for (const auto& [s0, t0] : ctx.seeds) {
     Refined<T> r = refine(a, ra, b, rb, s0, t0);
     if (!(r.distance <= ctx.tol)) continue;
@@ -544,9 +591,10 @@ bool intersect_arcs(const Prepared<T>& A, std::size_t ia, const Prepared<T>& B, 
       if (auto p = polish_touch(a, ra, b, rb, r, ctx.tol)) r = *p;
     }
     bool dup = false;
-    for (const auto& [s, t] : done) dup = dup || (std::abs(s - r.s) <= T(1e-12) && std::abs(t - r.t) <= T(1e-12));
+    for (auto it = done.lower_bound(r.s - T(1e-12)); !dup && it != done.end() && it->first <= r.s + T(1e-12); ++it)
+      dup = std::abs(it->second - r.t) <= T(1e-12);
     if (dup) continue;
-    done.emplace_back(r.s, r.t);
+    done.emplace(r.s, r.t);
     hits.push_back({A.curve->global_parameter(ra.piece, r.s), B.curve->global_parameter(rb.piece, r.t), ra.piece, rb.piece, r.s,
                     r.t, r.distance, false});
   }
@@ -648,6 +696,14 @@ Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
   }
   std::sort(hits.begin(), hits.end(), [](const auto& x, const auto& y) { return x.ta < y.ta; });
   std::vector<Hit<T>> kept;
+  // Hits merge only with kept points within 1e3 merge_fraction of the longest piece of a in
+  // ta (see below); kept stays sorted by ta to within that window (a merge moves a kept
+  // point towards the later hit), so each hit is compared with the kept points from 4
+  // windows back only: linear in the number of points, not quadratic (a polyline crossing
+  // itself 10^5 times).
+  T longest_a = 0;
+  for (std::size_t p = 0; p < ca.size(); ++p) longest_a = std::max(longest_a, piece_length(ca, p));
+  const T window = T(1e3) * T(merge_fraction) * longest_a;
   for (const auto& h : hits) {
     // Inside (or at the end of) an overlap: part of it, not an isolated point.
     bool in_overlap = false;
@@ -670,11 +726,15 @@ Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
       for (std::size_t p = ca.segment_index(h.ta); p <= ca.segment_index(h.tb) && p < A.unit.size(); ++p) {
         const T s0 = std::clamp(ca.local_parameter(p, h.ta), T(0), T(1)), s1 = std::clamp(ca.local_parameter(p, h.tb), T(0), T(1));
         if (s1 > s0) loop.add(std::visit([&](const auto& x) { return part(x, s0, s1).control_bounds(); }, A.unit[p]));
+        if (!loop.empty() && diagonal(loop) > 100 * tol) break;  // a loop: no need to see the rest of it
       }
       if (!loop.empty() && diagonal(loop) <= 100 * tol) continue;
     }
     bool merged = false;
-    for (auto& k : kept) {
+    std::size_t first = kept.size();
+    while (first > 0 && kept[first - 1].ta >= h.ta - 4 * window) --first;
+    for (std::size_t ki = first; ki < kept.size(); ++ki) {
+      auto& k = kept[ki];
       const T ma = T(merge_fraction) * piece_length(ca, h.pa), mb = T(merge_fraction) * piece_length(*cb, h.pb);
       const T da = std::abs(k.ta - h.ta), db = std::abs(k.tb - h.tb);
       if (da <= ma && db <= mb && distance(at(A.unit[k.pa], k.sa), at(A.unit[h.pa], h.sa)) <= 1e4 * tol) {
