@@ -140,7 +140,10 @@ class Hermite {
   /// so that repeated batches allocate nothing; out's content is unspecified after a
   /// throw. The batch is cut into four consecutive runs merged side by side, one cursor
   /// each: a merge step waits for the comparison of the step before it, and four
-  /// independent chains let the processor overlap them.
+  /// independent chains let the processor overlap them. The runs go by chunks of 64
+  /// queries, in two passes per chunk: the merge finds the pieces (a short loop of loads
+  /// and comparisons), then the Hermite forms are evaluated, independent of one another,
+  /// so that their divisions and products do not wait behind the merge chains.
   void evaluate_sorted(std::span<const T> u, std::span<PointType> out) const {
     if (out.size() != u.size()) {
       throw InvalidArgument("out", "needs one point per parameter: " + std::to_string(u.size()) + " parameters but room for " +
@@ -152,11 +155,10 @@ class Hermite {
     const VectorType* const mo = out_.data();
     const VectorType* const mi = in_.empty() ? mo : in_.data();
     // One merge step: the piece of x from the cursor i (a binary search when x is behind
-    // it), then the point. Two steps forward without jumps (adding the comparisons), then
-    // a loop for the rest: at about one query per piece the next piece is mostly 0, 1 or
-    // 2 steps ahead, so the loop is rarely entered and its exit rarely mispredicted.
-    const auto step = [&](std::size_t k, std::size_t& i) {
-      const T x = u[k];
+    // it). Two steps forward without jumps (adding the comparisons), then a loop for the
+    // rest: at about one query per piece the next piece is mostly 0, 1 or 2 steps ahead,
+    // so the loop is rarely entered and its exit rarely mispredicted.
+    const auto advance = [&](T x, std::size_t& i) {
       if (!std::isfinite(x)) require_finite(x, "t");  // the call (and its string) only to throw
       if (x < uu[i]) {
         i = segment_index(x);
@@ -165,20 +167,26 @@ class Hermite {
         i += static_cast<std::size_t>((i < last) & (x >= uu[i + 1]));
         while (i < last && x >= uu[i + 1]) ++i;
       }
-      const PointType p = point_of(uu, P, mo, mi, i, x);
-      check_representable(p, x, "the curve's point");
+      return i;
+    };
+    const auto evaluate_at = [&](std::size_t k, std::size_t i) {
+      const PointType p = point_of(uu, P, mo, mi, i, u[k]);
+      check_representable(p, u[k], "the curve's point");
       out[k] = p;
     };
+    constexpr std::size_t chunk = 64;
+    std::size_t piece[4][chunk];
     const std::size_t len = u.size() / 4;
     const auto start = [&](std::size_t k) { return k < u.size() && std::isfinite(u[k]) ? segment_index(u[k]) : 0; };
-    std::size_t i0 = 0, i1 = start(len), i2 = start(2 * len), i3 = start(3 * len);  // the runs' cursors
-    for (std::size_t k = 0; k < len; ++k) {
-      step(k, i0);
-      step(len + k, i1);
-      step(2 * len + k, i2);
-      step(3 * len + k, i3);
+    std::size_t cursor[4] = {0, start(len), start(2 * len), start(3 * len)};
+    for (std::size_t k0 = 0; k0 < len; k0 += chunk) {
+      const std::size_t c = std::min(chunk, len - k0);
+      for (std::size_t k = 0; k < c; ++k)
+        for (std::size_t r = 0; r < 4; ++r) piece[r][k] = advance(u[r * len + k0 + k], cursor[r]);
+      for (std::size_t r = 0; r < 4; ++r)
+        for (std::size_t k = 0; k < c; ++k) evaluate_at(r * len + k0 + k, piece[r][k]);
     }
-    for (std::size_t k = 4 * len; k < u.size(); ++k) step(k, i3);
+    for (std::size_t k = 4 * len; k < u.size(); ++k) evaluate_at(k, advance(u[k], cursor[3]));
   }
 
   /// The points at the parameters u in any order (random queries), into caller storage
