@@ -414,4 +414,40 @@ TEST(CubicSpline, FastPathsAgreeWithTheReferences) {
   EXPECT_INVALID_ARGUMENT(s.evaluate_sorted(std::span<const double>(t), std::span<P1>(small)), "out", "one point per parameter");
 }
 
+// The random batch (groups of 16 queries searched side by side) against one call per query,
+// bit for bit, in shuffled order: every param, midpoints and points outside the domain, for
+// sizes around the block length and batch lengths that are not multiples of the group;
+// the size check, and a NaN query refused (naming "t") as operator() refuses it.
+TEST(CubicSpline, RandomBatchAgreesWithOneCallPerQuery) {
+  std::mt19937_64 rng(61);
+  std::uniform_real_distribution<double> U(0.0, 1.0);
+  for (const std::size_t n : {1, 2, 5, 63, 64, 65, 129, 1000}) {
+    std::vector<double> u(n + 1);
+    std::vector<P1> P(n + 1);
+    u[0] = 2;
+    P[0] = P1(U(rng));
+    for (std::size_t i = 1; i <= n; ++i) {
+      u[i] = u[i - 1] + 0.01 + U(rng);
+      P[i] = P1(U(rng));
+    }
+    const CubicSpline<double, 1> s(u, P);
+    std::vector<double> q = {u[0] - 1, u[n] + 1};
+    for (std::size_t i = 0; i <= n; ++i) q.push_back(u[i]);
+    for (std::size_t i = 0; i < n; ++i) q.push_back((u[i] + u[i + 1]) / 2);
+    std::shuffle(q.begin(), q.end(), rng);
+    for (const std::size_t len : {std::size_t{0}, std::size_t{1}, std::size_t{17}, q.size()}) {
+      if (len > q.size()) continue;
+      std::vector<P1> out(len);
+      s.evaluate(std::span<const double>(q.data(), len), std::span<P1>(out));
+      for (std::size_t k = 0; k < len; ++k) EXPECT_EQ(out[k], s(q[k])) << n << " " << q[k];
+    }
+  }
+  const CubicSpline<double, 1> s({0, 1, 2}, ys({0, 1, 0}));
+  const std::vector<double> t = {0.5, 1.5};
+  std::vector<P1> small(1), two(2);
+  EXPECT_INVALID_ARGUMENT(s.evaluate(std::span<const double>(t), std::span<P1>(small)), "out", "one point per parameter");
+  const std::vector<double> bad = {0.5, std::nan("")};
+  EXPECT_INVALID_ARGUMENT(s.evaluate(std::span<const double>(bad), std::span<P1>(two)), "t", "");
+}
+
 }  // namespace

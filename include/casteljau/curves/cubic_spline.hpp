@@ -393,6 +393,8 @@ class CubicSpline {
   [[nodiscard]] VectorType derivative_at(T u, int k = 1) const { return h_.derivative_at(u, k); }
   [[nodiscard]] std::vector<PointType> evaluate_sorted(std::span<const T> u) const { return h_.evaluate_sorted(u); }
   void evaluate_sorted(std::span<const T> u, std::span<PointType> out) const { h_.evaluate_sorted(u, out); }
+  /// Random (unsorted) batches: Hermite::evaluate.
+  void evaluate(std::span<const T> u, std::span<PointType> out) const { h_.evaluate(u, out); }
 
   [[nodiscard]] CubicSpline reverse() const {
     Boundary b = bc_;

@@ -102,14 +102,8 @@ class Hermite {
   /// no mispredicted branch stalls a step [KhuongMorin17]; on 10^6 params this takes
   /// one wait for memory instead of one for each of the last 6 to 10 halvings. NaN gives 0.
   [[nodiscard]] std::size_t segment_index(T u) const {
-    const std::size_t m = count_at_most(coarse_.data(), coarse_.size(), u);  // coarse_[j] = u_(64 j)
-    if (m == 0) return 0;  // before u_0
-    const std::size_t start = stride * (m - 1);  // u_start <= u (< u_(start + 64) if sampled)
-    const std::size_t stop = std::min(start + stride, u_.size() - 1);  // interior params below stop
-    const T* block = u_.data() + start + 1;
-    const std::size_t len = stop - start - 1;
-    for (std::size_t k = 0; k < len; k += 64 / sizeof(T)) __builtin_prefetch(block + k);
-    return start + count_at_most(block, len, u);
+    const Block b = coarse_block(u);
+    return b.start + count_at_most(u_.data() + b.start + 1, b.len, u);
   }
 
   /// C(u) for any finite u: the Hermite form of the piece (exact at the params: h00, h01
@@ -146,7 +140,10 @@ class Hermite {
   /// so that repeated batches allocate nothing; out's content is unspecified after a
   /// throw. The batch is cut into four consecutive runs merged side by side, one cursor
   /// each: a merge step waits for the comparison of the step before it, and four
-  /// independent chains let the processor overlap them.
+  /// independent chains let the processor overlap them. The runs go by chunks of 64
+  /// queries, in two passes per chunk: the merge finds the pieces (a short loop of loads
+  /// and comparisons), then the Hermite forms are evaluated, independent of one another,
+  /// so that their divisions and products do not wait behind the merge chains.
   void evaluate_sorted(std::span<const T> u, std::span<PointType> out) const {
     if (out.size() != u.size()) {
       throw InvalidArgument("out", "needs one point per parameter: " + std::to_string(u.size()) + " parameters but room for " +
@@ -158,11 +155,10 @@ class Hermite {
     const VectorType* const mo = out_.data();
     const VectorType* const mi = in_.empty() ? mo : in_.data();
     // One merge step: the piece of x from the cursor i (a binary search when x is behind
-    // it), then the point. Two steps forward without jumps (adding the comparisons), then
-    // a loop for the rest: at about one query per piece the next piece is mostly 0, 1 or
-    // 2 steps ahead, so the loop is rarely entered and its exit rarely mispredicted.
-    const auto step = [&](std::size_t k, std::size_t& i) {
-      const T x = u[k];
+    // it). Two steps forward without jumps (adding the comparisons), then a loop for the
+    // rest: at about one query per piece the next piece is mostly 0, 1 or 2 steps ahead,
+    // so the loop is rarely entered and its exit rarely mispredicted.
+    const auto advance = [&](T x, std::size_t& i) {
       if (!std::isfinite(x)) require_finite(x, "t");  // the call (and its string) only to throw
       if (x < uu[i]) {
         i = segment_index(x);
@@ -171,20 +167,72 @@ class Hermite {
         i += static_cast<std::size_t>((i < last) & (x >= uu[i + 1]));
         while (i < last && x >= uu[i + 1]) ++i;
       }
-      const PointType p = point_of(uu, P, mo, mi, i, x);
-      check_representable(p, x, "the curve's point");
+      return i;
+    };
+    const auto evaluate_at = [&](std::size_t k, std::size_t i) {
+      const PointType p = point_of(uu, P, mo, mi, i, u[k]);
+      check_representable(p, u[k], "the curve's point");
       out[k] = p;
     };
+    constexpr std::size_t chunk = 64;
+    std::size_t piece[4][chunk];
     const std::size_t len = u.size() / 4;
     const auto start = [&](std::size_t k) { return k < u.size() && std::isfinite(u[k]) ? segment_index(u[k]) : 0; };
-    std::size_t i0 = 0, i1 = start(len), i2 = start(2 * len), i3 = start(3 * len);  // the runs' cursors
-    for (std::size_t k = 0; k < len; ++k) {
-      step(k, i0);
-      step(len + k, i1);
-      step(2 * len + k, i2);
-      step(3 * len + k, i3);
+    std::size_t cursor[4] = {0, start(len), start(2 * len), start(3 * len)};
+    for (std::size_t k0 = 0; k0 < len; k0 += chunk) {
+      const std::size_t c = std::min(chunk, len - k0);
+      for (std::size_t k = 0; k < c; ++k)
+        for (std::size_t r = 0; r < 4; ++r) piece[r][k] = advance(u[r * len + k0 + k], cursor[r]);
+      for (std::size_t r = 0; r < 4; ++r)
+        for (std::size_t k = 0; k < c; ++k) evaluate_at(r * len + k0 + k, piece[r][k]);
     }
-    for (std::size_t k = 4 * len; k < u.size(); ++k) step(k, i3);
+    for (std::size_t k = 4 * len; k < u.size(); ++k) evaluate_at(k, advance(u[k], cursor[3]));
+  }
+
+  /// The points at the parameters u in any order (random queries), into caller storage
+  /// (out.size() == u.size(), else InvalidArgument("out")); the same values as operator()
+  /// at each u, bit for bit. For 10^6 params a lone query waits for memory twice in a row
+  /// (the block of params, then the piece's point and tangents); here the queries go in
+  /// groups of 16 through three stages, each stage issuing the prefetches the next one
+  /// needs for all 16 before using any: the coarse search (cache-resident) and a prefetch
+  /// of the block, the search in the block and a prefetch of the piece, the Hermite form.
+  /// So the misses of 16 queries overlap instead of queuing (software pipelining of
+  /// independent searches, the batch form of [KhuongMorin17]'s prefetching). Throws as
+  /// operator(); out's content is unspecified after a throw.
+  void evaluate(std::span<const T> u, std::span<PointType> out) const {
+    if (out.size() != u.size()) {
+      throw InvalidArgument("out", "needs one point per parameter: " + std::to_string(u.size()) + " parameters but room for " +
+                                       std::to_string(out.size()));
+    }
+    constexpr std::size_t group = 16;
+    const T* const uu = u_.data();
+    const PointType* const P = P_.data();
+    const VectorType* const mo = out_.data();
+    const VectorType* const mi = in_.empty() ? mo : in_.data();
+    Block blocks[group];
+    std::size_t piece[group];
+    for (std::size_t k0 = 0; k0 < u.size(); k0 += group) {
+      const std::size_t g = std::min(group, u.size() - k0);
+      const T* const x = u.data() + k0;
+      for (std::size_t j = 0; j < g; ++j) {
+        if (!std::isfinite(x[j])) require_finite(x[j], "t");  // the call (and its string) only to throw
+        blocks[j] = coarse_block(x[j]);  // prefetches the block
+      }
+      for (std::size_t j = 0; j < g; ++j) {
+        const std::size_t i = blocks[j].start + count_at_most(uu + blocks[j].start + 1, blocks[j].len, x[j]);
+        piece[j] = i;
+        __builtin_prefetch(uu + i + 1);
+        __builtin_prefetch(P + i);
+        __builtin_prefetch(P + i + 1);
+        __builtin_prefetch(mo + i);
+        __builtin_prefetch(mi + i + 1);
+      }
+      for (std::size_t j = 0; j < g; ++j) {
+        const PointType p = point_of(uu, P, mo, mi, piece[j], x[j]);
+        check_representable(p, x[j], "the curve's point");
+        out[k0 + j] = p;
+      }
+    }
   }
 
   /// Piece i (0 <= i < n) as a cubic Bézier curve on [0, 1] (its own parameter t).
@@ -273,6 +321,23 @@ class Hermite {
   }
 
   static constexpr std::size_t stride = 64;  ///< params per entry of coarse_
+
+  /// The answer of segment_index(u) lies in [start, start + len]: start + the number of
+  /// u_(start+1..start+len) that are <= u. Found in coarse_ (which stays in the cache); the
+  /// block's cache lines are requested at once, so that its search waits for memory once.
+  struct Block {
+    std::size_t start, len;
+  };
+  Block coarse_block(T u) const {
+    const std::size_t m = count_at_most(coarse_.data(), coarse_.size(), u);  // coarse_[j] = u_(64 j)
+    if (m == 0) return {0, 0};  // before u_0
+    const std::size_t start = stride * (m - 1);  // u_start <= u (< u_(start + 64) if sampled)
+    const std::size_t stop = std::min(start + stride, u_.size() - 1);  // interior params below stop
+    const std::size_t len = stop - start - 1;
+    const T* block = u_.data() + start + 1;
+    for (std::size_t k = 0; k < len; k += 64 / sizeof(T)) __builtin_prefetch(block + k);
+    return {start, len};
+  }
 
   /// The number of first[0..len) that are <= x (first sorted): a branch-free binary search
   /// keeping [base, base + len] around the answer, the two possible next probes prefetched.
