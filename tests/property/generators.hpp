@@ -7,8 +7,8 @@
 #include <rapidcheck.h>
 #include <rapidcheck/gtest.h>
 
+#include <algorithm>
 #include <cmath>
-
 #include <vector>
 
 #include "casteljau/casteljau.hpp"
@@ -31,6 +31,24 @@ rc::Gen<Point<double, D>> point(double lo = -1, double hi = 1) {
     for (int d = 0; d < D; ++d) p[d] = v[static_cast<std::size_t>(d)];
     return p;
   });
+}
+
+/// A random valid knot vector: degree 1..5, fewer than max_inner interior knots on the
+/// grid k/16 of (0, 1) (each at most p times, so repeated knots are frequent), clamped at
+/// 0 and 1 or with outer knots -k/16 and 1 + k/16 (the domain is [0, 1] either way).
+inline KnotVector<double> knot_vector(int max_inner) {
+  const int p = *rc::gen::inRange(1, 6);
+  const int inner = *rc::gen::inRange(0, max_inner);
+  std::vector<double> X;
+  for (int i = 0; i < inner; ++i) X.push_back(*rc::gen::inRange(1, 16) / 16.0);
+  std::sort(X.begin(), X.end());
+  for (const double x : X) RC_PRE(std::count(X.begin(), X.end(), x) <= p);
+  const bool clamped = *rc::gen::arbitrary<bool>();
+  std::vector<double> U;
+  for (int i = p; i >= 0; --i) U.push_back(clamped ? 0.0 : -i / 16.0);
+  U.insert(U.end(), X.begin(), X.end());
+  for (int i = 0; i <= p; ++i) U.push_back(clamped ? 1.0 : 1 + i / 16.0);
+  return KnotVector<double>(p, std::move(U));
 }
 
 /// Control points of a curve of degree n.

@@ -11,27 +11,12 @@ namespace {
 
 using namespace casteljau;
 
-KnotVector<double> random_knots() {
-  const int p = *rc::gen::inRange(1, 6);
-  const int inner = *rc::gen::inRange(0, 24);
-  std::vector<double> X;
-  for (int i = 0; i < inner; ++i) X.push_back(*rc::gen::inRange(1, 16) / 16.0);
-  std::sort(X.begin(), X.end());
-  for (const double x : X) RC_PRE(std::count(X.begin(), X.end(), x) <= p);
-  const bool clamped = *rc::gen::arbitrary<bool>();
-  std::vector<double> U;
-  for (int i = p; i >= 0; --i) U.push_back(clamped ? 0.0 : -i / 16.0);
-  U.insert(U.end(), X.begin(), X.end());
-  for (int i = 0; i <= p; ++i) U.push_back(clamped ? 1.0 : 1 + i / 16.0);
-  return KnotVector<double>(p, std::move(U));
-}
-
 // Parameters on a grid of 1/64 over [-1/4, 5/4]: knots, points between them and points
 // outside the domain all occur.
 double random_parameter() { return *rc::gen::inRange(-16, 81) / 64.0; }
 
 RC_GTEST_PROP(KnotVectorProperty, HintsNeverChangeTheSpan, ()) {
-  const KnotVector<double> U = random_knots();
+  const KnotVector<double> U = prop::knot_vector(24);
   const int count = *rc::gen::inRange(1, 200);
   std::vector<double> us;
   for (int i = 0; i < count; ++i) us.push_back(random_parameter());

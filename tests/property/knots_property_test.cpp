@@ -16,22 +16,12 @@ namespace {
 using namespace casteljau;
 using C2 = BSpline<double, 2>;
 
-/// A random valid B-spline in the plane: degree 1..5, up to 8 interior knots on the grid
-/// k/16 of (0, 1) (each at most p times), clamped or with outer knots -k/16 and 1 + k/16.
+/// A random valid B-spline in the plane on prop::knot_vector's knots (up to 8 interior
+/// knots).
 C2 random_bspline() {
-  const int p = *rc::gen::inRange(1, 6);
-  const int inner = *rc::gen::inRange(0, 9);
-  std::vector<double> X;
-  for (int i = 0; i < inner; ++i) X.push_back(*rc::gen::inRange(1, 16) / 16.0);
-  std::sort(X.begin(), X.end());
-  for (const double x : X) RC_PRE(std::count(X.begin(), X.end(), x) <= p);
-  const bool clamped = *rc::gen::arbitrary<bool>();
-  std::vector<double> U;
-  for (int i = p; i >= 0; --i) U.push_back(clamped ? 0.0 : -i / 16.0);
-  U.insert(U.end(), X.begin(), X.end());
-  for (int i = 0; i <= p; ++i) U.push_back(clamped ? 1.0 : 1 + i / 16.0);
-  const int n = static_cast<int>(U.size()) - p - 1;
-  return C2(p, std::move(U), prop::control_points<2>(n - 1));
+  KnotVector<double> U = prop::knot_vector(9);
+  const int n = static_cast<int>(U.points());
+  return C2(std::move(U), prop::control_points<2>(n - 1));
 }
 
 /// max |a(u) - b(u)| over 65 parameters of [lo, hi].

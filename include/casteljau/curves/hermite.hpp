@@ -145,10 +145,7 @@ class Hermite {
   /// and comparisons), then the Hermite forms are evaluated, independent of one another,
   /// so that their divisions and products do not wait behind the merge chains.
   void evaluate_sorted(std::span<const T> u, std::span<PointType> out) const {
-    if (out.size() != u.size()) {
-      throw InvalidArgument("out", "needs one point per parameter: " + std::to_string(u.size()) + " parameters but room for " +
-                                       std::to_string(out.size()));
-    }
+    check_out_size(u.size(), out.size());
     const std::size_t last = size() - 1;
     const T* const uu = u_.data();
     const PointType* const P = P_.data();
@@ -200,10 +197,7 @@ class Hermite {
   /// independent searches, the batch form of [KhuongMorin17]'s prefetching). Throws as
   /// operator(); out's content is unspecified after a throw.
   void evaluate(std::span<const T> u, std::span<PointType> out) const {
-    if (out.size() != u.size()) {
-      throw InvalidArgument("out", "needs one point per parameter: " + std::to_string(u.size()) + " parameters but room for " +
-                                       std::to_string(out.size()));
-    }
+    check_out_size(u.size(), out.size());
     constexpr std::size_t group = 16;
     const T* const uu = u_.data();
     const PointType* const P = P_.data();
@@ -280,6 +274,13 @@ class Hermite {
   friend bool operator==(const Hermite&, const Hermite&) = default;
 
  private:
+  /// The batch calls' size check: one output point per parameter (InvalidArgument "out").
+  static void check_out_size(std::size_t params, std::size_t room) {
+    if (room != params) {
+      throw InvalidArgument("out", "needs one point per parameter: " + std::to_string(params) + " parameters but room for " +
+                                       std::to_string(room));
+    }
+  }
   PointType point_on(std::size_t i, T u) const {
     PointType p = point_of(u_.data(), P_.data(), out_.data(), in_.empty() ? out_.data() : in_.data(), i, u);
     check_representable(p, u, "the curve's point");
