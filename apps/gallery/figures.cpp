@@ -15,132 +15,22 @@
 
 #include "casteljau/casteljau.hpp"
 #include "casteljau/io/svg.hpp"
+#include "draw.hpp"
 
 namespace casteljau::gallery {
 
 namespace {
 
-using io::Anchor;
-using io::Aspect;
-using io::PageMap;
-using io::PageRect;
-using io::Paint;
-using io::SvgDocument;
-using io::TextStyle;
-using P2 = Point<double, 2>;
-using V2 = Vector<double, 2>;
 using Bez = Bezier<double, 2>;
-using Box2 = Box<double, 2>;
 
 // ---------------------------------------------------------------------------------------
-// Look: one set of colours and strokes for every figure.
-
-constexpr double fig_width = 880;  // px, the page's column width
-const std::string ink = "#1d3557";       // curves
-const std::string polygon_grey = "#8d99ae";
-const std::string point_edge = "#3d4a5c";
-const std::string text_grey = "#4a5563";
-const std::string accent = "#c23b5a";    // the point or property a figure is about
-
-Paint curve_paint(const std::string& colour = ink, double width = 2.6) { return Paint{.stroke = colour, .stroke_width = width}; }
-Paint polygon_paint(const std::string& colour = polygon_grey, double width = 1.3) {
-  return Paint{.stroke = colour, .stroke_width = width, .dash = "5 4"};
-}
-Paint thin(const std::string& colour, double width = 1) { return Paint{.stroke = colour, .stroke_width = width}; }
-
-void control_points(SvgDocument& doc, std::span<const P2> pts, const std::string& edge = point_edge, double r = 3.6) {
-  for (const auto& p : pts) doc.circle(p, r, Paint{.stroke = edge, .stroke_width = 1.4, .fill = "white"});
-}
-
-void dot(SvgDocument& doc, const P2& p, const std::string& colour, double r = 4) {
-  doc.circle(p, r, Paint{.stroke = "white", .stroke_width = 1.2, .fill = colour});
-}
-
-TextStyle math(double size = 15, Anchor anchor = Anchor::middle, const std::string& colour = "#222") {
-  return TextStyle{.size = size, .colour = colour, .anchor = anchor, .italic = true, .family = "Georgia, 'Times New Roman', serif"};
-}
-TextStyle small(double size = 11, Anchor anchor = Anchor::middle, const std::string& colour = text_grey) {
-  return TextStyle{.size = size, .colour = colour, .anchor = anchor, .family = "system-ui, 'Helvetica Neue', Arial, sans-serif"};
-}
-TextStyle heading(double size = 13, Anchor anchor = Anchor::start) {
-  return TextStyle{.size = size, .colour = "#222", .anchor = anchor, .bold = true,
-                   .family = "system-ui, 'Helvetica Neue', Arial, sans-serif"};
-}
-
-/// A label placed px_away pixels from p in the page direction away from `from`.
-void label_away(SvgDocument& doc, const P2& p, const P2& from, const std::string& s, TextStyle style, double px_away = 15) {
-  const P2 q = doc.map()(p), c = doc.map()(from);
-  V2 d = q - c;
-  const double len = norm(d);
-  d = len > 0 ? d / len : V2(0.0, -1.0);
-  style.anchor = Anchor::middle;
-  style.dx = d[0] * px_away;
-  style.dy = d[1] * px_away + style.size * 0.35;  // centre the glyphs vertically
-  doc.text(p, s, style);
-}
+// Geometry helpers for measuring (not drawing) the figures' claims.
 
 P2 centroid(std::span<const P2> pts) {
   V2 s{};
   for (const auto& p : pts) s += p.to_vector();
   return P2::from_vector(s / static_cast<double>(pts.size()));
 }
-
-/// A colour ramp from deep blue through teal and gold to red, s in [0, 1] (for ordered
-/// families: basis functions, degrees).
-std::string ramp(double s) {
-  static constexpr std::array<std::array<double, 3>, 4> stops = {{{43, 76, 155}, {26, 150, 120}, {212, 160, 23}, {192, 57, 43}}};
-  s = std::clamp(s, 0.0, 1.0) * 3;
-  const int i = std::min(2, static_cast<int>(s));
-  const double f = s - i;
-  char buf[8];
-  int c[3];
-  for (int k = 0; k < 3; ++k) c[k] = static_cast<int>(std::lround(stops[i][k] + f * (stops[i + 1][k] - stops[i][k])));
-  std::snprintf(buf, sizeof buf, "#%02x%02x%02x", c[0], c[1], c[2]);
-  return buf;
-}
-
-// ---------------------------------------------------------------------------------------
-// Numbers in captions.
-
-std::string fixed(double v, int decimals = 3) {
-  std::ostringstream os;
-  os.setf(std::ios::fixed);
-  os.precision(decimals);
-  os << v;
-  std::string s = os.str();
-  if (s.find_first_not_of("-0.") == std::string::npos) s = s.substr(s[0] == '-' ? 1 : 0);
-  if (!s.empty() && s[0] == '-') s = "&minus;" + s.substr(1);
-  return s;
-}
-
-/// v in scientific notation for HTML, two significant digits: 2.2 &times; 10<sup>-16</sup>.
-std::string sci(double v) {
-  if (v == 0) return "0";
-  const int e = static_cast<int>(std::floor(std::log10(std::abs(v))));
-  if (e >= -2 && e <= 3) return fixed(v, std::max(0, 2 - e));
-  double m = v / std::pow(10.0, e);
-  std::ostringstream os;
-  os.setf(std::ios::fixed);
-  os.precision(1);
-  os << m;
-  return os.str() + "&thinsp;&times;&thinsp;10<sup>" + (e < 0 ? "&minus;" + std::to_string(-e) : std::to_string(e)) + "</sup>";
-}
-
-/// v with a fixed number of decimals as plain text for SVG (U+2212 minus).
-std::string plain(double v, int decimals) {
-  std::ostringstream os;
-  os.setf(std::ios::fixed);
-  os.precision(decimals);
-  os << v;
-  std::string s = os.str();
-  if (s.find_first_not_of("-0.") == std::string::npos) return s.substr(s[0] == '-' ? 1 : 0);
-  return s[0] == '-' ? "\u2212" + s.substr(1) : s;
-}
-
-std::string point_text(const P2& p, int decimals = 3) { return "(" + fixed(p[0], decimals) + ", " + fixed(p[1], decimals) + ")"; }
-
-// ---------------------------------------------------------------------------------------
-// Geometry helpers for measuring (not drawing) the figures' claims.
 
 template <class C>
 std::vector<P2> samples(const C& c, int n) {
@@ -208,14 +98,6 @@ double polygon_area(std::span<const P2> poly) {
   double a = 0;
   for (std::size_t i = 0; i < poly.size(); ++i) a += cross(poly[i].to_vector(), poly[(i + 1) % poly.size()].to_vector());
   return a / 2;
-}
-
-Box2 grown(Box2 b, double m) {
-  for (int i = 0; i < 2; ++i) {
-    b.lo[i] -= m;
-    b.hi[i] += m;
-  }
-  return b;
 }
 
 /// A framed graph panel: light grid at the ticks, axes at the box edges, tick labels.

@@ -11,53 +11,17 @@
 
 #include "casteljau/casteljau.hpp"
 #include "casteljau/io/svg.hpp"
+#include "draw.hpp"
 #include "figures.hpp"
 
 namespace casteljau::gallery {
 
 namespace {
 
-using io::Anchor;
-using io::PageMap;
-using io::PageRect;
-using io::Paint;
-using io::SvgDocument;
-using io::TextStyle;
-using P2 = Point<double, 2>;
-using Box2 = Box<double, 2>;
 
 constexpr double width = 880;
-const std::string ink = "#1d3557", grey = "#8d99ae", accent = "#c23b5a", light = "#b9c1ca";
+const std::string grey = polygon_grey, light = "#b9c1ca";
 
-Paint stroke(const std::string& colour, double w, const std::string& dash = "") {
-  return Paint{.stroke = colour, .stroke_width = w, .dash = dash};
-}
-void points(SvgDocument& doc, const std::vector<P2>& P, const std::string& colour, double r = 3.4) {
-  for (const auto& q : P) doc.circle(q, r, Paint{.stroke = colour, .stroke_width = 1.3, .fill = "#fff"});
-}
-TextStyle label(double size = 12, Anchor a = Anchor::start) {
-  TextStyle s;
-  s.size = size;
-  s.anchor = a;
-  return s;
-}
-Box2 grown(Box2 b, double f) {
-  const double dx = (b.hi[0] - b.lo[0]) * f, dy = (b.hi[1] - b.lo[1]) * f;
-  return Box2{{b.lo[0] - dx, b.lo[1] - dy}, {b.hi[0] + dx, b.hi[1] + dy}};
-}
-/// Two significant digits in HTML scientific notation.
-std::string sci(double v) {
-  if (v == 0) return "0";
-  const int e = static_cast<int>(std::floor(std::log10(std::abs(v))));
-  char m[32];
-  std::snprintf(m, sizeof m, "%.1f", v / std::pow(10.0, e));
-  return std::string(m) + "&thinsp;&times;&thinsp;10<sup>" + (e < 0 ? "&minus;" + std::to_string(-e) : std::to_string(e)) + "</sup>";
-}
-std::string fixed(double v, int decimals) {
-  char s[32];
-  std::snprintf(s, sizeof s, "%.*f", decimals, v);
-  return s;
-}
 
 /// max |a(u) - b(u)| over 2001 parameters of [lo, hi].
 template <class A, class B>
@@ -94,14 +58,14 @@ Figure knot_insertion() {
   const BSpline<double, 2> full = c.insert_knot(1.5, 3);
   SvgDocument doc(width, 360);
   doc.title("Knot insertion");
-  doc.set_map(PageMap::fit(grown(c.control_bounds(), 0.12), {40, 30, width - 80, 300}));
+  doc.set_map(PageMap::fit(grown_relative(c.control_bounds(), 0.12), {40, 30, width - 80, 300}));
   doc.polyline(c.points(), stroke(light, 1.3));
   doc.polyline(once.points(), stroke(grey, 1.4, "5 3"));
   doc.polyline(full.points(), stroke(accent, 1.4));
   doc.curve(pieces(c), stroke(ink, 2.6));
-  points(doc, c.points(), light);
-  points(doc, once.points(), grey, 3);
-  points(doc, full.points(), accent, 3);
+  control_points(doc, c.points(), light);
+  control_points(doc, once.points(), grey, 3);
+  control_points(doc, full.points(), accent, 3);
   const P2 at = c(1.5);
   doc.circle(at, 5, Paint{.stroke = accent, .stroke_width = 1, .fill = accent});
   TextStyle t = label(12);
@@ -135,7 +99,7 @@ Figure nurbs_circle_figure() {
   doc.set_map(PageMap::fit(Box2{{-1.5, -1.35}, {1.5, 1.35}}, {20, 20, 420, 300}));
   doc.polyline(c.points(), stroke(grey, 1.3));
   doc.curve(pieces(c), stroke(ink, 3));
-  points(doc, c.points(), "#3d4a5c");
+  control_points(doc, c.points(), "#3d4a5c");
   for (std::size_t i = 0; i < c.points().size() - 1; ++i) {
     TextStyle t = label(11, Anchor::middle);
     const P2 q = c.points()[i];
@@ -146,7 +110,7 @@ Figure nurbs_circle_figure() {
   doc.set_map(PageMap::fit(Box2{{-1.5, -1.35}, {1.5, 1.35}}, {450, 20, 420, 300}));
   doc.polyline(arc.points(), stroke(grey, 1.3));
   doc.curve(pieces(arc), stroke(accent, 3));
-  points(doc, arc.points(), "#3d4a5c");
+  control_points(doc, arc.points(), "#3d4a5c");
   doc.set_map(PageMap{});
   doc.text({470, 330}, "arc of 4 rad: " + std::to_string((arc.points().size() - 1) / 2) + " pieces, middle weights cos(d/2) = " +
                            fixed(arc.weights()[1], 4),
@@ -176,7 +140,7 @@ Figure subdivision_schemes() {
   for (int panel = 0; panel < 2; ++panel) {
     const int p = panel == 0 ? 2 : 3;
     const auto& L = panel == 0 ? limit2 : limit3;
-    doc.set_map(PageMap::fit(grown(box_of<double, 2>(P), 0.1), {30.0 + panel * 430.0, 30, 400, 300}));
+    doc.set_map(PageMap::fit(grown_relative(box_of<double, 2>(P), 0.1), {30.0 + panel * 430.0, 30, 400, 300}));
     doc.polyline(closed, stroke(grey, 1.2, "4 3"));
     for (int k = 1; k <= 4; ++k) {
       std::vector<P2> Q = lane_riesenfeld(P, p, k, true);
@@ -193,7 +157,7 @@ Figure subdivision_schemes() {
       }
     }
     doc.curve(pieces(L), stroke(panel == 0 ? ink : accent, 2.2));
-    points(doc, P, "#3d4a5c");
+    control_points(doc, P, "#3d4a5c");
     doc.set_map(PageMap{});
     doc.text({40.0 + panel * 430.0, 350}, panel == 0 ? "Chaikin (LR degree 2), 1-4 steps, limit: quadratic B-spline"
                                                       : "Lane-Riesenfeld degree 3, 1-4 steps, limit: cubic B-spline",
@@ -216,7 +180,7 @@ Figure four_point_scheme() {
   const std::vector<P2> P{P2{{0.0, 0.0}}, P2{{1.5, 2.2}}, P2{{3.4, 2.6}}, P2{{4.2, 0.4}}, P2{{6.0, 0.8}}, P2{{7.2, 3.0}}};
   SvgDocument doc(width, 320);
   doc.title("The 4-point scheme");
-  doc.set_map(PageMap::fit(grown(box_of<double, 2>(P), 0.12), {40, 20, width - 80, 270}));
+  doc.set_map(PageMap::fit(grown_relative(box_of<double, 2>(P), 0.12), {40, 20, width - 80, 270}));
   doc.polyline(P, stroke(grey, 1.2, "4 3"));
   const std::vector<std::string> colours{"#d9dee4", "#aab6c3", "#4c6682"};
   bool interpolates = true;
@@ -229,7 +193,7 @@ Figure four_point_scheme() {
   }
   const auto tight = four_point(P, 5, false, 0.0);
   doc.polyline(tight, stroke(accent, 1, "2 3"));
-  points(doc, P, "#3d4a5c", 4);
+  control_points(doc, P, "#3d4a5c", 4);
   doc.set_map(PageMap{});
   doc.text({50, 310}, "4-point scheme, w = 1/16: 1, 3 and 5 steps (dotted red: w = 0, the polygon itself)", label(12));
   Figure f;

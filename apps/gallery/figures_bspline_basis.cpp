@@ -14,58 +14,20 @@
 #include "casteljau/casteljau.hpp"
 #include "casteljau/io/fit.hpp"
 #include "casteljau/io/svg.hpp"
+#include "draw.hpp"
 #include "figures.hpp"
 
 namespace casteljau::gallery {
 
 namespace {
 
-using io::Anchor;
-using io::Aspect;
-using io::PageMap;
-using io::PageRect;
-using io::Paint;
-using io::SvgDocument;
-using io::TextStyle;
-using P2 = Point<double, 2>;
-using Box2 = Box<double, 2>;
 using Spline = BSpline<double, 2>;
 
 constexpr double width = 880;
-const std::string ink = "#1d3557", grey = "#8d99ae", accent = "#c23b5a", light = "#b9c1ca", text_grey = "#4a5563";
+const std::string grey = polygon_grey, light = "#b9c1ca";
 
-Paint stroke(const std::string& colour, double w, const std::string& dash = "") {
-  return Paint{.stroke = colour, .stroke_width = w, .dash = dash};
-}
-void points(SvgDocument& doc, const std::vector<P2>& P, const std::string& colour, double r = 3.4) {
-  for (const auto& q : P) doc.circle(q, r, Paint{.stroke = colour, .stroke_width = 1.3, .fill = "#fff"});
-}
-TextStyle label(double size = 12, Anchor a = Anchor::start, const std::string& colour = "#222") {
-  TextStyle s;
-  s.size = size;
-  s.anchor = a;
-  s.colour = colour;
-  return s;
-}
-Box2 grown(Box2 b, double f) {
-  const double dx = (b.hi[0] - b.lo[0]) * f, dy = (b.hi[1] - b.lo[1]) * f;
-  return Box2{{b.lo[0] - dx, b.lo[1] - dy}, {b.hi[0] + dx, b.hi[1] + dy}};
-}
-std::string fixed(double v, int decimals) {
-  char s[32];
-  std::snprintf(s, sizeof s, "%.*f", decimals, v);
-  return s;
-}
-/// Two significant digits in HTML scientific notation.
-std::string sci(double v) {
-  if (v == 0) return "0";
-  const int e = static_cast<int>(std::floor(std::log10(std::abs(v))));
-  char m[32];
-  std::snprintf(m, sizeof m, "%.1f", v / std::pow(10.0, e));
-  return std::string(m) + "&thinsp;&times;&thinsp;10<sup>" + (e < 0 ? "&minus;" + std::to_string(-e) : std::to_string(e)) + "</sup>";
-}
 /// A knot value as the captions write it: integers without decimals.
-std::string knot_text(double u) { return u == std::floor(u) ? fixed(u, 0) : fixed(u, 1); }
+std::string knot_text(double u) { return u == std::floor(u) ? plain(u, 0) : plain(u, 1); }
 
 /// Standard normal deviates from a seeded mt19937 (whose output the standard fixes) by
 /// Box-Muller written here: std::normal_distribution differs between standard libraries,
@@ -232,7 +194,7 @@ Figure local_control() {
   doc.title("Local control");
   Box2 box = a.control_bounds();
   box.add(b.control_bounds());
-  doc.set_map(PageMap::fit(grown(box, 0.06), {40, 20, width - 80, 270}));
+  doc.set_map(PageMap::fit(grown_relative(box, 0.06), {40, 20, width - 80, 270}));
   doc.polyline(P, stroke(grey, 1.2, "5 3"));
   doc.polyline(Q, stroke(grey, 1.3));
   doc.curve(pa, stroke(light, 2.4, "7 4"));
@@ -242,8 +204,8 @@ Figure local_control() {
     doc.curve(std::get<Bezier<double, 2>>(pb.segments()[i]), stroke(c ? accent : ink, c ? 3 : 2.4));
   }
   for (std::size_t i = 0; i < pb.size() + 1; ++i) doc.circle(b(pb.breaks()[i]), 2.6, Paint{.stroke = "#fff", .stroke_width = 0.8, .fill = ink});
-  points(doc, P, grey, 3);
-  points(doc, Q, "#3d4a5c");
+  control_points(doc, P, grey, 3);
+  control_points(doc, Q, "#3d4a5c");
   doc.arrow(P[moved], Q[moved], stroke(accent, 1.4), 7);
   TextStyle t = label(12, Anchor::start, accent);
   t.dx = 10;
@@ -336,7 +298,7 @@ Figure noisy_fit() {
                         double err, const PageRect& r) {
     Box2 box = box_of<double, 2>(D);
     box.add(c.control_bounds());
-    doc.set_map(PageMap::fit(grown(box, 0.04), r));
+    doc.set_map(PageMap::fit(grown_relative(box, 0.04), r));
     doc.polyline(c.points(), stroke(light, 1.1, "4 3"));
     doc.polyline(true_curve, stroke(grey, 1.4, "6 4"));
     doc.curve(pieces(c), stroke(ink, 2.4));
@@ -351,7 +313,7 @@ Figure noisy_fit() {
     TextStyle tt = label(11, Anchor::start, accent);
     tt.dx = 9;
     tt.dy = -7;
-    doc.text(D[worst], "max_error " + fixed(err, 3), tt);
+    doc.text(D[worst], "max_error " + plain(err, 3), tt);
   };
   std::vector<P2> open_truth, closed_truth;
   for (int i = 0; i <= 400; ++i) {

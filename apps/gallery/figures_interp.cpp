@@ -9,36 +9,17 @@
 
 #include "casteljau/casteljau.hpp"
 #include "casteljau/io/svg.hpp"
+#include "draw.hpp"
 #include "figures.hpp"
 
 namespace casteljau::gallery {
 
 namespace {
 
-using io::Anchor;
-using io::Aspect;
-using io::PageMap;
-using io::PageRect;
-using io::Paint;
-using io::SvgDocument;
-using io::TextStyle;
-using P2 = Point<double, 2>;
 using P1 = Point<double, 1>;
-using Box2 = Box<double, 2>;
 
 constexpr double width = 880;  // px, the page's column width (as figures.cpp)
-const std::string sans = "system-ui, 'Helvetica Neue', Arial, sans-serif";
 
-std::string num(double v, int decimals = 3) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-  return buf;
-}
-std::string sci(double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.1e", v);
-  return buf;
-}
 
 /// The graph (x, y(x)) of a 1-D curve at n + 1 parameters over [a, b].
 template <class C>
@@ -130,8 +111,8 @@ Figure spline_boundaries() {
       "; clamped |y'| at the ends " + sci(cl1) + "; not-a-knot jump of y''' at x<sub>1</sub> " + sci(jump1) +
       " (the first two pieces are one cubic); periodic |y'(x<sub>0</sub>) &minus; y'(x<sub>n</sub>)| = " + sci(per1) +
       ", |y''(x<sub>0</sub>) &minus; y''(x<sub>n</sub>)| = " + sci(per2) + ". The ends differ most: y'(x<sub>0</sub>) is " +
-      num(natural.derivative_at(lo, 1)[0], 2) + " (natural), 0 (clamped), " + num(not_a_knot.derivative_at(lo, 1)[0], 2) +
-      " (not-a-knot), " + num(periodic.derivative_at(lo, 1)[0], 2) + " (periodic).";
+      fixed(natural.derivative_at(lo, 1)[0], 2) + " (natural), 0 (clamped), " + fixed(not_a_knot.derivative_at(lo, 1)[0], 2) +
+      " (not-a-knot), " + fixed(periodic.derivative_at(lo, 1)[0], 2) + " (periodic).";
   return {"spline-boundaries", "Cubic spline end conditions", doc.str(), cap};
 }
 
@@ -165,7 +146,7 @@ Figure monotone_vs_natural() {
   }
   std::string cap =
       "Non-decreasing data with a steep step. The natural cubic spline is C<sup>2</sup> but leaves the data's range: "
-      "measured on 7001 parameters it dips to " + num(nat_lo) + " (below the first value 0) and rises to " + num(nat_hi) +
+      "measured on 7001 parameters it dips to " + fixed(nat_lo) + " (below the first value 0) and rises to " + fixed(nat_hi) +
       " (above the last value 3.1). The Hermite curve with <code>tangent_rule</code> <code>monotone</code> (exactly "
       "scipy's PchipInterpolator: zero slope at flat or turning data, else a weighted harmonic mean of the chord slopes) "
       "is only C<sup>1</sup> but stays monotone: its largest decrease between consecutive samples is " + sci(std::max(0.0, -worst_step)) +

@@ -8,19 +8,14 @@
 
 #include "casteljau/casteljau.hpp"
 #include "casteljau/io/svg.hpp"
+#include "draw.hpp"
 #include "figures.hpp"
 
 namespace casteljau::gallery {
 
 namespace {
 
-using io::Paint;
-using io::PageMap;
-using io::PageRect;
-using io::SvgDocument;
-using io::TextStyle;
 using P1 = Point<double, 1>;
-using P2 = Point<double, 2>;
 
 std::string sci2(double v) {
   char buf[32];

@@ -11,51 +11,18 @@
 #include "casteljau/algo/flatten.hpp"
 #include "casteljau/algo/intersect.hpp"
 #include "casteljau/io/svg.hpp"
+#include "draw.hpp"
 #include "figures.hpp"
 
 namespace casteljau::gallery {
 
 namespace {
 
-using io::Anchor;
-using io::PageMap;
-using io::PageRect;
-using io::Paint;
-using io::SvgDocument;
-using io::TextStyle;
-using P2 = Point<double, 2>;
 using Bez = Bezier<double, 2>;
-using Box2 = Box<double, 2>;
 
-// The look of figures.cpp (its helpers are private to it).
-const std::string ink = "#1d3557";
 const std::string second = "#2a9d8f";
-const std::string accent = "#c23b5a";
-const std::string grey = "#8d99ae";
+const std::string grey = polygon_grey;
 
-TextStyle label(double size = 12, Anchor anchor = Anchor::middle, const std::string& colour = "#222") {
-  return TextStyle{.size = size, .colour = colour, .anchor = anchor, .family = "system-ui, 'Helvetica Neue', Arial, sans-serif"};
-}
-std::string sci(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.1e", v);
-  return buf;
-}
-std::string num(double v, int decimals) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-  return buf;
-}
-Box2 grown(Box2 b, double m) {
-  for (int d = 0; d < 2; ++d) {
-    b.lo[d] -= m;
-    b.hi[d] += m;
-  }
-  return b;
-}
-void dot(SvgDocument& doc, const P2& p, const std::string& colour, double r = 4.5) {
-  doc.circle(p, r, Paint{.stroke = "white", .stroke_width = 1.2, .fill = colour});
-}
 template <class C>
 double deviation(const C& c, const std::vector<P2>& poly) {
   double worst = 0;
@@ -103,22 +70,22 @@ Figure intersections() {
   doc.curve(cubic, Paint{.stroke = ink, .stroke_width = 2.4});
   for (const auto& o : over.overlaps) doc.curve(cubic.portion(o.a.lo, o.a.hi), Paint{.stroke = accent, .stroke_width = 7, .opacity = 0.55});
   doc.set_map(PageMap{});
-  doc.text({155, 312}, std::to_string(nine.points.size()) + " crossings", label());
+  doc.text({155, 312}, std::to_string(nine.points.size()) + " crossings", label(12, Anchor::middle));
   doc.text({440, 312}, std::to_string(touch.points.size()) + " point, " +
                            (touch.points.empty() ? std::string("-")
                                                  : touch.points[0].kind == IntersectionKind::tangent ? "tangent" : "crossing"),
-           label());
-  doc.text({725, 312}, std::to_string(over.overlaps.size()) + " overlap, " + std::to_string(over.points.size()) + " points", label());
+           label(12, Anchor::middle));
+  doc.text({725, 312}, std::to_string(over.overlaps.size()) + " overlap, " + std::to_string(over.points.size()) + " points", label(12, Anchor::middle));
 
   std::string cap = "<code>intersect</code> on three cases where libraries stumble. Left: y = T<sub>3</sub>(x) and its mirror "
                     "x = T<sub>3</sub>(y), two cubics with the most crossings two cubics can have; found " +
                     std::to_string(nine.points.size()) + ", with |a(t<sub>a</sub>) &minus; b(t<sub>b</sub>)| &le; " + sci(worst) +
                     " (the parameters match cos(k&pi;/4), cos(k&pi;/5) to 8e-16 in tests/cli/test_intersect.py). Middle: a "
                     "parabola touching a line, reported once as <code>tangent</code> at t = (" +
-                    (touch.points.empty() ? std::string("-") : num(touch.points[0].ta, 15) + ", " + num(touch.points[0].tb, 15)) +
+                    (touch.points.empty() ? std::string("-") : fixed(touch.points[0].ta, 15) + ", " + fixed(touch.points[0].tb, 15)) +
                     "). Right: a cubic and its own portion [0.25, 0.75]: one overlap (thick), a = [" +
                     (over.overlaps.empty() ? std::string("-")
-                                           : num(over.overlaps[0].a.lo, 12) + ", " + num(over.overlaps[0].a.hi, 12)) +
+                                           : fixed(over.overlaps[0].a.lo, 12) + ", " + fixed(over.overlaps[0].a.hi, 12)) +
                     "], and no points, not thousands.";
   return {"intersect", "Intersections: nine crossings, a touch, an overlap", doc.str(), cap};
 }
@@ -145,13 +112,13 @@ Figure flattening_methods() {
     for (const auto& v : poly) dot(doc, v, accent, 2.6);
     doc.set_map(PageMap{});
     const std::string text = std::string(rows[i].name) + ": " + std::to_string(poly.size() - 1) + " segments";
-    doc.text(P2(r.x + r.width / 2, 304), text, label(13));
+    doc.text(P2(r.x + r.width / 2, 304), text, label(13, Anchor::middle));
     counts += std::string(i ? "; " : "") + "<code>" + rows[i].name + "</code> " + std::to_string(poly.size() - 1) +
-              " segments, measured deviation " + num(deviation(c, poly), 5);
+              " segments, measured deviation " + fixed(deviation(c, poly), 5);
   }
-  const std::string cap = "<code>flatten</code> by its three methods at tolerance " + num(tol, 2) + ": " + counts +
+  const std::string cap = "<code>flatten</code> by its three methods at tolerance " + fixed(tol, 2) + ": " + counts +
                           " (4001 samples each). The optimal method's count was told before emitting as " +
-                          num(flatten_count_estimate(c, tol), 0) +
+                          fixed(flatten_count_estimate(c, tol), 0) +
                           " (the integral of &radic;curvature); on W3's random cubics it is within 3.8% of the greedy "
                           "near-optimal count, subdivision 1.67x and uniform 2.08x (docs/accuracy.md).";
   return {"flatten-methods", "Flattening three ways: uniform, subdivision, optimal", doc.str(), cap};

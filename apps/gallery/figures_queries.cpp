@@ -8,35 +8,18 @@
 
 #include "casteljau/casteljau.hpp"
 #include "casteljau/io/svg.hpp"
+#include "draw.hpp"
 #include "figures.hpp"
 
 namespace casteljau::gallery {
 
 namespace {
 
-using io::Anchor;
-using io::PageMap;
-using io::Paint;
-using io::SvgDocument;
-using io::TextStyle;
-using P2 = Point<double, 2>;
 using Bez = Bezier<double, 2>;
 
-// The look of figures.cpp (its helpers are private to it): same colours and fonts.
-constexpr double width = 880;
-const std::string ink = "#1d3557", grey = "#8d99ae", accent = "#c23b5a", green = "#2a9d5c";
+constexpr double width = fig_width;
+const std::string grey = polygon_grey, green = "#2a9d5c";
 
-TextStyle label(double size = 12, Anchor anchor = Anchor::start) {
-  return TextStyle{.size = size, .colour = "#222", .anchor = anchor, .family = "system-ui, 'Helvetica Neue', Arial, sans-serif"};
-}
-void dot(SvgDocument& doc, const P2& p, const std::string& colour, double r = 4) {
-  doc.circle(p, r, Paint{.stroke = "white", .stroke_width = 1.2, .fill = colour});
-}
-std::string sci(double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.1e", v);
-  return buf;
-}
 
 }  // namespace
 

@@ -149,19 +149,16 @@ BSpline<T, D> interpolate(const std::vector<Point<T, D>>& Q, int p, const std::v
 namespace detail {
 
 /// The knots of a periodic spline of period 1: breakpoints b_0 < ... < b_{n-1} in one
-/// period, knot(j) = b_(j mod n) + floor(j / n) for every integer j (simple knots, so
-/// the spline is C^(p-1) everywhere), and control point j is C_(j mod n).
+/// period, knot(j) = b_(j mod n) + floor(j / n) for every integer j (periodic_knot with
+/// period 1, as KnotVector::periodic; simple knots, so the spline is C^(p-1) everywhere),
+/// and control point j is C_(j mod n).
 template <class T>
 struct PeriodicKnots {
   std::vector<T> b;
 
   [[nodiscard]] std::ptrdiff_t size() const { return static_cast<std::ptrdiff_t>(b.size()); }
-  [[nodiscard]] std::ptrdiff_t floor_div(std::ptrdiff_t j) const {
-    const std::ptrdiff_t n = size();
-    return j >= 0 ? j / n : -((-j + n - 1) / n);
-  }
-  [[nodiscard]] std::size_t wrap(std::ptrdiff_t j) const { return static_cast<std::size_t>(j - floor_div(j) * size()); }
-  [[nodiscard]] T knot(std::ptrdiff_t j) const { return b[wrap(j)] + static_cast<T>(floor_div(j)); }
+  [[nodiscard]] std::size_t wrap(std::ptrdiff_t j) const { return static_cast<std::size_t>(j - floor_div(j, size()) * size()); }
+  [[nodiscard]] T knot(std::ptrdiff_t j) const { return periodic_knot<T>(b, T(1), j); }
   /// The span s with knot(s) <= u < knot(s + 1), for u in [0, 1) (b_0 may exceed 0: then
   /// s = -1 for u < b_0).
   [[nodiscard]] std::ptrdiff_t span(T u) const {

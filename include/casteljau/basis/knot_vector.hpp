@@ -17,6 +17,22 @@
 
 namespace casteljau {
 
+namespace detail {
+
+/// floor(k / n) for n > 0 and any integer k (C++ division truncates toward zero).
+inline std::ptrdiff_t floor_div(std::ptrdiff_t k, std::ptrdiff_t n) { return k >= 0 ? k / n : -((-k + n - 1) / n); }
+
+/// Knot k, for any integer k, of the periodic sequence with one period's breaks
+/// b_0 < .. < b_(L-1): b_(k mod L) + floor(k / L) period. The one formula behind
+/// KnotVector::periodic and the closed fits (algo/fit.hpp).
+template <class T>
+T periodic_knot(std::span<const T> breaks, T period, std::ptrdiff_t k) {
+  const std::ptrdiff_t L = static_cast<std::ptrdiff_t>(breaks.size()), q = floor_div(k, L);
+  return breaks[static_cast<std::size_t>(k - q * L)] + static_cast<T>(q) * period;
+}
+
+}  // namespace detail
+
 /// One distinct knot and how many times it occurs.
 template <class T>
 struct KnotRun {
@@ -181,13 +197,8 @@ class KnotVector {
                                           " is not below " + detail::format_number(breaks.front()) + " + " +
                                           detail::format_number(period));
     }
-    const std::ptrdiff_t l = static_cast<std::ptrdiff_t>(L);
     std::vector<T> U(L + 2 * static_cast<std::size_t>(p) + 1);
-    for (std::size_t j = 0; j < U.size(); ++j) {
-      const std::ptrdiff_t k = static_cast<std::ptrdiff_t>(j) - p;
-      const std::ptrdiff_t q = k >= 0 ? k / l : -((-k + l - 1) / l);  // floor(k / L)
-      U[j] = breaks[static_cast<std::size_t>(k - q * l)] + static_cast<T>(q) * period;
-    }
+    for (std::size_t j = 0; j < U.size(); ++j) U[j] = detail::periodic_knot(breaks, period, static_cast<std::ptrdiff_t>(j) - p);
     return KnotVector(p, std::move(U), L + static_cast<std::size_t>(p));
   }
 
