@@ -123,4 +123,21 @@ TEST(Nurbs, FullCircleAtEveryScale) {
   }
 }
 
+// Extrapolation past a sign change of the weight function is not a pole: the line
+// x(t) = 3t / (1 + 2t) of weights 1, 3 (w(t) = 1 + 2t) is 3 at t = -1 (w = -1) and 9/5 at
+// t = -3 (w = -5), as the same data as a RationalBezier gives; only w = 0 (t = -1/2) is
+// a pole.
+TEST(Nurbs, ExtrapolationPastAWeightSignChange) {
+  using P1 = Point<double, 1>;
+  const Nurbs<double, 1> c(1, {0, 0, 1, 1}, {P1(0.0), P1(1.0)}, {1, 3});
+  EXPECT_NEAR(c(-1.0)[0], 3.0, 4e-16 * 3);
+  EXPECT_NEAR(c(-3.0)[0], 1.8, 4e-16 * 2);
+  EXPECT_NEAR(c(-0.4)[0], -6.0, 4e-16 * 6 * 8);
+  // x'(t) = 3 / (1 + 2t)^2: 3 at t = -1.
+  EXPECT_NEAR(c.derivative_at(-1.0, 1)[0], 3.0, 1e-14);
+  EXPECT_THROW((void)c(-0.5), InvalidArgument);
+  const RationalBezier<double, 1> r({P1(0.0), P1(1.0)}, {1, 3});
+  EXPECT_NEAR(c(-1.0)[0], r(-1.0)[0], 1e-15);
+}
+
 }  // namespace

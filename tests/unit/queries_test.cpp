@@ -265,4 +265,23 @@ TEST(Distance, ClosedForms) {
   EXPECT_LE(distance(B2{{0, 0}, {1, 2}, {2, 0}}, B2{{0, 0.5}, {2, 0.5}}).distance, 4 * eps);
 }
 
+// A unit-size problem 10^12 from the origin keeps its digits (distances are measured
+// relative to q, or to a's control box): y = x^2 (x in [-1, 1]) seen from (0, 5/4) is
+// nearest at x = +-sqrt(3)/2, t = (1 +- sqrt(3)/2) / 2, at distance exactly 1; y = x^2
+// and the line y = -1 are 1 apart. Every input below is an integer or a quarter:
+// representable, so the shifted problems are the same problems.
+TEST(Queries, FarFromTheOrigin) {
+  for (const double o : {0.0, 1e6, 1e9, 1e12}) {
+    const B2 parabola{{o - 1, o + 1}, {o, o - 1}, {o + 1, o + 1}};
+    const auto r = project(parabola, P2(o, o + 1.25));
+    EXPECT_NEAR(r.distance, 1.0, 8 * eps) << o;
+    ASSERT_EQ(r.all_t.size(), 2u) << o;
+    EXPECT_NEAR(r.all_t[0], (1 - std::sqrt(0.75)) / 2, 1e-7) << o;  // a flat minimum: sqrt(eps)
+    EXPECT_NEAR(r.all_t[1], (1 + std::sqrt(0.75)) / 2, 1e-7) << o;
+    const auto d = distance(parabola, B2{{o - 2, o - 1}, {o + 2, o - 1}});
+    EXPECT_NEAR(d.distance, 1.0, 8 * eps) << o;
+    EXPECT_NEAR(d.t[0], 0.5, 1e-7) << o;
+  }
+}
+
 }  // namespace

@@ -108,8 +108,18 @@ template <class CA, class CB>
 CurveDistance<typename CA::Scalar, CA::dimension> distance(const CA& a, const CB& b) {
   using T = typename CA::Scalar;
   constexpr int D = CA::dimension;
-  const auto& pa = pieces(a);
-  const auto& pb = pieces(b);
+  const auto& pa0 = pieces(a);
+  const auto& pb0 = pieces(b);
+  // The search runs on both curves moved so that the centre of a's control box is the
+  // origin, and halved (nothing overflows): rounding is then a few eps of the curves'
+  // extent about that centre, not of their coordinates (unit curves at 1e12 from the
+  // origin keep their digits). The distance is doubled back, the points evaluated on the
+  // curves as given.
+  const auto box_a = pa0.control_bounds();
+  Point<T, D> centre;
+  for (int k = 0; k < D; ++k) centre[k] = box_a.lo[k] / 2 + box_a.hi[k] / 2;
+  const auto pa = pa0.transform(detail::halved_about(centre));
+  const auto pb = pb0.transform(detail::halved_about(centre));
   // One power-of-two scale for both curves' bounds (no overflow in dot products).
   T m = 0;
   for (const auto* p : {&pa, &pb}) {
@@ -213,6 +223,8 @@ CurveDistance<typename CA::Scalar, CA::dimension> distance(const CA& a, const CB
     }
   } catch (const InvalidArgument&) {
   }
+  best.distance *= 2;
+  best.points = {pa0(best.t[0]), pb0(best.t[1])};
   return best;
 }
 

@@ -5,10 +5,12 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <variant>
 #include <vector>
 
 #include "casteljau/algo/scalar_forms.hpp"
 #include "casteljau/basis/roots.hpp"
+#include "casteljau/core/affine.hpp"
 #include "casteljau/curves/concepts.hpp"
 #include "casteljau/curves/piecewise.hpp"
 
@@ -40,6 +42,15 @@ T safe_distance(const Point<T, D>& a, const Point<T, D>& b) {
   Vector<T, D> v;
   for (int k = 0; k < D; ++k) v[k] = a[k] / 2 - b[k] / 2;
   return 2 * norm(v);
+}
+
+/// The map x -> (x - o) / 2: moves o to the origin and halves, exactly but for one
+/// rounding of the difference, and never overflows for finite coordinates.
+template <class T, int D>
+Affine<T, D> halved_about(const Point<T, D>& o) {
+  Affine<T, D> m = Affine<T, D>::scale(T(0.5));
+  for (int k = 0; k < D; ++k) m.translation[k] = -(o[k] / 2);
+  return m;
 }
 
 /// Candidates of one piece: its ends and every root in (0, 1) of the derivative of the
@@ -111,6 +122,11 @@ Projection<typename C::Scalar, C::dimension> project(const C& c, const Point<typ
     T t;
     T d;
   };
+  // Distances are measured on the curve moved so that q is the origin, and halved (so
+  // that nothing overflows): their rounding is then a few eps of |c(t) - q|, not of the
+  // coordinates (a unit curve at 1e12 from the origin keeps its digits).
+  const auto rel = p.transform(detail::halved_about(q));
+  const auto distance_at = [&](const auto& rel_piece, T t) { return 2 * norm(rel_piece(t).to_vector()); };
   std::vector<Candidate> cand;
   std::vector<std::pair<Interval<T>, T>> flat;  // constant-distance pieces and their distance
   T reach = 0;
@@ -119,10 +135,11 @@ Projection<typename C::Scalar, C::dimension> project(const C& c, const Point<typ
     bool constant = false;
     std::visit(
         [&](const auto& piece) {
+          const auto& rp = std::get<std::decay_t<decltype(piece)>>(rel.segments()[i]);
           for (const auto& P : piece.points()) reach = std::max(reach, detail::safe_distance(P, q));
           detail::projection_candidates<T, D>(piece, q, ts, constant);
-          for (T t : ts) cand.push_back({p.global_parameter(i, t), detail::safe_distance(piece(t), q)});
-          if (constant) flat.push_back({p.segment_domain(i), detail::safe_distance(piece(T(0)), q)});
+          for (T t : ts) cand.push_back({p.global_parameter(i, t), distance_at(rp, t)});
+          if (constant) flat.push_back({p.segment_domain(i), distance_at(rp, T(0))});
         },
         p.segments()[i]);
   }
@@ -157,8 +174,8 @@ Projection<typename C::Scalar, C::dimension> project(const C& c, const Point<typ
   if (!r.intervals.empty()) r.t = std::min(r.t, r.intervals.front().lo);
   if (r.all_t.size() == 1 && r.intervals.empty()) r.all_t.clear();
   r.point = p(r.t);
-  // The distance reported is the one at the reported point (equal to best within tol).
-  r.distance = detail::safe_distance(r.point, q);
+  // The distance reported is the one at the reported parameter (equal to best within tol).
+  r.distance = distance_at(rel, r.t);
   return r;
 }
 

@@ -1119,9 +1119,12 @@ class Nurbs {
     return H;
   }
 
+  /// The Cartesian point of a homogeneous one. Outside the domain the weight function may
+  /// change sign (extrapolation, as for RationalBezier): only a zero weight is a pole; a
+  /// quotient that overflows is refused by require_representable.
   PointType project(const Vector<T, D + 1>& h, T u) const {
     PointType c;
-    if (!(h[D] > 0) || !std::isfinite(h[D])) {
+    if (h[D] == 0 || !std::isfinite(h[D])) {
       throw InvalidArgument("t", "the curve has a pole at t = " + detail::format_number(u) + " (its weight function vanishes there)");
     }
     for (int d = 0; d < D; ++d) c[d] = h[d] / h[D];
