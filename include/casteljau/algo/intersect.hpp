@@ -3,6 +3,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -16,6 +17,7 @@
 
 #include "casteljau/algo/flatten.hpp"
 #include "casteljau/algo/intersect_low_degree.hpp"
+#include "casteljau/basis/bernstein_poly.hpp"
 #include "casteljau/core/segment.hpp"
 #include "casteljau/basis/roots.hpp"
 #include "casteljau/curves/path.hpp"
@@ -164,6 +166,15 @@ SegmentClosest<T> chord_closest(const Point<T, 2>& p0, const Point<T, 2>& p1, co
   return {u, v, norm((p0 + u * (p1 - p0)) - (q0 + v * (q1 - q0)))};
 }
 
+/// A start for the refinement (piece parameters s of a, t of b). `edge` marks one placed
+/// at an arc end by a band (see band()): it stands for its near region only when the
+/// region has no other point (solve() decides).
+template <class T>
+struct Seed {
+  T s, t;
+  bool edge = false;
+};
+
 /// Tolerances of one intersection problem, in unit coordinates.
 template <class T>
 struct Context {
@@ -173,7 +184,13 @@ struct Context {
   std::size_t nodes = 0;
   std::size_t node_limit = 0;
   bool exhausted = false;  // node_limit reached: the seeds are incomplete
-  std::vector<std::pair<T, T>> seeds;
+  std::vector<Seed<T>> seeds;
+  // The pieces and arcs being intersected (piece parameters): band() extends parts along them.
+  const Piece<T>* a = nullptr;
+  const Piece<T>* b = nullptr;
+  const Arc<T>* ra = nullptr;
+  const Arc<T>* rb = nullptr;
+  bool near = false;  // a band lies within tol of the other curve all along: test for an overlap
 };
 
 /// The tangent cone of a Bézier or rational Bézier part: the directions of its control
@@ -250,6 +267,265 @@ bool fat_line_apart(const CA& a, const CB& b, typename CA::Scalar slack) {
   return true;
 }
 
+/// Bernstein coefficients on [0, 1] of a part c(u) = (X(u), Y(u)) / W(u): W = {1} for a
+/// polynomial part, the weights scaled to at most 1 for a rational one.
+template <class T>
+struct Homogeneous {
+  std::vector<T> x, y, w;
+};
+template <class T>
+Homogeneous<T> homogeneous(const Bezier<T, 2>& c) {
+  Homogeneous<T> h;
+  for (const auto& p : c.points()) {
+    h.x.push_back(p[0]);
+    h.y.push_back(p[1]);
+  }
+  h.w = {T(1)};
+  return h;
+}
+template <class T>
+Homogeneous<T> homogeneous(const RationalBezier<T, 2>& c) {
+  Homogeneous<T> h;
+  const auto& P = c.points();
+  const auto& w = c.weights();
+  const T wmax = *std::max_element(w.begin(), w.end());
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    const T wi = w[i] / wmax;
+    h.x.push_back(wi * P[i][0]);
+    h.y.push_back(wi * P[i][1]);
+    h.w.push_back(wi);
+  }
+  return h;
+}
+
+/// The numerator Q = X' W - X W' of the derivative c' = Q / W^2 (X' for a polynomial).
+template <class T>
+std::array<std::vector<T>, 2> hodograph_numerator(const Homogeneous<T>& h) {
+  if (h.w.size() == 1) return {bernstein_derivative_coefficients<T>(h.x), bernstein_derivative_coefficients<T>(h.y)};
+  const std::vector<T> dw = bernstein_derivative_coefficients<T>(h.w);
+  auto one = [&](const std::vector<T>& x) {
+    return bernstein_difference<T>(bernstein_product<T>(bernstein_derivative_coefficients<T>(x), h.w), bernstein_product<T>(x, dw));
+  };
+  return {one(h.x), one(h.y)};
+}
+
+template <class T>
+T max_abs(const std::vector<T>& c) {
+  T m = 0;
+  for (T x : c) m = std::max(m, std::abs(x));
+  return m;
+}
+
+/// Largest angle (radians) between a band's direction e and a tangent of either part.
+/// Within it, e . c(u) is monotone along both parts, and along a stretch of arc length L
+/// the curves advance by at least cos(2 band_angle) L = 0.98 L along any tangent of theirs.
+inline constexpr double band_angle = 0.1;
+/// Highest degree a band takes (its separation polynomial has degree about 3 n): above it,
+/// plain subdivision.
+inline constexpr int band_max_degree = 16;
+
+/// Bounds of a part h whose tangents lie within band_angle of e: a bound of its curvature
+/// (|c''| / |c'|^2, from the convex hulls of Q, Q', W and W'), and min e . Q, max |Q|.
+/// Nothing when a tangent may leave the cone.
+template <class T>
+struct PartBounds {
+  T curvature, q_along, q_max;
+};
+template <class T>
+std::optional<PartBounds<T>> part_bounds(const Homogeneous<T>& h, const Vector<T, 2>& e) {
+  const auto q = hodograph_numerator(h);
+  const T slope = std::tan(T(band_angle));
+  T q_along = std::numeric_limits<T>::infinity(), q_max = 0;
+  for (std::size_t i = 0; i < q[0].size(); ++i) {
+    const Vector<T, 2> v{q[0][i], q[1][i]};
+    const T along = dot(e, v);
+    if (!(along > 0) || !(std::abs(cross(e, v)) <= slope * along)) return std::nullopt;
+    q_along = std::min(q_along, along);
+    q_max = std::max(q_max, norm(v));
+  }
+  T q2_max = 0;
+  if (q[0].size() > 1) {
+    const auto dx = bernstein_derivative_coefficients<T>(q[0]), dy = bernstein_derivative_coefficients<T>(q[1]);
+    for (std::size_t i = 0; i < dx.size(); ++i) q2_max = std::max(q2_max, norm(Vector<T, 2>{dx[i], dy[i]}));
+  }
+  const T w_min = *std::min_element(h.w.begin(), h.w.end()), w_max = *std::max_element(h.w.begin(), h.w.end());
+  const T w1_max = h.w.size() > 1 ? max_abs(bernstein_derivative_coefficients<T>(h.w)) : T(0);
+  // c' = Q / W^2 and c'' = (Q' W - 2 Q W') / W^3.
+  const T speed = q_along / (w_max * w_max), accel = (q2_max * w_max + 2 * q_max * w1_max) / (w_min * w_min * w_min);
+  if (!(speed > 0) || !(w_min > 0)) return std::nullopt;
+  return PartBounds<T>{accel / (speed * speed), q_along, q_max};
+}
+
+/// The parameter in [lo, hi] of piece c where e . c = X, when e . c is monotone there
+/// (either way): bisection with secant steps; the nearer end when X is outside the range.
+template <class T>
+T solve_projection(const Piece<T>& c, const Vector<T, 2>& e, T X, T lo, T hi) {
+  auto f = [&](T u) { return dot(e, at(c, u).to_vector()) - X; };
+  T flo = f(lo), fhi = f(hi);
+  if (flo == 0) return lo;
+  if (fhi == 0) return hi;
+  if ((flo > 0) == (fhi > 0)) return std::abs(flo) <= std::abs(fhi) ? lo : hi;
+  for (int it = 0; it < 200 && hi - lo > 4 * std::numeric_limits<T>::epsilon() * std::max(T(1), std::abs(hi)); ++it) {
+    T m = lo - flo * (hi - lo) / (fhi - flo);
+    // Bisect every third step or when the secant lands at an end (guaranteed progress).
+    if (it % 3 == 2 || !(m > lo && m < hi)) m = lo + (hi - lo) / 2;
+    const T fm = f(m);
+    if (fm == 0) return m;
+    if ((fm > 0) == (flo > 0)) {
+      lo = m;
+      flo = fm;
+    } else {
+      hi = m;
+      fhi = fm;
+    }
+  }
+  return std::abs(flo) <= std::abs(fhi) ? lo : hi;
+}
+
+/// The part of piece c on [lo, hi] as a piece of its own on [0, 1], reversed if asked.
+template <class T>
+Piece<T> piece_part(const Piece<T>& c, T lo, T hi, bool reversed) {
+  return std::visit(
+      [&](const auto& x) -> Piece<T> {
+        auto p = part(x, lo, hi);
+        if (reversed) return p.reverse();
+        return p;
+      },
+      c);
+}
+
+/// Near-coincident parts a on [alo, ahi] and b on [blo, bhi] (piece parameters) of the
+/// arcs in ctx, decided at once (true) instead of subdivided down to the near-miss
+/// distance; false when the band does not apply (plain subdivision goes on).
+///
+/// Applies when every tangent of both parts lies within band_angle of one direction e (b
+/// possibly running the other way) and the curves are close: both parts are extended
+/// along their arcs to a common range [X0, X1] of x = e . p (cores A(u), B(u), u in [0, 1],
+/// matched at the ends), and the separation of A(u) from the curve b is the signed
+/// distance beta(u) of A(u) from the tangent of b at B(u), up to E = 4.5 K |D|^2 (K a
+/// curvature bound of b there, D = A - B: the foot of A(u) on b lies within 3 |D| of B(u)
+/// along b, where b stays within K (3 |D|)^2 / 2 of its tangent; farther points advance
+/// by more than 0.98 of their arc length). With A = (X, Y) / W, B' = Q / W_B^2:
+///   beta(u) = h(u) / (W_A W_B |Q|)(u),  h = Q x (X_A W_B - X_B W_A),
+/// a polynomial h in Bernstein form. Decisions, all from h:
+///  - sign changes of h (its roots): crossings; local minima of |h| where |beta| may be
+///    within tol: touches (the refinement then finds the closest approach); an arc end
+///    where |beta| may be within 2.5 tol (a part beyond the other arc's end may come
+///    within tol of it only there): an edge seed (the curves may meet at the arc end,
+///    or the near region continue into the next arc: solve() decides which);
+///  - h within tol everywhere: the parts may overlap (ctx.near: the overlap test runs).
+/// Seeds are kept only where both parameters lie in the parts (to 1e-7: neighbouring pairs
+/// of parts see the rest). Requires E <= 0.05 tol (curves within about 1e-7 of each other). Cost:
+/// a few products and two root solves of polynomials of degree about 3 n, independent of
+/// how close the curves run: a cubic and its copy 2e-10 of its size away take a few band
+/// nodes where subdivision took 10^5 parts. [SederbergNishita90 for the fat-line form of
+/// the separation; the bound is ours.]
+template <class T, class CA, class CB>
+bool band(const CA& a, T alo, T ahi, const CB& b, T blo, T bhi, Context<T>& ctx) {
+  if (!ctx.a || !ctx.b) return false;
+  if (static_cast<int>(a.points().size()) - 1 > band_max_degree || static_cast<int>(b.points().size()) - 1 > band_max_degree) return false;
+  const auto ka = tangent_cone(a), kb = tangent_cone(b);
+  if (!ka || !kb || ka->hi - ka->lo > T(band_angle) || kb->hi - kb->lo > T(band_angle)) return false;
+  const T mid = (ka->lo + ka->hi) / 2;
+  const Vector<T, 2> r = ka->ref / norm(ka->ref);
+  const Vector<T, 2> e{std::cos(mid) * r[0] - std::sin(mid) * r[1], std::sin(mid) * r[0] + std::cos(mid) * r[1]};
+  const bool reversed = dot(e, kb->ref) < 0;
+  const Piece<T>& pa = *ctx.a;
+  const Piece<T>& pb = *ctx.b;
+  const Arc<T>& ra = *ctx.ra;
+  const Arc<T>& rb = *ctx.rb;
+  auto xa = [&](T u) { return dot(e, at(pa, u).to_vector()); };
+  auto xb = [&](T v) { return dot(e, at(pb, v).to_vector()); };
+  const T xa0 = xa(alo), xa1 = xa(ahi);
+  // b's parameters at its low and high x end.
+  const T b_low = reversed ? bhi : blo, b_high = reversed ? blo : bhi;
+  const T b_arc_low = reversed ? rb.hi : rb.lo, b_arc_high = reversed ? rb.lo : rb.hi;
+  const T xb0 = xb(b_low), xb1 = xb(b_high);
+  if (!(xa0 < xa1) || !(xb0 < xb1)) return false;
+  // Both parts extended along their arcs over the union of their x ranges, then the
+  // common range of the extensions.
+  const T U0 = std::min(xa0, xb0), U1 = std::max(xa1, xb1);
+  const T ea0 = U0 < xa0 ? solve_projection(pa, e, U0, ra.lo, alo) : alo;
+  const T ea1 = U1 > xa1 ? solve_projection(pa, e, U1, ahi, ra.hi) : ahi;
+  const T eb0 = U0 < xb0 ? solve_projection(pb, e, U0, std::min(b_arc_low, b_low), std::max(b_arc_low, b_low)) : b_low;
+  const T eb1 = U1 > xb1 ? solve_projection(pb, e, U1, std::min(b_arc_high, b_high), std::max(b_arc_high, b_high)) : b_high;
+  const T X0 = std::max(xa(ea0), xb(eb0)), X1 = std::min(xa(ea1), xb(eb1));
+  if (!(X1 - X0 > 64 * std::numeric_limits<T>::epsilon())) return false;
+  const T ca0 = xa(ea0) >= X0 ? ea0 : solve_projection(pa, e, X0, ea0, ea1);
+  const T ca1 = xa(ea1) <= X1 ? ea1 : solve_projection(pa, e, X1, ea0, ea1);
+  const T cb0 = xb(eb0) >= X0 ? eb0 : solve_projection(pb, e, X0, std::min(eb0, eb1), std::max(eb0, eb1));
+  const T cb1 = xb(eb1) <= X1 ? eb1 : solve_projection(pb, e, X1, std::min(eb0, eb1), std::max(eb0, eb1));
+  if (!(ca0 < ca1) || !(reversed ? cb1 < cb0 : cb0 < cb1)) return false;
+  // Cores (B oriented along e) and the span of b the bound must cover (core and part).
+  const Piece<T> A = piece_part(pa, ca0, ca1, false);
+  const Piece<T> B = piece_part(pb, std::min(cb0, cb1), std::max(cb0, cb1), reversed);
+  const T sb0 = std::min({cb0, cb1, blo}), sb1 = std::max({cb0, cb1, bhi});
+  const Homogeneous<T> HA = std::visit([](const auto& x) { return homogeneous(x); }, A);
+  const Homogeneous<T> HB = std::visit([](const auto& x) { return homogeneous(x); }, B);
+  const auto span_b = (sb0 == std::min(cb0, cb1) && sb1 == std::max(cb0, cb1))
+                          ? part_bounds(HB, e)
+                          : part_bounds(std::visit([](const auto& x) { return homogeneous(x); }, piece_part(pb, sb0, sb1, reversed)), e);
+  if (!span_b || !part_bounds(HA, e)) return false;
+  // D = R / (W_A W_B), R = X_A W_B - X_B W_A; h = Q x R.
+  const auto rx = bernstein_difference<T>(bernstein_product<T>(HA.x, HB.w), bernstein_product<T>(HB.x, HA.w));
+  const auto ry = bernstein_difference<T>(bernstein_product<T>(HA.y, HB.w), bernstein_product<T>(HB.y, HA.w));
+  const auto q = hodograph_numerator(HB);
+  const auto h = bernstein_difference<T>(bernstein_product<T>(q[0], ry), bernstein_product<T>(q[1], rx));
+  const T wa_min = *std::min_element(HA.w.begin(), HA.w.end()), wa_max = *std::max_element(HA.w.begin(), HA.w.end());
+  const T wb_min = *std::min_element(HB.w.begin(), HB.w.end()), wb_max = *std::max_element(HB.w.begin(), HB.w.end());
+  T d_max = 0;
+  for (std::size_t i = 0; i < rx.size(); ++i) d_max = std::max(d_max, norm(Vector<T, 2>{rx[i], ry[i]}));
+  d_max /= wa_min * wb_min;
+  const T E = T(4.5) * span_b->curvature * d_max * d_max;
+  if (!(E <= T(0.05) * ctx.tol)) return false;
+  const auto qb = part_bounds(HB, e);
+  if (!qb) return false;
+  // |beta| >= |h| / den_hi everywhere; |beta| <= |h| / den_lo.
+  const T den_hi = wa_max * wb_max * qb->q_max, den_lo = wa_min * wb_min * qb->q_along;
+  const T near_hi = (ctx.tol + E) * den_hi;
+  const T h_max = max_abs(h);
+  if (std::all_of(h.begin(), h.end(), [&](T c) { return c > T(2.5) * near_hi; }) ||
+      std::all_of(h.begin(), h.end(), [&](T c) { return c < T(-2.5) * near_hi; }))
+    return true;  // apart by more than 2 tol all along: nothing (arc ends included)
+  if (h_max <= (ctx.tol - E) * den_lo) ctx.near = true;
+  // Membership of a seed in the parts, with a slack above the roots' accuracy (eps over
+  // the crossing angle: 1e-8 at an angle of 1e-8) and below the merge distance of points
+  // (merge_fraction of the pieces), which joins the duplicates it lets through.
+  const T slack_a = T(1e-7), slack_b = T(1e-7);
+  auto emit = [&](T u, bool edge) {
+    const T s = ca0 + u * (ca1 - ca0), t = cb0 + u * (cb1 - cb0);
+    if (s < alo - slack_a || s > ahi + slack_a || t < blo - slack_b || t > bhi + slack_b) return;
+    ctx.seeds.push_back({std::clamp(s, ra.lo, ra.hi), std::clamp(t, rb.lo, rb.hi), edge});
+  };
+  // Roots of h closer than 1e-6 (of the core) are one crossing blurred by rounding (h
+  // crosses zero at a slope of the crossing angle: at 1e-9 its rounding noise spans about
+  // 1e-8 in u): the middle root of each cluster stands for it.
+  const std::vector<T> roots = bernstein_roots<T>(h);
+  constexpr T cluster = T(1e-6);
+  for (std::size_t i = 0; i < roots.size();) {
+    std::size_t j = i + 1;
+    while (j < roots.size() && roots[j] - roots[j - 1] <= cluster) ++j;
+    emit(roots[i + (j - i - 1) / 2], false);
+    i = j;
+  }
+  auto near_root = [&](T u) {
+    const auto it = std::lower_bound(roots.begin(), roots.end(), u);
+    return (it != roots.end() && *it - u <= cluster) || (it != roots.begin() && u - *(it - 1) <= cluster);
+  };
+  if (h.size() > 2) {
+    const auto dh = bernstein_derivative_coefficients<T>(h);
+    const auto d2h = bernstein_derivative_coefficients<T>(dh);
+    for (T u : bernstein_roots<T>(dh)) {
+      const T hu = bernstein_value<T>(h, u);
+      // A local minimum of |h| (h'' of the sign of h) where the curves may be within tol.
+      if (std::abs(hu) <= near_hi && hu * bernstein_value<T>(d2h, u) >= 0 && !near_root(u)) emit(u, false);
+    }
+  }
+  if ((ca0 == ra.lo || cb0 == b_arc_low) && std::abs(h.front()) <= T(2.5) * near_hi) emit(T(0), true);
+  if ((ca1 == ra.hi || cb1 == b_arc_high) && std::abs(h.back()) <= T(2.5) * near_hi) emit(T(1), true);
+  return true;
+}
+
 /// Largest number of subdivision steps one pair of arcs may take; a pair of transversal
 /// arcs takes a few hundred. Hitting it means the curves run within the tolerance of each
 /// other over a long stretch without coinciding: reported, not silently truncated.
@@ -277,7 +553,7 @@ void subdivide(const CA& a, T alo, T ahi, int da, const CB& b, T blo, T bhi, int
     const auto& P = a.points();
     const auto& Q = b.points();
     const auto c = chord_closest(P.front(), P.back(), Q.front(), Q.back());
-    if (c.distance <= 2 * ctx.flat + ctx.slack) ctx.seeds.emplace_back(alo + c.u * (ahi - alo), blo + c.v * (bhi - blo));
+    if (c.distance <= 2 * ctx.flat + ctx.slack) ctx.seeds.push_back({alo + c.u * (ahi - alo), blo + c.v * (bhi - blo)});
     return;
   }
   // Parts whose tangent cones are separated meet at most once: one seed, at the closest
@@ -288,10 +564,13 @@ void subdivide(const CA& a, T alo, T ahi, int da, const CB& b, T blo, T bhi, int
       const auto& P = a.points();
       const auto& Q = b.points();
       const auto c = chord_closest(P.front(), P.back(), Q.front(), Q.back());
-      ctx.seeds.emplace_back(alo + c.u * (ahi - alo), blo + c.v * (bhi - blo));
+      ctx.seeds.push_back({alo + c.u * (ahi - alo), blo + c.v * (bhi - blo)});
       return;
     }
   }
+  // Near-coincident parts (narrow tangent cones along one direction): decided at once on
+  // the separation polynomial instead of subdivided down to the near-miss distance.
+  if (band(a, alo, ahi, b, blo, bhi, ctx)) return;
   if (!fa && (fb || diagonal(ba) >= diagonal(bb))) {
     const auto h = a.split(T(0.5));
     const T m = alo + (ahi - alo) / 2;
@@ -555,6 +834,7 @@ struct Hit {
   T sa, sb;  // piece parameters
   T distance;
   bool touch = false;  // two crossings merged into a touch
+  bool edge = false;   // from an edge seed (see band())
 };
 
 /// Subdivision steps of the first pass over a pair of arcs, before the overlap test: a
@@ -575,6 +855,11 @@ bool intersect_arcs(const Prepared<T>& A, std::size_t ia, const Prepared<T>& B, 
   ctx.nodes = 0;
   ctx.node_limit = node_limit;
   ctx.exhausted = false;
+  ctx.a = &a;
+  ctx.b = &b;
+  ctx.ra = &ra;
+  ctx.rb = &rb;
+  ctx.near = false;
   std::visit(
       [&](const auto& x, const auto& y) { subdivide(x, ra.lo, ra.hi, 0, y, rb.lo, rb.hi, 0, ctx); }, A.arc_parts[ia],
       B.arc_parts[ib]);
@@ -583,7 +868,7 @@ bool intersect_arcs(const Prepared<T>& A, std::size_t ia, const Prepared<T>& B, 
   // Refined points so far, by s: seeds from neighbouring parts refine to the same point
   // (thousands of them along near-coincident curves), found again in O(log) each.
   std::multimap<T, T> done;
-  for (const auto& [s0, t0] : ctx.seeds) {
+  for (const auto& [s0, t0, edge] : ctx.seeds) {
     Refined<T> r = refine(a, ra, b, rb, s0, t0);
     if (!(r.distance <= ctx.tol)) continue;
     if (std::abs(cross(direction(a, r.s), direction(b, r.t))) <= T(1e-6)) {
@@ -596,15 +881,60 @@ bool intersect_arcs(const Prepared<T>& A, std::size_t ia, const Prepared<T>& B, 
     if (dup) continue;
     done.emplace(r.s, r.t);
     hits.push_back({A.curve->global_parameter(ra.piece, r.s), B.curve->global_parameter(rb.piece, r.t), ra.piece, rb.piece, r.s,
-                    r.t, r.distance, false});
+                    r.t, r.distance, false, edge});
   }
-  return clean;
+  return clean && !ctx.near;
 }
 
 /// Common points closer than this fraction of their pieces' parameter intervals (in
 /// both parameters) are one point: touches are located to about sqrt(eps) ~ 1e-8, so a
 /// touch found from several seeds or from two arcs meeting at it is reported once.
 inline constexpr double merge_fraction = 1e-6;
+
+/// The unit-frame point of a curve at its parameter g (pieces chosen as evaluation does).
+template <class T>
+Point<T, 2> unit_at(const Pieces<T, 2>& c, const Prepared<T>& P, T g) {
+  const std::size_t p = c.segment_index(g);
+  return at(P.unit[p], c.local_parameter(p, g));
+}
+
+/// The distance from q to curve c near its parameter t (unit frame): Newton's method on
+/// (c(t) - q) . c'(t) from t, over the pieces, within the domain; the least distance seen
+/// (an upper bound of the distance to the curve, exact at a converged foot point).
+template <class T>
+T distance_near(const Pieces<T, 2>& c, const Prepared<T>& P, const Point<T, 2>& q, T t) {
+  const Interval<T> dom = c.domain();
+  T best = std::numeric_limits<T>::infinity();
+  for (int it = 0; it < 12; ++it) {
+    const std::size_t p = c.segment_index(t);
+    const T s = c.local_parameter(p, t), k = c.own_domain(p).length() / c.segment_domain(p).length();
+    const Point<T, 2> x = at(P.unit[p], s);
+    const Vector<T, 2> e = x - q, d1 = k * derivative(P.unit[p], s), d2 = (k * k) * derivative(P.unit[p], s, 2);
+    best = std::min(best, norm(e));
+    const T den = dot(d1, d1) + dot(e, d2);
+    if (!(den > 0)) break;
+    const T t2 = std::clamp(t - dot(e, d1) / den, dom.lo, dom.hi);
+    if (t2 == t) break;
+    t = t2;
+  }
+  return best;
+}
+
+/// Whether curves a and b, common at (ta, tb) (the end of an overlap), are still within
+/// tol of each other beyond it: at a(ta + 16 da) against b near tb + 16 db (da, db the
+/// overlap's extent, signed towards the outside). False when either curve ends before.
+template <class T>
+bool near_beyond(const Pieces<T, 2>& ca, const Prepared<T>& A, const Pieces<T, 2>& cb, const Prepared<T>& B, T ta, T tb, T da, T db,
+                 T tol) {
+  const Interval<T> dom_a = ca.domain(), dom_b = cb.domain();
+  const T ea = T(1e-12) * dom_a.length(), eb = T(1e-12) * dom_b.length();
+  if ((da < 0 && ta <= dom_a.lo + ea) || (da > 0 && ta >= dom_a.hi - ea) || (db < 0 && tb <= dom_b.lo + eb) ||
+      (db > 0 && tb >= dom_b.hi - eb))
+    return false;
+  const T ta2 = ta + 16 * da, tb2 = tb + 16 * db;
+  if (ta2 < dom_a.lo || ta2 > dom_a.hi || tb2 < dom_b.lo || tb2 > dom_b.hi) return false;  // a curve ends within
+  return distance_near(cb, B, unit_at(ca, A, ta2), tb2) <= tol;
+}
 
 template <class T>
 Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
@@ -630,10 +960,12 @@ Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
   // 1e-10 of the curves' size: the near-miss threshold of the contract. 64 eps of the unit
   // coordinates (|P| < 1) covers rounding when the curves are points or tiny far apart.
   const T tol = std::max(T(1e-10) * std::max(A.size, PB.size), 64 * eps);
-  Context<T> ctx{tol, tol, tol + 16 * eps, 0, 0, false, {}};
+  Context<T> ctx{tol, tol, tol + 16 * eps, 0, 0, false, {}, nullptr, nullptr, nullptr, nullptr, false};
 
   std::vector<Hit<T>> hits;
-  std::vector<CurveOverlap<T>> overlaps;
+  // Overlaps found arc by arc, each with the points its pair of arcs gave (reported if
+  // the overlap turns out to lie inside a crossing or touch region, see below).
+  std::vector<std::pair<CurveOverlap<T>, std::vector<Hit<T>>>> overlaps;
   for (std::size_t i = 0; i < A.arcs.size(); ++i) {
     for (std::size_t j = self ? i + 1 : 0; j < PB.arcs.size(); ++j) {
       const Arc<T>& ra = A.arcs[i];
@@ -644,8 +976,9 @@ Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
       std::vector<Hit<T>> found;
       if (!intersect_arcs(A, i, PB, j, ctx, lazy_nodes, found)) {
         if (auto o = arc_overlap(A, ra, PB, rb, tol)) {
-          overlaps.push_back({{ca.global_parameter(ra.piece, o->s0), ca.global_parameter(ra.piece, o->s1)},
-                              cb->global_parameter(rb.piece, o->t0), cb->global_parameter(rb.piece, o->t1)});
+          overlaps.push_back({{{ca.global_parameter(ra.piece, o->s0), ca.global_parameter(ra.piece, o->s1)},
+                               cb->global_parameter(rb.piece, o->t0), cb->global_parameter(rb.piece, o->t1)},
+                              std::move(found)});
           continue;
         }
         if (ctx.exhausted) {
@@ -664,27 +997,39 @@ Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
 
   // Overlaps found arc by arc: join the ones that continue each other.
   const T la = ca.domain().length(), lb = cb->domain().length();
-  std::sort(overlaps.begin(), overlaps.end(), [](const auto& x, const auto& y) { return x.a.lo < y.a.lo; });
-  std::vector<CurveOverlap<T>> joined;
-  for (const auto& o : overlaps) {
-    if (!joined.empty()) {
-      auto& p = joined.back();
+  std::sort(overlaps.begin(), overlaps.end(), [](const auto& x, const auto& y) { return x.first.a.lo < y.first.a.lo; });
+  std::vector<std::pair<CurveOverlap<T>, std::vector<Hit<T>>>> candidates;
+  for (auto& [o, found] : overlaps) {
+    if (!candidates.empty()) {
+      auto& [p, pf] = candidates.back();
       if (std::abs(o.a.lo - p.a.hi) <= T(1e-9) * la && std::abs(o.b_start - p.b_end) <= T(1e-9) * lb &&
           ((o.b_end > o.b_start) == (p.b_end > p.b_start))) {
         p.a.hi = o.a.hi;
         p.b_end = o.b_end;
+        pf.insert(pf.end(), found.begin(), found.end());
         continue;
       }
     }
-    joined.push_back(o);
+    candidates.emplace_back(o, std::move(found));
+  }
+  // An overlap is a stretch within the near-miss distance that ends where the curves part
+  // or a curve ends. One that the curves continue beyond at both ends, still within the
+  // near-miss distance 16 times its length further on, is a piece of a longer near region
+  // (a crossing or touch at a tiny angle, seen between joints of the pieces: two circles of
+  // radius 1 with centres d apart meet at an angle d and stay within tol over 2 tol / d
+  // around each crossing): its points are reported instead, as they are off the joints.
+  std::vector<CurveOverlap<T>> joined;
+  for (auto& [o, found] : candidates) {
+    const bool continues = near_beyond(ca, A, *cb, PB, o.a.lo, o.b_start, -(o.a.hi - o.a.lo), o.b_start - o.b_end, tol) &&
+                           near_beyond(ca, A, *cb, PB, o.a.hi, o.b_end, o.a.hi - o.a.lo, o.b_end - o.b_start, tol);
+    if (continues) {
+      hits.insert(hits.end(), found.begin(), found.end());
+    } else {
+      joined.push_back(o);
+    }
   }
 
   auto piece_length = [](const Pieces<T, 2>& c, std::size_t i) { return c.segment_domain(i).length(); };
-  // The unit-frame point of a curve at its parameter g (pieces chosen as evaluation does).
-  auto unit_at = [](const Pieces<T, 2>& c, const Prepared<T>& P, T g) {
-    const std::size_t p = c.segment_index(g);
-    return at(P.unit[p], c.local_parameter(p, g));
-  };
   if (self) {
     for (auto& h : hits) {
       if (h.ta > h.tb) {
@@ -704,6 +1049,9 @@ Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
   T longest_a = 0;
   for (std::size_t p = 0; p < ca.size(); ++p) longest_a = std::max(longest_a, piece_length(ca, p));
   const T window = T(1e3) * T(merge_fraction) * longest_a;
+  std::vector<Hit<T>> edges;
+  std::vector<std::vector<Hit<T>>> twins;  // per kept point: points merged into it, all common to rounding
+  const T exact = T(1e-3) * tol;
   for (const auto& h : hits) {
     // Inside (or at the end of) an overlap: part of it, not an isolated point.
     bool in_overlap = false;
@@ -730,6 +1078,10 @@ Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
       }
       if (!loop.empty() && diagonal(loop) <= 100 * tol) continue;
     }
+    if (h.edge) {
+      edges.push_back(h);
+      continue;
+    }
     bool merged = false;
     std::size_t first = kept.size();
     while (first > 0 && kept[first - 1].ta >= h.ta - 4 * window) --first;
@@ -738,7 +1090,14 @@ Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
       const T ma = T(merge_fraction) * piece_length(ca, h.pa), mb = T(merge_fraction) * piece_length(*cb, h.pb);
       const T da = std::abs(k.ta - h.ta), db = std::abs(k.tb - h.tb);
       if (da <= ma && db <= mb && distance(at(A.unit[k.pa], k.sa), at(A.unit[h.pa], h.sa)) <= 1e4 * tol) {
-        if (h.distance < k.distance) k = h;
+        // Both common to rounding (a crossing at a tiny angle, seen from neighbouring parts
+        // with roots blurred by eps / angle): the middle one in ta is kept, below.
+        if (h.distance <= exact && k.distance <= exact) {
+          twins[ki].push_back(h);
+        } else if (h.distance < k.distance) {
+          k = h;
+          twins[ki].clear();
+        }
         merged = true;
         break;
       }
@@ -750,12 +1109,43 @@ Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
         if (distance(unit_at(ca, A, mta), unit_at(*cb, PB, mtb)) <= tol) {
           const std::size_t pa = ca.segment_index(mta), pb = cb->segment_index(mtb);
           k = Hit<T>{mta, mtb, pa, pb, ca.local_parameter(pa, mta), cb->local_parameter(pb, mtb), k.distance, true};
+          twins[ki].clear();
           merged = true;
           break;
         }
       }
     }
-    if (!merged) kept.push_back(h);
+    if (!merged) {
+      kept.push_back(h);
+      twins.emplace_back();
+    }
+  }
+  for (std::size_t ki = 0; ki < kept.size(); ++ki) {
+    if (twins[ki].empty()) continue;
+    twins[ki].push_back(kept[ki]);
+    std::sort(twins[ki].begin(), twins[ki].end(), [](const auto& x, const auto& y) { return x.ta < y.ta; });
+    kept[ki] = twins[ki][(twins[ki].size() - 1) / 2];
+  }
+  // Points from edge seeds (arc ends inside a near region, see band()): one stands for its
+  // region only if no other point does, i.e. if the curves part (beyond tol) between it
+  // and each of its neighbours in ta among the points kept so far (the nearest 8 on each
+  // side); the closest of several such points of one region is kept.
+  std::sort(edges.begin(), edges.end(), [](const auto& x, const auto& y) { return x.distance < y.distance; });
+  auto same_region = [&](const Hit<T>& x, const Hit<T>& y) {
+    for (int j = 0; j <= 16; ++j) {
+      const T f = static_cast<T>(j) / 16;
+      const T ta = x.ta + f * (y.ta - x.ta), tb = x.tb + f * (y.tb - x.tb);
+      if (!(distance_near(*cb, PB, unit_at(ca, A, ta), tb) <= tol)) return false;
+    }
+    return true;
+  };
+  for (const auto& h : edges) {
+    const auto at_h = std::lower_bound(kept.begin(), kept.end(), h.ta, [](const auto& k, T ta) { return k.ta < ta; });
+    const std::size_t mid = static_cast<std::size_t>(at_h - kept.begin());
+    bool represented = false;
+    for (std::size_t k = mid > 8 ? mid - 8 : 0; k < std::min(kept.size(), mid + 8) && !represented; ++k)
+      represented = same_region(kept[k], h);
+    if (!represented) kept.insert(kept.begin() + static_cast<std::ptrdiff_t>(mid), h);
   }
 
   Intersections<T> out;
