@@ -488,11 +488,19 @@ bool band(const CA& a, T alo, T ahi, const CB& b, T blo, T bhi, Context<T>& ctx)
       std::all_of(h.begin(), h.end(), [&](T c) { return c < T(-2.5) * near_hi; }))
     return true;  // apart by more than 2 tol all along: nothing (arc ends included)
   if (h_max <= (ctx.tol - E) * den_lo) ctx.near = true;
-  // Membership of a seed in the parts, with a slack above the roots' accuracy (eps over
-  // the crossing angle: 1e-8 at an angle of 1e-8) and below the merge distance of points
-  // (merge_fraction of the pieces), which joins the duplicates it lets through.
-  const T slack_a = T(1e-7), slack_b = T(1e-7);
+  // Membership of a seed in the parts, with a slack above the roots' accuracy: h is
+  // rounded to about 32 eps max|Q| max|coordinate| (the cores' de Casteljau steps and the
+  // products), so a root moves by that over |h'| (eps over the crossing angle: 1e-8 at an
+  // angle of 1e-8), and neighbouring parts computing it differently must not both drop
+  // it. The duplicates let through merge later (merge_fraction, or as one touch).
+  T coordinate_max = 0;
+  for (const auto* c : {&HA.x, &HA.y, &HB.x, &HB.y}) coordinate_max = std::max(coordinate_max, max_abs(*c));
+  const T h_noise = 32 * std::numeric_limits<T>::epsilon() * coordinate_max * qb->q_max;
+  const auto dh = bernstein_derivative_coefficients<T>(h);
   auto emit = [&](T u, bool edge) {
+    const T slope = std::abs(bernstein_value<T>(dh, u));
+    const T du = slope > 0 ? std::min(T(1e-2), 2 * h_noise / slope) : T(1e-2);
+    const T slack_a = std::max(T(1e-7), du * (ca1 - ca0)), slack_b = std::max(T(1e-7), du * std::abs(cb1 - cb0));
     const T s = ca0 + u * (ca1 - ca0), t = cb0 + u * (cb1 - cb0);
     if (s < alo - slack_a || s > ahi + slack_a || t < blo - slack_b || t > bhi + slack_b) return;
     ctx.seeds.push_back({std::clamp(s, ra.lo, ra.hi), std::clamp(t, rb.lo, rb.hi), edge});
@@ -513,12 +521,14 @@ bool band(const CA& a, T alo, T ahi, const CB& b, T blo, T bhi, Context<T>& ctx)
     return (it != roots.end() && *it - u <= cluster) || (it != roots.begin() && u - *(it - 1) <= cluster);
   };
   if (h.size() > 2) {
-    const auto dh = bernstein_derivative_coefficients<T>(h);
     const auto d2h = bernstein_derivative_coefficients<T>(dh);
     for (T u : bernstein_roots<T>(dh)) {
       const T hu = bernstein_value<T>(h, u);
-      // A local minimum of |h| (h'' of the sign of h) where the curves may be within tol.
-      if (std::abs(hu) <= near_hi && hu * bernstein_value<T>(d2h, u) >= 0 && !near_root(u)) emit(u, false);
+      // A local minimum of |h| (h'' of the sign of h) where the curves may be within tol,
+      // deeper than the rounding of h below both ends of the core (a flat h, in a core
+      // shorter than the curves' offset or along an overlap, has minima of noise only).
+      const T depth = std::min(std::abs(h.front()), std::abs(h.back())) - std::abs(hu);
+      if (std::abs(hu) <= near_hi && hu * bernstein_value<T>(d2h, u) >= 0 && !near_root(u) && depth > 4 * h_noise) emit(u, false);
     }
   }
   if ((ca0 == ra.lo || cb0 == b_arc_low) && std::abs(h.front()) <= T(2.5) * near_hi) emit(T(0), true);
@@ -921,18 +931,30 @@ T distance_near(const Pieces<T, 2>& c, const Prepared<T>& P, const Point<T, 2>& 
 }
 
 /// Whether curves a and b, common at (ta, tb) (the end of an overlap), are still within
-/// tol of each other beyond it: at a(ta + 16 da) against b near tb + 16 db (da, db the
-/// overlap's extent, signed towards the outside). False when either curve ends before.
+/// tol of each other beyond it: at a(ta + k da) against b near tb + k db (da, db the
+/// overlap's extent, signed towards the outside; k = 1, or less where a domain ends
+/// sooner). False when a curve ends within a quarter of the overlap's extent or turns
+/// back there.
 template <class T>
 bool near_beyond(const Pieces<T, 2>& ca, const Prepared<T>& A, const Pieces<T, 2>& cb, const Prepared<T>& B, T ta, T tb, T da, T db,
                  T tol) {
   const Interval<T> dom_a = ca.domain(), dom_b = cb.domain();
-  const T ea = T(1e-12) * dom_a.length(), eb = T(1e-12) * dom_b.length();
-  if ((da < 0 && ta <= dom_a.lo + ea) || (da > 0 && ta >= dom_a.hi - ea) || (db < 0 && tb <= dom_b.lo + eb) ||
-      (db > 0 && tb >= dom_b.hi - eb))
+  auto room = [](const Interval<T>& dom, T t, T d) {
+    if (d == 0) return std::numeric_limits<T>::infinity();
+    return (d > 0 ? dom.hi - t : t - dom.lo) / std::abs(d);
+  };
+  const T k = std::min({T(1), room(dom_a, ta, da), room(dom_b, tb, db)});
+  if (!(k >= T(0.25))) return false;
+  const T ta2 = std::clamp(ta + k * da, dom_a.lo, dom_a.hi), tb2 = std::clamp(tb + k * db, dom_b.lo, dom_b.hi);
+  // A curve that turns back at the end (a fold: a curve running over itself along a line)
+  // does not continue the overlap, whatever its points.
+  auto direction_at = [](const Pieces<T, 2>& c, const Prepared<T>& P, T g) {
+    const std::size_t p = c.segment_index(g);
+    return direction(P.unit[p], c.local_parameter(p, g));
+  };
+  if (dot(direction_at(ca, A, ta - da / 64), direction_at(ca, A, ta + k * da / 64)) < 0 ||
+      dot(direction_at(cb, B, tb - db / 64), direction_at(cb, B, tb + k * db / 64)) < 0)
     return false;
-  const T ta2 = ta + 16 * da, tb2 = tb + 16 * db;
-  if (ta2 < dom_a.lo || ta2 > dom_a.hi || tb2 < dom_b.lo || tb2 > dom_b.hi) return false;  // a curve ends within
   return distance_near(cb, B, unit_at(ca, A, ta2), tb2) <= tol;
 }
 
@@ -1013,14 +1035,14 @@ Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
     candidates.emplace_back(o, std::move(found));
   }
   // An overlap is a stretch within the near-miss distance that ends where the curves part
-  // or a curve ends. One that the curves continue beyond at both ends, still within the
-  // near-miss distance 16 times its length further on, is a piece of a longer near region
-  // (a crossing or touch at a tiny angle, seen between joints of the pieces: two circles of
+  // or a curve ends. One that the curves continue beyond, still within the near-miss
+  // distance as far again past one of its ends, is a piece of a longer near region (a
+  // crossing or touch at a tiny angle, seen between joints of pieces or arcs: two circles of
   // radius 1 with centres d apart meet at an angle d and stay within tol over 2 tol / d
   // around each crossing): its points are reported instead, as they are off the joints.
   std::vector<CurveOverlap<T>> joined;
   for (auto& [o, found] : candidates) {
-    const bool continues = near_beyond(ca, A, *cb, PB, o.a.lo, o.b_start, -(o.a.hi - o.a.lo), o.b_start - o.b_end, tol) &&
+    const bool continues = near_beyond(ca, A, *cb, PB, o.a.lo, o.b_start, -(o.a.hi - o.a.lo), o.b_start - o.b_end, tol) ||
                            near_beyond(ca, A, *cb, PB, o.a.hi, o.b_end, o.a.hi - o.a.lo, o.b_end - o.b_start, tol);
     if (continues) {
       hits.insert(hits.end(), found.begin(), found.end());
@@ -1131,10 +1153,22 @@ Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
   // and each of its neighbours in ta among the points kept so far (the nearest 8 on each
   // side); the closest of several such points of one region is kept.
   std::sort(edges.begin(), edges.end(), [](const auto& x, const auto& y) { return x.distance < y.distance; });
+  // On a closed curve the way between two parameters may pass its closing point.
+  const Interval<T> dom_a = ca.domain(), dom_b = cb->domain();
+  const bool closed_a = distance(unit_at(ca, A, dom_a.lo), unit_at(ca, A, dom_a.hi)) <= tol;
+  const bool closed_b = distance(unit_at(*cb, PB, dom_b.lo), unit_at(*cb, PB, dom_b.hi)) <= tol;
+  auto shortest = [](T d, const Interval<T>& dom, bool closed) {
+    const T L = dom.length();
+    return closed && std::abs(d) > L / 2 ? d - std::copysign(L, d) : d;
+  };
+  auto wrap = [](T t, const Interval<T>& dom) {
+    return t < dom.lo ? t + dom.length() : t > dom.hi ? t - dom.length() : t;
+  };
   auto same_region = [&](const Hit<T>& x, const Hit<T>& y) {
+    const T da = shortest(y.ta - x.ta, dom_a, closed_a), db = shortest(y.tb - x.tb, dom_b, closed_b);
     for (int j = 0; j <= 16; ++j) {
       const T f = static_cast<T>(j) / 16;
-      const T ta = x.ta + f * (y.ta - x.ta), tb = x.tb + f * (y.tb - x.tb);
+      const T ta = wrap(x.ta + f * da, dom_a), tb = wrap(x.tb + f * db, dom_b);
       if (!(distance_near(*cb, PB, unit_at(ca, A, ta), tb) <= tol)) return false;
     }
     return true;
@@ -1145,6 +1179,11 @@ Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
     bool represented = false;
     for (std::size_t k = mid > 8 ? mid - 8 : 0; k < std::min(kept.size(), mid + 8) && !represented; ++k)
       represented = same_region(kept[k], h);
+    if (closed_a) {  // the neighbours across the closing point
+      for (std::size_t k = 0; k < std::min<std::size_t>(kept.size(), 8) && !represented; ++k) represented = same_region(kept[k], h);
+      for (std::size_t k = kept.size() > 8 ? kept.size() - 8 : 0; k < kept.size() && !represented; ++k)
+        represented = same_region(kept[k], h);
+    }
     if (!represented) kept.insert(kept.begin() + static_cast<std::ptrdiff_t>(mid), h);
   }
 
