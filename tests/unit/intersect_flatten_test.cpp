@@ -3,6 +3,7 @@
 // of intersect are in tests/cli/test_intersect.py; these check the C++ entry points, the
 // degenerate fixtures and the curve types the CLI tests do not reach the same way.
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <vector>
 
@@ -233,6 +234,81 @@ TEST(Intersect, NearCoincidentCurves) {
   EXPECT_EQ(ov.overlaps[0].a, (Interval<double>{0, 1}));
   EXPECT_EQ(ov.overlaps[0].b_start, 0.0);
   EXPECT_EQ(ov.overlaps[0].b_end, 1.0);
+}
+
+TEST(Intersect, CopiesTurnedByTinyAnglesCrossOnceAtTheCentre) {
+  // A cubic and its copy turned by a about c(t0) cross there only, at the angle a: one
+  // point, tangent (a < 1e-6), at t0 to the conditioning of a crossing at angle a (a few
+  // eps / a in the parameters; the copy's rounded control points move the exact crossing
+  // by about that much). The general engine decides these on bands (no subdivision down
+  // to the near-miss distance).
+  using PC = Pieces<double, 2>;
+  const B2 c{{0, 0}, {1, 2}, {3, -1}, {4, 1}};
+  for (const double a : {1e-7, 1e-8, 1e-9}) {
+    for (const double t0 : {0.0, 0.25, 0.5, 0.75, 1.0}) {
+      const B2 b = turned(c, c(t0), a);
+      const PC pa(std::vector<BezierPiece<double, 2>>{c}), pb(std::vector<BezierPiece<double, 2>>{b});
+      const auto r = detail::isect::solve(pa, &pb);
+      ASSERT_EQ(r.points.size(), 1u) << a << " " << t0;
+      EXPECT_TRUE(r.overlaps.empty());
+      EXPECT_EQ(r.points[0].kind, IntersectionKind::tangent);
+      const double accuracy = 1e3 * std::numeric_limits<double>::epsilon() / a;
+      EXPECT_NEAR(r.points[0].ta, t0, accuracy) << a;
+      EXPECT_NEAR(r.points[0].tb, t0, accuracy) << a;
+      EXPECT_LE(distance(c(r.points[0].ta), b(r.points[0].tb)), 1e-14);
+    }
+  }
+}
+
+/// The unit circle about (cx, cy) as circle() builds it.
+Nurbs<double, 2> circle_at(double cx, double cy) {
+  const auto c = circle();
+  std::vector<P2> q;
+  for (const auto& p : c.points()) q.push_back(P2{p[0] + cx, p[1] + cy});
+  return Nurbs<double, 2>(2, c.knots(), q, c.weights());
+}
+
+TEST(Intersect, CirclesWithCloseCentresCrossTwice) {
+  // Unit circles with centres d apart (size 2 sqrt 2, near-miss distance 2.8e-10) cross at
+  // c / 2 +- n sqrt(1 - d^2 / 4) at an angle d: two points, never an overlap, whether the
+  // crossings fall on the joints of the quarters (offset along x) or inside them; tangent
+  // below an angle of 1e-6. Positions to 4 eps / d, the conditioning of the crossing.
+  for (const double d : {3e-10, 1e-9, 1e-8, 1e-7, 1e-5, 1e-4}) {
+    for (const bool diagonal : {false, true}) {
+      const P2 u = diagonal ? P2{std::sqrt(0.5), std::sqrt(0.5)} : P2{1, 0};
+      const P2 c{d * u[0], d * u[1]};
+      const auto r = intersect(circle(), circle_at(c[0], c[1]));
+      EXPECT_TRUE(r.overlaps.empty()) << d << " " << diagonal;
+      ASSERT_EQ(r.points.size(), 2u) << d << " " << diagonal;
+      const double h = std::sqrt(1 - d * d / 4);
+      const P2 e0{c[0] / 2 - u[1] * h, c[1] / 2 + u[0] * h}, e1{c[0] / 2 + u[1] * h, c[1] / 2 - u[0] * h};
+      const double accuracy = 4 * std::numeric_limits<double>::epsilon() / d;
+      const auto& p = r.points;
+      const bool first_is_e0 = distance(p[0].point, e0) < distance(p[1].point, e0);
+      EXPECT_LE(distance(p[first_is_e0 ? 0 : 1].point, e0), accuracy) << d << " " << diagonal;
+      EXPECT_LE(distance(p[first_is_e0 ? 1 : 0].point, e1), accuracy) << d << " " << diagonal;
+      for (const auto& x : p) EXPECT_EQ(x.kind, d < 1e-6 ? IntersectionKind::tangent : IntersectionKind::crossing) << d;
+    }
+  }
+}
+
+TEST(Intersect, CopiesApartByOneToThreeNearMissDistances) {
+  // Translated by k 1e-10 of the size (5) along the chord's normal: apart by k (0.65 .. 1)
+  // 1e-10 of the size (the cosine of the tangent's angle to the chord, 0.65 at the ends).
+  // k = 2, 3: farther than the near-miss distance everywhere, nothing; k = 0.5: within it
+  // everywhere, one overlap.
+  const B2 c{{0, 0}, {1, 2}, {3, -1}, {4, 1}};
+  const P2 n{-1 / std::sqrt(17.0), 4 / std::sqrt(17.0)};
+  for (const double k : {2.0, 3.0, 0.5}) {
+    std::vector<P2> q;
+    for (const auto& p : c.points()) q.push_back(P2{p[0] + k * 5e-10 * n[0], p[1] + k * 5e-10 * n[1]});
+    const auto r = intersect(c, B2(q));
+    EXPECT_TRUE(r.points.empty()) << k;
+    ASSERT_EQ(r.overlaps.size(), k < 1 ? 1u : 0u) << k;
+    if (k < 1) {
+      EXPECT_EQ(r.overlaps[0].a, (Interval<double>{0, 1}));
+    }
+  }
 }
 
 TEST(Intersect, ReparametrisedAndSubIntervalOverlaps) {

@@ -395,8 +395,10 @@ Piece<T> piece_part(const Piece<T>& c, T lo, T hi, bool reversed) {
 }
 
 /// Near-coincident parts a on [alo, ahi] and b on [blo, bhi] (piece parameters) of the
-/// arcs in ctx, decided at once (true) instead of subdivided down to the near-miss
-/// distance; false when the band does not apply (plain subdivision goes on).
+/// arcs in ctx, decided at once (done) instead of subdivided down to the near-miss
+/// distance; otherwise plain subdivision goes on (trying bands again below unless the
+/// curves are too far apart for the bound: their matched difference D hardly shrinks
+/// with the parts, and a failed attempt costs about as much as 20 subdivision steps).
 ///
 /// Applies when every tangent of both parts lies within band_angle of one direction e (b
 /// possibly running the other way) and the curves are close: both parts are extended
@@ -420,12 +422,17 @@ Piece<T> piece_part(const Piece<T>& c, T lo, T hi, bool reversed) {
 /// how close the curves run: a cubic and its copy 2e-10 of its size away take a few band
 /// nodes where subdivision took 10^5 parts. [SederbergNishita90 for the fat-line form of
 /// the separation; the bound is ours.]
+enum class BandResult {
+  done,        ///< the pair is decided (seeds emitted, or none)
+  no,          ///< not a band here; smaller parts may be
+  too_far,     ///< the curves are too far apart for the bound (E > 0.05 tol): plain subdivision below
+};
 template <class T, class CA, class CB>
-bool band(const CA& a, T alo, T ahi, const CB& b, T blo, T bhi, Context<T>& ctx) {
-  if (!ctx.a || !ctx.b) return false;
-  if (static_cast<int>(a.points().size()) - 1 > band_max_degree || static_cast<int>(b.points().size()) - 1 > band_max_degree) return false;
+BandResult band(const CA& a, T alo, T ahi, const CB& b, T blo, T bhi, Context<T>& ctx) {
+  if (!ctx.a || !ctx.b) return BandResult::no;
+  if (static_cast<int>(a.points().size()) - 1 > band_max_degree || static_cast<int>(b.points().size()) - 1 > band_max_degree) return BandResult::no;
   const auto ka = tangent_cone(a), kb = tangent_cone(b);
-  if (!ka || !kb || ka->hi - ka->lo > T(band_angle) || kb->hi - kb->lo > T(band_angle)) return false;
+  if (!ka || !kb || ka->hi - ka->lo > T(band_angle) || kb->hi - kb->lo > T(band_angle)) return BandResult::no;
   const T mid = (ka->lo + ka->hi) / 2;
   const Vector<T, 2> r = ka->ref / norm(ka->ref);
   const Vector<T, 2> e{std::cos(mid) * r[0] - std::sin(mid) * r[1], std::sin(mid) * r[0] + std::cos(mid) * r[1]};
@@ -441,7 +448,7 @@ bool band(const CA& a, T alo, T ahi, const CB& b, T blo, T bhi, Context<T>& ctx)
   const T b_low = reversed ? bhi : blo, b_high = reversed ? blo : bhi;
   const T b_arc_low = reversed ? rb.hi : rb.lo, b_arc_high = reversed ? rb.lo : rb.hi;
   const T xb0 = xb(b_low), xb1 = xb(b_high);
-  if (!(xa0 < xa1) || !(xb0 < xb1)) return false;
+  if (!(xa0 < xa1) || !(xb0 < xb1)) return BandResult::no;
   // Both parts extended along their arcs over the union of their x ranges, then the
   // common range of the extensions.
   const T U0 = std::min(xa0, xb0), U1 = std::max(xa1, xb1);
@@ -450,12 +457,12 @@ bool band(const CA& a, T alo, T ahi, const CB& b, T blo, T bhi, Context<T>& ctx)
   const T eb0 = U0 < xb0 ? solve_projection(pb, e, U0, std::min(b_arc_low, b_low), std::max(b_arc_low, b_low)) : b_low;
   const T eb1 = U1 > xb1 ? solve_projection(pb, e, U1, std::min(b_arc_high, b_high), std::max(b_arc_high, b_high)) : b_high;
   const T X0 = std::max(xa(ea0), xb(eb0)), X1 = std::min(xa(ea1), xb(eb1));
-  if (!(X1 - X0 > 64 * std::numeric_limits<T>::epsilon())) return false;
+  if (!(X1 - X0 > 64 * std::numeric_limits<T>::epsilon())) return BandResult::no;
   const T ca0 = xa(ea0) >= X0 ? ea0 : solve_projection(pa, e, X0, ea0, ea1);
   const T ca1 = xa(ea1) <= X1 ? ea1 : solve_projection(pa, e, X1, ea0, ea1);
   const T cb0 = xb(eb0) >= X0 ? eb0 : solve_projection(pb, e, X0, std::min(eb0, eb1), std::max(eb0, eb1));
   const T cb1 = xb(eb1) <= X1 ? eb1 : solve_projection(pb, e, X1, std::min(eb0, eb1), std::max(eb0, eb1));
-  if (!(ca0 < ca1) || !(reversed ? cb1 < cb0 : cb0 < cb1)) return false;
+  if (!(ca0 < ca1) || !(reversed ? cb1 < cb0 : cb0 < cb1)) return BandResult::no;
   // Cores (B oriented along e) and the span of b the bound must cover (core and part).
   const Piece<T> A = piece_part(pa, ca0, ca1, false);
   const Piece<T> B = piece_part(pb, std::min(cb0, cb1), std::max(cb0, cb1), reversed);
@@ -465,7 +472,7 @@ bool band(const CA& a, T alo, T ahi, const CB& b, T blo, T bhi, Context<T>& ctx)
   const auto span_b = (sb0 == std::min(cb0, cb1) && sb1 == std::max(cb0, cb1))
                           ? part_bounds(HB, e)
                           : part_bounds(std::visit([](const auto& x) { return homogeneous(x); }, piece_part(pb, sb0, sb1, reversed)), e);
-  if (!span_b || !part_bounds(HA, e)) return false;
+  if (!span_b || !part_bounds(HA, e)) return BandResult::no;
   // D = R / (W_A W_B), R = X_A W_B - X_B W_A; h = Q x R.
   const auto rx = bernstein_difference<T>(bernstein_product<T>(HA.x, HB.w), bernstein_product<T>(HB.x, HA.w));
   const auto ry = bernstein_difference<T>(bernstein_product<T>(HA.y, HB.w), bernstein_product<T>(HB.y, HA.w));
@@ -477,16 +484,16 @@ bool band(const CA& a, T alo, T ahi, const CB& b, T blo, T bhi, Context<T>& ctx)
   for (std::size_t i = 0; i < rx.size(); ++i) d_max = std::max(d_max, norm(Vector<T, 2>{rx[i], ry[i]}));
   d_max /= wa_min * wb_min;
   const T E = T(4.5) * span_b->curvature * d_max * d_max;
-  if (!(E <= T(0.05) * ctx.tol)) return false;
+  if (!(E <= T(0.05) * ctx.tol)) return BandResult::too_far;
   const auto qb = part_bounds(HB, e);
-  if (!qb) return false;
+  if (!qb) return BandResult::no;
   // |beta| >= |h| / den_hi everywhere; |beta| <= |h| / den_lo.
   const T den_hi = wa_max * wb_max * qb->q_max, den_lo = wa_min * wb_min * qb->q_along;
   const T near_hi = (ctx.tol + E) * den_hi;
   const T h_max = max_abs(h);
   if (std::all_of(h.begin(), h.end(), [&](T c) { return c > T(2.5) * near_hi; }) ||
       std::all_of(h.begin(), h.end(), [&](T c) { return c < T(-2.5) * near_hi; }))
-    return true;  // apart by more than 2 tol all along: nothing (arc ends included)
+    return BandResult::done;  // apart by more than 2 tol all along: nothing (arc ends included)
   if (h_max <= (ctx.tol - E) * den_lo) ctx.near = true;
   // Membership of a seed in the parts, with a slack above the roots' accuracy: h is
   // rounded to about 32 eps max|Q| max|coordinate| (the cores' de Casteljau steps and the
@@ -533,7 +540,7 @@ bool band(const CA& a, T alo, T ahi, const CB& b, T blo, T bhi, Context<T>& ctx)
   }
   if ((ca0 == ra.lo || cb0 == b_arc_low) && std::abs(h.front()) <= T(2.5) * near_hi) emit(T(0), true);
   if ((ca1 == ra.hi || cb1 == b_arc_high) && std::abs(h.back()) <= T(2.5) * near_hi) emit(T(1), true);
-  return true;
+  return BandResult::done;
 }
 
 /// Largest number of subdivision steps one pair of arcs may take; a pair of transversal
@@ -549,7 +556,7 @@ inline constexpr int max_depth = 50;
 /// pair of flat parts whose chords come within 2 flat + slack gives a seed (the chords'
 /// closest points), later refined on the curves themselves.
 template <class T, class CA, class CB>
-void subdivide(const CA& a, T alo, T ahi, int da, const CB& b, T blo, T bhi, int db, Context<T>& ctx) {
+void subdivide(const CA& a, T alo, T ahi, int da, const CB& b, T blo, T bhi, int db, Context<T>& ctx, bool bands = true) {
   if (ctx.exhausted) return;
   if (++ctx.nodes > ctx.node_limit) {
     ctx.exhausted = true;
@@ -580,17 +587,21 @@ void subdivide(const CA& a, T alo, T ahi, int da, const CB& b, T blo, T bhi, int
   }
   // Near-coincident parts (narrow tangent cones along one direction): decided at once on
   // the separation polynomial instead of subdivided down to the near-miss distance.
-  if (band(a, alo, ahi, b, blo, bhi, ctx)) return;
+  if (bands) {
+    const BandResult r = band(a, alo, ahi, b, blo, bhi, ctx);
+    if (r == BandResult::done) return;
+    bands = r != BandResult::too_far;
+  }
   if (!fa && (fb || diagonal(ba) >= diagonal(bb))) {
     const auto h = a.split(T(0.5));
     const T m = alo + (ahi - alo) / 2;
-    subdivide(h.left, alo, m, da + 1, b, blo, bhi, db, ctx);
-    subdivide(h.right, m, ahi, da + 1, b, blo, bhi, db, ctx);
+    subdivide(h.left, alo, m, da + 1, b, blo, bhi, db, ctx, bands);
+    subdivide(h.right, m, ahi, da + 1, b, blo, bhi, db, ctx, bands);
   } else {
     const auto h = b.split(T(0.5));
     const T m = blo + (bhi - blo) / 2;
-    subdivide(a, alo, ahi, da, h.left, blo, m, db + 1, ctx);
-    subdivide(a, alo, ahi, da, h.right, m, bhi, db + 1, ctx);
+    subdivide(a, alo, ahi, da, h.left, blo, m, db + 1, ctx, bands);
+    subdivide(a, alo, ahi, da, h.right, m, bhi, db + 1, ctx, bands);
   }
 }
 
