@@ -191,6 +191,7 @@ struct Context {
   const Arc<T>* ra = nullptr;
   const Arc<T>* rb = nullptr;
   bool near = false;  // a band lies within tol of the other curve all along: test for an overlap
+  bool stop_on_near = false;  // stop the subdivision once near (the overlap test comes first)
 };
 
 /// The tangent cone of a Bézier or rational Bézier part: the directions of its control
@@ -557,7 +558,7 @@ inline constexpr int max_depth = 50;
 /// closest points), later refined on the curves themselves.
 template <class T, class CA, class CB>
 void subdivide(const CA& a, T alo, T ahi, int da, const CB& b, T blo, T bhi, int db, Context<T>& ctx, bool bands = true) {
-  if (ctx.exhausted) return;
+  if (ctx.exhausted || (ctx.near && ctx.stop_on_near)) return;
   if (++ctx.nodes > ctx.node_limit) {
     ctx.exhausted = true;
     return;
@@ -884,7 +885,7 @@ bool intersect_arcs(const Prepared<T>& A, std::size_t ia, const Prepared<T>& B, 
   std::visit(
       [&](const auto& x, const auto& y) { subdivide(x, ra.lo, ra.hi, 0, y, rb.lo, rb.hi, 0, ctx); }, A.arc_parts[ia],
       B.arc_parts[ib]);
-  if (ctx.exhausted) return false;
+  if (ctx.exhausted || (ctx.near && ctx.stop_on_near)) return false;
   bool clean = true;
   // Refined points so far, by s: seeds from neighbouring parts refine to the same point
   // (thousands of them along near-coincident curves), found again in O(log) each.
@@ -998,7 +999,29 @@ Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
   std::vector<Hit<T>> hits;
   // Overlaps found arc by arc, each with the points its pair of arcs gave (reported if
   // the overlap turns out to lie inside a crossing or touch region, see below).
-  std::vector<std::pair<CurveOverlap<T>, std::vector<Hit<T>>>> overlaps;
+  // When the first pass over a pair of arcs stopped early (see below), the pair itself
+  // (`deferred`), whose points are computed only if the overlap is rejected.
+  struct RawOverlap {
+    CurveOverlap<T> o;
+    std::vector<Hit<T>> found;
+    std::vector<std::pair<std::size_t, std::size_t>> deferred;
+  };
+  std::vector<RawOverlap> overlaps;
+  // All the points of arcs i and j (the engine's full pass).
+  auto arc_points = [&](std::size_t i, std::size_t j) {
+    std::vector<Hit<T>> found;
+    intersect_arcs(A, i, PB, j, ctx, lazy_nodes, found);
+    if (ctx.exhausted) {
+      found.clear();
+      intersect_arcs(A, i, PB, j, ctx, max_nodes, found);
+      if (ctx.exhausted) {
+        throw NumericalError("intersect: more than " + std::to_string(max_nodes) +
+                             " subdivision steps for one pair of arcs: the curves run within 1e-10 of their size of each "
+                             "other without coinciding");
+      }
+    }
+    return found;
+  };
   for (std::size_t i = 0; i < A.arcs.size(); ++i) {
     for (std::size_t j = self ? i + 1 : 0; j < PB.arcs.size(); ++j) {
       const Arc<T>& ra = A.arcs[i];
@@ -1006,23 +1029,29 @@ Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
       if (!boxes_meet(A.arc_boxes[i], PB.arc_boxes[j], ctx.slack)) continue;
       // The overlap test (a few root solves) only where the arcs may overlap: a tangent
       // point found, or the subdivision running long.
+      // The first pass stops at the first band along which the arcs stay within tol (an
+      // overlap is then likely; its points are computed only if the overlap test fails or
+      // the overlap is later rejected).
       std::vector<Hit<T>> found;
-      if (!intersect_arcs(A, i, PB, j, ctx, lazy_nodes, found)) {
+      ctx.stop_on_near = true;
+      const bool clean = intersect_arcs(A, i, PB, j, ctx, lazy_nodes, found);
+      ctx.stop_on_near = false;
+      if (!clean) {
+        const bool stopped = ctx.near && !ctx.exhausted;
         if (auto o = arc_overlap(A, ra, PB, rb, tol)) {
-          overlaps.push_back({{{ca.global_parameter(ra.piece, o->s0), ca.global_parameter(ra.piece, o->s1)},
-                               cb->global_parameter(rb.piece, o->t0), cb->global_parameter(rb.piece, o->t1)},
-                              std::move(found)});
+          RawOverlap raw{{{ca.global_parameter(ra.piece, o->s0), ca.global_parameter(ra.piece, o->s1)},
+                          cb->global_parameter(rb.piece, o->t0), cb->global_parameter(rb.piece, o->t1)},
+                         {},
+                         {}};
+          if (stopped) {
+            raw.deferred.emplace_back(i, j);
+          } else {
+            raw.found = std::move(found);
+          }
+          overlaps.push_back(std::move(raw));
           continue;
         }
-        if (ctx.exhausted) {
-          found.clear();
-          intersect_arcs(A, i, PB, j, ctx, max_nodes, found);
-          if (ctx.exhausted) {
-            throw NumericalError("intersect: more than " + std::to_string(max_nodes) +
-                                 " subdivision steps for one pair of arcs: the curves run within 1e-10 of their size of each "
-                                 "other without coinciding");
-          }
-        }
+        if (stopped || ctx.exhausted) found = arc_points(i, j);
       }
       hits.insert(hits.end(), found.begin(), found.end());
     }
@@ -1030,20 +1059,22 @@ Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
 
   // Overlaps found arc by arc: join the ones that continue each other.
   const T la = ca.domain().length(), lb = cb->domain().length();
-  std::sort(overlaps.begin(), overlaps.end(), [](const auto& x, const auto& y) { return x.first.a.lo < y.first.a.lo; });
-  std::vector<std::pair<CurveOverlap<T>, std::vector<Hit<T>>>> candidates;
-  for (auto& [o, found] : overlaps) {
+  std::sort(overlaps.begin(), overlaps.end(), [](const auto& x, const auto& y) { return x.o.a.lo < y.o.a.lo; });
+  std::vector<RawOverlap> candidates;
+  for (auto& r : overlaps) {
+    const auto& o = r.o;
     if (!candidates.empty()) {
-      auto& [p, pf] = candidates.back();
-      if (std::abs(o.a.lo - p.a.hi) <= T(1e-9) * la && std::abs(o.b_start - p.b_end) <= T(1e-9) * lb &&
-          ((o.b_end > o.b_start) == (p.b_end > p.b_start))) {
-        p.a.hi = o.a.hi;
-        p.b_end = o.b_end;
-        pf.insert(pf.end(), found.begin(), found.end());
+      auto& p = candidates.back();
+      if (std::abs(o.a.lo - p.o.a.hi) <= T(1e-9) * la && std::abs(o.b_start - p.o.b_end) <= T(1e-9) * lb &&
+          ((o.b_end > o.b_start) == (p.o.b_end > p.o.b_start))) {
+        p.o.a.hi = o.a.hi;
+        p.o.b_end = o.b_end;
+        p.found.insert(p.found.end(), r.found.begin(), r.found.end());
+        p.deferred.insert(p.deferred.end(), r.deferred.begin(), r.deferred.end());
         continue;
       }
     }
-    candidates.emplace_back(o, std::move(found));
+    candidates.push_back(std::move(r));
   }
   // An overlap is a stretch within the near-miss distance that ends where the curves part
   // or a curve ends. One that the curves continue beyond, still within the near-miss
@@ -1052,11 +1083,15 @@ Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
   // radius 1 with centres d apart meet at an angle d and stay within tol over 2 tol / d
   // around each crossing): its points are reported instead, as they are off the joints.
   std::vector<CurveOverlap<T>> joined;
-  for (auto& [o, found] : candidates) {
+  for (auto& [o, found, deferred] : candidates) {
     const bool continues = near_beyond(ca, A, *cb, PB, o.a.lo, o.b_start, -(o.a.hi - o.a.lo), o.b_start - o.b_end, tol) ||
                            near_beyond(ca, A, *cb, PB, o.a.hi, o.b_end, o.a.hi - o.a.lo, o.b_end - o.b_start, tol);
     if (continues) {
       hits.insert(hits.end(), found.begin(), found.end());
+      for (const auto& [i, j] : deferred) {
+        const auto more = arc_points(i, j);
+        hits.insert(hits.end(), more.begin(), more.end());
+      }
     } else {
       joined.push_back(o);
     }
