@@ -241,7 +241,8 @@ TEST(Intersect, CopiesTurnedByTinyAnglesCrossOnceAtTheCentre) {
   // point, tangent (a < 1e-6), at t0 to the conditioning of a crossing at angle a (a few
   // eps / a in the parameters; the copy's rounded control points move the exact crossing
   // by about that much). The general engine decides these on bands (no subdivision down
-  // to the near-miss distance).
+  // to the near-miss distance). Before bands: t = 0.607 about c(0.5) at 1e-9, three
+  // points at 1e-8 on the joint and in the loop.
   using PC = Pieces<double, 2>;
   const B2 c{{0, 0}, {1, 2}, {3, -1}, {4, 1}};
   for (const double a : {1e-7, 1e-8, 1e-9}) {
@@ -257,6 +258,22 @@ TEST(Intersect, CopiesTurnedByTinyAnglesCrossOnceAtTheCentre) {
       EXPECT_NEAR(r.points[0].tb, t0, accuracy) << a;
       EXPECT_LE(distance(c(r.points[0].ta), b(r.points[0].tb)), 1e-14);
     }
+    // The same crossing on the joint of two pieces (c's halves, on [0, 2]), and as the
+    // self-intersection of the loop c, then the copy turned about c(0.5) run backwards.
+    const auto h = c.split(0.5);
+    const PC halves(std::vector<BezierPiece<double, 2>>{h.left, h.right});
+    const PC turned_copy(std::vector<BezierPiece<double, 2>>{turned(c, c(0.5), a)});
+    const auto joint = detail::isect::solve(halves, &turned_copy);
+    ASSERT_EQ(joint.points.size(), 1u) << a;
+    EXPECT_TRUE(joint.overlaps.empty());
+    EXPECT_NEAR(joint.points[0].ta, 1, 2e3 * std::numeric_limits<double>::epsilon() / a);
+    EXPECT_NEAR(joint.points[0].tb, 0.5, 1e3 * std::numeric_limits<double>::epsilon() / a);
+    const PC loop(std::vector<BezierPiece<double, 2>>{c, turned(c, c(0.5), a).reverse()});
+    const auto self = detail::isect::solve(loop, static_cast<const PC*>(nullptr));
+    ASSERT_EQ(self.points.size(), 1u) << a;
+    EXPECT_TRUE(self.overlaps.empty());
+    EXPECT_NEAR(self.points[0].ta, 0.5, 1e3 * std::numeric_limits<double>::epsilon() / a);
+    EXPECT_NEAR(self.points[0].tb, 1.5, 1e3 * std::numeric_limits<double>::epsilon() / a);
   }
 }
 
