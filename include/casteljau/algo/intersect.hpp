@@ -395,6 +395,13 @@ Piece<T> piece_part(const Piece<T>& c, T lo, T hi, bool reversed) {
       c);
 }
 
+/// What band() made of a pair of parts.
+enum class BandResult {
+  done,     ///< the pair is decided (seeds emitted, or none)
+  no,       ///< not a band here; smaller parts may be
+  too_far,  ///< the curves are too far apart for the bound (E > 0.05 tol): plain subdivision below
+};
+
 /// Near-coincident parts a on [alo, ahi] and b on [blo, bhi] (piece parameters) of the
 /// arcs in ctx, decided at once (done) instead of subdivided down to the near-miss
 /// distance; otherwise plain subdivision goes on (trying bands again below unless the
@@ -417,21 +424,18 @@ Piece<T> piece_part(const Piece<T>& c, T lo, T hi, bool reversed) {
 ///    within tol of it only there): an edge seed (the curves may meet at the arc end,
 ///    or the near region continue into the next arc: solve() decides which);
 ///  - h within tol everywhere: the parts may overlap (ctx.near: the overlap test runs).
-/// Seeds are kept only where both parameters lie in the parts (to 1e-7: neighbouring pairs
-/// of parts see the rest). Requires E <= 0.05 tol (curves within about 1e-7 of each other). Cost:
-/// a few products and two root solves of polynomials of degree about 3 n, independent of
-/// how close the curves run: a cubic and its copy 2e-10 of its size away take a few band
-/// nodes where subdivision took 10^5 parts. [SederbergNishita90 for the fat-line form of
+/// Seeds are kept only where both parameters lie in the parts, to the rounding of the
+/// roots (neighbouring pairs of parts see the rest). Requires E <= 0.05 tol (curves within
+/// about 1e-7 of each other) and degrees up to band_max_degree. Cost: a few products and
+/// two root solves of polynomials of degree about 3 n, independent of how close the curves
+/// run: a cubic and its copy 2e-10 of its size away take a few band nodes where
+/// subdivision took 10^5 parts. [SederbergNishita90 for the fat-line form of
 /// the separation; the bound is ours.]
-enum class BandResult {
-  done,        ///< the pair is decided (seeds emitted, or none)
-  no,          ///< not a band here; smaller parts may be
-  too_far,     ///< the curves are too far apart for the bound (E > 0.05 tol): plain subdivision below
-};
 template <class T, class CA, class CB>
 BandResult band(const CA& a, T alo, T ahi, const CB& b, T blo, T bhi, Context<T>& ctx) {
   if (!ctx.a || !ctx.b) return BandResult::no;
-  if (static_cast<int>(a.points().size()) - 1 > band_max_degree || static_cast<int>(b.points().size()) - 1 > band_max_degree) return BandResult::no;
+  const int na = static_cast<int>(a.points().size()) - 1, nb = static_cast<int>(b.points().size()) - 1;
+  if (na > band_max_degree || nb > band_max_degree) return BandResult::no;
   const auto ka = tangent_cone(a), kb = tangent_cone(b);
   if (!ka || !kb || ka->hi - ka->lo > T(band_angle) || kb->hi - kb->lo > T(band_angle)) return BandResult::no;
   const T mid = (ka->lo + ka->hi) / 2;
@@ -470,10 +474,12 @@ BandResult band(const CA& a, T alo, T ahi, const CB& b, T blo, T bhi, Context<T>
   const T sb0 = std::min({cb0, cb1, blo}), sb1 = std::max({cb0, cb1, bhi});
   const Homogeneous<T> HA = std::visit([](const auto& x) { return homogeneous(x); }, A);
   const Homogeneous<T> HB = std::visit([](const auto& x) { return homogeneous(x); }, B);
-  const auto span_b = (sb0 == std::min(cb0, cb1) && sb1 == std::max(cb0, cb1))
-                          ? part_bounds(HB, e)
-                          : part_bounds(std::visit([](const auto& x) { return homogeneous(x); }, piece_part(pb, sb0, sb1, reversed)), e);
-  if (!span_b || !part_bounds(HA, e)) return BandResult::no;
+  const auto qb = part_bounds(HB, e);
+  if (!qb || !part_bounds(HA, e)) return BandResult::no;
+  const bool span_is_core = sb0 == std::min(cb0, cb1) && sb1 == std::max(cb0, cb1);
+  const auto span_b =
+      span_is_core ? qb : part_bounds(std::visit([](const auto& x) { return homogeneous(x); }, piece_part(pb, sb0, sb1, reversed)), e);
+  if (!span_b) return BandResult::no;
   // D = R / (W_A W_B), R = X_A W_B - X_B W_A; h = Q x R.
   const auto rx = bernstein_difference<T>(bernstein_product<T>(HA.x, HB.w), bernstein_product<T>(HB.x, HA.w));
   const auto ry = bernstein_difference<T>(bernstein_product<T>(HA.y, HB.w), bernstein_product<T>(HB.y, HA.w));
@@ -486,8 +492,6 @@ BandResult band(const CA& a, T alo, T ahi, const CB& b, T blo, T bhi, Context<T>
   d_max /= wa_min * wb_min;
   const T E = T(4.5) * span_b->curvature * d_max * d_max;
   if (!(E <= T(0.05) * ctx.tol)) return BandResult::too_far;
-  const auto qb = part_bounds(HB, e);
-  if (!qb) return BandResult::no;
   // |beta| >= |h| / den_hi everywhere; |beta| <= |h| / den_lo.
   const T den_hi = wa_max * wb_max * qb->q_max, den_lo = wa_min * wb_min * qb->q_along;
   const T near_hi = (ctx.tol + E) * den_hi;
