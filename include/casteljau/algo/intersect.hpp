@@ -321,9 +321,10 @@ T max_abs(const std::vector<T>& c) {
 /// Within it, e . c(u) is monotone along both parts, and along a stretch of arc length L
 /// the curves advance by at least cos(2 band_angle) L = 0.98 L along any tangent of theirs.
 inline constexpr double band_angle = 0.1;
-/// Highest degree a band takes (its separation polynomial has degree about 3 n): above it,
-/// plain subdivision.
-inline constexpr int band_max_degree = 16;
+/// Highest degree a band takes (its separation polynomial has degree 2 n - 1, about 4 n
+/// for rational pieces): above it, plain subdivision. Degree-30 curves turned by 1e-9
+/// take 9 ms with bands, 6.6 s without.
+inline constexpr int band_max_degree = 64;
 
 /// Bounds of a part h whose tangents lie within band_angle of e: a bound of its curvature
 /// (|c''| / |c'|^2, from the convex hulls of Q, Q', W and W'), and min e . Q, max |Q|.
@@ -358,7 +359,8 @@ std::optional<PartBounds<T>> part_bounds(const Homogeneous<T>& h, const Vector<T
 }
 
 /// The parameter in [lo, hi] of piece c where e . c = X, when e . c is monotone there
-/// (either way): bisection with secant steps; the nearer end when X is outside the range.
+/// (either way): Newton's method kept inside the bracket (bisection when it leaves it);
+/// the nearer end when X is outside the range.
 template <class T>
 T solve_projection(const Piece<T>& c, const Vector<T, 2>& e, T X, T lo, T hi) {
   auto f = [&](T u) { return dot(e, at(c, u).to_vector()) - X; };
@@ -366,12 +368,14 @@ T solve_projection(const Piece<T>& c, const Vector<T, 2>& e, T X, T lo, T hi) {
   if (flo == 0) return lo;
   if (fhi == 0) return hi;
   if ((flo > 0) == (fhi > 0)) return std::abs(flo) <= std::abs(fhi) ? lo : hi;
+  T u = lo - flo * (hi - lo) / (fhi - flo);  // the secant's first guess
   for (int it = 0; it < 200 && hi - lo > 4 * std::numeric_limits<T>::epsilon() * std::max(T(1), std::abs(hi)); ++it) {
-    T m = lo - flo * (hi - lo) / (fhi - flo);
-    // Bisect every third step or when the secant lands at an end (guaranteed progress).
-    if (it % 3 == 2 || !(m > lo && m < hi)) m = lo + (hi - lo) / 2;
+    const T m = u > lo && u < hi ? u : lo + (hi - lo) / 2;
     const T fm = f(m);
     if (fm == 0) return m;
+    const T slope = dot(e, derivative(c, m));
+    u = slope != 0 ? m - fm / slope : m;
+    if (std::abs(u - m) <= 2 * std::numeric_limits<T>::epsilon() * std::max(T(1), std::abs(m))) return m;
     if ((fm > 0) == (flo > 0)) {
       lo = m;
       flo = fm;
@@ -454,6 +458,11 @@ BandResult band(const CA& a, T alo, T ahi, const CB& b, T blo, T bhi, Context<T>
   const T b_arc_low = reversed ? rb.hi : rb.lo, b_arc_high = reversed ? rb.lo : rb.hi;
   const T xb0 = xb(b_low), xb1 = xb(b_high);
   if (!(xa0 < xa1) || !(xb0 < xb1)) return BandResult::no;
+  // The arcs' own x ranges bound the common range below (when x is monotone along them;
+  // when not, the cores' cone test below fails anyway): nothing to extend to when they
+  // barely overlap, as for consecutive arcs of one curve meeting end to end.
+  const T width = std::max(xa1 - xa0, xb1 - xb0);
+  if (!(std::min(xa(ra.hi), xb(b_arc_high)) - std::max(xa(ra.lo), xb(b_arc_low)) > T(1e-10) * width)) return BandResult::no;
   // Both parts extended along their arcs over the union of their x ranges, then the
   // common range of the extensions.
   const T U0 = std::min(xa0, xb0), U1 = std::max(xa1, xb1);
@@ -462,7 +471,9 @@ BandResult band(const CA& a, T alo, T ahi, const CB& b, T blo, T bhi, Context<T>
   const T eb0 = U0 < xb0 ? solve_projection(pb, e, U0, std::min(b_arc_low, b_low), std::max(b_arc_low, b_low)) : b_low;
   const T eb1 = U1 > xb1 ? solve_projection(pb, e, U1, std::min(b_arc_high, b_high), std::max(b_arc_high, b_high)) : b_high;
   const T X0 = std::max(xa(ea0), xb(eb0)), X1 = std::min(xa(ea1), xb(eb1));
-  if (!(X1 - X0 > 64 * std::numeric_limits<T>::epsilon())) return BandResult::no;
+  // A common range at the rounding of the parts' extent: parts that only touch end to end
+  // (consecutive arcs of one curve), left to subdivision.
+  if (!(X1 - X0 > T(1e-10) * width)) return BandResult::no;
   const T ca0 = xa(ea0) >= X0 ? ea0 : solve_projection(pa, e, X0, ea0, ea1);
   const T ca1 = xa(ea1) <= X1 ? ea1 : solve_projection(pa, e, X1, ea0, ea1);
   const T cb0 = xb(eb0) >= X0 ? eb0 : solve_projection(pb, e, X0, std::min(eb0, eb1), std::max(eb0, eb1));
