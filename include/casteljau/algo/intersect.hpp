@@ -431,10 +431,10 @@ enum class BandResult {
 /// Seeds are kept only where both parameters lie in the parts, to the rounding of the
 /// roots (neighbouring pairs of parts see the rest). Requires E <= 0.05 tol (curves within
 /// about 1e-7 of each other) and degrees up to band_max_degree. Cost: a few products and
-/// two root solves of polynomials of degree about 3 n, independent of how close the curves
-/// run: a cubic and its copy 2e-10 of its size away take a few band nodes where
-/// subdivision took 10^5 parts. [SederbergNishita90 for the fat-line form of
-/// the separation; the bound is ours.]
+/// two root solves of polynomials of degree 2 n - 1 (4 n - 1 for rational parts),
+/// independent of how close the curves run: a cubic and its copy 2e-10 of its size away
+/// take a few band nodes where subdivision took 10^5 parts. [SederbergNishita90 for the
+/// fat-line form of the separation; the bound is ours.]
 template <class T, class CA, class CB>
 BandResult band(const CA& a, T alo, T ahi, const CB& b, T blo, T bhi, Context<T>& ctx) {
   if (!ctx.a || !ctx.b) return BandResult::no;
