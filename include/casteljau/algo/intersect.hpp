@@ -322,9 +322,11 @@ T max_abs(const std::vector<T>& c) {
 /// the curves advance by at least cos(2 band_angle) L = 0.98 L along any tangent of theirs.
 inline constexpr double band_angle = 0.1;
 /// Highest degree a band takes (its separation polynomial has degree 2 n - 1, about 4 n
-/// for rational pieces): above it, plain subdivision. Degree-30 curves turned by 1e-9
-/// take 9 ms with bands, 6.6 s without.
-inline constexpr int band_max_degree = 64;
+/// for rational pieces): above it, plain subdivision. Above the command line's limit
+/// (500): bands cost O(n^2) per node, and near-coincident curves of degree 30 / 80 turned
+/// by 1e-9 take 9 / 88 ms with them, 6.6 / 33 s without; random pairs of degree 200 to
+/// 500 cost the same either way (bands seldom apply to them).
+inline constexpr int band_max_degree = 512;
 
 /// Bounds of a part h whose tangents lie within band_angle of e: a bound of its curvature
 /// (|c''| / |c'|^2, from the convex hulls of Q, Q', W and W'), and min e . Q, max |Q|.
