@@ -882,7 +882,9 @@ inline constexpr std::size_t lazy_nodes = 2000;
 
 /// The common points of two arcs (subdivision, then refinement of each seed) appended to
 /// hits. Returns false when the arcs may overlap: the node limit was reached (the seeds
-/// are then incomplete) or a point has parallel tangents (every point of an overlap does).
+/// are then incomplete), a point has parallel tangents (every point of an overlap does)
+/// or a band lies within tol all along (with ctx.stop_on_near the pass stops there, and
+/// its points are incomplete too).
 template <class T>
 bool intersect_arcs(const Prepared<T>& A, std::size_t ia, const Prepared<T>& B, std::size_t ib, Context<T>& ctx,
                     std::size_t node_limit, std::vector<Hit<T>>& hits) {
