@@ -297,7 +297,8 @@ TEST(Intersect, RandomCopiesTurnedByTinyAnglesProperty) {
     const PC pa(std::vector<BezierPiece<double, 2>>{c}), pb(std::vector<BezierPiece<double, 2>>{b});
     const auto r = detail::isect::solve(pa, &pb);
     EXPECT_TRUE(r.overlaps.empty()) << k;
-    const double size = std::max(norm(c.control_bounds().hi - c.control_bounds().lo), norm(b.control_bounds().hi - b.control_bounds().lo));
+    const auto bc = c.control_bounds(), bb = b.control_bounds();
+    const double size = std::max(norm(bc.hi - bc.lo), norm(bb.hi - bb.lo));
     const double accuracy = 1e3 * std::numeric_limits<double>::epsilon() / a;
     int at_t0 = 0;
     for (const auto& h : r.points) {
