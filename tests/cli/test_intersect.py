@@ -2,8 +2,9 @@
 """Black-box tests of `intersect`: closed forms (lines, the 9 crossings of y = T3(x) and
 x = T3(y), a loop cubic's double point, a parabola and a circle touching lines), overlaps
 (a cubic and its own halves, reversed, collinear segments, a curve running over itself),
-mpmath as the oracle for the parameters of random crossings (findroot at 50 digits), and a
-seeded random property: every reported point lies on both curves, and dense polylines
+mpmath as the oracle for the parameters of random crossings (findroot at 50 digits),
+near-coincident curves (copies turned by 1e-9, circles with centres 1e-8 apart, copies a few
+near-miss distances apart), and a seeded random property: every reported point lies on both curves, and dense polylines
 find no crossing that the program missed.
 
 Usage: test_intersect.py PATH_TO_CASTELJAU [unittest options]
@@ -410,6 +411,100 @@ class HardInputTest(CliTest):
         for h in r["intersections"]:
             self.assertLess(abs(h["point"][1] - 0.5), 1e-12, h)
             self.assertLess(dist(de_casteljau(C, h["t"][0]), h["point"]), 1e-12, h)
+
+
+
+def nurbs_circle(cx, cy):
+    """The unit circle about (cx, cy) as a NURBS of four rational quadratic quarters
+    (weights sqrt(2)/2 at the corners) on [0, 4] [PT97, 7.5]."""
+    w = math.sqrt(2) / 2
+    P = [[1, 0], [1, 1], [0, 1], [-1, 1], [-1, 0], [-1, -1], [0, -1], [1, -1], [1, 0]]
+    return {"type": "nurbs", "degree": 2, "knots": [0, 0, 0, 1, 1, 2, 2, 3, 3, 4, 4, 4],
+            "points": [[x + cx, y + cy] for x, y in P], "weights": [1, w, 1, w, 1, w, 1, w, 1]}
+
+
+def mp_nurbs_circle(c, u):
+    """That curve at u in mpmath: quarter i = floor(u) is the rational quadratic on control
+    points 2i .. 2i + 2 at t = u - i."""
+    i = min(int(u), 3)
+    t = mpmath.mpf(u) - i
+    P, w = c["points"][2 * i:2 * i + 3], c["weights"][2 * i:2 * i + 3]
+    b = [(1 - t) ** 2, 2 * t * (1 - t), t ** 2]
+    den = sum(b[k] * w[k] for k in range(3))
+    return [sum(b[k] * w[k] * mpmath.mpf(P[k][j]) for k in range(3)) / den for j in range(2)]
+
+
+class NearCoincidentTest(CliTest):
+    """Curves within a few near-miss distances (1e-10 of the size) along long stretches:
+    decided on the separation polynomial of near-parallel parts (algo/intersect.hpp, band),
+    checked by mpmath and closed forms."""
+
+    on_both = HardInputTest.on_both
+
+    def test_copy_turned_by_1e9(self):
+        # A cubic and its copy turned by 1e-9 about c(t0) cross there once, at an angle of
+        # 1e-9 (below the 1e-6 of `tangent`): parameters to about eps / 1e-9 (2e-7) of the
+        # mpmath crossing of the rounded control points, and of t0 itself.
+        P = [[0, 0], [1, 2], [3, -1], [4, 1]]
+        for t0 in (0.0, 0.3, 0.5, 1.0):
+            o = [float(x) for x in mp_bezier(P, mpmath.mpf(t0))]
+            a = 1e-9
+            Q = [[o[0] + math.cos(a) * (x - o[0]) - math.sin(a) * (y - o[1]),
+                  o[1] + math.sin(a) * (x - o[0]) + math.cos(a) * (y - o[1])] for x, y in P]
+            r = self.ok("intersect", {"curves": [bezier(P), bezier(Q)]})
+            self.assertEqual(r["overlaps"], [], t0)
+            self.assertEqual(len(r["intersections"]), 1, (t0, r))
+            x = r["intersections"][0]
+            self.assertEqual(x["kind"], "tangent")
+            self.assert_close(x["t"], [t0, t0], 1e-6)
+            self.on_both(P, Q, r, 5)
+            if 0 < t0 < 1:
+                s, t = mp_refine(P, Q, t0, t0)
+                self.assert_close(x["t"], [s, t], 1e-6)
+
+    def test_circles_with_close_centres(self):
+        # Unit circles with centres d apart cross at c / 2 +- n sqrt(1 - d^2 / 4) (n normal
+        # to the offset c) at an angle of d: two points, `tangent` below 1e-6, never an
+        # overlap, whether the crossings fall on joints of the quarters (offset along x: at
+        # (d/2, +-1)) or inside them (diagonal offset). Points on both circles to 1e-12 of
+        # the size (mpmath), at the closed form to 4 eps / d (the conditioning of a crossing
+        # at angle d).
+        for d in (3e-10, 1e-8, 1e-7, 1e-5):
+            for diagonal in (False, True):
+                u = [math.sqrt(0.5), math.sqrt(0.5)] if diagonal else [1.0, 0.0]
+                c = [d * u[0], d * u[1]]
+                A, B = nurbs_circle(0, 0), nurbs_circle(*c)
+                r = self.ok("intersect", {"curves": [A, B]})
+                self.assertEqual(r["overlaps"], [], (d, diagonal))
+                self.assertEqual(len(r["intersections"]), 2, (d, diagonal, r))
+                h = math.sqrt(1 - d * d / 4)
+                expected = [[c[0] / 2 - u[1] * h, c[1] / 2 + u[0] * h], [c[0] / 2 + u[1] * h, c[1] / 2 - u[0] * h]]
+                found = sorted(range(2), key=lambda k: dist(r["intersections"][k]["point"], expected[0]))
+                for k, e in zip(found, expected):
+                    x = r["intersections"][k]
+                    self.assertLess(dist(x["point"], e), 4 * 2.2e-16 / d, (d, diagonal, x, e))
+                    self.assertEqual(x["kind"], "tangent" if d < 1e-6 else "crossing", (d, diagonal))
+                    with mpmath.workdps(30):
+                        pa, pb = mp_nurbs_circle(A, x["t"][0]), mp_nurbs_circle(B, x["t"][1])
+                        self.assertLess(float(mpmath.sqrt(sum((p - q) ** 2 for p, q in zip(pa, pb)))), 1e-12 * 2.83, x)
+                        self.assertLess(float(mpmath.sqrt(sum((p - q) ** 2 for p, q in zip(pa, x["point"])))), 1e-12 * 2.83, x)
+
+    def test_copies_one_to_three_near_miss_distances_apart(self):
+        # Translated along the normal of the chord by k 1e-10 of the size (5): the curves are
+        # k (0.65 .. 1) 1e-10 of the size apart (the cosine of the tangent's angle to the
+        # chord). At k = 2, 3 farther than the near-miss distance everywhere: nothing. At
+        # k = 0.5 within it everywhere: one overlap.
+        P = [[0, 0], [1, 2], [3, -1], [4, 1]]
+        n = [-1 / math.sqrt(17), 4 / math.sqrt(17)]
+        for k in (2, 3, 0.5):
+            Q = [[x + k * 5e-10 * n[0], y + k * 5e-10 * n[1]] for x, y in P]
+            r = self.ok("intersect", {"curves": [bezier(P), bezier(Q)]})
+            self.assertEqual(r["intersections"], [], k)
+            if k > 1:
+                self.assertEqual(r["overlaps"], [], k)
+            else:
+                self.assertEqual(len(r["overlaps"]), 1, r)
+                self.assert_close(r["overlaps"][0]["a"], [0, 1], 1e-12)
 
 
 class BadInputTest(CliTest):

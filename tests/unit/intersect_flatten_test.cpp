@@ -3,7 +3,9 @@
 // of intersect are in tests/cli/test_intersect.py; these check the C++ entry points, the
 // degenerate fixtures and the curve types the CLI tests do not reach the same way.
 #include <cmath>
+#include <limits>
 #include <numbers>
+#include <random>
 #include <vector>
 
 #include "casteljau/algo/intersect.hpp"
@@ -233,6 +235,132 @@ TEST(Intersect, NearCoincidentCurves) {
   EXPECT_EQ(ov.overlaps[0].a, (Interval<double>{0, 1}));
   EXPECT_EQ(ov.overlaps[0].b_start, 0.0);
   EXPECT_EQ(ov.overlaps[0].b_end, 1.0);
+}
+
+TEST(Intersect, CopiesTurnedByTinyAnglesCrossOnceAtTheCentre) {
+  // A cubic and its copy turned by a about c(t0) cross there only, at the angle a: one
+  // point, tangent (a < 1e-6), at t0 to the conditioning of a crossing at angle a (a few
+  // eps / a in the parameters; the copy's rounded control points move the exact crossing
+  // by about that much). The general engine decides these on bands (no subdivision down
+  // to the near-miss distance). Before bands: t = 0.607 about c(0.5) at 1e-9, three
+  // points at 1e-8 on the joint and in the loop.
+  using PC = Pieces<double, 2>;
+  const B2 c{{0, 0}, {1, 2}, {3, -1}, {4, 1}};
+  for (const double a : {1e-7, 1e-8, 1e-9}) {
+    for (const double t0 : {0.0, 0.25, 0.5, 0.75, 1.0}) {
+      const B2 b = turned(c, c(t0), a);
+      const PC pa(std::vector<BezierPiece<double, 2>>{c}), pb(std::vector<BezierPiece<double, 2>>{b});
+      const auto r = detail::isect::solve(pa, &pb);
+      ASSERT_EQ(r.points.size(), 1u) << a << " " << t0;
+      EXPECT_TRUE(r.overlaps.empty());
+      EXPECT_EQ(r.points[0].kind, IntersectionKind::tangent);
+      const double accuracy = 1e3 * std::numeric_limits<double>::epsilon() / a;
+      EXPECT_NEAR(r.points[0].ta, t0, accuracy) << a;
+      EXPECT_NEAR(r.points[0].tb, t0, accuracy) << a;
+      EXPECT_LE(distance(c(r.points[0].ta), b(r.points[0].tb)), 1e-14);
+    }
+    // The same crossing on the joint of two pieces (c's halves, on [0, 2]), and as the
+    // self-intersection of the loop c, then the copy turned about c(0.5) run backwards.
+    const auto h = c.split(0.5);
+    const PC halves(std::vector<BezierPiece<double, 2>>{h.left, h.right});
+    const PC turned_copy(std::vector<BezierPiece<double, 2>>{turned(c, c(0.5), a)});
+    const auto joint = detail::isect::solve(halves, &turned_copy);
+    ASSERT_EQ(joint.points.size(), 1u) << a;
+    EXPECT_TRUE(joint.overlaps.empty());
+    EXPECT_NEAR(joint.points[0].ta, 1, 2e3 * std::numeric_limits<double>::epsilon() / a);
+    EXPECT_NEAR(joint.points[0].tb, 0.5, 1e3 * std::numeric_limits<double>::epsilon() / a);
+    const PC loop(std::vector<BezierPiece<double, 2>>{c, turned(c, c(0.5), a).reverse()});
+    const auto self = detail::isect::solve(loop, static_cast<const PC*>(nullptr));
+    ASSERT_EQ(self.points.size(), 1u) << a;
+    EXPECT_TRUE(self.overlaps.empty());
+    EXPECT_NEAR(self.points[0].ta, 0.5, 1e3 * std::numeric_limits<double>::epsilon() / a);
+    EXPECT_NEAR(self.points[0].tb, 1.5, 1e3 * std::numeric_limits<double>::epsilon() / a);
+  }
+}
+
+TEST(Intersect, RandomCopiesTurnedByTinyAnglesProperty) {
+  // Seeded property: a random cubic (points in the unit square) and its copy turned by a
+  // in [1e-9, 1e-7] about c(t0) meet at (t0, t0): exactly one reported point there (to
+  // 1e3 eps / a, the conditioning of a crossing at angle a), tangent; every reported point
+  // (loops of the cubic may add crossings elsewhere) within the near-miss distance on
+  // both curves. The curves stay within it of each other over at most 1e-10 / a <= 0.1 of
+  // the size around t0: no overlap.
+  using PC = Pieces<double, 2>;
+  std::mt19937_64 rng(8);
+  std::uniform_real_distribution<double> u(0, 1);
+  for (int k = 0; k < 60; ++k) {
+    std::vector<P2> p;
+    for (int i = 0; i < 4; ++i) p.push_back(P2{u(rng), u(rng)});
+    const B2 c(p);
+    const double t0 = u(rng), a = std::pow(10.0, -9 + 2 * u(rng));
+    const B2 b = turned(c, c(t0), a);
+    const PC pa(std::vector<BezierPiece<double, 2>>{c}), pb(std::vector<BezierPiece<double, 2>>{b});
+    const auto r = detail::isect::solve(pa, &pb);
+    EXPECT_TRUE(r.overlaps.empty()) << k;
+    const auto bc = c.control_bounds(), bb = b.control_bounds();
+    const double size = std::max(norm(bc.hi - bc.lo), norm(bb.hi - bb.lo));
+    const double accuracy = 1e3 * std::numeric_limits<double>::epsilon() / a;
+    int at_t0 = 0;
+    for (const auto& h : r.points) {
+      EXPECT_LE(distance(c(h.ta), b(h.tb)), 1e-10 * size) << k;
+      if (std::abs(h.ta - t0) <= accuracy && std::abs(h.tb - t0) <= accuracy) {
+        ++at_t0;
+        EXPECT_EQ(h.kind, IntersectionKind::tangent) << k;
+      }
+    }
+    EXPECT_EQ(at_t0, 1) << k << " t0 " << t0 << " a " << a;
+  }
+}
+
+/// The unit circle about (cx, cy) as circle() builds it.
+Nurbs<double, 2> circle_at(double cx, double cy) {
+  const auto c = circle();
+  std::vector<P2> q;
+  for (const auto& p : c.points()) q.push_back(P2{p[0] + cx, p[1] + cy});
+  return Nurbs<double, 2>(2, c.knots(), q, c.weights());
+}
+
+TEST(Intersect, CirclesWithCloseCentresCrossTwice) {
+  // Unit circles with centres d apart (size 2 sqrt 2, near-miss distance 2.8e-10) cross at
+  // c / 2 +- n sqrt(1 - d^2 / 4) at an angle d: two points, never an overlap, whether the
+  // crossings fall on the joints of the quarters (offset along x) or inside them; tangent
+  // below an angle of 1e-6. Positions to 4 eps / d, the conditioning of the crossing.
+  for (const double d : {3e-10, 1e-9, 1e-8, 1e-7, 1e-5, 1e-4}) {
+    for (const bool diagonal : {false, true}) {
+      const P2 u = diagonal ? P2{std::sqrt(0.5), std::sqrt(0.5)} : P2{1, 0};
+      const P2 c{d * u[0], d * u[1]};
+      const auto r = intersect(circle(), circle_at(c[0], c[1]));
+      EXPECT_TRUE(r.overlaps.empty()) << d << " " << diagonal;
+      ASSERT_EQ(r.points.size(), 2u) << d << " " << diagonal;
+      const double h = std::sqrt(1 - d * d / 4);
+      const P2 e0{c[0] / 2 - u[1] * h, c[1] / 2 + u[0] * h}, e1{c[0] / 2 + u[1] * h, c[1] / 2 - u[0] * h};
+      const double accuracy = 4 * std::numeric_limits<double>::epsilon() / d;
+      const auto& p = r.points;
+      const bool first_is_e0 = distance(p[0].point, e0) < distance(p[1].point, e0);
+      EXPECT_LE(distance(p[first_is_e0 ? 0 : 1].point, e0), accuracy) << d << " " << diagonal;
+      EXPECT_LE(distance(p[first_is_e0 ? 1 : 0].point, e1), accuracy) << d << " " << diagonal;
+      for (const auto& x : p) EXPECT_EQ(x.kind, d < 1e-6 ? IntersectionKind::tangent : IntersectionKind::crossing) << d;
+    }
+  }
+}
+
+TEST(Intersect, CopiesApartByOneToThreeNearMissDistances) {
+  // Translated by k 1e-10 of the size (5) along the chord's normal: apart by k (0.65 .. 1)
+  // 1e-10 of the size (the cosine of the tangent's angle to the chord, 0.65 at the ends).
+  // k = 2, 3: farther than the near-miss distance everywhere, nothing; k = 0.5: within it
+  // everywhere, one overlap.
+  const B2 c{{0, 0}, {1, 2}, {3, -1}, {4, 1}};
+  const P2 n{-1 / std::sqrt(17.0), 4 / std::sqrt(17.0)};
+  for (const double k : {2.0, 3.0, 0.5}) {
+    std::vector<P2> q;
+    for (const auto& p : c.points()) q.push_back(P2{p[0] + k * 5e-10 * n[0], p[1] + k * 5e-10 * n[1]});
+    const auto r = intersect(c, B2(q));
+    EXPECT_TRUE(r.points.empty()) << k;
+    ASSERT_EQ(r.overlaps.size(), k < 1 ? 1u : 0u) << k;
+    if (k < 1) {
+      EXPECT_EQ(r.overlaps[0].a, (Interval<double>{0, 1}));
+    }
+  }
 }
 
 TEST(Intersect, ReparametrisedAndSubIntervalOverlaps) {

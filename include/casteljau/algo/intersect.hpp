@@ -3,6 +3,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -16,6 +17,7 @@
 
 #include "casteljau/algo/flatten.hpp"
 #include "casteljau/algo/intersect_low_degree.hpp"
+#include "casteljau/basis/bernstein_poly.hpp"
 #include "casteljau/core/segment.hpp"
 #include "casteljau/basis/roots.hpp"
 #include "casteljau/curves/path.hpp"
@@ -164,6 +166,15 @@ SegmentClosest<T> chord_closest(const Point<T, 2>& p0, const Point<T, 2>& p1, co
   return {u, v, norm((p0 + u * (p1 - p0)) - (q0 + v * (q1 - q0)))};
 }
 
+/// A start for the refinement (piece parameters s of a, t of b). `edge` marks one placed
+/// at an arc end by a band (see band()): it stands for its near region only when the
+/// region has no other point (solve() decides).
+template <class T>
+struct Seed {
+  T s, t;
+  bool edge = false;
+};
+
 /// Tolerances of one intersection problem, in unit coordinates.
 template <class T>
 struct Context {
@@ -173,7 +184,14 @@ struct Context {
   std::size_t nodes = 0;
   std::size_t node_limit = 0;
   bool exhausted = false;  // node_limit reached: the seeds are incomplete
-  std::vector<std::pair<T, T>> seeds;
+  std::vector<Seed<T>> seeds;
+  // The pieces and arcs being intersected (piece parameters): band() extends parts along them.
+  const Piece<T>* a = nullptr;
+  const Piece<T>* b = nullptr;
+  const Arc<T>* ra = nullptr;
+  const Arc<T>* rb = nullptr;
+  bool near = false;  // a band lies within tol of the other curve all along: test for an overlap
+  bool stop_on_near = false;  // stop the subdivision once near (the overlap test comes first)
 };
 
 /// The tangent cone of a Bézier or rational Bézier part: the directions of its control
@@ -250,6 +268,299 @@ bool fat_line_apart(const CA& a, const CB& b, typename CA::Scalar slack) {
   return true;
 }
 
+/// Bernstein coefficients on [0, 1] of a part c(u) = (X(u), Y(u)) / W(u): W = {1} for a
+/// polynomial part, the weights scaled to at most 1 for a rational one.
+template <class T>
+struct Homogeneous {
+  std::vector<T> x, y, w;
+};
+template <class T>
+Homogeneous<T> homogeneous(const Bezier<T, 2>& c) {
+  Homogeneous<T> h;
+  for (const auto& p : c.points()) {
+    h.x.push_back(p[0]);
+    h.y.push_back(p[1]);
+  }
+  h.w = {T(1)};
+  return h;
+}
+template <class T>
+Homogeneous<T> homogeneous(const RationalBezier<T, 2>& c) {
+  Homogeneous<T> h;
+  const auto& P = c.points();
+  const auto& w = c.weights();
+  const T wmax = *std::max_element(w.begin(), w.end());
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    const T wi = w[i] / wmax;
+    h.x.push_back(wi * P[i][0]);
+    h.y.push_back(wi * P[i][1]);
+    h.w.push_back(wi);
+  }
+  return h;
+}
+
+/// The numerator Q = X' W - X W' of the derivative c' = Q / W^2 (X' for a polynomial).
+template <class T>
+std::array<std::vector<T>, 2> hodograph_numerator(const Homogeneous<T>& h) {
+  if (h.w.size() == 1) return {bernstein_derivative_coefficients<T>(h.x), bernstein_derivative_coefficients<T>(h.y)};
+  const std::vector<T> dw = bernstein_derivative_coefficients<T>(h.w);
+  auto one = [&](const std::vector<T>& x) {
+    return bernstein_difference<T>(bernstein_product<T>(bernstein_derivative_coefficients<T>(x), h.w), bernstein_product<T>(x, dw));
+  };
+  return {one(h.x), one(h.y)};
+}
+
+template <class T>
+T max_abs(const std::vector<T>& c) {
+  T m = 0;
+  for (T x : c) m = std::max(m, std::abs(x));
+  return m;
+}
+
+/// Largest angle (radians) between a band's direction e and a tangent of either part.
+/// Within it, e . c(u) is monotone along both parts, and along a stretch of arc length L
+/// the curves advance by at least cos(2 band_angle) L = 0.98 L along any tangent of theirs.
+inline constexpr double band_angle = 0.1;
+/// Highest degree a band takes (its separation polynomial has degree 2 n - 1, about 4 n
+/// for rational pieces): above it, plain subdivision. Above the command line's limit
+/// (500): bands cost O(n^2) per node, and near-coincident curves of degree 30 / 80 turned
+/// by 1e-9 take 9 / 88 ms with them, 6.6 / 33 s without; random pairs of degree 200 to
+/// 500 cost the same either way (bands seldom apply to them).
+inline constexpr int band_max_degree = 512;
+
+/// Bounds of a part h whose tangents lie within band_angle of e: a bound of its curvature
+/// (|c''| / |c'|^2, from the convex hulls of Q, Q', W and W'), and min e . Q, max |Q|.
+/// Nothing when a tangent may leave the cone.
+template <class T>
+struct PartBounds {
+  T curvature, q_along, q_max;
+};
+template <class T>
+std::optional<PartBounds<T>> part_bounds(const Homogeneous<T>& h, const Vector<T, 2>& e) {
+  const auto q = hodograph_numerator(h);
+  const T slope = std::tan(T(band_angle));
+  T q_along = std::numeric_limits<T>::infinity(), q_max = 0;
+  for (std::size_t i = 0; i < q[0].size(); ++i) {
+    const Vector<T, 2> v{q[0][i], q[1][i]};
+    const T along = dot(e, v);
+    if (!(along > 0) || !(std::abs(cross(e, v)) <= slope * along)) return std::nullopt;
+    q_along = std::min(q_along, along);
+    q_max = std::max(q_max, norm(v));
+  }
+  T q2_max = 0;
+  if (q[0].size() > 1) {
+    const auto dx = bernstein_derivative_coefficients<T>(q[0]), dy = bernstein_derivative_coefficients<T>(q[1]);
+    for (std::size_t i = 0; i < dx.size(); ++i) q2_max = std::max(q2_max, norm(Vector<T, 2>{dx[i], dy[i]}));
+  }
+  const T w_min = *std::min_element(h.w.begin(), h.w.end()), w_max = *std::max_element(h.w.begin(), h.w.end());
+  const T w1_max = h.w.size() > 1 ? max_abs(bernstein_derivative_coefficients<T>(h.w)) : T(0);
+  // c' = Q / W^2 and c'' = (Q' W - 2 Q W') / W^3.
+  const T speed = q_along / (w_max * w_max), accel = (q2_max * w_max + 2 * q_max * w1_max) / (w_min * w_min * w_min);
+  if (!(speed > 0) || !(w_min > 0)) return std::nullopt;
+  return PartBounds<T>{accel / (speed * speed), q_along, q_max};
+}
+
+/// The parameter in [lo, hi] of piece c where e . c = X, when e . c is monotone there
+/// (either way): Newton's method kept inside the bracket (bisection when it leaves it);
+/// the nearer end when X is outside the range.
+template <class T>
+T solve_projection(const Piece<T>& c, const Vector<T, 2>& e, T X, T lo, T hi) {
+  auto f = [&](T u) { return dot(e, at(c, u).to_vector()) - X; };
+  T flo = f(lo), fhi = f(hi);
+  if (flo == 0) return lo;
+  if (fhi == 0) return hi;
+  if ((flo > 0) == (fhi > 0)) return std::abs(flo) <= std::abs(fhi) ? lo : hi;
+  T u = lo - flo * (hi - lo) / (fhi - flo);  // the secant's first guess
+  for (int it = 0; it < 200 && hi - lo > 4 * std::numeric_limits<T>::epsilon() * std::max(T(1), std::abs(hi)); ++it) {
+    const T m = u > lo && u < hi ? u : lo + (hi - lo) / 2;
+    const T fm = f(m);
+    if (fm == 0) return m;
+    const T slope = dot(e, derivative(c, m));
+    u = slope != 0 ? m - fm / slope : m;
+    if (std::abs(u - m) <= 2 * std::numeric_limits<T>::epsilon() * std::max(T(1), std::abs(m))) return m;
+    if ((fm > 0) == (flo > 0)) {
+      lo = m;
+      flo = fm;
+    } else {
+      hi = m;
+      fhi = fm;
+    }
+  }
+  return std::abs(flo) <= std::abs(fhi) ? lo : hi;
+}
+
+/// The part of piece c on [lo, hi] as a piece of its own on [0, 1], reversed if asked.
+template <class T>
+Piece<T> piece_part(const Piece<T>& c, T lo, T hi, bool reversed) {
+  return std::visit(
+      [&](const auto& x) -> Piece<T> {
+        auto p = part(x, lo, hi);
+        if (reversed) return p.reverse();
+        return p;
+      },
+      c);
+}
+
+/// What band() made of a pair of parts.
+enum class BandResult {
+  done,     ///< the pair is decided (seeds emitted, or none)
+  no,       ///< not a band here; smaller parts may be
+  too_far,  ///< the curves are too far apart for the bound (E > 0.05 tol): plain subdivision below
+};
+
+/// Near-coincident parts a on [alo, ahi] and b on [blo, bhi] (piece parameters) of the
+/// arcs in ctx, decided at once (done) instead of subdivided down to the near-miss
+/// distance; otherwise plain subdivision goes on (trying bands again below unless the
+/// curves are too far apart for the bound: their matched difference D hardly shrinks
+/// with the parts, and a failed attempt costs about as much as 20 subdivision steps).
+///
+/// Applies when every tangent of both parts lies within band_angle of one direction e (b
+/// possibly running the other way) and the curves are close: both parts are extended
+/// along their arcs to a common range [X0, X1] of x = e . p (cores A(u), B(u), u in [0, 1],
+/// matched at the ends), and the separation of A(u) from the curve b is the signed
+/// distance beta(u) of A(u) from the tangent of b at B(u), up to E = 4.5 K |D|^2 (K a
+/// curvature bound of b there, D = A - B: the foot of A(u) on b lies within 3 |D| of B(u)
+/// along b, where b stays within K (3 |D|)^2 / 2 of its tangent; farther points advance
+/// by more than 0.98 of their arc length). With A = (X, Y) / W, B' = Q / W_B^2:
+///   beta(u) = h(u) / (W_A W_B |Q|)(u),  h = Q x (X_A W_B - X_B W_A),
+/// a polynomial h in Bernstein form. Decisions, all from h:
+///  - sign changes of h (its roots): crossings; local minima of |h| where |beta| may be
+///    within tol: touches (the refinement then finds the closest approach); an arc end
+///    where |beta| may be within 2.5 tol (a part beyond the other arc's end may come
+///    within tol of it only there): an edge seed (the curves may meet at the arc end,
+///    or the near region continue into the next arc: solve() decides which);
+///  - h within tol everywhere: the parts may overlap (ctx.near: the overlap test runs).
+/// Seeds are kept only where both parameters lie in the parts, to the rounding of the
+/// roots (neighbouring pairs of parts see the rest). Requires E <= 0.05 tol (curves within
+/// about 1e-7 of each other) and degrees up to band_max_degree. Cost: a few products and
+/// two root solves of polynomials of degree 2 n - 1 (4 n - 1 for rational parts),
+/// independent of how close the curves run: a cubic and its copy 2e-10 of its size away
+/// take a few band nodes where subdivision took 10^5 parts. [SederbergNishita90 for the
+/// fat-line form of the separation; the bound is ours.]
+template <class T, class CA, class CB>
+BandResult band(const CA& a, T alo, T ahi, const CB& b, T blo, T bhi, Context<T>& ctx) {
+  if (!ctx.a || !ctx.b) return BandResult::no;
+  const int na = static_cast<int>(a.points().size()) - 1, nb = static_cast<int>(b.points().size()) - 1;
+  if (na > band_max_degree || nb > band_max_degree) return BandResult::no;
+  const auto ka = tangent_cone(a), kb = tangent_cone(b);
+  if (!ka || !kb || ka->hi - ka->lo > T(band_angle) || kb->hi - kb->lo > T(band_angle)) return BandResult::no;
+  const T mid = (ka->lo + ka->hi) / 2;
+  const Vector<T, 2> r = ka->ref / norm(ka->ref);
+  const Vector<T, 2> e{std::cos(mid) * r[0] - std::sin(mid) * r[1], std::sin(mid) * r[0] + std::cos(mid) * r[1]};
+  const bool reversed = dot(e, kb->ref) < 0;
+  const Piece<T>& pa = *ctx.a;
+  const Piece<T>& pb = *ctx.b;
+  const Arc<T>& ra = *ctx.ra;
+  const Arc<T>& rb = *ctx.rb;
+  auto xa = [&](T u) { return dot(e, at(pa, u).to_vector()); };
+  auto xb = [&](T v) { return dot(e, at(pb, v).to_vector()); };
+  const T xa0 = xa(alo), xa1 = xa(ahi);
+  // b's parameters at its low and high x end.
+  const T b_low = reversed ? bhi : blo, b_high = reversed ? blo : bhi;
+  const T b_arc_low = reversed ? rb.hi : rb.lo, b_arc_high = reversed ? rb.lo : rb.hi;
+  const T xb0 = xb(b_low), xb1 = xb(b_high);
+  if (!(xa0 < xa1) || !(xb0 < xb1)) return BandResult::no;
+  // The arcs' own x ranges bound the common range below (when x is monotone along them;
+  // when not, the cores' cone test below fails anyway): nothing to extend to when they
+  // barely overlap, as for consecutive arcs of one curve meeting end to end.
+  const T width = std::max(xa1 - xa0, xb1 - xb0);
+  if (!(std::min(xa(ra.hi), xb(b_arc_high)) - std::max(xa(ra.lo), xb(b_arc_low)) > T(1e-10) * width)) return BandResult::no;
+  // Both parts extended along their arcs over the union of their x ranges, then the
+  // common range of the extensions.
+  const T U0 = std::min(xa0, xb0), U1 = std::max(xa1, xb1);
+  const T ea0 = U0 < xa0 ? solve_projection(pa, e, U0, ra.lo, alo) : alo;
+  const T ea1 = U1 > xa1 ? solve_projection(pa, e, U1, ahi, ra.hi) : ahi;
+  const T eb0 = U0 < xb0 ? solve_projection(pb, e, U0, std::min(b_arc_low, b_low), std::max(b_arc_low, b_low)) : b_low;
+  const T eb1 = U1 > xb1 ? solve_projection(pb, e, U1, std::min(b_arc_high, b_high), std::max(b_arc_high, b_high)) : b_high;
+  const T X0 = std::max(xa(ea0), xb(eb0)), X1 = std::min(xa(ea1), xb(eb1));
+  // A common range at the rounding of the parts' extent: parts that only touch end to end
+  // (consecutive arcs of one curve), left to subdivision.
+  if (!(X1 - X0 > T(1e-10) * width)) return BandResult::no;
+  const T ca0 = xa(ea0) >= X0 ? ea0 : solve_projection(pa, e, X0, ea0, ea1);
+  const T ca1 = xa(ea1) <= X1 ? ea1 : solve_projection(pa, e, X1, ea0, ea1);
+  const T cb0 = xb(eb0) >= X0 ? eb0 : solve_projection(pb, e, X0, std::min(eb0, eb1), std::max(eb0, eb1));
+  const T cb1 = xb(eb1) <= X1 ? eb1 : solve_projection(pb, e, X1, std::min(eb0, eb1), std::max(eb0, eb1));
+  if (!(ca0 < ca1) || !(reversed ? cb1 < cb0 : cb0 < cb1)) return BandResult::no;
+  // Cores (B oriented along e) and the span of b the bound must cover (core and part).
+  const Piece<T> A = piece_part(pa, ca0, ca1, false);
+  const Piece<T> B = piece_part(pb, std::min(cb0, cb1), std::max(cb0, cb1), reversed);
+  const T sb0 = std::min({cb0, cb1, blo}), sb1 = std::max({cb0, cb1, bhi});
+  const Homogeneous<T> HA = std::visit([](const auto& x) { return homogeneous(x); }, A);
+  const Homogeneous<T> HB = std::visit([](const auto& x) { return homogeneous(x); }, B);
+  const auto qb = part_bounds(HB, e);
+  if (!qb || !part_bounds(HA, e)) return BandResult::no;
+  const bool span_is_core = sb0 == std::min(cb0, cb1) && sb1 == std::max(cb0, cb1);
+  const auto span_b =
+      span_is_core ? qb : part_bounds(std::visit([](const auto& x) { return homogeneous(x); }, piece_part(pb, sb0, sb1, reversed)), e);
+  if (!span_b) return BandResult::no;
+  // D = R / (W_A W_B), R = X_A W_B - X_B W_A; h = Q x R.
+  const auto rx = bernstein_difference<T>(bernstein_product<T>(HA.x, HB.w), bernstein_product<T>(HB.x, HA.w));
+  const auto ry = bernstein_difference<T>(bernstein_product<T>(HA.y, HB.w), bernstein_product<T>(HB.y, HA.w));
+  const auto q = hodograph_numerator(HB);
+  const auto h = bernstein_difference<T>(bernstein_product<T>(q[0], ry), bernstein_product<T>(q[1], rx));
+  const T wa_min = *std::min_element(HA.w.begin(), HA.w.end()), wa_max = *std::max_element(HA.w.begin(), HA.w.end());
+  const T wb_min = *std::min_element(HB.w.begin(), HB.w.end()), wb_max = *std::max_element(HB.w.begin(), HB.w.end());
+  T d_max = 0;
+  for (std::size_t i = 0; i < rx.size(); ++i) d_max = std::max(d_max, norm(Vector<T, 2>{rx[i], ry[i]}));
+  d_max /= wa_min * wb_min;
+  const T E = T(4.5) * span_b->curvature * d_max * d_max;
+  if (!(E <= T(0.05) * ctx.tol)) return BandResult::too_far;
+  // |beta| >= |h| / den_hi everywhere; |beta| <= |h| / den_lo.
+  const T den_hi = wa_max * wb_max * qb->q_max, den_lo = wa_min * wb_min * qb->q_along;
+  const T near_hi = (ctx.tol + E) * den_hi;
+  const T h_max = max_abs(h);
+  if (std::all_of(h.begin(), h.end(), [&](T c) { return c > T(2.5) * near_hi; }) ||
+      std::all_of(h.begin(), h.end(), [&](T c) { return c < T(-2.5) * near_hi; }))
+    return BandResult::done;  // apart by more than 2 tol all along: nothing (arc ends included)
+  if (h_max <= (ctx.tol - E) * den_lo) ctx.near = true;
+  // Membership of a seed in the parts, with a slack above the roots' accuracy: h is
+  // rounded to about 32 eps max|Q| max|coordinate| (the cores' de Casteljau steps and the
+  // products), so a root moves by that over |h'| (eps over the crossing angle: 1e-8 at an
+  // angle of 1e-8), and neighbouring parts computing it differently must not both drop
+  // it. The duplicates let through merge later (merge_fraction, or as one touch).
+  T coordinate_max = 0;
+  for (const auto* c : {&HA.x, &HA.y, &HB.x, &HB.y}) coordinate_max = std::max(coordinate_max, max_abs(*c));
+  const T h_noise = 32 * std::numeric_limits<T>::epsilon() * coordinate_max * qb->q_max;
+  const auto dh = bernstein_derivative_coefficients<T>(h);
+  auto emit = [&](T u, bool edge) {
+    const T slope = std::abs(bernstein_value<T>(dh, u));
+    const T du = slope > 0 ? std::min(T(1e-2), 2 * h_noise / slope) : T(1e-2);
+    const T slack_a = std::max(T(1e-7), du * (ca1 - ca0)), slack_b = std::max(T(1e-7), du * std::abs(cb1 - cb0));
+    const T s = ca0 + u * (ca1 - ca0), t = cb0 + u * (cb1 - cb0);
+    if (s < alo - slack_a || s > ahi + slack_a || t < blo - slack_b || t > bhi + slack_b) return;
+    ctx.seeds.push_back({std::clamp(s, ra.lo, ra.hi), std::clamp(t, rb.lo, rb.hi), edge});
+  };
+  // Roots of h closer than 1e-6 (of the core) are one crossing blurred by rounding (h
+  // crosses zero at a slope of the crossing angle: at 1e-9 its rounding noise spans about
+  // 1e-8 in u): the middle root of each cluster stands for it.
+  const std::vector<T> roots = bernstein_roots<T>(h);
+  constexpr T cluster = T(1e-6);
+  for (std::size_t i = 0; i < roots.size();) {
+    std::size_t j = i + 1;
+    while (j < roots.size() && roots[j] - roots[j - 1] <= cluster) ++j;
+    emit(roots[i + (j - i - 1) / 2], false);
+    i = j;
+  }
+  auto near_root = [&](T u) {
+    const auto it = std::lower_bound(roots.begin(), roots.end(), u);
+    return (it != roots.end() && *it - u <= cluster) || (it != roots.begin() && u - *(it - 1) <= cluster);
+  };
+  if (h.size() > 2) {
+    const auto d2h = bernstein_derivative_coefficients<T>(dh);
+    for (T u : bernstein_roots<T>(dh)) {
+      const T hu = bernstein_value<T>(h, u);
+      // A local minimum of |h| (h'' of the sign of h) where the curves may be within tol,
+      // deeper than the rounding of h below both ends of the core (a flat h, in a core
+      // shorter than the curves' offset or along an overlap, has minima of noise only).
+      const T depth = std::min(std::abs(h.front()), std::abs(h.back())) - std::abs(hu);
+      if (std::abs(hu) <= near_hi && hu * bernstein_value<T>(d2h, u) >= 0 && !near_root(u) && depth > 4 * h_noise) emit(u, false);
+    }
+  }
+  if ((ca0 == ra.lo || cb0 == b_arc_low) && std::abs(h.front()) <= T(2.5) * near_hi) emit(T(0), true);
+  if ((ca1 == ra.hi || cb1 == b_arc_high) && std::abs(h.back()) <= T(2.5) * near_hi) emit(T(1), true);
+  return BandResult::done;
+}
+
 /// Largest number of subdivision steps one pair of arcs may take; a pair of transversal
 /// arcs takes a few hundred. Hitting it means the curves run within the tolerance of each
 /// other over a long stretch without coinciding: reported, not silently truncated.
@@ -263,8 +574,8 @@ inline constexpr int max_depth = 50;
 /// pair of flat parts whose chords come within 2 flat + slack gives a seed (the chords'
 /// closest points), later refined on the curves themselves.
 template <class T, class CA, class CB>
-void subdivide(const CA& a, T alo, T ahi, int da, const CB& b, T blo, T bhi, int db, Context<T>& ctx) {
-  if (ctx.exhausted) return;
+void subdivide(const CA& a, T alo, T ahi, int da, const CB& b, T blo, T bhi, int db, Context<T>& ctx, bool bands = true) {
+  if (ctx.exhausted || (ctx.near && ctx.stop_on_near)) return;
   if (++ctx.nodes > ctx.node_limit) {
     ctx.exhausted = true;
     return;
@@ -277,7 +588,7 @@ void subdivide(const CA& a, T alo, T ahi, int da, const CB& b, T blo, T bhi, int
     const auto& P = a.points();
     const auto& Q = b.points();
     const auto c = chord_closest(P.front(), P.back(), Q.front(), Q.back());
-    if (c.distance <= 2 * ctx.flat + ctx.slack) ctx.seeds.emplace_back(alo + c.u * (ahi - alo), blo + c.v * (bhi - blo));
+    if (c.distance <= 2 * ctx.flat + ctx.slack) ctx.seeds.push_back({alo + c.u * (ahi - alo), blo + c.v * (bhi - blo)});
     return;
   }
   // Parts whose tangent cones are separated meet at most once: one seed, at the closest
@@ -288,20 +599,27 @@ void subdivide(const CA& a, T alo, T ahi, int da, const CB& b, T blo, T bhi, int
       const auto& P = a.points();
       const auto& Q = b.points();
       const auto c = chord_closest(P.front(), P.back(), Q.front(), Q.back());
-      ctx.seeds.emplace_back(alo + c.u * (ahi - alo), blo + c.v * (bhi - blo));
+      ctx.seeds.push_back({alo + c.u * (ahi - alo), blo + c.v * (bhi - blo)});
       return;
     }
+  }
+  // Near-coincident parts (narrow tangent cones along one direction): decided at once on
+  // the separation polynomial instead of subdivided down to the near-miss distance.
+  if (bands) {
+    const BandResult r = band(a, alo, ahi, b, blo, bhi, ctx);
+    if (r == BandResult::done) return;
+    bands = r != BandResult::too_far;
   }
   if (!fa && (fb || diagonal(ba) >= diagonal(bb))) {
     const auto h = a.split(T(0.5));
     const T m = alo + (ahi - alo) / 2;
-    subdivide(h.left, alo, m, da + 1, b, blo, bhi, db, ctx);
-    subdivide(h.right, m, ahi, da + 1, b, blo, bhi, db, ctx);
+    subdivide(h.left, alo, m, da + 1, b, blo, bhi, db, ctx, bands);
+    subdivide(h.right, m, ahi, da + 1, b, blo, bhi, db, ctx, bands);
   } else {
     const auto h = b.split(T(0.5));
     const T m = blo + (bhi - blo) / 2;
-    subdivide(a, alo, ahi, da, h.left, blo, m, db + 1, ctx);
-    subdivide(a, alo, ahi, da, h.right, m, bhi, db + 1, ctx);
+    subdivide(a, alo, ahi, da, h.left, blo, m, db + 1, ctx, bands);
+    subdivide(a, alo, ahi, da, h.right, m, bhi, db + 1, ctx, bands);
   }
 }
 
@@ -555,6 +873,7 @@ struct Hit {
   T sa, sb;  // piece parameters
   T distance;
   bool touch = false;  // two crossings merged into a touch
+  bool edge = false;   // from an edge seed (see band())
 };
 
 /// Subdivision steps of the first pass over a pair of arcs, before the overlap test: a
@@ -563,7 +882,9 @@ inline constexpr std::size_t lazy_nodes = 2000;
 
 /// The common points of two arcs (subdivision, then refinement of each seed) appended to
 /// hits. Returns false when the arcs may overlap: the node limit was reached (the seeds
-/// are then incomplete) or a point has parallel tangents (every point of an overlap does).
+/// are then incomplete), a point has parallel tangents (every point of an overlap does)
+/// or a band lies within tol all along (with ctx.stop_on_near the pass stops there, and
+/// its points are incomplete too).
 template <class T>
 bool intersect_arcs(const Prepared<T>& A, std::size_t ia, const Prepared<T>& B, std::size_t ib, Context<T>& ctx,
                     std::size_t node_limit, std::vector<Hit<T>>& hits) {
@@ -575,15 +896,20 @@ bool intersect_arcs(const Prepared<T>& A, std::size_t ia, const Prepared<T>& B, 
   ctx.nodes = 0;
   ctx.node_limit = node_limit;
   ctx.exhausted = false;
+  ctx.a = &a;
+  ctx.b = &b;
+  ctx.ra = &ra;
+  ctx.rb = &rb;
+  ctx.near = false;
   std::visit(
       [&](const auto& x, const auto& y) { subdivide(x, ra.lo, ra.hi, 0, y, rb.lo, rb.hi, 0, ctx); }, A.arc_parts[ia],
       B.arc_parts[ib]);
-  if (ctx.exhausted) return false;
+  if (ctx.exhausted || (ctx.near && ctx.stop_on_near)) return false;
   bool clean = true;
   // Refined points so far, by s: seeds from neighbouring parts refine to the same point
   // (thousands of them along near-coincident curves), found again in O(log) each.
   std::multimap<T, T> done;
-  for (const auto& [s0, t0] : ctx.seeds) {
+  for (const auto& [s0, t0, edge] : ctx.seeds) {
     Refined<T> r = refine(a, ra, b, rb, s0, t0);
     if (!(r.distance <= ctx.tol)) continue;
     if (std::abs(cross(direction(a, r.s), direction(b, r.t))) <= T(1e-6)) {
@@ -596,15 +922,72 @@ bool intersect_arcs(const Prepared<T>& A, std::size_t ia, const Prepared<T>& B, 
     if (dup) continue;
     done.emplace(r.s, r.t);
     hits.push_back({A.curve->global_parameter(ra.piece, r.s), B.curve->global_parameter(rb.piece, r.t), ra.piece, rb.piece, r.s,
-                    r.t, r.distance, false});
+                    r.t, r.distance, false, edge});
   }
-  return clean;
+  return clean && !ctx.near;
 }
 
 /// Common points closer than this fraction of their pieces' parameter intervals (in
 /// both parameters) are one point: touches are located to about sqrt(eps) ~ 1e-8, so a
 /// touch found from several seeds or from two arcs meeting at it is reported once.
 inline constexpr double merge_fraction = 1e-6;
+
+/// The unit-frame point of a curve at its parameter g (pieces chosen as evaluation does).
+template <class T>
+Point<T, 2> unit_at(const Pieces<T, 2>& c, const Prepared<T>& P, T g) {
+  const std::size_t p = c.segment_index(g);
+  return at(P.unit[p], c.local_parameter(p, g));
+}
+
+/// The distance from q to curve c near its parameter t (unit frame): Newton's method on
+/// (c(t) - q) . c'(t) from t, over the pieces, within the domain; the least distance seen
+/// (an upper bound of the distance to the curve, exact at a converged foot point).
+template <class T>
+T distance_near(const Pieces<T, 2>& c, const Prepared<T>& P, const Point<T, 2>& q, T t) {
+  const Interval<T> dom = c.domain();
+  T best = std::numeric_limits<T>::infinity();
+  for (int it = 0; it < 12; ++it) {
+    const std::size_t p = c.segment_index(t);
+    const T s = c.local_parameter(p, t), k = c.own_domain(p).length() / c.segment_domain(p).length();
+    const Point<T, 2> x = at(P.unit[p], s);
+    const Vector<T, 2> e = x - q, d1 = k * derivative(P.unit[p], s), d2 = (k * k) * derivative(P.unit[p], s, 2);
+    best = std::min(best, norm(e));
+    const T den = dot(d1, d1) + dot(e, d2);
+    if (!(den > 0)) break;
+    const T t2 = std::clamp(t - dot(e, d1) / den, dom.lo, dom.hi);
+    if (t2 == t) break;
+    t = t2;
+  }
+  return best;
+}
+
+/// Whether curves a and b, common at (ta, tb) (the end of an overlap), are still within
+/// tol of each other beyond it: at a(ta + k da) against b near tb + k db (da, db the
+/// overlap's extent, signed towards the outside; k = 1, or less where a domain ends
+/// sooner). False when a curve ends within a quarter of the overlap's extent or turns
+/// back there.
+template <class T>
+bool near_beyond(const Pieces<T, 2>& ca, const Prepared<T>& A, const Pieces<T, 2>& cb, const Prepared<T>& B, T ta, T tb, T da, T db,
+                 T tol) {
+  const Interval<T> dom_a = ca.domain(), dom_b = cb.domain();
+  auto room = [](const Interval<T>& dom, T t, T d) {
+    if (d == 0) return std::numeric_limits<T>::infinity();
+    return (d > 0 ? dom.hi - t : t - dom.lo) / std::abs(d);
+  };
+  const T k = std::min({T(1), room(dom_a, ta, da), room(dom_b, tb, db)});
+  if (!(k >= T(0.25))) return false;
+  const T ta2 = std::clamp(ta + k * da, dom_a.lo, dom_a.hi), tb2 = std::clamp(tb + k * db, dom_b.lo, dom_b.hi);
+  // A curve that turns back at the end (a fold: a curve running over itself along a line)
+  // does not continue the overlap, whatever its points.
+  auto direction_at = [](const Pieces<T, 2>& c, const Prepared<T>& P, T g) {
+    const std::size_t p = c.segment_index(g);
+    return direction(P.unit[p], c.local_parameter(p, g));
+  };
+  if (dot(direction_at(ca, A, ta - da / 64), direction_at(ca, A, ta + k * da / 64)) < 0 ||
+      dot(direction_at(cb, B, tb - db / 64), direction_at(cb, B, tb + k * db / 64)) < 0)
+    return false;
+  return distance_near(cb, B, unit_at(ca, A, ta2), tb2) <= tol;
+}
 
 template <class T>
 Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
@@ -630,10 +1013,34 @@ Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
   // 1e-10 of the curves' size: the near-miss threshold of the contract. 64 eps of the unit
   // coordinates (|P| < 1) covers rounding when the curves are points or tiny far apart.
   const T tol = std::max(T(1e-10) * std::max(A.size, PB.size), 64 * eps);
-  Context<T> ctx{tol, tol, tol + 16 * eps, 0, 0, false, {}};
+  Context<T> ctx{tol, tol, tol + 16 * eps, 0, 0, false, {}, nullptr, nullptr, nullptr, nullptr, false};
 
   std::vector<Hit<T>> hits;
-  std::vector<CurveOverlap<T>> overlaps;
+  // Overlaps found arc by arc, each with the points its pair of arcs gave (reported if
+  // the overlap turns out to lie inside a crossing or touch region, see below).
+  // When the first pass over a pair of arcs stopped early (see below), the pair itself
+  // (`deferred`), whose points are computed only if the overlap is rejected.
+  struct RawOverlap {
+    CurveOverlap<T> o;
+    std::vector<Hit<T>> found;
+    std::vector<std::pair<std::size_t, std::size_t>> deferred;
+  };
+  std::vector<RawOverlap> overlaps;
+  // All the points of arcs i and j (the engine's full pass).
+  auto arc_points = [&](std::size_t i, std::size_t j) {
+    std::vector<Hit<T>> found;
+    intersect_arcs(A, i, PB, j, ctx, lazy_nodes, found);
+    if (ctx.exhausted) {
+      found.clear();
+      intersect_arcs(A, i, PB, j, ctx, max_nodes, found);
+      if (ctx.exhausted) {
+        throw NumericalError("intersect: more than " + std::to_string(max_nodes) +
+                             " subdivision steps for one pair of arcs: the curves run within 1e-10 of their size of each "
+                             "other without coinciding");
+      }
+    }
+    return found;
+  };
   for (std::size_t i = 0; i < A.arcs.size(); ++i) {
     for (std::size_t j = self ? i + 1 : 0; j < PB.arcs.size(); ++j) {
       const Arc<T>& ra = A.arcs[i];
@@ -641,22 +1048,29 @@ Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
       if (!boxes_meet(A.arc_boxes[i], PB.arc_boxes[j], ctx.slack)) continue;
       // The overlap test (a few root solves) only where the arcs may overlap: a tangent
       // point found, or the subdivision running long.
+      // The first pass stops at the first band along which the arcs stay within tol (an
+      // overlap is then likely; its points are computed only if the overlap test fails or
+      // the overlap is later rejected).
       std::vector<Hit<T>> found;
-      if (!intersect_arcs(A, i, PB, j, ctx, lazy_nodes, found)) {
+      ctx.stop_on_near = true;
+      const bool clean = intersect_arcs(A, i, PB, j, ctx, lazy_nodes, found);
+      ctx.stop_on_near = false;
+      if (!clean) {
+        const bool stopped = ctx.near && !ctx.exhausted;
         if (auto o = arc_overlap(A, ra, PB, rb, tol)) {
-          overlaps.push_back({{ca.global_parameter(ra.piece, o->s0), ca.global_parameter(ra.piece, o->s1)},
-                              cb->global_parameter(rb.piece, o->t0), cb->global_parameter(rb.piece, o->t1)});
+          RawOverlap raw{{{ca.global_parameter(ra.piece, o->s0), ca.global_parameter(ra.piece, o->s1)},
+                          cb->global_parameter(rb.piece, o->t0), cb->global_parameter(rb.piece, o->t1)},
+                         {},
+                         {}};
+          if (stopped) {
+            raw.deferred.emplace_back(i, j);
+          } else {
+            raw.found = std::move(found);
+          }
+          overlaps.push_back(std::move(raw));
           continue;
         }
-        if (ctx.exhausted) {
-          found.clear();
-          intersect_arcs(A, i, PB, j, ctx, max_nodes, found);
-          if (ctx.exhausted) {
-            throw NumericalError("intersect: more than " + std::to_string(max_nodes) +
-                                 " subdivision steps for one pair of arcs: the curves run within 1e-10 of their size of each "
-                                 "other without coinciding");
-          }
-        }
+        if (stopped || ctx.exhausted) found = arc_points(i, j);
       }
       hits.insert(hits.end(), found.begin(), found.end());
     }
@@ -664,27 +1078,45 @@ Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
 
   // Overlaps found arc by arc: join the ones that continue each other.
   const T la = ca.domain().length(), lb = cb->domain().length();
-  std::sort(overlaps.begin(), overlaps.end(), [](const auto& x, const auto& y) { return x.a.lo < y.a.lo; });
-  std::vector<CurveOverlap<T>> joined;
-  for (const auto& o : overlaps) {
-    if (!joined.empty()) {
-      auto& p = joined.back();
-      if (std::abs(o.a.lo - p.a.hi) <= T(1e-9) * la && std::abs(o.b_start - p.b_end) <= T(1e-9) * lb &&
-          ((o.b_end > o.b_start) == (p.b_end > p.b_start))) {
-        p.a.hi = o.a.hi;
-        p.b_end = o.b_end;
+  std::sort(overlaps.begin(), overlaps.end(), [](const auto& x, const auto& y) { return x.o.a.lo < y.o.a.lo; });
+  std::vector<RawOverlap> candidates;
+  for (auto& r : overlaps) {
+    const auto& o = r.o;
+    if (!candidates.empty()) {
+      auto& p = candidates.back();
+      if (std::abs(o.a.lo - p.o.a.hi) <= T(1e-9) * la && std::abs(o.b_start - p.o.b_end) <= T(1e-9) * lb &&
+          ((o.b_end > o.b_start) == (p.o.b_end > p.o.b_start))) {
+        p.o.a.hi = o.a.hi;
+        p.o.b_end = o.b_end;
+        p.found.insert(p.found.end(), r.found.begin(), r.found.end());
+        p.deferred.insert(p.deferred.end(), r.deferred.begin(), r.deferred.end());
         continue;
       }
     }
-    joined.push_back(o);
+    candidates.push_back(std::move(r));
+  }
+  // An overlap is a stretch within the near-miss distance that ends where the curves part
+  // or a curve ends. One that the curves continue beyond, still within the near-miss
+  // distance as far again past one of its ends, is a piece of a longer near region (a
+  // crossing or touch at a tiny angle, seen between joints of pieces or arcs: two circles of
+  // radius 1 with centres d apart meet at an angle d and stay within tol over 2 tol / d
+  // around each crossing): its points are reported instead, as they are off the joints.
+  std::vector<CurveOverlap<T>> joined;
+  for (auto& [o, found, deferred] : candidates) {
+    const bool continues = near_beyond(ca, A, *cb, PB, o.a.lo, o.b_start, -(o.a.hi - o.a.lo), o.b_start - o.b_end, tol) ||
+                           near_beyond(ca, A, *cb, PB, o.a.hi, o.b_end, o.a.hi - o.a.lo, o.b_end - o.b_start, tol);
+    if (continues) {
+      hits.insert(hits.end(), found.begin(), found.end());
+      for (const auto& [i, j] : deferred) {
+        const auto more = arc_points(i, j);
+        hits.insert(hits.end(), more.begin(), more.end());
+      }
+    } else {
+      joined.push_back(o);
+    }
   }
 
   auto piece_length = [](const Pieces<T, 2>& c, std::size_t i) { return c.segment_domain(i).length(); };
-  // The unit-frame point of a curve at its parameter g (pieces chosen as evaluation does).
-  auto unit_at = [](const Pieces<T, 2>& c, const Prepared<T>& P, T g) {
-    const std::size_t p = c.segment_index(g);
-    return at(P.unit[p], c.local_parameter(p, g));
-  };
   if (self) {
     for (auto& h : hits) {
       if (h.ta > h.tb) {
@@ -704,6 +1136,9 @@ Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
   T longest_a = 0;
   for (std::size_t p = 0; p < ca.size(); ++p) longest_a = std::max(longest_a, piece_length(ca, p));
   const T window = T(1e3) * T(merge_fraction) * longest_a;
+  std::vector<Hit<T>> edges;
+  std::vector<std::vector<Hit<T>>> twins;  // per kept point: points merged into it, all common to rounding
+  const T exact = T(1e-3) * tol;
   for (const auto& h : hits) {
     // Inside (or at the end of) an overlap: part of it, not an isolated point.
     bool in_overlap = false;
@@ -730,6 +1165,10 @@ Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
       }
       if (!loop.empty() && diagonal(loop) <= 100 * tol) continue;
     }
+    if (h.edge) {
+      edges.push_back(h);
+      continue;
+    }
     bool merged = false;
     std::size_t first = kept.size();
     while (first > 0 && kept[first - 1].ta >= h.ta - 4 * window) --first;
@@ -738,7 +1177,14 @@ Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
       const T ma = T(merge_fraction) * piece_length(ca, h.pa), mb = T(merge_fraction) * piece_length(*cb, h.pb);
       const T da = std::abs(k.ta - h.ta), db = std::abs(k.tb - h.tb);
       if (da <= ma && db <= mb && distance(at(A.unit[k.pa], k.sa), at(A.unit[h.pa], h.sa)) <= 1e4 * tol) {
-        if (h.distance < k.distance) k = h;
+        // Both common to rounding (a crossing at a tiny angle, seen from neighbouring parts
+        // with roots blurred by eps / angle): the middle one in ta is kept, below.
+        if (h.distance <= exact && k.distance <= exact) {
+          twins[ki].push_back(h);
+        } else if (h.distance < k.distance) {
+          k = h;
+          twins[ki].clear();
+        }
         merged = true;
         break;
       }
@@ -750,12 +1196,60 @@ Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
         if (distance(unit_at(ca, A, mta), unit_at(*cb, PB, mtb)) <= tol) {
           const std::size_t pa = ca.segment_index(mta), pb = cb->segment_index(mtb);
           k = Hit<T>{mta, mtb, pa, pb, ca.local_parameter(pa, mta), cb->local_parameter(pb, mtb), k.distance, true};
+          twins[ki].clear();
           merged = true;
           break;
         }
       }
     }
-    if (!merged) kept.push_back(h);
+    if (!merged) {
+      kept.push_back(h);
+      twins.emplace_back();
+    }
+  }
+  for (std::size_t ki = 0; ki < kept.size(); ++ki) {
+    if (twins[ki].empty()) continue;
+    twins[ki].push_back(kept[ki]);
+    std::sort(twins[ki].begin(), twins[ki].end(), [](const auto& x, const auto& y) { return x.ta < y.ta; });
+    kept[ki] = twins[ki][(twins[ki].size() - 1) / 2];
+  }
+  // Points from edge seeds (arc ends inside a near region, see band()): one stands for its
+  // region only if no other point does, i.e. if the curves part (beyond tol) between it
+  // and each of its neighbours in ta among the points kept so far (the nearest 8 on each
+  // side); the closest of several such points of one region is kept.
+  std::sort(edges.begin(), edges.end(), [](const auto& x, const auto& y) { return x.distance < y.distance; });
+  // On a closed curve the way between two parameters may pass its closing point.
+  const Interval<T> dom_a = ca.domain(), dom_b = cb->domain();
+  const bool closed_a = distance(unit_at(ca, A, dom_a.lo), unit_at(ca, A, dom_a.hi)) <= tol;
+  const bool closed_b = distance(unit_at(*cb, PB, dom_b.lo), unit_at(*cb, PB, dom_b.hi)) <= tol;
+  auto shortest = [](T d, const Interval<T>& dom, bool closed) {
+    const T L = dom.length();
+    return closed && std::abs(d) > L / 2 ? d - std::copysign(L, d) : d;
+  };
+  auto wrap = [](T t, const Interval<T>& dom) {
+    return t < dom.lo ? t + dom.length() : t > dom.hi ? t - dom.length() : t;
+  };
+  auto same_region = [&](const Hit<T>& x, const Hit<T>& y) {
+    const T da = shortest(y.ta - x.ta, dom_a, closed_a), db = shortest(y.tb - x.tb, dom_b, closed_b);
+    for (int j = 0; j <= 16; ++j) {
+      const T f = static_cast<T>(j) / 16;
+      const T ta = wrap(x.ta + f * da, dom_a), tb = wrap(x.tb + f * db, dom_b);
+      if (!(distance_near(*cb, PB, unit_at(ca, A, ta), tb) <= tol)) return false;
+    }
+    return true;
+  };
+  for (const auto& h : edges) {
+    const auto at_h = std::lower_bound(kept.begin(), kept.end(), h.ta, [](const auto& k, T ta) { return k.ta < ta; });
+    const std::size_t mid = static_cast<std::size_t>(at_h - kept.begin());
+    bool represented = false;
+    for (std::size_t k = mid > 8 ? mid - 8 : 0; k < std::min(kept.size(), mid + 8) && !represented; ++k)
+      represented = same_region(kept[k], h);
+    if (closed_a) {  // the neighbours across the closing point
+      for (std::size_t k = 0; k < std::min<std::size_t>(kept.size(), 8) && !represented; ++k) represented = same_region(kept[k], h);
+      for (std::size_t k = kept.size() > 8 ? kept.size() - 8 : 0; k < kept.size() && !represented; ++k)
+        represented = same_region(kept[k], h);
+    }
+    if (!represented) kept.insert(kept.begin() + static_cast<std::ptrdiff_t>(mid), h);
   }
 
   Intersections<T> out;
@@ -883,7 +1377,18 @@ std::optional<Intersections<T>> low_degree_pieces(const Pieces<T, 2>& pa, const 
 /// else recursive halving with control-box rejection down to parts flat within 1e-10 of
 /// the curves' size, then Newton refinement of each candidate on the curves themselves
 /// (Levenberg-Marquardt where the Jacobian is near singular) [SederbergNishita90 for the
-/// subdivision family; Dennis-Schnabel96 for the damped Newton].
+/// subdivision family; Dennis-Schnabel96 for the damped Newton]. Near-coincident parts
+/// (tangents within 0.1 rad of one direction, curves within about 1e-7 of each other)
+/// are decided at once as bands (see band()): crossings at the roots of their separation
+/// polynomial, touches at the minima of its modulus, nothing where it stays beyond the
+/// near-miss distance.
+///
+/// Near regions (stretches where the curves stay within the near-miss distance): one
+/// point per crossing, one touch where they come within it without crossing, a point at
+/// an arc end only when nothing else represents its region. An overlap is reported where
+/// a monotone arc lies within the distance of the other curve all along, unless the
+/// curves still do so as far again past one of its ends (then it is a piece of a
+/// crossing or touch region, seen between joints, and that point is reported).
 ///
 /// Guarantees and accuracy: a point is reported when the curves come within 1e-10 of
 /// their size (the larger control-box diagonal) there, and only then: near-misses
@@ -897,7 +1402,8 @@ std::optional<Intersections<T>> low_degree_pieces(const Pieces<T, 2>& pa, const 
 ///
 /// Scale: computed on copies translated and scaled by a power of two, so huge and tiny
 /// coordinates behave as unit ones. Cost: about a hundred subdivision steps and a few
-/// Newton steps per crossing for cubics; O(arcs_a x arcs_b) pairs. Throws NumericalError
+/// Newton steps per crossing for cubics; a few bands per near region (a cubic and its copy
+/// turned by 1e-9, or moved by 2e-10 of its size: under 1 ms); O(arcs_a x arcs_b) pairs. Throws NumericalError
 /// when a pair of arcs needs more than 2 10^6 subdivision steps (curves within the
 /// tolerance of each other along a stretch without coinciding).
 template <class CA, class CB>
