@@ -627,7 +627,7 @@ struct SmallOptimalPlan {
 /// The near-optimal count of a plane polynomial piece of degree <= 3 (on the unit-scale
 /// copy) and its spans, told before any vertex is placed: F = integral of the density
 /// sqrt(|B' x B''| / |B'|) dt / sqrt(8 tol) (flatten_density), n = ceil(s F) with the
-/// safety factor s = 1 for one parabola and 1.02 for sampled cells (so that about 93%
+/// safety factor s = 1 for one parabola and 1.02 for sampled cells (so that about 95%
 /// of the steps pass their check as placed, with the count still about 1.04x the
 /// near-optimal greedy count on random cubics; see docs/accuracy.md). Two forms:
 /// - the cubic term negligible (|a3| <= tol: quadratics, font outlines' elevated
@@ -806,8 +806,9 @@ template <class T, class At, class D1, class Emit>
 /// the other vertices, so successive vertices overlap in the processor. Each step is
 /// checked exactly against the tolerance: on the parabola in closed form when the piece
 /// is one within 1e-3 tol (parabola_step_within: quadratics, font outlines), else by the
-/// cheap bound of small_chord_check; these accept most, small_optimal_repair handles the rest (about 5% of the steps on random cubics,
-/// half of them passing the exact check as placed; 0.07% on font outlines), so the
+/// cheap bound of small_chord_check; these accept most, small_optimal_repair handles the
+/// rest (about 5% of the steps on W3's random cubics, half of them passing the exact
+/// check as placed; 0.07% on its font outlines), so the
 /// tolerance is guaranteed whatever the count function's accuracy (cusps, inflections,
 /// loops). After a vertex is moved back the rest of the count is spread evenly over the
 /// remaining steps (so one short step does not lengthen the next). Interior vertices to
@@ -1086,7 +1087,7 @@ void flatten(const C& c, typename C::Scalar tolerance, FlattenMethod method, std
 ///     roots of a quadratic; the overshoot beyond the chord's ends bounded likewise, see
 ///     detail::small_chord_check),
 ///     and a failing step's end is moved back until it passes (the last step gains
-///     vertices instead). About 93% of the steps pass as placed on random cubics, 99.9% on
+///     vertices instead). About 95% of the steps pass as placed on random cubics, 99.9% on
 ///     font outlines; no allocation.
 ///   - every other piece (rational, higher degree, 3-D): a greedy walk whose steps start
 ///     from one unit of the cumulative density (trapezoid rule on 8 p samples) and are
