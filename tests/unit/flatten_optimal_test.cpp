@@ -1,0 +1,263 @@
+// The optimal flattening's plane kernel for lines, quadratics and cubics (algo/flatten.hpp,
+// detail::small_optimal: count planned from the density integral, vertices placed
+// independently, every step checked): the tolerance against an independent dense sampling
+// on cusps, inflections, loops, degenerate and extreme-scale curves; the parabola integral
+// against a numerical integral computed here; counts against a greedy near-optimal count
+// written here.
+#include <cmath>
+#include <utility>
+#include <vector>
+
+#include "test_support.hpp"
+
+namespace {
+
+using namespace casteljau;
+using P2 = Point<double, 2>;
+using B2 = Bezier<double, 2>;
+
+/// Largest distance from the curve, sampled at 4000 + 16 n uniform parameters (n segments),
+/// to the polyline (test::polyline_distance: every segment tried).
+double sampled_deviation(const B2& c, const std::vector<P2>& poly) {
+  const int S = 4000 + 16 * static_cast<int>(poly.size());
+  double worst = 0;
+  for (int i = 0; i <= S; ++i) worst = std::max(worst, test::polyline_distance(c(static_cast<double>(i) / S), poly));
+  return worst;
+}
+
+/// The optimal polyline of c: its ends are the curve's, no vertex is NaN, it is within tol
+/// of the densely sampled curve (1e-9 relative slack for the sampling's own rounding).
+std::vector<P2> checked_optimal(const B2& c, double tol, const char* name) {
+  const auto poly = flatten(c, tol, FlattenMethod::optimal);
+  EXPECT_GE(poly.size(), 2u) << name;
+  EXPECT_EQ(poly.front(), c.points().front()) << name;
+  EXPECT_EQ(poly.back(), c.points().back()) << name;
+  for (const auto& v : poly) EXPECT_TRUE(std::isfinite(v[0]) && std::isfinite(v[1])) << name;
+  EXPECT_LE(sampled_deviation(c, poly), tol * (1 + 1e-9)) << name << " tol " << tol;
+  return poly;
+}
+
+/// Largest distance from c on [t0, t1] to the line through c(t0), c(t1), by 400 samples
+/// (for the greedy count; a line, never more than the segment distance).
+double line_deviation(const B2& c, double t0, double t1) {
+  const P2 a = c(t0), b = c(t1);
+  const auto u = b - a;
+  const double L = norm(u);
+  if (!(L > 0)) return 0;
+  double worst = 0;
+  for (int i = 1; i < 400; ++i) worst = std::max(worst, std::abs(cross(u, c(t0 + (t1 - t0) * i / 400.0) - a)) / L);
+  return worst;
+}
+
+/// Greedy count: from t, the largest step (bisection to 1e-12) whose arc is within tol of
+/// its chord's line.
+long greedy_count(const B2& c, double tol) {
+  double t = 0;
+  long n = 0;
+  while (t < 1) {
+    ++n;
+    if (line_deviation(c, t, 1) <= tol) break;
+    double lo = t, hi = 1;
+    while (hi - lo > 1e-12) {
+      const double mid = (lo + hi) / 2;
+      (line_deviation(c, t, mid) <= tol ? lo : hi) = mid;
+    }
+    t = lo;
+  }
+  return n;
+}
+
+TEST(FlattenOptimal, ParabolaIntegralAgainstQuadrature) {
+  // I(x) = integral_0^x (1 + 4 u^2)^(-1/4) du by the composite Simpson rule on 20000
+  // intervals (error far below 1e-8 for this smooth integrand), against the closed form
+  // (documented to about 1e-5 as the inverse of Levien's form, which is within 0.2% of the
+  // true inverse: so within 0.3% of I), and the pair's consistency.
+  for (const double x : {1e-6, 0.01, 0.3, 1.0, 2.5, 10.0, 100.0, 1e4}) {
+    const int N = 20000;
+    const double h = x / N;
+    double s = 0;
+    for (int i = 0; i <= N; ++i) {
+      const double w = (i == 0 || i == N) ? 1 : (i % 2 ? 4 : 2);
+      s += w * std::pow(1 + 4 * (i * h) * (i * h), -0.25);
+    }
+    const double exact = s * h / 3;
+    const double I = detail::parabola_integral(x);
+    EXPECT_NEAR(I / exact, 1, 3e-3) << x;
+    EXPECT_NEAR(detail::parabola_integral(-x), -I, 0) << x;  // odd
+    EXPECT_NEAR(detail::parabola_integral_inverse(I) / x, 1, 1e-4) << x;
+  }
+  EXPECT_EQ(detail::parabola_integral(0.0), 0.0);
+  EXPECT_TRUE(std::isfinite(detail::parabola_integral(1e300)));
+}
+
+/// The distance from the sub-arc [t0, t1] of c to its chord segment by 1000 samples, and
+/// whether every sample projects within the chord.
+std::pair<double, bool> step_deviation(const B2& c, double t0, double t1) {
+  const P2 a = c(t0), b = c(t1);
+  const auto u = b - a;
+  const double L2 = dot(u, u);
+  double worst = 0;
+  bool inside = true;
+  for (int i = 0; i <= 1000; ++i) {
+    const P2 p = c(t0 + (t1 - t0) * i / 1000.0);
+    const double s = dot(p - a, u) / L2;
+    inside = inside && s >= -1e-12 && s <= 1 + 1e-12;
+    worst = std::max(worst, test::segment_distance(p, a, b));
+  }
+  return {worst, inside};
+}
+
+TEST(FlattenOptimal, StepChecksAgainstSampling) {
+  // The two O(1) step checks of the plane kernel on random steps of unit-scale pieces,
+  // against the sampled distance of the sub-arc from its chord segment: sound (a step
+  // accepted is within tol) and, for the parabola's closed form, tight (a step within
+  // 0.9 tol whose arc projects inside its chord is accepted).
+  test::SplitMix64 rng{8};
+  const std::vector<std::vector<P2>> pieces = {
+      {{0, 0}, {0.9, 0.1}, {0, 0.2}},                // sharp tip
+      {{0, 0}, {1, 0.01}, {0, 0.02}},                // tip far narrower than tol: arcs overshoot their chords
+      {{0, 0}, {0.5, 0.5}, {1, 0}},                  // arch
+      {{0, 0}, {0.5, 1e-3}, {1, 0}},                 // nearly straight
+      {{0, 0}, {1, 1}, {0, 1}, {1, 0}},              // cusp cubic
+      {{0, 0}, {1, 0.6}, {-0.4, 0.6}, {0.6, 0}},     // loop
+      {{0, 0}, {0.3, 0.5}, {0.6, -0.5}, {0.9, 0}},   // inflection
+  };
+  long closed_steps = 0, cheap_accepted = 0;
+  for (const auto& Q : pieces) {
+    const B2 c(Q);
+    detail::SmallPiece<double, 2> s;
+    s.m = static_cast<int>(Q.size());
+    for (int i = 0; i < s.m; ++i) s.q[static_cast<std::size_t>(i)] = Q[static_cast<std::size_t>(i)];
+    const auto d1 = c.derivative(1);
+    for (const double tol : {1e-1, 1e-2, 3e-3, 1e-3}) {
+      detail::SmallOptimalPlan<double> plan;
+      detail::small_optimal_plan(s, tol, plan);
+      EXPECT_EQ(plan.closed, Q.size() == 3);  // the quadratics here qualify, the cubics do not
+      for (int k = 0; k < 120; ++k) {
+        double t0 = rng.uniform(0, 1), t1 = rng.uniform(0, 1);
+        if (t0 > t1) std::swap(t0, t1);
+        if (k % 2) {
+          t1 = t0 + (t1 - t0) * std::pow(rng.uniform(0, 1), 2);  // many short steps
+        } else {
+          t0 = rng.uniform(0.3, 0.5), t1 = rng.uniform(0.5, 0.7);  // across the tip, the cusp
+        }
+        if (!(t1 > t0)) continue;
+        const auto [dev, inside] = step_deviation(c, t0, t1);
+        if (plan.closed) {
+          ++closed_steps;
+          const bool ok = detail::parabola_step_within(plan, t0, t1);
+          if (ok) {
+            EXPECT_LE(dev, tol * (1 + 1e-6)) << t0 << " " << t1;
+          }
+          if (dev <= 0.9 * tol && inside) {
+            EXPECT_TRUE(ok) << t0 << " " << t1;
+          }
+        }
+        if (detail::small_cheap_check(t1 - t0, c(t0), d1(t0).to_vector(), c(t1), d1(t1).to_vector(), tol * tol)) {
+          ++cheap_accepted;
+          EXPECT_LE(dev, tol * (1 + 1e-6)) << t0 << " " << t1;
+        }
+      }
+    }
+  }
+  EXPECT_GT(closed_steps, 500);
+  EXPECT_GT(cheap_accepted, 200);
+}
+
+TEST(FlattenOptimal, CuspInflectionLoopWithinTolerance) {
+  // Cusp at t = 1/2 (B'(1/2) = 0), an S-curve (one inflection), a loop; tolerances from
+  // far above to far below the curves' size 1.
+  const B2 cusp{{0, 0}, {1, 1}, {0, 1}, {1, 0}};
+  ASSERT_LT(norm(cusp.derivative(1)(0.5).to_vector()), 1e-15);
+  const B2 inflection{{0, 0}, {1, 1}, {2, -1}, {3, 0}};
+  const B2 loop{{0, 0}, {2, 1}, {-1, 1}, {1, 0}};
+  for (const double tol : {10.0, 0.3, 1e-2, 1e-4, 1e-5}) {
+    checked_optimal(cusp, tol, "cusp");
+    checked_optimal(inflection, tol, "inflection");
+    checked_optimal(loop, tol, "loop");
+  }
+  // A tolerance beyond the curve's extent: the chord.
+  EXPECT_EQ(flatten(cusp, 10.0, FlattenMethod::optimal).size(), 2u);
+}
+
+TEST(FlattenOptimal, DegenerateCurves) {
+  // Every control point equal: the point, written as its two ends.
+  const B2 point{{3, 4}, {3, 4}, {3, 4}, {3, 4}};
+  EXPECT_EQ(flatten(point, 0.1, FlattenMethod::optimal), (std::vector<P2>{{3, 4}, {3, 4}}));
+  // Collinear, running past its end and back (zero density everywhere: only the checks'
+  // overshoot term sees the reversal), and a quadratic folding back on itself.
+  checked_optimal(B2{{0, 0}, {2, 0}, {-1, 0}, {1, 0}}, 1e-3, "collinear reversal");
+  checked_optimal(B2{{0, 0}, {3, 3}, {1, 1}}, 1e-3, "collinear quadratic reversal");
+  // Coincident inner points, a line as a cubic, a degree-1 piece.
+  checked_optimal(B2{{0, 0}, {1, 2}, {1, 2}, {2, 0}}, 1e-3, "double inner point");
+  EXPECT_EQ(flatten(B2{{0, 0}, {1, 1}, {2, 2}, {3, 3}}, 1e-9, FlattenMethod::optimal).size(), 2u);
+  EXPECT_EQ(flatten(B2{{0, 0}, {5, 1}}, 1e-9, FlattenMethod::optimal).size(), 2u);
+}
+
+TEST(FlattenOptimal, QuadraticsCheckedOnTheParabola) {
+  // Quadratics (and cubics whose cubic term is below 1e-3 tol) have their steps checked on
+  // the parabola in closed form: a sharp tip (the arc overshoots a long chord's ends), a
+  // nearly straight arc (large parabola coordinates), a symmetric arch, each as a
+  // quadratic and elevated (exactly) to a cubic, at tolerances around their size and far
+  // below it.
+  const std::vector<std::vector<P2>> quads = {
+      {{0, 0}, {10, 1}, {0, 2}},      // sharp tip near t = 1/2
+      {{0, 0}, {1, 1e-4}, {2, 0}},    // nearly straight
+      {{0, 0}, {50, 100}, {100, 0}},  // arch
+      {{0, 0}, {100, 0}, {0, 1e-3}},  // folded back on itself, not collinear
+  };
+  for (const auto& Q : quads) {
+    const B2 quad(Q);
+    const B2 elevated{Q[0], Q[0] + (2.0 / 3) * (Q[1] - Q[0]), Q[2] + (2.0 / 3) * (Q[1] - Q[2]), Q[2]};
+    for (const double rel : {0.3, 1e-2, 1e-4}) {
+      double extent = 0;
+      for (const auto& q : Q) extent = std::max(extent, norm(q - Q[0]));
+      checked_optimal(quad, rel * extent, "quadratic");
+      checked_optimal(elevated, rel * extent, "elevated quadratic");
+    }
+  }
+}
+
+TEST(FlattenOptimal, HugeAndTinyCoordinates) {
+  // Scaling the curve and tolerance by 2^k scales the polyline exactly (the unit-scale
+  // copy), from 2^-1000 to 2^1000; and 1e150 / 1e-150 coordinates stay within tolerance.
+  const B2 c{{0, 0}, {1, 1}, {0, 1}, {1, 0.25}};
+  const auto base = flatten(c, 1e-3, FlattenMethod::optimal);
+  for (const int k : {-1000, -300, 300, 1000}) {
+    std::vector<P2> Q;
+    for (const auto& p : c.points()) Q.emplace_back(std::ldexp(p[0], k), std::ldexp(p[1], k));
+    const auto poly = flatten(B2(Q), std::ldexp(1e-3, k), FlattenMethod::optimal);
+    ASSERT_EQ(poly.size(), base.size()) << k;
+    for (std::size_t i = 0; i < poly.size(); ++i) {
+      EXPECT_EQ(poly[i][0], std::ldexp(base[i][0], k)) << k;
+      EXPECT_EQ(poly[i][1], std::ldexp(base[i][1], k)) << k;
+    }
+  }
+  for (const double s : {1e150, 1e-150}) {
+    const B2 big{{s, -s}, {3 * s, 2 * s}, {-s, 2 * s}, {s, 0}};
+    checked_optimal(big, 1e-3 * s, "extreme scale");
+  }
+}
+
+TEST(FlattenOptimal, CountsNearTheGreedyCount) {
+  // A quadratic (one parabola: the count in closed form), its exact elevation to a cubic
+  // (same polyline), and cubics: within 1% (+1) and 5% (+1) of the greedy count, and the
+  // count told before emitting (flatten_count_estimate, the plan) equal to the emitted one
+  // unless a step needed its end moved (then within 2).
+  const B2 quad{{0, 0}, {50, 100}, {100, 0}};
+  const B2 elevated{{0, 0}, {100.0 / 3, 200.0 / 3}, {200.0 / 3, 200.0 / 3}, {100, 0}};
+  const auto pq = checked_optimal(quad, 0.01, "quadratic");
+  const auto pe = checked_optimal(elevated, 0.01, "elevated");
+  EXPECT_EQ(pq.size(), pe.size());
+  const long gq = greedy_count(quad, 0.01);
+  EXPECT_LE(static_cast<double>(pq.size() - 1), 1.01 * static_cast<double>(gq) + 1);
+  EXPECT_EQ(flatten_count_estimate(quad, 0.01), static_cast<double>(pq.size() - 1));
+  for (const B2& c : {B2{{10, 20}, {90, 95}, {5, 80}, {70, 3}}, B2{{0, 0}, {100, 100}, {0, 100}, {100, 0}}}) {
+    const auto p = checked_optimal(c, 0.1, "cubic");
+    const double n = static_cast<double>(p.size() - 1);
+    EXPECT_LE(n, 1.05 * static_cast<double>(greedy_count(c, 0.1)) + 1);
+    EXPECT_NEAR(flatten_count_estimate(c, 0.1), n, 2);
+  }
+}
+
+}  // namespace
