@@ -82,6 +82,16 @@ class FlattenMethodsTest(CliTest):
             self.check(lambda u: de_casteljau([[0, 0], [1, 2], [2, 0]], u * 2) if u <= 0.5
                        else de_casteljau([[2, 0], [2, 0], [3, 1], [4, -1]], 2 * u - 1), poly, 1e-3)
 
+    def test_point_segments_add_no_vertex(self):
+        # A path through a zero-length segment: the straight line 0 -> 2 on the x axis is
+        # flattened to its three distinct vertices, none written twice in a row; a curve
+        # that is a single point gives that point twice.
+        path = {"type": "path", "segments": [bezier([[0, 0], [1, 0]]), bezier([[1, 0]]), bezier([[1, 0], [2, 0]])]}
+        point = {"type": "path", "segments": [bezier([[3, 4]]), bezier([[3, 4], [3, 4]])]}
+        for method in METHODS:
+            self.assertEqual(self.flat(path, 0.1, method), [[0, 0], [1, 0], [2, 0]])
+            self.assertEqual(self.flat(point, 0.1, method), [[3, 4], [3, 4]])
+
     def test_counts_and_default(self):
         rng = random.Random(42)
         totals = dict.fromkeys(METHODS, 0)

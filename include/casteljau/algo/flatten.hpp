@@ -1184,7 +1184,8 @@ T scaled_distance(const Point<T, D>& a, const Point<T, D>& b) {
 
 /// Any other curve flattened piece by piece (pieces(c)), with the same guarantee: a
 /// polyline from c(domain().lo) to c(domain().hi) within `tolerance` of the curve, each
-/// piece's end vertex written once where the next piece starts at the same point. A
+/// piece's end vertex written once where the next piece starts at the same point, and
+/// no vertex twice in a row (a curve that is one point gives it twice). A
 /// curve whose consecutive pieces are more than `tolerance` apart (a path whose segments
 /// do not meet) is refused with InvalidArgument("curve", ...): the polyline would have
 /// to bridge the gap farther than the tolerance from the curve. A gap up to the
@@ -1211,6 +1212,11 @@ void flatten(const C& c, typename C::Scalar tolerance, FlattenMethod method, std
       }
       if (gap == 0) out.erase(out.begin() + static_cast<std::ptrdiff_t>(start));
     }
+    // A piece that is a single point (a zero-length segment of a path) adds nothing: no
+    // vertex is written twice in a row, but a curve that is one point keeps its two.
+    const auto first = out.begin() + static_cast<std::ptrdiff_t>(size0);
+    out.erase(std::unique(first, out.end()), out.end());
+    if (out.size() - size0 == 1) out.push_back(out.back());
   } catch (...) {
     out.resize(size0);
     throw;
