@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <span>
 #include <string>
 #include <vector>
@@ -139,11 +140,16 @@ class Hermite {
   /// The same into caller storage (out.size() == u.size(), else InvalidArgument("out")),
   /// so that repeated batches allocate nothing; out's content is unspecified after a
   /// throw. The batch is cut into four consecutive runs merged side by side, one cursor
-  /// each: a merge step waits for the comparison of the step before it, and four
-  /// independent chains let the processor overlap them. The runs go by chunks of 64
-  /// queries, in two passes per chunk: the merge finds the pieces (a short loop of loads
-  /// and comparisons), then the Hermite forms are evaluated, independent of one another,
-  /// so that their divisions and products do not wait behind the merge chains.
+  /// each, so that the processor overlaps four independent merge chains. The runs go by
+  /// chunks of 64 queries, in three passes per chunk: a check that the 4 x 64 queries are
+  /// finite (one vectorisable pass over data about to be used anyway); the merge, which
+  /// finds the pieces; the Hermite forms, independent of one another, so that their
+  /// divisions and products do not wait behind the merge chains. A merge step advances
+  /// the cursor by counting: the params are sorted, so the number of u_(i+1..i+4) that are
+  /// <= x is the step when it is below 4, computed from four independent comparisons
+  /// without a jump (the step between sorted queries is data-dependent: about one piece
+  /// per query on W4, whose jumps were mispredicted); only a step of 4 or more (rare when
+  /// queries are about as dense as params: see docs/performance.md) continues in a loop.
   void evaluate_sorted(std::span<const T> u, std::span<PointType> out) const {
     check_out_size(u.size(), out.size());
     const std::size_t last = size() - 1;
@@ -151,17 +157,19 @@ class Hermite {
     const PointType* const P = P_.data();
     const VectorType* const mo = out_.data();
     const VectorType* const mi = in_.empty() ? mo : in_.data();
-    // One merge step: the piece of x from the cursor i (a binary search when x is behind
-    // it). Two steps forward without jumps (adding the comparisons), then a loop for the
-    // rest: at about one query per piece the next piece is mostly 0, 1 or 2 steps ahead,
-    // so the loop is rarely entered and its exit rarely mispredicted.
+    constexpr std::size_t look = 4;  // params compared per merge step
+    // One merge step from the cursor i for a finite x: a binary search when x is behind it
+    // (an unsorted query, or the first of a run), else the count of the next params <= x.
     const auto advance = [&](T x, std::size_t& i) {
-      if (!std::isfinite(x)) require_finite(x, "t");  // the call (and its string) only to throw
-      if (x < uu[i]) {
+      if (x < uu[i]) [[unlikely]] {
         i = segment_index(x);
+      } else if (i + look <= last) [[likely]] {
+        std::size_t step = 0;
+        for (std::size_t j = 1; j <= look; ++j) step += static_cast<std::size_t>(x >= uu[i + j]);
+        i += step;
+        if (step == look) [[unlikely]]
+          while (i < last && x >= uu[i + 1]) ++i;
       } else {
-        i += static_cast<std::size_t>((i < last) & (x >= uu[i + 1]));
-        i += static_cast<std::size_t>((i < last) & (x >= uu[i + 1]));
         while (i < last && x >= uu[i + 1]) ++i;
       }
       return i;
@@ -171,6 +179,13 @@ class Hermite {
       check_representable(p, u[k], "the curve's point");
       out[k] = p;
     };
+    const auto require_all_finite = [&](std::size_t first, std::size_t count) {
+      bool finite = true;
+      for (std::size_t k = first; k < first + count; ++k) finite &= std::abs(u[k]) <= std::numeric_limits<T>::max();
+      if (!finite) [[unlikely]] {
+        for (std::size_t k = 0; k < u.size(); ++k) require_finite(u[k], "t");  // throws at the first one
+      }
+    };
     constexpr std::size_t chunk = 64;
     std::size_t piece[4][chunk];
     const std::size_t len = u.size() / 4;
@@ -178,11 +193,13 @@ class Hermite {
     std::size_t cursor[4] = {0, start(len), start(2 * len), start(3 * len)};
     for (std::size_t k0 = 0; k0 < len; k0 += chunk) {
       const std::size_t c = std::min(chunk, len - k0);
+      for (std::size_t r = 0; r < 4; ++r) require_all_finite(r * len + k0, c);
       for (std::size_t k = 0; k < c; ++k)
         for (std::size_t r = 0; r < 4; ++r) piece[r][k] = advance(u[r * len + k0 + k], cursor[r]);
       for (std::size_t r = 0; r < 4; ++r)
         for (std::size_t k = 0; k < c; ++k) evaluate_at(r * len + k0 + k, piece[r][k]);
     }
+    require_all_finite(4 * len, u.size() - 4 * len);
     for (std::size_t k = 4 * len; k < u.size(); ++k) evaluate_at(k, advance(u[k], cursor[3]));
   }
 
@@ -294,11 +311,13 @@ class Hermite {
     const T t = (u - uu[i]) / h;  // exactly 1 at u = u_(i+1): the same rounded h
     const HermiteBasis<T> b = hermite_basis(t, 0);
     const VectorType tangent_part = h * (b.h10 * mo[i] + b.h11 * mi[i + 1]);
-    // Selections rather than a branch (t <= 1/2 is unpredictable for random queries).
-    const bool left = t <= T(0.5);
-    const PointType& near = left ? P[i] : P[i + 1];
-    const PointType& far = left ? P[i + 1] : P[i];
-    return near + ((left ? b.h01 : b.h00) * (far - near) + tangent_part);
+    // Selections by index rather than a branch (t <= 1/2 is unpredictable for random or
+    // sorted queries; GCC compiled the conditional operator on references into a jump).
+    const std::size_t right = static_cast<std::size_t>(!(t <= T(0.5)));
+    const PointType& near = P[i + right];
+    const PointType& far = P[i + 1 - right];
+    const T weight[2] = {b.h01, b.h00};  // of the far point
+    return near + (weight[right] * (far - near) + tangent_part);
   }
 
   VectorType derivative_on(std::size_t i, T u, int k) const {
