@@ -3,7 +3,7 @@
 // after the last param, exactly at params, runs of equal queries, steps of many pieces
 // between queries (the counting merge's fallback loop), batches shorter than its four runs
 // and lengths that are not multiples of its chunks, one-sided tangents, unsorted input;
-// and its errors: a non-finite query anywhere, an overflowing point.
+// and its errors: a non-finite query anywhere, an overflowing point; other scalar types.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -142,6 +142,31 @@ TEST(HermiteSorted, OverflowRefused) {
   q = {-far, 0.5, 1, 1.5, 2};
   out.resize(q.size());
   EXPECT_INVALID_ARGUMENT(h.evaluate_sorted(std::span<const double>(q), std::span<P1>(out)), "t", "overflows");
+}
+
+// float takes the four-lane kernel, long double (no vector extension for it) the scalar
+// one: both compile, and the batch equals operator() and the points at the params.
+template <class T>
+void expect_scalar_type_works() {
+  const std::vector<T> u = {0, 1, 2.5, 3, 4.25, 6};
+  std::vector<Point<T, 2>> P;
+  std::vector<Vector<T, 2>> m;
+  for (int i = 0; i < 6; ++i) {
+    P.emplace_back(T(i % 3), T(i * i) / 7);
+    m.emplace_back(T(1), T(-i));
+  }
+  const Hermite<T, 2> h(u, P, m);
+  std::vector<T> q;
+  for (int k = -10; k <= 70; ++k) q.push_back(T(k) / 10);
+  std::vector<Point<T, 2>> out(q.size());
+  h.evaluate_sorted(std::span<const T>(q), std::span<Point<T, 2>>(out));
+  for (std::size_t k = 0; k < q.size(); ++k) EXPECT_EQ(out[k], h(q[k])) << k;
+  for (std::size_t i = 0; i < u.size(); ++i) EXPECT_EQ(h(u[i]), P[i]) << i;
+}
+
+TEST(HermiteSorted, FloatAndLongDouble) {
+  expect_scalar_type_works<float>();
+  expect_scalar_type_works<long double>();
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <limits>
 #include <span>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "casteljau/basis/hermite_basis.hpp"
@@ -333,54 +334,58 @@ class Hermite {
   [[gnu::noinline]] static bool points_of(const T* uu, const PointType* P, const VectorType* mo, const VectorType* mi,
                                           const std::size_t* piece, const T* u, PointType* out, std::size_t count) {
 #if defined(__GNUC__)
-    typedef T Lanes __attribute__((vector_size(4 * sizeof(T))));
-    using Mask = decltype(Lanes{} <= Lanes{});
-    Mask bad{};
-    for (std::size_t k = 0; k < count; k += 4) {
-      std::size_t i[4];
-      T x[4];
-      for (std::size_t l = 0; l < 4; ++l) {
-        const std::size_t q = k + l < count ? k + l : count - 1;
-        i[l] = piece[q];
-        x[l] = u[q];
+    if constexpr (std::is_same_v<T, double> || std::is_same_v<T, float>) {  // the types vector extensions take
+      typedef T Lanes __attribute__((vector_size(4 * sizeof(T))));
+      using Mask = decltype(Lanes{} <= Lanes{});
+      Mask bad{};
+      for (std::size_t k = 0; k < count; k += 4) {
+        std::size_t i[4];
+        T x[4];
+        for (std::size_t l = 0; l < 4; ++l) {
+          const std::size_t q = k + l < count ? k + l : count - 1;
+          i[l] = piece[q];
+          x[l] = u[q];
+        }
+        const Lanes a = {uu[i[0]], uu[i[1]], uu[i[2]], uu[i[3]]};
+        const Lanes b = {uu[i[0] + 1], uu[i[1] + 1], uu[i[2] + 1], uu[i[3] + 1]};
+        const Lanes h = b - a;
+        const Lanes t = (Lanes{x[0], x[1], x[2], x[3]} - a) / h;  // exactly 1 at u = u_(i+1): the same rounded h
+        // hermite_basis(t, 0), lane by lane (the same expressions).
+        const Lanes s = 1 - t;
+        const Lanes h00 = s * s * (1 + 2 * t), h10 = t * s * s, h01 = t * t * (3 - 2 * t), h11 = t * t * (t - 1);
+        // About the nearer end: selections, not branches (t <= 1/2 is unpredictable).
+        const Mask left = t <= T(0.5);
+        const Lanes weight = left ? h01 : h00;  // of the far point
+        for (int d = 0; d < D; ++d) {
+          const Lanes p0 = {P[i[0]][d], P[i[1]][d], P[i[2]][d], P[i[3]][d]};
+          const Lanes p1 = {P[i[0] + 1][d], P[i[1] + 1][d], P[i[2] + 1][d], P[i[3] + 1][d]};
+          const Lanes m0 = {mo[i[0]][d], mo[i[1]][d], mo[i[2]][d], mo[i[3]][d]};
+          const Lanes m1 = {mi[i[0] + 1][d], mi[i[1] + 1][d], mi[i[2] + 1][d], mi[i[3] + 1][d]};
+          const Lanes tangent_part = h * (h10 * m0 + h11 * m1);
+          const Lanes near = left ? p0 : p1, far = left ? p1 : p0;
+          const Lanes v = near + (weight * (far - near) + tangent_part);
+          bad |= (v - v) != 0;  // inf - inf and NaN - NaN are NaN
+          for (std::size_t l = 0; l < 4 && k + l < count; ++l) out[k + l][d] = v[l];
+        }
       }
-      const Lanes a = {uu[i[0]], uu[i[1]], uu[i[2]], uu[i[3]]};
-      const Lanes b = {uu[i[0] + 1], uu[i[1] + 1], uu[i[2] + 1], uu[i[3] + 1]};
-      const Lanes h = b - a;
-      const Lanes t = (Lanes{x[0], x[1], x[2], x[3]} - a) / h;  // exactly 1 at u = u_(i+1): the same rounded h
-      // hermite_basis(t, 0), lane by lane (the same expressions).
-      const Lanes s = 1 - t;
-      const Lanes h00 = s * s * (1 + 2 * t), h10 = t * s * s, h01 = t * t * (3 - 2 * t), h11 = t * t * (t - 1);
-      // About the nearer end: selections, not branches (t <= 1/2 is unpredictable).
-      const Mask left = t <= T(0.5);
-      const Lanes weight = left ? h01 : h00;  // of the far point
-      for (int d = 0; d < D; ++d) {
-        const Lanes p0 = {P[i[0]][d], P[i[1]][d], P[i[2]][d], P[i[3]][d]};
-        const Lanes p1 = {P[i[0] + 1][d], P[i[1] + 1][d], P[i[2] + 1][d], P[i[3] + 1][d]};
-        const Lanes m0 = {mo[i[0]][d], mo[i[1]][d], mo[i[2]][d], mo[i[3]][d]};
-        const Lanes m1 = {mi[i[0] + 1][d], mi[i[1] + 1][d], mi[i[2] + 1][d], mi[i[3] + 1][d]};
-        const Lanes tangent_part = h * (h10 * m0 + h11 * m1);
-        const Lanes near = left ? p0 : p1, far = left ? p1 : p0;
-        const Lanes v = near + (weight * (far - near) + tangent_part);
-        bad |= (v - v) != 0;  // inf - inf and NaN - NaN are NaN
-        for (std::size_t l = 0; l < 4 && k + l < count; ++l) out[k + l][d] = v[l];
-      }
-    }
-    bool ok = true;
-    for (std::size_t l = 0; l < 4; ++l) ok &= bad[l] == 0;
-    return ok;
-#else
-    bool ok = true;
-    for (std::size_t k = 0; k < count; ++k) {
-      out[k] = point_of(uu, P, mo, mi, piece[k], u[k]);
-      ok &= detail::all_coordinates_finite(out[k]);
-    }
-    return ok;
+      bool ok = true;
+      for (std::size_t l = 0; l < 4; ++l) ok &= bad[l] == 0;
+      return ok;
+    } else
 #endif
+    {
+      bool ok = true;
+      for (std::size_t k = 0; k < count; ++k) {
+        out[k] = point_of(uu, P, mo, mi, piece[k], u[k]);
+        ok &= detail::all_coordinates_finite(out[k]);
+      }
+      return ok;
+    }
   }
 
   /// The point at u of piece i, one query at a time: points_of's kernel for compilers
-  /// without vector extensions (the same expressions).
+  /// without vector extensions and for scalars other than float and double (the same
+  /// expressions).
   static PointType point_of(const T* uu, const PointType* P, const VectorType* mo, const VectorType* mi, std::size_t i, T u) {
     const T h = uu[i + 1] - uu[i];
     const T t = (u - uu[i]) / h;  // exactly 1 at u = u_(i+1): the same rounded h
