@@ -4,8 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <span>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "casteljau/basis/hermite_basis.hpp"
@@ -139,11 +141,18 @@ class Hermite {
   /// The same into caller storage (out.size() == u.size(), else InvalidArgument("out")),
   /// so that repeated batches allocate nothing; out's content is unspecified after a
   /// throw. The batch is cut into four consecutive runs merged side by side, one cursor
-  /// each: a merge step waits for the comparison of the step before it, and four
-  /// independent chains let the processor overlap them. The runs go by chunks of 64
-  /// queries, in two passes per chunk: the merge finds the pieces (a short loop of loads
-  /// and comparisons), then the Hermite forms are evaluated, independent of one another,
-  /// so that their divisions and products do not wait behind the merge chains.
+  /// each, so that the processor overlaps four independent merge chains. The runs go by
+  /// chunks of 64 queries, in three passes per chunk: a check that the 4 x 64 queries are
+  /// finite (one vectorisable pass over data about to be used anyway); the merge, which
+  /// finds the pieces; the Hermite forms, independent of one another and four at a time
+  /// (the kernel of operator(), so the same values bit for bit), so that their divisions
+  /// and products do not wait behind the merge chains. A merge step advances
+  /// the cursor by counting: the params are sorted, so the number of u_(i+1..i+4) that are
+  /// <= x is the step when it is below 4, computed from four independent comparisons
+  /// without a jump (the step between sorted queries is data-dependent, 0 to 3 pieces on
+  /// W4, where a loop's exit was mispredicted); only a step of 4 or more continues in a
+  /// loop (3.5% of the steps on W4, about one query per piece). A non-finite query throws
+  /// InvalidArgument("t") for the first one of the batch, before any merge step uses it.
   void evaluate_sorted(std::span<const T> u, std::span<PointType> out) const {
     check_out_size(u.size(), out.size());
     const std::size_t last = size() - 1;
@@ -151,39 +160,60 @@ class Hermite {
     const PointType* const P = P_.data();
     const VectorType* const mo = out_.data();
     const VectorType* const mi = in_.empty() ? mo : in_.data();
-    // One merge step: the piece of x from the cursor i (a binary search when x is behind
-    // it). Two steps forward without jumps (adding the comparisons), then a loop for the
-    // rest: at about one query per piece the next piece is mostly 0, 1 or 2 steps ahead,
-    // so the loop is rarely entered and its exit rarely mispredicted.
-    const auto advance = [&](T x, std::size_t& i) {
-      if (!std::isfinite(x)) require_finite(x, "t");  // the call (and its string) only to throw
-      if (x < uu[i]) {
+    constexpr std::size_t look = 4;  // params compared per merge step
+    // One merge step from the cursor i for a finite x: a binary search when x is behind it
+    // (an unsorted query, or the first of a run), else the count of the next params <= x.
+    const auto advance = [&](T x, std::size_t i) {
+      if (x < uu[i]) [[unlikely]] {
         i = segment_index(x);
+      } else if (i + look <= last) [[likely]] {
+        std::size_t step = 0;
+        for (std::size_t j = 1; j <= look; ++j) step += static_cast<std::size_t>(x >= uu[i + j]);
+        i += step;
+        if (step == look) [[unlikely]]
+          while (i < last && x >= uu[i + 1]) ++i;
       } else {
-        i += static_cast<std::size_t>((i < last) & (x >= uu[i + 1]));
-        i += static_cast<std::size_t>((i < last) & (x >= uu[i + 1]));
         while (i < last && x >= uu[i + 1]) ++i;
       }
       return i;
     };
-    const auto evaluate_at = [&](std::size_t k, std::size_t i) {
-      const PointType p = point_of(uu, P, mo, mi, i, u[k]);
-      check_representable(p, u[k], "the curve's point");
-      out[k] = p;
+    const auto evaluate = [&](const std::size_t* pieces, std::size_t first, std::size_t count) {
+      if (!points_of(uu, P, mo, mi, pieces, u.data() + first, out.data() + first, count)) [[unlikely]]
+        overflow_in(out.data() + first, u.data() + first, count);
+    };
+    const auto require_all_finite = [&](std::size_t first, std::size_t count) {
+      bool finite = true;
+      for (std::size_t k = first; k < first + count; ++k) finite &= std::abs(u[k]) <= std::numeric_limits<T>::max();
+      if (!finite) [[unlikely]] {
+        for (std::size_t k = 0; k < u.size(); ++k) require_finite(u[k], "t");  // throws at the first one
+      }
     };
     constexpr std::size_t chunk = 64;
     std::size_t piece[4][chunk];
     const std::size_t len = u.size() / 4;
     const auto start = [&](std::size_t k) { return k < u.size() && std::isfinite(u[k]) ? segment_index(u[k]) : 0; };
-    std::size_t cursor[4] = {0, start(len), start(2 * len), start(3 * len)};
+    // The four cursors in locals, not an array: the merge chains then do not pass through
+    // memory (store-to-load forwarding added about 4% on W4).
+    std::size_t c0 = start(0), c1 = start(len), c2 = start(2 * len), c3 = start(3 * len);
+    const T* const x0 = u.data();
+    const T* const x1 = x0 + len;
+    const T* const x2 = x1 + len;
+    const T* const x3 = x2 + len;
     for (std::size_t k0 = 0; k0 < len; k0 += chunk) {
       const std::size_t c = std::min(chunk, len - k0);
-      for (std::size_t k = 0; k < c; ++k)
-        for (std::size_t r = 0; r < 4; ++r) piece[r][k] = advance(u[r * len + k0 + k], cursor[r]);
-      for (std::size_t r = 0; r < 4; ++r)
-        for (std::size_t k = 0; k < c; ++k) evaluate_at(r * len + k0 + k, piece[r][k]);
+      for (std::size_t r = 0; r < 4; ++r) require_all_finite(r * len + k0, c);
+      for (std::size_t k = k0; k < k0 + c; ++k) {
+        piece[0][k - k0] = c0 = advance(x0[k], c0);
+        piece[1][k - k0] = c1 = advance(x1[k], c1);
+        piece[2][k - k0] = c2 = advance(x2[k], c2);
+        piece[3][k - k0] = c3 = advance(x3[k], c3);
+      }
+      for (std::size_t r = 0; r < 4; ++r) evaluate(piece[r], r * len + k0, c);
     }
-    for (std::size_t k = 4 * len; k < u.size(); ++k) evaluate_at(k, advance(u[k], cursor[3]));
+    const std::size_t tail = u.size() - 4 * len;  // 0 to 3 queries
+    require_all_finite(4 * len, tail);
+    for (std::size_t k = 0; k < tail; ++k) piece[0][k] = c3 = advance(u[4 * len + k], c3);
+    evaluate(piece[0], 4 * len, tail);
   }
 
   /// The points at the parameters u in any order (random queries), into caller storage
@@ -221,11 +251,8 @@ class Hermite {
         __builtin_prefetch(mo + i);
         __builtin_prefetch(mi + i + 1);
       }
-      for (std::size_t j = 0; j < g; ++j) {
-        const PointType p = point_of(uu, P, mo, mi, piece[j], x[j]);
-        check_representable(p, x[j], "the curve's point");
-        out[k0 + j] = p;
-      }
+      if (!points_of(uu, P, mo, mi, piece, x, out.data() + k0, g)) [[unlikely]]
+        overflow_in(out.data() + k0, x, g);
     }
   }
 
@@ -282,23 +309,95 @@ class Hermite {
     }
   }
   PointType point_on(std::size_t i, T u) const {
-    PointType p = point_of(u_.data(), P_.data(), out_.data(), in_.empty() ? out_.data() : in_.data(), i, u);
-    check_representable(p, u, "the curve's point");
+    PointType p;
+    if (!points_of(u_.data(), P_.data(), out_.data(), in_.empty() ? out_.data() : in_.data(), &i, &u, &p, 1)) [[unlikely]]
+      overflow_error(u, "the curve's point");
     return p;
   }
 
-  /// The point at u of piece i, from raw arrays (params, points, outgoing and incoming
-  /// tangents), so that a batch loop can keep them in registers.
+  /// points_of's failure: the first query of out[0..count) whose point is not finite
+  /// throws (there is one).
+  [[noreturn, gnu::cold, gnu::noinline]] static void overflow_in(const PointType* out, const T* u, std::size_t count) {
+    for (std::size_t k = 0; k < count; ++k)
+      if (!detail::all_coordinates_finite(out[k])) overflow_error(u[k], "the curve's point");
+    overflow_error(u[0], "the curve's point");
+  }
+
+  /// The points at u[0..count) of the pieces piece[0..count) into out, from raw arrays
+  /// (params, points, outgoing and incoming tangents); returns whether all are finite.
+  /// The one kernel of operator() (count 1), evaluate and evaluate_sorted, so that they
+  /// agree bit for bit whatever the compiler contracts into fused multiply-adds. With
+  /// GCC and Clang it takes the queries four at a time in vector extensions (lanes past
+  /// count repeat the last query): the four Hermite forms cost about one, where the
+  /// compiler's own vectorisation would gather (slow, and per-call-site roundings).
+  /// Not inlined: one compiled body, hence one rounding, for every caller.
+  [[gnu::noinline]] static bool points_of(const T* uu, const PointType* P, const VectorType* mo, const VectorType* mi,
+                                          const std::size_t* piece, const T* u, PointType* out, std::size_t count) {
+#if defined(__GNUC__)
+    if constexpr (std::is_same_v<T, double> || std::is_same_v<T, float>) {  // the types vector extensions take
+      typedef T Lanes __attribute__((vector_size(4 * sizeof(T))));
+      using Mask = decltype(Lanes{} <= Lanes{});
+      Mask bad{};
+      for (std::size_t k = 0; k < count; k += 4) {
+        std::size_t i[4];
+        T x[4];
+        for (std::size_t l = 0; l < 4; ++l) {
+          const std::size_t q = k + l < count ? k + l : count - 1;
+          i[l] = piece[q];
+          x[l] = u[q];
+        }
+        const Lanes a = {uu[i[0]], uu[i[1]], uu[i[2]], uu[i[3]]};
+        const Lanes b = {uu[i[0] + 1], uu[i[1] + 1], uu[i[2] + 1], uu[i[3] + 1]};
+        const Lanes h = b - a;
+        const Lanes t = (Lanes{x[0], x[1], x[2], x[3]} - a) / h;  // exactly 1 at u = u_(i+1): the same rounded h
+        // hermite_basis(t, 0), lane by lane (the same expressions).
+        const Lanes s = 1 - t;
+        const Lanes h00 = s * s * (1 + 2 * t), h10 = t * s * s, h01 = t * t * (3 - 2 * t), h11 = t * t * (t - 1);
+        // About the nearer end: selections, not branches (t <= 1/2 is unpredictable).
+        const Mask left = t <= T(0.5);
+        const Lanes weight = left ? h01 : h00;  // of the far point
+        for (int d = 0; d < D; ++d) {
+          const Lanes p0 = {P[i[0]][d], P[i[1]][d], P[i[2]][d], P[i[3]][d]};
+          const Lanes p1 = {P[i[0] + 1][d], P[i[1] + 1][d], P[i[2] + 1][d], P[i[3] + 1][d]};
+          const Lanes m0 = {mo[i[0]][d], mo[i[1]][d], mo[i[2]][d], mo[i[3]][d]};
+          const Lanes m1 = {mi[i[0] + 1][d], mi[i[1] + 1][d], mi[i[2] + 1][d], mi[i[3] + 1][d]};
+          const Lanes tangent_part = h * (h10 * m0 + h11 * m1);
+          const Lanes near = left ? p0 : p1, far = left ? p1 : p0;
+          const Lanes v = near + (weight * (far - near) + tangent_part);
+          bad |= (v - v) != 0;  // inf - inf and NaN - NaN are NaN
+          for (std::size_t l = 0; l < 4 && k + l < count; ++l) out[k + l][d] = v[l];
+        }
+      }
+      bool ok = true;
+      for (std::size_t l = 0; l < 4; ++l) ok &= bad[l] == 0;
+      return ok;
+    } else
+#endif
+    {
+      bool ok = true;
+      for (std::size_t k = 0; k < count; ++k) {
+        out[k] = point_of(uu, P, mo, mi, piece[k], u[k]);
+        ok &= detail::all_coordinates_finite(out[k]);
+      }
+      return ok;
+    }
+  }
+
+  /// The point at u of piece i, one query at a time: points_of's kernel for compilers
+  /// without vector extensions and for scalars other than float and double (the same
+  /// expressions).
   static PointType point_of(const T* uu, const PointType* P, const VectorType* mo, const VectorType* mi, std::size_t i, T u) {
     const T h = uu[i + 1] - uu[i];
     const T t = (u - uu[i]) / h;  // exactly 1 at u = u_(i+1): the same rounded h
     const HermiteBasis<T> b = hermite_basis(t, 0);
     const VectorType tangent_part = h * (b.h10 * mo[i] + b.h11 * mi[i + 1]);
-    // Selections rather than a branch (t <= 1/2 is unpredictable for random queries).
-    const bool left = t <= T(0.5);
-    const PointType& near = left ? P[i] : P[i + 1];
-    const PointType& far = left ? P[i + 1] : P[i];
-    return near + ((left ? b.h01 : b.h00) * (far - near) + tangent_part);
+    // Selections by index rather than a branch (t <= 1/2 is unpredictable for random or
+    // sorted queries; GCC compiled the conditional operator on references into a jump).
+    const std::size_t right = static_cast<std::size_t>(!(t <= T(0.5)));
+    const PointType& near = P[i + right];
+    const PointType& far = P[i + 1 - right];
+    const T weight[2] = {b.h01, b.h00};  // of the far point
+    return near + (weight[right] * (far - near) + tangent_part);
   }
 
   VectorType derivative_on(std::size_t i, T u, int k) const {
