@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <functional>
 #include <limits>
 #include <optional>
@@ -591,6 +593,29 @@ CASTELJAU_FLATTEN_INLINE T parabola_integral(T x) {
   return a;
 }
 
+/// Approximately x^(-1/2) for a double x >= 0 (finite for 0 and denormals, accurate for
+/// normal x): a guess from the bits of x (the exponent halved and negated) and two
+/// Newton steps y (3 - x y^2) / 2, multiplications only (so loops of it vectorise):
+/// relative error below 5e-6 (checked over 1e-290 .. 1e290). Only for estimates.
+CASTELJAU_FLATTEN_INLINE double fast_rsqrt(double x) {
+  double y = std::bit_cast<double>(std::uint64_t{0x5FE6EB50C7B537A9} - (std::bit_cast<std::uint64_t>(x) >> 1));
+  y = y * (1.5 - 0.5 * x * y * y);
+  y = y * (1.5 - 0.5 * x * y * y);
+  return y;
+}
+
+/// Approximately x^(-1/4) for a double x > 1e-280, as fast_rsqrt: the exponent quartered
+/// and negated, two Newton steps z (5 - x z^4) / 4; relative error below 2e-5 (checked
+/// over 1e-280 .. 1e290 against numpy). Only for estimates.
+CASTELJAU_FLATTEN_INLINE double fast_rqrt4(double x) {
+  double z = std::bit_cast<double>(std::uint64_t{0x4FEB000000000000} - (std::bit_cast<std::uint64_t>(x) >> 2));
+  for (int k = 0; k < 2; ++k) {
+    const double z2 = z * z;
+    z = z * (1.25 - 0.25 * x * (z2 * z2));
+  }
+  return z;
+}
+
 /// Cells of the sampled density of a cubic in small_optimal (two Gauss-Legendre nodes each).
 inline constexpr int optimal_cells = 12;
 
@@ -667,8 +692,12 @@ void small_optimal_plan(const SmallPiece<T, 2>& s, T tol, SmallOptimalPlan<T>& p
       const T t = h * static_cast<T>(j >> 1) + h / 2 + ((j & 1) ? g : -g);
       const T ux = (3 * a3[0] * t + 2 * a2[0]) * t + a1[0], uy = (3 * a3[1] * t + 2 * a2[1]) * t + a1[1];
       const T wx = 6 * a3[0] * t + 2 * a2[0], wy = 6 * a3[1] * t + 2 * a2[1];
-      const T c = ux * wy - uy * wx, n2 = ux * ux + uy * uy;
-      rho[j] = n2 > 0 ? std::sqrt(std::sqrt(c * c / n2)) : T(0);
+      const T c = std::abs(ux * wy - uy * wx), n2 = ux * ux + uy * uy;
+      // |c|^(1/2) n2^(-1/4) with no division or square root (24 of each per cubic were
+      // about a quarter of the method's time): fast_rsqrt and fast_rqrt4 (relative error
+      // below 2e-5, which moves the count by as much, the checks keep the guarantee).
+      // A vanishing or denormal speed (a cusp) gets density 0, as 0 / 0 did.
+      rho[j] = n2 > T(1e-280) ? c * fast_rsqrt(c) * fast_rqrt4(n2) : T(0);
     }
     const T scale = h / 2 / std::sqrt(8 * tol);
     for (int i = 0; i < optimal_cells; ++i) {
