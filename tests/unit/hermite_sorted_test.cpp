@@ -13,6 +13,7 @@
 #include <span>
 #include <vector>
 
+#include "random_interp_data.hpp"
 #include "test_support.hpp"
 
 namespace {
@@ -23,18 +24,9 @@ using P2 = Point<double, 2>;
 using V1 = Vector<double, 1>;
 using V2 = Vector<double, 2>;
 
-/// Params from -3 with uneven steps in [0.01, 1.01), random points and finite-difference
-/// tangents: n pieces.
+/// Finite-difference tangents through test::random_interp_data: n pieces.
 Hermite<double, 1> random_curve(std::size_t n, std::mt19937_64& rng) {
-  std::uniform_real_distribution<double> U(0.0, 1.0);
-  std::vector<double> u(n + 1);
-  std::vector<P1> P(n + 1);
-  u[0] = -3;
-  P[0] = P1(U(rng));
-  for (std::size_t i = 1; i <= n; ++i) {
-    u[i] = u[i - 1] + 0.01 + U(rng);
-    P[i] = P1(U(rng));
-  }
+  const auto [u, P] = test::random_interp_data(n, rng);
   return Hermite<double, 1>(u, P, finite_difference_tangents(u, P));
 }
 

@@ -10,6 +10,7 @@
 #include <span>
 #include <vector>
 
+#include "random_interp_data.hpp"
 #include "test_support.hpp"
 
 namespace {
@@ -371,16 +372,8 @@ TEST(InterpolatingCurves, DerivativesOfAnyOrderAndTheRightHandPiece) {
 // size check.
 TEST(CubicSpline, FastPathsAgreeWithTheReferences) {
   std::mt19937_64 rng(6);
-  std::uniform_real_distribution<double> U(0.0, 1.0);
   for (const std::size_t n : {1, 2, 3, 4, 63, 64, 65, 66, 127, 128, 129, 1000}) {
-    std::vector<double> u(n + 1);
-    std::vector<P1> P(n + 1);
-    u[0] = -3;
-    P[0] = P1(U(rng));
-    for (std::size_t i = 1; i <= n; ++i) {
-      u[i] = u[i - 1] + 0.01 + U(rng);
-      P[i] = P1(U(rng));
-    }
+    const auto [u, P] = test::random_interp_data(n, rng);
     const Hermite<double, 1> h(u, P, finite_difference_tangents(u, P));
     std::vector<double> q = {u[0] - 1, u[n] + 1};
     for (std::size_t i = 0; i <= n; ++i) q.push_back(u[i]);
