@@ -228,12 +228,20 @@ void subdivide(const CA& a, T alo, T ahi, int da, const CB& b, T blo, T bhi, int
   }
   // Near-coincident parts (narrow tangent cones along one direction): decided at once on
   // the separation polynomial instead of subdivided down to the near-miss distance.
+  bool split_longer = false;
   if (bands) {
     const BandResult r = band(a, alo, ahi, b, blo, bhi, ctx);
     if (r == BandResult::done) return;
     bands = r != BandResult::too_far;
+    // A part much longer than the other (a line against a short stretch of a curve near
+    // a touch) stretches the other's core out of the cone: the longer one is split, flat
+    // or not, until bands apply (else two crossings in one pair of flat parts would give
+    // one seed, and one of them would be missed).
+    split_longer = r == BandResult::too_long;
   }
-  if (!fa && (fb || diagonal(ba) >= diagonal(bb))) {
+  const bool split_a = split_longer ? da < max_depth && (diagonal(ba) >= diagonal(bb) || db >= max_depth)
+                                    : !fa && (fb || diagonal(ba) >= diagonal(bb));
+  if (split_a) {
     const auto h = a.split(T(0.5));
     const T m = alo + (ahi - alo) / 2;
     subdivide(h.left, alo, m, da + 1, b, blo, bhi, db, ctx, bands);
@@ -562,19 +570,24 @@ Point<T, 2> unit_at(const Pieces<T, 2>& c, const Prepared<T>& P, T g) {
   return at(P.unit[p], c.local_parameter(p, g));
 }
 
-/// The distance from q to curve c near its parameter t (unit frame): Newton's method on
-/// (c(t) - q) . c'(t) from t, over the pieces, within the domain; the least distance seen
-/// (an upper bound of the distance to the curve, exact at a converged foot point).
+/// The foot of q on curve c near its parameter t (unit frame): Newton's method on
+/// (c(t) - q) . c'(t) from t, over the pieces, within the domain; the parameter of the
+/// least distance seen and that distance (an upper bound of the distance to the curve,
+/// exact at a converged foot point).
 template <class T>
-T distance_near(const Pieces<T, 2>& c, const Prepared<T>& P, const Point<T, 2>& q, T t) {
+struct Foot {
+  T t, distance;
+};
+template <class T>
+Foot<T> foot_near(const Pieces<T, 2>& c, const Prepared<T>& P, const Point<T, 2>& q, T t) {
   const Interval<T> dom = c.domain();
-  T best = std::numeric_limits<T>::infinity();
+  Foot<T> best{t, std::numeric_limits<T>::infinity()};
   for (int it = 0; it < 12; ++it) {
     const std::size_t p = c.segment_index(t);
     const T s = c.local_parameter(p, t), k = c.own_domain(p).length() / c.segment_domain(p).length();
     const Point<T, 2> x = at(P.unit[p], s);
     const Vector<T, 2> e = x - q, d1 = k * derivative(P.unit[p], s), d2 = (k * k) * derivative(P.unit[p], s, 2);
-    best = std::min(best, norm(e));
+    if (norm(e) < best.distance) best = {t, norm(e)};
     const T den = dot(d1, d1) + dot(e, d2);
     if (!(den > 0)) break;
     const T t2 = std::clamp(t - dot(e, d1) / den, dom.lo, dom.hi);
@@ -582,6 +595,111 @@ T distance_near(const Pieces<T, 2>& c, const Prepared<T>& P, const Point<T, 2>& 
     t = t2;
   }
   return best;
+}
+
+/// The distance from q to curve c near its parameter t (see foot_near).
+template <class T>
+T distance_near(const Pieces<T, 2>& c, const Prepared<T>& P, const Point<T, 2>& q, T t) {
+  return foot_near(c, P, q, t).distance;
+}
+
+/// The unit direction of curve c at its parameter g (pieces chosen as evaluation does).
+template <class T>
+Vector<T, 2> direction_at(const Pieces<T, 2>& c, const Prepared<T>& P, T g) {
+  const std::size_t p = c.segment_index(g);
+  return direction(P.unit[p], c.local_parameter(p, g));
+}
+
+/// A curve's domain and whether the curve is closed (its ends within the near-miss
+/// distance): on a closed curve the way between two parameters may pass its closing point.
+template <class T>
+struct Loop {
+  Interval<T> dom;
+  bool closed = false;
+  /// The difference d of two parameters, the short way round a closed curve.
+  T shortest(T d) const {
+    const T L = dom.length();
+    return closed && std::abs(d) > L / 2 ? d - std::copysign(L, d) : d;
+  }
+  /// A parameter up to one length beyond the domain of a closed curve, brought back in.
+  T wrap(T t) const {
+    if (!closed) return t;
+    return t < dom.lo ? t + dom.length() : t > dom.hi ? t - dom.length() : t;
+  }
+};
+
+/// The sine of the angle between unit tangents below which a common point counts as a
+/// touch rather than a crossing when merging points of one near region: 64 eps, the
+/// rounding of the cross product of two unit vectors computed from the curves (a few eps
+/// each) with margin. Crossings of a touch region meet at angles of about sqrt(K tol)
+/// (1e-6 or more at tol = 1e-10, K ~ 1), far above it.
+template <class T>
+inline constexpr T crossing_noise = 64 * std::numeric_limits<T>::epsilon();
+
+/// The parameters of a touch region's ends: common points (ta0, tb0) and (ta1, tb1) of
+/// curves a and b, ta0 <= ta1, between which the curves stay within the near-miss distance
+/// (unwrapped round the closing point of a closed curve: ta1 may exceed its domain).
+template <class T>
+struct TouchSpan {
+  T ta0, tb0, ta1, tb1;
+};
+
+/// The touch of curves a and b in a touch region (two crossings at a tiny angle, or points
+/// near a touch): where the curves are closest, or farthest apart between two crossings,
+/// i.e. the extremum of the signed separation of a(s) from b. Its derivative along a is
+/// a'(s) . n_b at the foot of a(s) on b, so the touch is the root of g(s) = u_a(s) x u_b(t(s))
+/// (unit tangents, t(s) the foot: tangents parallel). g changes sign between two crossings
+/// (a passes b one way, then back), so the root is bracketed by the span's ends: regula
+/// falsi with the Illinois modification [DowellJarratt71] to the resolution of the
+/// parameters, at most 100 steps (a few tens). A simple root where the curvatures differ:
+/// located to about eps over the difference of the curvatures (what polish_touch reaches).
+/// Nothing when g does not change sign over the span or vanishes (to crossing_noise) at an
+/// end, or when the touch is farther apart than tol.
+template <class T>
+std::optional<Hit<T>> touch_in(const Pieces<T, 2>& ca, const Prepared<T>& A, const Loop<T>& la, const Pieces<T, 2>& cb,
+                               const Prepared<T>& B, const Loop<T>& lb, const TouchSpan<T>& span, T tol) {
+  constexpr T eps = std::numeric_limits<T>::epsilon();
+  auto foot = [&](T s) {
+    // b's parameter interpolated along the span: the start of the foot's Newton steps.
+    const T f = span.ta1 > span.ta0 ? (s - span.ta0) / (span.ta1 - span.ta0) : T(0.5);
+    return foot_near(cb, B, unit_at(ca, A, la.wrap(s)), lb.wrap(span.tb0 + f * (span.tb1 - span.tb0)));
+  };
+  auto g = [&](T s) { return cross(direction_at(ca, A, la.wrap(s)), direction_at(cb, B, foot(s).t)); };
+  T lo = span.ta0, hi = span.ta1, glo = g(lo), ghi = g(hi);
+  T s = lo;
+  // Ends where the tangents are parallel to rounding (a touch found as such, not a
+  // crossing) bracket nothing.
+  if (!(std::abs(glo) > crossing_noise<T>) || !(std::abs(ghi) > crossing_noise<T>) || (glo > 0) == (ghi > 0) || !(hi > lo)) {
+    return std::nullopt;
+  } else {
+    int side = 0;
+    for (int it = 0; it < 100 && hi - lo > 4 * eps * std::max(T(1), std::abs(lo)); ++it) {
+      T m = (lo * ghi - hi * glo) / (ghi - glo);
+      if (!(m > lo && m < hi)) m = lo + (hi - lo) / 2;
+      const T gm = g(m);
+      if (gm == 0) {
+        lo = hi = m;
+        break;
+      }
+      if ((gm > 0) == (ghi > 0)) {
+        hi = m;
+        ghi = gm;
+        if (side == 1) glo /= 2;
+        side = 1;
+      } else {
+        lo = m;
+        glo = gm;
+        if (side == -1) ghi /= 2;
+        side = -1;
+      }
+    }
+    s = std::abs(glo) <= std::abs(ghi) ? lo : hi;
+  }
+  const Foot<T> ft = foot(s);
+  if (!(ft.distance <= tol)) return std::nullopt;
+  s = la.wrap(s);
+  const std::size_t pa = ca.segment_index(s), pb = cb.segment_index(ft.t);
+  return Hit<T>{s, ft.t, pa, pb, ca.local_parameter(pa, s), cb.local_parameter(pb, ft.t), ft.distance, true};
 }
 
 /// Whether curves a and b, common at (ta, tb) (the end of an overlap), are still within
@@ -602,10 +720,6 @@ bool near_beyond(const Pieces<T, 2>& ca, const Prepared<T>& A, const Pieces<T, 2
   const T ta2 = std::clamp(ta + k * da, dom_a.lo, dom_a.hi), tb2 = std::clamp(tb + k * db, dom_b.lo, dom_b.hi);
   // A curve that turns back at the end (a fold: a curve running over itself along a line)
   // does not continue the overlap, whatever its points.
-  auto direction_at = [](const Pieces<T, 2>& c, const Prepared<T>& P, T g) {
-    const std::size_t p = c.segment_index(g);
-    return direction(P.unit[p], c.local_parameter(p, g));
-  };
   if (dot(direction_at(ca, A, ta - da / 64), direction_at(ca, A, ta + k * da / 64)) < 0 ||
       dot(direction_at(cb, B, tb - db / 64), direction_at(cb, B, tb + k * db / 64)) < 0)
     return false;
@@ -761,7 +875,19 @@ Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
   const T window = T(1e3) * T(merge_fraction) * longest_a;
   std::vector<Hit<T>> edges;
   std::vector<std::vector<Hit<T>>> twins;  // per kept point: points merged into it, all common to rounding
+  std::vector<TouchSpan<T>> spans;  // per kept point: the extreme points of its touch region
   const T exact = T(1e-3) * tol;
+  // On a closed curve the way between two parameters may pass its closing point.
+  const Interval<T> dom_a = ca.domain(), dom_b = cb->domain();
+  const bool closed_a = distance(unit_at(ca, A, dom_a.lo), unit_at(ca, A, dom_a.hi)) <= tol;
+  const bool closed_b = distance(unit_at(*cb, PB, dom_b.lo), unit_at(*cb, PB, dom_b.hi)) <= tol;
+  const Loop<T> loop_a{dom_a, closed_a}, loop_b{dom_b, closed_b};
+  // A common point at which the curves cross (common to rounding, tangents apart by more
+  // than crossing_noise), not a touch.
+  auto crossing = [&](const Hit<T>& x) {
+    return x.distance <= exact &&
+           std::abs(cross(direction(A.unit[x.pa], x.sa), direction(PB.unit[x.pb], x.sb))) > crossing_noise<T>;
+  };
   for (const auto& h : hits) {
     // Inside (or at the end of) an overlap: part of it, not an isolated point.
     bool in_overlap = false;
@@ -792,42 +918,82 @@ Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
       edges.push_back(h);
       continue;
     }
-    bool merged = false;
-    std::size_t first = kept.size();
-    while (first > 0 && kept[first - 1].ta >= h.ta - 4 * window) --first;
-    for (std::size_t ki = first; ki < kept.size(); ++ki) {
+    // h merges into kept point ki: the same point, or two points of one near region.
+    auto merge_into = [&](std::size_t ki) {
       auto& k = kept[ki];
       const T ma = T(merge_fraction) * piece_length(ca, h.pa), mb = T(merge_fraction) * piece_length(*cb, h.pb);
-      const T da = std::abs(k.ta - h.ta), db = std::abs(k.tb - h.tb);
+      const T dta = loop_a.shortest(h.ta - k.ta), dtb = loop_b.shortest(h.tb - k.tb);
+      const T da = std::abs(dta), db = std::abs(dtb);
+      // A point of a touch region already merged (see below): the touch is sought again
+      // over the span widened by it (h's parameters taken next to the span's).
+      auto widen = [&](TouchSpan<T> sp) {
+        const T hta = sp.ta0 + loop_a.shortest(h.ta - sp.ta0), htb = sp.tb0 + loop_b.shortest(h.tb - sp.tb0);
+        if (hta < sp.ta0) {
+          sp.ta0 = hta;
+          sp.tb0 = htb;
+        }
+        if (hta > sp.ta1) {
+          sp.ta1 = hta;
+          sp.tb1 = htb;
+        }
+        return sp;
+      };
       if (da <= ma && db <= mb && distance(at(A.unit[k.pa], k.sa), at(A.unit[h.pa], h.sa)) <= 1e4 * tol) {
-        // Both common to rounding (a crossing at a tiny angle, seen from neighbouring parts
-        // with roots blurred by eps / angle): the middle one in ta is kept, below.
-        if (h.distance <= exact && k.distance <= exact) {
+        if (k.touch) {
+          spans[ki] = widen(spans[ki]);
+          if (auto t = touch_in(ca, A, loop_a, *cb, PB, loop_b, spans[ki], tol)) k = *t;
+        } else if (h.distance <= exact && k.distance <= exact) {
+          // Both common to rounding (a crossing at a tiny angle, seen from neighbouring parts
+          // with roots blurred by eps / angle): the middle one in ta is kept, below.
           twins[ki].push_back(h);
         } else if (h.distance < k.distance) {
           k = h;
           twins[ki].clear();
         }
-        merged = true;
-        break;
+        return true;
       }
       // Two crossings between which the curves stay within the near-miss distance (the
-      // separation peaks near the middle) are one touch at that resolution: reported
-      // once, at the middle, as tangent.
+      // separation peaks between them) are one touch at that resolution: reported once,
+      // as tangent, where the separation peaks (touch_in), or at the middle when that
+      // cannot be located.
       if (da <= T(1e3) * ma && db <= T(1e3) * mb) {
-        const T mta = (k.ta + h.ta) / 2, mtb = (k.tb + h.tb) / 2;
-        if (distance(unit_at(ca, A, mta), unit_at(*cb, PB, mtb)) <= tol) {
-          const std::size_t pa = ca.segment_index(mta), pb = cb->segment_index(mtb);
-          k = Hit<T>{mta, mtb, pa, pb, ca.local_parameter(pa, mta), cb->local_parameter(pb, mtb), k.distance, true};
+        const T mta = loop_a.wrap(k.ta + dta / 2), mtb = loop_b.wrap(k.tb + dtb / 2);
+        if (distance_near(*cb, PB, unit_at(ca, A, mta), mtb) <= tol) {
+          const bool pair = !k.touch && crossing(k) && crossing(h);
+          if (k.touch || pair) {
+            spans[ki] = widen(k.touch ? spans[ki] : TouchSpan<T>{k.ta, k.tb, k.ta, k.tb});
+            if (auto t = touch_in(ca, A, loop_a, *cb, PB, loop_b, spans[ki], tol)) {
+              k = *t;
+            } else if (pair) {  // not located (no sign change of g): at the middle
+              const std::size_t pa = ca.segment_index(mta), pb = cb->segment_index(mtb);
+              k = Hit<T>{mta, mtb, pa, pb, ca.local_parameter(pa, mta), cb->local_parameter(pb, mtb), k.distance, true};
+            }
+          } else if (crossing(h) || (!crossing(k) && h.distance < k.distance)) {
+            // A crossing and a touch of one near region (the curves cross, then come within
+            // the distance again without crossing back): one point, the crossing; two
+            // touches: the closer one.
+            k = h;
+          }
           twins[ki].clear();
-          merged = true;
-          break;
+          return true;
         }
       }
+      return false;
+    };
+    bool merged = false;
+    std::size_t first = kept.size();
+    while (first > 0 && kept[first - 1].ta >= h.ta - 4 * window) --first;
+    for (std::size_t ki = first; ki < kept.size() && !merged; ++ki) merged = merge_into(ki);
+    // On a closed curve a, the points at the start of its domain are next to h near its
+    // end (the closing point: a point there is found at both ends of the domain).
+    if (closed_a && h.ta >= dom_a.hi - 4 * window) {
+      for (std::size_t ki = 0; ki < std::min<std::size_t>(first, 16) && !merged; ++ki)
+        if (std::abs(loop_a.shortest(kept[ki].ta - h.ta)) <= 4 * window) merged = merge_into(ki);
     }
     if (!merged) {
       kept.push_back(h);
       twins.emplace_back();
+      spans.push_back({h.ta, h.tb, h.ta, h.tb});
     }
   }
   for (std::size_t ki = 0; ki < kept.size(); ++ki) {
@@ -841,22 +1007,11 @@ Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
   // and each of its neighbours in ta among the points kept so far (the nearest 8 on each
   // side); the closest of several such points of one region is kept.
   std::sort(edges.begin(), edges.end(), [](const auto& x, const auto& y) { return x.distance < y.distance; });
-  // On a closed curve the way between two parameters may pass its closing point.
-  const Interval<T> dom_a = ca.domain(), dom_b = cb->domain();
-  const bool closed_a = distance(unit_at(ca, A, dom_a.lo), unit_at(ca, A, dom_a.hi)) <= tol;
-  const bool closed_b = distance(unit_at(*cb, PB, dom_b.lo), unit_at(*cb, PB, dom_b.hi)) <= tol;
-  auto shortest = [](T d, const Interval<T>& dom, bool closed) {
-    const T L = dom.length();
-    return closed && std::abs(d) > L / 2 ? d - std::copysign(L, d) : d;
-  };
-  auto wrap = [](T t, const Interval<T>& dom) {
-    return t < dom.lo ? t + dom.length() : t > dom.hi ? t - dom.length() : t;
-  };
   auto same_region = [&](const Hit<T>& x, const Hit<T>& y) {
-    const T da = shortest(y.ta - x.ta, dom_a, closed_a), db = shortest(y.tb - x.tb, dom_b, closed_b);
+    const T da = loop_a.shortest(y.ta - x.ta), db = loop_b.shortest(y.tb - x.tb);
     for (int j = 0; j <= 16; ++j) {
       const T f = static_cast<T>(j) / 16;
-      const T ta = wrap(x.ta + f * da, dom_a), tb = wrap(x.tb + f * db, dom_b);
+      const T ta = loop_a.wrap(x.ta + f * da), tb = loop_b.wrap(x.tb + f * db);
       if (!(distance_near(*cb, PB, unit_at(ca, A, ta), tb) <= tol)) return false;
     }
     return true;
@@ -1016,10 +1171,13 @@ std::optional<Intersections<T>> low_degree_pieces(const Pieces<T, 2>& pa, const 
 /// Guarantees and accuracy: a point is reported when the curves come within 1e-10 of
 /// their size (the larger control-box diagonal) there, and only then: near-misses
 /// farther apart are not reported. Transversal crossings are refined to full precision
-/// (parameters to a few eps relative, eps / sin(angle) near tangency); touches to about
-/// sqrt(eps) in the parameters, and reported once with kind `tangent` (tangent
-/// directions within 1e-6 radians). Points closer than 1e-6 of their pieces' parameter
-/// intervals in both parameters are merged into one. Overlaps are reported as parameter
+/// (parameters to a few eps relative, eps / sin(angle) near tangency); touches at the
+/// closest approach (or the peak of the separation between two crossings within the
+/// distance) to a few eps over the difference of the curvatures (polish_touch,
+/// touch_in), about sqrt(eps) where that is not found, and reported once with kind
+/// `tangent` (tangent directions within 1e-6 radians). Points closer than 1e-6 of their
+/// pieces' parameter intervals in both parameters are merged into one, round the closing
+/// point of a closed curve too. Overlaps are reported as parameter
 /// intervals (joined across arcs and pieces), never as points; a point inside an overlap
 /// (or at its ends) is not reported separately.
 ///

@@ -158,13 +158,16 @@ enum class BandResult {
   done,     ///< the pair is decided (seeds emitted, or none)
   no,       ///< not a band here; smaller parts may be
   too_far,  ///< the curves are too far apart for the bound (E > 0.05 tol): plain subdivision below
+  too_long, ///< a core, extended over the other part's range, leaves the cone: split the longer part
 };
 
 /// Near-coincident parts a on [alo, ahi] and b on [blo, bhi] (piece parameters) of the
 /// arcs in ctx, decided at once (done) instead of subdivided down to the near-miss
 /// distance; otherwise plain subdivision goes on (trying bands again below unless the
 /// curves are too far apart for the bound: their matched difference D hardly shrinks
-/// with the parts, and a failed attempt costs about as much as 20 subdivision steps).
+/// with the parts, and a failed attempt costs about as much as 20 subdivision steps;
+/// halving the longer part first when a core, extended over the other part's range,
+/// leaves the cone: too_long).
 ///
 /// Applies when every tangent of both parts lies within band_angle of one direction e (b
 /// possibly running the other way) and the curves are close: both parts are extended
@@ -240,11 +243,11 @@ BandResult band(const CA& a, T alo, T ahi, const CB& b, T blo, T bhi, Context<T>
   const Homogeneous<T> HA = std::visit([](const auto& x) { return homogeneous(x); }, A);
   const Homogeneous<T> HB = std::visit([](const auto& x) { return homogeneous(x); }, B);
   const auto qb = part_bounds(HB, e);
-  if (!qb || !part_bounds(HA, e)) return BandResult::no;
+  if (!qb || !part_bounds(HA, e)) return BandResult::too_long;
   const bool span_is_core = sb0 == std::min(cb0, cb1) && sb1 == std::max(cb0, cb1);
   const auto span_b =
       span_is_core ? qb : part_bounds(std::visit([](const auto& x) { return homogeneous(x); }, piece_part(pb, sb0, sb1, reversed)), e);
-  if (!span_b) return BandResult::no;
+  if (!span_b) return BandResult::too_long;
   // D = R / (W_A W_B), R = X_A W_B - X_B W_A; h = Q x R.
   const auto rx = bernstein_difference<T>(bernstein_product<T>(HA.x, HB.w), bernstein_product<T>(HB.x, HA.w));
   const auto ry = bernstein_difference<T>(bernstein_product<T>(HA.y, HB.w), bernstein_product<T>(HB.y, HA.w));
@@ -278,7 +281,10 @@ BandResult band(const CA& a, T alo, T ahi, const CB& b, T blo, T bhi, Context<T>
     const T slope = std::abs(bernstein_value<T>(dh, u));
     const T du = slope > 0 ? std::min(T(1e-2), 2 * h_noise / slope) : T(1e-2);
     const T slack_a = std::max(T(1e-7), du * (ca1 - ca0)), slack_b = std::max(T(1e-7), du * std::abs(cb1 - cb0));
-    const T s = ca0 + u * (ca1 - ca0), t = cb0 + u * (cb1 - cb0);
+    // b's parameter where e . b = e . a(s) (b is monotone along e): within |beta| tan
+    // band_angle of the foot of a(s) on b, while B(u) lags it by up to |D| (the cores are
+    // matched at their ends only; D is not small against a line, whose curvature is 0).
+    const T s = ca0 + u * (ca1 - ca0), t = solve_projection(pb, e, xa(s), std::min(cb0, cb1), std::max(cb0, cb1));
     if (s < alo - slack_a || s > ahi + slack_a || t < blo - slack_b || t > bhi + slack_b) return;
     ctx.seeds.push_back({std::clamp(s, ra.lo, ra.hi), std::clamp(t, rb.lo, rb.hi), edge});
   };
