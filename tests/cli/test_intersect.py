@@ -469,8 +469,9 @@ class NearCoincidentTest(CliTest):
         # overlap, whether the crossings fall on joints of the quarters (offset along x: at
         # (d/2, +-1)) or inside them (diagonal offset). Points on both circles to 1e-12 of
         # the size (mpmath), at the closed form to 4 eps / d (the conditioning of a crossing
-        # at angle d).
-        for d in (3e-10, 1e-8, 1e-7, 1e-5):
+        # at angle d). At d = 1.4e-5 .. 2.4e-5 along x the crossings lie between joints of
+        # the two circles d apart, within d^2 / 2 of each other there: not an overlap.
+        for d in (3e-10, 1e-8, 1e-7, 1e-5, 1.4e-5, 2.2e-5):
             for diagonal in (False, True):
                 u = [math.sqrt(0.5), math.sqrt(0.5)] if diagonal else [1.0, 0.0]
                 c = [d * u[0], d * u[1]]

@@ -325,7 +325,9 @@ TEST(Intersect, CirclesWithCloseCentresCrossTwice) {
   // c / 2 +- n sqrt(1 - d^2 / 4) at an angle d: two points, never an overlap, whether the
   // crossings fall on the joints of the quarters (offset along x) or inside them; tangent
   // below an angle of 1e-6. Positions to 4 eps / d, the conditioning of the crossing.
-  for (const double d : {3e-10, 1e-9, 1e-8, 1e-7, 1e-5, 1e-4}) {
+  // 1.4e-5 and 2e-5 along x gave a 1e-5 overlap at each crossing (between the joints of
+  // the two circles' quarters, d apart) before overlaps crossed inside were rejected.
+  for (const double d : {3e-10, 1e-9, 1e-8, 1e-7, 1e-5, 1.4e-5, 2e-5, 1e-4}) {
     for (const bool diagonal : {false, true}) {
       const P2 u = diagonal ? P2{std::sqrt(0.5), std::sqrt(0.5)} : P2{1, 0};
       const P2 c{d * u[0], d * u[1]};

@@ -838,10 +838,35 @@ Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
   // crossing or touch at a tiny angle, seen between joints of pieces or arcs: two circles of
   // radius 1 with centres d apart meet at an angle d and stay within tol over 2 tol / d
   // around each crossing): its points are reported instead, as they are off the joints.
+  //
+  // Nor is one that holds no whole monotone arc of either curve (its ends are joints or
+  // arc ends of both, staggered) while a crosses b inside it: the signed separation at
+  // its two ends of opposite signs, both beyond tol / 8 (coincident curves are apart by
+  // rounding only, about 1e-16 of the size; an offset copy within the distance keeps one
+  // side). That is a crossing at a small angle theta cut between joints closer than its
+  // near region (2 tol / theta long): two NURBS unit circles with centres d = 1.4e-5 ..
+  // 2.4e-5 apart along x, whose crossings lie between the joints of their quarters d
+  // apart, are within d^2 / 2 there but 1.5 d^2 > tol as far again beyond.
+  auto signed_gap = [&](T ta, T tb) {
+    const Point<T, 2> p = unit_at(ca, A, ta);
+    const Foot<T> f = foot_near(*cb, PB, p, tb);
+    return std::copysign(f.distance, cross(direction_at(*cb, PB, f.t), p - unit_at(*cb, PB, f.t)));
+  };
+  auto covers_arc = [](const Pieces<T, 2>& c, const Prepared<T>& P, T lo, T hi) {
+    const T m = T(1e-9) * c.domain().length();
+    for (const auto& r : P.arcs)
+      if (c.global_parameter(r.piece, r.lo) >= lo - m && c.global_parameter(r.piece, r.hi) <= hi + m) return true;
+    return false;
+  };
   std::vector<CurveOverlap<T>> joined;
   for (auto& [o, found, deferred] : candidates) {
-    const bool continues = near_beyond(ca, A, *cb, PB, o.a.lo, o.b_start, -(o.a.hi - o.a.lo), o.b_start - o.b_end, tol) ||
-                           near_beyond(ca, A, *cb, PB, o.a.hi, o.b_end, o.a.hi - o.a.lo, o.b_end - o.b_start, tol);
+    bool continues = near_beyond(ca, A, *cb, PB, o.a.lo, o.b_start, -(o.a.hi - o.a.lo), o.b_start - o.b_end, tol) ||
+                     near_beyond(ca, A, *cb, PB, o.a.hi, o.b_end, o.a.hi - o.a.lo, o.b_end - o.b_start, tol);
+    if (!continues && !covers_arc(ca, A, o.a.lo, o.a.hi) &&
+        !covers_arc(*cb, PB, std::min(o.b_start, o.b_end), std::max(o.b_start, o.b_end))) {
+      const T g0 = signed_gap(o.a.lo, o.b_start), g1 = signed_gap(o.a.hi, o.b_end);
+      continues = (g0 > 0) != (g1 > 0) && std::min(std::abs(g0), std::abs(g1)) > tol / 8;
+    }
     if (continues) {
       hits.insert(hits.end(), found.begin(), found.end());
       for (const auto& [i, j] : deferred) {
