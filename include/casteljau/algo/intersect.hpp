@@ -1027,6 +1027,9 @@ Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
     std::sort(twins[ki].begin(), twins[ki].end(), [](const auto& x, const auto& y) { return x.ta < y.ta; });
     kept[ki] = twins[ki][(twins[ki].size() - 1) / 2];
   }
+  // Sorted for the search below: merges move points within the window, and one at the
+  // closing point of a closed curve may have moved to the other end of its domain.
+  std::sort(kept.begin(), kept.end(), [](const auto& x, const auto& y) { return x.ta < y.ta; });
   // Points from edge seeds (arc ends inside a near region, see band()): one stands for its
   // region only if no other point does, i.e. if the curves part (beyond tol) between it
   // and each of its neighbours in ta among the points kept so far (the nearest 8 on each
