@@ -1190,11 +1190,13 @@ std::optional<Intersections<T>> low_degree_pieces(const Pieces<T, 2>& pa, const 
 /// near-miss distance.
 ///
 /// Near regions (stretches where the curves stay within the near-miss distance): one
-/// point per crossing, one touch where they come within it without crossing, a point at
-/// an arc end only when nothing else represents its region. An overlap is reported where
-/// a monotone arc lies within the distance of the other curve all along, unless the
-/// curves still do so as far again past one of its ends (then it is a piece of a
-/// crossing or touch region, seen between joints, and that point is reported).
+/// point per crossing (two crossings with the curves within the distance between them
+/// are one touch, at the peak of the separation), one touch where they come within it
+/// without crossing, a point at an arc end only when nothing else represents its region.
+/// An overlap is reported where a monotone arc lies within the distance of the other
+/// curve all along, unless the curves still do so as far again past one of its ends, or
+/// it holds no whole arc and a crosses b inside it (then it is a piece of a crossing or
+/// touch region, seen between joints, and that point is reported).
 ///
 /// Guarantees and accuracy: a point is reported when the curves come within 1e-10 of
 /// their size (the larger control-box diagonal) there, and only then: near-misses
