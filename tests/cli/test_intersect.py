@@ -4,7 +4,8 @@ x = T3(y), a loop cubic's double point, a parabola and a circle touching lines),
 (a cubic and its own halves, reversed, collinear segments, a curve running over itself),
 mpmath as the oracle for the parameters of random crossings (findroot at 50 digits),
 near-coincident curves (copies turned by 1e-9, circles with centres 1e-8 apart, copies a few
-near-miss distances apart), and a seeded random property: every reported point lies on both curves, and dense polylines
+near-miss distances apart), touches within the near-miss distance located where the curves are closest (closed
+forms, mpmath), and a seeded random property: every reported point lies on both curves, and dense polylines
 find no crossing that the program missed.
 
 Usage: test_intersect.py PATH_TO_CASTELJAU [unittest options]
@@ -468,8 +469,9 @@ class NearCoincidentTest(CliTest):
         # overlap, whether the crossings fall on joints of the quarters (offset along x: at
         # (d/2, +-1)) or inside them (diagonal offset). Points on both circles to 1e-12 of
         # the size (mpmath), at the closed form to 4 eps / d (the conditioning of a crossing
-        # at angle d).
-        for d in (3e-10, 1e-8, 1e-7, 1e-5):
+        # at angle d). At d = 1.4e-5 .. 2.4e-5 along x the crossings lie between joints of
+        # the two circles d apart, within d^2 / 2 of each other there: not an overlap.
+        for d in (3e-10, 1e-8, 1e-7, 1e-5, 1.4e-5, 2.2e-5):
             for diagonal in (False, True):
                 u = [math.sqrt(0.5), math.sqrt(0.5)] if diagonal else [1.0, 0.0]
                 c = [d * u[0], d * u[1]]
@@ -505,6 +507,142 @@ class NearCoincidentTest(CliTest):
             else:
                 self.assertEqual(len(r["overlaps"]), 1, r)
                 self.assert_close(r["overlaps"][0]["a"], [0, 1], 1e-12)
+
+
+def nurbs_circle_r(cx, cy, r):
+    """The circle of radius r about (cx, cy), built as nurbs_circle (quarter i on [i, i + 1]:
+    the joints u = 0, 1, 2, 3 at angles 0, 90, 180, 270 degrees)."""
+    c = nurbs_circle(0, 0)
+    c["points"] = [[cx + r * x, cy + r * y] for x, y in c["points"]]
+    return c
+
+
+def mp_line_touch(C, L, t0):
+    """The parameter t of the Bézier C where its tangent is parallel to the segment L, near t0,
+    and the foot parameter of C(t) on L (mpmath at 50 digits, on the double inputs)."""
+    with mpmath.workdps(50):
+        n = len(C) - 1
+        D = [[n * (mpmath.mpf(C[i + 1][k]) - mpmath.mpf(C[i][k])) for k in range(2)] for i in range(n)]
+        v = [mpmath.mpf(L[1][k]) - mpmath.mpf(L[0][k]) for k in range(2)]
+        f = lambda t: (lambda d: d[0] * v[1] - d[1] * v[0])(mp_bezier(D, t))
+        t = mpmath.findroot(f, mpmath.mpf(t0))
+        p = mp_bezier(C, t)
+        u = sum((p[k] - mpmath.mpf(L[0][k])) * v[k] for k in range(2)) / sum(x * x for x in v)
+        return float(t), float(u)
+
+
+class TouchLocationTest(CliTest):
+    """Touches within the near-miss distance (1e-10 of the size): a near miss, or two
+    crossings closer than that, give one tangent point where the curves are closest (or
+    farthest apart between the crossings): the extremum of their separation, where the
+    tangents are parallel. Checked against closed forms (the apex of a parabola, the points
+    on the line of the centres of two circles) and mpmath (a cubic and a line parallel to
+    its tangent)."""
+
+    def one_touch(self, r, msg):
+        self.assertEqual(r["overlaps"], [], msg)
+        self.assertEqual(len(r["intersections"]), 1, (msg, r))
+        x = r["intersections"][0]
+        self.assertEqual(x["kind"], "tangent", msg)
+        return x
+
+    def test_parabola_and_line_near_its_apex(self):
+        # y = 4 t (1 - t) peaks at t = 1/2, (1, 1); the line y = 1 + d from x = -1 to 3 has
+        # tb = 1/2 below it. d < 0: two crossings 2 sqrt(-d) apart in t (3.2e-6 at -1e-11,
+        # the middle of the points merged used to give t = 0.5000008); d > 0: a near miss
+        # within the distance (4e-10 here). Both: the apex, to 1e-14 (g = u_a x u_b has
+        # slope 4 there, rounded to a few eps).
+        for d in (-1e-11, 1e-11, -1e-10, 1e-10, -3e-10, 3e-10, -1e-12):
+            r = self.ok("intersect", {"curves": [bezier([[0, 0], [1, 2], [2, 0]]), bezier([[-1, 1 + d], [3, 1 + d]])]})
+            x = self.one_touch(r, d)
+            self.assert_close(x["t"], [0.5, 0.5], 1e-14, d)
+            self.assert_close(x["point"], [1, 1], 1e-14, d)
+        # Farther than the distance: nothing above, two crossings below.
+        r = self.ok("intersect", {"curves": [bezier([[0, 0], [1, 2], [2, 0]]), bezier([[-1, 1 + 6e-10], [3, 1 + 6e-10]])]})
+        self.assertEqual(r["intersections"], [])
+        r = self.ok("intersect", {"curves": [bezier([[0, 0], [1, 2], [2, 0]]), bezier([[-1, 1 - 6e-10], [3, 1 - 6e-10]])]})
+        self.assertEqual([x["kind"] for x in r["intersections"]], ["crossing", "crossing"], r)
+
+    def test_touch_on_a_joint_of_pieces(self):
+        # The parabola's halves as a path on [0, 2]: the apex is the joint, t = 1. The NURBS
+        # unit circle against y = 1 + d: the top (0, 1) is the joint u = 1 of its quarters,
+        # tb = 1/2 on the line from x = -2 to 2.
+        halves = {"type": "path", "segments": [bezier([[0, 0], [0.5, 1], [1, 1]]), bezier([[1, 1], [1.5, 1], [2, 0]])]}
+        for d in (-1e-11, 1e-11, -1e-10):
+            r = self.ok("intersect", {"curves": [halves, bezier([[-1, 1 + d], [3, 1 + d]])]})
+            x = self.one_touch(r, d)
+            self.assert_close(x["t"], [1, 0.5], 1e-14, d)
+            r = self.ok("intersect", {"curves": [nurbs_circle(0, 0), bezier([[-2, 1 + d], [2, 1 + d]])]})
+            x = self.one_touch(r, d)
+            self.assert_close(x["t"], [1, 0.5], 1e-14, d)
+            self.assert_close(x["point"], [0, 1], 1e-14, d)
+
+    def test_cubic_and_a_line_parallel_to_its_tangent(self):
+        # The line through c(t0) + d n along the tangent at t0 (n the unit normal): the
+        # touch is where c's tangent is parallel to the line (mpmath on the rounded line),
+        # at the foot of that point on the line.
+        P = [[0, 0], [1, 2], [3, -1], [4, 1]]
+        for t0 in (0.3, 0.7):
+            with mpmath.workdps(30):
+                p = [float(x) for x in mp_bezier(P, mpmath.mpf(t0))]
+                D = [[3 * (P[i + 1][k] - P[i][k]) for k in range(2)] for i in range(3)]
+                v = [float(x) for x in mp_bezier(D, mpmath.mpf(t0))]
+            s = math.hypot(*v)
+            v = [v[0] / s, v[1] / s]
+            n = [-v[1], v[0]]
+            for d in (-1e-11, 1e-11, -2e-10, 2e-10):
+                L = [[p[0] - 2 * v[0] + d * n[0], p[1] - 2 * v[1] + d * n[1]],
+                     [p[0] + 2 * v[0] + d * n[0], p[1] + 2 * v[1] + d * n[1]]]
+                r = self.ok("intersect", {"curves": [bezier(P), bezier(L)]})
+                x = self.one_touch(r, (t0, d))
+                ta, tb = mp_line_touch(P, L, t0)
+                self.assertLess(abs(ta - t0), 1e-9)  # the oracle found the touch near t0
+                self.assert_close(x["t"], [ta, tb], 1e-13, (t0, d))
+
+    def test_circles_touching(self):
+        # Circles of radius 1 and r whose centres are 1 + r + d apart (outside each other)
+        # or 1 - r + d (inside) along the direction phi: they touch, within d, at the unit
+        # circle's point (cos phi, sin phi) and the other's point nearest it on the line of
+        # centres. phi = pi/2 puts the touch on joints of the quarters of both circles.
+        for phi in (math.pi / 2, 0.5):
+            u = [math.cos(phi), math.sin(phi)]
+            for inside, r in ((False, 1.0), (True, 0.5)):
+                for d in (-1e-11, 1e-11, -1e-10):
+                    k = (1 - r if inside else 1 + r) + d
+                    c = [k * u[0], k * u[1]]
+                    A, B = nurbs_circle(0, 0), nurbs_circle_r(c[0], c[1], r)
+                    res = self.ok("intersect", {"curves": [A, B]})
+                    msg = (phi, inside, d)
+                    x = self.one_touch(res, msg)
+                    pb = [c[0] + r * u[0], c[1] + r * u[1]] if inside else [c[0] - r * u[0], c[1] - r * u[1]]
+                    self.assertLess(dist(x["point"], u), 1e-14, msg)
+                    with mpmath.workdps(30):
+                        self.assertLess(dist([float(y) for y in mp_nurbs_circle(A, x["t"][0])], u), 1e-14, msg)
+                        self.assertLess(dist([float(y) for y in mp_nurbs_circle(B, x["t"][1])], pb), 1e-14, msg)
+
+    def test_closing_point_of_a_closed_curve_listed_once(self):
+        # The NURBS circle passes (1, 0) at u = 0 and again at u = 4: a crossing or touch
+        # there is one point (u = 0 or 4), not two. The line y = 0 crosses there; the unit
+        # circle about (2 + d, 0) touches there (at its own u = 2); the line x = 1 - 1e-11 a
+        # near miss within the distance, the circle second.
+        def at_closing(u):
+            return min(abs(u), abs(u - 4))
+        r = self.ok("intersect", {"curves": [nurbs_circle(0, 0), bezier([[0, 0], [2, 0]])]})
+        self.assertEqual(len(r["intersections"]), 1, r)
+        x = r["intersections"][0]
+        self.assertEqual(x["kind"], "crossing")
+        self.assertLess(at_closing(x["t"][0]), 1e-15)
+        self.assert_close(x["point"], [1, 0], 1e-15)
+        for d in (-1e-11, 1e-11, -1e-10):
+            r = self.ok("intersect", {"curves": [nurbs_circle(0, 0), nurbs_circle(2 + d, 0)]})
+            x = self.one_touch(r, d)
+            self.assertLess(at_closing(x["t"][0]), 1e-14, d)
+            self.assertLess(abs(x["t"][1] - 2), 1e-14, d)
+            self.assertLess(dist(x["point"], [1, 0]), 1e-14, d)
+        r = self.ok("intersect", {"curves": [bezier([[1 - 1e-11, -1], [1 - 1e-11, 1]]), nurbs_circle(0, 0)]})
+        x = self.one_touch(r, "line")
+        self.assertLess(abs(x["t"][0] - 0.5), 1e-14)
+        self.assertLess(at_closing(x["t"][1]), 1e-14)
 
 
 class BadInputTest(CliTest):

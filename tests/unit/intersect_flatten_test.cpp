@@ -325,7 +325,9 @@ TEST(Intersect, CirclesWithCloseCentresCrossTwice) {
   // c / 2 +- n sqrt(1 - d^2 / 4) at an angle d: two points, never an overlap, whether the
   // crossings fall on the joints of the quarters (offset along x) or inside them; tangent
   // below an angle of 1e-6. Positions to 4 eps / d, the conditioning of the crossing.
-  for (const double d : {3e-10, 1e-9, 1e-8, 1e-7, 1e-5, 1e-4}) {
+  // 1.4e-5 and 2e-5 along x gave a 1e-5 overlap at each crossing (between the joints of
+  // the two circles' quarters, d apart) before overlaps crossed inside were rejected.
+  for (const double d : {3e-10, 1e-9, 1e-8, 1e-7, 1e-5, 1.4e-5, 2e-5, 1e-4}) {
     for (const bool diagonal : {false, true}) {
       const P2 u = diagonal ? P2{std::sqrt(0.5), std::sqrt(0.5)} : P2{1, 0};
       const P2 c{d * u[0], d * u[1]};
@@ -360,6 +362,59 @@ TEST(Intersect, CopiesApartByOneToThreeNearMissDistances) {
     if (k < 1) {
       EXPECT_EQ(r.overlaps[0].a, (Interval<double>{0, 1}));
     }
+  }
+}
+
+TEST(Intersect, MergedTouchAtTheClosestApproach) {
+  // Two crossings closer than the near-miss distance, or a near miss within it, are one
+  // touch reported where the separation of the curves peaks (the tangents parallel), not
+  // at the middle of the points merged. The parabola y = 4 t (1 - t) (apex (1, 1) at
+  // t = 1/2) against y = 1 + d from x = -1 to 3 (tb = 1/2 below the apex): crossings
+  // 2 sqrt(-d) apart for d < 0 (at d = -1e-11 the merge used to give t = 0.5000008), a
+  // near miss for d > 0. Closed form: (0.5, 0.5), to 1e-14 (g = u_a x u_b has slope 4
+  // there and is rounded to a few eps).
+  const B2 parabola{{0, 0}, {1, 2}, {2, 0}};
+  for (const double d : {-1e-11, 1e-11, -1e-10, -3e-10}) {
+    const auto r = intersect(parabola, B2{{-1, 1 + d}, {3, 1 + d}});
+    ASSERT_EQ(r.points.size(), 1u) << d;
+    EXPECT_TRUE(r.overlaps.empty());
+    EXPECT_EQ(r.points[0].kind, IntersectionKind::tangent) << d;
+    EXPECT_NEAR(r.points[0].ta, 0.5, 1e-14) << d;
+    EXPECT_NEAR(r.points[0].tb, 0.5, 1e-14) << d;
+  }
+  // The same on a joint of pieces: the parabola's halves on [0, 2] (apex at t = 1), and
+  // the NURBS unit circle against y = 1 + d (its top (0, 1) is the joint u = 1 of the
+  // quarters).
+  using PC = Pieces<double, 2>;
+  const auto h = parabola.split(0.5);
+  const PC halves(std::vector<BezierPiece<double, 2>>{h.left, h.right});
+  for (const double d : {-1e-11, 1e-11}) {
+    const PC line(std::vector<BezierPiece<double, 2>>{B2{{-1, 1 + d}, {3, 1 + d}}});
+    const auto r = detail::isect::solve(halves, &line);
+    ASSERT_EQ(r.points.size(), 1u) << d;
+    EXPECT_EQ(r.points[0].kind, IntersectionKind::tangent) << d;
+    EXPECT_NEAR(r.points[0].ta, 1, 1e-14) << d;
+    EXPECT_NEAR(r.points[0].tb, 0.5, 1e-14) << d;
+    const auto c = intersect(circle(), B2{{-2, 1 + d}, {2, 1 + d}});
+    ASSERT_EQ(c.points.size(), 1u) << d;
+    EXPECT_EQ(c.points[0].kind, IntersectionKind::tangent) << d;
+    EXPECT_NEAR(c.points[0].ta, 1, 1e-14) << d;
+    EXPECT_NEAR(c.points[0].tb, 0.5, 1e-14) << d;
+  }
+  // Unit circles touching from outside, centres 2 + d apart along the direction 0.5 rad:
+  // at (cos 0.5, sin 0.5) on the first, inside its first quarter.
+  for (const double d : {-1e-11, 1e-11}) {
+    const auto r = intersect(circle(), circle_at((2 + d) * std::cos(0.5), (2 + d) * std::sin(0.5)));
+    ASSERT_EQ(r.points.size(), 1u) << d;
+    EXPECT_EQ(r.points[0].kind, IntersectionKind::tangent) << d;
+    EXPECT_LE(distance(r.points[0].point, P2{std::cos(0.5), std::sin(0.5)}), 1e-14) << d;
+    // Along x the touch is at (1, 0), the closing point of the first circle (u = 0 and
+    // u = 4): one point, not one at each end of its domain.
+    const auto x = intersect(circle(), circle_at(2 + d, 0));
+    ASSERT_EQ(x.points.size(), 1u) << d;
+    EXPECT_EQ(x.points[0].kind, IntersectionKind::tangent) << d;
+    EXPECT_LE(std::min(x.points[0].ta, 4 - x.points[0].ta), 1e-14) << d;
+    EXPECT_NEAR(x.points[0].tb, 2, 1e-14) << d;
   }
 }
 

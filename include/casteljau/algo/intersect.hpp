@@ -1,5 +1,6 @@
 // Intersections of plane curves: curve with curve (a line segment or polyline is a curve)
-// and the self-intersections of one curve, with tangential touches and overlaps.
+// and the self-intersections of one curve, with tangential touches and overlaps. The
+// general engine; its band step for near-coincident parts is in algo/intersect_band.hpp.
 #pragma once
 
 #include <algorithm>
@@ -16,6 +17,8 @@
 #include <vector>
 
 #include "casteljau/algo/flatten.hpp"
+#include "casteljau/algo/intersect_band.hpp"
+#include "casteljau/algo/intersect_common.hpp"
 #include "casteljau/algo/intersect_low_degree.hpp"
 #include "casteljau/basis/bernstein_poly.hpp"
 #include "casteljau/core/segment.hpp"
@@ -57,18 +60,6 @@ struct Intersections {
 
 namespace detail::isect {
 
-template <class T>
-using Piece = BezierPiece<T, 2>;
-
-/// Part [lo, hi] of piece `piece` (its own parameters) on which both coordinates are
-/// monotone: a graph over x and over y, so it cannot meet itself, and two such arcs that
-/// coincide somewhere coincide on one interval whose ends are arc ends.
-template <class T>
-struct Arc {
-  std::size_t piece;
-  T lo, hi;
-};
-
 /// The curve prepared for intersection: its pieces translated and scaled by a power of
 /// two (shared by both curves, so that coordinates are O(1)), and its monotone arcs.
 template <class T>
@@ -81,23 +72,6 @@ struct Prepared {
   std::vector<Box<T, 2>> arc_boxes;  // control box of each arc's part
   T size = 0;  // diagonal of the control box, in unit coordinates
 };
-
-template <class T>
-Point<T, 2> at(const Piece<T>& c, T t) {
-  return std::visit([&](const auto& x) { return x(t); }, c);
-}
-template <class T>
-Vector<T, 2> derivative(const Piece<T>& c, T t, int k = 1) {
-  return std::visit([&](const auto& x) { return x.derivative_at(t, k); }, c);
-}
-template <class T>
-const std::vector<Point<T, 2>>& points(const Piece<T>& c) {
-  return std::visit([](const auto& x) -> const std::vector<Point<T, 2>>& { return x.points(); }, c);
-}
-template <class T>
-int degree(const Piece<T>& c) {
-  return static_cast<int>(points(c).size()) - 1;
-}
 
 /// Bernstein coefficients of the numerator of coordinate k minus X: w_i (P_ik - X)
 /// (weights 1 for a polynomial piece). Its roots are where the piece meets the line
@@ -166,64 +140,6 @@ SegmentClosest<T> chord_closest(const Point<T, 2>& p0, const Point<T, 2>& p1, co
   return {u, v, norm((p0 + u * (p1 - p0)) - (q0 + v * (q1 - q0)))};
 }
 
-/// A start for the refinement (piece parameters s of a, t of b). `edge` marks one placed
-/// at an arc end by a band (see band()): it stands for its near region only when the
-/// region has no other point (solve() decides).
-template <class T>
-struct Seed {
-  T s, t;
-  bool edge = false;
-};
-
-/// Tolerances of one intersection problem, in unit coordinates.
-template <class T>
-struct Context {
-  T tol;    // near-miss distance: points closer than this are common points
-  T flat;   // subdivision stops when both parts are within `flat` of their chords
-  T slack;  // box rejection slack: tol plus rounding
-  std::size_t nodes = 0;
-  std::size_t node_limit = 0;
-  bool exhausted = false;  // node_limit reached: the seeds are incomplete
-  std::vector<Seed<T>> seeds;
-  // The pieces and arcs being intersected (piece parameters): band() extends parts along them.
-  const Piece<T>* a = nullptr;
-  const Piece<T>* b = nullptr;
-  const Arc<T>* ra = nullptr;
-  const Arc<T>* rb = nullptr;
-  bool near = false;  // a band lies within tol of the other curve all along: test for an overlap
-  bool stop_on_near = false;  // stop the subdivision once near (the overlap test comes first)
-};
-
-/// The tangent cone of a Bézier or rational Bézier part: the directions of its control
-/// polygon's legs P_(i+1) - P_i, which contain every tangent direction (for rational
-/// pieces too: the derivative is a non-negative combination of the P_j - P_i [Floater92]),
-/// as angles [lo, hi] relative to the first non-zero leg `ref`. False when every leg is
-/// zero or the cone is wider than 0.5 rad (not worth testing).
-template <class T>
-struct Cone {
-  Vector<T, 2> ref;
-  T lo, hi;
-};
-template <class C>
-std::optional<Cone<typename C::Scalar>> tangent_cone(const C& c) {
-  using T = typename C::Scalar;
-  const auto& P = c.points();
-  std::optional<Cone<T>> k;
-  for (std::size_t i = 0; i + 1 < P.size(); ++i) {
-    const Vector<T, 2> v = P[i + 1] - P[i];
-    if (v[0] == 0 && v[1] == 0) continue;
-    if (!k) {
-      k = Cone<T>{v, 0, 0};
-      continue;
-    }
-    const T a = std::atan2(cross(k->ref, v), dot(k->ref, v));
-    k->lo = std::min(k->lo, a);
-    k->hi = std::max(k->hi, a);
-    if (k->hi - k->lo > T(0.5)) return std::nullopt;
-  }
-  return k;
-}
-
 /// Whether no tangent line of one part is parallel to a tangent line of the other: then
 /// the parts meet at most once [SederbergMeyers88] and one refined seed finds the point.
 template <class T>
@@ -266,299 +182,6 @@ bool fat_line_apart(const CA& a, const CB& b, typename CA::Scalar slack) {
     if (!above && !below) return false;
   }
   return true;
-}
-
-/// Bernstein coefficients on [0, 1] of a part c(u) = (X(u), Y(u)) / W(u): W = {1} for a
-/// polynomial part, the weights scaled to at most 1 for a rational one.
-template <class T>
-struct Homogeneous {
-  std::vector<T> x, y, w;
-};
-template <class T>
-Homogeneous<T> homogeneous(const Bezier<T, 2>& c) {
-  Homogeneous<T> h;
-  for (const auto& p : c.points()) {
-    h.x.push_back(p[0]);
-    h.y.push_back(p[1]);
-  }
-  h.w = {T(1)};
-  return h;
-}
-template <class T>
-Homogeneous<T> homogeneous(const RationalBezier<T, 2>& c) {
-  Homogeneous<T> h;
-  const auto& P = c.points();
-  const auto& w = c.weights();
-  const T wmax = *std::max_element(w.begin(), w.end());
-  for (std::size_t i = 0; i < P.size(); ++i) {
-    const T wi = w[i] / wmax;
-    h.x.push_back(wi * P[i][0]);
-    h.y.push_back(wi * P[i][1]);
-    h.w.push_back(wi);
-  }
-  return h;
-}
-
-/// The numerator Q = X' W - X W' of the derivative c' = Q / W^2 (X' for a polynomial).
-template <class T>
-std::array<std::vector<T>, 2> hodograph_numerator(const Homogeneous<T>& h) {
-  if (h.w.size() == 1) return {bernstein_derivative_coefficients<T>(h.x), bernstein_derivative_coefficients<T>(h.y)};
-  const std::vector<T> dw = bernstein_derivative_coefficients<T>(h.w);
-  auto one = [&](const std::vector<T>& x) {
-    return bernstein_difference<T>(bernstein_product<T>(bernstein_derivative_coefficients<T>(x), h.w), bernstein_product<T>(x, dw));
-  };
-  return {one(h.x), one(h.y)};
-}
-
-template <class T>
-T max_abs(const std::vector<T>& c) {
-  T m = 0;
-  for (T x : c) m = std::max(m, std::abs(x));
-  return m;
-}
-
-/// Largest angle (radians) between a band's direction e and a tangent of either part.
-/// Within it, e . c(u) is monotone along both parts, and along a stretch of arc length L
-/// the curves advance by at least cos(2 band_angle) L = 0.98 L along any tangent of theirs.
-inline constexpr double band_angle = 0.1;
-/// Highest degree a band takes (its separation polynomial has degree 2 n - 1, about 4 n
-/// for rational pieces): above it, plain subdivision. Above the command line's limit
-/// (500): bands cost O(n^2) per node, and near-coincident curves of degree 30 / 80 turned
-/// by 1e-9 take 9 / 88 ms with them, 6.6 / 33 s without; random pairs of degree 200 to
-/// 500 cost the same either way (bands seldom apply to them).
-inline constexpr int band_max_degree = 512;
-
-/// Bounds of a part h whose tangents lie within band_angle of e: a bound of its curvature
-/// (|c''| / |c'|^2, from the convex hulls of Q, Q', W and W'), and min e . Q, max |Q|.
-/// Nothing when a tangent may leave the cone.
-template <class T>
-struct PartBounds {
-  T curvature, q_along, q_max;
-};
-template <class T>
-std::optional<PartBounds<T>> part_bounds(const Homogeneous<T>& h, const Vector<T, 2>& e) {
-  const auto q = hodograph_numerator(h);
-  const T slope = std::tan(T(band_angle));
-  T q_along = std::numeric_limits<T>::infinity(), q_max = 0;
-  for (std::size_t i = 0; i < q[0].size(); ++i) {
-    const Vector<T, 2> v{q[0][i], q[1][i]};
-    const T along = dot(e, v);
-    if (!(along > 0) || !(std::abs(cross(e, v)) <= slope * along)) return std::nullopt;
-    q_along = std::min(q_along, along);
-    q_max = std::max(q_max, norm(v));
-  }
-  T q2_max = 0;
-  if (q[0].size() > 1) {
-    const auto dx = bernstein_derivative_coefficients<T>(q[0]), dy = bernstein_derivative_coefficients<T>(q[1]);
-    for (std::size_t i = 0; i < dx.size(); ++i) q2_max = std::max(q2_max, norm(Vector<T, 2>{dx[i], dy[i]}));
-  }
-  const T w_min = *std::min_element(h.w.begin(), h.w.end()), w_max = *std::max_element(h.w.begin(), h.w.end());
-  const T w1_max = h.w.size() > 1 ? max_abs(bernstein_derivative_coefficients<T>(h.w)) : T(0);
-  // c' = Q / W^2 and c'' = (Q' W - 2 Q W') / W^3.
-  const T speed = q_along / (w_max * w_max), accel = (q2_max * w_max + 2 * q_max * w1_max) / (w_min * w_min * w_min);
-  if (!(speed > 0) || !(w_min > 0)) return std::nullopt;
-  return PartBounds<T>{accel / (speed * speed), q_along, q_max};
-}
-
-/// The parameter in [lo, hi] of piece c where e . c = X, when e . c is monotone there
-/// (either way): Newton's method kept inside the bracket (bisection when it leaves it);
-/// the nearer end when X is outside the range.
-template <class T>
-T solve_projection(const Piece<T>& c, const Vector<T, 2>& e, T X, T lo, T hi) {
-  auto f = [&](T u) { return dot(e, at(c, u).to_vector()) - X; };
-  T flo = f(lo), fhi = f(hi);
-  if (flo == 0) return lo;
-  if (fhi == 0) return hi;
-  if ((flo > 0) == (fhi > 0)) return std::abs(flo) <= std::abs(fhi) ? lo : hi;
-  T u = lo - flo * (hi - lo) / (fhi - flo);  // the secant's first guess
-  for (int it = 0; it < 200 && hi - lo > 4 * std::numeric_limits<T>::epsilon() * std::max(T(1), std::abs(hi)); ++it) {
-    const T m = u > lo && u < hi ? u : lo + (hi - lo) / 2;
-    const T fm = f(m);
-    if (fm == 0) return m;
-    const T slope = dot(e, derivative(c, m));
-    u = slope != 0 ? m - fm / slope : m;
-    if (std::abs(u - m) <= 2 * std::numeric_limits<T>::epsilon() * std::max(T(1), std::abs(m))) return m;
-    if ((fm > 0) == (flo > 0)) {
-      lo = m;
-      flo = fm;
-    } else {
-      hi = m;
-      fhi = fm;
-    }
-  }
-  return std::abs(flo) <= std::abs(fhi) ? lo : hi;
-}
-
-/// The part of piece c on [lo, hi] as a piece of its own on [0, 1], reversed if asked.
-template <class T>
-Piece<T> piece_part(const Piece<T>& c, T lo, T hi, bool reversed) {
-  return std::visit(
-      [&](const auto& x) -> Piece<T> {
-        auto p = part(x, lo, hi);
-        if (reversed) return p.reverse();
-        return p;
-      },
-      c);
-}
-
-/// What band() made of a pair of parts.
-enum class BandResult {
-  done,     ///< the pair is decided (seeds emitted, or none)
-  no,       ///< not a band here; smaller parts may be
-  too_far,  ///< the curves are too far apart for the bound (E > 0.05 tol): plain subdivision below
-};
-
-/// Near-coincident parts a on [alo, ahi] and b on [blo, bhi] (piece parameters) of the
-/// arcs in ctx, decided at once (done) instead of subdivided down to the near-miss
-/// distance; otherwise plain subdivision goes on (trying bands again below unless the
-/// curves are too far apart for the bound: their matched difference D hardly shrinks
-/// with the parts, and a failed attempt costs about as much as 20 subdivision steps).
-///
-/// Applies when every tangent of both parts lies within band_angle of one direction e (b
-/// possibly running the other way) and the curves are close: both parts are extended
-/// along their arcs to a common range [X0, X1] of x = e . p (cores A(u), B(u), u in [0, 1],
-/// matched at the ends), and the separation of A(u) from the curve b is the signed
-/// distance beta(u) of A(u) from the tangent of b at B(u), up to E = 4.5 K |D|^2 (K a
-/// curvature bound of b there, D = A - B: the foot of A(u) on b lies within 3 |D| of B(u)
-/// along b, where b stays within K (3 |D|)^2 / 2 of its tangent; farther points advance
-/// by more than 0.98 of their arc length). With A = (X, Y) / W, B' = Q / W_B^2:
-///   beta(u) = h(u) / (W_A W_B |Q|)(u),  h = Q x (X_A W_B - X_B W_A),
-/// a polynomial h in Bernstein form. Decisions, all from h:
-///  - sign changes of h (its roots): crossings; local minima of |h| where |beta| may be
-///    within tol: touches (the refinement then finds the closest approach); an arc end
-///    where |beta| may be within 2.5 tol (a part beyond the other arc's end may come
-///    within tol of it only there): an edge seed (the curves may meet at the arc end,
-///    or the near region continue into the next arc: solve() decides which);
-///  - h within tol everywhere: the parts may overlap (ctx.near: the overlap test runs).
-/// Seeds are kept only where both parameters lie in the parts, to the rounding of the
-/// roots (neighbouring pairs of parts see the rest). Requires E <= 0.05 tol (curves within
-/// about 1e-7 of each other) and degrees up to band_max_degree. Cost: a few products and
-/// two root solves of polynomials of degree 2 n - 1 (4 n - 1 for rational parts),
-/// independent of how close the curves run: a cubic and its copy 2e-10 of its size away
-/// take a few band nodes where subdivision took 10^5 parts. [SederbergNishita90 for the
-/// fat-line form of the separation; the bound is ours.]
-template <class T, class CA, class CB>
-BandResult band(const CA& a, T alo, T ahi, const CB& b, T blo, T bhi, Context<T>& ctx) {
-  if (!ctx.a || !ctx.b) return BandResult::no;
-  const int na = static_cast<int>(a.points().size()) - 1, nb = static_cast<int>(b.points().size()) - 1;
-  if (na > band_max_degree || nb > band_max_degree) return BandResult::no;
-  const auto ka = tangent_cone(a), kb = tangent_cone(b);
-  if (!ka || !kb || ka->hi - ka->lo > T(band_angle) || kb->hi - kb->lo > T(band_angle)) return BandResult::no;
-  const T mid = (ka->lo + ka->hi) / 2;
-  const Vector<T, 2> r = ka->ref / norm(ka->ref);
-  const Vector<T, 2> e{std::cos(mid) * r[0] - std::sin(mid) * r[1], std::sin(mid) * r[0] + std::cos(mid) * r[1]};
-  const bool reversed = dot(e, kb->ref) < 0;
-  const Piece<T>& pa = *ctx.a;
-  const Piece<T>& pb = *ctx.b;
-  const Arc<T>& ra = *ctx.ra;
-  const Arc<T>& rb = *ctx.rb;
-  auto xa = [&](T u) { return dot(e, at(pa, u).to_vector()); };
-  auto xb = [&](T v) { return dot(e, at(pb, v).to_vector()); };
-  const T xa0 = xa(alo), xa1 = xa(ahi);
-  // b's parameters at its low and high x end.
-  const T b_low = reversed ? bhi : blo, b_high = reversed ? blo : bhi;
-  const T b_arc_low = reversed ? rb.hi : rb.lo, b_arc_high = reversed ? rb.lo : rb.hi;
-  const T xb0 = xb(b_low), xb1 = xb(b_high);
-  if (!(xa0 < xa1) || !(xb0 < xb1)) return BandResult::no;
-  // The arcs' own x ranges bound the common range below (when x is monotone along them;
-  // when not, the cores' cone test below fails anyway): nothing to extend to when they
-  // barely overlap, as for consecutive arcs of one curve meeting end to end.
-  const T width = std::max(xa1 - xa0, xb1 - xb0);
-  if (!(std::min(xa(ra.hi), xb(b_arc_high)) - std::max(xa(ra.lo), xb(b_arc_low)) > T(1e-10) * width)) return BandResult::no;
-  // Both parts extended along their arcs over the union of their x ranges, then the
-  // common range of the extensions.
-  const T U0 = std::min(xa0, xb0), U1 = std::max(xa1, xb1);
-  const T ea0 = U0 < xa0 ? solve_projection(pa, e, U0, ra.lo, alo) : alo;
-  const T ea1 = U1 > xa1 ? solve_projection(pa, e, U1, ahi, ra.hi) : ahi;
-  const T eb0 = U0 < xb0 ? solve_projection(pb, e, U0, std::min(b_arc_low, b_low), std::max(b_arc_low, b_low)) : b_low;
-  const T eb1 = U1 > xb1 ? solve_projection(pb, e, U1, std::min(b_arc_high, b_high), std::max(b_arc_high, b_high)) : b_high;
-  const T X0 = std::max(xa(ea0), xb(eb0)), X1 = std::min(xa(ea1), xb(eb1));
-  // A common range at the rounding of the parts' extent: parts that only touch end to end
-  // (consecutive arcs of one curve), left to subdivision.
-  if (!(X1 - X0 > T(1e-10) * width)) return BandResult::no;
-  const T ca0 = xa(ea0) >= X0 ? ea0 : solve_projection(pa, e, X0, ea0, ea1);
-  const T ca1 = xa(ea1) <= X1 ? ea1 : solve_projection(pa, e, X1, ea0, ea1);
-  const T cb0 = xb(eb0) >= X0 ? eb0 : solve_projection(pb, e, X0, std::min(eb0, eb1), std::max(eb0, eb1));
-  const T cb1 = xb(eb1) <= X1 ? eb1 : solve_projection(pb, e, X1, std::min(eb0, eb1), std::max(eb0, eb1));
-  if (!(ca0 < ca1) || !(reversed ? cb1 < cb0 : cb0 < cb1)) return BandResult::no;
-  // Cores (B oriented along e) and the span of b the bound must cover (core and part).
-  const Piece<T> A = piece_part(pa, ca0, ca1, false);
-  const Piece<T> B = piece_part(pb, std::min(cb0, cb1), std::max(cb0, cb1), reversed);
-  const T sb0 = std::min({cb0, cb1, blo}), sb1 = std::max({cb0, cb1, bhi});
-  const Homogeneous<T> HA = std::visit([](const auto& x) { return homogeneous(x); }, A);
-  const Homogeneous<T> HB = std::visit([](const auto& x) { return homogeneous(x); }, B);
-  const auto qb = part_bounds(HB, e);
-  if (!qb || !part_bounds(HA, e)) return BandResult::no;
-  const bool span_is_core = sb0 == std::min(cb0, cb1) && sb1 == std::max(cb0, cb1);
-  const auto span_b =
-      span_is_core ? qb : part_bounds(std::visit([](const auto& x) { return homogeneous(x); }, piece_part(pb, sb0, sb1, reversed)), e);
-  if (!span_b) return BandResult::no;
-  // D = R / (W_A W_B), R = X_A W_B - X_B W_A; h = Q x R.
-  const auto rx = bernstein_difference<T>(bernstein_product<T>(HA.x, HB.w), bernstein_product<T>(HB.x, HA.w));
-  const auto ry = bernstein_difference<T>(bernstein_product<T>(HA.y, HB.w), bernstein_product<T>(HB.y, HA.w));
-  const auto q = hodograph_numerator(HB);
-  const auto h = bernstein_difference<T>(bernstein_product<T>(q[0], ry), bernstein_product<T>(q[1], rx));
-  const T wa_min = *std::min_element(HA.w.begin(), HA.w.end()), wa_max = *std::max_element(HA.w.begin(), HA.w.end());
-  const T wb_min = *std::min_element(HB.w.begin(), HB.w.end()), wb_max = *std::max_element(HB.w.begin(), HB.w.end());
-  T d_max = 0;
-  for (std::size_t i = 0; i < rx.size(); ++i) d_max = std::max(d_max, norm(Vector<T, 2>{rx[i], ry[i]}));
-  d_max /= wa_min * wb_min;
-  const T E = T(4.5) * span_b->curvature * d_max * d_max;
-  if (!(E <= T(0.05) * ctx.tol)) return BandResult::too_far;
-  // |beta| >= |h| / den_hi everywhere; |beta| <= |h| / den_lo.
-  const T den_hi = wa_max * wb_max * qb->q_max, den_lo = wa_min * wb_min * qb->q_along;
-  const T near_hi = (ctx.tol + E) * den_hi;
-  const T h_max = max_abs(h);
-  if (std::all_of(h.begin(), h.end(), [&](T c) { return c > T(2.5) * near_hi; }) ||
-      std::all_of(h.begin(), h.end(), [&](T c) { return c < T(-2.5) * near_hi; }))
-    return BandResult::done;  // apart by more than 2 tol all along: nothing (arc ends included)
-  if (h_max <= (ctx.tol - E) * den_lo) ctx.near = true;
-  // Membership of a seed in the parts, with a slack above the roots' accuracy: h is
-  // rounded to about 32 eps max|Q| max|coordinate| (the cores' de Casteljau steps and the
-  // products), so a root moves by that over |h'| (eps over the crossing angle: 1e-8 at an
-  // angle of 1e-8), and neighbouring parts computing it differently must not both drop
-  // it. The duplicates let through merge later (merge_fraction, or as one touch).
-  T coordinate_max = 0;
-  for (const auto* c : {&HA.x, &HA.y, &HB.x, &HB.y}) coordinate_max = std::max(coordinate_max, max_abs(*c));
-  const T h_noise = 32 * std::numeric_limits<T>::epsilon() * coordinate_max * qb->q_max;
-  const auto dh = bernstein_derivative_coefficients<T>(h);
-  auto emit = [&](T u, bool edge) {
-    const T slope = std::abs(bernstein_value<T>(dh, u));
-    const T du = slope > 0 ? std::min(T(1e-2), 2 * h_noise / slope) : T(1e-2);
-    const T slack_a = std::max(T(1e-7), du * (ca1 - ca0)), slack_b = std::max(T(1e-7), du * std::abs(cb1 - cb0));
-    const T s = ca0 + u * (ca1 - ca0), t = cb0 + u * (cb1 - cb0);
-    if (s < alo - slack_a || s > ahi + slack_a || t < blo - slack_b || t > bhi + slack_b) return;
-    ctx.seeds.push_back({std::clamp(s, ra.lo, ra.hi), std::clamp(t, rb.lo, rb.hi), edge});
-  };
-  // Roots of h closer than 1e-6 (of the core) are one crossing blurred by rounding (h
-  // crosses zero at a slope of the crossing angle: at 1e-9 its rounding noise spans about
-  // 1e-8 in u): the middle root of each cluster stands for it.
-  const std::vector<T> roots = bernstein_roots<T>(h);
-  constexpr T cluster = T(1e-6);
-  for (std::size_t i = 0; i < roots.size();) {
-    std::size_t j = i + 1;
-    while (j < roots.size() && roots[j] - roots[j - 1] <= cluster) ++j;
-    emit(roots[i + (j - i - 1) / 2], false);
-    i = j;
-  }
-  auto near_root = [&](T u) {
-    const auto it = std::lower_bound(roots.begin(), roots.end(), u);
-    return (it != roots.end() && *it - u <= cluster) || (it != roots.begin() && u - *(it - 1) <= cluster);
-  };
-  if (h.size() > 2) {
-    const auto d2h = bernstein_derivative_coefficients<T>(dh);
-    for (T u : bernstein_roots<T>(dh)) {
-      const T hu = bernstein_value<T>(h, u);
-      // A local minimum of |h| (h'' of the sign of h) where the curves may be within tol,
-      // deeper than the rounding of h below both ends of the core (a flat h, in a core
-      // shorter than the curves' offset or along an overlap, has minima of noise only).
-      const T depth = std::min(std::abs(h.front()), std::abs(h.back())) - std::abs(hu);
-      if (std::abs(hu) <= near_hi && hu * bernstein_value<T>(d2h, u) >= 0 && !near_root(u) && depth > 4 * h_noise) emit(u, false);
-    }
-  }
-  if ((ca0 == ra.lo || cb0 == b_arc_low) && std::abs(h.front()) <= T(2.5) * near_hi) emit(T(0), true);
-  if ((ca1 == ra.hi || cb1 == b_arc_high) && std::abs(h.back()) <= T(2.5) * near_hi) emit(T(1), true);
-  return BandResult::done;
 }
 
 /// Largest number of subdivision steps one pair of arcs may take; a pair of transversal
@@ -605,12 +228,20 @@ void subdivide(const CA& a, T alo, T ahi, int da, const CB& b, T blo, T bhi, int
   }
   // Near-coincident parts (narrow tangent cones along one direction): decided at once on
   // the separation polynomial instead of subdivided down to the near-miss distance.
+  bool split_longer = false;
   if (bands) {
     const BandResult r = band(a, alo, ahi, b, blo, bhi, ctx);
     if (r == BandResult::done) return;
     bands = r != BandResult::too_far;
+    // A part much longer than the other (a line against a short stretch of a curve near
+    // a touch) stretches the other's core out of the cone: the longer one is split, flat
+    // or not, until bands apply (else two crossings in one pair of flat parts would give
+    // one seed, and one of them would be missed).
+    split_longer = r == BandResult::too_long;
   }
-  if (!fa && (fb || diagonal(ba) >= diagonal(bb))) {
+  const bool split_a = split_longer ? da < max_depth && (diagonal(ba) >= diagonal(bb) || db >= max_depth)
+                                    : !fa && (fb || diagonal(ba) >= diagonal(bb));
+  if (split_a) {
     const auto h = a.split(T(0.5));
     const T m = alo + (ahi - alo) / 2;
     subdivide(h.left, alo, m, da + 1, b, blo, bhi, db, ctx, bands);
@@ -939,19 +570,24 @@ Point<T, 2> unit_at(const Pieces<T, 2>& c, const Prepared<T>& P, T g) {
   return at(P.unit[p], c.local_parameter(p, g));
 }
 
-/// The distance from q to curve c near its parameter t (unit frame): Newton's method on
-/// (c(t) - q) . c'(t) from t, over the pieces, within the domain; the least distance seen
-/// (an upper bound of the distance to the curve, exact at a converged foot point).
+/// The foot of q on curve c near its parameter t (unit frame): Newton's method on
+/// (c(t) - q) . c'(t) from t, over the pieces, within the domain; the parameter of the
+/// least distance seen and that distance (an upper bound of the distance to the curve,
+/// exact at a converged foot point).
 template <class T>
-T distance_near(const Pieces<T, 2>& c, const Prepared<T>& P, const Point<T, 2>& q, T t) {
+struct Foot {
+  T t, distance;
+};
+template <class T>
+Foot<T> foot_near(const Pieces<T, 2>& c, const Prepared<T>& P, const Point<T, 2>& q, T t) {
   const Interval<T> dom = c.domain();
-  T best = std::numeric_limits<T>::infinity();
+  Foot<T> best{t, std::numeric_limits<T>::infinity()};
   for (int it = 0; it < 12; ++it) {
     const std::size_t p = c.segment_index(t);
     const T s = c.local_parameter(p, t), k = c.own_domain(p).length() / c.segment_domain(p).length();
     const Point<T, 2> x = at(P.unit[p], s);
     const Vector<T, 2> e = x - q, d1 = k * derivative(P.unit[p], s), d2 = (k * k) * derivative(P.unit[p], s, 2);
-    best = std::min(best, norm(e));
+    if (norm(e) < best.distance) best = {t, norm(e)};
     const T den = dot(d1, d1) + dot(e, d2);
     if (!(den > 0)) break;
     const T t2 = std::clamp(t - dot(e, d1) / den, dom.lo, dom.hi);
@@ -959,6 +595,111 @@ T distance_near(const Pieces<T, 2>& c, const Prepared<T>& P, const Point<T, 2>& 
     t = t2;
   }
   return best;
+}
+
+/// The distance from q to curve c near its parameter t (see foot_near).
+template <class T>
+T distance_near(const Pieces<T, 2>& c, const Prepared<T>& P, const Point<T, 2>& q, T t) {
+  return foot_near(c, P, q, t).distance;
+}
+
+/// The unit direction of curve c at its parameter g (pieces chosen as evaluation does).
+template <class T>
+Vector<T, 2> direction_at(const Pieces<T, 2>& c, const Prepared<T>& P, T g) {
+  const std::size_t p = c.segment_index(g);
+  return direction(P.unit[p], c.local_parameter(p, g));
+}
+
+/// A curve's domain and whether the curve is closed (its ends within the near-miss
+/// distance): on a closed curve the way between two parameters may pass its closing point.
+template <class T>
+struct Loop {
+  Interval<T> dom;
+  bool closed = false;
+  /// The difference d of two parameters, the short way round a closed curve.
+  T shortest(T d) const {
+    const T L = dom.length();
+    return closed && std::abs(d) > L / 2 ? d - std::copysign(L, d) : d;
+  }
+  /// A parameter up to one length beyond the domain of a closed curve, brought back in.
+  T wrap(T t) const {
+    if (!closed) return t;
+    return t < dom.lo ? t + dom.length() : t > dom.hi ? t - dom.length() : t;
+  }
+};
+
+/// The sine of the angle between unit tangents below which a common point counts as a
+/// touch rather than a crossing when merging points of one near region: 64 eps, the
+/// rounding of the cross product of two unit vectors computed from the curves (a few eps
+/// each) with margin. Crossings of a touch region meet at angles of about sqrt(K tol)
+/// (1e-6 or more at tol = 1e-10, K ~ 1), far above it.
+template <class T>
+inline constexpr T crossing_noise = 64 * std::numeric_limits<T>::epsilon();
+
+/// The parameters of a touch region's ends: common points (ta0, tb0) and (ta1, tb1) of
+/// curves a and b, ta0 <= ta1, between which the curves stay within the near-miss distance
+/// (unwrapped round the closing point of a closed curve: ta1 may exceed its domain).
+template <class T>
+struct TouchSpan {
+  T ta0, tb0, ta1, tb1;
+};
+
+/// The touch of curves a and b in a touch region (two crossings at a tiny angle, or points
+/// near a touch): where the curves are closest, or farthest apart between two crossings,
+/// i.e. the extremum of the signed separation of a(s) from b. Its derivative along a is
+/// a'(s) . n_b at the foot of a(s) on b, so the touch is the root of g(s) = u_a(s) x u_b(t(s))
+/// (unit tangents, t(s) the foot: tangents parallel). g changes sign between two crossings
+/// (a passes b one way, then back), so the root is bracketed by the span's ends: regula
+/// falsi with the Illinois modification [DowellJarratt71] to the resolution of the
+/// parameters, at most 100 steps (a few tens). A simple root where the curvatures differ:
+/// located to about eps over the difference of the curvatures (what polish_touch reaches).
+/// Nothing when g does not change sign over the span or vanishes (to crossing_noise) at an
+/// end, or when the touch is farther apart than tol.
+template <class T>
+std::optional<Hit<T>> touch_in(const Pieces<T, 2>& ca, const Prepared<T>& A, const Loop<T>& la, const Pieces<T, 2>& cb,
+                               const Prepared<T>& B, const Loop<T>& lb, const TouchSpan<T>& span, T tol) {
+  constexpr T eps = std::numeric_limits<T>::epsilon();
+  auto foot = [&](T s) {
+    // b's parameter interpolated along the span: the start of the foot's Newton steps.
+    const T f = span.ta1 > span.ta0 ? (s - span.ta0) / (span.ta1 - span.ta0) : T(0.5);
+    return foot_near(cb, B, unit_at(ca, A, la.wrap(s)), lb.wrap(span.tb0 + f * (span.tb1 - span.tb0)));
+  };
+  auto g = [&](T s) { return cross(direction_at(ca, A, la.wrap(s)), direction_at(cb, B, foot(s).t)); };
+  T lo = span.ta0, hi = span.ta1, glo = g(lo), ghi = g(hi);
+  T s = lo;
+  // Ends where the tangents are parallel to rounding (a touch found as such, not a
+  // crossing) bracket nothing.
+  if (!(std::abs(glo) > crossing_noise<T>) || !(std::abs(ghi) > crossing_noise<T>) || (glo > 0) == (ghi > 0) || !(hi > lo)) {
+    return std::nullopt;
+  } else {
+    int side = 0;
+    for (int it = 0; it < 100 && hi - lo > 4 * eps * std::max(T(1), std::abs(lo)); ++it) {
+      T m = (lo * ghi - hi * glo) / (ghi - glo);
+      if (!(m > lo && m < hi)) m = lo + (hi - lo) / 2;
+      const T gm = g(m);
+      if (gm == 0) {
+        lo = hi = m;
+        break;
+      }
+      if ((gm > 0) == (ghi > 0)) {
+        hi = m;
+        ghi = gm;
+        if (side == 1) glo /= 2;
+        side = 1;
+      } else {
+        lo = m;
+        glo = gm;
+        if (side == -1) ghi /= 2;
+        side = -1;
+      }
+    }
+    s = std::abs(glo) <= std::abs(ghi) ? lo : hi;
+  }
+  const Foot<T> ft = foot(s);
+  if (!(ft.distance <= tol)) return std::nullopt;
+  s = la.wrap(s);
+  const std::size_t pa = ca.segment_index(s), pb = cb.segment_index(ft.t);
+  return Hit<T>{s, ft.t, pa, pb, ca.local_parameter(pa, s), cb.local_parameter(pb, ft.t), ft.distance, true};
 }
 
 /// Whether curves a and b, common at (ta, tb) (the end of an overlap), are still within
@@ -979,10 +720,6 @@ bool near_beyond(const Pieces<T, 2>& ca, const Prepared<T>& A, const Pieces<T, 2
   const T ta2 = std::clamp(ta + k * da, dom_a.lo, dom_a.hi), tb2 = std::clamp(tb + k * db, dom_b.lo, dom_b.hi);
   // A curve that turns back at the end (a fold: a curve running over itself along a line)
   // does not continue the overlap, whatever its points.
-  auto direction_at = [](const Pieces<T, 2>& c, const Prepared<T>& P, T g) {
-    const std::size_t p = c.segment_index(g);
-    return direction(P.unit[p], c.local_parameter(p, g));
-  };
   if (dot(direction_at(ca, A, ta - da / 64), direction_at(ca, A, ta + k * da / 64)) < 0 ||
       dot(direction_at(cb, B, tb - db / 64), direction_at(cb, B, tb + k * db / 64)) < 0)
     return false;
@@ -1101,10 +838,35 @@ Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
   // crossing or touch at a tiny angle, seen between joints of pieces or arcs: two circles of
   // radius 1 with centres d apart meet at an angle d and stay within tol over 2 tol / d
   // around each crossing): its points are reported instead, as they are off the joints.
+  //
+  // Nor is one that holds no whole monotone arc of either curve (its ends are joints or
+  // arc ends of both, staggered) while a crosses b inside it: the signed separation at
+  // its two ends of opposite signs, both beyond tol / 8 (coincident curves are apart by
+  // rounding only, about 1e-16 of the size; an offset copy within the distance keeps one
+  // side). That is a crossing at a small angle theta cut between joints closer than its
+  // near region (2 tol / theta long): two NURBS unit circles with centres d = 1.4e-5 ..
+  // 2.4e-5 apart along x, whose crossings lie between the joints of their quarters d
+  // apart, are within d^2 / 2 there but 1.5 d^2 > tol as far again beyond.
+  auto signed_gap = [&](T ta, T tb) {
+    const Point<T, 2> p = unit_at(ca, A, ta);
+    const Foot<T> f = foot_near(*cb, PB, p, tb);
+    return std::copysign(f.distance, cross(direction_at(*cb, PB, f.t), p - unit_at(*cb, PB, f.t)));
+  };
+  auto covers_arc = [](const Pieces<T, 2>& c, const Prepared<T>& P, T lo, T hi) {
+    const T m = T(1e-9) * c.domain().length();
+    for (const auto& r : P.arcs)
+      if (c.global_parameter(r.piece, r.lo) >= lo - m && c.global_parameter(r.piece, r.hi) <= hi + m) return true;
+    return false;
+  };
   std::vector<CurveOverlap<T>> joined;
   for (auto& [o, found, deferred] : candidates) {
-    const bool continues = near_beyond(ca, A, *cb, PB, o.a.lo, o.b_start, -(o.a.hi - o.a.lo), o.b_start - o.b_end, tol) ||
-                           near_beyond(ca, A, *cb, PB, o.a.hi, o.b_end, o.a.hi - o.a.lo, o.b_end - o.b_start, tol);
+    bool continues = near_beyond(ca, A, *cb, PB, o.a.lo, o.b_start, -(o.a.hi - o.a.lo), o.b_start - o.b_end, tol) ||
+                     near_beyond(ca, A, *cb, PB, o.a.hi, o.b_end, o.a.hi - o.a.lo, o.b_end - o.b_start, tol);
+    if (!continues && !covers_arc(ca, A, o.a.lo, o.a.hi) &&
+        !covers_arc(*cb, PB, std::min(o.b_start, o.b_end), std::max(o.b_start, o.b_end))) {
+      const T g0 = signed_gap(o.a.lo, o.b_start), g1 = signed_gap(o.a.hi, o.b_end);
+      continues = (g0 > 0) != (g1 > 0) && std::min(std::abs(g0), std::abs(g1)) > tol / 8;
+    }
     if (continues) {
       hits.insert(hits.end(), found.begin(), found.end());
       for (const auto& [i, j] : deferred) {
@@ -1138,7 +900,19 @@ Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
   const T window = T(1e3) * T(merge_fraction) * longest_a;
   std::vector<Hit<T>> edges;
   std::vector<std::vector<Hit<T>>> twins;  // per kept point: points merged into it, all common to rounding
+  std::vector<TouchSpan<T>> spans;  // per kept point: the extreme points of its touch region
   const T exact = T(1e-3) * tol;
+  // On a closed curve the way between two parameters may pass its closing point.
+  const Interval<T> dom_a = ca.domain(), dom_b = cb->domain();
+  const bool closed_a = distance(unit_at(ca, A, dom_a.lo), unit_at(ca, A, dom_a.hi)) <= tol;
+  const bool closed_b = distance(unit_at(*cb, PB, dom_b.lo), unit_at(*cb, PB, dom_b.hi)) <= tol;
+  const Loop<T> loop_a{dom_a, closed_a}, loop_b{dom_b, closed_b};
+  // A common point at which the curves cross (common to rounding, tangents apart by more
+  // than crossing_noise), not a touch.
+  auto crossing = [&](const Hit<T>& x) {
+    return x.distance <= exact &&
+           std::abs(cross(direction(A.unit[x.pa], x.sa), direction(PB.unit[x.pb], x.sb))) > crossing_noise<T>;
+  };
   for (const auto& h : hits) {
     // Inside (or at the end of) an overlap: part of it, not an isolated point.
     bool in_overlap = false;
@@ -1169,42 +943,82 @@ Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
       edges.push_back(h);
       continue;
     }
-    bool merged = false;
-    std::size_t first = kept.size();
-    while (first > 0 && kept[first - 1].ta >= h.ta - 4 * window) --first;
-    for (std::size_t ki = first; ki < kept.size(); ++ki) {
+    // h merges into kept point ki: the same point, or two points of one near region.
+    auto merge_into = [&](std::size_t ki) {
       auto& k = kept[ki];
       const T ma = T(merge_fraction) * piece_length(ca, h.pa), mb = T(merge_fraction) * piece_length(*cb, h.pb);
-      const T da = std::abs(k.ta - h.ta), db = std::abs(k.tb - h.tb);
+      const T dta = loop_a.shortest(h.ta - k.ta), dtb = loop_b.shortest(h.tb - k.tb);
+      const T da = std::abs(dta), db = std::abs(dtb);
+      // A point of a touch region already merged (see below): the touch is sought again
+      // over the span widened by it (h's parameters taken next to the span's).
+      auto widen = [&](TouchSpan<T> sp) {
+        const T hta = sp.ta0 + loop_a.shortest(h.ta - sp.ta0), htb = sp.tb0 + loop_b.shortest(h.tb - sp.tb0);
+        if (hta < sp.ta0) {
+          sp.ta0 = hta;
+          sp.tb0 = htb;
+        }
+        if (hta > sp.ta1) {
+          sp.ta1 = hta;
+          sp.tb1 = htb;
+        }
+        return sp;
+      };
       if (da <= ma && db <= mb && distance(at(A.unit[k.pa], k.sa), at(A.unit[h.pa], h.sa)) <= 1e4 * tol) {
-        // Both common to rounding (a crossing at a tiny angle, seen from neighbouring parts
-        // with roots blurred by eps / angle): the middle one in ta is kept, below.
-        if (h.distance <= exact && k.distance <= exact) {
+        if (k.touch) {
+          spans[ki] = widen(spans[ki]);
+          if (auto t = touch_in(ca, A, loop_a, *cb, PB, loop_b, spans[ki], tol)) k = *t;
+        } else if (h.distance <= exact && k.distance <= exact) {
+          // Both common to rounding (a crossing at a tiny angle, seen from neighbouring parts
+          // with roots blurred by eps / angle): the middle one in ta is kept, below.
           twins[ki].push_back(h);
         } else if (h.distance < k.distance) {
           k = h;
           twins[ki].clear();
         }
-        merged = true;
-        break;
+        return true;
       }
       // Two crossings between which the curves stay within the near-miss distance (the
-      // separation peaks near the middle) are one touch at that resolution: reported
-      // once, at the middle, as tangent.
+      // separation peaks between them) are one touch at that resolution: reported once,
+      // as tangent, where the separation peaks (touch_in), or at the middle when that
+      // cannot be located.
       if (da <= T(1e3) * ma && db <= T(1e3) * mb) {
-        const T mta = (k.ta + h.ta) / 2, mtb = (k.tb + h.tb) / 2;
-        if (distance(unit_at(ca, A, mta), unit_at(*cb, PB, mtb)) <= tol) {
-          const std::size_t pa = ca.segment_index(mta), pb = cb->segment_index(mtb);
-          k = Hit<T>{mta, mtb, pa, pb, ca.local_parameter(pa, mta), cb->local_parameter(pb, mtb), k.distance, true};
+        const T mta = loop_a.wrap(k.ta + dta / 2), mtb = loop_b.wrap(k.tb + dtb / 2);
+        if (distance_near(*cb, PB, unit_at(ca, A, mta), mtb) <= tol) {
+          const bool pair = !k.touch && crossing(k) && crossing(h);
+          if (k.touch || pair) {
+            spans[ki] = widen(k.touch ? spans[ki] : TouchSpan<T>{k.ta, k.tb, k.ta, k.tb});
+            if (auto t = touch_in(ca, A, loop_a, *cb, PB, loop_b, spans[ki], tol)) {
+              k = *t;
+            } else if (pair) {  // not located (no sign change of g): at the middle
+              const std::size_t pa = ca.segment_index(mta), pb = cb->segment_index(mtb);
+              k = Hit<T>{mta, mtb, pa, pb, ca.local_parameter(pa, mta), cb->local_parameter(pb, mtb), k.distance, true};
+            }
+          } else if (crossing(h) || (!crossing(k) && h.distance < k.distance)) {
+            // A crossing and a touch of one near region (the curves cross, then come within
+            // the distance again without crossing back): one point, the crossing; two
+            // touches: the closer one.
+            k = h;
+          }
           twins[ki].clear();
-          merged = true;
-          break;
+          return true;
         }
       }
+      return false;
+    };
+    bool merged = false;
+    std::size_t first = kept.size();
+    while (first > 0 && kept[first - 1].ta >= h.ta - 4 * window) --first;
+    for (std::size_t ki = first; ki < kept.size() && !merged; ++ki) merged = merge_into(ki);
+    // On a closed curve a, the points at the start of its domain are next to h near its
+    // end (the closing point: a point there is found at both ends of the domain).
+    if (closed_a && h.ta >= dom_a.hi - 4 * window) {
+      for (std::size_t ki = 0; ki < std::min<std::size_t>(first, 16) && !merged; ++ki)
+        if (std::abs(loop_a.shortest(kept[ki].ta - h.ta)) <= 4 * window) merged = merge_into(ki);
     }
     if (!merged) {
       kept.push_back(h);
       twins.emplace_back();
+      spans.push_back({h.ta, h.tb, h.ta, h.tb});
     }
   }
   for (std::size_t ki = 0; ki < kept.size(); ++ki) {
@@ -1213,27 +1027,19 @@ Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
     std::sort(twins[ki].begin(), twins[ki].end(), [](const auto& x, const auto& y) { return x.ta < y.ta; });
     kept[ki] = twins[ki][(twins[ki].size() - 1) / 2];
   }
+  // Sorted for the search below: merges move points within the window, and one at the
+  // closing point of a closed curve may have moved to the other end of its domain.
+  std::sort(kept.begin(), kept.end(), [](const auto& x, const auto& y) { return x.ta < y.ta; });
   // Points from edge seeds (arc ends inside a near region, see band()): one stands for its
   // region only if no other point does, i.e. if the curves part (beyond tol) between it
   // and each of its neighbours in ta among the points kept so far (the nearest 8 on each
   // side); the closest of several such points of one region is kept.
   std::sort(edges.begin(), edges.end(), [](const auto& x, const auto& y) { return x.distance < y.distance; });
-  // On a closed curve the way between two parameters may pass its closing point.
-  const Interval<T> dom_a = ca.domain(), dom_b = cb->domain();
-  const bool closed_a = distance(unit_at(ca, A, dom_a.lo), unit_at(ca, A, dom_a.hi)) <= tol;
-  const bool closed_b = distance(unit_at(*cb, PB, dom_b.lo), unit_at(*cb, PB, dom_b.hi)) <= tol;
-  auto shortest = [](T d, const Interval<T>& dom, bool closed) {
-    const T L = dom.length();
-    return closed && std::abs(d) > L / 2 ? d - std::copysign(L, d) : d;
-  };
-  auto wrap = [](T t, const Interval<T>& dom) {
-    return t < dom.lo ? t + dom.length() : t > dom.hi ? t - dom.length() : t;
-  };
   auto same_region = [&](const Hit<T>& x, const Hit<T>& y) {
-    const T da = shortest(y.ta - x.ta, dom_a, closed_a), db = shortest(y.tb - x.tb, dom_b, closed_b);
+    const T da = loop_a.shortest(y.ta - x.ta), db = loop_b.shortest(y.tb - x.tb);
     for (int j = 0; j <= 16; ++j) {
       const T f = static_cast<T>(j) / 16;
-      const T ta = wrap(x.ta + f * da, dom_a), tb = wrap(x.tb + f * db, dom_b);
+      const T ta = loop_a.wrap(x.ta + f * da), tb = loop_b.wrap(x.tb + f * db);
       if (!(distance_near(*cb, PB, unit_at(ca, A, ta), tb) <= tol)) return false;
     }
     return true;
@@ -1384,19 +1190,24 @@ std::optional<Intersections<T>> low_degree_pieces(const Pieces<T, 2>& pa, const 
 /// near-miss distance.
 ///
 /// Near regions (stretches where the curves stay within the near-miss distance): one
-/// point per crossing, one touch where they come within it without crossing, a point at
-/// an arc end only when nothing else represents its region. An overlap is reported where
-/// a monotone arc lies within the distance of the other curve all along, unless the
-/// curves still do so as far again past one of its ends (then it is a piece of a
-/// crossing or touch region, seen between joints, and that point is reported).
+/// point per crossing (two crossings with the curves within the distance between them
+/// are one touch, at the peak of the separation), one touch where they come within it
+/// without crossing, a point at an arc end only when nothing else represents its region.
+/// An overlap is reported where a monotone arc lies within the distance of the other
+/// curve all along, unless the curves still do so as far again past one of its ends, or
+/// it holds no whole arc and a crosses b inside it (then it is a piece of a crossing or
+/// touch region, seen between joints, and that point is reported).
 ///
 /// Guarantees and accuracy: a point is reported when the curves come within 1e-10 of
 /// their size (the larger control-box diagonal) there, and only then: near-misses
 /// farther apart are not reported. Transversal crossings are refined to full precision
-/// (parameters to a few eps relative, eps / sin(angle) near tangency); touches to about
-/// sqrt(eps) in the parameters, and reported once with kind `tangent` (tangent
-/// directions within 1e-6 radians). Points closer than 1e-6 of their pieces' parameter
-/// intervals in both parameters are merged into one. Overlaps are reported as parameter
+/// (parameters to a few eps relative, eps / sin(angle) near tangency); touches at the
+/// closest approach (or the peak of the separation between two crossings within the
+/// distance) to a few eps over the difference of the curvatures (polish_touch,
+/// touch_in), about sqrt(eps) where that is not found, and reported once with kind
+/// `tangent` (tangent directions within 1e-6 radians). Points closer than 1e-6 of their
+/// pieces' parameter intervals in both parameters are merged into one, round the closing
+/// point of a closed curve too. Overlaps are reported as parameter
 /// intervals (joined across arcs and pieces), never as points; a point inside an overlap
 /// (or at its ends) is not reported separately.
 ///
