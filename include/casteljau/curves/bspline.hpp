@@ -153,6 +153,75 @@ KnotForm<T, V> with_outer_knots(const KnotForm<T, V>& f, const std::vector<T>& L
   return {f.p, std::move(Ub), std::move(Q)};
 }
 
+/// Knot removal, left to right, on a window W of a C^0 form (knots U0, points P0, degree
+/// q) that slides along (elevate, reduce_degree_form): a removal at x reads and changes
+/// only knots and points within q + 1 indices of the run of x (and q removals there reach
+/// q further), so what lies more than 2 q + 2 left of the run is final and moves to the
+/// result. W keeps the pairing of the whole form (knot i with point i, q + 1 more knots
+/// than points), so remove_knot_once and insert_knot_once work on it as on a whole curve.
+/// Cost O(N q) instead of O(N removals).
+template <class T, class V>
+class SlidingWindow {
+ public:
+  SlidingWindow(const std::vector<T>& U0, const std::vector<V>& P0, int q) : W{q, {}, {}}, U0_(U0), P0_(P0), q_(q) {
+    extend_to(1);
+  }
+
+  /// Brings x's run and q + 1 knots after it into W (as far as the form goes).
+  void reach(T x) {
+    std::size_t after = run_end(x);
+    while (after == W.U.size() || W.U.size() < after + sz(q_) + 1) {
+      const std::size_t before = W.U.size();
+      extend_to(before + 1);
+      if (W.U.size() == before) break;
+      after = run_end(x);
+    }
+  }
+
+  /// Moves what lies more than 2 q + 2 left of x's run, final now, to the result.
+  void settle(T x) {
+    const std::size_t end = run_end(x), reach = 2 * sz(q_) + 2;
+    if (end <= reach) return;
+    const auto c = static_cast<std::ptrdiff_t>(std::min(end - reach, W.P.size()));
+    done_.U.insert(done_.U.end(), W.U.begin(), W.U.begin() + c);
+    done_.P.insert(done_.P.end(), W.P.begin(), W.P.begin() + c);
+    W.U.erase(W.U.begin(), W.U.begin() + c);
+    W.P.erase(W.P.begin(), W.P.begin() + c);
+  }
+
+  /// The whole form after the removals: the settled part and the rest of the form.
+  KnotForm<T, V> finish() {
+    extend_to(U0_.size() + 1);
+    done_.U.insert(done_.U.end(), W.U.begin(), W.U.end());
+    done_.P.insert(done_.P.end(), W.P.begin(), W.P.end());
+    return std::move(done_);
+  }
+
+  KnotForm<T, V> W;  ///< the window: removals work on it directly
+
+ private:
+  std::size_t run_end(T x) const { return static_cast<std::size_t>(std::upper_bound(W.U.begin(), W.U.end(), x) - W.U.begin()); }
+
+  void extend_to(std::size_t knots_needed) {
+    while (W.U.size() < knots_needed && next_ + sz(q_) < U0_.size()) {
+      if (next_ < P0_.size()) W.P.push_back(P0_[next_]);
+      if (next_ == 0) {  // the first q + 1 knots come with the first point
+        W.U.insert(W.U.end(), U0_.begin(), U0_.begin() + q_ + 1);
+        next_ = 1;
+        continue;
+      }
+      W.U.push_back(U0_[next_ + sz(q_)]);
+      ++next_;
+    }
+  }
+
+  const std::vector<T>& U0_;
+  const std::vector<V>& P0_;
+  int q_;
+  std::size_t next_ = 0;  // the next point (and knot) of the form to move into W
+  KnotForm<T, V> done_{q_, {}, {}};
+};
+
 /// Degree elevation by r >= 1, by decomposition, elevation and recomposition [PT97, §5.5
 /// and A5.9, which interleaves the same three steps]: the exact Bézier pieces of the
 /// domain's spans are elevated (Bezier::elevate, Forrest's equations), joined into the
@@ -186,54 +255,16 @@ KnotForm<T, Point<T, E>> elevate(const KnotForm<T, Point<T, E>>& f, int r, bool 
     }
   }
   U0.insert(U0.end(), static_cast<std::size_t>(q) + 1, b);
-  // Knot removal, left to right, on a window W of the C^0 form that slides along: a
-  // removal at x reads and changes only points and knots within q + 1 indices of the run
-  // of x (and p removals there reach p further), so what lies more than 2 q + 2 left of
-  // the run is final and moves to the result. W keeps the pairing of the whole form
-  // (knot i with point i, q + 1 more knots than points), so remove_knot_once works on it
-  // as on a whole curve. Cost O(|P0| + removals q) instead of O(|P0| removals).
-  KnotForm<T, V> g{q, {}, {}}, W{q, {}, {}};
-  std::size_t next = 0;  // next point (and knot) of the C^0 form to move into W
-  const auto extend_to = [&](std::size_t knots_needed) {
-    while (W.U.size() < knots_needed && next + static_cast<std::size_t>(q) < U0.size()) {
-      if (next < P0.size()) W.P.push_back(P0[next]);
-      // Knot index = point index + (q + 1): the first q + 1 knots come with the first point.
-      if (next == 0) {
-        W.U.insert(W.U.end(), U0.begin(), U0.begin() + q + 1);
-        next = 1;
-        continue;
-      }
-      W.U.push_back(U0[next + static_cast<std::size_t>(q)]);
-      ++next;
-    }
-  };
-  extend_to(0);
-  extend_to(1);
+  // Knot removal down to the original continuity, on a sliding window (SlidingWindow).
+  SlidingWindow<T, V> win(U0, P0, q);
   for (std::size_t k = 1; k < spans.size(); ++k) {
     const T x = U[spans[k]];
     const int mult = static_cast<int>(knot_multiplicity<T>(U, x));
-    // x's run and q + 1 knots after it.
-    std::size_t after = static_cast<std::size_t>(std::upper_bound(W.U.begin(), W.U.end(), x) - W.U.begin());
-    while (after == W.U.size() || W.U.size() < after + static_cast<std::size_t>(q) + 1) {
-      const std::size_t before = W.U.size();
-      extend_to(before + 1);
-      if (W.U.size() == before) break;
-      after = static_cast<std::size_t>(std::upper_bound(W.U.begin(), W.U.end(), x) - W.U.begin());
-    }
-    for (int j = 0; j < p - mult; ++j) W = remove_knot_once(W, x);
-    const std::size_t run_end = static_cast<std::size_t>(std::upper_bound(W.U.begin(), W.U.end(), x) - W.U.begin());
-    const std::size_t reach = 2 * static_cast<std::size_t>(q) + 2;
-    if (run_end > reach) {
-      const std::size_t c = std::min(run_end - reach, W.P.size());
-      g.U.insert(g.U.end(), W.U.begin(), W.U.begin() + static_cast<std::ptrdiff_t>(c));
-      g.P.insert(g.P.end(), W.P.begin(), W.P.begin() + static_cast<std::ptrdiff_t>(c));
-      W.U.erase(W.U.begin(), W.U.begin() + static_cast<std::ptrdiff_t>(c));
-      W.P.erase(W.P.begin(), W.P.begin() + static_cast<std::ptrdiff_t>(c));
-    }
+    win.reach(x);
+    for (int j = 0; j < p - mult; ++j) win.W = remove_knot_once(win.W, x);
+    win.settle(x);
   }
-  extend_to(U0.size() + 1);
-  g.U.insert(g.U.end(), W.U.begin(), W.U.end());
-  g.P.insert(g.P.end(), W.P.begin(), W.P.end());
+  KnotForm<T, V> g = win.finish();
   // Re-blossoming an unclamped end evaluates the end piece beyond the domain: O(q^3), and
   // at high degree the blossom values overflow. Above degree max_unclamped_elevation, or
   // when a value is not finite, the ends are clamped instead (the same curve on the
@@ -401,41 +432,16 @@ FormReduction<T, V> reduce_degree_form(const KnotForm<T, V>& f, T tolerance, T s
     }
   }
   cur.U.insert(cur.U.end(), sz(q) + 1, breaks.back());
-  // Knot removal on a window W of the C^0 form that slides from left to right, as in
-  // elevate: a removal at x reads and changes only knots and points within q + 1 indices
-  // of x's run, so what lies more than 2 q + 2 left of the run is final and moves to the
-  // result. W keeps the whole form's pairing (knot i with point i), so remove_knot_once
-  // and insert_knot_once work on it as on a whole curve. Cost O(N q) instead of O(N^2).
-  const std::vector<T>& U0 = cur.U;
-  const std::vector<V>& P0 = cur.P;
+  // Knot removal on a sliding window (SlidingWindow), as in elevate, each removal kept
+  // only while the spans it moves stay within the tolerance.
   const std::size_t Q1 = sz(q) + 1;
-  KnotForm<T, V> out{q, {}, {}}, W{q, {}, {}};
-  std::size_t next = 0;  // the next point (and knot) of the C^0 form to move into W
-  const auto extend_to = [&](std::size_t knots_needed) {
-    while (W.U.size() < knots_needed && next + sz(q) < U0.size()) {
-      if (next < P0.size()) W.P.push_back(P0[next]);
-      if (next == 0) {  // the first q + 1 knots come with the first point
-        W.U.insert(W.U.end(), U0.begin(), U0.begin() + static_cast<std::ptrdiff_t>(Q1));
-        next = 1;
-        continue;
-      }
-      W.U.push_back(U0[next + sz(q)]);
-      ++next;
-    }
-  };
-  extend_to(1);
+  SlidingWindow<T, V> win(cur.U, cur.P, q);
+  KnotForm<T, V>& W = win.W;
   int kept = 0;
   std::vector<T> add(k, T(0));
   for (std::size_t j = 1; j < k; ++j) {
     const T x = breaks[j];
-    // x's run and q + 1 knots after it in W.
-    std::size_t after = static_cast<std::size_t>(std::upper_bound(W.U.begin(), W.U.end(), x) - W.U.begin());
-    while (after == W.U.size() || W.U.size() < after + Q1) {
-      const std::size_t before = W.U.size();
-      extend_to(before + 1);
-      if (W.U.size() == before) break;
-      after = static_cast<std::size_t>(std::upper_bound(W.U.begin(), W.U.end(), x) - W.U.begin());
-    }
+    win.reach(x);
     const int m = static_cast<int>(knot_multiplicity<T>(U, x));
     const int wanted = q - std::max(m - 1, 1);
     for (int c = 0; c < wanted; ++c) {
@@ -469,20 +475,9 @@ FormReduction<T, V> reduce_degree_form(const KnotForm<T, V>& f, T tolerance, T s
       }
       W = std::move(g);
     }
-    const std::size_t run_end = static_cast<std::size_t>(std::upper_bound(W.U.begin(), W.U.end(), x) - W.U.begin());
-    const std::size_t reach = 2 * sz(q) + 2;
-    if (run_end > reach) {
-      const std::size_t c = std::min(run_end - reach, W.P.size());
-      out.U.insert(out.U.end(), W.U.begin(), W.U.begin() + static_cast<std::ptrdiff_t>(c));
-      out.P.insert(out.P.end(), W.P.begin(), W.P.begin() + static_cast<std::ptrdiff_t>(c));
-      W.U.erase(W.U.begin(), W.U.begin() + static_cast<std::ptrdiff_t>(c));
-      W.P.erase(W.P.begin(), W.P.begin() + static_cast<std::ptrdiff_t>(c));
-    }
+    win.settle(x);
   }
-  extend_to(U0.size() + 1);
-  out.U.insert(out.U.end(), W.U.begin(), W.U.end());
-  out.P.insert(out.P.end(), W.P.begin(), W.P.end());
-  return {std::move(out), *std::max_element(err.begin(), err.end()) * scale, kept};
+  return {win.finish(), *std::max_element(err.begin(), err.end()) * scale, kept};
 }
 
 }  // namespace detail
