@@ -147,6 +147,8 @@ def roots_by_sampling(g, a, b, n=200):
     out = []
     us = [a + (b - a) * i / n for i in range(n + 1)]
     vals = [g(u) for u in us]
+    if not any(vals):  # zero throughout (a straight curve's other coordinates): no sign change
+        return out
     for i in range(n):
         if vals[i] == 0 and 0 < i:
             out.append(mpf(us[i]))
