@@ -353,68 +353,36 @@ def main():
         goals.append(f"W1: generic batch_soa / native batch_soa = {ratio:.2f} (separate runs; goal <= {W1_GOAL_GENERIC_VS_NATIVE}): "
                      + ("MET" if ratio <= W1_GOAL_GENERIC_VS_NATIVE else "NOT MET"))
 
-    exe = os.path.join(bench_dir, "casteljau_bench_w2")
-    if os.path.exists(exe):
-        # the same repetitions (interleaved) with shorter minimum times: the error does not
-        # change between runs, and each row takes 10-4000 us
-        doc = run(exe, os.path.join(res_dir, "casteljau_bench_w2.json"), args.repetitions, 0.1, args.filter)
+    # The other workloads: one executable each, one table (or a set of tables with their own
+    # titles when the title is None). W2 runs the same repetitions with shorter minimum
+    # times: the error does not change between runs, and each row takes 10-4000 us.
+    workloads = (
+        ("casteljau_bench_w2", 0.1, w2_table,
+         "W2, max abs error vs 256-bit MPFR de Casteljau (10 curves x 1000 parameters x 2 coordinates)"),
+        ("casteljau_bench_w5", 0.2, w5_table, "W5, cubic B-spline in 3-D, 1000 control points, 10^6 parameters"),
+        ("casteljau_bench_w3", 0.2, w3_tables, None),
+        ("casteljau_bench_w4", 0.2, w4_table, "W4, natural cubic spline through 10^6 points, 10^6 queries"),
+        ("casteljau_bench_w6", 0.2, w6_table, "W6, 10,000 random cubic pairs"),
+    )
+    for exe_name, min_time, table, title in workloads:
+        exe = os.path.join(bench_dir, exe_name)
+        if not os.path.exists(exe):
+            if exe_name == "casteljau_bench_w2":
+                print(f"run.py: {exe} not built (MPFR missing?), skipping W2", file=sys.stderr)
+            continue
+        doc = run(exe, os.path.join(res_dir, exe_name + ".json"), args.repetitions, min_time, args.filter)
         context = context or doc["context"]
         rows = medians(doc)
-        if rows:
-            text, md, g = w2_table(rows)
-            title = "W2, max abs error vs 256-bit MPFR de Casteljau (10 curves x 1000 parameters x 2 coordinates)"
-            text_all += f"\n{title}\n{text}"
-            md_all += f"\n### {title}\n\n{md}"
-            goals += g
-    else:
-        print(f"run.py: {exe} not built (MPFR missing?), skipping W2", file=sys.stderr)
-
-    exe = os.path.join(bench_dir, "casteljau_bench_w5")
-    if os.path.exists(exe):
-        doc = run(exe, os.path.join(res_dir, "casteljau_bench_w5.json"), args.repetitions, 0.2, args.filter)
-        context = context or doc["context"]
-        rows = medians(doc)
-        if rows:
-            text, md, g = w5_table(rows)
-            title = "W5, cubic B-spline in 3-D, 1000 control points, 10^6 parameters"
-            text_all += f"\n{title}\n{text}"
-            md_all += f"\n### {title}\n\n{md}"
-            goals += g
-
-    exe = os.path.join(bench_dir, "casteljau_bench_w3")
-    if os.path.exists(exe):
-        doc = run(exe, os.path.join(res_dir, "casteljau_bench_w3.json"), args.repetitions, 0.2, args.filter)
-        context = context or doc["context"]
-        rows = medians(doc)
-        if rows:
-            text, md, g = w3_tables(rows)
+        if not rows:
+            continue
+        text, md, g = table(rows)
+        if title is None:
             text_all += text
             md_all += md
-            goals += g
-
-    exe = os.path.join(bench_dir, "casteljau_bench_w4")
-    if os.path.exists(exe):
-        doc = run(exe, os.path.join(res_dir, "casteljau_bench_w4.json"), args.repetitions, 0.2, args.filter)
-        context = context or doc["context"]
-        rows = medians(doc)
-        if rows:
-            text, md, g = w4_table(rows)
-            title = "W4, natural cubic spline through 10^6 points, 10^6 queries"
+        else:
             text_all += f"\n{title}\n{text}"
             md_all += f"\n### {title}\n\n{md}"
-            goals += g
-
-    exe = os.path.join(bench_dir, "casteljau_bench_w6")
-    if os.path.exists(exe):
-        doc = run(exe, os.path.join(res_dir, "casteljau_bench_w6.json"), args.repetitions, 0.2, args.filter)
-        context = context or doc["context"]
-        rows = medians(doc)
-        if rows:
-            text, md, g = w6_table(rows)
-            title = "W6, 10,000 random cubic pairs"
-            text_all += f"\n{title}\n{text}"
-            md_all += f"\n### {title}\n\n{md}"
-            goals += g
+        goals += g
 
     if context:
         head = (f"{context.get('host_name', '?')}: {context.get('num_cpus', '?')} CPUs at {context.get('mhz_per_cpu', '?')} MHz, "
