@@ -828,6 +828,145 @@ template <class T, class At, class D1, class Emit>
   }
 }
 
+/// Vertices placed and checked together by small_optimal_batched (one block).
+inline constexpr int optimal_block = 8;
+
+/// small_optimal's walk over a sampled plan, a block of optimal_block vertices at a time:
+/// every vertex of the block placed from its share of the count alone (the cell found by
+/// counting the cells it has passed, no search loop), then the block's points and
+/// derivatives, then the cheap check (small_cheap_check) of each of its steps, each
+/// pass a loop without branches or carried dependences (so the compiler vectorises it
+/// and the processor overlaps the vertices). The steps that pass are emitted in order up
+/// to the first that fails, which is handled as in the sequential walk (small_optimal):
+/// repaired, and when its vertex moved the rest of the count spread again and the next
+/// block placed from there; when it did not move, the block's later checks still hold
+/// and the scan goes on. Same guarantee as the sequential walk (every emitted step passed
+/// the cheap or the exact check). On return tp, A, dA are the last emitted vertex's.
+template <class T, class At, class D1, class Emit>
+CASTELJAU_FLATTEN_INLINE void small_optimal_batched(const SmallOptimalPlan<T>& plan, T tol2, const At& point_at, const D1& d1_at, Emit& emit,
+                                                    T& tp, Point<T, 2>& A, Vector<T, 2>& dA) {
+  constexpr int B = optimal_block;
+  const int n = plan.n;
+  T f_base = 0, df = plan.F / static_cast<T>(n);
+  int j_base = 0;
+  // The cells' ends, slopes and starts in separate arrays (plain loads in the placement).
+  T f0s[optimal_cells], f1s[optimal_cells], inv[optimal_cells], sl[optimal_cells];
+  for (int i = 0; i < optimal_cells; ++i) {
+    f0s[i] = plan.q[i].f0;
+    f1s[i] = plan.q[i].f1;
+    inv[i] = plan.q[i].inv_span;
+    sl[i] = plan.q[i].slope;
+  }
+  const T h = plan.q[0].h;
+  const Point<T, 2> a0 = plan.a0;
+  const Vector<T, 2> a1 = plan.a1, a2 = plan.a2, a3 = plan.a3;
+  // index 0: the block's start (the last emitted vertex); 1 .. B: the block's vertices
+  T bt[B + 1], bx[B + 1], by[B + 1], bdx[B + 1], bdy[B + 1];
+  int j = 1;
+  while (j < n) {
+    bt[0] = tp, bx[0] = A[0], by[0] = A[1], bdx[0] = dA[0], bdy[0] = dA[1];
+    const T first = static_cast<T>(j - j_base);  // vertex j's index past the count's base
+#if defined(__GNUC__)
+    if constexpr (std::is_same_v<T, double>) {
+      // Four vertices at a time in vector extensions: the cell by counting the cells'
+      // ends passed, the square root as D fast_rsqrt(D) (multiplications only: a library
+      // sqrt keeps errno and is not vectorised).
+      typedef double Lanes __attribute__((vector_size(32)));
+      typedef std::int64_t Ints __attribute__((vector_size(32)));
+      for (int k = 0; k < B; k += 4) {
+        const Lanes f = f_base + (Lanes{0, 1, 2, 3} + (first + k)) * df;
+        Ints qi = {0, 0, 0, 0};
+        for (int i = 0; i + 1 < optimal_cells; ++i) qi -= f >= f1s[i];
+        const Lanes s = {sl[qi[0]], sl[qi[1]], sl[qi[2]], sl[qi[3]]};
+        const Lanes f0 = {f0s[qi[0]], f0s[qi[1]], f0s[qi[2]], f0s[qi[3]]};
+        const Lanes iv = {inv[qi[0]], inv[qi[1]], inv[qi[2]], inv[qi[3]]};
+        Lanes u = (f - f0) * iv;
+        u = u > 0 ? u : 0;
+        u = u < 1 ? u : 1;
+        const Lanes b = 1 - s * 0.5;
+        const Lanes D = b * b + 2 * s * u;  // >= 0 (|s| <= 2, 0 <= u <= 1)
+        Lanes y = (Lanes)(std::int64_t{0x5FE6EB50C7B537A9} - ((Ints)D >> 1));
+        y = y * (1.5 - 0.5 * D * y * y);
+        y = y * (1.5 - 0.5 * D * y * y);
+        const Lanes den = b + D * y;
+        Lanes x = 2 * u / den;
+        x = x <= 1 ? x : 1;  // (and 0 / 0)
+        const Lanes t = (__builtin_convertvector(qi, Lanes) + x) * h;
+        for (int l = 0; l < 4; ++l) bt[k + 1 + l] = t[l];
+      }
+    } else
+#endif
+    {
+      for (int k = 1; k <= B; ++k) {
+        const T f = f_base + (first + static_cast<T>(k - 1)) * df;
+        int qi = 0;
+        for (int i = 0; i + 1 < optimal_cells; ++i) qi += f >= f1s[i] ? 1 : 0;
+        const T s = sl[qi];
+        const T u = std::clamp((f - f0s[qi]) * inv[qi], T(0), T(1));
+        const T b = 1 - s / 2;
+        const T x = 2 * u / (b + std::sqrt(b * b + 2 * s * u));
+        bt[k] = (static_cast<T>(qi) + (x <= 1 ? x : T(1))) * h;
+      }
+    }
+    for (int k = 1; k <= B; ++k) {
+      const T t = bt[k];
+      bx[k] = a0[0] + ((a3[0] * t + a2[0]) * t + a1[0]) * t;
+      by[k] = a0[1] + ((a3[1] * t + a2[1]) * t + a1[1]) * t;
+      bdx[k] = (T(3) * a3[0] * t + T(2) * a2[0]) * t + a1[0];
+      bdy[k] = (T(3) * a3[1] * t + T(2) * a2[1]) * t + a1[1];
+    }
+    unsigned ok = 0;
+    for (int k = 1; k <= B; ++k) {
+      const bool pass = small_cheap_check(bt[k] - bt[k - 1], Point<T, 2>{bx[k - 1], by[k - 1]}, Vector<T, 2>{bdx[k - 1], bdy[k - 1]},
+                                          Point<T, 2>{bx[k], by[k]}, Vector<T, 2>{bdx[k], bdy[k]}, tol2) &
+                        (bt[k] < 1);
+      ok |= static_cast<unsigned>(pass) << k;
+    }
+    const int cnt = std::min(B, n - j);
+    int k = 1;
+    bool replace = false;
+    while (k <= cnt) {
+      if ((ok >> k) & 1u) [[likely]] {
+        emit(Point<T, 2>{bx[k], by[k]});
+        ++k;
+        continue;
+      }
+      // Step k failed: the state before it is vertex k - 1 of the block.
+      tp = bt[k - 1], A = Point<T, 2>{bx[k - 1], by[k - 1]}, dA = Vector<T, 2>{bdx[k - 1], bdy[k - 1]};
+      T tn = bt[k];
+      Point<T, 2> E{bx[k], by[k]};
+      Vector<T, 2> dE{bdx[k], bdy[k]};
+      const int jj = j + k - 1;
+      if (!(tn > tp && tn < 1)) {  // a rounding tie (or NaN): the vertex is left out
+        j = jj + 1;
+        replace = true;
+        break;
+      }
+      const T planned = tn;
+      small_optimal_repair(tp, A, dA, tn, E, dE, tol2, false, point_at, d1_at, emit);
+      emit(E);
+      if (tn != planned) {  // the count reached at the moved vertex, the rest spread again
+        const int q = std::min(optimal_cells - 1, static_cast<int>(tn * optimal_cells));
+        const T x = tn * optimal_cells - static_cast<T>(q);
+        const T fn = f0s[q] + (f1s[q] - f0s[q]) * (x + sl[q] / 2 * (x * x - x));
+        df = (plan.F - fn) / static_cast<T>(n - jj);
+        f_base = fn;
+        j_base = jj;
+        tp = tn, A = E, dA = dE;
+        j = jj + 1;
+        replace = true;
+        break;
+      }
+      bt[k] = tn, bx[k] = E[0], by[k] = E[1], bdx[k] = dE[0], bdy[k] = dE[1];
+      ++k;
+    }
+    if (!replace) {
+      j += cnt;
+      tp = bt[cnt], A = Point<T, 2>{bx[cnt], by[cnt]}, dA = Vector<T, 2>{bdx[cnt], bdy[cnt]};
+    }
+  }
+}
+
 /// The near-optimal method on a plane polynomial piece of degree <= 3 (the unit-scale
 /// copy), after Levien's analytic flattening [Levien19]: the count n is planned first
 /// (small_optimal_plan), then vertex j is placed where the count function reaches j F / n
@@ -930,7 +1069,7 @@ void small_optimal(const SmallPiece<T, 2>& s, T tol, Emit&& emit) {
     }
   };
   if (plan.sampled) {
-    walk.template operator()<true>();
+    small_optimal_batched(plan, tol2, point_at, d1_at, emit, tp, A, dA);
   } else {
     walk.template operator()<false>();
   }
