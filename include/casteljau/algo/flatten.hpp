@@ -7,6 +7,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <functional>
 #include <limits>
 #include <optional>
@@ -785,7 +786,8 @@ CASTELJAU_FLATTEN_INLINE bool small_cheap_check(T h, const Point<T, 2>& A, const
   const T d1 = cross(v, dA) * h3, d2 = -cross(v, dE) * h3;
   const T p1 = dot(v, dA) * h3, p2 = L2 - dot(v, dE) * h3;
   const T b = T(0.375) * std::abs(d1 + d2) + T(0.1444) * std::abs(d2 - d1);
-  return (p1 >= 0) & (p1 <= L2) & (p2 >= 0) & (p2 <= L2) & (b * b <= tol2 * L2) & (h > 0);
+  const T c2 = T(0.0703125) * (T(3) * (d1 * d1 + d2 * d2) + T(2) * (d1 * d2));  // 9/128 (...): small_chord_check
+  return (p1 >= 0) & (p1 <= L2) & (p2 >= 0) & (p2 <= L2) & (std::min(b * b, c2) <= tol2 * L2) & (h > 0);
 }
 
 /// A step [tp, tn] of small_optimal whose cheap check failed: checked exactly
@@ -831,17 +833,125 @@ template <class T, class At, class D1, class Emit>
 /// Vertices placed and checked together by small_optimal_batched (one block).
 inline constexpr int optimal_block = 8;
 
-/// small_optimal's walk over a sampled plan, a block of optimal_block vertices at a time:
-/// every vertex of the block placed from its share of the count alone (the cell found by
-/// counting the cells it has passed, no search loop), then the block's points and
-/// derivatives, then the cheap check (small_cheap_check) of each of its steps, each
-/// pass a loop without branches or carried dependences (so the compiler vectorises it
-/// and the processor overlaps the vertices). The steps that pass are emitted in order up
-/// to the first that fails, which is handled as in the sequential walk (small_optimal):
-/// repaired, and when its vertex moved the rest of the count spread again and the next
-/// block placed from there; when it did not move, the block's later checks still hold
-/// and the scan goes on. Same guarantee as the sequential walk (every emitted step passed
-/// the cheap or the exact check). On return tp, A, dA are the last emitted vertex's.
+/// small_optimal_batched's block: the vertices j = first .. first + B - 1 past the count's
+/// base (count f_base + j df) placed, their points and derivatives, and the cheap check
+/// (small_cheap_check, and t < 1) of each step from the one before (the first from the
+/// block's start, index 0 of the arrays), into bt .. bdy [1 .. B] and the bits 1 .. B of
+/// the result. The plain form, for any scalar type and compiler.
+template <class T, int B>
+unsigned small_optimal_block_plain(const SmallOptimalPlan<T>& plan, const T* f0s, const T* f1s, const T* inv, const T* sl, T f_base, T df,
+                                   T first, T tol2, T* bt, T* bx, T* by, T* bdx, T* bdy) {
+  const T h = plan.q[0].h;
+  for (int k = 1; k <= B; ++k) {
+    const T f = f_base + (first + static_cast<T>(k - 1)) * df;
+    int qi = 0;
+    for (int i = 0; i + 1 < optimal_cells; ++i) qi += f >= f1s[i] ? 1 : 0;
+    const T s = sl[qi];
+    const T u = std::clamp((f - f0s[qi]) * inv[qi], T(0), T(1));
+    const T b = 1 - s / 2;
+    const T x = 2 * u / (b + std::sqrt(b * b + 2 * s * u));
+    const T t = (static_cast<T>(qi) + (x <= 1 ? x : T(1))) * h;
+    bt[k] = t;
+    bx[k] = plan.a0[0] + ((plan.a3[0] * t + plan.a2[0]) * t + plan.a1[0]) * t;
+    by[k] = plan.a0[1] + ((plan.a3[1] * t + plan.a2[1]) * t + plan.a1[1]) * t;
+    bdx[k] = (T(3) * plan.a3[0] * t + T(2) * plan.a2[0]) * t + plan.a1[0];
+    bdy[k] = (T(3) * plan.a3[1] * t + T(2) * plan.a2[1]) * t + plan.a1[1];
+  }
+  unsigned ok = 0;
+  for (int k = 1; k <= B; ++k) {
+    const bool pass = small_cheap_check(bt[k] - bt[k - 1], Point<T, 2>{bx[k - 1], by[k - 1]}, Vector<T, 2>{bdx[k - 1], bdy[k - 1]},
+                                        Point<T, 2>{bx[k], by[k]}, Vector<T, 2>{bdx[k], bdy[k]}, tol2) &
+                      (bt[k] < 1);
+    ok |= static_cast<unsigned>(pass) << k;
+  }
+  return ok;
+}
+
+#if defined(__GNUC__)
+/// small_optimal_block_plain for double in GCC/Clang vector extensions, four vertices per
+/// vector, kept in registers from the placement to the checks (the previous vertex of
+/// each lane by a shuffle, not through memory): the cell by counting the cells' ends
+/// passed, the square root as D fast_rsqrt(D) (multiplications only: the library sqrt
+/// keeps errno and is not vectorised), the check small_cheap_check's expressions lane by
+/// lane. The arrays are written at the end for the scan.
+template <int B>
+unsigned small_optimal_block_lanes(const SmallOptimalPlan<double>& plan, const double* f0s, const double* f1s, const double* inv,
+                                   const double* sl, double f_base, double df, double first, double tol2, double* bt, double* bx,
+                                   double* by, double* bdx, double* bdy) {
+  typedef double Lanes __attribute__((vector_size(32)));
+  typedef std::int64_t Ints __attribute__((vector_size(32)));
+  constexpr int NV = B / 4;
+  static_assert(B % 4 == 0);
+  const double h = plan.q[0].h;
+  const double a0x = plan.a0[0], a0y = plan.a0[1], a1x = plan.a1[0], a1y = plan.a1[1], a2x = plan.a2[0], a2y = plan.a2[1];
+  const double a3x = plan.a3[0], a3y = plan.a3[1];
+  Lanes T[NV], X[NV], Y[NV], DX[NV], DY[NV];
+  for (int v = 0; v < NV; ++v) {
+    const Lanes f = f_base + (Lanes{0, 1, 2, 3} + (first + 4 * v)) * df;
+    Ints qi = {0, 0, 0, 0};
+    for (int i = 0; i + 1 < optimal_cells; ++i) qi -= f >= f1s[i];
+    const Lanes s = {sl[qi[0]], sl[qi[1]], sl[qi[2]], sl[qi[3]]};
+    const Lanes f0 = {f0s[qi[0]], f0s[qi[1]], f0s[qi[2]], f0s[qi[3]]};
+    const Lanes iv = {inv[qi[0]], inv[qi[1]], inv[qi[2]], inv[qi[3]]};
+    Lanes u = (f - f0) * iv;
+    u = u > 0 ? u : 0;
+    u = u < 1 ? u : 1;
+    const Lanes b = 1 - s * 0.5;
+    const Lanes D = b * b + 2 * s * u;  // >= 0 (|s| <= 2, 0 <= u <= 1)
+    Lanes y = (Lanes)(std::int64_t{0x5FE6EB50C7B537A9} - ((Ints)D >> 1));  // fast_rsqrt's
+    y = y * (1.5 - 0.5 * D * y * y);
+    y = y * (1.5 - 0.5 * D * y * y);
+    Lanes x = 2 * u / (b + D * y);
+    x = x <= 1 ? x : 1;  // (and 0 / 0)
+    const Lanes t = (__builtin_convertvector(qi, Lanes) + x) * h;
+    T[v] = t;
+    X[v] = a0x + ((a3x * t + a2x) * t + a1x) * t;
+    Y[v] = a0y + ((a3y * t + a2y) * t + a1y) * t;
+    DX[v] = (3 * a3x * t + 2 * a2x) * t + a1x;
+    DY[v] = (3 * a3y * t + 2 * a2y) * t + a1y;
+  }
+  unsigned ok = 0;
+  for (int v = 0; v < NV; ++v) {
+    // the previous vertex of each lane: the last lane of the vector before (or the start)
+    const Ints sh = {3, 4, 5, 6};
+    const Lanes pT = __builtin_shuffle(v ? T[v - 1] : Lanes{} + bt[0], T[v], sh);
+    const Lanes pX = __builtin_shuffle(v ? X[v - 1] : Lanes{} + bx[0], X[v], sh);
+    const Lanes pY = __builtin_shuffle(v ? Y[v - 1] : Lanes{} + by[0], Y[v], sh);
+    const Lanes pDX = __builtin_shuffle(v ? DX[v - 1] : Lanes{} + bdx[0], DX[v], sh);
+    const Lanes pDY = __builtin_shuffle(v ? DY[v - 1] : Lanes{} + bdy[0], DY[v], sh);
+    const Lanes vx = X[v] - pX, vy = Y[v] - pY;
+    const Lanes hh = T[v] - pT, h3 = hh * (1.0 / 3);
+    const Lanes L2 = vx * vx + vy * vy;
+    const Lanes d1 = (vx * pDY - vy * pDX) * h3, d2 = -(vx * DY[v] - vy * DX[v]) * h3;
+    const Lanes p1 = (vx * pDX + vy * pDY) * h3, p2 = L2 - (vx * DX[v] + vy * DY[v]) * h3;
+    const Lanes sum = d1 + d2, dif = d2 - d1;
+    const Lanes bl = 0.375 * (sum < 0 ? -sum : sum) + 0.1444 * (dif < 0 ? -dif : dif);
+    const Lanes b2 = bl * bl, c2 = 0.0703125 * (3 * (d1 * d1 + d2 * d2) + 2 * (d1 * d2));
+    const Ints pass = (p1 >= 0) & (p1 <= L2) & (p2 >= 0) & (p2 <= L2) & ((b2 < c2 ? b2 : c2) <= tol2 * L2) & (hh > 0) & (T[v] < 1);
+    for (int l = 0; l < 4; ++l) ok |= static_cast<unsigned>(pass[l] & 1) << (4 * v + l + 1);
+  }
+  for (int v = 0; v < NV; ++v) {
+    std::memcpy(bt + 1 + 4 * v, &T[v], sizeof(Lanes));
+    std::memcpy(bx + 1 + 4 * v, &X[v], sizeof(Lanes));
+    std::memcpy(by + 1 + 4 * v, &Y[v], sizeof(Lanes));
+    std::memcpy(bdx + 1 + 4 * v, &DX[v], sizeof(Lanes));
+    std::memcpy(bdy + 1 + 4 * v, &DY[v], sizeof(Lanes));
+  }
+  return ok;
+}
+#endif
+
+/// small_optimal's walk over a sampled plan, a block of optimal_block vertices at a time
+/// (small_optimal_block_plain / _lanes): every vertex of the block placed from its share
+/// of the count alone, then the block's points and derivatives, then the cheap check of
+/// each of its steps, without branches or carried dependences (so that the vertices
+/// overlap in the processor, and in vector lanes). The steps that pass are emitted in
+/// order up to the first that fails, which is handled as in the sequential walk
+/// (small_optimal): repaired, and when its vertex moved, the rest of the count spread
+/// again and the next block placed from there; when it did not move, the block's later
+/// checks still hold and the scan goes on. The same guarantee as the sequential walk
+/// (every emitted step passed the cheap or the exact check). On return tp, A, dA are the
+/// last emitted vertex's.
 template <class T, class At, class D1, class Emit>
 CASTELJAU_FLATTEN_INLINE void small_optimal_batched(const SmallOptimalPlan<T>& plan, T tol2, const At& point_at, const D1& d1_at, Emit& emit,
                                                     T& tp, Point<T, 2>& A, Vector<T, 2>& dA) {
@@ -857,70 +967,20 @@ CASTELJAU_FLATTEN_INLINE void small_optimal_batched(const SmallOptimalPlan<T>& p
     inv[i] = plan.q[i].inv_span;
     sl[i] = plan.q[i].slope;
   }
-  const T h = plan.q[0].h;
-  const Point<T, 2> a0 = plan.a0;
-  const Vector<T, 2> a1 = plan.a1, a2 = plan.a2, a3 = plan.a3;
   // index 0: the block's start (the last emitted vertex); 1 .. B: the block's vertices
   T bt[B + 1], bx[B + 1], by[B + 1], bdx[B + 1], bdy[B + 1];
   int j = 1;
   while (j < n) {
     bt[0] = tp, bx[0] = A[0], by[0] = A[1], bdx[0] = dA[0], bdy[0] = dA[1];
     const T first = static_cast<T>(j - j_base);  // vertex j's index past the count's base
+    unsigned ok;
 #if defined(__GNUC__)
     if constexpr (std::is_same_v<T, double>) {
-      // Four vertices at a time in vector extensions: the cell by counting the cells'
-      // ends passed, the square root as D fast_rsqrt(D) (multiplications only: a library
-      // sqrt keeps errno and is not vectorised).
-      typedef double Lanes __attribute__((vector_size(32)));
-      typedef std::int64_t Ints __attribute__((vector_size(32)));
-      for (int k = 0; k < B; k += 4) {
-        const Lanes f = f_base + (Lanes{0, 1, 2, 3} + (first + k)) * df;
-        Ints qi = {0, 0, 0, 0};
-        for (int i = 0; i + 1 < optimal_cells; ++i) qi -= f >= f1s[i];
-        const Lanes s = {sl[qi[0]], sl[qi[1]], sl[qi[2]], sl[qi[3]]};
-        const Lanes f0 = {f0s[qi[0]], f0s[qi[1]], f0s[qi[2]], f0s[qi[3]]};
-        const Lanes iv = {inv[qi[0]], inv[qi[1]], inv[qi[2]], inv[qi[3]]};
-        Lanes u = (f - f0) * iv;
-        u = u > 0 ? u : 0;
-        u = u < 1 ? u : 1;
-        const Lanes b = 1 - s * 0.5;
-        const Lanes D = b * b + 2 * s * u;  // >= 0 (|s| <= 2, 0 <= u <= 1)
-        Lanes y = (Lanes)(std::int64_t{0x5FE6EB50C7B537A9} - ((Ints)D >> 1));
-        y = y * (1.5 - 0.5 * D * y * y);
-        y = y * (1.5 - 0.5 * D * y * y);
-        const Lanes den = b + D * y;
-        Lanes x = 2 * u / den;
-        x = x <= 1 ? x : 1;  // (and 0 / 0)
-        const Lanes t = (__builtin_convertvector(qi, Lanes) + x) * h;
-        for (int l = 0; l < 4; ++l) bt[k + 1 + l] = t[l];
-      }
+      ok = small_optimal_block_lanes<B>(plan, f0s, f1s, inv, sl, f_base, df, first, tol2, bt, bx, by, bdx, bdy);
     } else
 #endif
     {
-      for (int k = 1; k <= B; ++k) {
-        const T f = f_base + (first + static_cast<T>(k - 1)) * df;
-        int qi = 0;
-        for (int i = 0; i + 1 < optimal_cells; ++i) qi += f >= f1s[i] ? 1 : 0;
-        const T s = sl[qi];
-        const T u = std::clamp((f - f0s[qi]) * inv[qi], T(0), T(1));
-        const T b = 1 - s / 2;
-        const T x = 2 * u / (b + std::sqrt(b * b + 2 * s * u));
-        bt[k] = (static_cast<T>(qi) + (x <= 1 ? x : T(1))) * h;
-      }
-    }
-    for (int k = 1; k <= B; ++k) {
-      const T t = bt[k];
-      bx[k] = a0[0] + ((a3[0] * t + a2[0]) * t + a1[0]) * t;
-      by[k] = a0[1] + ((a3[1] * t + a2[1]) * t + a1[1]) * t;
-      bdx[k] = (T(3) * a3[0] * t + T(2) * a2[0]) * t + a1[0];
-      bdy[k] = (T(3) * a3[1] * t + T(2) * a2[1]) * t + a1[1];
-    }
-    unsigned ok = 0;
-    for (int k = 1; k <= B; ++k) {
-      const bool pass = small_cheap_check(bt[k] - bt[k - 1], Point<T, 2>{bx[k - 1], by[k - 1]}, Vector<T, 2>{bdx[k - 1], bdy[k - 1]},
-                                          Point<T, 2>{bx[k], by[k]}, Vector<T, 2>{bdx[k], bdy[k]}, tol2) &
-                        (bt[k] < 1);
-      ok |= static_cast<unsigned>(pass) << k;
+      ok = small_optimal_block_plain<T, B>(plan, f0s, f1s, inv, sl, f_base, df, first, tol2, bt, bx, by, bdx, bdy);
     }
     const int cnt = std::min(B, n - j);
     int k = 1;
@@ -957,7 +1017,6 @@ CASTELJAU_FLATTEN_INLINE void small_optimal_batched(const SmallOptimalPlan<T>& p
         replace = true;
         break;
       }
-      bt[k] = tn, bx[k] = E[0], by[k] = E[1], bdx[k] = dE[0], bdy[k] = dE[1];
       ++k;
     }
     if (!replace) {
