@@ -620,26 +620,25 @@ CASTELJAU_FLATTEN_INLINE double fast_rqrt4(double x) {
 /// Cells of the sampled density of a cubic in small_optimal (two Gauss-Legendre nodes each).
 inline constexpr int optimal_cells = 12;
 
-/// One span of small_optimal's count function: the piece on [t0, t0 + h], over which the
-/// near-optimal count grows from f0 to f1. Within it the count's fraction u maps to the
-/// parameter t0 + h x(u), by the parabola (sx != 0: x = (I^-1(a0 + u da) - x0) sx) or by
-/// the density linear across a sampled cell (slope, relative to the mean, in [-2, 2]).
+/// The count function of a piece that is one parabola in small_optimal: the count's
+/// fraction u maps to the parameter t = (I^-1(a0 + u da) - x0) sx (sx != 0; else t = u).
 template <class T>
 struct CountSpan {
-  T f0, f1, inv_span;  ///< counts at the ends, 1 / (f1 - f0) (0 for an empty span)
-  T a0, da, x0, sx;    ///< parabola: I(x0), I(x1) - I(x0), x0, 1 / (x1 - x0)
-  T slope;             ///< sampled cell
-  T t0, h;
+  T a0, da, x0, sx;  ///< I(x0), I(x1) - I(x0), x0, 1 / (x1 - x0)
 };
 
-/// small_optimal's plan of a plane polynomial piece of degree 1..3: its power form, the
-/// spans of its count function and the planned segment count n (see small_optimal).
+/// small_optimal's plan of a plane polynomial piece of degree 1..3: its power form, its
+/// count function and the planned segment count n (see small_optimal).
 template <class T>
 struct SmallOptimalPlan {
   Point<T, 2> a0;
   Vector<T, 2> a1, a2, a3;
-  CountSpan<T> q[optimal_cells];
-  int nq = 1;
+  CountSpan<T> span{};  ///< one parabola (not sampled)
+  /// Sampled: cell i = [i, i + 1] / optimal_cells, over which the count grows from f0[i]
+  /// to f1[i] (inv[i] = 1 / (f1[i] - f0[i]), 0 for an empty cell) with a density linear
+  /// across the cell (slope[i], relative to the mean, in [-2, 2]). Arrays, so that the
+  /// placement loads them without a stride.
+  T f0[optimal_cells], f1[optimal_cells], inv[optimal_cells], slope[optimal_cells];
   bool sampled = false;
   T F = 0;  ///< the count function's total
   int n = 1;
@@ -683,7 +682,6 @@ void small_optimal_plan(const SmallPiece<T, 2>& s, T tol, SmallOptimalPlan<T>& p
   const V a1 = plan.a1, a2 = plan.a2, a3 = plan.a3;
   plan.sampled = s.m == 4 && !(dot(a3, a3) <= tol * tol);
   plan.closed = false;
-  plan.nq = plan.sampled ? optimal_cells : 1;
   T F = 0;
   if (plan.sampled) {
     const T h = T(1) / static_cast<T>(optimal_cells);
@@ -700,26 +698,25 @@ void small_optimal_plan(const SmallPiece<T, 2>& s, T tol, SmallOptimalPlan<T>& p
       // A vanishing or denormal speed (a cusp) gets density 0, as 0 / 0 did.
       rho[j] = n2 > T(1e-280) ? c * fast_rsqrt(c) * fast_rqrt4(n2) : T(0);
     }
-    const T scale = h / 2 / std::sqrt(8 * tol);
+    const T scale = h / 2 / std::sqrt(8 * tol), inv_scale = 1 / scale;
+    T sum[optimal_cells];
     for (int i = 0; i < optimal_cells; ++i) {
-      CountSpan<T>& p = plan.q[i];
-      p.a0 = p.da = p.x0 = p.sx = 0;
-      p.t0 = static_cast<T>(i) * h;
-      p.h = h;
-      p.f0 = F;
-      const T sum = rho[2 * i] + rho[2 * i + 1];
-      F += sum * scale;
-      p.f1 = F;
-      // density mean + slope (x - 1/2) across the cell: slope from the nodes 1 / sqrt 3 apart
-      p.slope = sum > 0 ? std::clamp(T(2 * 1.7320508075688772) * (rho[2 * i + 1] - rho[2 * i]) / sum, T(-2), T(2)) : T(0);
-      p.inv_span = p.f1 > p.f0 ? 1 / (p.f1 - p.f0) : T(0);
+      // density mean + slope (x - 1/2) across the cell: slope from the nodes 1 / sqrt 3
+      // apart. Selections, not branches, and the divisions side by side (they vectorise).
+      sum[i] = rho[2 * i] + rho[2 * i + 1];
+      const bool some = sum[i] > 0;
+      const T r = (some ? T(1) : T(0)) / (some ? sum[i] : T(1));
+      plan.slope[i] = std::clamp(T(2 * 1.7320508075688772) * (rho[2 * i + 1] - rho[2 * i]) * r, T(-2), T(2));
+      plan.inv[i] = r * inv_scale;  // 1 / (f1 - f0) up to rounding
+    }
+    for (int i = 0; i < optimal_cells; ++i) {
+      plan.f0[i] = F;
+      F += sum[i] * scale;
+      plan.f1[i] = F;
     }
   } else {
-    CountSpan<T>& p = plan.q[0];
-    p.a0 = p.da = p.x0 = p.sx = p.slope = 0;
-    p.t0 = 0;
-    p.h = 1;
-    p.f0 = 0;
+    CountSpan<T>& p = plan.span;
+    p.a0 = p.da = p.x0 = p.sx = 0;
     const V b2 = T(3) * a3 + T(2) * a2;                        // B''(1/2)
     const V d1 = (T(0.75) * a3 + a2) + a1 - T(0.5) * b2;      // B'(1/2) - B''(1/2) / 2: the parabola's B'(0)
     const T c = cross(d1, b2), w2 = dot(b2, b2), dd = dot(d1, b2);
@@ -748,8 +745,6 @@ void small_optimal_plan(const SmallPiece<T, 2>& s, T tol, SmallOptimalPlan<T>& p
         plan.lim2 = lim * lim;
       }
     }
-    p.f1 = F;
-    p.inv_span = F > 0 ? 1 / F : T(0);
   }
   plan.F = F;
   const T want = std::ceil((plan.sampled ? T(1.02) : T(1)) * F - T(1e-9));
@@ -839,9 +834,9 @@ inline constexpr int optimal_block = 8;
 /// block's start, index 0 of the arrays), into bt .. bdy [1 .. B] and the bits 1 .. B of
 /// the result. The plain form, for any scalar type and compiler.
 template <class T, int B>
-unsigned small_optimal_block_plain(const SmallOptimalPlan<T>& plan, const T* f0s, const T* f1s, const T* inv, const T* sl, T f_base, T df,
-                                   T first, T tol2, T* bt, T* bx, T* by, T* bdx, T* bdy) {
-  const T h = plan.q[0].h;
+unsigned small_optimal_block_plain(const SmallOptimalPlan<T>& plan, T f_base, T df, T first, T tol2, T* bt, T* bx, T* by, T* bdx, T* bdy) {
+  const T h = T(1) / static_cast<T>(optimal_cells);
+  const T *f0s = plan.f0, *f1s = plan.f1, *inv = plan.inv, *sl = plan.slope;
   for (int k = 1; k <= B; ++k) {
     const T f = f_base + (first + static_cast<T>(k - 1)) * df;
     int qi = 0;
@@ -875,14 +870,14 @@ unsigned small_optimal_block_plain(const SmallOptimalPlan<T>& plan, const T* f0s
 /// keeps errno and is not vectorised), the check small_cheap_check's expressions lane by
 /// lane. The arrays are written at the end for the scan.
 template <int B>
-unsigned small_optimal_block_lanes(const SmallOptimalPlan<double>& plan, const double* f0s, const double* f1s, const double* inv,
-                                   const double* sl, double f_base, double df, double first, double tol2, double* bt, double* bx,
-                                   double* by, double* bdx, double* bdy) {
+unsigned small_optimal_block_lanes(const SmallOptimalPlan<double>& plan, double f_base, double df, double first, double tol2, double* bt,
+                                   double* bx, double* by, double* bdx, double* bdy) {
   typedef double Lanes __attribute__((vector_size(32)));
   typedef std::int64_t Ints __attribute__((vector_size(32)));
   constexpr int NV = B / 4;
   static_assert(B % 4 == 0);
-  const double h = plan.q[0].h;
+  const double h = 1.0 / optimal_cells;
+  const double *f0s = plan.f0, *f1s = plan.f1, *inv = plan.inv, *sl = plan.slope;
   const double a0x = plan.a0[0], a0y = plan.a0[1], a1x = plan.a1[0], a1y = plan.a1[1], a2x = plan.a2[0], a2y = plan.a2[1];
   const double a3x = plan.a3[0], a3y = plan.a3[1];
   Lanes T[NV], X[NV], Y[NV], DX[NV], DY[NV];
@@ -959,14 +954,6 @@ CASTELJAU_FLATTEN_INLINE void small_optimal_batched(const SmallOptimalPlan<T>& p
   const int n = plan.n;
   T f_base = 0, df = plan.F / static_cast<T>(n);
   int j_base = 0;
-  // The cells' ends, slopes and starts in separate arrays (plain loads in the placement).
-  T f0s[optimal_cells], f1s[optimal_cells], inv[optimal_cells], sl[optimal_cells];
-  for (int i = 0; i < optimal_cells; ++i) {
-    f0s[i] = plan.q[i].f0;
-    f1s[i] = plan.q[i].f1;
-    inv[i] = plan.q[i].inv_span;
-    sl[i] = plan.q[i].slope;
-  }
   // index 0: the block's start (the last emitted vertex); 1 .. B: the block's vertices
   T bt[B + 1], bx[B + 1], by[B + 1], bdx[B + 1], bdy[B + 1];
   int j = 1;
@@ -976,11 +963,11 @@ CASTELJAU_FLATTEN_INLINE void small_optimal_batched(const SmallOptimalPlan<T>& p
     unsigned ok;
 #if defined(__GNUC__)
     if constexpr (std::is_same_v<T, double>) {
-      ok = small_optimal_block_lanes<B>(plan, f0s, f1s, inv, sl, f_base, df, first, tol2, bt, bx, by, bdx, bdy);
+      ok = small_optimal_block_lanes<B>(plan, f_base, df, first, tol2, bt, bx, by, bdx, bdy);
     } else
 #endif
     {
-      ok = small_optimal_block_plain<T, B>(plan, f0s, f1s, inv, sl, f_base, df, first, tol2, bt, bx, by, bdx, bdy);
+      ok = small_optimal_block_plain<T, B>(plan, f_base, df, first, tol2, bt, bx, by, bdx, bdy);
     }
     const int cnt = std::min(B, n - j);
     int k = 1;
@@ -1008,7 +995,7 @@ CASTELJAU_FLATTEN_INLINE void small_optimal_batched(const SmallOptimalPlan<T>& p
       if (tn != planned) {  // the count reached at the moved vertex, the rest spread again
         const int q = std::min(optimal_cells - 1, static_cast<int>(tn * optimal_cells));
         const T x = tn * optimal_cells - static_cast<T>(q);
-        const T fn = f0s[q] + (f1s[q] - f0s[q]) * (x + sl[q] / 2 * (x * x - x));
+        const T fn = plan.f0[q] + (plan.f1[q] - plan.f0[q]) * (x + plan.slope[q] / 2 * (x * x - x));
         df = (plan.F - fn) / static_cast<T>(n - jj);
         f_base = fn;
         j_base = jj;
@@ -1052,52 +1039,37 @@ void small_optimal(const SmallPiece<T, 2>& s, T tol, Emit&& emit) {
   auto point_at = [&](T t) CASTELJAU_FLATTEN_LAMBDA { return a0 + ((a3 * t + a2) * t + a1) * t; };
   auto d1_at = [&](T t) CASTELJAU_FLATTEN_LAMBDA { return (T(3) * a3 * t + T(2) * a2) * t + a1; };
   const T tol2 = tol * tol;
-  const int n = plan.n;
-  const T step = plan.F / static_cast<T>(n);
   T tp = 0;
   Point<T, 2> A = a0;
   V dA = a1;
-  // The loop twice (one parabola; sampled cells), with the one parabola's constants in
-  // locals: the plan's memory must be read again after every vertex written.
-  const T inv_n = 1 / static_cast<T>(n);
-  auto walk = [&]<bool Sampled>() CASTELJAU_FLATTEN_LAMBDA {
-    const CountSpan<T> p0 = plan.q[0];
-    int qi = 0;
-    // Vertex j is placed at the count f_base + (j - j_base) df (as a fraction of F for the
-    // parabola): j F / n until a step is repaired, then the rest of the count spread evenly
-    // over the remaining steps from the repaired vertex.
-    T f_base = 0, df = Sampled ? step : inv_n;
-    // closed-form checks (one parabola): the previous vertex's x; whether dA is current
-    const bool closed = !Sampled && plan.closed;
+  if (plan.sampled) {
+    small_optimal_batched(plan, tol2, point_at, d1_at, emit, tp, A, dA);
+  } else {
+    // One parabola: its constants in locals (the plan's memory must be read again after
+    // every vertex written). Vertex j is placed at the fraction f_base + (j - j_base) df
+    // of the count: j / n until a step is repaired, then the rest of the count spread
+    // evenly over the remaining steps from the repaired vertex.
+    const int n = plan.n;
+    const CountSpan<T> p0 = plan.span;
+    T f_base = 0, df = 1 / static_cast<T>(n);
+    // closed-form checks (one parabola): whether dA is current
+    const bool closed = plan.closed;
     bool fresh = true;
     int j_base = 0;
     for (int j = 1; j < n; ++j) {
-      const T f = f_base + static_cast<T>(j - j_base) * df;
-      T tn;
-      if constexpr (Sampled) {
-        while (qi + 1 < optimal_cells && f >= plan.q[qi].f1) ++qi;
-        const CountSpan<T>& p = plan.q[qi];
-        const T u = std::clamp((f - p.f0) * p.inv_span, T(0), T(1));
-        // density 1 + slope (x - 1/2) relative to the cell's mean: its integral slope / 2 x^2
-        // + (1 - slope / 2) x = u, the root in [0, 1] in stable form (b >= 0 for |slope| <= 2)
-        const T b = 1 - p.slope / 2;
-        const T x = 2 * u / (b + std::sqrt(b * b + 2 * p.slope * u));
-        tn = p.t0 + (x <= 1 ? x : T(1)) * p.h;
-      } else {
-        const T u = std::min(f, T(1));
-        tn = p0.sx != 0 ? std::clamp((parabola_integral_inverse(p0.a0 + u * p0.da) - p0.x0) * p0.sx, T(0), T(1)) : u;
-        if (closed) {
-          if (parabola_step_within(plan, tp, tn) && tn < 1) [[likely]] {
-            const Point<T, 2> E = point_at(tn);
-            emit(E);
-            tp = tn;
-            A = E;
-            fresh = false;
-            continue;
-          }
-          if (!fresh) dA = d1_at(tp);
-          fresh = true;
+      const T u = std::min(f_base + static_cast<T>(j - j_base) * df, T(1));
+      T tn = p0.sx != 0 ? std::clamp((parabola_integral_inverse(p0.a0 + u * p0.da) - p0.x0) * p0.sx, T(0), T(1)) : u;
+      if (closed) {
+        if (parabola_step_within(plan, tp, tn) && tn < 1) [[likely]] {
+          const Point<T, 2> E = point_at(tn);
+          emit(E);
+          tp = tn;
+          A = E;
+          fresh = false;
+          continue;
         }
+        if (!fresh) dA = d1_at(tp);
+        fresh = true;
       }
       Point<T, 2> E = point_at(tn);
       V dE = d1_at(tn);
@@ -1106,17 +1078,8 @@ void small_optimal(const SmallPiece<T, 2>& s, T tol, Emit&& emit) {
         const T planned = tn;
         small_optimal_repair(tp, A, dA, tn, E, dE, tol2, false, point_at, d1_at, emit);
         if (tn != planned) {  // the count reached at the moved vertex, the rest spread again
-          T fn;
-          if constexpr (Sampled) {
-            qi = std::min(optimal_cells - 1, static_cast<int>(tn * optimal_cells));
-            const CountSpan<T>& p = plan.q[qi];
-            const T x = tn * optimal_cells - static_cast<T>(qi);
-            fn = p.f0 + (p.f1 - p.f0) * (x + p.slope / 2 * (x * x - x));
-            df = (plan.F - fn) / static_cast<T>(n - j);
-          } else {
-            fn = p0.sx != 0 && p0.da != 0 ? (parabola_integral(p0.x0 + tn / p0.sx) - p0.a0) / p0.da : tn;
-            df = (1 - fn) / static_cast<T>(n - j);
-          }
+          const T fn = p0.sx != 0 && p0.da != 0 ? (parabola_integral(p0.x0 + tn / p0.sx) - p0.a0) / p0.da : tn;
+          df = (1 - fn) / static_cast<T>(n - j);
           f_base = fn;
           j_base = j;
         }
@@ -1126,11 +1089,6 @@ void small_optimal(const SmallPiece<T, 2>& s, T tol, Emit&& emit) {
       A = E;
       dA = dE;
     }
-  };
-  if (plan.sampled) {
-    small_optimal_batched(plan, tol2, point_at, d1_at, emit, tp, A, dA);
-  } else {
-    walk.template operator()<false>();
   }
   if (plan.closed) dA = d1_at(tp);  // the walk may have left dA behind
   T tn = 1;
