@@ -963,7 +963,10 @@ CASTELJAU_FLATTEN_INLINE void small_optimal_batched(const SmallOptimalPlan<T>& p
     unsigned ok;
 #if defined(__GNUC__)
     if constexpr (std::is_same_v<T, double>) {
-      ok = small_optimal_block_lanes<B>(plan, f_base, df, first, tol2, bt, bx, by, bdx, bdy);
+      // (half a block when the piece has no more than 4 vertices left: about half the
+      // pieces' last blocks)
+      ok = n - j <= B / 2 ? small_optimal_block_lanes<B / 2>(plan, f_base, df, first, tol2, bt, bx, by, bdx, bdy)
+                          : small_optimal_block_lanes<B>(plan, f_base, df, first, tol2, bt, bx, by, bdx, bdy);
     } else
 #endif
     {
