@@ -975,6 +975,13 @@ CASTELJAU_FLATTEN_INLINE void small_optimal_batched(const SmallOptimalPlan<T>& p
     const int cnt = std::min(B, n - j);
     int k = 1;
     bool replace = false;
+    if constexpr (requires { emit.block(bx, by, cnt); }) {
+      // every step of the block passed (the common case): its vertices written at once
+      if (((ok >> 1) & ((1u << cnt) - 1)) == (1u << cnt) - 1) {
+        emit.block(bx + 1, by + 1, cnt);
+        k = cnt + 1;
+      }
+    }
     while (k <= cnt) {
       if ((ok >> k) & 1u) [[likely]] {
         emit(Point<T, 2>{bx[k], by[k]});
@@ -1124,6 +1131,15 @@ struct SmallOptimalWriter {
     (*p)[0] = origin[0] + q[0] * up;
     (*p)[1] = origin[1] + q[1] * up;
     ++p;
+  }
+  /// The vertices (x[i], y[i]), i < count, in order (a block of small_optimal_batched).
+  CASTELJAU_FLATTEN_INLINE void block(const T* x, const T* y, int count) {
+    if (end - p < count) [[unlikely]] reserve(count);
+    for (int i = 0; i < count; ++i) {
+      p[i][0] = origin[0] + x[i] * up;
+      p[i][1] = origin[1] + y[i] * up;
+    }
+    p += count;
   }
   void finish() {
     if (p) out.resize(static_cast<std::size_t>(p - out.data()));
