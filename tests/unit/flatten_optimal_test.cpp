@@ -4,6 +4,7 @@
 // on cusps, inflections, loops, degenerate and extreme-scale curves; the parabola integral
 // against a numerical integral computed here; counts against a greedy near-optimal count
 // written here.
+#include <algorithm>
 #include <cmath>
 #include <utility>
 #include <vector>
@@ -273,6 +274,55 @@ TEST(FlattenOptimal, BatchedBlocksAgainstSampling) {
   EXPECT_EQ(none, 2);
   EXPECT_GT(long_pieces, 10);  // pieces of more than one block
 }
+
+#if defined(__GNUC__)
+TEST(FlattenOptimal, ParabolaBlocksAgainstScalarForms) {
+  // The closed-form (one parabola) walk's block in vector lanes against the scalar forms it
+  // stands for: each parameter within 1e-9 of parabola_integral_inverse's (std::sqrt), each
+  // point the piece's, and each step's bit exactly parabola_step_within (itself tested
+  // against sampling above) and t < 1, on random quadratics at several tolerances and
+  // blocks; then their whole polylines against dense sampling.
+  test::SplitMix64 rng{44};
+  constexpr int B = detail::optimal_block;
+  int steps = 0, refused = 0;
+  for (int c = 0; c < 200; ++c) {
+    std::vector<P2> Q(3);
+    for (auto& q : Q) q = P2{rng.uniform(0, 0.8), rng.uniform(0, 0.8)};
+    if (c % 4 == 0) Q[1] = P2{Q[0][0] + 30 * (Q[1][0] - Q[0][0]), Q[1][1]};  // sharp tips, long chords
+    detail::SmallPiece<double, 2> s;
+    s.m = 3;
+    for (int i = 0; i < 3; ++i) s.q[static_cast<std::size_t>(i)] = Q[static_cast<std::size_t>(i)];
+    const double tol = c % 3 == 0 ? 1e-2 : c % 3 == 1 ? 1e-3 : 1e-4;
+    detail::SmallOptimalPlan<double> plan;
+    detail::small_optimal_plan(s, tol, plan);
+    if (!plan.closed || plan.n < 2) continue;
+    const B2 curve(Q);
+    const double df = 1.0 / plan.n, f_base = rng.uniform(0, 0.2) * df;  // (a base as after a repair)
+    for (int first = 1; first < plan.n; first += B) {
+      const double tp = first == 1 ? 0.0 : rng.uniform(0, 1) * 0.5;
+      double bt[B], bx[B], by[B];
+      const unsigned ok = detail::small_optimal_parabola_block(plan, f_base, df, first, tp, bt, bx, by);
+      for (int k = 0; k < B && first + k < plan.n; ++k) {
+        const double u = std::min(f_base + (first + k) * df, 1.0);
+        const auto& p = plan.span;
+        const double t =
+            p.sx != 0 ? std::clamp((detail::parabola_integral_inverse(p.a0 + u * p.da) - p.x0) * p.sx, 0.0, 1.0) : u;
+        EXPECT_NEAR(bt[k], t, 1e-9) << c << " " << k;
+        EXPECT_NEAR(bx[k], curve(bt[k])[0], 1e-12);
+        EXPECT_NEAR(by[k], curve(bt[k])[1], 1e-12);
+        const double prev = k ? bt[k - 1] : tp;
+        const bool want = detail::parabola_step_within(plan, prev, bt[k]) && bt[k] < 1;
+        EXPECT_EQ(((ok >> k) & 1u) != 0, want) << c << " " << k;
+        ++steps;
+        refused += !want;
+      }
+    }
+    checked_optimal(curve, tol, "random quadratic");
+  }
+  EXPECT_GT(steps, 2000);
+  EXPECT_GT(refused, 20);  // both outcomes met
+}
+#endif
 
 TEST(FlattenOptimal, CuspInflectionLoopWithinTolerance) {
   // Cusp at t = 1/2 (B'(1/2) = 0), an S-curve (one inflection), a loop; tolerances from

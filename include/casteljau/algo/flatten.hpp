@@ -1030,6 +1030,129 @@ CASTELJAU_FLATTEN_INLINE void small_optimal_batched(const SmallOptimalPlan<T>& p
   }
 }
 
+#if defined(__GNUC__)
+/// small_optimal_parabola_batched's block: the vertices first .. first + optimal_block - 1
+/// past the count's base (fraction f_base + j df of the count) placed on a piece that is
+/// one parabola (plan.closed), their points, and the closed-form check of each step from
+/// the one before (the first from tp) with t < 1, lane by lane as parabola_step_within,
+/// into bt, bx, by [0 .. optimal_block) and the bits 0 .. optimal_block - 1 of the result.
+/// The inverse parabola integral's square root from fast_rsqrt's bit guess and three
+/// Newton steps (relative error about 1e-11).
+inline unsigned small_optimal_parabola_block(const SmallOptimalPlan<double>& plan, double f_base, double df, double first, double tp,
+                                             double* bt, double* bx, double* by) {
+  typedef double Lanes __attribute__((vector_size(32)));
+  typedef std::int64_t Ints __attribute__((vector_size(32)));
+  constexpr int NV = optimal_block / 4;
+  const CountSpan<double> p0 = plan.span;
+  const double a0x = plan.a0[0], a0y = plan.a0[1], a1x = plan.a1[0], a1y = plan.a1[1], a2x = plan.a2[0], a2y = plan.a2[1];
+  const double a3x = plan.a3[0], a3y = plan.a3[1];
+  const double xa = plan.xa, xspan = plan.xspan, scale2 = plan.scale2, lim2 = plan.lim2;
+  unsigned ok = 0;
+  Lanes prev = Lanes{} + tp;
+  for (int v = 0; v < NV; ++v) {
+    Lanes u = f_base + (Lanes{0, 1, 2, 3} + (first + 4 * v)) * df;
+    u = u < 1 ? u : 1;
+    Lanes t = u;
+    if (p0.sx != 0) {
+      // parabola_integral_inverse(a) = a (1 - B + sqrt(B^2 + a^2 / 4)), B = 0.39
+      const Lanes a = p0.a0 + u * p0.da;
+      const Lanes S = 0.39 * 0.39 + 0.25 * a * a;  // >= 0.152
+      Lanes y = (Lanes)(std::int64_t{0x5FE6EB50C7B537A9} - ((Ints)S >> 1));
+      for (int it = 0; it < 3; ++it) y = y * (1.5 - 0.5 * S * y * y);  // relative error about 1e-11
+      t = (a * (1 - 0.39 + S * y) - p0.x0) * p0.sx;
+      t = t > 0 ? t : 0;
+      t = t < 1 ? t : 1;
+    }
+    const Lanes tq = __builtin_shuffle(prev, t, Ints{3, 4, 5, 6});  // each lane's previous parameter
+    const Lanes xn = xa + t * xspan, xp = xa + tq * xspan;
+    const Lanes dx = (t - tq) * xspan / 2, sl = 2 * xa + (tq + t) * xspan;
+    const Ints pass = (scale2 * (dx * dx) * (dx * dx) <= lim2 * (1 + sl * sl)) & (1 + 2 * xp * sl >= 0) & (1 + 2 * xn * sl >= 0) &
+                      (t > tq) & (t < 1);
+    for (int l = 0; l < 4; ++l) ok |= static_cast<unsigned>(pass[l] & 1) << (4 * v + l);
+    const Lanes X = a0x + ((a3x * t + a2x) * t + a1x) * t, Y = a0y + ((a3y * t + a2y) * t + a1y) * t;
+    std::memcpy(bt + 4 * v, &t, sizeof(Lanes));
+    std::memcpy(bx + 4 * v, &X, sizeof(Lanes));
+    std::memcpy(by + 4 * v, &Y, sizeof(Lanes));
+    prev = t;
+  }
+  return ok;
+}
+
+/// small_optimal's walk over a piece that is one parabola (plan.closed), for double with
+/// GCC/Clang, as small_optimal_batched: a block of optimal_block vertices placed (the
+/// inverse parabola integral's square root from fast_rsqrt's bit guess and three Newton
+/// steps, about 1e-11), evaluated and checked on the parabola in closed form (parabola_step_within's
+/// expressions lane by lane) in four-lane vectors; the steps taken in order up to the first
+/// that fails, which is handled as in the sequential walk (the cubic's cheap check, then
+/// small_optimal_repair). The closed-form check depends on the parameters alone, so after
+/// a failing step whose vertex stays, the block's later checks still hold. On return tp
+/// and A are the last emitted vertex's (dA is left to the caller).
+template <class At, class D1, class Emit>
+CASTELJAU_FLATTEN_INLINE void small_optimal_parabola_batched(const SmallOptimalPlan<double>& plan, double tol2, const At& point_at,
+                                                             const D1& d1_at, Emit& emit, double& tp, Point<double, 2>& A) {
+  constexpr int B = optimal_block;
+  const int n = plan.n;
+  const CountSpan<double> p0 = plan.span;
+  double f_base = 0, df = 1 / static_cast<double>(n);
+  int j_base = 0;
+  alignas(32) double bt[B], bx[B], by[B];
+  int j = 1;
+  while (j < n) {
+    const double first = static_cast<double>(j - j_base);
+    const unsigned ok = small_optimal_parabola_block(plan, f_base, df, first, tp, bt, bx, by);
+    const int cnt = std::min(B, n - j);
+    int k = 0;
+    bool replace = false;
+    if constexpr (requires { emit.block(bx, by, cnt); }) {
+      if ((ok & ((1u << cnt) - 1)) == (1u << cnt) - 1) {  // every step passed: written at once
+        emit.block(bx, by, cnt);
+        k = cnt;
+      }
+    }
+    while (k < cnt) {
+      if ((ok >> k) & 1u) [[likely]] {
+        emit(Point<double, 2>{bx[k], by[k]});
+        ++k;
+        continue;
+      }
+      // Step k failed on the parabola: the cubic's own check, from the vertex before it.
+      if (k > 0) tp = bt[k - 1], A = Point<double, 2>{bx[k - 1], by[k - 1]};
+      const Vector<double, 2> dA = d1_at(tp);
+      double tn = bt[k];
+      Point<double, 2> E{bx[k], by[k]};
+      Vector<double, 2> dE = d1_at(tn);
+      const int jj = j + k;
+      if (!(small_cheap_check(tn - tp, A, dA, E, dE, tol2) && tn < 1)) {
+        if (!(tn > tp && tn < 1)) {  // a rounding tie (or NaN): the vertex is left out
+          j = jj + 1;
+          replace = true;
+          break;
+        }
+        const double planned = tn;
+        small_optimal_repair(tp, A, dA, tn, E, dE, tol2, false, point_at, d1_at, emit);
+        if (tn != planned) {  // the count reached at the moved vertex, the rest spread again
+          const double fn = p0.sx != 0 && p0.da != 0 ? (parabola_integral(p0.x0 + tn / p0.sx) - p0.a0) / p0.da : tn;
+          df = (1 - fn) / static_cast<double>(n - jj);
+          f_base = fn;
+          j_base = jj;
+          emit(E);
+          tp = tn, A = E;
+          j = jj + 1;
+          replace = true;
+          break;
+        }
+      }
+      emit(E);
+      ++k;
+    }
+    if (!replace) {
+      j += cnt;
+      tp = bt[cnt - 1], A = Point<double, 2>{bx[cnt - 1], by[cnt - 1]};
+    }
+  }
+}
+#endif
+
 /// The near-optimal method on a plane polynomial piece of degree <= 3 (the unit-scale
 /// copy), after Levien's analytic flattening [Levien19]: the count n is planned first
 /// (small_optimal_plan), then vertex j is placed where the count function reaches j F / n
@@ -1060,8 +1183,22 @@ void small_optimal(const SmallPiece<T, 2>& s, T tol, Emit&& emit) {
   T tp = 0;
   Point<T, 2> A = a0;
   V dA = a1;
+  // One parabola checked in closed form: in blocks where vector extensions serve.
+  auto batched_parabola = [&](T& tp_, Point<T, 2>& A_) CASTELJAU_FLATTEN_LAMBDA {
+#if defined(__GNUC__)
+    if constexpr (std::is_same_v<T, double>) {
+      if (plan.closed) {
+        small_optimal_parabola_batched(plan, tol2, point_at, d1_at, emit, tp_, A_);
+        return true;
+      }
+    }
+#endif
+    (void)tp_, (void)A_;
+    return false;
+  };
   if (plan.sampled) {
     small_optimal_batched(plan, tol2, point_at, d1_at, emit, tp, A, dA);
+  } else if (batched_parabola(tp, A)) {
   } else {
     // One parabola: its constants in locals (the plan's memory must be read again after
     // every vertex written). Vertex j is placed at the fraction f_base + (j - j_base) df
