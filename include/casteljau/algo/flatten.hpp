@@ -1079,12 +1079,10 @@ inline unsigned small_optimal_parabola_block(const SmallOptimalPlan<double>& pla
 }
 
 /// small_optimal's walk over a piece that is one parabola (plan.closed), for double with
-/// GCC/Clang, as small_optimal_batched: a block of optimal_block vertices placed (the
-/// inverse parabola integral's square root from fast_rsqrt's bit guess and three Newton
-/// steps, about 1e-11), evaluated and checked on the parabola in closed form (parabola_step_within's
-/// expressions lane by lane) in four-lane vectors; the steps taken in order up to the first
-/// that fails, which is handled as in the sequential walk (the cubic's cheap check, then
-/// small_optimal_repair). The closed-form check depends on the parameters alone, so after
+/// GCC/Clang, as small_optimal_batched: a block of optimal_block vertices placed,
+/// evaluated and checked on the parabola in closed form (small_optimal_parabola_block);
+/// the steps taken in order up to the first that fails, which is handled as in the
+/// sequential walk (the cubic's cheap check, then small_optimal_repair). The closed-form check depends on the parameters alone, so after
 /// a failing step whose vertex stays, the block's later checks still hold. On return tp
 /// and A are the last emitted vertex's (dA is left to the caller).
 template <class At, class D1, class Emit>
