@@ -4,6 +4,7 @@
 // on cusps, inflections, loops, degenerate and extreme-scale curves; the parabola integral
 // against a numerical integral computed here; counts against a greedy near-optimal count
 // written here.
+#include <algorithm>
 #include <cmath>
 #include <utility>
 #include <vector>
@@ -177,6 +178,151 @@ TEST(FlattenOptimal, StepChecksAgainstSampling) {
   EXPECT_GT(closed_steps, 500);
   EXPECT_GT(cheap_accepted, 200);
 }
+
+TEST(FlattenOptimal, CauchySchwarzStepBound) {
+  // The cheap check's second bound of the offset D(u) = 3 u (1-u) ((1-u) d1 + u d2) of a
+  // step's sub-arc from its chord: max |D|^2 <= 9/128 (3 d1^2 + 2 d1 d2 + 3 d2^2), against
+  // D sampled at 20001 points; equal for d1 = d2 (a parabola's step), within 5% for d2 = 0.
+  test::SplitMix64 rng{21};
+  auto sampled = [](double d1, double d2) {
+    double m = 0;
+    for (int i = 0; i <= 20000; ++i) {
+      const double u = i / 20000.0;
+      m = std::max(m, std::abs(3 * u * (1 - u) * ((1 - u) * d1 + u * d2)));
+    }
+    return m;
+  };
+  auto bound = [](double d1, double d2) { return std::sqrt(9.0 / 128 * (3 * d1 * d1 + 2 * d1 * d2 + 3 * d2 * d2)); };
+  for (int k = 0; k < 300; ++k) {
+    const double d1 = rng.uniform(-1, 1), d2 = rng.uniform(-1, 1);
+    EXPECT_LE(sampled(d1, d2), bound(d1, d2) * (1 + 1e-12)) << d1 << " " << d2;
+  }
+  EXPECT_NEAR(bound(0.7, 0.7), 0.75 * 0.7, 1e-15);
+  EXPECT_LE(bound(1, 0), 1.05 * sampled(1, 0));  // 4/9 exactly; the bound sqrt(27/128) = 0.459
+}
+
+/// The first block of the batched walk of a sampled plan (small_optimal_batched): the
+/// arrays and check bits as the walk computes them from the piece's start.
+struct FirstBlock {
+  static constexpr int B = detail::optimal_block;
+  double t[B + 1], x[B + 1], y[B + 1], dx[B + 1], dy[B + 1];
+  unsigned ok = 0;
+  int cnt = 0;    ///< vertices of the block that belong to the piece
+  int fail = 0;   ///< the first failing step of the block (1 .. cnt), 0 when none fails
+};
+FirstBlock first_block(const detail::SmallOptimalPlan<double>& plan, double tol, bool lanes) {
+  FirstBlock b;
+  b.t[0] = 0, b.x[0] = plan.a0[0], b.y[0] = plan.a0[1], b.dx[0] = plan.a1[0], b.dy[0] = plan.a1[1];
+  const double df = plan.F / plan.n;
+#if defined(__GNUC__)
+  if (lanes) {
+    b.ok = detail::small_optimal_block_lanes<FirstBlock::B>(plan, 0.0, df, 1.0, tol * tol, b.t, b.x, b.y, b.dx, b.dy);
+  } else
+#endif
+  {
+    (void)lanes;
+    b.ok = detail::small_optimal_block_plain<double, FirstBlock::B>(plan, 0.0, df, 1.0, tol * tol, b.t, b.x, b.y, b.dx, b.dy);
+  }
+  b.cnt = std::min(FirstBlock::B, plan.n - 1);
+  for (int k = 1; k <= b.cnt && !b.fail; ++k)
+    if (!((b.ok >> k) & 1u)) b.fail = k;
+  return b;
+}
+
+TEST(FlattenOptimal, BatchedBlocksAgainstSampling) {
+  // Random unit-scale cubics (W3's kind) at tolerance 1e-3 with a sampled plan: the
+  // placement of a block in vector lanes (fast_rsqrt) against the plain form (std::sqrt):
+  // the same parameters within 1e-6 and the same points there; every step either form
+  // accepts within tol by sampling its sub-arc; then the whole polyline against the
+  // densely sampled curve and the greedy count, for pieces whose first block has its first
+  // failing step first, last, in the middle, or none (each case met at least twice).
+  test::SplitMix64 rng{33};
+  const double tol = 1e-3;
+  int first = 0, last = 0, middle = 0, none = 0, long_pieces = 0;
+  for (int c = 0; c < 400 && (first < 2 || last < 2 || middle < 2 || none < 2); ++c) {
+    detail::SmallPiece<double, 2> s;
+    s.m = 4;
+    std::vector<P2> Q(4);
+    for (auto& q : Q) q = P2{rng.uniform(0, 0.8), rng.uniform(0, 0.8)};
+    for (int i = 0; i < 4; ++i) s.q[static_cast<std::size_t>(i)] = Q[static_cast<std::size_t>(i)];
+    detail::SmallOptimalPlan<double> plan;
+    detail::small_optimal_plan(s, tol, plan);
+    if (!plan.sampled || plan.n < 3) continue;
+    const B2 curve(Q);
+    const FirstBlock a = first_block(plan, tol, true), b = first_block(plan, tol, false);
+    for (int k = 1; k <= a.cnt; ++k) {
+      EXPECT_NEAR(a.t[k], b.t[k], 1e-6) << c << " " << k;
+      EXPECT_NEAR(a.x[k], curve(a.t[k])[0], 1e-12);
+      EXPECT_NEAR(a.y[k], curve(a.t[k])[1], 1e-12);
+      for (const FirstBlock* f : {&a, &b}) {
+        if ((f->ok >> k) & 1u) {
+          EXPECT_LE(step_deviation(curve, f->t[k - 1], f->t[k]).first, tol * (1 + 1e-6)) << c << " " << k;
+        }
+      }
+    }
+    const bool full_block = plan.n - 1 > FirstBlock::B;
+    long_pieces += full_block;
+    int* which = a.fail == 0 ? &none : a.fail == 1 ? &first : a.fail == a.cnt ? &last : &middle;
+    if (*which >= 2) continue;
+    ++*which;
+    const auto poly = checked_optimal(curve, tol, "random cubic");
+    EXPECT_LE(static_cast<double>(poly.size() - 1), 1.05 * static_cast<double>(greedy_count(curve, tol)) + 1) << c;
+  }
+  EXPECT_EQ(first, 2);
+  EXPECT_EQ(last, 2);
+  EXPECT_EQ(middle, 2);
+  EXPECT_EQ(none, 2);
+  EXPECT_GT(long_pieces, 10);  // pieces of more than one block
+}
+
+#if defined(__GNUC__)
+TEST(FlattenOptimal, ParabolaBlocksAgainstScalarForms) {
+  // The closed-form (one parabola) walk's block in vector lanes against the scalar forms it
+  // stands for: each parameter within 1e-9 of parabola_integral_inverse's (std::sqrt), each
+  // point the piece's, and each step's bit exactly parabola_step_within (itself tested
+  // against sampling above) and t < 1, on random quadratics at several tolerances and
+  // blocks; then their whole polylines against dense sampling.
+  test::SplitMix64 rng{44};
+  constexpr int B = detail::optimal_block;
+  int steps = 0, refused = 0;
+  for (int c = 0; c < 200; ++c) {
+    std::vector<P2> Q(3);
+    for (auto& q : Q) q = P2{rng.uniform(0, 0.8), rng.uniform(0, 0.8)};
+    if (c % 4 == 0) Q[1] = P2{Q[0][0] + 30 * (Q[1][0] - Q[0][0]), Q[1][1]};  // sharp tips, long chords
+    detail::SmallPiece<double, 2> s;
+    s.m = 3;
+    for (int i = 0; i < 3; ++i) s.q[static_cast<std::size_t>(i)] = Q[static_cast<std::size_t>(i)];
+    const double tol = c % 3 == 0 ? 1e-2 : c % 3 == 1 ? 1e-3 : 1e-4;
+    detail::SmallOptimalPlan<double> plan;
+    detail::small_optimal_plan(s, tol, plan);
+    if (!plan.closed || plan.n < 2) continue;
+    const B2 curve(Q);
+    const double df = 1.0 / plan.n, f_base = rng.uniform(0, 0.2) * df;  // (a base as after a repair)
+    for (int first = 1; first < plan.n; first += B) {
+      const double tp = first == 1 ? 0.0 : rng.uniform(0, 1) * 0.5;
+      double bt[B], bx[B], by[B];
+      const unsigned ok = detail::small_optimal_parabola_block(plan, f_base, df, first, tp, bt, bx, by);
+      for (int k = 0; k < B && first + k < plan.n; ++k) {
+        const double u = std::min(f_base + (first + k) * df, 1.0);
+        const auto& p = plan.span;
+        const double t =
+            p.sx != 0 ? std::clamp((detail::parabola_integral_inverse(p.a0 + u * p.da) - p.x0) * p.sx, 0.0, 1.0) : u;
+        EXPECT_NEAR(bt[k], t, 1e-9) << c << " " << k;
+        EXPECT_NEAR(bx[k], curve(bt[k])[0], 1e-12);
+        EXPECT_NEAR(by[k], curve(bt[k])[1], 1e-12);
+        const double prev = k ? bt[k - 1] : tp;
+        const bool want = detail::parabola_step_within(plan, prev, bt[k]) && bt[k] < 1;
+        EXPECT_EQ(((ok >> k) & 1u) != 0, want) << c << " " << k;
+        ++steps;
+        refused += !want;
+      }
+    }
+    checked_optimal(curve, tol, "random quadratic");
+  }
+  EXPECT_GT(steps, 2000);
+  EXPECT_GT(refused, 20);  // both outcomes met
+}
+#endif
 
 TEST(FlattenOptimal, CuspInflectionLoopWithinTolerance) {
   // Cusp at t = 1/2 (B'(1/2) = 0), an S-curve (one inflection), a loop; tolerances from

@@ -7,6 +7,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <functional>
 #include <limits>
 #include <optional>
@@ -619,26 +620,25 @@ CASTELJAU_FLATTEN_INLINE double fast_rqrt4(double x) {
 /// Cells of the sampled density of a cubic in small_optimal (two Gauss-Legendre nodes each).
 inline constexpr int optimal_cells = 12;
 
-/// One span of small_optimal's count function: the piece on [t0, t0 + h], over which the
-/// near-optimal count grows from f0 to f1. Within it the count's fraction u maps to the
-/// parameter t0 + h x(u), by the parabola (sx != 0: x = (I^-1(a0 + u da) - x0) sx) or by
-/// the density linear across a sampled cell (slope, relative to the mean, in [-2, 2]).
+/// The count function of a piece that is one parabola in small_optimal: the count's
+/// fraction u maps to the parameter t = (I^-1(a0 + u da) - x0) sx (sx != 0; else t = u).
 template <class T>
 struct CountSpan {
-  T f0, f1, inv_span;  ///< counts at the ends, 1 / (f1 - f0) (0 for an empty span)
-  T a0, da, x0, sx;    ///< parabola: I(x0), I(x1) - I(x0), x0, 1 / (x1 - x0)
-  T slope;             ///< sampled cell
-  T t0, h;
+  T a0, da, x0, sx;  ///< I(x0), I(x1) - I(x0), x0, 1 / (x1 - x0)
 };
 
-/// small_optimal's plan of a plane polynomial piece of degree 1..3: its power form, the
-/// spans of its count function and the planned segment count n (see small_optimal).
+/// small_optimal's plan of a plane polynomial piece of degree 1..3: its power form, its
+/// count function and the planned segment count n (see small_optimal).
 template <class T>
 struct SmallOptimalPlan {
   Point<T, 2> a0;
   Vector<T, 2> a1, a2, a3;
-  CountSpan<T> q[optimal_cells];
-  int nq = 1;
+  CountSpan<T> span{};  ///< one parabola (not sampled)
+  /// Sampled: cell i = [i, i + 1] / optimal_cells, over which the count grows from f0[i]
+  /// to f1[i] (inv[i] = 1 / (f1[i] - f0[i]), 0 for an empty cell) with a density linear
+  /// across the cell (slope[i], relative to the mean, in [-2, 2]). Arrays, so that the
+  /// placement loads them without a stride.
+  T f0[optimal_cells], f1[optimal_cells], inv[optimal_cells], slope[optimal_cells];
   bool sampled = false;
   T F = 0;  ///< the count function's total
   int n = 1;
@@ -682,7 +682,6 @@ void small_optimal_plan(const SmallPiece<T, 2>& s, T tol, SmallOptimalPlan<T>& p
   const V a1 = plan.a1, a2 = plan.a2, a3 = plan.a3;
   plan.sampled = s.m == 4 && !(dot(a3, a3) <= tol * tol);
   plan.closed = false;
-  plan.nq = plan.sampled ? optimal_cells : 1;
   T F = 0;
   if (plan.sampled) {
     const T h = T(1) / static_cast<T>(optimal_cells);
@@ -699,26 +698,25 @@ void small_optimal_plan(const SmallPiece<T, 2>& s, T tol, SmallOptimalPlan<T>& p
       // A vanishing or denormal speed (a cusp) gets density 0, as 0 / 0 did.
       rho[j] = n2 > T(1e-280) ? c * fast_rsqrt(c) * fast_rqrt4(n2) : T(0);
     }
-    const T scale = h / 2 / std::sqrt(8 * tol);
+    const T scale = h / 2 / std::sqrt(8 * tol), inv_scale = 1 / scale;
+    T sum[optimal_cells];
     for (int i = 0; i < optimal_cells; ++i) {
-      CountSpan<T>& p = plan.q[i];
-      p.a0 = p.da = p.x0 = p.sx = 0;
-      p.t0 = static_cast<T>(i) * h;
-      p.h = h;
-      p.f0 = F;
-      const T sum = rho[2 * i] + rho[2 * i + 1];
-      F += sum * scale;
-      p.f1 = F;
-      // density mean + slope (x - 1/2) across the cell: slope from the nodes 1 / sqrt 3 apart
-      p.slope = sum > 0 ? std::clamp(T(2 * 1.7320508075688772) * (rho[2 * i + 1] - rho[2 * i]) / sum, T(-2), T(2)) : T(0);
-      p.inv_span = p.f1 > p.f0 ? 1 / (p.f1 - p.f0) : T(0);
+      // density mean + slope (x - 1/2) across the cell: slope from the nodes 1 / sqrt 3
+      // apart. Selections, not branches, and the divisions side by side (they vectorise).
+      sum[i] = rho[2 * i] + rho[2 * i + 1];
+      const bool some = sum[i] > 0;
+      const T r = (some ? T(1) : T(0)) / (some ? sum[i] : T(1));
+      plan.slope[i] = std::clamp(T(2 * 1.7320508075688772) * (rho[2 * i + 1] - rho[2 * i]) * r, T(-2), T(2));
+      plan.inv[i] = r * inv_scale;  // 1 / (f1 - f0) up to rounding
+    }
+    for (int i = 0; i < optimal_cells; ++i) {
+      plan.f0[i] = F;
+      F += sum[i] * scale;
+      plan.f1[i] = F;
     }
   } else {
-    CountSpan<T>& p = plan.q[0];
-    p.a0 = p.da = p.x0 = p.sx = p.slope = 0;
-    p.t0 = 0;
-    p.h = 1;
-    p.f0 = 0;
+    CountSpan<T>& p = plan.span;
+    p.a0 = p.da = p.x0 = p.sx = 0;
     const V b2 = T(3) * a3 + T(2) * a2;                        // B''(1/2)
     const V d1 = (T(0.75) * a3 + a2) + a1 - T(0.5) * b2;      // B'(1/2) - B''(1/2) / 2: the parabola's B'(0)
     const T c = cross(d1, b2), w2 = dot(b2, b2), dd = dot(d1, b2);
@@ -747,8 +745,6 @@ void small_optimal_plan(const SmallPiece<T, 2>& s, T tol, SmallOptimalPlan<T>& p
         plan.lim2 = lim * lim;
       }
     }
-    p.f1 = F;
-    p.inv_span = F > 0 ? 1 / F : T(0);
   }
   plan.F = F;
   const T want = std::ceil((plan.sampled ? T(1.02) : T(1)) * F - T(1e-9));
@@ -774,8 +770,14 @@ CASTELJAU_FLATTEN_INLINE bool parabola_step_within(const SmallOptimalPlan<T>& pl
 }
 
 /// The cheap form of small_chord_check: the inner points project inside the chord and the
-/// bound 3/8 |d1 + d2| + 0.1444 |d2 - d1| of max |D| is within the limit. Sufficient, not
-/// necessary (small_chord_check decides the rest). False for a step that is not positive.
+/// smaller of two bounds of max |D| is within the limit: 3/8 |d1 + d2| + 0.1444 |d2 - d1|
+/// (small_chord_check), and by Cauchy-Schwarz 3/4 sqrt(m^2 + e^2 / 2), m = (d1 + d2) / 2,
+/// e = (d2 - d1) / 2: with w = 2u - 1, |D| = 3/4 (1 - w^2) |m + w e| <= 3/4 (1 - w^2)
+/// sqrt(1 + 2 w^2) sqrt(m^2 + e^2 / 2) and (1 - w^2)^2 (1 + 2 w^2) <= 1 on [-1, 1]; its
+/// square 9/128 (3 d1^2 + 2 d1 d2 + 3 d2^2) needs no root. Tight for a parabola (d1 = d2)
+/// and within 4% for d2 = 0 (where the first is 17% over), so it refuses far fewer steps
+/// that pass. Sufficient, not necessary (small_chord_check decides the rest). False for a
+/// step that is not positive.
 template <class T>
 CASTELJAU_FLATTEN_INLINE bool small_cheap_check(T h, const Point<T, 2>& A, const Vector<T, 2>& dA, const Point<T, 2>& E,
                                                 const Vector<T, 2>& dE, T tol2) {
@@ -785,7 +787,8 @@ CASTELJAU_FLATTEN_INLINE bool small_cheap_check(T h, const Point<T, 2>& A, const
   const T d1 = cross(v, dA) * h3, d2 = -cross(v, dE) * h3;
   const T p1 = dot(v, dA) * h3, p2 = L2 - dot(v, dE) * h3;
   const T b = T(0.375) * std::abs(d1 + d2) + T(0.1444) * std::abs(d2 - d1);
-  return (p1 >= 0) & (p1 <= L2) & (p2 >= 0) & (p2 <= L2) & (b * b <= tol2 * L2) & (h > 0);
+  const T c2 = T(0.0703125) * (T(3) * (d1 * d1 + d2 * d2) + T(2) * (d1 * d2));  // 9/128 (...): small_chord_check
+  return (p1 >= 0) & (p1 <= L2) & (p2 >= 0) & (p2 <= L2) & (std::min(b * b, c2) <= tol2 * L2) & (h > 0);
 }
 
 /// A step [tp, tn] of small_optimal whose cheap check failed: checked exactly
@@ -828,16 +831,337 @@ template <class T, class At, class D1, class Emit>
   }
 }
 
+/// Vertices placed and checked together by small_optimal_batched (one block).
+inline constexpr int optimal_block = 8;
+
+/// small_optimal_batched's block: the vertices j = first .. first + B - 1 past the count's
+/// base (count f_base + j df) placed, their points and derivatives, and the cheap check
+/// (small_cheap_check, and t < 1) of each step from the one before (the first from the
+/// block's start, index 0 of the arrays), into bt .. bdy [1 .. B] and the bits 1 .. B of
+/// the result. The plain form, for any scalar type and compiler.
+template <class T, int B>
+unsigned small_optimal_block_plain(const SmallOptimalPlan<T>& plan, T f_base, T df, T first, T tol2, T* bt, T* bx, T* by, T* bdx, T* bdy) {
+  const T h = T(1) / static_cast<T>(optimal_cells);
+  const T *f0s = plan.f0, *f1s = plan.f1, *inv = plan.inv, *sl = plan.slope;
+  for (int k = 1; k <= B; ++k) {
+    const T f = f_base + (first + static_cast<T>(k - 1)) * df;
+    int qi = 0;
+    for (int i = 0; i + 1 < optimal_cells; ++i) qi += f >= f1s[i] ? 1 : 0;
+    const T s = sl[qi];
+    const T u = std::clamp((f - f0s[qi]) * inv[qi], T(0), T(1));
+    const T b = 1 - s / 2;
+    const T x = 2 * u / (b + std::sqrt(b * b + 2 * s * u));
+    const T t = (static_cast<T>(qi) + (x <= 1 ? x : T(1))) * h;
+    bt[k] = t;
+    bx[k] = plan.a0[0] + ((plan.a3[0] * t + plan.a2[0]) * t + plan.a1[0]) * t;
+    by[k] = plan.a0[1] + ((plan.a3[1] * t + plan.a2[1]) * t + plan.a1[1]) * t;
+    bdx[k] = (T(3) * plan.a3[0] * t + T(2) * plan.a2[0]) * t + plan.a1[0];
+    bdy[k] = (T(3) * plan.a3[1] * t + T(2) * plan.a2[1]) * t + plan.a1[1];
+  }
+  unsigned ok = 0;
+  for (int k = 1; k <= B; ++k) {
+    const bool pass = small_cheap_check(bt[k] - bt[k - 1], Point<T, 2>{bx[k - 1], by[k - 1]}, Vector<T, 2>{bdx[k - 1], bdy[k - 1]},
+                                        Point<T, 2>{bx[k], by[k]}, Vector<T, 2>{bdx[k], bdy[k]}, tol2) &
+                      (bt[k] < 1);
+    ok |= static_cast<unsigned>(pass) << k;
+  }
+  return ok;
+}
+
+#if defined(__GNUC__)
+/// small_optimal_block_plain for double in GCC/Clang vector extensions, four vertices per
+/// vector, kept in registers from the placement to the checks (the previous vertex of
+/// each lane by a shuffle, not through memory): the cell by counting the cells' ends
+/// passed, the square root as D fast_rsqrt(D) (multiplications only: the library sqrt
+/// keeps errno and is not vectorised), the check small_cheap_check's expressions lane by
+/// lane. The arrays are written at the end for the scan.
+template <int B>
+unsigned small_optimal_block_lanes(const SmallOptimalPlan<double>& plan, double f_base, double df, double first, double tol2, double* bt,
+                                   double* bx, double* by, double* bdx, double* bdy) {
+  typedef double Lanes __attribute__((vector_size(32)));
+  typedef std::int64_t Ints __attribute__((vector_size(32)));
+  constexpr int NV = B / 4;
+  static_assert(B % 4 == 0);
+  const double h = 1.0 / optimal_cells;
+  const double *f0s = plan.f0, *f1s = plan.f1, *inv = plan.inv, *sl = plan.slope;
+  const double a0x = plan.a0[0], a0y = plan.a0[1], a1x = plan.a1[0], a1y = plan.a1[1], a2x = plan.a2[0], a2y = plan.a2[1];
+  const double a3x = plan.a3[0], a3y = plan.a3[1];
+  Lanes T[NV], X[NV], Y[NV], DX[NV], DY[NV];
+  for (int v = 0; v < NV; ++v) {
+    const Lanes f = f_base + (Lanes{0, 1, 2, 3} + (first + 4 * v)) * df;
+    Ints qi = {0, 0, 0, 0};
+    for (int i = 0; i + 1 < optimal_cells; ++i) qi -= f >= f1s[i];
+    const Lanes s = {sl[qi[0]], sl[qi[1]], sl[qi[2]], sl[qi[3]]};
+    const Lanes f0 = {f0s[qi[0]], f0s[qi[1]], f0s[qi[2]], f0s[qi[3]]};
+    const Lanes iv = {inv[qi[0]], inv[qi[1]], inv[qi[2]], inv[qi[3]]};
+    Lanes u = (f - f0) * iv;
+    u = u > 0 ? u : 0;
+    u = u < 1 ? u : 1;
+    const Lanes b = 1 - s * 0.5;
+    Lanes D = b * b + 2 * s * u;  // >= (1 - |s| / 2)^2 >= 0 for |s| <= 2, 0 <= u <= 1, up to rounding
+    D = D > 0 ? D : 0;            // (the bit guess needs the sign bit clear)
+    Lanes y = (Lanes)(std::int64_t{0x5FE6EB50C7B537A9} - ((Ints)D >> 1));  // fast_rsqrt's
+    y = y * (1.5 - 0.5 * D * y * y);
+    y = y * (1.5 - 0.5 * D * y * y);
+    Lanes x = 2 * u / (b + D * y);
+    x = x <= 1 ? x : 1;  // (and 0 / 0)
+    const Lanes t = (__builtin_convertvector(qi, Lanes) + x) * h;
+    T[v] = t;
+    X[v] = a0x + ((a3x * t + a2x) * t + a1x) * t;
+    Y[v] = a0y + ((a3y * t + a2y) * t + a1y) * t;
+    DX[v] = (3 * a3x * t + 2 * a2x) * t + a1x;
+    DY[v] = (3 * a3y * t + 2 * a2y) * t + a1y;
+  }
+  unsigned ok = 0;
+  for (int v = 0; v < NV; ++v) {
+    // the previous vertex of each lane: the last lane of the vector before (or the start)
+    const Ints sh = {3, 4, 5, 6};
+    const Lanes pT = __builtin_shuffle(v ? T[v - 1] : Lanes{} + bt[0], T[v], sh);
+    const Lanes pX = __builtin_shuffle(v ? X[v - 1] : Lanes{} + bx[0], X[v], sh);
+    const Lanes pY = __builtin_shuffle(v ? Y[v - 1] : Lanes{} + by[0], Y[v], sh);
+    const Lanes pDX = __builtin_shuffle(v ? DX[v - 1] : Lanes{} + bdx[0], DX[v], sh);
+    const Lanes pDY = __builtin_shuffle(v ? DY[v - 1] : Lanes{} + bdy[0], DY[v], sh);
+    const Lanes vx = X[v] - pX, vy = Y[v] - pY;
+    const Lanes hh = T[v] - pT, h3 = hh * (1.0 / 3);
+    const Lanes L2 = vx * vx + vy * vy;
+    const Lanes d1 = (vx * pDY - vy * pDX) * h3, d2 = -(vx * DY[v] - vy * DX[v]) * h3;
+    const Lanes p1 = (vx * pDX + vy * pDY) * h3, p2 = L2 - (vx * DX[v] + vy * DY[v]) * h3;
+    const Lanes sum = d1 + d2, dif = d2 - d1;
+    const Lanes bl = 0.375 * (sum < 0 ? -sum : sum) + 0.1444 * (dif < 0 ? -dif : dif);
+    const Lanes b2 = bl * bl, c2 = 0.0703125 * (3 * (d1 * d1 + d2 * d2) + 2 * (d1 * d2));
+    const Ints pass = (p1 >= 0) & (p1 <= L2) & (p2 >= 0) & (p2 <= L2) & ((b2 < c2 ? b2 : c2) <= tol2 * L2) & (hh > 0) & (T[v] < 1);
+    for (int l = 0; l < 4; ++l) ok |= static_cast<unsigned>(pass[l] & 1) << (4 * v + l + 1);
+  }
+  for (int v = 0; v < NV; ++v) {
+    std::memcpy(bt + 1 + 4 * v, &T[v], sizeof(Lanes));
+    std::memcpy(bx + 1 + 4 * v, &X[v], sizeof(Lanes));
+    std::memcpy(by + 1 + 4 * v, &Y[v], sizeof(Lanes));
+    std::memcpy(bdx + 1 + 4 * v, &DX[v], sizeof(Lanes));
+    std::memcpy(bdy + 1 + 4 * v, &DY[v], sizeof(Lanes));
+  }
+  return ok;
+}
+#endif
+
+/// small_optimal's walk over a sampled plan, a block of optimal_block vertices at a time
+/// (small_optimal_block_plain / _lanes): every vertex of the block placed from its share
+/// of the count alone, then the block's points and derivatives, then the cheap check of
+/// each of its steps, without branches or carried dependences (so that the vertices
+/// overlap in the processor, and in vector lanes). The steps that pass are emitted in
+/// order up to the first that fails, which is handled as in the sequential walk
+/// (small_optimal): repaired, and when its vertex moved, the rest of the count spread
+/// again and the next block placed from there; when it did not move, the block's later
+/// checks still hold and the scan goes on. The same guarantee as the sequential walk
+/// (every emitted step passed the cheap or the exact check). On return tp, A, dA are the
+/// last emitted vertex's.
+template <class T, class At, class D1, class Emit>
+CASTELJAU_FLATTEN_INLINE void small_optimal_batched(const SmallOptimalPlan<T>& plan, T tol2, const At& point_at, const D1& d1_at, Emit& emit,
+                                                    T& tp, Point<T, 2>& A, Vector<T, 2>& dA) {
+  constexpr int B = optimal_block;
+  const int n = plan.n;
+  T f_base = 0, df = plan.F / static_cast<T>(n);
+  int j_base = 0;
+  // index 0: the block's start (the last emitted vertex); 1 .. B: the block's vertices
+  T bt[B + 1], bx[B + 1], by[B + 1], bdx[B + 1], bdy[B + 1];
+  int j = 1;
+  while (j < n) {
+    bt[0] = tp, bx[0] = A[0], by[0] = A[1], bdx[0] = dA[0], bdy[0] = dA[1];
+    const T first = static_cast<T>(j - j_base);  // vertex j's index past the count's base
+    unsigned ok;
+#if defined(__GNUC__)
+    if constexpr (std::is_same_v<T, double>) {
+      // (half a block when the piece has no more than 4 vertices left: about half the
+      // pieces' last blocks)
+      ok = n - j <= B / 2 ? small_optimal_block_lanes<B / 2>(plan, f_base, df, first, tol2, bt, bx, by, bdx, bdy)
+                          : small_optimal_block_lanes<B>(plan, f_base, df, first, tol2, bt, bx, by, bdx, bdy);
+    } else
+#endif
+    {
+      ok = small_optimal_block_plain<T, B>(plan, f_base, df, first, tol2, bt, bx, by, bdx, bdy);
+    }
+    const int cnt = std::min(B, n - j);
+    int k = 1;
+    bool replace = false;
+    if constexpr (requires { emit.block(bx, by, cnt); }) {
+      // every step of the block passed (the common case): its vertices written at once
+      if (((ok >> 1) & ((1u << cnt) - 1)) == (1u << cnt) - 1) {
+        emit.block(bx + 1, by + 1, cnt);
+        k = cnt + 1;
+      }
+    }
+    while (k <= cnt) {
+      if ((ok >> k) & 1u) [[likely]] {
+        emit(Point<T, 2>{bx[k], by[k]});
+        ++k;
+        continue;
+      }
+      // Step k failed: the state before it is vertex k - 1 of the block.
+      tp = bt[k - 1], A = Point<T, 2>{bx[k - 1], by[k - 1]}, dA = Vector<T, 2>{bdx[k - 1], bdy[k - 1]};
+      T tn = bt[k];
+      Point<T, 2> E{bx[k], by[k]};
+      Vector<T, 2> dE{bdx[k], bdy[k]};
+      const int jj = j + k - 1;
+      if (!(tn > tp && tn < 1)) {  // a rounding tie (or NaN): the vertex is left out
+        j = jj + 1;
+        replace = true;
+        break;
+      }
+      const T planned = tn;
+      small_optimal_repair(tp, A, dA, tn, E, dE, tol2, false, point_at, d1_at, emit);
+      emit(E);
+      if (tn != planned) {  // the count reached at the moved vertex, the rest spread again
+        const int q = std::min(optimal_cells - 1, static_cast<int>(tn * optimal_cells));
+        const T x = tn * optimal_cells - static_cast<T>(q);
+        const T fn = plan.f0[q] + (plan.f1[q] - plan.f0[q]) * (x + plan.slope[q] / 2 * (x * x - x));
+        df = (plan.F - fn) / static_cast<T>(n - jj);
+        f_base = fn;
+        j_base = jj;
+        tp = tn, A = E, dA = dE;
+        j = jj + 1;
+        replace = true;
+        break;
+      }
+      ++k;
+    }
+    if (!replace) {
+      j += cnt;
+      tp = bt[cnt], A = Point<T, 2>{bx[cnt], by[cnt]}, dA = Vector<T, 2>{bdx[cnt], bdy[cnt]};
+    }
+  }
+}
+
+#if defined(__GNUC__)
+/// small_optimal_parabola_batched's block: the vertices first .. first + optimal_block - 1
+/// past the count's base (fraction f_base + j df of the count) placed on a piece that is
+/// one parabola (plan.closed), their points, and the closed-form check of each step from
+/// the one before (the first from tp) with t < 1, lane by lane as parabola_step_within,
+/// into bt, bx, by [0 .. optimal_block) and the bits 0 .. optimal_block - 1 of the result.
+/// The inverse parabola integral's square root from fast_rsqrt's bit guess and three
+/// Newton steps (relative error about 1e-11).
+inline unsigned small_optimal_parabola_block(const SmallOptimalPlan<double>& plan, double f_base, double df, double first, double tp,
+                                             double* bt, double* bx, double* by) {
+  typedef double Lanes __attribute__((vector_size(32)));
+  typedef std::int64_t Ints __attribute__((vector_size(32)));
+  constexpr int NV = optimal_block / 4;
+  const CountSpan<double> p0 = plan.span;
+  const double a0x = plan.a0[0], a0y = plan.a0[1], a1x = plan.a1[0], a1y = plan.a1[1], a2x = plan.a2[0], a2y = plan.a2[1];
+  const double a3x = plan.a3[0], a3y = plan.a3[1];
+  const double xa = plan.xa, xspan = plan.xspan, scale2 = plan.scale2, lim2 = plan.lim2;
+  unsigned ok = 0;
+  Lanes prev = Lanes{} + tp;
+  for (int v = 0; v < NV; ++v) {
+    Lanes u = f_base + (Lanes{0, 1, 2, 3} + (first + 4 * v)) * df;
+    u = u < 1 ? u : 1;
+    Lanes t = u;
+    if (p0.sx != 0) {
+      // parabola_integral_inverse(a) = a (1 - B + sqrt(B^2 + a^2 / 4)), B = 0.39
+      const Lanes a = p0.a0 + u * p0.da;
+      const Lanes S = 0.39 * 0.39 + 0.25 * a * a;  // >= 0.152
+      Lanes y = (Lanes)(std::int64_t{0x5FE6EB50C7B537A9} - ((Ints)S >> 1));
+      for (int it = 0; it < 3; ++it) y = y * (1.5 - 0.5 * S * y * y);  // relative error about 1e-11
+      t = (a * (1 - 0.39 + S * y) - p0.x0) * p0.sx;
+      t = t > 0 ? t : 0;
+      t = t < 1 ? t : 1;
+    }
+    const Lanes tq = __builtin_shuffle(prev, t, Ints{3, 4, 5, 6});  // each lane's previous parameter
+    const Lanes xn = xa + t * xspan, xp = xa + tq * xspan;
+    const Lanes dx = (t - tq) * xspan / 2, sl = 2 * xa + (tq + t) * xspan;
+    const Ints pass = (scale2 * (dx * dx) * (dx * dx) <= lim2 * (1 + sl * sl)) & (1 + 2 * xp * sl >= 0) & (1 + 2 * xn * sl >= 0) &
+                      (t > tq) & (t < 1);
+    for (int l = 0; l < 4; ++l) ok |= static_cast<unsigned>(pass[l] & 1) << (4 * v + l);
+    const Lanes X = a0x + ((a3x * t + a2x) * t + a1x) * t, Y = a0y + ((a3y * t + a2y) * t + a1y) * t;
+    std::memcpy(bt + 4 * v, &t, sizeof(Lanes));
+    std::memcpy(bx + 4 * v, &X, sizeof(Lanes));
+    std::memcpy(by + 4 * v, &Y, sizeof(Lanes));
+    prev = t;
+  }
+  return ok;
+}
+
+/// small_optimal's walk over a piece that is one parabola (plan.closed), for double with
+/// GCC/Clang, as small_optimal_batched: a block of optimal_block vertices placed,
+/// evaluated and checked on the parabola in closed form (small_optimal_parabola_block);
+/// the steps taken in order up to the first that fails, which is handled as in the
+/// sequential walk (the cubic's cheap check, then small_optimal_repair). The closed-form check depends on the parameters alone, so after
+/// a failing step whose vertex stays, the block's later checks still hold. On return tp
+/// and A are the last emitted vertex's (dA is left to the caller).
+template <class At, class D1, class Emit>
+CASTELJAU_FLATTEN_INLINE void small_optimal_parabola_batched(const SmallOptimalPlan<double>& plan, double tol2, const At& point_at,
+                                                             const D1& d1_at, Emit& emit, double& tp, Point<double, 2>& A) {
+  constexpr int B = optimal_block;
+  const int n = plan.n;
+  const CountSpan<double> p0 = plan.span;
+  double f_base = 0, df = 1 / static_cast<double>(n);
+  int j_base = 0;
+  alignas(32) double bt[B], bx[B], by[B];
+  int j = 1;
+  while (j < n) {
+    const double first = static_cast<double>(j - j_base);
+    const unsigned ok = small_optimal_parabola_block(plan, f_base, df, first, tp, bt, bx, by);
+    const int cnt = std::min(B, n - j);
+    int k = 0;
+    bool replace = false;
+    if constexpr (requires { emit.block(bx, by, cnt); }) {
+      if ((ok & ((1u << cnt) - 1)) == (1u << cnt) - 1) {  // every step passed: written at once
+        emit.block(bx, by, cnt);
+        k = cnt;
+      }
+    }
+    while (k < cnt) {
+      if ((ok >> k) & 1u) [[likely]] {
+        emit(Point<double, 2>{bx[k], by[k]});
+        ++k;
+        continue;
+      }
+      // Step k failed on the parabola: the cubic's own check, from the vertex before it.
+      if (k > 0) tp = bt[k - 1], A = Point<double, 2>{bx[k - 1], by[k - 1]};
+      const Vector<double, 2> dA = d1_at(tp);
+      double tn = bt[k];
+      Point<double, 2> E{bx[k], by[k]};
+      Vector<double, 2> dE = d1_at(tn);
+      const int jj = j + k;
+      if (!(small_cheap_check(tn - tp, A, dA, E, dE, tol2) && tn < 1)) {
+        if (!(tn > tp && tn < 1)) {  // a rounding tie (or NaN): the vertex is left out
+          j = jj + 1;
+          replace = true;
+          break;
+        }
+        const double planned = tn;
+        small_optimal_repair(tp, A, dA, tn, E, dE, tol2, false, point_at, d1_at, emit);
+        if (tn != planned) {  // the count reached at the moved vertex, the rest spread again
+          const double fn = p0.sx != 0 && p0.da != 0 ? (parabola_integral(p0.x0 + tn / p0.sx) - p0.a0) / p0.da : tn;
+          df = (1 - fn) / static_cast<double>(n - jj);
+          f_base = fn;
+          j_base = jj;
+          emit(E);
+          tp = tn, A = E;
+          j = jj + 1;
+          replace = true;
+          break;
+        }
+      }
+      emit(E);
+      ++k;
+    }
+    if (!replace) {
+      j += cnt;
+      tp = bt[cnt - 1], A = Point<double, 2>{bx[cnt - 1], by[cnt - 1]};
+    }
+  }
+}
+#endif
+
 /// The near-optimal method on a plane polynomial piece of degree <= 3 (the unit-scale
 /// copy), after Levien's analytic flattening [Levien19]: the count n is planned first
 /// (small_optimal_plan), then vertex j is placed where the count function reaches j F / n
 /// (inverting the parabola integral, or the linear density of its cell), independently of
-/// the other vertices, so successive vertices overlap in the processor. Each step is
+/// the other vertices, so successive vertices overlap in the processor (for sampled
+/// cubics a block of optimal_block at a time, small_optimal_batched). Each step is
 /// checked exactly against the tolerance: on the parabola in closed form when the piece
 /// is one within 1e-3 tol (parabola_step_within: quadratics, font outlines), else by the
-/// cheap bound of small_chord_check; these accept most, small_optimal_repair handles the
-/// rest (about 5% of the steps on W3's random cubics, half of them passing the exact
-/// check as placed; 0.07% on its font outlines), so the
+/// cheap bound of small_cheap_check; these accept most, small_optimal_repair handles the
+/// rest (about 3% of the steps on W3's random cubics, one in eight of them passing the
+/// exact check as placed; 0.07% on its font outlines), so the
 /// tolerance is guaranteed whatever the count function's accuracy (cusps, inflections,
 /// loops). After a vertex is moved back the rest of the count is spread evenly over the
 /// remaining steps (so one short step does not lengthen the next). Interior vertices to
@@ -854,52 +1178,51 @@ void small_optimal(const SmallPiece<T, 2>& s, T tol, Emit&& emit) {
   auto point_at = [&](T t) CASTELJAU_FLATTEN_LAMBDA { return a0 + ((a3 * t + a2) * t + a1) * t; };
   auto d1_at = [&](T t) CASTELJAU_FLATTEN_LAMBDA { return (T(3) * a3 * t + T(2) * a2) * t + a1; };
   const T tol2 = tol * tol;
-  const int n = plan.n;
-  const T step = plan.F / static_cast<T>(n);
   T tp = 0;
   Point<T, 2> A = a0;
   V dA = a1;
-  // The loop twice (one parabola; sampled cells), with the one parabola's constants in
-  // locals: the plan's memory must be read again after every vertex written.
-  const T inv_n = 1 / static_cast<T>(n);
-  auto walk = [&]<bool Sampled>() CASTELJAU_FLATTEN_LAMBDA {
-    const CountSpan<T> p0 = plan.q[0];
-    int qi = 0;
-    // Vertex j is placed at the count f_base + (j - j_base) df (as a fraction of F for the
-    // parabola): j F / n until a step is repaired, then the rest of the count spread evenly
-    // over the remaining steps from the repaired vertex.
-    T f_base = 0, df = Sampled ? step : inv_n;
-    // closed-form checks (one parabola): the previous vertex's x; whether dA is current
-    const bool closed = !Sampled && plan.closed;
+  // One parabola checked in closed form: in blocks where vector extensions serve.
+  auto batched_parabola = [&](T& tp_, Point<T, 2>& A_) CASTELJAU_FLATTEN_LAMBDA {
+#if defined(__GNUC__)
+    if constexpr (std::is_same_v<T, double>) {
+      if (plan.closed) {
+        small_optimal_parabola_batched(plan, tol2, point_at, d1_at, emit, tp_, A_);
+        return true;
+      }
+    }
+#endif
+    (void)tp_, (void)A_;
+    return false;
+  };
+  if (plan.sampled) {
+    small_optimal_batched(plan, tol2, point_at, d1_at, emit, tp, A, dA);
+  } else if (batched_parabola(tp, A)) {
+  } else {
+    // One parabola: its constants in locals (the plan's memory must be read again after
+    // every vertex written). Vertex j is placed at the fraction f_base + (j - j_base) df
+    // of the count: j / n until a step is repaired, then the rest of the count spread
+    // evenly over the remaining steps from the repaired vertex.
+    const int n = plan.n;
+    const CountSpan<T> p0 = plan.span;
+    T f_base = 0, df = 1 / static_cast<T>(n);
+    // closed-form checks (one parabola): whether dA is current
+    const bool closed = plan.closed;
     bool fresh = true;
     int j_base = 0;
     for (int j = 1; j < n; ++j) {
-      const T f = f_base + static_cast<T>(j - j_base) * df;
-      T tn;
-      if constexpr (Sampled) {
-        while (qi + 1 < optimal_cells && f >= plan.q[qi].f1) ++qi;
-        const CountSpan<T>& p = plan.q[qi];
-        const T u = std::clamp((f - p.f0) * p.inv_span, T(0), T(1));
-        // density 1 + slope (x - 1/2) relative to the cell's mean: its integral slope / 2 x^2
-        // + (1 - slope / 2) x = u, the root in [0, 1] in stable form (b >= 0 for |slope| <= 2)
-        const T b = 1 - p.slope / 2;
-        const T x = 2 * u / (b + std::sqrt(b * b + 2 * p.slope * u));
-        tn = p.t0 + (x <= 1 ? x : T(1)) * p.h;
-      } else {
-        const T u = std::min(f, T(1));
-        tn = p0.sx != 0 ? std::clamp((parabola_integral_inverse(p0.a0 + u * p0.da) - p0.x0) * p0.sx, T(0), T(1)) : u;
-        if (closed) {
-          if (parabola_step_within(plan, tp, tn) && tn < 1) [[likely]] {
-            const Point<T, 2> E = point_at(tn);
-            emit(E);
-            tp = tn;
-            A = E;
-            fresh = false;
-            continue;
-          }
-          if (!fresh) dA = d1_at(tp);
-          fresh = true;
+      const T u = std::min(f_base + static_cast<T>(j - j_base) * df, T(1));
+      T tn = p0.sx != 0 ? std::clamp((parabola_integral_inverse(p0.a0 + u * p0.da) - p0.x0) * p0.sx, T(0), T(1)) : u;
+      if (closed) {
+        if (parabola_step_within(plan, tp, tn) && tn < 1) [[likely]] {
+          const Point<T, 2> E = point_at(tn);
+          emit(E);
+          tp = tn;
+          A = E;
+          fresh = false;
+          continue;
         }
+        if (!fresh) dA = d1_at(tp);
+        fresh = true;
       }
       Point<T, 2> E = point_at(tn);
       V dE = d1_at(tn);
@@ -908,17 +1231,8 @@ void small_optimal(const SmallPiece<T, 2>& s, T tol, Emit&& emit) {
         const T planned = tn;
         small_optimal_repair(tp, A, dA, tn, E, dE, tol2, false, point_at, d1_at, emit);
         if (tn != planned) {  // the count reached at the moved vertex, the rest spread again
-          T fn;
-          if constexpr (Sampled) {
-            qi = std::min(optimal_cells - 1, static_cast<int>(tn * optimal_cells));
-            const CountSpan<T>& p = plan.q[qi];
-            const T x = tn * optimal_cells - static_cast<T>(qi);
-            fn = p.f0 + (p.f1 - p.f0) * (x + p.slope / 2 * (x * x - x));
-            df = (plan.F - fn) / static_cast<T>(n - j);
-          } else {
-            fn = p0.sx != 0 && p0.da != 0 ? (parabola_integral(p0.x0 + tn / p0.sx) - p0.a0) / p0.da : tn;
-            df = (1 - fn) / static_cast<T>(n - j);
-          }
+          const T fn = p0.sx != 0 && p0.da != 0 ? (parabola_integral(p0.x0 + tn / p0.sx) - p0.a0) / p0.da : tn;
+          df = (1 - fn) / static_cast<T>(n - j);
           f_base = fn;
           j_base = j;
         }
@@ -928,11 +1242,6 @@ void small_optimal(const SmallPiece<T, 2>& s, T tol, Emit&& emit) {
       A = E;
       dA = dE;
     }
-  };
-  if (plan.sampled) {
-    walk.template operator()<true>();
-  } else {
-    walk.template operator()<false>();
   }
   if (plan.closed) dA = d1_at(tp);  // the walk may have left dA behind
   T tn = 1;
@@ -965,6 +1274,15 @@ struct SmallOptimalWriter {
     (*p)[0] = origin[0] + q[0] * up;
     (*p)[1] = origin[1] + q[1] * up;
     ++p;
+  }
+  /// The vertices (x[i], y[i]), i < count, in order (a block of small_optimal_batched).
+  CASTELJAU_FLATTEN_INLINE void block(const T* x, const T* y, int count) {
+    if (end - p < count) [[unlikely]] reserve(count);
+    for (int i = 0; i < count; ++i) {
+      p[i][0] = origin[0] + x[i] * up;
+      p[i][1] = origin[1] + y[i] * up;
+    }
+    p += count;
   }
   void finish() {
     if (p) out.resize(static_cast<std::size_t>(p - out.data()));
