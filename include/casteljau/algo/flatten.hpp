@@ -869,6 +869,20 @@ unsigned small_optimal_block_plain(const SmallOptimalPlan<T>& plan, T f_base, T 
 }
 
 #if defined(__GNUC__)
+/// Four doubles (and four 64-bit integers) in a GCC/Clang vector register.
+typedef double Lanes4 __attribute__((vector_size(32)));
+typedef std::int64_t Ints4 __attribute__((vector_size(32)));
+
+/// Each lane's previous lane across two vectors: lane 3 of a, then lanes 0..2 of b (the
+/// shuffle in GCC's and Clang's spellings).
+CASTELJAU_FLATTEN_INLINE Lanes4 previous_lanes(Lanes4 a, Lanes4 b) {
+#if defined(__clang__)
+  return __builtin_shufflevector(a, b, 3, 4, 5, 6);
+#else
+  return __builtin_shuffle(a, b, Ints4{3, 4, 5, 6});
+#endif
+}
+
 /// small_optimal_block_plain for double in GCC/Clang vector extensions, four vertices per
 /// vector, kept in registers from the placement to the checks (the previous vertex of
 /// each lane by a shuffle, not through memory): the cell by counting the cells' ends
@@ -878,8 +892,8 @@ unsigned small_optimal_block_plain(const SmallOptimalPlan<T>& plan, T f_base, T 
 template <int B>
 unsigned small_optimal_block_lanes(const SmallOptimalPlan<double>& plan, double f_base, double df, double first, double tol2, double* bt,
                                    double* bx, double* by, double* bdx, double* bdy) {
-  typedef double Lanes __attribute__((vector_size(32)));
-  typedef std::int64_t Ints __attribute__((vector_size(32)));
+  using Lanes = Lanes4;
+  using Ints = Ints4;
   constexpr int NV = B / 4;
   static_assert(B % 4 == 0);
   const double h = 1.0 / optimal_cells;
@@ -915,12 +929,11 @@ unsigned small_optimal_block_lanes(const SmallOptimalPlan<double>& plan, double 
   unsigned ok = 0;
   for (int v = 0; v < NV; ++v) {
     // the previous vertex of each lane: the last lane of the vector before (or the start)
-    const Ints sh = {3, 4, 5, 6};
-    const Lanes pT = __builtin_shuffle(v ? T[v - 1] : Lanes{} + bt[0], T[v], sh);
-    const Lanes pX = __builtin_shuffle(v ? X[v - 1] : Lanes{} + bx[0], X[v], sh);
-    const Lanes pY = __builtin_shuffle(v ? Y[v - 1] : Lanes{} + by[0], Y[v], sh);
-    const Lanes pDX = __builtin_shuffle(v ? DX[v - 1] : Lanes{} + bdx[0], DX[v], sh);
-    const Lanes pDY = __builtin_shuffle(v ? DY[v - 1] : Lanes{} + bdy[0], DY[v], sh);
+    const Lanes pT = previous_lanes(v ? T[v - 1] : Lanes{} + bt[0], T[v]);
+    const Lanes pX = previous_lanes(v ? X[v - 1] : Lanes{} + bx[0], X[v]);
+    const Lanes pY = previous_lanes(v ? Y[v - 1] : Lanes{} + by[0], Y[v]);
+    const Lanes pDX = previous_lanes(v ? DX[v - 1] : Lanes{} + bdx[0], DX[v]);
+    const Lanes pDY = previous_lanes(v ? DY[v - 1] : Lanes{} + bdy[0], DY[v]);
     const Lanes vx = X[v] - pX, vy = Y[v] - pY;
     const Lanes hh = T[v] - pT, h3 = hh * (1.0 / 3);
     const Lanes L2 = vx * vx + vy * vy;
@@ -1040,8 +1053,8 @@ CASTELJAU_FLATTEN_INLINE void small_optimal_batched(const SmallOptimalPlan<T>& p
 /// Newton steps (relative error about 1e-11).
 inline unsigned small_optimal_parabola_block(const SmallOptimalPlan<double>& plan, double f_base, double df, double first, double tp,
                                              double* bt, double* bx, double* by) {
-  typedef double Lanes __attribute__((vector_size(32)));
-  typedef std::int64_t Ints __attribute__((vector_size(32)));
+  using Lanes = Lanes4;
+  using Ints = Ints4;
   constexpr int NV = optimal_block / 4;
   const CountSpan<double> p0 = plan.span;
   const double a0x = plan.a0[0], a0y = plan.a0[1], a1x = plan.a1[0], a1y = plan.a1[1], a2x = plan.a2[0], a2y = plan.a2[1];
@@ -1063,7 +1076,7 @@ inline unsigned small_optimal_parabola_block(const SmallOptimalPlan<double>& pla
       t = t > 0 ? t : 0;
       t = t < 1 ? t : 1;
     }
-    const Lanes tq = __builtin_shuffle(prev, t, Ints{3, 4, 5, 6});  // each lane's previous parameter
+    const Lanes tq = previous_lanes(prev, t);  // each lane's previous parameter
     const Lanes xn = xa + t * xspan, xp = xa + tq * xspan;
     const Lanes dx = (t - tq) * xspan / 2, sl = 2 * xa + (tq + t) * xspan;
     const Ints pass = (scale2 * (dx * dx) * (dx * dx) <= lim2 * (1 + sl * sl)) & (1 + 2 * xp * sl >= 0) & (1 + 2 * xn * sl >= 0) &
