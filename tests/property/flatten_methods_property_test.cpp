@@ -8,6 +8,7 @@
 #include <iostream>
 #include <vector>
 
+#include "../unit/flatten_oracle.hpp"
 #include "../unit/test_support.hpp"
 #include "generators.hpp"
 
@@ -81,47 +82,6 @@ struct SplitMix {
   }
 };
 
-/// The largest distance of the cubic c on [t0, t1] from the line through c(t0), c(t1):
-/// the offsets of the part's control points from that line are (0, d1, d2, 0), so the
-/// offset is 3 t (1-t)^2 d1 + 3 t^2 (1-t) d2, extreme where its derivative (a quadratic)
-/// vanishes. Written here, apart from the library's check, as W3 defines it.
-double line_deviation(const Bezier<double, 2>& c, double t0, double t1) {
-  const auto P = c.portion(t0, t1).points();
-  const auto ch = P[3] - P[0];
-  const double L = norm(ch);
-  if (L == 0) return std::max(norm(P[1] - P[0]), norm(P[2] - P[0]));
-  const double d1 = cross(ch, P[1] - P[0]) / L, d2 = cross(ch, P[2] - P[0]) / L;
-  // d'(t) / 3 = (1-t)^2 d1 + 2 t (1-t) (d2 - d1) - t^2 d2 = a t^2 + b t + d1.
-  const double a = d1 - 2 * (d2 - d1) - d2, b = 2 * (d2 - d1) - 2 * d1;
-  auto off = [&](double t) { return std::abs(3 * t * (1 - t) * (1 - t) * d1 + 3 * t * t * (1 - t) * d2); };
-  double m = 0;
-  if (a == 0) {
-    if (b != 0 && -d1 / b > 0 && -d1 / b < 1) m = off(-d1 / b);
-  } else if (const double disc = b * b - 4 * a * d1; disc >= 0) {
-    for (const double t : {(-b + std::sqrt(disc)) / (2 * a), (-b - std::sqrt(disc)) / (2 * a)})
-      if (t > 0 && t < 1) m = std::max(m, off(t));
-  }
-  return m;
-}
-
-/// W3's near-optimal count: from t0, the largest t1 (bisection to 1e-13) whose arc stays
-/// within tol of the line through its ends.
-long near_optimal_count(const Bezier<double, 2>& c, double tol) {
-  double t = 0;
-  long n = 0;
-  while (t < 1) {
-    ++n;
-    if (line_deviation(c, t, 1) <= tol) break;
-    double lo = t, hi = 1;
-    while (hi - lo > 1e-13) {
-      const double mid = (lo + hi) / 2;
-      (line_deviation(c, t, mid) <= tol ? lo : hi) = mid;
-    }
-    t = lo;
-  }
-  return n;
-}
-
 // 1000 cubics of W3 dataset A (points uniform in [0, 100]^2, splitmix64 seed 3) at
 // tolerance 0.1: the optimal method within 5% of the near-optimal count, fewer segments
 // than the other two, and its count estimate (told before emitting) within 3%. The
@@ -141,7 +101,7 @@ TEST(FlattenMethods, CountsOnW3RandomCubics) {
     subdivision += static_cast<long>(flatten(c, 0.1, FlattenMethod::subdivision).size()) - 1;
     optimal += static_cast<long>(flatten(c, 0.1, FlattenMethod::optimal).size()) - 1;
     estimate += flatten_count_estimate(c, 0.1);
-    near += near_optimal_count(c, 0.1);
+    near += test::near_optimal_count(c, 0.1);
   }
   std::cout << "W3 random cubics (1000, tol 0.1): near-optimal " << near << ", optimal " << optimal << " ("
             << static_cast<double>(optimal) / static_cast<double>(near) << "x, estimate " << estimate << "), subdivision "

@@ -2,13 +2,14 @@
 // detail::small_optimal: count planned from the density integral, vertices placed
 // independently, every step checked): the tolerance against an independent dense sampling
 // on cusps, inflections, loops, degenerate and extreme-scale curves; the parabola integral
-// against a numerical integral computed here; counts against a greedy near-optimal count
-// written here.
+// against a numerical integral computed here; counts against the greedy near-optimal count of W3
+// (flatten_oracle.hpp).
 #include <algorithm>
 #include <cmath>
 #include <utility>
 #include <vector>
 
+#include "flatten_oracle.hpp"
 #include "test_support.hpp"
 
 namespace {
@@ -36,36 +37,6 @@ std::vector<P2> checked_optimal(const B2& c, double tol, const char* name) {
   for (const auto& v : poly) EXPECT_TRUE(std::isfinite(v[0]) && std::isfinite(v[1])) << name;
   EXPECT_LE(sampled_deviation(c, poly), tol * (1 + 1e-9)) << name << " tol " << tol;
   return poly;
-}
-
-/// Largest distance from c on [t0, t1] to the line through c(t0), c(t1), by 400 samples
-/// (for the greedy count; a line, never more than the segment distance).
-double line_deviation(const B2& c, double t0, double t1) {
-  const P2 a = c(t0), b = c(t1);
-  const auto u = b - a;
-  const double L = norm(u);
-  if (!(L > 0)) return 0;
-  double worst = 0;
-  for (int i = 1; i < 400; ++i) worst = std::max(worst, std::abs(cross(u, c(t0 + (t1 - t0) * i / 400.0) - a)) / L);
-  return worst;
-}
-
-/// Greedy count: from t, the largest step (bisection to 1e-12) whose arc is within tol of
-/// its chord's line.
-long greedy_count(const B2& c, double tol) {
-  double t = 0;
-  long n = 0;
-  while (t < 1) {
-    ++n;
-    if (line_deviation(c, t, 1) <= tol) break;
-    double lo = t, hi = 1;
-    while (hi - lo > 1e-12) {
-      const double mid = (lo + hi) / 2;
-      (line_deviation(c, t, mid) <= tol ? lo : hi) = mid;
-    }
-    t = lo;
-  }
-  return n;
 }
 
 TEST(FlattenOptimal, ParabolaIntegralAgainstQuadrature) {
@@ -266,7 +237,7 @@ TEST(FlattenOptimal, BatchedBlocksAgainstSampling) {
     if (*which >= 2) continue;
     ++*which;
     const auto poly = checked_optimal(curve, tol, "random cubic");
-    EXPECT_LE(static_cast<double>(poly.size() - 1), 1.05 * static_cast<double>(greedy_count(curve, tol)) + 1) << c;
+    EXPECT_LE(static_cast<double>(poly.size() - 1), 1.05 * static_cast<double>(test::near_optimal_count(curve, tol)) + 1) << c;
   }
   EXPECT_EQ(first, 2);
   EXPECT_EQ(last, 2);
@@ -409,13 +380,13 @@ TEST(FlattenOptimal, CountsNearTheGreedyCount) {
   const auto pq = checked_optimal(quad, 0.01, "quadratic");
   const auto pe = checked_optimal(elevated, 0.01, "elevated");
   EXPECT_EQ(pq.size(), pe.size());
-  const long gq = greedy_count(quad, 0.01);
+  const long gq = test::near_optimal_count(quad, 0.01);
   EXPECT_LE(static_cast<double>(pq.size() - 1), 1.01 * static_cast<double>(gq) + 1);
   EXPECT_EQ(flatten_count_estimate(quad, 0.01), static_cast<double>(pq.size() - 1));
   for (const B2& c : {B2{{10, 20}, {90, 95}, {5, 80}, {70, 3}}, B2{{0, 0}, {100, 100}, {0, 100}, {100, 0}}}) {
     const auto p = checked_optimal(c, 0.1, "cubic");
     const double n = static_cast<double>(p.size() - 1);
-    EXPECT_LE(n, 1.05 * static_cast<double>(greedy_count(c, 0.1)) + 1);
+    EXPECT_LE(n, 1.05 * static_cast<double>(test::near_optimal_count(c, 0.1)) + 1);
     EXPECT_NEAR(flatten_count_estimate(c, 0.1), n, 2);
   }
 }
