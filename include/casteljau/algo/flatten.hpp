@@ -874,7 +874,12 @@ typedef double Lanes4 __attribute__((vector_size(32)));
 typedef std::int64_t Ints4 __attribute__((vector_size(32)));
 
 /// Each lane's previous lane across two vectors: lane 3 of a, then lanes 0..2 of b (the
-/// shuffle in GCC's and Clang's spellings).
+/// shuffle in GCC's and Clang's spellings). Always inlined, so GCC's note that a 32-byte
+/// vector is passed differently with and without AVX (-Wpsabi) does not apply.
+#if !defined(__clang__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wpsabi"
+#endif
 CASTELJAU_FLATTEN_INLINE Lanes4 previous_lanes(Lanes4 a, Lanes4 b) {
 #if defined(__clang__)
   return __builtin_shufflevector(a, b, 3, 4, 5, 6);
@@ -882,6 +887,9 @@ CASTELJAU_FLATTEN_INLINE Lanes4 previous_lanes(Lanes4 a, Lanes4 b) {
   return __builtin_shuffle(a, b, Ints4{3, 4, 5, 6});
 #endif
 }
+#if !defined(__clang__)
+#pragma GCC diagnostic pop
+#endif
 
 /// small_optimal_block_plain for double in GCC/Clang vector extensions, four vertices per
 /// vector, kept in registers from the placement to the checks (the previous vertex of
