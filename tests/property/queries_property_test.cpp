@@ -133,7 +133,10 @@ RC_GTEST_PROP(QueriesProperty, FrenetFrameIsOrthonormal, ()) {
   const Vector<double, 3> x(d1[1] * d2[2] - d1[2] * d2[1], d1[2] * d2[0] - d1[0] * d2[2], d1[0] * d2[1] - d1[1] * d2[0]);
   // Well-conditioned points only (c'' at least 1/100 rad off c'): there the frame's
   // directions are accurate to about 100 eps and the comparisons below are fair.
-  RC_PRE(f.has_value() && f->normal.has_value() && norm(x) > 1e-2 * norm(d1) * norm(d2));
+  // One bool: RC_PRE decomposes its expression (an overloaded &&, no short circuit), and
+  // f->normal must not be read when f is empty.
+  const bool well_conditioned = f.has_value() && f->normal.has_value() && norm(x) > 1e-2 * norm(d1) * norm(d2);
+  RC_PRE(well_conditioned);
   RC_ASSERT(std::abs(norm(f->tangent) - 1) <= 4 * eps);
   RC_ASSERT(std::abs(norm(*f->normal) - 1) <= 4 * eps);
   RC_ASSERT(std::abs(dot(f->tangent, *f->normal)) <= 1e-14);
