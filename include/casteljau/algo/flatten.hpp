@@ -625,6 +625,10 @@ inline constexpr int optimal_cells = 12;
 template <class T>
 struct CountSpan {
   T a0, da, x0, sx;  ///< I(x0), I(x1) - I(x0), x0, 1 / (x1 - x0)
+
+  /// The count's fraction reached at the parameter t (the inverse of the map above): where
+  /// a repaired vertex moved, the rest of the count is spread again from it.
+  T fraction_at(T t) const { return sx != 0 && da != 0 ? (parabola_integral(x0 + t / sx) - a0) / da : t; }
 };
 
 /// small_optimal's plan of a plane polynomial piece of degree 1..3: its power form, its
@@ -1150,7 +1154,7 @@ CASTELJAU_FLATTEN_INLINE void small_optimal_parabola_batched(const SmallOptimalP
         const double planned = tn;
         small_optimal_repair(tp, A, dA, tn, E, dE, tol2, false, point_at, d1_at, emit);
         if (tn != planned) {  // the count reached at the moved vertex, the rest spread again
-          const double fn = p0.sx != 0 && p0.da != 0 ? (parabola_integral(p0.x0 + tn / p0.sx) - p0.a0) / p0.da : tn;
+          const double fn = p0.fraction_at(tn);
           df = (1 - fn) / static_cast<double>(n - jj);
           f_base = fn;
           j_base = jj;
@@ -1252,7 +1256,7 @@ void small_optimal(const SmallPiece<T, 2>& s, T tol, Emit&& emit) {
         const T planned = tn;
         small_optimal_repair(tp, A, dA, tn, E, dE, tol2, false, point_at, d1_at, emit);
         if (tn != planned) {  // the count reached at the moved vertex, the rest spread again
-          const T fn = p0.sx != 0 && p0.da != 0 ? (parabola_integral(p0.x0 + tn / p0.sx) - p0.a0) / p0.da : tn;
+          const T fn = p0.fraction_at(tn);
           df = (1 - fn) / static_cast<T>(n - j);
           f_base = fn;
           j_base = j;
