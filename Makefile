@@ -7,16 +7,20 @@ BENCH_BUILD ?= build-bench
 FUZZ_BUILD ?= build-fuzz
 FUZZ_SECONDS ?= 120
 
-.PHONY: deps build demo test test-release test-asan test-asan-smoke bench fuzz clean
+.PHONY: deps configure build demo test test-release test-asan test-asan-smoke bench fuzz package clean
 
 deps:
 	@scripts/install-deps.sh build
 
-build: deps
+configure: deps
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release
+
+build: configure
 	cmake --build $(BUILD) -j $(JOBS)
 
-demo: build
+# The gallery alone: the library's io layer and the figures, no test executables.
+demo: configure
+	cmake --build $(BUILD) -j $(JOBS) --target casteljau-gallery
 	$(BUILD)/apps/gallery/casteljau-gallery $(BUILD)/gallery
 	@echo "gallery: $(abspath $(BUILD)/gallery/index.html)"
 
@@ -64,6 +68,12 @@ fuzz:
 	mkdir -p $(FUZZ_BUILD)/corpus
 	cd $(FUZZ_BUILD) && tests/fuzz/casteljau_fuzz_request -max_total_time=$(FUZZ_SECONDS) -timeout=10 \
 	  -rss_limit_mb=4096 -artifact_prefix=$(abspath $(FUZZ_BUILD))/ corpus $(abspath tests/fuzz/corpus)
+
+# A Debian package of the library, its CMake package and the `casteljau` program (CPack);
+# prints the .deb's path. `dpkg -i` installs it (its dependencies: apt-get install -f).
+package: build
+	cd $(BUILD) && cpack -G DEB
+	@ls $(abspath $(BUILD))/casteljau_*.deb
 
 clean:
 	rm -rf $(BUILD) $(ASAN_BUILD) $(BENCH_BUILD) $(FUZZ_BUILD)

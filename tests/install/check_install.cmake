@@ -1,6 +1,9 @@
 # Installs the build tree into a scratch prefix, then configures, builds and runs the
 # consumer example against it with find_package(casteljau): the package config works
-# for a user's project. Run as: cmake -DBUILD_DIR=.. -DSOURCE_DIR=.. -DWORK_DIR=.. -P
+# for a user's project, and the installed `casteljau` program answers a request. Then
+# builds the Debian package (CPack, as `make package`) and checks that it holds exactly
+# the files `cmake --install` lays out, under /usr, and that its program runs.
+# Run as: cmake -DBUILD_DIR=.. -DSOURCE_DIR=.. -DWORK_DIR=.. -P check_install.cmake
 file(REMOVE_RECURSE "${WORK_DIR}")
 set(prefix "${WORK_DIR}/prefix")
 set(consumer_build "${WORK_DIR}/consumer")
@@ -10,11 +13,52 @@ function(run)
   if(NOT rc EQUAL 0)
     message(FATAL_ERROR "command failed (${rc}): ${ARGN}\n${out}\n${err}")
   endif()
-  message(STATUS "${out}")
+  set(run_output "${out}" PARENT_SCOPE)
+endfunction()
+
+# The program's answer to one request; the midpoint of the cubic below is (2, 1.5) by
+# de Casteljau (1/8 (0 + 3 + 9 + 4), 1/8 (0 + 6 + 6 + 0)).
+set(request "${WORK_DIR}/request.json")
+file(WRITE "${request}" [=[{"curve": {"type": "bezier", "points": [[0,0],[1,2],[3,2],[4,0]]}, "t": [0.5]}]=])
+function(check_program exe)
+  run("${exe}" eval "${request}")
+  if(NOT run_output MATCHES [=[^{"points":\[\[2\.0,1\.5\]\]}]=])
+    message(FATAL_ERROR "${exe} eval answered: ${run_output}")
+  endif()
 endfunction()
 
 run(${CMAKE_COMMAND} --install "${BUILD_DIR}" --prefix "${prefix}")
+check_program("${prefix}/bin/casteljau")
 run(${CMAKE_COMMAND} -S "${SOURCE_DIR}/examples/consumer" -B "${consumer_build}"
     -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_BUILD_TYPE=Release)
 run(${CMAKE_COMMAND} --build "${consumer_build}")
 run("${consumer_build}/consumer")
+message(STATUS "${run_output}")
+
+# The Debian package.
+set(deb_dir "${WORK_DIR}/deb")
+file(MAKE_DIRECTORY "${deb_dir}")
+execute_process(COMMAND cpack -G DEB -B "${deb_dir}" --config "${BUILD_DIR}/CPackConfig.cmake"
+                WORKING_DIRECTORY "${BUILD_DIR}" RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "cpack failed (${rc}):\n${out}\n${err}")
+endif()
+file(GLOB debs "${deb_dir}/casteljau_*.deb")
+list(LENGTH debs count)
+if(NOT count EQUAL 1)
+  message(FATAL_ERROR "expected one casteljau_*.deb in ${deb_dir}, found: ${debs}")
+endif()
+run(dpkg-deb --field "${debs}" Package Depends)
+if(NOT run_output MATCHES "Package: casteljau" OR NOT run_output MATCHES "libeigen3-dev" OR NOT run_output MATCHES "libc6")
+  message(FATAL_ERROR "unexpected package fields:\n${run_output}")
+endif()
+set(root "${WORK_DIR}/deb_root")
+run(dpkg-deb -x "${debs}" "${root}")
+file(GLOB_RECURSE installed RELATIVE "${prefix}" "${prefix}/*")
+file(GLOB_RECURSE packaged RELATIVE "${root}/usr" "${root}/usr/*")
+list(SORT installed)
+list(SORT packaged)
+if(NOT installed STREQUAL packaged)
+  message(FATAL_ERROR "the package's files under /usr differ from cmake --install's:\ninstall: ${installed}\npackage: ${packaged}")
+endif()
+check_program("${root}/usr/bin/casteljau")
