@@ -588,7 +588,10 @@ class FitTest(CliTest):
 
 
 class HelpTest(CliTest):
-    def test_every_example_is_true(self):
+    def test_help_examples_match_program_output_self_consistency(self):
+        # A consistency check, not a reference check: every example of these commands'
+        # help texts is run and compared with the response the help text prints (written
+        # from the program's output). The values themselves are checked against scipy above.
         for c in ("split", "elevate", "insert_knot", "remove_knot", "subdivide", "fit"):
             rc, out, err = run(c, args=["--help"])
             lines = out.splitlines()

@@ -73,16 +73,9 @@ void expect_on_page(const std::string& svg, const RenderStyle& s = {}) {
   }
 }
 
-/// All SVGs written by this test, parsed at the end by Python's XML parser.
-std::vector<std::string>& written() {
-  static std::vector<std::string> w;
-  return w;
-}
-
 std::string checked(const std::string& svg) {
   EXPECT_FALSE(has_bad_number(svg)) << svg;
   EXPECT_EQ(svg.rfind("<svg xmlns=\"http://www.w3.org/2000/svg\"", 0), 0u);
-  written().push_back(svg);
   return svg;
 }
 
@@ -534,15 +527,56 @@ TEST(Ticks, NiceValuesAndLabels) {
   EXPECT_EQ(io::tick_label(-1e-17, 0.1), "0");
 }
 
-// Runs last (tests run in declaration order): every SVG written above parses as XML.
-TEST(ZZ, EverySvgParsesAsXml) {
-  ASSERT_FALSE(written().empty());
+// Every kind of document the renderer and the writer produce parses as XML (Python's
+// xml.etree, an independent parser). The test renders its own documents, so it does not
+// depend on which other tests ran before it (gtest_filter, shuffling).
+TEST(SvgXml, EverySvgParsesAsXml) {
+  RenderStyle axes;
+  axes.axes = true;
+  RenderStyle bare;
+  bare.control_polygon = false;
+  RenderStyle hostile;
+  hostile.background = "<x>&\"'";
+  hostile.stroke = "red\" onload=\"alert(1)";
+  const Bezier<double, 1> graph({P1(0.0), P1(3.0), P1(-1.0), P1(2.0)});
+  const RationalBezier<double, 1> rational_graph({P1(0.0), P1(1.0), P1(0.0)}, {1.0, 3.0, 1.0});
+  const Path<double, 2> gap({Segment<double, 2>(cubic()), Segment<double, 2>(Bezier<double, 2>({{5.0, 0.0}, {6.0, 1.0}}))});
+  const std::vector<AnyCurve> several = {cubic(), Bezier<double, 2>({{0.0, 1.0}, {4.0, 1.0}}),
+                                         RationalBezier<double, 2>::circular_arc({0.0, 0.0}, 1.0, 0.0, 1.5)};
+  std::vector<std::string> docs = {
+      render(cubic()),                                                                  // C command
+      render(Bezier<double, 2>({{0.0, 0.0}, {1.0, 1.0}, {2.0, 0.0}}), axes),            // Q, ticks
+      render(Bezier<double, 2>({{0.0, 0.0}, {1.0, 1.0}}), bare),                        // L only
+      render(Bezier<double, 2>({{0.0, 0.0}, {1.0, 3.0}, {2.0, -1.0}, {3.0, 3.0}, {4.0, -1.0}, {5.0, 0.0}})),
+      render(RationalBezier<double, 2>::circular_arc({0.0, 0.0}, 1.0, 0.0, 3.0), axes),  // flattened
+      render(gap),                                                                      // two subpaths
+      render(graph, axes),                                                              // 1-D graphs
+      render(rational_graph),
+      render(Bezier<double, 2>({{7.0, -3.0}}), axes),                                   // a point
+      render(Bezier<double, 2>({{-1e300, -1e300}, {1e300, 1e300}, {1e300, -1e300}})),   // huge
+      render(cubic(), hostile),                                                         // escaped colours
+      io::render_svg(several),                                                          // palette
+      io::render_svg({}),                                                               // empty page
+      io::render_svg({}, axes),
+  };
+  io::SvgDocument doc(100, 50);
+  doc.title("P<sub> & co");
+  doc.text({10.0, 10.0}, "</svg><script>");
+  doc.begin_group("a");
+  doc.begin_group("b");
+  doc.end_group();
+  docs.push_back(doc.str());
+  for (const auto& d : docs) checked(d);
+
   const auto dir = std::filesystem::temp_directory_path() / ("casteljau_svg_test_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
-  for (std::size_t i = 0; i < written().size(); ++i) std::ofstream(dir / (std::to_string(i) + ".svg")) << written()[i];
+  for (std::size_t i = 0; i < docs.size(); ++i) std::ofstream(dir / (std::to_string(i) + ".svg")) << docs[i];
+  // The script fails (non-zero status) on the first document that does not parse, and on
+  // a directory holding fewer documents than were written.
   const std::string cmd = std::string(CASTELJAU_TEST_PYTHON) +
-                          " -c \"import sys, glob, xml.etree.ElementTree as E; [E.parse(f) for f in glob.glob(sys.argv[1] + '/*.svg')]\" " +
-                          dir.string();
+                          " -c \"import sys, glob, xml.etree.ElementTree as E; fs = glob.glob(sys.argv[1] + '/*.svg'); "
+                          "[E.parse(f) for f in fs]; sys.exit(0 if len(fs) == int(sys.argv[2]) else 3)\" " +
+                          dir.string() + " " + std::to_string(docs.size());
   const int rc = std::system(cmd.c_str());
   std::filesystem::remove_all(dir);
   EXPECT_EQ(rc, 0) << "an SVG is not well-formed XML";

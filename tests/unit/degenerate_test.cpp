@@ -4,6 +4,7 @@
 // fixture's scale.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -105,13 +106,28 @@ TEST_P(DegenerateFixture, Derivatives) {
 // Curvature is scale-covariant: kappa(s c) = kappa(c) / s. The fixtures with huge and tiny
 // coordinates are 1e150 and 1e-150 times a unit curve; their curvature must be that of
 // the unit curve scaled, not overflowed to 0 or inf. Zero speed gives nullopt, never NaN.
+// Absent only where it must be: a constant curve (all control points equal) has zero
+// speed everywhere; any other curve of degree n has a hodograph whose coordinates are
+// polynomials of degree n - 1, not both identically zero, so its speed vanishes at no more
+// than n - 1 parameters, and curvature is present at all other samples.
 TEST_P(DegenerateFixture, CurvatureFiniteOrAbsent) {
   const auto& f = GetParam();
-  for (double t : ts(50)) {
+  const auto& P = f.curve.points();
+  const bool constant = std::all_of(P.begin(), P.end(), [&](const P2& p) { return p == P.front(); });
+  const auto samples = ts(50);
+  int present = 0;
+  for (double t : samples) {
     const auto k = curvature(f.curve, t);
     if (k) {
       EXPECT_TRUE(std::isfinite(*k)) << t;
+      ++present;
     }
+  }
+  if (constant) {
+    EXPECT_EQ(present, 0) << "a constant curve has no curvature";
+  } else {
+    const int n = f.curve.degree();
+    EXPECT_GE(present, static_cast<int>(samples.size()) - std::max(n - 1, 0)) << "curvature missing at regular points";
   }
 }
 
