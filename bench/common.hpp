@@ -1,4 +1,4 @@
-// Shared pieces of the benchmarks: the splitmix64 generator of WORKLOADS.md, aligned
+// Shared pieces of the benchmarks: the splitmix64 generator of docs/performance.md, aligned
 // pre-faulted buffers, and the W1 and W2 input sets.
 #pragma once
 
@@ -14,8 +14,8 @@
 
 namespace bench {
 
-/// splitmix64 exactly as /work/shared/bench/WORKLOADS.md states it. The workloads file
-/// asks for "a fixed seed for each workload" without giving it; we use the workload
+/// splitmix64 exactly as docs/performance.md ("Workloads") states it. The workload definitions
+/// ask for "a fixed seed for each workload" without giving it; we use the workload
 /// number (W1: 1, W2: 2), so a peer reproduces the inputs from this comment alone.
 class SplitMix64 {
  public:

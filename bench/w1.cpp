@@ -1,4 +1,4 @@
-// W1 of /work/shared/bench/WORKLOADS.md: 1000 cubics x 10^4 parameters (10^7 points),
+// W1 of docs/performance.md: 1000 cubics x 10^4 parameters (10^7 points),
 // curve-major, against memset of the same output size and against the peers.
 // Names: W1/<library>/<variant>; counters: max_abs_diff (vs own scalar de Casteljau),
 // items_per_second (points/s). Built twice: -O3 -march=native and -O2 generic.

@@ -1,4 +1,4 @@
-// W2 of /work/shared/bench/WORKLOADS.md: accuracy at degrees 5, 10, 20, 40 against a
+// W2 of docs/performance.md: accuracy at degrees 5, 10, 20, 40 against a
 // 256-bit MPFR de Casteljau reference computed from the exact double inputs. Each entry
 // W2/<library>/<method>/<n> times the method on the 10 curves x 1000 parameters and
 // reports the counter max_error = max over curves, parameters and both coordinates of
@@ -88,7 +88,7 @@ double max_error(const Set& s) {
   return e;
 }
 
-/// Power coefficients a_j = C(n,j) sum_i (-1)^(j-i) C(j,i) P_i (WORKLOADS.md), [j][d];
+/// Power coefficients a_j = C(n,j) sum_i (-1)^(j-i) C(j,i) P_i (docs/performance.md, W2), [j][d];
 /// in double, or exactly in MPFR and then rounded once.
 std::vector<std::array<double, 2>> power_double(const std::vector<P2>& P) {
   const int n = static_cast<int>(P.size()) - 1;

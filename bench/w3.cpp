@@ -1,8 +1,8 @@
-// W3 of /work/shared/bench/WORKLOADS.md: flattening at tolerance 0.1 of 10,000 random cubics
+// W3 of docs/performance.md: flattening at tolerance 0.1 of 10,000 random cubics
 // (dataset `random`) and of DejaVuSans's quadratics elevated to cubics (`glyphs`), against
 // cairo (cairo_copy_path_flat) and OCCT (GCPnts_TangentialDeflection, GCPnts_QuasiUniformDeflection)
 // in the same run, with the workload's near-optimal count. Names W3/<library>/<method>/<dataset>;
-// one iteration flattens every curve of the dataset. Counters (WORKLOADS.md, "Names and
+// one iteration flattens every curve of the dataset. Counters (docs/performance.md, "Names and
 // counters"): curves, segments, over_tolerance, max_deviation, measured after timing by
 // dense sampling of every curve against its own polyline.
 #include <benchmark/benchmark.h>
@@ -183,7 +183,7 @@ double distance2_to_segment(const P2& p, const P2& a, const P2& b) {
   return dx * dx + dy * dy;
 }
 
-/// WORKLOADS.md W3: the curve sampled at S = 64 + 16 segments uniform parameters
+/// docs/performance.md, W3: the curve sampled at S = 64 + 16 segments uniform parameters
 /// t_j = j / (S - 1); the largest distance from a sample to the nearest segment of the polyline.
 /// Exhaustive over the segments (a segment whose box is already farther than the best
 /// distance is skipped without changing the result).
@@ -262,7 +262,7 @@ void run(benchmark::State& state, const std::string& name, const std::string& se
 
 // ---- the near-optimal count -----------------------------------------------------------
 
-/// WORKLOADS.md W3's exact check: the sub-arc [t0, t1] of c lies within tol of the line
+/// W3's exact check (docs/performance.md): the sub-arc [t0, t1] of c lies within tol of the line
 /// through c(t0) and c(t1). The signed distance d(t) = cross(u, c(t) - c(t0)) with u the
 /// line's unit direction is a cubic in t (power basis of c); |d| is largest at the ends
 /// (where it is 0) or at the real roots of d' inside (t0, t1).

@@ -1,4 +1,4 @@
-// W4 of /work/shared/bench/WORKLOADS.md: a natural cubic spline through 10^6 points, built
+// W4 of docs/performance.md: a natural cubic spline through 10^6 points, built
 // and evaluated at 10^6 random and 10^6 sorted queries, against GSL's gsl_spline (cspline)
 // in the same run. Names W4/<library>/build, W4/<library>/eval_random, W4/<library>/eval_sorted;
 // one iteration builds the whole spline or evaluates all 10^6 queries. Our eval_random is

@@ -1,4 +1,4 @@
-// W5 of /work/shared/bench/WORKLOADS.md: a clamped uniform cubic B-spline in 3-D with 1000
+// W5 of docs/performance.md: a clamped uniform cubic B-spline in 3-D with 1000
 // control points evaluated at 10^6 sorted and 10^6 random parameters, against OCCT
 // (Geom_BSplineCurve::D0, GeomAdaptor_Curve::D0), SISL (s1221) and GSL (bspline basis +
 // dot product) in the same run. Names W5/<library>/<method>/<sorted|random>; one iteration

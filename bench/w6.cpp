@@ -1,9 +1,9 @@
-// W6 of /work/shared/bench/WORKLOADS.md: intersections of 10,000 random pairs of plane
+// W6 of docs/performance.md: intersections of 10,000 random pairs of plane
 // cubics, against lib2geom (CubicBezier::intersect, find_intersections_bezier_clipping) and
 // OCCT (Geom2dAPI_InterCurveCurve) in the same run, each checked against the workload's
 // reference: recursive subdivision of both curves in long double. Names W6/<library>/<method>;
 // one iteration intersects all pairs. Counters: intersections, pairs_missed, pairs_extra,
-// max_distance (WORKLOADS.md, "Names and counters"); reported (hits before merging).
+// max_distance (docs/performance.md, "Names and counters"); reported (hits before merging).
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -53,7 +53,7 @@ using Cubic = std::array<P2, 4>;
 using Hit = std::pair<double, double>;
 
 constexpr std::size_t pair_count = 10'000;
-/// Hits closer than this in both parameters are one intersection (WORKLOADS.md W6).
+/// Hits closer than this in both parameters are one intersection (docs/performance.md, W6).
 constexpr double merge_distance = 1e-6;
 
 // ---- the reference: long double subdivision -------------------------------------------
@@ -89,7 +89,7 @@ bool boxes_meet(const LCubic& a, const LCubic& b) {
 
 /// The workload's reference: both curves halved together, pairs of parts whose control boxes
 /// meet kept, down to parameter width 2^-34; surviving leaves are hits at their midpoints.
-/// Throws past 4 10^6 nodes per pair (WORKLOADS.md: never hit).
+/// Throws past 4 10^6 nodes per pair (docs/performance.md: never hit).
 struct Reference {
   static constexpr int depth = 34;
   static constexpr std::size_t node_cap = 4'000'000;
@@ -338,7 +338,7 @@ void reg(const std::string& name, void (*intersect_all)(Hits&)) {
 }
 
 /// The pairs where lib2geom's CubicBezier::intersect and OCCT disagree, and which of them
-/// matches the reference (WORKLOADS.md W6), on stderr.
+/// matches the reference (docs/performance.md, W6), on stderr.
 void list_disagreements() {
   const auto& m = counts_by_method();
   const auto g = m.find("W6/lib2geom/intersect"), o = m.find("W6/occt/InterCurveCurve");

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Black-box tests of the `casteljau` command line program (shared/spec/cli.md).
+"""Black-box tests of the `casteljau` command line program (docs/cli.md).
 
 Usage: test_cli.py PATH_TO_CASTELJAU [unittest options]
 
@@ -36,7 +36,8 @@ def run(command, request=None, args=(), text=None):
 # ---------------------------------------------------------------------------------------
 # Reference geometry, written independently of the library.
 
-# Every command of shared/spec/cli.md.
+# The contract commands this program serves (docs/cli.md; the others are listed there under
+# "Not yet served").
 CONTRACT_COMMANDS = ("eval", "split", "elevate", "insert_knot", "remove_knot", "subdivide", "to_bezier",
                      "bounds", "length", "param_at_length", "features", "distance", "area", "project",
                      "intersect", "flatten", "fit", "render")

@@ -4,7 +4,7 @@ insert_knot, remove_knot. The oracle is scipy.interpolate.BSpline (python3-scipy
 time: every result must trace the original curve (evaluated by scipy on the original
 knots) at many parameters; insertion is also compared point by point with
 scipy.interpolate.insert (FITPACK's insert), and knot multiplicities are counted here.
-The bad-input rules of shared/spec/cli.md: a knot outside the domain, a multiplicity past
+The bad-input rules of docs/cli.md: a knot outside the domain, a multiplicity past
 the degree, a count < 1, a tolerance <= 0, a knot that is not one.
 
 Usage: test_knots.py PATH_TO_CASTELJAU [unittest options]

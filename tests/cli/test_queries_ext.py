@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Black-box tests of the query extensions of issue 8 (docs/cli.md, "Beyond
-shared/spec/cli.md"): `bounds` over a parameter range, `eval`'s `frame` (unit tangent,
+the contract"): `bounds` over a parameter range, `eval`'s `frame` (unit tangent,
 normal, binormal, curvature, torsion), inflections and cusps at the breaks of piecewise
 curves in `features`, and high-degree `length` and `features`. Expected values come from
 closed forms and from oracles at test time: the curve evaluator of test_queries.py in

@@ -1,7 +1,7 @@
 // The three flattening methods: each within its tolerance on random curves (cubics with
 // cusps, loops and inflections included; rational ones too), scaling exactly by powers of
 // two, and the segment counts compared with each other and with the greedy near-optimal
-// count of WORKLOADS.md W3.
+// count of W3 (docs/performance.md).
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -69,7 +69,7 @@ RC_GTEST_PROP(FlattenMethods, ScaleExactlyByPowersOfTwo, ()) {
 
 // --- counts -------------------------------------------------------------------------------
 
-/// splitmix64 as WORKLOADS.md defines it.
+/// splitmix64 as docs/performance.md ("Workloads") defines it.
 struct SplitMix {
   std::uint64_t state;
   double uniform(double a, double b) {

@@ -116,7 +116,7 @@ TEST(Reference, DeCasteljauAndBatchAgainstMpfr) {
 // The O(n) method of the batch path (Bernstein-Horner, degrees 4..60, basis/batch.hpp)
 // in every instruction set this machine runs (forced through batch::select_isa), at
 // degrees 4..60, on two parameter sets: uniform() (multiples of 2^-53, where 1 - t is
-// exact, as in WORKLOADS.md W2) and the same times 0.7 (all 53 bits used, so 1 - t is
+// exact, as in W2 of docs/performance.md) and the same times 0.7 (all 53 bits used, so 1 - t is
 // rounded for t < 1/2, which the kernel corrects). Bound 2e-15 (~9 eps): the goal of
 // the fast path at every degree up to 40 (issue 5), held here up to 60; the a-priori bound, ~3n eps of max|P|,
 // is 10x larger at degree 40, but the kernel carries the three coherent roundings (1 - t,

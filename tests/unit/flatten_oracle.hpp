@@ -1,4 +1,4 @@
-// The near-optimal segment count of WORKLOADS.md W3, written apart from the library's
+// The near-optimal segment count of W3 (docs/performance.md, "Workloads"), written apart from the library's
 // flattening: the oracle of the flattening tests in the unit and property executables.
 #pragma once
 
