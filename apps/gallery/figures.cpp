@@ -969,8 +969,9 @@ std::string html_page(const std::vector<Figure>& figures) {
 <body>
 <header>
 <h1>casteljau gallery</h1>
-<p>Properties of B&eacute;zier and rational B&eacute;zier curves, each figure and every number in its caption computed by the
-casteljau library when this page was generated (<code>make demo</code>).</p>
+<p>B&eacute;zier and rational B&eacute;zier curves, B-splines and NURBS, interpolating splines and the geometric queries on
+them: each figure and every number in its caption computed by the casteljau library when this page was generated
+(<code>make demo</code>).</p>
 <nav><ol>
 )";
   for (const auto& f : figures) h += "<li><a href=\"#" + io::xml_escape(f.id) + "\">" + io::xml_escape(f.title) + "</a></li>\n";
