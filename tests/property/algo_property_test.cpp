@@ -14,7 +14,7 @@ namespace {
 
 using namespace casteljau;
 using P2 = Point<double, 2>;
-constexpr double eps = std::numeric_limits<double>::epsilon();
+using casteljau::prop::eps;
 
 // Every point of the curve is within tolerance of the polyline (guaranteed by the flatness
 // test on control points); checked at 1000 samples; vertices run from start to end.

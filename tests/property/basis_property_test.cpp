@@ -10,7 +10,7 @@
 namespace {
 
 using namespace casteljau;
-constexpr double eps = std::numeric_limits<double>::epsilon();
+using casteljau::prop::eps;
 
 // sum_i B(i,n)(t) = 1 and B(i,n)(t) >= 0 on [0, 1] [Farin02, 5.1]. Each value carries a
 // relative error of about (n + 2) eps (products of n factors and a binomial) and the

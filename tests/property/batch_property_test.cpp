@@ -24,7 +24,7 @@
 namespace {
 
 using namespace casteljau;
-constexpr double eps = std::numeric_limits<double>::epsilon();
+using casteljau::prop::eps;
 constexpr double fast_path_tol = 64 * eps;
 
 

@@ -17,18 +17,13 @@
 namespace {
 
 using namespace casteljau;
-constexpr double eps = std::numeric_limits<double>::epsilon();
+using casteljau::prop::eps;
 
 /// Calls f.template operator()<D>() for a random D in 1..4.
 
-template <class P>
-double diff(const P& a, const P& b) {
-  double m = 0;
-  for (int d = 0; d < P::dimension; ++d) m = std::max(m, std::abs(a[d] - b[d]));
-  return m;
-}
+using casteljau::prop::diff;
 
-int degree() { return *rc::gen::inRange(1, 31); }
+using casteljau::prop::degree;
 
 // c(0) = P0 and c(1) = Pn exactly; c'(0) = n (P1 - P0), c'(1) = n (Pn - Pn-1): the same
 // one subtraction and one multiplication, so exactly equal.

@@ -9,11 +9,26 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "casteljau/casteljau.hpp"
 
 namespace casteljau::prop {
+
+/// Machine epsilon of double, the unit of the properties' tolerances.
+inline constexpr double eps = std::numeric_limits<double>::epsilon();
+
+/// A random degree in 1..30.
+inline int degree() { return *rc::gen::inRange(1, 31); }
+
+/// The largest coordinate difference between two points (or vectors) of one dimension.
+template <class P>
+double diff(const P& a, const P& b) {
+  double m = 0;
+  for (int d = 0; d < P::dimension; ++d) m = std::max(m, std::abs(a[d] - b[d]));
+  return m;
+}
 
 /// A coordinate in [lo, hi] on a grid of (hi - lo) 2^-20.
 inline rc::Gen<double> coordinate(double lo = -1, double hi = 1) {

@@ -14,7 +14,7 @@
 namespace {
 
 using namespace casteljau;
-constexpr double eps = std::numeric_limits<double>::epsilon();
+using casteljau::prop::eps;
 
 // project() is global: no sample of the curve is nearer (farther) than its answer, beyond
 // the distance's rounding (a few eps of the control points' size, which is <= 2 here).

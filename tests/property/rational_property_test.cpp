@@ -15,21 +15,16 @@
 namespace {
 
 using namespace casteljau;
-constexpr double eps = std::numeric_limits<double>::epsilon();
+using casteljau::prop::eps;
 
-template <class P>
-double diff(const P& a, const P& b) {
-  double m = 0;
-  for (int d = 0; d < P::dimension; ++d) m = std::max(m, std::abs(a[d] - b[d]));
-  return m;
-}
+using casteljau::prop::diff;
 
 template <int D>
 RationalBezier<double, D> random_rational(int n) {
   return RationalBezier<double, D>(prop::control_points<D>(n), prop::weights(n));
 }
 
-int degree() { return *rc::gen::inRange(1, 31); }
+using casteljau::prop::degree;
 
 RC_GTEST_PROP(RationalProperty, ScalingWeightsLeavesCurveUnchanged, ()) {
   const int n = degree();

@@ -13,7 +13,7 @@ namespace {
 using namespace casteljau;
 using P2 = Point<double, 2>;
 using V2 = Vector<double, 2>;
-constexpr double eps = std::numeric_limits<double>::epsilon();
+using casteljau::test::eps;
 
 // --- tight bounds ------------------------------------------------------------------------------
 

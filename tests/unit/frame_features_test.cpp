@@ -22,7 +22,7 @@ using B2 = Bezier<double, 2>;
 using B3 = Bezier<double, 3>;
 using R2 = RationalBezier<double, 2>;
 using R3 = RationalBezier<double, 3>;
-constexpr double eps = std::numeric_limits<double>::epsilon();
+using casteljau::test::eps;
 constexpr double pi = std::numbers::pi;
 
 /// A full circle of radius r about c, counter-clockwise, as four rational quarter arcs on

@@ -18,7 +18,7 @@ using namespace casteljau;
 using P2 = Point<double, 2>;
 using B2 = Bezier<double, 2>;
 using R2 = RationalBezier<double, 2>;
-constexpr double eps = std::numeric_limits<double>::epsilon();
+using casteljau::test::eps;
 constexpr double pi = std::numbers::pi;
 
 /// (t - a) on [0, 1] in Bernstein form of degree 1: the values at t = 0 and t = 1.

@@ -14,6 +14,8 @@
 #include "casteljau/casteljau.hpp"
 
 namespace casteljau::test {
+/// Machine epsilon of double, the unit of the tests' tolerances.
+inline constexpr double eps = std::numeric_limits<double>::epsilon();
 
 /// splitmix64 (Steele, Lea, Flood 2014): a tiny, fully specified generator, so the
 /// reference data are the same on every platform and standard library.
