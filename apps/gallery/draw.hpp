@@ -37,6 +37,10 @@ inline const std::string polygon_grey = "#8d99ae";  // control polygons, seconda
 inline const std::string point_edge = "#3d4a5c";
 inline const std::string text_grey = "#4a5563";
 inline const std::string accent = "#c23b5a";  // the point or property a figure is about
+inline const std::string grey = polygon_grey;         // short names the figure files share
+inline const std::string light = "#b9c1ca";           // faint guides
+inline const std::string green = "#2a9d5c";           // a second highlighted kind of point
+inline constexpr double width = fig_width;
 inline const std::string sans = "system-ui, 'Helvetica Neue', Arial, sans-serif";
 
 inline Paint curve_paint(const std::string& colour = ink, double width = 2.6) { return Paint{.stroke = colour, .stroke_width = width}; }

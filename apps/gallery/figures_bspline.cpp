@@ -19,8 +19,6 @@ namespace casteljau::gallery {
 namespace {
 
 
-constexpr double width = 880;
-const std::string grey = polygon_grey, light = "#b9c1ca";
 
 
 /// max |a(u) - b(u)| over 2001 parameters of [lo, hi].

@@ -23,8 +23,6 @@ namespace {
 
 using Spline = BSpline<double, 2>;
 
-constexpr double width = 880;
-const std::string grey = polygon_grey, light = "#b9c1ca";
 
 /// A knot value as the captions write it: integers without decimals.
 std::string knot_text(double u) { return u == std::floor(u) ? plain(u, 0) : plain(u, 1); }

@@ -18,7 +18,6 @@ namespace {
 
 using P1 = Point<double, 1>;
 
-constexpr double width = 880;  // px, the page's column width (as figures.cpp)
 
 
 /// The graph (x, y(x)) of a 1-D curve at n + 1 parameters over [a, b].

@@ -21,7 +21,6 @@ namespace {
 using Bez = Bezier<double, 2>;
 
 const std::string second = "#2a9d8f";
-const std::string grey = polygon_grey;
 
 template <class C>
 double deviation(const C& c, const std::vector<P2>& poly) {

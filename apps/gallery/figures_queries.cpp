@@ -17,8 +17,6 @@ namespace {
 
 using Bez = Bezier<double, 2>;
 
-constexpr double width = fig_width;
-const std::string grey = polygon_grey, green = "#2a9d5c";
 
 
 }  // namespace
