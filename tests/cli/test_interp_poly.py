@@ -432,6 +432,16 @@ class CatmullRomTest(CliTest):
         self.bad("eval", {"curve": catmull_rom([[0], [1e-310], [2e-310], [3e-310]], alpha=1), "t": [0]}, "curve.points",
                  contains="underflows")
 
+    def test_overflow_message_quotes_the_users_parameter(self):
+        # Issue 15: extrapolating far outside a tiny curve overflowed, and the message quoted
+        # the segment's own parameter (4.47e148) where the request said 0.1.
+        s = 1e-149
+        P = [[0, 0], [1 * s, 3 * s], [4 * s, 4 * s], [6 * s, 1 * s], [9 * s, 2 * s]]
+        rc, out, err = test_cli.run("eval", {"curve": catmull_rom(P, alpha=1), "t": [0.1], "derivatives": 3})
+        self.assertEqual(rc, 2, err)
+        self.assertTrue(err.startswith("error: t[0]: "), err)
+        self.assertIn("t = 0.1 ", err)
+
     def test_closed_curve_closes_with_c1(self):
         P = [[0, 0], [4, 0], [5, 3], [1, 4]]
         c = catmull_rom(P, closed=True)

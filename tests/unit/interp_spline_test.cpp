@@ -473,7 +473,7 @@ TEST(CubicSpline, CubicsReproducedAtAnyScale) {
   const auto f = [](double x) { return x * x * x - 2 * x + 1; };
   const auto df = [](double x) { return 3 * x * x - 2; };
   const std::vector<double> x{0, 1, 2.5, 4, 5};
-  for (const auto& [a, b] : {std::pair{1.0, 1.0}, {1e300, 1e300}, {1e-300, 1e-300}, {1e200, 1e-200}, {1e-200, 1e100}, {2e307, 1.0}}) {
+  for (const auto& [a, b] : {std::pair{1.0, 1.0}, {1e300, 1e300}, {1e-300, 1e-300}, {1e150, 1e-150}, {1e-200, 1e100}, {2e307, 1.0}}) {
     std::vector<double> u;
     std::vector<P1> P;
     for (double xi : x) {
@@ -506,6 +506,11 @@ TEST(CubicSpline, ParamsAcrossTheDoubleRange) {
                           "params", "longer than the largest double");
   // Slopes that overflow: named points, not the tangents the user did not give.
   EXPECT_INVALID_ARGUMENT((CubicSpline<double, 1>({0, 1e-300, 2e-300}, ys({0, 1e300, 0}))), "points", "overflow");
+  // Slopes that underflow (1e-200 / 1e200): refused, not rounded to 0 (the curve would
+  // lose its shape), on the fused path (natural) and the general one (not-a-knot, 3 points).
+  EXPECT_INVALID_ARGUMENT((CubicSpline<double, 1>({0, 1e200, 2e200, 3e200}, ys({0, 1e-200, 0, 1e-200}))), "points", "underflows");
+  EXPECT_INVALID_ARGUMENT((CubicSpline<double, 1>({0, 1e200, 2e200}, ys({0, 1e-200, 0}), SplineBoundary<double, 1>::not_a_knot())),
+                          "points", "underflows");
 }
 
 // Coordinates +-1e308 whose differences overflow: natural spline through (0, -1), (1, 1),

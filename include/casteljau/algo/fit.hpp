@@ -544,11 +544,17 @@ struct FitRequest {
 };
 
 /// Fits the points as the request says; max_error is the largest distance from a data
-/// point to the curve at that point's parameter. With a tolerance the control point count
-/// is found by bisection between the least that can be fitted and interpolation, assuming
-/// the error falls as points are added (usual, not guaranteed: the count is the fewest
-/// found, not proven minimal); a count whose system is singular counts as too few; if
-/// only interpolation is within the tolerance it is the answer. Closed fits (the closing
+/// point to the curve at that point's parameter, count the control point count used.
+/// With a tolerance the count is searched: bisection between the least that can be fitted
+/// and interpolation finds a count that passes; max_error is not monotone in the count,
+/// so the counts below it are then tried, all of them upwards from the least when the
+/// work limit allows (proven_fewest: the fewest count that meets the tolerance, with the
+/// knots this function places for each count), else as many just below as it allows
+/// (the fewest found); a count whose system is singular counts as failing; if only
+/// interpolation is within the tolerance it is the answer. Work: about
+/// detail::fit_work(points, p) per fit; a request above fit_work_limit is refused
+/// ("degree", or "points" when no degree would do; "tolerance" when the bisection alone
+/// exceeds it), so that every request answers in about a second. Closed fits (the closing
 /// point may repeat the first; L distinct points remain) are periodic: n control points
 /// with p + 1 <= n <= L, least squares below L (approximate_closed) and interpolation at
 /// L (interpolate_closed); the curve is written on [0, 1] with n + p control points (odd
@@ -556,8 +562,9 @@ struct FitRequest {
 /// (odd p). Errors (InvalidArgument): "degree" (< 1; >= 2 with a derivative), "points"
 /// (too few: p + 1 conditions, or p + 1 distinct points closed; coincident consecutive
 /// points under chord / centripetal), "control_points" (below p + 1 or the ends it must
-/// hold, above the point count plus derivatives; closed: outside p + 1 .. L),
-/// "tolerance" (not > 0), "start_derivative" / "end_derivative" (with closed).
+/// hold, above the point count plus derivatives; closed: outside p + 1 .. L; a
+/// least-squares system that is numerically singular: too many for the spread of the
+/// parameters), "tolerance" (not > 0), "start_derivative" / "end_derivative" (with closed).
 template <class T, int D>
 FitResult<T, D> fit(std::vector<Point<T, D>> Q, const FitRequest<T, D>& req) {
   const int p = req.degree;

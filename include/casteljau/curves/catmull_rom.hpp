@@ -120,10 +120,15 @@ class CatmullRom {
       : P_(std::move(points)), alpha_(alpha), closed_(closed), d_(std::move(intervals)), follow_(follow), pieces_(build(P_, d_, closed_)) {
     if (follow_) {
       // Whether the points still give these intervals, to rounding (8 eps relative: a
-      // rotation or uniform scaling moves each distance by a few ulps).
-      const std::vector<T> e = intervals_of(P_, alpha_, closed_);
-      for (std::size_t i = 0; i < e.size(); ++i)
-        follow_ = follow_ && std::abs(e[i] - d_[i]) <= 8 * std::numeric_limits<T>::epsilon() * d_[i];
+      // rotation or uniform scaling moves each distance by a few ulps); not when the mapped
+      // points' own intervals are not doubles (the kept ones are).
+      try {
+        const std::vector<T> e = intervals_of(P_, alpha_, closed_);
+        for (std::size_t i = 0; i < e.size(); ++i)
+          follow_ = follow_ && std::abs(e[i] - d_[i]) <= 8 * std::numeric_limits<T>::epsilon() * d_[i];
+      } catch (const InvalidArgument&) {
+        follow_ = false;
+      }
     }
   }
 

@@ -318,13 +318,23 @@ bool cubic_spline_slopes_fused(const std::vector<T>& u, const std::vector<Point<
   T inv = 1 / b0;
   w[0] = c0 * inv;
   s[0] = r0 * inv;
+  // A slope below the normal range (a coordinate that moves by less than 2.2e-308 h) goes
+  // to the checked path too, which refuses a chord whose whole slope underflows.
+  constexpr T smallest = std::numeric_limits<T>::min();
+  const auto slope_ok = [&](const V& d, std::size_t i) {
+    bool good = true;
+    for (int k = 0; k < D; ++k) good &= (std::abs(d[k]) >= smallest) | (P[i + 1][k] == P[i][k]);
+    return good;
+  };
   T hl = hh(0);  // the downward sweep's h_(i-1), d_(i-1)
   ok &= (hl >= tiny) & (hl <= big);
   V dl = (P[1] - P[0]) / hl;
+  ok &= slope_ok(dl, 0);
   const auto down = [&](std::size_t i) {  // eliminates x_(i-1) from row i: x_i + w_i x_(i+1) = s_i
     const T h = u[i + 1] - u[i];
     ok &= (h >= tiny) & (h <= big);
     const V d = (P[i + 1] - P[i]) / h;
+    ok &= slope_ok(d, i);
     const T r = 1 / (2 * (hl + h) - h * w[i - 1]);
     w[i] = hl * r;
     s[i] = (T(3) * (h * dl + hl * d) - h * s[i - 1]) * r;
@@ -354,10 +364,12 @@ bool cubic_spline_slopes_fused(const std::vector<T>& u, const std::vector<Point<
   T hr = hh(n - 1);  // the upward sweep's h_i, d_i
   ok &= (hr >= tiny) & (hr <= big);
   V dr = (P[n] - P[n - 1]) / hr;
+  ok &= slope_ok(dr, n - 1);
   const auto up = [&](std::size_t i) {  // eliminates x_(i+1) from row i: x_i + w_i x_(i-1) = s_i
     const T g = u[i] - u[i - 1];
     ok &= (g >= tiny) & (g <= big);
     const V e = (P[i] - P[i - 1]) / g;
+    ok &= slope_ok(e, i - 1);
     const T r = 1 / (2 * (g + hr) - g * w[i + 1]);
     w[i] = hr * r;
     s[i] = (T(3) * (hr * e + g * dr) - g * s[i + 1]) * r;

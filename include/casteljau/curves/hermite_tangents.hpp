@@ -40,6 +40,28 @@ void check_rule_data(const std::vector<T>& u, const std::vector<Point<T, D>>& P,
   }
   for (std::size_t i = 0; i < P.size(); ++i)
     if (!all_coordinates_finite(P[i])) require_finite_point(P[i], "points[" + std::to_string(i) + "]");
+  // Every chord's slope must be a double: not overflowing, and keeping at least 43 of its
+  // 53 bits when the points differ (not below 2^-1032 = 2.2e-311: a subnormal slope 2^-k
+  // below the normal range keeps 53 - k bits, and the curve's shape would carry that
+  // error; params 1e200 apart with coordinates 1e-200 give slopes 1e-400, which round to
+  // 0). The general solve and every rule run this check; the fused spline solve hands
+  // any subnormal slope to them.
+  for (std::size_t i = 0; i + 1 < P.size(); ++i) {
+    const Vector<T, D> d = slope(P[i], P[i + 1], u[i + 1] - u[i]);
+    T dmax = 0, pmax = 0;
+    for (int k = 0; k < D; ++k) {
+      dmax = std::max(dmax, std::abs(d[k]));
+      pmax = std::max(pmax, std::abs(P[i + 1][k] - P[i][k]));
+    }
+    if (!std::isfinite(dmax)) {
+      throw InvalidArgument("points", "the chord slope from points[" + std::to_string(i) + "] to points[" + std::to_string(i + 1) +
+                                          "] overflows a double (coordinates too large for the param spacing)");
+    }
+    if (pmax > 0 && dmax < std::ldexp(std::numeric_limits<T>::min(), -10)) {
+      throw InvalidArgument("points", "the chord slope from points[" + std::to_string(i) + "] to points[" + std::to_string(i + 1) + "] = " +
+                                          format_number(dmax) + " underflows a double (coordinates too small for the param spacing)");
+    }
+  }
 }
 
 /// The chord slopes d_i = (P_(i+1) - P_i) / (u_(i+1) - u_i), i = 0..n-1 (slope: no overflow
@@ -106,7 +128,11 @@ int sign(T v) {
 /// sign(m0) != sign(m1) and |d| > 3 |m0|.
 template <class T>
 T pchip_end_slope(T h0, T h1, T m0, T m1) {
-  const T d = ((2 * h0 + h1) * m0 - h0 * m1) / (h0 + h1);
+  T d = ((2 * h0 + h1) * m0 - h0 * m1) / (h0 + h1);
+  if (!std::isfinite(d)) {  // h m overflowed (slopes near the largest double): the same with w = h0 / (h0 + h1)
+    const T w = h0 / (h0 + h1);
+    d = (1 + w) * m0 - w * m1;
+  }
   if (sign(d) != sign(m0)) return 0;
   if (sign(m0) != sign(m1) && std::abs(d) > 3 * std::abs(m0)) return 3 * m0;
   return d;
