@@ -66,7 +66,7 @@ struct FitResult {
 };
 
 /// The most work one fit request may do, in the units of detail::fit_work: about one
-/// second of one core at the slowest measured rates (15 to 23 ns per step). Above it a fit is
+/// second of one core at the slowest measured rate (18 ns per step). Above it a fit is
 /// refused naming "degree" or "points" (one fit too costly) or "tolerance" (the search's
 /// bisection alone too costly); the tolerance search spends what is left after its
 /// bisection on the counts below the one found.
@@ -92,6 +92,12 @@ template <class T>
 void basis_row(std::span<const T> U, int p, T u, int k, std::vector<std::pair<std::size_t, T>>& row) {
   row.clear();
   const std::size_t s = find_span<T>(U, p, u);
+  if (k == 0) {  // values only: no (p + 1) x (p + 1) table (its allocations dominated at high degree)
+    std::vector<T> N(static_cast<std::size_t>(p) + 1);
+    basis_functions<T>(U, p, s, u, N);
+    for (int r = 0; r <= p; ++r) row.emplace_back(s - static_cast<std::size_t>(p) + static_cast<std::size_t>(r), N[static_cast<std::size_t>(r)]);
+    return;
+  }
   const auto ders = basis_function_derivatives<T>(U, p, s, u, k);
   for (int r = 0; r <= p; ++r) row.emplace_back(s - static_cast<std::size_t>(p) + static_cast<std::size_t>(r), ders[static_cast<std::size_t>(k)][static_cast<std::size_t>(r)]);
 }
@@ -102,9 +108,10 @@ void basis_row(std::span<const T> U, int p, T u, int k, std::vector<std::pair<st
 /// p + 1, or the sparse LU) and in the evaluation of the curve at it for max_error:
 /// counted as 2 (p + 1)^2, plus a fixed part (allocation, the sparse LU's bookkeeping)
 /// worth about 300 steps. Measured (the casteljau program, x86-64, one core, user +
-/// system time): 1e5 points interpolated at degree 3 in 0.76 s (23 ns per step), 1001
-/// points at degree 243 in 0.4 s by interpolation (3 ns) and 1.8 s by least squares
-/// (15 ns), 1e4 points at degree 3 to a tolerance (bisection and scan) in 0.2 s.
+/// system time): 1e5 points interpolated at degree 3 in 0.6 s (18 ns per step), 1001
+/// points at degree 170 (6e7 steps) in 0.16 s by interpolation and 0.07 s by least
+/// squares, 1e4 points at degree 3 to a tolerance (bisection and scan) in 0.14 s. The
+/// slowest rate sets the limit.
 inline double fit_work(std::size_t rows, int p) {
   const double q = static_cast<double>(p) + 1;
   return static_cast<double>(rows) * (2 * q * q + 300);
