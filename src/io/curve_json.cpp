@@ -196,7 +196,7 @@ struct Format<Lagrange> {
   static AnyCurve read(const Fields& f) {
     f.allow_only({"type", "params", "points", "dim"}, "a lagrange");
     const std::optional<int> dim = read_dim(f);
-    const RawPoints P = read_points(f.required("points"), 2, "a lagrange curve");
+    const RawPoints P = read_points(f.required("points"), 1, "a lagrange curve");
     check_dim(dim, P.dim);
     if (P.size() - 1 > static_cast<std::size_t>(max_degree)) {
       throw InvalidArgument("points", std::to_string(P.size()) + " points give degree " + std::to_string(P.size() - 1) +

@@ -240,7 +240,7 @@ class LagrangeTest(CliTest):
         self.bad("eval", {"curve": lagrange([2, 1, 0, 2], P), "t": [0]}, "curve.params[3]", contains="repeats params[0]")
         self.bad("eval", {"curve": lagrange([0, 1, 2], P), "t": [0]}, "curve.params", contains="one parameter per point")
         self.bad("eval", {"curve": lagrange([0, 1, 2, 3, 4], P), "t": [0]}, "curve.params")
-        self.bad("eval", {"curve": lagrange([0], [[1, 1]]), "t": [0]}, "curve.points", contains="at least 2")
+        self.bad("eval", {"curve": lagrange([], []), "t": [0]}, "curve.points")
         self.bad("eval", {"curve": {"type": "lagrange", "points": P}, "t": [0]}, "curve.params", contains="missing")
         self.bad("eval", {"curve": {"type": "lagrange", "params": [0, 1, 2, 3]}, "t": [0]}, "curve.points", contains="missing")
         self.bad("eval", {"curve": lagrange([0, 1, 2, 3], P, weights=[1, 1, 1, 1]), "t": [0]}, "curve.weights",
@@ -255,6 +255,44 @@ class LagrangeTest(CliTest):
         self.bad("eval", {"curve": lagrange([-1e308, 0, 1e308, 3], P), "t": [0]}, "curve.params", contains="largest double")
         # Far extrapolation that overflows is refused for that parameter.
         self.bad("eval", {"curve": lagrange([0, 1, 2, 3], [[0], [1], [8], [27]]), "t": [0, 1e200]}, "t[1]")
+
+
+class LagrangeOnePoint(CliTest):
+    """Issue 15: a lagrange curve through one point is the constant (scipy's
+    BarycentricInterpolator takes it); every command must serve it."""
+
+    def test_constant_as_scipy(self):
+        c = lagrange([2], [[3, 4]])
+        ts = [-1e300, -5, 2, 2.5, 1e300]
+        r = self.ok("eval", {"curve": c, "t": ts, "derivatives": 3})
+        want = BarycentricInterpolator([2.0], np.array([[3.0, 4.0]]))(np.array(ts, dtype=float))
+        self.assertEqual(r["points"], want.tolist())
+        for k in range(3):
+            self.assertEqual(r["derivatives"][k], [[0.0, 0.0]] * len(ts))
+
+    def test_queries(self):
+        c = lagrange([2], [[3, 4]])
+        r = self.ok("bounds", {"curve": c})
+        self.assertEqual((r["min"], r["max"]), ([3.0, 4.0], [3.0, 4.0]))
+        self.assertEqual(self.ok("length", {"curve": c})["length"], 0.0)
+        r = self.ok("project", {"curve": c, "point": [0, 0]})
+        self.assertEqual(r["t"], 2.0)  # the contract: a single point answers its domain's start
+        self.assertEqual(r["point"], [3.0, 4.0])
+        self.assertAlmostEqual(r["distance"], 5.0, delta=1e-15)
+        self.assertEqual(self.ok("param_at_length", {"curve": c, "lengths": [0]})["t"], [2.0])
+        for p in self.ok("flatten", {"curve": c, "tolerance": 0.1})["points"]:
+            self.assertEqual(p, [3.0, 4.0])
+        tb = self.ok("to_bezier", {"curve": c})["curve"]
+        self.assertEqual(tb["segments"], [{"type": "bezier", "points": [[3.0, 4.0]]}])
+        self.assertEqual(tb["breaks"][0], 2.0)
+        self.assertEqual(tb["breaks"][1], math.nextafter(2.0, 3.0))  # a path's breaks increase
+        self.assertIn("<svg", run_render(c))
+
+
+def run_render(curve):
+    rc, out, err = test_cli.run("render", {"curve": curve})
+    assert rc == 0, err
+    return out
 
 
 def barry_goldman(P, s, t):
@@ -350,6 +388,59 @@ class CatmullRomTest(CliTest):
                             for a, b in zip(got, want[k]):
                                 self.assertLessEqual(abs(a - b), tol,
                                                      f"alpha={alpha} closed={closed} P={P} t={t} k={k}: {got} vs {want[k]}")
+
+    def test_any_scale_matches_the_pyramid(self):
+        # Issue 15: intervals |dP|^alpha multiplied together overflowed from 1e154 (chordal
+        # became the control polygon: length 5.84e200 for 6.08e200) and underflowed below
+        # 1e-154 (an error of 6.7e-6 at 1e-160, a false "got inf" at 1e-200). The mpmath
+        # pyramid takes any scale.
+        unit = [[0, 0], [1, 3], [4, 4], [6, 1], [9, 2]]
+        for scale in (1e154, 1e200, 1e300, 1e-160, 1e-200, 1e-300):
+            for alpha in (0.5, 0.75, 1):
+                P = [[x * scale for x in p] for p in unit]
+                c = catmull_rom(P, alpha=alpha)
+                breaks = self.ok("to_bezier", {"curve": c})["curve"]["breaks"]
+                ts = [breaks[0] + f * (breaks[-1] - breaks[0]) for f in (0.1, 0.35, 0.5, 0.8, 1)]
+                r = self.ok("eval", {"curve": c, "t": ts})
+                for t, got in zip(ts, r["points"]):
+                    want = catmull_rom_oracle(P, alpha, False, t, 0)[0]
+                    for a, b in zip(got, want):
+                        # A few eps of the scale (rounded knots move the parameter by eps).
+                        self.assertLessEqual(abs(a - b), 1e-13 * scale, f"scale={scale} alpha={alpha} t={t}")
+
+    def test_chordal_length_scales(self):
+        # The chordal length at 1e200 is 1e200 times the unit one (an exact invariance of
+        # alpha = 1: knots and curve scale together), and the unit one is mpmath's quadrature
+        # of the pyramid's speed.
+        unit = [[0, 0], [1, 3], [4, 4], [6, 1], [9, 2]]
+        L1 = self.ok("length", {"curve": catmull_rom(unit, alpha=1)})["length"]
+        breaks = self.ok("to_bezier", {"curve": catmull_rom(unit, alpha=1)})["curve"]["breaks"]
+        speed = lambda t: mpmath.norm(mpmath.matrix(catmull_rom_oracle(unit, 1, False, t, 1)[1]))
+        want = float(mpmath.quad(speed, breaks))
+        self.assertAlmostEqual(L1, want, delta=1e-12 * want)
+        for scale in (1e200, 1e-200):
+            L = self.ok("length", {"curve": catmull_rom([[x * scale for x in p] for p in unit], alpha=1)})["length"]
+            self.assertAlmostEqual(L / scale, L1, delta=1e-13 * L1)
+
+    def test_unrepresentable_parameter_is_refused_naming_points(self):
+        # |dP| = 2e308 at alpha 1 is no double; at alpha 0.5 (1.41e154) it is, and is served.
+        P = [[-1e308], [1e308], [-1e308], [1e308]]
+        self.bad("eval", {"curve": catmull_rom(P, alpha=1), "t": [0]}, "curve.points", contains="overflows")
+        r = self.ok("eval", {"curve": catmull_rom(P, alpha=0.5), "t": [0]})
+        self.assertEqual(r["points"], [[1e308]])
+        # 1e-310 apart at alpha 1: below the normal range.
+        self.bad("eval", {"curve": catmull_rom([[0], [1e-310], [2e-310], [3e-310]], alpha=1), "t": [0]}, "curve.points",
+                 contains="underflows")
+
+    def test_overflow_message_quotes_the_users_parameter(self):
+        # Issue 15: extrapolating far outside a tiny curve overflowed, and the message quoted
+        # the segment's own parameter (4.47e148) where the request said 0.1.
+        s = 1e-149
+        P = [[0, 0], [1 * s, 3 * s], [4 * s, 4 * s], [6 * s, 1 * s], [9 * s, 2 * s]]
+        rc, out, err = test_cli.run("eval", {"curve": catmull_rom(P, alpha=1), "t": [0.1], "derivatives": 3})
+        self.assertEqual(rc, 2, err)
+        self.assertTrue(err.startswith("error: t[0]: "), err)
+        self.assertIn("t = 0.1 ", err)
 
     def test_closed_curve_closes_with_c1(self):
         P = [[0, 0], [4, 0], [5, 3], [1, 4]]

@@ -241,6 +241,74 @@ class ScipyAgreement(CliTest):
         self.assertGreater(np.max(np.abs(c - (a @ A.T + b))), 1e-3)
 
 
+class ExtremeScales(CliTest):
+    """Issue 15: params and coordinates from 1e-300 to 1e300 and near the largest double.
+    The oracle is scipy at unit scale, scaled: C_ab(a x) = b C(x), derivatives of order k
+    times b / a^k (Python floats; the scaling is a few ulps)."""
+
+    DATA_X = [0.0, 1.0, 2.5, 3.0, 4.5]
+    DATA_Y = [[0.0, 1.0], [1.0, -1.0], [0.0, 2.0], [2.0, 0.5], [1.0, 1.0]]
+
+    def compare(self, curve, a, b, spline, what):
+        xs = [0.25, 1.7, 2.9, 4.0]
+        r = self.ok("eval", {"curve": curve, "t": [a * x for x in xs], "derivatives": 1})
+        ref = spline(np.array(xs))
+        dref = spline(np.array(xs), 1)
+        for got, want in zip(r["points"], ref):
+            for g, w in zip(got, want):
+                self.assertLessEqual(abs(g - b * w), 1e-13 * b * 3, f"{what}: {got} vs {b * want}")
+        if math.isfinite(b / a) and b / a > 1e-300:
+            for got, want in zip(r["derivatives"][0], dref):
+                for g, w in zip(got, want):
+                    self.assertLessEqual(abs(g - b / a * w), 1e-12 * b / a * 10, f"{what} derivative")
+
+    def test_boundaries_and_rules_at_every_scale(self):
+        x, y = np.array(self.DATA_X), np.array(self.DATA_Y)
+        scales = [(1e300, 1e300), (1e-300, 1e-300), (1e300, 1.0), (1e-300, 1.0), (1.0, 1e300), (1.0, 1e-300), (1e154, 1e154),
+                  (3e307, 1.0), (1e-160, 1e-160)]
+        for a, b in scales:
+            params, points = [a * v for v in x], [[b * c for c in p] for p in y]
+            for boundary, bc in (("natural", "natural"), ("not-a-knot", "not-a-knot")):
+                curve = {"type": "cubic_spline", "params": params, "points": points, "boundary": boundary}
+                self.compare(curve, a, b, CubicSpline(x, y, bc_type=bc), f"{boundary} a={a} b={b}")
+            for rule in ("monotone", "akima", "catmull_rom"):
+                curve = {"type": "hermite", "params": params, "points": points, "tangent_rule": rule}
+                if rule == "monotone":
+                    ref = PchipInterpolator(x, y)
+                elif rule == "akima":
+                    ref = Akima1DInterpolator(x, y)
+                else:
+                    m = np.array([(y[1] - y[0]) / (x[1] - x[0])] + [(y[i + 1] - y[i - 1]) / (x[i + 1] - x[i - 1]) for i in range(1, 4)]
+                                 + [(y[4] - y[3]) / (x[4] - x[3])])
+                    ref = CubicHermiteSpline(x, y, m)
+                self.compare(curve, a, b, ref, f"{rule} a={a} b={b}")
+
+    def test_domain_longer_than_the_largest_double(self):
+        # Was "error: internal: solve_tridiagonal: zero pivot" (exit 1).
+        curve = {"type": "cubic_spline", "params": [-1e308, 0, 1e308, 1.5e308], "points": [[0], [1], [0], [2]]}
+        self.bad("eval", {"curve": curve, "t": [0]}, "curve.params", contains="longer than the largest double")
+        # 0, 1e308, 1.7e308: the domain is a double, 2 (h0 + h1) is not; natural spline by
+        # hand: M1 = 3 (d1 - d0) / (h0 + h1), S(x) = (1 - M1 / 6) x + M1 x^3 / 6 on [0, 1].
+        r = self.ok("eval", {"curve": {"type": "cubic_spline", "params": [0, 1e308, 1.7e308], "points": [[0], [1], [0]]},
+                             "t": [0.5e308]})
+        M1 = 3 * (-1 / 0.7 - 1) / 1.7
+        self.assertAlmostEqual(r["points"][0][0], (1 - M1 / 6) * 0.5 + M1 * 0.125 / 6, delta=1e-15)
+
+    def test_coordinates_whose_differences_overflow(self):
+        # +-1e308 alternating: the natural spline through (0, -1), (1, 1), (2, -1), (3, 1),
+        # scaled (scipy at unit scale); differences of the points overflow, the curve does not.
+        x = np.array([0.0, 1, 2, 3])
+        s = CubicSpline(x, [-1.0, 1, -1, 1], bc_type="natural")
+        curve = {"type": "cubic_spline", "params": [1e300 * v for v in x], "points": [[-1e308], [1e308], [-1e308], [1e308]]}
+        ts = [0.5, 1.5, 2.25]
+        r = self.ok("eval", {"curve": curve, "t": [1e300 * t for t in ts]})
+        for got, want in zip(r["points"], s(np.array(ts))):
+            self.assertLessEqual(abs(got[0] - 1e308 * want), 1e-15 * 1e308 * 3)
+        # A slope that overflows is refused naming points (not tangents, which were not given).
+        self.bad("eval", {"curve": {"type": "cubic_spline", "params": [0, 1e-300, 2e-300], "points": [[0], [1e300], [0]]}, "t": [0]},
+                 "curve.points", contains="overflow")
+
+
 class KochanekBartels(CliTest):
     def test_continuity_minus_one_is_the_polyline(self):
         P = [[0, 0], [1, 2], [3, 2.5], [4, 0]]

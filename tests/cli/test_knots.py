@@ -10,9 +10,11 @@ the degree, a count < 1, a tolerance <= 0, a knot that is not one.
 Usage: test_knots.py PATH_TO_CASTELJAU [unittest options]
 """
 import json
+import math
 import os
 import random
 import sys
+import time
 import unittest
 
 import numpy as np
@@ -455,6 +457,26 @@ def smooth_data(count, dim=2, seed=0):
 class FitTest(CliTest):
     def fit(self, **req):
         return self.ok("fit", req)
+
+    def test_work_is_bounded(self):
+        # Issue 15: degree 1000 ran past 90 s (least squares) and 19 s (interpolation).
+        # Refused up front with the figure, naming the field; well within a second.
+        Q = [[i * 0.01, math.sin(i * 0.01)] for i in range(1001)]
+        for extra in ({"control_points": 1001}, {"control_points": 1000}, {"tolerance": 1e-3}):
+            t0 = time.monotonic()
+            self.bad("fit", dict({"points": Q, "degree": 1000}, **extra), "degree", contains="above the limit")
+            self.assertLess(time.monotonic() - t0, 2.0)
+        # Degree 100: one fit is served, a tolerance search (about 11 fits) is not.
+        self.bad("fit", {"points": Q, "degree": 100, "tolerance": 1e-3}, "tolerance", contains="give control_points")
+        self.assertLess(self.fit(points=Q, degree=100, control_points=150)["max_error"], 1e-3)
+
+    def test_near_singular_least_squares_names_control_points(self):
+        # Every knot span holds data (eq. 9.68-9.69), but degree-100 basis functions over
+        # spans of about two data points are nearly dependent: the message says so and
+        # names control_points (was "points: ... a knot span holds no data").
+        Q = [[i * 0.01, math.sin(i * 0.01)] for i in range(1001)]
+        self.bad("fit", {"points": Q, "degree": 100, "control_points": 500}, "control_points",
+                 contains="numerically singular")
 
     def test_interpolation_matches_scipy(self):
         for p in (1, 2, 3, 5):

@@ -4,7 +4,9 @@
 // Expected values are closed forms computed here, never the code under test.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <vector>
 
@@ -243,11 +245,44 @@ TEST(Lagrange, Errors) {
                           "distinct");
   EXPECT_INVALID_ARGUMENT((Lagrange<double, 2>({0, NAN}, {P2(0, 0), P2(1, 1)})), "params[1]", "finite");
   EXPECT_INVALID_ARGUMENT((Lagrange<double, 2>({0, 1, 2}, {P2(0, 0), P2(1, 1)})), "params", "one parameter per point");
-  EXPECT_INVALID_ARGUMENT((Lagrange<double, 2>({0}, {P2(0, 0)})), "points", "at least 2");
+  EXPECT_INVALID_ARGUMENT((Lagrange<double, 2>({}, {})), "points", "at least 1");
   EXPECT_INVALID_ARGUMENT((Lagrange<double, 2>({0, 1}, {P2(0, 0), P2(INFINITY, 1)})), "points[1][0]", "finite");
   EXPECT_INVALID_ARGUMENT((Lagrange<double, 2>({-1e308, 1e308}, {P2(0, 0), P2(1, 1)})), "params", "longer than");
   const auto c = cubic_through({0, 1, 2, 3});
   EXPECT_INVALID_ARGUMENT(c.derivative_at(0.5, -1), "k", ">= 0");
+}
+
+// Through one point: the constant polynomial (degree 0), as
+// scipy.interpolate.BarycentricInterpolator([2], [[3, 4]]) gives; its domain is the one
+// param, and every query on it sees that point.
+TEST(Lagrange, OnePointIsTheConstant) {
+  const Lagrange<double, 2> c({2.0}, {P2(3, 4)});
+  EXPECT_EQ(c.degree(), 0);
+  EXPECT_EQ(c.domain(), (Interval<double>{2, 2}));
+  for (double u : {-1e300, -5.0, 2.0, 2.5, 1e300}) {
+    EXPECT_EQ(c(u), P2(3, 4));
+    EXPECT_EQ(c.neville(u), P2(3, 4));
+    for (int k = 1; k <= 3; ++k) EXPECT_EQ(c.derivative_at(u, k), V2(0, 0));
+  }
+  EXPECT_EQ(c.bezier().points(), std::vector<P2>{P2(3, 4)});
+  EXPECT_EQ(c.control_bounds().lo, P2(3, 4));
+  EXPECT_EQ(c.control_bounds().hi, P2(3, 4));
+  const Pieces<double, 2> p = pieces(c);
+  ASSERT_EQ(p.size(), 1u);
+  EXPECT_EQ(p.domain().lo, 2.0);  // the next double above: pieces need increasing breaks
+  EXPECT_EQ(p.domain().hi, std::nextafter(2.0, 3.0));
+  EXPECT_EQ(p(2.0), P2(3, 4));
+  const Box<double, 2> b = bounds(c);
+  EXPECT_EQ(b.lo, P2(3, 4));
+  EXPECT_EQ(b.hi, P2(3, 4));
+  EXPECT_EQ(arc_length(c), 0.0);
+  EXPECT_EQ(c.reverse(), c);
+  EXPECT_EQ(c.transform(Affine<double, 2>::translate(V2(1, -1)))(7.0), P2(4, 3));
+  // At the largest double the piece takes the double below (there is none above).
+  const double top = std::numeric_limits<double>::max();
+  const Lagrange<double, 1> e({top}, {P1(1)});
+  EXPECT_EQ(pieces(e).domain().hi, top);
+  EXPECT_EQ(pieces(e)(top), P1(1));
 }
 
 // ---------------------------------------------------------------------------------------
@@ -334,6 +369,82 @@ TEST(CatmullRom, Errors) {
   const CatmullRom<double, 2> rest({P2(0, 0), P2(1, 1), P2(1, 1), P2(2, 0)}, 0.0);
   EXPECT_EQ(rest(0.0), P2(1, 1));
   EXPECT_EQ(rest(1.0), P2(1, 1));
+}
+
+// The Barry-Goldman pyramid [BarryGoldman88] of the segment from P_1 to P_2 with knots
+// t_0..t_3, in long double (whose range, to 1e4932, holds every product of the scaled
+// data below): the reference the scaled curves are checked against, written here.
+template <int D>
+Point<double, D> barry_goldman(const std::array<Point<double, D>, 4>& P, const std::array<long double, 4>& t, long double u) {
+  Point<double, D> out;
+  for (int k = 0; k < D; ++k) {
+    const auto lerp = [&](long double a, long double b, long double ta, long double tb) { return ((tb - u) * a + (u - ta) * b) / (tb - ta); };
+    const long double A1 = lerp(P[0][k], P[1][k], t[0], t[1]), A2 = lerp(P[1][k], P[2][k], t[1], t[2]), A3 = lerp(P[2][k], P[3][k], t[2], t[3]);
+    const long double B1 = lerp(A1, A2, t[0], t[2]), B2 = lerp(A2, A3, t[1], t[3]);
+    out[k] = static_cast<double>(lerp(B1, B2, t[1], t[2]));
+  }
+  return out;
+}
+
+// Issue 15: the tangents divided by products of intervals, which overflow from about 1e154
+// (alpha 1: the curve became its control polygon) and underflow below 1e-154 (an error of
+// 6.7e-6 at 1e-160, a false "got inf" at 1e-200). Now the same curve at every scale from
+// 1e-300 to 1e300 and every alpha, against the pyramid in long double.
+TEST(CatmullRom, AnyScaleAgainstTheBarryGoldmanPyramid) {
+  const std::vector<P2> unit{{0, 0}, {1, 2}, {3, 3}, {4, 1}, {6, 0}};
+  for (double scale : {1.0, 1e154, 1e200, 1e300, 1.7e308 / 8, 1e-154, 1e-160, 1e-200, 1e-300}) {
+    for (double alpha : {0.0, 0.5, 0.75, 1.0}) {
+      std::vector<P2> P;
+      for (const P2& q : unit) P.emplace_back(q[0] * scale, q[1] * scale);
+      const CatmullRom<double, 2> c(P, alpha);
+      std::vector<long double> s{0};
+      for (std::size_t i = 0; i + 1 < P.size(); ++i) {
+        const long double dx = static_cast<long double>(P[i + 1][0]) - P[i][0], dy = static_cast<long double>(P[i + 1][1]) - P[i][1];
+        s.push_back(s.back() + (alpha == 0 ? 1.0L : std::pow(std::sqrt(dx * dx + dy * dy), static_cast<long double>(alpha))));
+      }
+      // The domain's end: s_(N-2) - s_1 to a few ulps (the knots are sums of rounded intervals).
+      EXPECT_NEAR(c.domain().hi, static_cast<double>(s[3] - s[1]), 1e-15 * c.domain().hi) << scale << " " << alpha;
+      for (std::size_t j = 0; j < 2; ++j) {
+        for (double f : {0.0, 0.1, 0.5, 0.9}) {
+          const long double u = s[j + 1] + f * (s[j + 2] - s[j + 1]);
+          const P2 ref = barry_goldman<2>({P[j], P[j + 1], P[j + 2], P[j + 3]}, {s[j], s[j + 1], s[j + 2], s[j + 3]}, u);
+          // The parameter in double (rounded knots) moves the point by eps |C'| du: a few
+          // eps of the scale; the Bézier form adds a few more.
+          EXPECT_LE(test::max_coord_diff(c(static_cast<double>(u - s[1])), ref), 1e-14 * scale) << scale << " " << alpha << " " << j << " " << f;
+        }
+      }
+    }
+  }
+}
+
+// Coordinates near the largest double whose differences overflow: the intervals are
+// formed at half scale. 1-D +-1e308 alternating, alpha 0.5: every interval is
+// sqrt(2e308) = 1.41e154, so the tangents at P_1 and P_2 vanish (uniform-like:
+// (P_2 - P_0) / 2 = 0) and the middle segment is the smooth step from 1e308 to -1e308
+// through 0 at its middle.
+TEST(CatmullRom, DifferencesBeyondTheLargestDouble) {
+  const std::vector<P1> P{P1(-1e308), P1(1e308), P1(-1e308), P1(1e308)};
+  const CatmullRom<double, 1> c(P, 0.5);
+  EXPECT_NEAR(c.domain().hi, std::sqrt(2.0) * 1e154, 1e139);  // 1e-15 relative
+  EXPECT_EQ(c(0.0), P1(1e308));
+  EXPECT_EQ(c(c.domain().hi), P1(-1e308));
+  EXPECT_LE(std::abs(c(c.domain().hi / 2)[0]), 1e293);  // 0 to 1e-15 of the coordinates
+  // Smooth step: h00 - h01 at t = 1/4 is 27/32 - 5/32 = 0.6875 of 1e308.
+  EXPECT_NEAR(c(c.domain().hi / 4)[0], 0.6875e308, 1e293);
+}
+
+// The parameter itself not a double: refused naming points (issue 15: never a silent
+// control polygon, never a false "got inf").
+TEST(CatmullRom, UnrepresentableParameterIsRefused) {
+  // |dP| = 2e308 overflows at alpha 1 (at alpha 0.5 it is 1.41e154: served above).
+  EXPECT_INVALID_ARGUMENT((CatmullRom<double, 1>({P1(-1e308), P1(1e308), P1(-1e308), P1(1e308)}, 1.0)), "points", "overflows");
+  // |dP| = 1e-310 at alpha 1: below the normal range.
+  EXPECT_INVALID_ARGUMENT((CatmullRom<double, 1>({P1(0), P1(1e-310), P1(2e-310), P1(3e-310)}, 1.0)), "points", "underflows");
+  // ... but 1e-310^0.5 = 1e-155 is a normal double: served, the uniform-spaced line.
+  const CatmullRom<double, 1> tiny({P1(0), P1(1e-310), P1(2e-310), P1(3e-310)}, 0.5);
+  EXPECT_NEAR(tiny(tiny.domain().hi / 2)[0], 1.5e-310, 1e-323);
+  // Knots that sum beyond the largest double: 1e308 + 1e308.
+  EXPECT_INVALID_ARGUMENT((CatmullRom<double, 1>({P1(0), P1(1e308), P1(0), P1(1e308), P1(0)}, 1.0)), "points", "largest double");
 }
 
 // ---------------------------------------------------------------------------------------

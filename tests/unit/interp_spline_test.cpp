@@ -443,4 +443,111 @@ TEST(CubicSpline, RandomBatchAgreesWithOneCallPerQuery) {
   EXPECT_INVALID_ARGUMENT(s.evaluate(std::span<const double>(bad), std::span<P1>(two)), "t", "");
 }
 
+// ---------------------------------------------------------------------------------------
+// Issue 15: params and coordinates from 1e-300 to 1e300 (and near the largest double).
+
+// Burden & Faires' natural spline through (1, 2), (2, 3), (3, 5), S0 = 2 + 3/4 (x-1) +
+// 1/4 (x-1)^3, with params scaled by a and coordinates by b: C(1.5 a) = 2.40625 b,
+// C' = 0.9375 b / a, C'' = 0.75 b / a^2 (checked where that is a normal double). The
+// system is homogeneous in the spacings, and was solved unscaled: 2 (h + h) overflowed
+// from 4.5e307 and h0 h0 underflowed below 1e-154.
+TEST(CubicSpline, BurdenFairesAtAnyScale) {
+  const std::pair<double, double> scales[] = {{1, 1},       {1e300, 1e300}, {1e-300, 1e-300}, {1e300, 1}, {1e-300, 1},
+                                              {1, 1e300},   {1, 1e-300},    {1e154, 1e154},   {5e307, 1}, {1e-160, 1e-160}};
+  for (const auto& [a, b] : scales) {
+    for (auto bc : {SplineBoundary<double, 1>::natural(),
+                    SplineBoundary<double, 1>::general({2, V1(0.0)}, {2, V1(0.0)})}) {  // natural twice: the fused and the general path
+      const CubicSpline<double, 1> c({a, 2 * a, 3 * a}, ys({2 * b, 3 * b, 5 * b}), bc);
+      // Relative: a few eps of the data (the scaling by a power of two is exact).
+      EXPECT_NEAR(c(1.5 * a)[0], 2.40625 * b, 4e-16 * 5 * b) << a << " " << b;
+      EXPECT_NEAR(c.derivative_at(1.5 * a)[0], 0.9375 * b / a, 4e-15 * b / a) << a << " " << b;
+      const double second = 0.75 * b / a / a;
+      if (std::isnormal(second)) EXPECT_NEAR(c.derivative_at(1.5 * a, 2)[0], second, 4e-14 * second) << a << " " << b;
+    }
+  }
+}
+
+// Not-a-knot and clamped splines reproduce a cubic: f(x) = x^3 - 2x + 1 at x = 0, 1, 2.5, 4, 5,
+// scaled as above (f' given at the ends for clamped): C(a x) = b f(x).
+TEST(CubicSpline, CubicsReproducedAtAnyScale) {
+  const auto f = [](double x) { return x * x * x - 2 * x + 1; };
+  const auto df = [](double x) { return 3 * x * x - 2; };
+  const std::vector<double> x{0, 1, 2.5, 4, 5};
+  for (const auto& [a, b] : {std::pair{1.0, 1.0}, {1e300, 1e300}, {1e-300, 1e-300}, {1e150, 1e-150}, {1e-200, 1e100}, {2e307, 1.0}}) {
+    std::vector<double> u;
+    std::vector<P1> P;
+    for (double xi : x) {
+      u.push_back(a * xi);
+      P.emplace_back(b * f(xi));
+    }
+    for (auto bc : {SplineBoundary<double, 1>::not_a_knot(), SplineBoundary<double, 1>::clamped(V1(b * df(0) / a), V1(b * df(5) / a))}) {
+      const CubicSpline<double, 1> c(u, P, bc);
+      for (double xi : {0.5, 3.3, 4.9}) {
+        // A few eps of max |f| = 116 at the data, times the system's small condition number.
+        EXPECT_NEAR(c(a * xi)[0], b * f(xi), 1e-14 * 116 * b) << a << " " << b << " x=" << xi;
+      }
+    }
+  }
+}
+
+// Params across the whole double range: 0, 1e308, 1.7e308 (the domain is a double; the
+// spacings' sum 2 (h0 + h1) is not). The natural spline through (0, 0), (1, 1), (1.7, 0),
+// by hand: M1 = 3 (d1 - d0) / (h0 + h1) with d0 = 1, d1 = -1 / 0.7, and on [0, 1]
+// S(x) = (1 - M1 / 6) x + M1 x^3 / 6.
+TEST(CubicSpline, ParamsAcrossTheDoubleRange) {
+  const CubicSpline<double, 1> c({0, 1e308, 1.7e308}, ys({0, 1, 0}));
+  const double M1 = 3 * (-1 / 0.7 - 1) / 1.7;
+  const double x = 0.5;
+  EXPECT_NEAR(c(x * 1e308)[0], (1 - M1 / 6) * x + M1 * x * x * x / 6, 1e-15);
+  // A domain longer than the largest double: refused naming params (was "internal:
+  // solve_tridiagonal: zero pivot").
+  EXPECT_INVALID_ARGUMENT((CubicSpline<double, 1>({-1e308, 0, 1e308, 1.5e308}, ys({0, 1, 0, 2}))), "params", "longer than the largest double");
+  EXPECT_INVALID_ARGUMENT((CubicSpline<double, 1>({-1e308, 0, 1e308, 1.5e308}, ys({0, 1, 0, 2}), SplineBoundary<double, 1>::not_a_knot())),
+                          "params", "longer than the largest double");
+  // Slopes that overflow: named points, not the tangents the user did not give.
+  EXPECT_INVALID_ARGUMENT((CubicSpline<double, 1>({0, 1e-300, 2e-300}, ys({0, 1e300, 0}))), "points", "overflow");
+  // Slopes that underflow (1e-200 / 1e200): refused, not rounded to 0 (the curve would
+  // lose its shape), on the fused path (natural) and the general one (not-a-knot, 3 points).
+  EXPECT_INVALID_ARGUMENT((CubicSpline<double, 1>({0, 1e200, 2e200, 3e200}, ys({0, 1e-200, 0, 1e-200}))), "points", "underflows");
+  EXPECT_INVALID_ARGUMENT((CubicSpline<double, 1>({0, 1e200, 2e200}, ys({0, 1e-200, 0}), SplineBoundary<double, 1>::not_a_knot())),
+                          "points", "underflows");
+}
+
+// Coordinates +-1e308 whose differences overflow: natural spline through (0, -1), (1, 1),
+// (2, -1), (3, 1) scaled by 1e308, params by 1e300. By hand (antisymmetric about 1.5:
+// M1 = -8, M2 = 8): S(x) = -1 + (10/3) x - (4/3) x^3 on [0, 1], S(0.5) = 0.5, S(1.5) = 0.
+TEST(CubicSpline, CoordinatesNearTheLargestDouble) {
+  const CubicSpline<double, 1> c({0, 1e300, 2e300, 3e300}, ys({-1e308, 1e308, -1e308, 1e308}));
+  EXPECT_NEAR(c(0.5e300)[0], 0.5e308, 1e-15 * 1e308);
+  EXPECT_NEAR(c(1.5e300)[0], 0, 1e-15 * 1e308);
+  std::vector<P1> out(2);
+  const std::vector<double> at{0.5e300, 2.5e300};
+  c.evaluate_sorted(std::span<const double>(at), std::span<P1>(out));
+  EXPECT_NEAR(out[0][0], 0.5e308, 1e-15 * 1e308);
+  EXPECT_NEAR(out[1][0], -0.5e308, 1e-15 * 1e308);
+  // S'(0.5) = 10/3 - 4 (0.25) = 7/3, times 1e308 / 1e300.
+  EXPECT_NEAR(c.derivative_at(0.5e300)[0], 7.0 / 3 * 1e8, 1e-14 * 1e8);
+}
+
+// Every tangent rule reproduces a straight line; here one from -1e308 to 1e308 (so that
+// P_(i+1) - P_(i-1) overflows), params scaled by 1e10 (slopes 2e298) and by 1e300.
+TEST(TangentRules, LinesNearTheLargestDouble) {
+  for (double a : {1e10, 1e300}) {
+    const std::vector<double> u{0, 0.5 * a, a};
+    const std::vector<P1> P = ys({-1e308, 0, 1e308});
+    const std::vector<std::vector<V1>> rules{finite_difference_tangents(u, P), catmull_rom_tangents(u, P), cardinal_tangents(u, P, 0.0),
+                                             kochanek_bartels_tangents(u, P, KochanekBartels<double>{}).outgoing, monotone_tangents(u, P),
+                                             akima_tangents(u, P)};
+    for (const auto& m : rules) {
+      const Hermite<double, 1> h(u, P, m);
+      // The slope 2e308 / a to a few eps; the points to a few eps of 1e308.
+      for (const V1& mi : m) EXPECT_NEAR(mi[0], 2e308 / a, 1e-15 * 2e308 / a) << a;
+      EXPECT_NEAR(h(0.25 * a)[0], -0.5e308, 1e-15 * 1e308) << a;
+      EXPECT_NEAR(h(0.75 * a)[0], 0.5e308, 1e-15 * 1e308) << a;
+    }
+  }
+  // Slopes 2e308 / 1e-10 overflow: refused naming points.
+  EXPECT_INVALID_ARGUMENT(finite_difference_tangents(std::vector<double>{0, 1e-10}, ys({-1e308, 1e308})), "points", "overflows");
+}
+
 }  // namespace

@@ -25,6 +25,8 @@ TEST(KnotVector, EveryRuleHasItsMessage) {
   EXPECT_INVALID_ARGUMENT(KV(2, Knots{0, 0, 0, 1, 0.5, 2, 2, 2}), "knots[4]", "non-decreasing");
   EXPECT_INVALID_ARGUMENT(KV(2, Knots{0, 0, 0, 1, 1, 1, 2, 2, 2}), "knots[5]", "an interior knot may be repeated at most 2 times");
   EXPECT_INVALID_ARGUMENT(KV(2, Knots{0, 0, 0, 0, 1, 2, 2, 2}), "knots[3]", "an end knot may be repeated at most 3 times");
+  // Degree 1: "at most once", not "at most 1 times" (issue 15).
+  EXPECT_INVALID_ARGUMENT(KV(1, Knots{0, 0, 0.5, 0.5, 1, 1}), "knots[3]", "an interior knot may be repeated at most once for degree 1");
   EXPECT_INVALID_ARGUMENT(KV(2, Knots{0, 0, std::nan(""), 1, 1, 1}), "knots[2]", "finite");
   EXPECT_INVALID_ARGUMENT(KV(2, Knots{0, 0, std::numeric_limits<double>::infinity(), 1, 1, 1}), "knots[2]", "finite");
   // U_2 = U_3 = 1: a knot vector whose every multiplicity is allowed but whose domain is empty.

@@ -3,9 +3,12 @@
 // forms, plus the error rules (knot outside the domain, multiplicity past the degree).
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
+#include <numbers>
 #include <vector>
 
+#include "casteljau/io/fit.hpp"
 #include "test_support.hpp"
 
 namespace {
@@ -292,6 +295,94 @@ TEST(Conics, ArcsAndEllipses) {
   EXPECT_INVALID_ARGUMENT(nurbs_arc(P2{{0, 0}}, 1.0, 1.0, 1.0), "end_angle", "sweep");
   EXPECT_INVALID_ARGUMENT(nurbs_arc(P2{{0, 0}}, 1.0, 0.0, 7.0), "end_angle", "sweep");
   EXPECT_INVALID_ARGUMENT(nurbs_ellipse(P2{{0, 0}}, Vector<double, 2>(1.0, 1.0), Vector<double, 2>(2.0, 2.0)), "axes", "independent");
+}
+
+// ---------------------------------------------------------------------------------------
+// Fitting through io::fit (compiled once in src/io/fit.cpp): the tolerance search, the
+// work bound and the near-singular message (issue 15).
+
+// 200 noisy samples of a closed shape (a trefoil-like blob, noise 0.01).
+io::PointList noisy_blob(std::uint64_t seed) {
+  test::SplitMix64 rng(seed);
+  io::PointList L{2, {}};
+  for (int i = 0; i < 200; ++i) {
+    const double a = 2 * std::numbers::pi * i / 200;
+    L.push_back(P2{{std::cos(a) + 0.3 * std::cos(3 * a) + rng.uniform(-0.01, 0.01), std::sin(a) + 0.2 * std::sin(5 * a) + rng.uniform(-0.01, 0.01)}});
+  }
+  return L;
+}
+
+// The control point count of a fit (closed, odd p: the curve repeats p of the n points).
+std::size_t fitted_count(const io::AnyFit& f, int p, bool closed) {
+  const auto& c = std::get<BSpline<double, 2>>(f.curve);
+  return c.points().size() - (closed ? static_cast<std::size_t>(p) : 0);
+}
+
+// The tolerance search against an exhaustive scan written here: every count from the
+// least upwards through io::fit with control_points; the first whose max_error is within
+// the tolerance is the fewest. On 200 points the search tries every count below the one
+// bisection finds, so it must give exactly that count (issue 15: it gave 69 where 54
+// passed, max_error not being monotone in the count).
+TEST(Fit, ToleranceGivesTheFewestCountOfAnExhaustiveScan) {
+  const int p = 3;
+  for (bool closed : {true, false}) {
+    for (double tol : {0.03, 0.02, 0.012}) {
+      const io::PointList Q = noisy_blob(15);
+      io::AnyFitRequest r;
+      r.degree = p;
+      r.closed = closed;
+      r.tolerance = tol;
+      const io::AnyFit got = io::fit(Q, r);
+      EXPECT_LE(got.max_error, tol);
+      std::size_t first = 0;
+      r.tolerance.reset();
+      for (std::size_t n = p + 1; n <= Q.size() && first == 0; ++n) {
+        r.control_points = n;
+        try {
+          if (io::fit(Q, r).max_error <= tol) first = n;
+        } catch (const InvalidArgument&) {  // a near-singular count fails
+        }
+      }
+      ASSERT_GT(first, 0u);
+      EXPECT_EQ(fitted_count(got, p, closed), first) << "closed " << closed << " tol " << tol;
+    }
+  }
+}
+
+// Work is bounded up front (issue 15: degree 1000 ran past 90 s): refused at once with the
+// figure, naming the field to change.
+TEST(Fit, WorkIsBoundedUpFront) {
+  io::PointList Q{2, {}};
+  for (int i = 0; i < 1001; ++i) Q.push_back(P2{{i * 0.01, std::sin(i * 0.01)}});
+  io::AnyFitRequest r;
+  r.degree = 1000;
+  r.control_points = 1001;
+  const auto t0 = std::chrono::steady_clock::now();
+  EXPECT_INVALID_ARGUMENT(io::fit(Q, r), "degree", "above the limit");
+  r.control_points.reset();
+  r.tolerance = 1e-3;
+  EXPECT_INVALID_ARGUMENT(io::fit(Q, r), "degree", "use degree <= ");
+  // Degree 100 fits once, but a tolerance search (about 11 fits) does not.
+  r.degree = 100;
+  EXPECT_INVALID_ARGUMENT(io::fit(Q, r), "tolerance", "give control_points");
+  // Refused before any fit: well under a second, even at -O0 and under load.
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 1.0);
+  r.tolerance.reset();
+  r.control_points = 150;
+  EXPECT_LT(io::fit(Q, r).max_error, 1e-3);  // the single fit is served
+}
+
+// A least-squares system that is numerically singular although every knot span holds data
+// (eq. 9.68-9.69 place the knots so): named control_points, saying what is wrong (was
+// "points: a knot span holds no data").
+TEST(Fit, NearSingularLeastSquaresNamesControlPoints) {
+  io::PointList Q{2, {}};
+  for (int i = 0; i < 1001; ++i) Q.push_back(P2{{i * 0.01, std::sin(i * 0.01)}});
+  io::AnyFitRequest r;
+  r.degree = 100;
+  r.control_points = 500;
+  EXPECT_INVALID_ARGUMENT(io::fit(Q, r), "control_points", "numerically singular");
+  EXPECT_INVALID_ARGUMENT(io::fit(Q, r), "control_points", "too many for the spread of the data parameters");
 }
 
 }  // namespace

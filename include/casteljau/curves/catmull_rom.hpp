@@ -23,15 +23,18 @@ namespace casteljau {
 /// Each segment is the cubic Hermite interpolant of its end points with the tangent of the
 /// non-uniform Catmull-Rom spline, which is the derivative of the Barry-Goldman pyramid:
 /// m_i = (P_i - P_(i-1)) / d_(i-1) - (P_(i+1) - P_(i-1)) / (d_(i-1) + d_i) + (P_(i+1) - P_i) / d_i,
-/// computed as d_i / (d_(i-1) (d_(i-1) + d_i)) (P_i - P_(i-1)) + d_(i-1) / (d_i (d_(i-1) +
+/// equal to d_i / (d_(i-1) (d_(i-1) + d_i)) (P_i - P_(i-1)) + d_(i-1) / (d_i (d_(i-1) +
 /// d_i)) (P_(i+1) - P_i) (the same, without cancellation); for alpha = 0 it is
 /// (P_(i+1) - P_(i-1)) / 2. Its Bézier points are P_i, P_i + d_i m_i / 3, P_(i+1) -
-/// d_i m_(i+1) / 3, P_(i+1), built once in the constructor (O(N)); evaluation and
+/// d_i m_(i+1) / 3, P_(i+1), the products d m formed from ratios of intervals (build), so
+/// that coordinates from 1e-300 to 1e300 give the same curve up to scale; built once in
+/// the constructor (O(N)); evaluation and
 /// derivatives (with respect to the parameter s) run on those pieces, so the right
 /// segment answers at a joint and the end segments extrapolate.
 /// Invariants (checked in the constructor): alpha finite in [0, 1] ("alpha"), enough points
-/// ("points"), finite coordinates ("points[i][d]"), and for alpha > 0 no two consecutive
-/// points equal (a zero knot interval, "points[i]").
+/// ("points"), finite coordinates ("points[i][d]"), for alpha > 0 no two consecutive
+/// points equal (a zero knot interval, "points[i]"), and a representable parameter: every
+/// interval a normal double, the knots finite, the Bézier points finite ("points").
 template <class T, int D>
 class CatmullRom {
  public:
@@ -58,10 +61,25 @@ class CatmullRom {
   [[nodiscard]] const std::vector<T>& breaks() const { return pieces_.breaks(); }
   [[nodiscard]] Interval<T> domain() const { return pieces_.domain(); }
 
-  /// The point at parameter s (de Casteljau on the segment's cubic). O(log N).
-  [[nodiscard]] PointType operator()(T s) const { return pieces_(s); }
-  /// The k-th derivative (k >= 0; zero above 3) with respect to s. O(log N).
-  [[nodiscard]] VectorType derivative_at(T s, int k = 1) const { return pieces_.derivative_at(s, k); }
+  /// The point at parameter s (de Casteljau on the segment's cubic). O(log N). Throws
+  /// InvalidArgument("t", ...) for a non-finite s or a point that overflows (far
+  /// extrapolation), quoting s (not the segment's own parameter).
+  [[nodiscard]] PointType operator()(T s) const {
+    try {
+      return pieces_(s);
+    } catch (const InvalidArgument& e) {
+      rethrow_for(e, s, "the curve's point");
+    }
+  }
+  /// The k-th derivative (k >= 0; zero above 3) with respect to s. O(log N). Throws as
+  /// operator(), and InvalidArgument("k", ...) for k < 0.
+  [[nodiscard]] VectorType derivative_at(T s, int k = 1) const {
+    try {
+      return pieces_.derivative_at(s, k);
+    } catch (const InvalidArgument& e) {
+      rethrow_for(e, s, k == 0 ? "the curve's point" : "the derivative");
+    }
+  }
 
   /// The same curve backwards on the same domain (up to the rounding of the knot sums):
   /// the points reversed (closed: P_0, P_(N-1), ..., P_1, so that it starts where the curve
@@ -102,13 +120,53 @@ class CatmullRom {
       : P_(std::move(points)), alpha_(alpha), closed_(closed), d_(std::move(intervals)), follow_(follow), pieces_(build(P_, d_, closed_)) {
     if (follow_) {
       // Whether the points still give these intervals, to rounding (8 eps relative: a
-      // rotation or uniform scaling moves each distance by a few ulps).
-      const std::vector<T> e = intervals_of(P_, alpha_, closed_);
-      for (std::size_t i = 0; i < e.size(); ++i)
-        follow_ = follow_ && std::abs(e[i] - d_[i]) <= 8 * std::numeric_limits<T>::epsilon() * d_[i];
+      // rotation or uniform scaling moves each distance by a few ulps); not when the mapped
+      // points' own intervals are not doubles (the kept ones are).
+      try {
+        const std::vector<T> e = intervals_of(P_, alpha_, closed_);
+        for (std::size_t i = 0; i < e.size(); ++i)
+          follow_ = follow_ && std::abs(e[i] - d_[i]) <= 8 * std::numeric_limits<T>::epsilon() * d_[i];
+      } catch (const InvalidArgument&) {
+        follow_ = false;
+      }
     }
   }
 
+  /// A segment's error about its own parameter, restated for the curve's parameter s that
+  /// the caller gave (issue 15: a message quoted 4.47e148 where the user sent 0.1).
+  [[noreturn]] static void rethrow_for(const InvalidArgument& e, T s, const char* what) {
+    if (e.where() != "t" || !std::isfinite(s)) throw e;
+    throw InvalidArgument("t", std::string(what) + " at t = " + detail::format_number(s) +
+                                   " is not representable (a coordinate exceeds the largest finite number)");
+  }
+
+  /// |P[b] - P[a]| as scale * root with root in [1, sqrt(D)]: scale = max |coordinate
+  /// difference| (exact), or half of it (halved = true) when a difference overflows.
+  struct Length {
+    T scale, root;
+    bool halved;
+  };
+  static Length length_of(const PointType& a, const PointType& b) {
+    VectorType v = b - a;
+    bool halved = false;
+    if (!detail::all_finite_point(v)) {
+      v = T(0.5) * b.to_vector() - T(0.5) * a.to_vector();  // exact: the coordinates are far above the subnormals
+      halved = true;
+    }
+    T scale = 0;
+    for (int k = 0; k < D; ++k) scale = std::max(scale, std::abs(v[k]));
+    if (scale == 0) return {T(0), T(1), false};
+    T sum = 0;
+    for (int k = 0; k < D; ++k) sum += (v[k] / scale) * (v[k] / scale);
+    return {scale, std::sqrt(sum), halved};
+  }
+
+  /// The knot intervals d_i = |P_(i+1) - P_i|^alpha of the contract, each rounded once from
+  /// its exact value wherever that is a normal double: the length is formed without
+  /// overflow or underflow (length_of) and the power taken of its factors when the
+  /// length itself is not a normal double. An interval that overflows, or falls below
+  /// the normal range (where it keeps fewer than the double's 53 bits, and its ratios to
+  /// the others, which shape the curve, are no longer exact) is refused naming "points".
   static std::vector<T> intervals_of(const std::vector<PointType>& P, T alpha, bool closed) {
     require_finite(alpha, "alpha");
     if (!(alpha >= 0 && alpha <= 1)) throw InvalidArgument("alpha", "alpha must lie in [0, 1], got " + detail::format_number(alpha));
@@ -122,49 +180,89 @@ class CatmullRom {
     std::vector<T> d(m);
     for (std::size_t i = 0; i < m; ++i) {
       const std::size_t next = (i + 1) % N;
-      const T len = distance(P[next], P[i]);
-      d[i] = alpha == 0 ? T(1) : std::pow(len, alpha);
-      if (!(d[i] > 0)) {
+      const Length len = length_of(P[i], P[next]);
+      if (len.scale == 0 && alpha > 0) {
         throw InvalidArgument("points[" + std::to_string(next) + "]",
                               "equals points[" + std::to_string(i) + "]: with alpha > 0 consecutive points must differ (a zero knot interval)" +
                                   std::string(closed && next == 0 ? " (the curve is closed: the last point is followed by the first)" : ""));
+      }
+      if (alpha == 0) {
+        d[i] = 1;
+        continue;
+      }
+      const T whole = len.halved ? std::numeric_limits<T>::infinity() : len.scale * len.root;
+      if (std::isfinite(whole) && whole >= std::numeric_limits<T>::min()) {
+        d[i] = alpha == 1 ? whole : std::pow(whole, alpha);  // the common case: as the contract writes it
+      } else {
+        // |dP|^alpha = scale^alpha root^alpha (2^alpha when halved): no intermediate overflow
+        // or underflow, a few ulps.
+        d[i] = std::pow(len.scale, alpha) * std::pow(len.root, alpha) * (len.halved ? std::exp2(alpha) : T(1));
+      }
+      if (!std::isfinite(d[i]) || d[i] < std::numeric_limits<T>::min()) {
+        const bool over = !std::isfinite(d[i]) || d[i] > 1;
+        throw InvalidArgument("points", "the knot interval |points[" + std::to_string(next) + "] - points[" + std::to_string(i) +
+                                            "]|^alpha (alpha " + detail::format_number(alpha) + ") " +
+                                            (over ? "overflows a double (above " + detail::format_number(std::numeric_limits<T>::max()) + ")"
+                                                  : "= " + detail::format_number(d[i]) + " underflows a double (below the normal range, " +
+                                                        detail::format_number(std::numeric_limits<T>::min()) +
+                                                        ", where it would lose precision)") +
+                                            ": the curve's parameter cannot be represented; scale the points, or use a smaller alpha");
       }
     }
     return d;
   }
 
-  /// The Catmull-Rom tangent at P_i from its neighbours and the two intervals around it.
-  static VectorType tangent(const PointType& prev, const PointType& p, const PointType& next, T d0, T d1) {
-    const T sum = d0 + d1;
-    return (d1 / (d0 * sum)) * (p - prev) + (d0 / (d1 * sum)) * (next - p);
+  /// (P[b] - P[a]) / 2 when any difference of the segment overflows (sigma = 1/2), else
+  /// P[b] - P[a] (sigma = 1): the control vectors are formed at that scale.
+  static VectorType difference(const PointType& a, const PointType& b, T sigma) {
+    return sigma == 1 ? b - a : T(0.5) * b.to_vector() - T(0.5) * a.to_vector();
   }
 
+  /// The Bézier pieces. Segment a (P_a to P_b, interval d_a) has the inner control points
+  /// P_a + d_a m_a / 3 and P_b - d_a m_b / 3, with the Catmull-Rom tangents m written
+  /// through ratios of intervals only (no product of two intervals, which overflows or
+  /// underflows for intervals beyond 1e154 or below 1e-154):
+  ///   d_a m_a = w d_a (P_a - P_p) / d_p + (1 - w) (P_b - P_a), w = d_a / (d_p + d_a),
+  ///   d_a m_b = (1 - v) (P_b - P_a) + v d_a (P_n - P_b) / d_n, v = d_a / (d_a + d_n),
+  /// (p, n the neighbours), w = 1 / (1 + d_p / d_a) and v likewise. For alpha = 0 these are
+  /// (P_b - P_p) / 2 and (P_n - P_a) / 2. Throws InvalidArgument("points") when the knots
+  /// sum beyond the largest double or a control point overflows.
   static Pieces<T, D> build(const std::vector<PointType>& P, const std::vector<T>& d, bool closed) {
     const std::size_t N = P.size();
     std::vector<BezierPiece<T, D>> segs;
     std::vector<T> breaks{T(0)};
-    // Segment from P_a to P_b (indices mod N) with interval d_a; tangents at P_a and P_b.
-    const auto add = [&](std::size_t a, std::size_t b, const VectorType& ma, const VectorType& mb) {
-      const T h = d[a] / 3;
-      segs.emplace_back(Bezier<T, D>({P[a], P[a] + h * ma, P[b] - h * mb, P[b]}));
-      const T next = breaks.back() + d[a];
+    // Segment from P_a to P_b (indices mod N) with interval d_a, neighbours P_p, P_n.
+    const auto add = [&](std::size_t p, std::size_t a, std::size_t b, std::size_t n) {
+      const T dp = d[p], da = d[a], dn = d[b];  // the intervals before, of and after the segment
+      const T w = 1 / (1 + dp / da), v = 1 / (1 + dn / da);
+      T sigma = 1;
+      for (const auto& [x, y] : {std::pair{p, a}, std::pair{a, b}, std::pair{b, n}})
+        if (!detail::all_finite_point(P[y] - P[x])) sigma = T(0.5);
+      const VectorType pa = difference(P[p], P[a], sigma), ab = difference(P[a], P[b], sigma), bn = difference(P[b], P[n], sigma);
+      const VectorType out = (w * da) * (pa / dp) + (1 - w) * ab;  // d_a m_a (times sigma)
+      const VectorType in = (1 - v) * ab + (v * da) * (bn / dn);   // d_a m_b (times sigma)
+      const T third = 1 / (3 * sigma);
+      const PointType c1 = P[a] + third * out, c2 = P[b] - third * in;
+      if (!detail::all_finite_point(c1) || !detail::all_finite_point(c2)) {
+        throw InvalidArgument("points", "the Bézier control points of the segment from points[" + std::to_string(a) + "] to points[" +
+                                            std::to_string(b) + "] overflow a double");
+      }
+      segs.emplace_back(Bezier<T, D>({P[a], c1, c2, P[b]}));
+      const T next = breaks.back() + da;
+      if (!std::isfinite(next)) {
+        throw InvalidArgument("points", "the knots s_i (sums of |P_(i+1) - P_i|^alpha) exceed the largest double at points[" +
+                                            std::to_string(b) + "]: the curve's parameter cannot be represented");
+      }
       if (!(next > breaks.back())) {
-        throw InvalidArgument("points[" + std::to_string(b) + "]", "the knot interval " + detail::format_number(d[a]) +
+        throw InvalidArgument("points[" + std::to_string(b) + "]", "the knot interval " + detail::format_number(da) +
                                                                        " vanishes next to the knot " + detail::format_number(breaks.back()));
       }
       breaks.push_back(next);
     };
     if (closed) {
-      std::vector<VectorType> m(N);
-      for (std::size_t i = 0; i < N; ++i) {
-        const std::size_t prev = (i + N - 1) % N, next = (i + 1) % N;
-        m[i] = tangent(P[prev], P[i], P[next], d[prev], d[i]);
-      }
-      for (std::size_t j = 0; j < N; ++j) add(j, (j + 1) % N, m[j], m[(j + 1) % N]);
+      for (std::size_t j = 0; j < N; ++j) add((j + N - 1) % N, j, (j + 1) % N, (j + 2) % N);
     } else {
-      std::vector<VectorType> m(N);
-      for (std::size_t i = 1; i + 1 < N; ++i) m[i] = tangent(P[i - 1], P[i], P[i + 1], d[i - 1], d[i]);
-      for (std::size_t j = 1; j + 2 < N; ++j) add(j, j + 1, m[j], m[j + 1]);
+      for (std::size_t j = 1; j + 2 < N; ++j) add(j - 1, j, j + 1, j + 2);
     }
     return Pieces<T, D>(std::move(segs), std::move(breaks));
   }

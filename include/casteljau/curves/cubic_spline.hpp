@@ -88,6 +88,27 @@ void solve_cyclic(const std::vector<T>& a, std::vector<T> b, const std::vector<T
   for (std::size_t i = 0; i < m; ++i) r[i] -= z[i] * fact;
 }
 
+/// Throws InvalidArgument("points", ...) when a solved slope s_i, or a Bézier control point
+/// P_i + h_i s_i / 3, P_(i+1) - h_i s_(i+1) / 3 of the spline is not finite (data so large
+/// for its param spacing that the spline's derivative or its bulge overflows), rather
+/// than leaving the Hermite constructor to name "tangents", which the user did not give.
+template <class T, int D>
+void require_representable_spline(const std::vector<T>& u, const std::vector<Point<T, D>>& P, const std::vector<Vector<T, D>>& s) {
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    if (!all_coordinates_finite(s[i])) {
+      throw InvalidArgument("points", "the spline's slope at points[" + std::to_string(i) +
+                                          "] overflows a double (coordinates too large for the param spacing)");
+    }
+  }
+  for (std::size_t i = 0; i + 1 < P.size(); ++i) {
+    const T h3 = (u[i + 1] - u[i]) / 3;
+    if (!all_coordinates_finite(P[i] + h3 * s[i]) || !all_coordinates_finite(P[i + 1] - h3 * s[i + 1])) {
+      throw InvalidArgument("points", "the spline between points[" + std::to_string(i) + "] and points[" + std::to_string(i + 1) +
+                                          "] leaves the range of a double (its Bézier control points overflow)");
+    }
+  }
+}
+
 }  // namespace detail
 
 /// The slopes s_0..s_n at the params of the C^2 cubic spline through (u_i, P_i) with the
@@ -121,9 +142,22 @@ std::vector<Vector<T, D>> cubic_spline_slopes(const std::vector<T>& u, const std
     }
     require_finite_point(e->value, e == &bc.start ? "boundary.start.value" : "boundary.end.value");
   }
-  std::vector<T> h(n);
-  for (std::size_t i = 0; i < n; ++i) h[i] = u[i + 1] - u[i];
+  // The C^2, not-a-knot and periodic rows are homogeneous in the spacings: they use h_i
+  // scaled by one power of two (exact), so that sums and products of spacings near the
+  // largest double (or below 1e-154) neither overflow nor underflow; the rows of a given
+  // second derivative use the true spacing hu_i.
+  std::vector<T> h(n), hu(n);
+  T hmax = 0;
+  for (std::size_t i = 0; i < n; ++i) hmax = std::max(hmax, hu[i] = u[i + 1] - u[i]);
+  const T sigma = detail::spacing_scale(hmax);
+  for (std::size_t i = 0; i < n; ++i) h[i] = hu[i] * sigma;
   const std::vector<V> d = detail::chord_slopes(u, P);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!detail::all_coordinates_finite(d[i])) {
+      throw InvalidArgument("points", "the chord slope from points[" + std::to_string(i) + "] to points[" + std::to_string(i + 1) +
+                                          "] overflows a double (coordinates too large for the param spacing)");
+    }
+  }
 
   // The end conditions, with scipy's small-n replacements.
   enum class End { first, second, not_a_knot };
@@ -159,12 +193,13 @@ std::vector<Vector<T, D>> cubic_spline_slopes(const std::vector<T>& u, const std
     }
     detail::solve_cyclic(a, b, c, r);
     r.push_back(r[0]);
+    detail::require_representable_spline(u, P, r);
     return r;
   }
   if (n == 2 && cs.type == End::not_a_knot && ce.type == End::not_a_knot) {
     // The parabola through the three points: p'(u) = d_0 + q (2u - u_0 - u_1) with q =
     // (d_1 - d_0) / (u_2 - u_0).
-    const V q = (d[1] - d[0]) / (h[0] + h[1]);
+    const V q = (d[1] - d[0]) / (h[0] + h[1]);  // with the scaled h: h_i q is the true product
     return {d[0] - h[0] * q, d[0] + h[0] * q, d[0] + (h[0] + 2 * h[1]) * q};
   }
   const std::size_t m = n + 1;
@@ -178,7 +213,7 @@ std::vector<Vector<T, D>> cubic_spline_slopes(const std::vector<T>& u, const std
   }
   switch (cs.type) {
     case End::first: b[0] = 1; c[0] = 0; r[0] = cs.value; break;
-    case End::second: b[0] = 2; c[0] = 1; r[0] = T(3) * d[0] - (h[0] / 2) * cs.value; break;
+    case End::second: b[0] = 2; c[0] = 1; r[0] = T(3) * d[0] - (hu[0] / 2) * cs.value; break;
     case End::not_a_knot: {
       const T s = h[0] + h[1];
       b[0] = h[1];
@@ -189,7 +224,7 @@ std::vector<Vector<T, D>> cubic_spline_slopes(const std::vector<T>& u, const std
   }
   switch (ce.type) {
     case End::first: b[n] = 1; a[n] = 0; r[n] = ce.value; break;
-    case End::second: b[n] = 2; a[n] = 1; r[n] = T(3) * d[n - 1] + (h[n - 1] / 2) * ce.value; break;
+    case End::second: b[n] = 2; a[n] = 1; r[n] = T(3) * d[n - 1] + (hu[n - 1] / 2) * ce.value; break;
     case End::not_a_knot: {
       const T s = h[n - 1] + h[n - 2];
       b[n] = h[n - 2];
@@ -199,6 +234,7 @@ std::vector<Vector<T, D>> cubic_spline_slopes(const std::vector<T>& u, const std
     }
   }
   detail::solve_tridiagonal(a, b, c, r);
+  detail::require_representable_spline(u, P, r);
   return r;
 }
 
@@ -265,7 +301,10 @@ bool cubic_spline_slopes_fused(const std::vector<T>& u, const std::vector<Point<
 
   s.resize(n + 1);
   const auto w = std::make_unique_for_overwrite<T[]>(n + 1);  // the multipliers, not zeroed first
-  constexpr T big = std::numeric_limits<T>::max();
+  // Spacings outside [2^-500, 2^500] go to cubic_spline_slopes, which scales them: here
+  // their sums and products (2 (h + h), h0 h0 in the not-a-knot rows) would overflow or
+  // underflow.
+  const T big = std::ldexp(T(1), 500), tiny = std::ldexp(T(1), -500);
   bool ok = true;
   // The Bézier control points' finiteness accumulates in acc (x * 0 is 0 for finite x, NaN
   // otherwise); piece i is checked once s_i and s_(i+1) are final.
@@ -279,13 +318,23 @@ bool cubic_spline_slopes_fused(const std::vector<T>& u, const std::vector<Point<
   T inv = 1 / b0;
   w[0] = c0 * inv;
   s[0] = r0 * inv;
+  // A slope below the normal range (a coordinate that moves by less than 2.2e-308 h) goes
+  // to the checked path too, which refuses a chord whose whole slope underflows.
+  constexpr T smallest = std::numeric_limits<T>::min();
+  const auto slope_ok = [&](const V& d, std::size_t i) {
+    bool good = true;
+    for (int k = 0; k < D; ++k) good &= (std::abs(d[k]) >= smallest) | (P[i + 1][k] == P[i][k]);
+    return good;
+  };
   T hl = hh(0);  // the downward sweep's h_(i-1), d_(i-1)
-  ok &= (hl > 0) & (hl <= big);
+  ok &= (hl >= tiny) & (hl <= big);
   V dl = (P[1] - P[0]) / hl;
+  ok &= slope_ok(dl, 0);
   const auto down = [&](std::size_t i) {  // eliminates x_(i-1) from row i: x_i + w_i x_(i+1) = s_i
     const T h = u[i + 1] - u[i];
-    ok &= (h > 0) & (h <= big);
+    ok &= (h >= tiny) & (h <= big);
     const V d = (P[i + 1] - P[i]) / h;
+    ok &= slope_ok(d, i);
     const T r = 1 / (2 * (hl + h) - h * w[i - 1]);
     w[i] = hl * r;
     s[i] = (T(3) * (h * dl + hl * d) - h * s[i - 1]) * r;
@@ -313,12 +362,14 @@ bool cubic_spline_slopes_fused(const std::vector<T>& u, const std::vector<Point<
   w[n] = an * inv;
   s[n] = rn * inv;
   T hr = hh(n - 1);  // the upward sweep's h_i, d_i
-  ok &= (hr > 0) & (hr <= big);
+  ok &= (hr >= tiny) & (hr <= big);
   V dr = (P[n] - P[n - 1]) / hr;
+  ok &= slope_ok(dr, n - 1);
   const auto up = [&](std::size_t i) {  // eliminates x_(i+1) from row i: x_i + w_i x_(i-1) = s_i
     const T g = u[i] - u[i - 1];
-    ok &= (g > 0) & (g <= big);
+    ok &= (g >= tiny) & (g <= big);
     const V e = (P[i] - P[i - 1]) / g;
+    ok &= slope_ok(e, i - 1);
     const T r = 1 / (2 * (g + hr) - g * w[i + 1]);
     w[i] = hr * r;
     s[i] = (T(3) * (hr * e + g * dr) - g * s[i + 1]) * r;
@@ -424,6 +475,7 @@ class CubicSpline {
     std::vector<VectorType> s;
     if (detail::cubic_spline_slopes_fused(u, P, b, s)) return Hermite<T, D>(detail::Unchecked{}, std::move(u), std::move(P), std::move(s));
     s = cubic_spline_slopes(u, P, b);
+    detail::require_representable_spline(u, P, s);  // also the small-n forms
     return Hermite<T, D>(std::move(u), std::move(P), std::move(s));
   }
 

@@ -26,6 +26,17 @@ bool all_coordinates_finite(const V& v) {
 }
 /// Tag of the constructors that skip the invariant checks (the caller has made them).
 struct Unchecked {};
+
+/// (b - a) / h (h > 0) without overflow in the difference: when b - a overflows (points
+/// near the largest double, of opposite signs) it is formed at half scale, ((b/2 - a/2) /
+/// h) 2. Non-finite only when the slope itself overflows.
+template <class T, int D>
+Vector<T, D> slope(const Point<T, D>& a, const Point<T, D>& b, T h) {
+  const Vector<T, D> v = b - a;
+  if (all_coordinates_finite(v)) [[likely]]
+    return v / h;
+  return ((T(0.5) * b.to_vector() - T(0.5) * a.to_vector()) / h) * T(2);
+}
 }  // namespace detail
 
 /// The piecewise cubic Hermite curve through P_0..P_n at the parameters u_0 < ... < u_n
@@ -179,7 +190,7 @@ class Hermite {
     };
     const auto evaluate = [&](const std::size_t* pieces, std::size_t first, std::size_t count) {
       if (!points_of(uu, P, mo, mi, pieces, u.data() + first, out.data() + first, count)) [[unlikely]]
-        overflow_in(out.data() + first, u.data() + first, count);
+        repair(uu, P, mo, mi, pieces, u.data() + first, out.data() + first, count);
     };
     const auto require_all_finite = [&](std::size_t first, std::size_t count) {
       bool finite = true;
@@ -252,7 +263,7 @@ class Hermite {
         __builtin_prefetch(mi + i + 1);
       }
       if (!points_of(uu, P, mo, mi, piece, x, out.data() + k0, g)) [[unlikely]]
-        overflow_in(out.data() + k0, x, g);
+        repair(uu, P, mo, mi, piece, x, out.data() + k0, g);
     }
   }
 
@@ -310,17 +321,31 @@ class Hermite {
   }
   PointType point_on(std::size_t i, T u) const {
     PointType p;
-    if (!points_of(u_.data(), P_.data(), out_.data(), in_.empty() ? out_.data() : in_.data(), &i, &u, &p, 1)) [[unlikely]]
-      overflow_error(u, "the curve's point");
+    const VectorType* mi = in_.empty() ? out_.data() : in_.data();
+    if (!points_of(u_.data(), P_.data(), out_.data(), mi, &i, &u, &p, 1)) [[unlikely]]
+      repair(u_.data(), P_.data(), out_.data(), mi, &i, &u, &p, 1);
     return p;
   }
 
-  /// points_of's failure: the first query of out[0..count) whose point is not finite
-  /// throws (there is one).
-  [[noreturn, gnu::cold, gnu::noinline]] static void overflow_in(const PointType* out, const T* u, std::size_t count) {
-    for (std::size_t k = 0; k < count; ++k)
+  /// points_of's failure: each query of out[0..count) whose point is not finite is
+  /// computed again at half scale (P_near / 2 + (w (P_far / 2 - P_near / 2) + h (h10 m /
+  /// 2 + h11 m' / 2)), then doubled), which the kernel's differences of coordinates near
+  /// the largest double (of opposite signs) overflow although the point does not; the
+  /// first one still not finite throws.
+  [[gnu::cold, gnu::noinline]] static void repair(const T* uu, const PointType* P, const VectorType* mo, const VectorType* mi,
+                                                  const std::size_t* piece, const T* u, PointType* out, std::size_t count) {
+    for (std::size_t k = 0; k < count; ++k) {
+      if (detail::all_coordinates_finite(out[k])) continue;
+      const std::size_t i = piece[k];
+      const T h = uu[i + 1] - uu[i];
+      const T t = (u[k] - uu[i]) / h;
+      const HermiteBasis<T> b = hermite_basis(t, 0);
+      const bool left = t <= T(0.5);
+      const VectorType near = T(0.5) * P[left ? i : i + 1].to_vector(), far = T(0.5) * P[left ? i + 1 : i].to_vector();
+      const VectorType half = near + ((left ? b.h01 : b.h00) * (far - near) + h * (b.h10 * (T(0.5) * mo[i]) + b.h11 * (T(0.5) * mi[i + 1])));
+      out[k] = PointType::from_vector(T(2) * half);
       if (!detail::all_coordinates_finite(out[k])) overflow_error(u[k], "the curve's point");
-    overflow_error(u[0], "the curve's point");
+    }
   }
 
   /// The points at u[0..count) of the pieces piece[0..count) into out, from raw arrays
@@ -404,7 +429,7 @@ class Hermite {
     const T h = u_[i + 1] - u_[i];
     const T t = (u - u_[i]) / h;
     const HermiteBasis<T> b = hermite_basis(t, k);
-    VectorType v = b.h01 * ((P_[i + 1] - P_[i]) / h) + b.h10 * out_[i] + b.h11 * incoming(i + 1);
+    VectorType v = b.h01 * detail::slope(P_[i], P_[i + 1], h) + b.h10 * out_[i] + b.h11 * incoming(i + 1);
     for (int j = 1; j < k; ++j) v /= h;
     check_representable(v, u, "the derivative");
     return v;

@@ -34,15 +34,42 @@ void check_rule_data(const std::vector<T>& u, const std::vector<Point<T, D>>& P,
     require_finite(u[i], where);
     throw InvalidArgument(where, "params must be strictly increasing (" + format_number(u[i]) + " after " + format_number(u[i - 1]) + ")");
   }
+  if (!std::isfinite(u.back() - u.front())) {
+    throw InvalidArgument("params", "the domain [" + format_number(u.front()) + ", " + format_number(u.back()) +
+                                        "] is longer than the largest double");
+  }
   for (std::size_t i = 0; i < P.size(); ++i)
     if (!all_coordinates_finite(P[i])) require_finite_point(P[i], "points[" + std::to_string(i) + "]");
+  // Every chord's slope must be a double: not overflowing, and keeping at least 43 of its
+  // 53 bits when the points differ (not below 2^-1032 = 2.2e-311: a subnormal slope 2^-k
+  // below the normal range keeps 53 - k bits, and the curve's shape would carry that
+  // error; params 1e200 apart with coordinates 1e-200 give slopes 1e-400, which round to
+  // 0). The general solve and every rule run this check; the fused spline solve hands
+  // any subnormal slope to them.
+  for (std::size_t i = 0; i + 1 < P.size(); ++i) {
+    const Vector<T, D> d = slope(P[i], P[i + 1], u[i + 1] - u[i]);
+    T dmax = 0, pmax = 0;
+    for (int k = 0; k < D; ++k) {
+      dmax = std::max(dmax, std::abs(d[k]));
+      pmax = std::max(pmax, std::abs(P[i + 1][k] - P[i][k]));
+    }
+    if (!std::isfinite(dmax)) {
+      throw InvalidArgument("points", "the chord slope from points[" + std::to_string(i) + "] to points[" + std::to_string(i + 1) +
+                                          "] overflows a double (coordinates too large for the param spacing)");
+    }
+    if (pmax > 0 && dmax < std::ldexp(std::numeric_limits<T>::min(), -10)) {
+      throw InvalidArgument("points", "the chord slope from points[" + std::to_string(i) + "] to points[" + std::to_string(i + 1) + "] = " +
+                                          format_number(dmax) + " underflows a double (coordinates too small for the param spacing)");
+    }
+  }
 }
 
-/// The chord slopes d_i = (P_(i+1) - P_i) / (u_(i+1) - u_i), i = 0..n-1.
+/// The chord slopes d_i = (P_(i+1) - P_i) / (u_(i+1) - u_i), i = 0..n-1 (slope: no overflow
+/// in the differences).
 template <class T, int D>
 std::vector<Vector<T, D>> chord_slopes(const std::vector<T>& u, const std::vector<Point<T, D>>& P) {
   std::vector<Vector<T, D>> d(P.size() - 1);
-  for (std::size_t i = 0; i + 1 < P.size(); ++i) d[i] = (P[i + 1] - P[i]) / (u[i + 1] - u[i]);
+  for (std::size_t i = 0; i + 1 < P.size(); ++i) d[i] = slope(P[i], P[i + 1], u[i + 1] - u[i]);
   return d;
 }
 
@@ -68,6 +95,28 @@ std::vector<T> coordinate(const std::vector<Point<T, D>>& P, int k) {
   return y;
 }
 
+/// (b - a) / h for scalars, as slope: at half scale when b - a overflows.
+template <class T>
+T scalar_slope(T a, T b, T h) {
+  const T v = b - a;
+  if (std::isfinite(v)) [[likely]]
+    return v / h;
+  return ((b / 2 - a / 2) / h) * 2;
+}
+
+/// A power of two that brings the largest spacing hmax > 0 into [1/2, 1) unless it already
+/// lies in [2^-500, 2^500], where the products of spacings cannot overflow or underflow
+/// (1 then: results bit for bit as without scaling). Rules homogeneous in the spacings use
+/// it; the scaling is exact unless a spacing 2^600 times smaller than the largest becomes
+/// subnormal.
+template <class T>
+T spacing_scale(T hmax) {
+  if (hmax >= std::ldexp(T(1), -500) && hmax <= std::ldexp(T(1), 500)) return 1;
+  int e = 0;
+  std::frexp(hmax, &e);
+  return std::ldexp(T(1), -e);
+}
+
 template <class T>
 int sign(T v) {
   return (v > 0) - (v < 0);
@@ -79,7 +128,11 @@ int sign(T v) {
 /// sign(m0) != sign(m1) and |d| > 3 |m0|.
 template <class T>
 T pchip_end_slope(T h0, T h1, T m0, T m1) {
-  const T d = ((2 * h0 + h1) * m0 - h0 * m1) / (h0 + h1);
+  T d = ((2 * h0 + h1) * m0 - h0 * m1) / (h0 + h1);
+  if (!std::isfinite(d)) {  // h m overflowed (slopes near the largest double): the same with w = h0 / (h0 + h1)
+    const T w = h0 / (h0 + h1);
+    d = (1 + w) * m0 - w * m1;
+  }
   if (sign(d) != sign(m0)) return 0;
   if (sign(m0) != sign(m1) && std::abs(d) > 3 * std::abs(m0)) return 3 * m0;
   return d;
@@ -91,17 +144,29 @@ template <class T>
 std::vector<T> pchip_slopes(const std::vector<T>& x, const std::vector<T>& y) {
   const std::size_t n = x.size();
   std::vector<T> h(n - 1), m(n - 1), d(n, T(0));
+  T hmax = 0;
   for (std::size_t i = 0; i + 1 < n; ++i) {
-    h[i] = x[i + 1] - x[i];
-    m[i] = (y[i + 1] - y[i]) / h[i];
+    const T hi = x[i + 1] - x[i];
+    hmax = std::max(hmax, hi);
+    m[i] = scalar_slope(y[i], y[i + 1], hi);
   }
+  // The weights and the end rule are homogeneous in the spacings: scaled by a power of two
+  // (exact) so that 2 h + h does not overflow near the largest double, nor h underflow.
+  const T sigma = spacing_scale(hmax);
+  for (std::size_t i = 0; i + 1 < n; ++i) h[i] = (x[i + 1] - x[i]) * sigma;
   if (n == 2) return {m[0], m[0]};  // the straight line
   for (std::size_t k = 1; k + 1 < n; ++k) {
     const T ml = m[k - 1], mr = m[k];
     if (sign(ml) != sign(mr) || ml == 0 || mr == 0) continue;  // a local extremum or flat: 0
     // Weighted harmonic mean: w1 = 2 h_k + h_(k-1) weighs the left slope.
     const T w1 = 2 * h[k] + h[k - 1], w2 = h[k] + 2 * h[k - 1];
-    d[k] = 1 / ((w1 / ml + w2 / mr) / (w1 + w2));
+    const T q = w1 / ml + w2 / mr;
+    if (std::isfinite(q)) [[likely]] {
+      d[k] = 1 / (q / (w1 + w2));
+    } else {  // slopes below about 1e-308: the same mean of the slopes scaled to at most 1
+      const T c = std::max(std::abs(ml), std::abs(mr));
+      d[k] = c / (((w1 / (ml / c)) + (w2 / (mr / c))) / (w1 + w2));
+    }
   }
   d[0] = pchip_end_slope(h[0], h[1], m[0], m[1]);
   d[n - 1] = pchip_end_slope(h[n - 2], h[n - 3], m[n - 2], m[n - 3]);  // n >= 3 here
@@ -119,7 +184,14 @@ template <class T>
 std::vector<T> akima_slopes(const std::vector<T>& x, const std::vector<T>& y) {
   const std::size_t n = x.size();
   std::vector<T> m(n + 3);
-  for (std::size_t i = 0; i + 1 < n; ++i) m[i + 2] = (y[i + 1] - y[i]) / (x[i + 1] - x[i]);
+  for (std::size_t i = 0; i + 1 < n; ++i) m[i + 2] = scalar_slope(y[i], y[i + 1], x[i + 1] - x[i]);
+  // The rule is homogeneous of degree 1 in the slopes (the weights are differences of
+  // slopes): they are scaled by a power of two when tiny or huge, so that the products
+  // f m neither underflow (slopes 1e-300: params 1e300 apart) nor overflow.
+  T mmax = 0;
+  for (std::size_t i = 0; i + 1 < n; ++i) mmax = std::max(mmax, std::abs(m[i + 2]));
+  const T sigma = mmax > 0 ? spacing_scale(mmax) : T(1);
+  for (std::size_t i = 0; i + 1 < n; ++i) m[i + 2] *= sigma;
   m[1] = 2 * m[2] - m[3];
   m[0] = 2 * m[1] - m[2];
   m[n + 1] = 2 * m[n] - m[n - 1];
@@ -133,7 +205,7 @@ std::vector<T> akima_slopes(const std::vector<T>& x, const std::vector<T>& y) {
   }
   for (std::size_t i = 0; i < n; ++i) {
     const T f12 = f1[i] + f2[i];
-    t[i] = f12 > T(1e-9) * fmax ? (f1[i] * m[i + 1] + f2[i] * m[i + 2]) / f12 : T(0.5) * (m[i + 3] + m[i]);
+    t[i] = (f12 > T(1e-9) * fmax ? (f1[i] * m[i + 1] + f2[i] * m[i + 2]) / f12 : T(0.5) * (m[i + 3] + m[i])) / sigma;
   }
   return t;
 }
@@ -162,7 +234,10 @@ std::vector<Vector<T, D>> finite_difference_tangents(const std::vector<T>& u, co
   std::vector<Vector<T, D>> m(P.size());
   m.front() = d.front();
   m.back() = d.back();
-  for (std::size_t i = 1; i + 1 < P.size(); ++i) m[i] = (d[i - 1] + d[i]) / T(2);
+  for (std::size_t i = 1; i + 1 < P.size(); ++i) {
+    m[i] = (d[i - 1] + d[i]) / T(2);
+    if (!detail::all_coordinates_finite(m[i])) m[i] = d[i - 1] / T(2) + d[i] / T(2);  // the sum overflowed
+  }
   detail::require_finite_tangents(m, "finite_difference");
   return m;
 }
@@ -183,9 +258,9 @@ std::vector<Vector<T, D>> cardinal_tangents(const std::vector<T>& u, const std::
   const std::size_t n = P.size() - 1;
   const T s = 1 - tension;
   std::vector<Vector<T, D>> m(n + 1);
-  m[0] = s * ((P[1] - P[0]) / (u[1] - u[0]));
-  m[n] = s * ((P[n] - P[n - 1]) / (u[n] - u[n - 1]));
-  for (std::size_t i = 1; i < n; ++i) m[i] = s * ((P[i + 1] - P[i - 1]) / (u[i + 1] - u[i - 1]));
+  m[0] = s * detail::slope(P[0], P[1], u[1] - u[0]);
+  m[n] = s * detail::slope(P[n - 1], P[n], u[n] - u[n - 1]);
+  for (std::size_t i = 1; i < n; ++i) m[i] = s * detail::slope(P[i - 1], P[i + 1], u[i + 1] - u[i - 1]);
   detail::require_finite_tangents(m, "cardinal");
   return m;
 }

@@ -5,6 +5,8 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <span>
 #include <string>
 #include <vector>
@@ -29,13 +31,15 @@ namespace casteljau {
 /// flatten, to_bezier and render refuse the curve rather than answer for another one.
 inline constexpr int lagrange_max_bezier_degree = 15;
 
-/// The polynomial curve P(u) of degree <= n - 1 with P(u_j) = P_j for n >= 2 points at
-/// distinct finite parameters u_j in any order. Domain [min u_j, max u_j]; outside it the
+/// The polynomial curve P(u) of degree <= n - 1 with P(u_j) = P_j for n >= 1 points at
+/// distinct finite parameters u_j in any order (n = 1: the constant P_0, as
+/// scipy.interpolate.BarycentricInterpolator gives). Domain [min u_j, max u_j] (one point
+/// for n = 1); outside it the
 /// same polynomial is extrapolated. Evaluation by the second barycentric formula in O(n)
 /// (exact at the parameters u_j), derivatives of every order in O(n k) (zero from order n
 /// on), both with the weights computed once: O(n^2) in the constructor, O(n) through
 /// on_nodes for Chebyshev nodes. Invariants (checked in the constructor, naming "params",
-/// "params[j]", "points", "points[j][d]"): as many params as points, at least 2, finite,
+/// "params[j]", "points", "points[j][d]"): as many params as points, at least 1, finite,
 /// params distinct, weights representable (barycentric_weights).
 template <class T, int D>
 class Lagrange {
@@ -131,6 +135,7 @@ class Lagrange {
                                          "): evaluate it instead, or use fewer points");
     }
     const std::size_t n = P_.size();
+    if (n == 1) return Bezier<T, D>({P_[0]});  // the constant
     Matrix<T> A(n, n);
     Eigen::Matrix<T, Eigen::Dynamic, D> rhs(static_cast<Eigen::Index>(n), D);
     std::vector<T> row(n);
@@ -165,7 +170,7 @@ class Lagrange {
       throw InvalidArgument("params", "needs one parameter per point: " + std::to_string(P_.size()) + " points but " +
                                           std::to_string(u_.size()) + " params");
     }
-    if (P_.size() < 2) throw InvalidArgument("points", "a lagrange curve needs at least 2 points, got " + std::to_string(P_.size()));
+    if (P_.empty()) throw InvalidArgument("points", "a lagrange curve needs at least 1 point, got 0");
     detail::check_distinct_nodes<T>(u_, "params");
     for (std::size_t i = 0; i < P_.size(); ++i) require_finite_point(P_[i], "points[" + std::to_string(i) + "]");
   }
@@ -186,9 +191,20 @@ class Lagrange {
 };
 
 /// The exact Bézier form: one piece of degree n - 1 on the domain (Lagrange::bezier()).
+/// Through one point the domain is the single parameter u_0, which pieces (their breaks
+/// increase) cannot hold: the constant piece then spans [u_0, the next double] (the
+/// previous one and u_0 at the largest double), so that the queries on the pieces answer
+/// for the same point set and parameters within one ulp of u_0.
 template <class T, int D>
 Pieces<T, D> pieces(const Lagrange<T, D>& c) {
-  return Pieces<T, D>({BezierPiece<T, D>(c.bezier())}, {c.domain().lo, c.domain().hi});
+  const Interval<T> dom = c.domain();
+  if (dom.lo == dom.hi) {
+    const T up = std::nextafter(dom.lo, std::numeric_limits<T>::infinity());
+    const std::vector<T> breaks = std::isfinite(up) ? std::vector<T>{dom.lo, up}
+                                                    : std::vector<T>{std::nextafter(dom.lo, -std::numeric_limits<T>::infinity()), dom.lo};
+    return Pieces<T, D>({BezierPiece<T, D>(c.bezier())}, breaks);
+  }
+  return Pieces<T, D>({BezierPiece<T, D>(c.bezier())}, {dom.lo, dom.hi});
 }
 
 static_assert(DifferentiableCurve<Lagrange<double, 2>>);
