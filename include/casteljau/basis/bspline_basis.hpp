@@ -60,7 +60,7 @@ void check_knots(std::span<const T> U, int p) {
       throw InvalidArgument("knots[" + std::to_string(i + limit) + "]",
                             "knot " + detail::format_number(U[i]) + " is repeated " + std::to_string(mult) + " times; " +
                                 (at_end ? "an end knot" : "an interior knot") + " may be repeated at most " +
-                                std::to_string(limit) + " times for degree " + std::to_string(p));
+                                std::to_string(limit) + (limit == 1 ? " time" : " times") + " for degree " + std::to_string(p));
     }
     i = j + 1;
   }
