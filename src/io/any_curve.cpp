@@ -132,17 +132,7 @@ PointList derivatives(const AnyCurve& c, std::span<const double> t, int k) {
 }
 
 AnyBox bounds(const AnyCurve& c) {
-  return std::visit(
-      [](const auto& x) {
-        const auto b = casteljau::bounds(x);
-        AnyBox out;
-        for (int d = 0; d < std::decay_t<decltype(x)>::dimension; ++d) {
-          out.lo.push_back(b.lo[d]);
-          out.hi.push_back(b.hi[d]);
-        }
-        return out;
-      },
-      c);
+  return std::visit([](const auto& x) { return AnyBox(casteljau::bounds(x)); }, c);
 }
 
 PointList flatten(const AnyCurve& c, double tolerance, FlattenMethod method) {

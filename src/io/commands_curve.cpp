@@ -8,6 +8,7 @@
 #include "casteljau/io/any_curve.hpp"
 #include "casteljau/io/knots.hpp"
 #include "casteljau/io/queries.hpp"
+#include "casteljau/io/results.hpp"
 #include "casteljau/io/svg.hpp"
 #include "commands_family.hpp"
 
@@ -23,26 +24,6 @@ constexpr int max_derivative_order = 64;
 // ---------------------------------------------------------------------------------------
 // eval
 
-/// eval's `frame`: one list per quantity, one entry per parameter; the lists a dimension
-/// does not have (normal in 1-D, binormal and torsion outside 3-D) are left out.
-OrderedJson frame_json(const std::vector<AnyFrame>& frames) {
-  OrderedJson tangent = OrderedJson::array(), normal = OrderedJson::array(), binormal = OrderedJson::array(),
-              curvature = OrderedJson::array(), torsion = OrderedJson::array();
-  for (const auto& f : frames) {
-    tangent.push_back(numbers_json(f.tangent));
-    if (!f.normal.empty()) normal.push_back(numbers_json(f.normal));
-    if (!f.binormal.empty()) binormal.push_back(numbers_json(f.binormal));
-    curvature.push_back(f.curvature);
-    if (f.torsion) torsion.push_back(*f.torsion);
-  }
-  OrderedJson out{{"tangent", std::move(tangent)}};
-  if (!normal.empty()) out["normal"] = std::move(normal);
-  if (!binormal.empty()) out["binormal"] = std::move(binormal);
-  out["curvature"] = std::move(curvature);
-  if (!torsion.empty()) out["torsion"] = std::move(torsion);
-  return out;
-}
-
 Response eval(const Args& a) {
   const AnyCurve& curve = a.curve("curve");
   const std::vector<double>& ts = a.numbers("t");
@@ -53,14 +34,16 @@ Response eval(const Args& a) {
                           "derivative count must be <= " + std::to_string(max_derivative_order) + ", got " + std::to_string(k));
   }
   Response r;
-  r.json = OrderedJson{{"points", points_json(evaluate(curve, ts))}};
+  r.json = OrderedJson{{"points", to_json(io::evaluate(curve, ts))}};
   if (k > 0) {
     OrderedJson derivatives = OrderedJson::array();
-    for (int order = 1; order <= k; ++order) derivatives.push_back(points_json(io::derivatives(curve, ts, order)));
+    for (int order = 1; order <= k; ++order) derivatives.push_back(to_json(io::derivatives(curve, ts, order)));
     r.json["derivatives"] = std::move(derivatives);
   }
-  if (a.boolean("curvature")) r.json["curvature"] = numbers_json(io::curvature(curve, ts));
-  if (a.boolean("frame")) r.json["frame"] = frame_json(frames(curve, ts));
+  if (a.boolean("curvature")) r.json["curvature"] = to_json(io::curvature(curve, ts));
+  // frame: one list per quantity, one entry per parameter; the lists a dimension does not
+  // have (normal in 1-D, binormal and torsion outside 3-D) are left out.
+  if (a.boolean("frame")) r.json["frame"] = columns_json(io::frames(curve, ts));
   return r;
 }
 
@@ -105,7 +88,7 @@ Response flatten(const Args& a) {
   const FlattenMethod method = m == "uniform"       ? FlattenMethod::uniform
                                : m == "subdivision" ? FlattenMethod::subdivision
                                                     : FlattenMethod::optimal;
-  return {OrderedJson{{"points", points_json(io::flatten(a.curve("curve"), a.number("tolerance"), method))}}};
+  return {OrderedJson{{"points", to_json(io::flatten(a.curve("curve"), a.number("tolerance"), method))}}};
 }
 
 constexpr Field flatten_fields[] = {
@@ -141,8 +124,7 @@ constexpr Field insert_knot_fields[] = {
 Response remove_knot(const Args& a) {
   const double u = a.number("knot");
   const int times = knot_times(a);
-  const AnyKnotRemoval k = io::remove_knot(a.curve("curve"), u, times, a.number("tolerance"));
-  return {OrderedJson{{"curve", to_json(k.curve)}, {"removed", k.removed}}};
+  return {to_json(io::remove_knot(a.curve("curve"), u, times, a.number("tolerance")))};
 }
 
 constexpr Field remove_knot_fields[] = {

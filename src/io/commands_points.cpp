@@ -8,6 +8,7 @@
 
 #include "casteljau/io/fit.hpp"
 #include "casteljau/io/knots.hpp"
+#include "casteljau/io/results.hpp"
 #include "commands_family.hpp"
 
 namespace casteljau::io::detail {
@@ -36,9 +37,7 @@ Response subdivide(const Args& a) {
   }
   const AnySubdivision s =
       io::subdivide(a.points("points"), scheme, degree, a.number("tension"), a.integer("iterations"), a.boolean("closed"));
-  Response r{OrderedJson{{"points", points_json(s.points)}}};
-  if (s.limit) r.json["limit"] = to_json(*s.limit);
-  return r;
+  return {to_json(s)};
 }
 
 constexpr Field subdivide_fields[] = {
@@ -75,8 +74,7 @@ Response fit(const Args& a) {
   r.start_derivative = a.optional_numbers("start_derivative");
   r.end_derivative = a.optional_numbers("end_derivative");
   r.closed = a.boolean("closed");
-  const AnyFit f = io::fit(a.points("points"), r);
-  return {OrderedJson{{"curve", to_json(f.curve)}, {"max_error", f.max_error}}};
+  return {to_json(io::fit(a.points("points"), r))};
 }
 
 constexpr Field fit_fields[] = {

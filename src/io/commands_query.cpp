@@ -18,8 +18,7 @@ namespace {
 Response bounds(const Args& a) {
   const AnyCurve& curve = a.curve("curve");
   const auto from = a.optional_number("from"), to = a.optional_number("to");
-  const AnyBox box = from || to ? io::bounds(curve, from, to) : io::bounds(curve);
-  return {OrderedJson{{"min", numbers_json(box.lo)}, {"max", numbers_json(box.hi)}}};
+  return {to_json(from || to ? io::bounds(curve, from, to) : io::bounds(curve))};
 }
 
 constexpr Field range_fields[] = {
@@ -33,7 +32,7 @@ Response length(const Args& a) {
 }
 
 Response param_at_length(const Args& a) {
-  return {OrderedJson{{"t", numbers_json(io::param_at_length(a.curve("curve"), a.numbers("lengths")))}}};
+  return {OrderedJson{{"t", to_json(io::param_at_length(a.curve("curve"), a.numbers("lengths")))}}};
 }
 
 constexpr Field param_at_length_fields[] = {
@@ -42,15 +41,7 @@ constexpr Field param_at_length_fields[] = {
 };
 
 Response project(const Args& a) {
-  const AnyProjection p = io::project(a.curve("curve"), a.numbers("point"), a.boolean("farthest"));
-  Response r{OrderedJson{{"t", p.t}, {"point", numbers_json(p.point)}, {"distance", p.distance}}};
-  if (!p.all_t.empty()) r.json["all_t"] = numbers_json(p.all_t);
-  if (!p.intervals.empty()) {
-    OrderedJson iv = OrderedJson::array();
-    for (const auto& [lo, hi] : p.intervals) iv.push_back(OrderedJson::array({lo, hi}));
-    r.json["intervals"] = std::move(iv);
-  }
-  return r;
+  return {to_json(io::project(a.curve("curve"), a.numbers("point"), a.boolean("farthest")))};
 }
 
 constexpr Field project_fields[] = {
@@ -60,10 +51,7 @@ constexpr Field project_fields[] = {
 };
 
 Response features(const Args& a) {
-  const AnyFeatures x = io::features(a.curve("curve"));
-  OrderedJson extrema = OrderedJson::array();
-  for (const auto& e : x.extrema) extrema.push_back(numbers_json(e));
-  return {OrderedJson{{"inflections", numbers_json(x.inflections)}, {"cusps", numbers_json(x.cusps)}, {"extrema", std::move(extrema)}}};
+  return {to_json(io::features(a.curve("curve")))};
 }
 
 constexpr Field curve_only[] = {
@@ -72,10 +60,7 @@ constexpr Field curve_only[] = {
 
 Response distance(const Args& a) {
   const auto curves = a.curves("curves");
-  const AnyDistance d = io::distance(curves[0], curves[1]);
-  return {OrderedJson{{"distance", d.distance},
-                      {"t", OrderedJson::array({d.t[0], d.t[1]})},
-                      {"points", OrderedJson::array({numbers_json(d.points[0]), numbers_json(d.points[1])})}}};
+  return {to_json(io::distance(curves[0], curves[1]))};
 }
 
 constexpr Field distance_fields[] = {
@@ -95,17 +80,7 @@ Response intersect(const Args& a) {
       throw InvalidArgument(index_path("curves", i), "intersect needs 2-D curves, got dimension " + std::to_string(dimension(curves[i])));
     }
   }
-  const AnyIntersections x = curves.size() == 1 ? io::self_intersect(curves[0]) : io::intersect(curves[0], curves[1]);
-  OrderedJson points = OrderedJson::array(), overlaps = OrderedJson::array();
-  for (const auto& p : x.points) {
-    points.push_back(OrderedJson{{"t", OrderedJson::array({p.ta, p.tb})},
-                                 {"point", OrderedJson::array({p.point[0], p.point[1]})},
-                                 {"kind", p.tangent ? "tangent" : "crossing"}});
-  }
-  for (const auto& o : x.overlaps) {
-    overlaps.push_back(OrderedJson{{"a", OrderedJson::array({o.a0, o.a1})}, {"b", OrderedJson::array({o.b0, o.b1})}});
-  }
-  return {OrderedJson{{"intersections", std::move(points)}, {"overlaps", std::move(overlaps)}}};
+  return {to_json(curves.size() == 1 ? io::self_intersect(curves[0]) : io::intersect(curves[0], curves[1]))};
 }
 
 constexpr Field intersect_fields[] = {

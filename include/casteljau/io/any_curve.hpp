@@ -119,11 +119,13 @@ struct PointList {
   }
 };
 
+/// S<double, D> for every D in 1..max_dimension, one variant: a result of the library at
+/// the curve's dimension (written by the to_json of io/results.hpp).
+template <template <class, int> class S>
+using PerDimension = typename detail::AnyCurveOf<CurveTypeList<S>, std::make_integer_sequence<int, max_dimension>>::type;
+
 /// An axis-aligned box in the curve's dimension.
-struct AnyBox {
-  std::vector<double> lo;
-  std::vector<double> hi;
-};
+using AnyBox = PerDimension<Box>;
 
 /// The curve's points at the parameters t (any finite t; outside the domain the first or
 /// last piece is extrapolated). Errors name "t[j]": a non-finite parameter, a point that
