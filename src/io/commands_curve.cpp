@@ -207,7 +207,7 @@ constexpr Field render_fields[] = {
 
 // ---------------------------------------------------------------------------------------
 
-constexpr Command family[] = {
+constexpr Command curve_family[] = {
     {"eval", "Evaluate a curve (and its derivatives) at parameters",
      "Evaluates a curve at parameters, optionally with derivatives with respect to the\n"
      "curve's parameter.",
@@ -281,6 +281,6 @@ constexpr Command family[] = {
 
 }  // namespace
 
-std::span<const Command> curve_commands() { return family; }
+std::span<const Command> curve_commands() { return curve_family; }
 
 }  // namespace casteljau::io::detail

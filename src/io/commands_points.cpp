@@ -88,7 +88,7 @@ constexpr Field fit_fields[] = {
     {"closed", FieldType::boolean, false, "false", "a periodic curve"},
 };
 
-constexpr Command family[] = {
+constexpr Command point_family[] = {
     {"subdivide", "Subdivision curves: Chaikin, Lane-Riesenfeld, 4-point",
      "Subdivision curves: `iterations` steps of a scheme on a control polygon. chaikin\n"
      "(corner cutting), lane_riesenfeld (degree p >= 1; chaikin is p = 2) and four_point\n"
@@ -124,6 +124,6 @@ constexpr Command family[] = {
 
 }  // namespace
 
-std::span<const Command> point_commands() { return family; }
+std::span<const Command> point_commands() { return point_family; }
 
 }  // namespace casteljau::io::detail

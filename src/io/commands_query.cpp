@@ -89,7 +89,7 @@ constexpr Field intersect_fields[] = {
 
 // ---------------------------------------------------------------------------------------
 
-constexpr Command family[] = {
+constexpr Command query_family[] = {
     {"bounds", "Tight axis-aligned bounding box of a curve",
      "The tight axis-aligned box of a curve over its domain (not of its control points),\n"
      "or over the parameter range [from, to] (an extension of the contract).",
@@ -157,6 +157,6 @@ constexpr Command family[] = {
 
 }  // namespace
 
-std::span<const Command> query_commands() { return family; }
+std::span<const Command> query_commands() { return query_family; }
 
 }  // namespace casteljau::io::detail

@@ -114,7 +114,8 @@ TEST(Commands, ListingTypesAndDefaults) {
 
 TEST(Commands, RenderDefaultsAreRenderStyles) {
   const io::RenderStyle style;
-  const auto& render = command_entry(io::api_listing(), "render");
+  const io::OrderedJson listing = io::api_listing();
+  const auto& render = command_entry(listing, "render");
   EXPECT_EQ(field_entry(render, "width")["default"], style.width);
   EXPECT_EQ(field_entry(render, "height")["default"], style.height);
   EXPECT_EQ(field_entry(render, "padding")["default"], style.padding);
