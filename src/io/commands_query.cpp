@@ -7,6 +7,7 @@
 
 #include "casteljau/io/intersect.hpp"
 #include "casteljau/io/queries.hpp"
+#include "casteljau/io/results.hpp"
 #include "commands_family.hpp"
 #include "text.hpp"
 

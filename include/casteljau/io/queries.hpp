@@ -9,13 +9,24 @@
 #include <span>
 #include <vector>
 
+#include "casteljau/algo/distance.hpp"
+#include "casteljau/algo/features.hpp"
+#include "casteljau/algo/frame.hpp"
+#include "casteljau/algo/project.hpp"
 #include "casteljau/io/any_curve.hpp"
-#include "casteljau/io/results.hpp"
 
 namespace casteljau::io {
 
-// The results are the library's structs at the curve's dimension (io/results.hpp):
-// AnyProjection, AnyFeatures, AnyDistance, AnyFrames, AnyBox.
+/// One frame per parameter.
+template <class T, int D>
+using Frames = std::vector<Frame<T, D>>;
+
+// The results are the library's structs at the curve's dimension (their JSON:
+// io/results.hpp), and AnyBox (io/any_curve.hpp).
+using AnyProjection = PerDimension<Projection>;
+using AnyFeatures = PerDimension<Features>;
+using AnyDistance = PerDimension<CurveDistance>;
+using AnyFrames = PerDimension<Frames>;
 
 /// The nearest (farthest with `farthest`) point of the curve to `point` over its whole
 /// domain, global. Throws InvalidArgument("point", ...) when the point's dimension is not

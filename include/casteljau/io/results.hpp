@@ -15,26 +15,17 @@
 #include <variant>
 #include <vector>
 
-#include "casteljau/algo/distance.hpp"
-#include "casteljau/algo/features.hpp"
-#include "casteljau/algo/frame.hpp"
-#include "casteljau/algo/intersect.hpp"
-#include "casteljau/algo/project.hpp"
 #include "casteljau/io/any_curve.hpp"
 #include "casteljau/io/fit.hpp"
+#include "casteljau/io/intersect.hpp"
 #include "casteljau/io/json.hpp"
 #include "casteljau/io/knots.hpp"
+#include "casteljau/io/queries.hpp"
 
 namespace casteljau::io {
 
-/// One frame per parameter.
-template <class T, int D>
-using Frames = std::vector<Frame<T, D>>;
-
-using AnyProjection = PerDimension<Projection>;
-using AnyFeatures = PerDimension<Features>;
-using AnyDistance = PerDimension<CurveDistance>;
-using AnyFrames = PerDimension<Frames>;
+// The results' variants (AnyProjection, AnyFrames, ...) are declared with their
+// functions, in io/queries.hpp; AnyBox in io/any_curve.hpp.
 
 // ---------------------------------------------------------------------------------------
 // Describing a struct: its JSON fields, once.
