@@ -11,12 +11,12 @@
 
 #include <CLI/CLI.hpp>
 
-#include "commands.hpp"
+#include "casteljau/io/commands.hpp"
 
 namespace {
 
 using casteljau::InvalidArgument;
-using casteljau::cli::Command;
+using casteljau::io::Command;
 using casteljau::io::Json;
 using casteljau::io::OrderedJson;
 
@@ -185,7 +185,7 @@ Answer answer(const Command& command, std::string_view text, bool jsonl) {
       throw InvalidArgument("request", "empty line (every line must hold one JSON request object)");
     }
     const Json request = casteljau::io::parse_json(text);
-    const auto response = casteljau::cli::run(command, request);
+    const auto response = casteljau::io::run(command, request);
     if (response.is_svg && !jsonl) {
       a.text = response.svg;
     } else {
@@ -260,17 +260,24 @@ int run_jsonl(const Command& command, const std::string& file) {
 
 std::string command_list() {
   std::string s;
-  for (const auto& c : casteljau::cli::commands()) s += (s.empty() ? "" : ", ") + std::string(c.name);
+  for (const auto& c : casteljau::io::commands()) s += (s.empty() ? "" : ", ") + std::string(c.name);
   return s;
+}
+
+/// The program's description for --help: the curve types of the registry.
+std::string description() {
+  std::string types;
+  for (const auto name : casteljau::io::curve_type_names()) types += (types.empty() ? "" : ", ") + std::string(name);
+  return "casteljau " CASTELJAU_VERSION ": curves on the command line (" + types +
+         ").\n"
+         "Reads one JSON request from FILE (or stdin when FILE is absent or -), writes one JSON\n"
+         "response to stdout. Errors: exit status 2 and one line 'error: <where>: <what>' on stderr.";
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app("casteljau " CASTELJAU_VERSION ": curves (Bezier, rational Bezier, paths) on the command line.\n"
-               "Reads one JSON request from FILE (or stdin when FILE is absent or -), writes one JSON\n"
-               "response to stdout. Errors: exit status 2 and one line 'error: <where>: <what>' on stderr.",
-               "casteljau");
+  CLI::App app(description(), "casteljau");
   app.set_version_flag("--version", "casteljau " CASTELJAU_VERSION);
   app.footer("Run 'casteljau COMMAND --help' for a command's request, response and an example.\n"
              "Curve objects and the full contract: docs/cli.md.");
@@ -281,10 +288,10 @@ int main(int argc, char** argv) {
   std::string file;
   std::vector<CLI::Option*> file_options;
   app.add_flag("--jsonl", jsonl, "One request per line in, one response per line out");
-  for (const auto& c : casteljau::cli::commands()) {
+  for (const auto& c : casteljau::io::commands()) {
     CLI::App* sub = app.add_subcommand(std::string(c.name), std::string(c.summary));
     sub->group("Commands");
-    sub->footer(std::string(c.details));
+    sub->footer(casteljau::io::help(c));
     file_options.push_back(sub->add_option("FILE", file, "Request file (default: stdin; - for stdin)")->type_name(""));
     sub->add_flag("--jsonl", jsonl, "One request per line in, one response per line out");
   }
@@ -293,7 +300,7 @@ int main(int argc, char** argv) {
   for (int i = 1; i < argc; ++i) {
     const std::string_view a = argv[i];
     if (a.empty() || a.front() != '-' || a == "-") {
-      if (!casteljau::cli::find_command(a)) {
+      if (!casteljau::io::find_command(a)) {
         print_error("command: unknown command " + casteljau::io::quoted(a) + " (commands: " + command_list() + ")");
         return exit_bad_input;
       }
@@ -317,15 +324,7 @@ int main(int argc, char** argv) {
     print_error("command: missing command (commands: " + command_list() + "; run casteljau --help)");
     return exit_bad_input;
   }
-  const Command* command = casteljau::cli::find_command(chosen.front()->get_name());
-  if (!command->supported) {
-    std::string supported;
-    for (const auto& c : casteljau::cli::commands()) {
-      if (c.supported) supported += (supported.empty() ? "" : ", ") + std::string(c.name);
-    }
-    print_error("command: command '" + std::string(command->name) + "' is not supported yet (supported: " + supported + ")");
-    return exit_bad_input;
-  }
+  const Command* command = casteljau::io::find_command(chosen.front()->get_name());
   // An empty FILE (a script's unset variable: casteljau eval "$f") must not quietly read
   // stdin, as a missing one does.
   for (const CLI::Option* o : file_options) {

@@ -61,7 +61,42 @@ double wang_estimate(const Piece& c, double tolerance) {
   return std::ceil(std::sqrt(n * (n - 1) / 8.0 * second) * std::sqrt(std::ldexp(1.0, e)) / std::sqrt(tolerance));
 }
 
+/// Whether curve type C has the capability (a member the operation calls; only its
+/// declaration is looked at, nothing is instantiated).
+template <class C>
+constexpr bool has(Capability k) {
+  switch (k) {
+    case Capability::split: return SplittableCurve<C>;
+    case Capability::elevate: return requires(const C& x) { x.elevate(1); };
+    case Capability::knot_insertion: return requires(const C& x) { x.insert_knot(0.0, 1); };
+    case Capability::knot_removal: return requires(const C& x) { x.remove_knot(0.0, 1, 0.0); };
+  }
+  return false;
+}
+
 }  // namespace
+
+std::vector<std::string_view> types_with(Capability k) {
+  const auto names = curve_type_names();
+  return [&]<template <class, int> class... C>(CurveTypeList<C...>) {
+    const bool flags[] = {has<C<double, 2>>(k)...};
+    std::vector<std::string_view> out;
+    for (std::size_t i = 0; i < names.size(); ++i) {
+      if (flags[i]) out.push_back(names[i]);
+    }
+    return out;
+  }(CurveTypes{});
+}
+
+std::string types_phrase(Capability k) {
+  const auto names = types_with(k);
+  std::string s = "a ";
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (i > 0) s += i + 1 == names.size() ? " or " : ", ";
+    s += names[i];
+  }
+  return s + " curve";
+}
 
 int dimension(const AnyCurve& c) {
   return std::visit([](const auto& x) { return std::decay_t<decltype(x)>::dimension; }, c);
@@ -97,17 +132,7 @@ PointList derivatives(const AnyCurve& c, std::span<const double> t, int k) {
 }
 
 AnyBox bounds(const AnyCurve& c) {
-  return std::visit(
-      [](const auto& x) {
-        const auto b = casteljau::bounds(x);
-        AnyBox out;
-        for (int d = 0; d < std::decay_t<decltype(x)>::dimension; ++d) {
-          out.lo.push_back(b.lo[d]);
-          out.hi.push_back(b.hi[d]);
-        }
-        return out;
-      },
-      c);
+  return std::visit([](const auto& x) { return AnyBox(casteljau::bounds(x)); }, c);
 }
 
 PointList flatten(const AnyCurve& c, double tolerance, FlattenMethod method) {
@@ -154,7 +179,7 @@ AnySplit split(const AnyCurve& c, double t) {
           auto halves = x.split(t);
           return {AnyCurve(std::move(halves.left)), AnyCurve(std::move(halves.right))};
         } else {
-          throw InvalidArgument("curve.type", "split needs a bezier, rational_bezier, bspline or nurbs curve, got a " + std::string(type_name(c)) +
+          throw InvalidArgument("curve.type", "split needs " + types_phrase(Capability::split) + ", got a " + std::string(type_name(c)) +
                                                   (std::is_same_v<C, Path<double, C::dimension>> ? " (split its segments instead)" : ""));
         }
       },
@@ -192,7 +217,7 @@ AnyCurve elevate(const AnyCurve& c, int times) {
             throw;
           }
         } else {
-          throw InvalidArgument("curve.type", "elevate needs a bezier, rational_bezier, bspline or nurbs curve, got a " + std::string(type_name(c)));
+          throw InvalidArgument("curve.type", "elevate needs " + types_phrase(Capability::elevate) + ", got a " + std::string(type_name(c)));
         }
       },
       c);

@@ -116,19 +116,6 @@ RawPoints read_control_points(const Fields& f, std::string_view noun) {
   return P;
 }
 
-/// Calls f.template operator()<D>() for the run-time dimension d in 1..max_dimension.
-template <class F>
-AnyCurve dispatch_dimension(int d, F&& f) {
-  static_assert(max_dimension == 4, "extend dispatch_dimension with the new dimensions");
-  switch (d) {
-    case 1: return f.template operator()<1>();
-    case 2: return f.template operator()<2>();
-    case 3: return f.template operator()<3>();
-    case 4: return f.template operator()<4>();
-    default: throw InvalidArgument("", "dimension must be 1.." + std::to_string(max_dimension) + ", got " + std::to_string(d));
-  }
-}
-
 template <class T, int D>
 OrderedJson points_json(const std::vector<Point<T, D>>& P) {
   OrderedJson a = OrderedJson::array();
@@ -342,13 +329,7 @@ RawInterpolation read_interpolation_data(const Fields& f, std::string_view noun)
     r.params = numbers_from_json(*pj, "params");
   } else if (rule) {
     const auto kind = static_cast<Parametrization>(choice_from_json(*rule, "parametrization", {"uniform", "chord", "centripetal"}));
-    static_assert(max_dimension == 4, "extend the parametrization dispatch with the new dimensions");
-    switch (r.P.dim) {
-      case 1: r.params = parameters_from_points(r.P.points<1>(), kind); break;
-      case 2: r.params = parameters_from_points(r.P.points<2>(), kind); break;
-      case 3: r.params = parameters_from_points(r.P.points<3>(), kind); break;
-      default: r.params = parameters_from_points(r.P.points<4>(), kind); break;
-    }
+    r.params = dispatch_dimension(r.P.dim, [&]<int D>() { return parameters_from_points(r.P.template points<D>(), kind); });
   } else {
     throw InvalidArgument("params", "required field is missing (or give parametrization)");
   }
@@ -553,11 +534,6 @@ void for_each_type(CurveTypeList<C...>, F&& f) {
   (f.template operator()<C>(), ...);
 }
 
-std::vector<std::string_view> registered_names() {
-  std::vector<std::string_view> names;
-  for_each_type(CurveTypes{}, [&]<template <class, int> class C>() { names.push_back(Format<C>::name); });
-  return names;
-}
 
 thread_local int path_depth = 0;
 
@@ -569,7 +545,7 @@ AnyCurve read_curve_object(const Json& j) {
     if (!out && type == Format<C>::name) out = Format<C>::read(f);
   });
   if (out) return std::move(*out);
-  throw InvalidArgument("type", "unknown curve type " + io::quoted(type) + " (known: " + join(registered_names()) + ")");
+  throw InvalidArgument("type", "unknown curve type " + io::quoted(type) + " (known: " + join(curve_type_names()) + ")");
 }
 
 /// Adds one path segment (any curve object of dimension D) on the break interval `onto`:
@@ -583,11 +559,7 @@ void append_segment(const AnyCurve& any, const Interval<double>& onto, std::vect
           throw InvalidArgument("", "segment has dimension " + std::to_string(X::dimension) + " but segments[0] has " +
                                         std::to_string(D));
         } else if constexpr (std::is_same_v<X, Path<double, D>>) {
-          const Interval<double> from = x.domain();
-          for (std::size_t k = 0; k < x.size(); ++k) {
-            segs.push_back(x.segments()[k]);
-            breaks.push_back(casteljau::detail::map_parameter(x.breaks()[k + 1], from, onto));
-          }
+          append_pieces(x, onto, segs, breaks);
         } else {
           segs.push_back(Segment<double, D>(x));
           breaks.push_back(onto.hi);
@@ -651,6 +623,15 @@ OrderedJson Format<Path>::write(const Path<double, D>& c) {
 }  // namespace
 
 AnyCurve curve_from_json(const Json& j) { return read_curve_object(j); }
+
+std::span<const std::string_view> curve_type_names() {
+  static const std::vector<std::string_view> names = [] {
+    std::vector<std::string_view> out;
+    for_each_type(CurveTypes{}, [&]<template <class, int> class C>() { out.push_back(Format<C>::name); });
+    return out;
+  }();
+  return names;
+}
 
 OrderedJson to_json(const AnyCurve& c) {
   return std::visit(

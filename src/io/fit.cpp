@@ -43,13 +43,7 @@ AnyFit fit_in(const PointList& L, const AnyFitRequest& r) {
 }  // namespace
 
 AnyFit fit(const PointList& P, const AnyFitRequest& r) {
-  switch (P.dim) {
-    case 1: return fit_in<1>(P, r);
-    case 2: return fit_in<2>(P, r);
-    case 3: return fit_in<3>(P, r);
-    case 4: return fit_in<4>(P, r);
-    default: throw InvalidArgument("points", "points must have 1 to " + std::to_string(max_dimension) + " coordinates");
-  }
+  return dispatch_dimension(P.dim, [&]<int D>() { return fit_in<D>(P, r); });
 }
 
 }  // namespace casteljau::io

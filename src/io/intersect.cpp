@@ -25,22 +25,14 @@ Pieces<double, 2> planar(const AnyCurve& c, const char* where) {
   return std::move(*q);
 }
 
-AnyIntersections convert(const Intersections<double>& r) {
-  AnyIntersections out;
-  for (const auto& p : r.points)
-    out.points.push_back({p.ta, p.tb, {p.point[0], p.point[1]}, p.kind == IntersectionKind::tangent});
-  for (const auto& o : r.overlaps) out.overlaps.push_back({o.a.lo, o.a.hi, o.b_start, o.b_end});
-  return out;
-}
-
 }  // namespace
 
-AnyIntersections intersect(const AnyCurve& a, const AnyCurve& b) {
+Intersections<double> intersect(const AnyCurve& a, const AnyCurve& b) {
   const Pieces<double, 2> pa = planar(a, "curves[0]");
   const Pieces<double, 2> pb = planar(b, "curves[1]");
-  return convert(casteljau::intersect(pa, pb));
+  return casteljau::intersect(pa, pb);
 }
 
-AnyIntersections self_intersect(const AnyCurve& a) { return convert(casteljau::self_intersect(planar(a, "curves[0]"))); }
+Intersections<double> self_intersect(const AnyCurve& a) { return casteljau::self_intersect(planar(a, "curves[0]")); }
 
 }  // namespace casteljau::io

@@ -356,6 +356,10 @@ const Json* Fields::optional(std::string_view name) const {
 }
 
 void Fields::allow_only(std::initializer_list<std::string_view> allowed, std::string_view owner) const {
+  allow_only(std::span<const std::string_view>(allowed.begin(), allowed.size()), owner);
+}
+
+void Fields::allow_only(std::span<const std::string_view> allowed, std::string_view owner) const {
   for (const auto& [k, v] : j_.items()) {
     if (!one_of(k, allowed)) {
       throw InvalidArgument(key_in_path(k), "unknown field " + quote_name(k) + " (" + std::string(owner) + " has: " + join(allowed) + ")");

@@ -16,7 +16,7 @@ AnyCurve insert_knot(const AnyCurve& c, double u, int times) {
         if constexpr (requires { x.insert_knot(u, times); }) {
           return AnyCurve(x.insert_knot(u, times));
         } else {
-          throw InvalidArgument("curve.type", "insert_knot needs a bspline or nurbs curve, got a " + std::string(type_name(c)));
+          throw InvalidArgument("curve.type", "insert_knot needs " + types_phrase(Capability::knot_insertion) + ", got a " + std::string(type_name(c)));
         }
       },
       c);
@@ -29,7 +29,7 @@ AnyKnotRemoval remove_knot(const AnyCurve& c, double u, int times, double tolera
           auto r = x.remove_knot(u, times, tolerance);
           return {AnyCurve(std::move(r.curve)), r.removed};
         } else {
-          throw InvalidArgument("curve.type", "remove_knot needs a bspline or nurbs curve, got a " + std::string(type_name(c)));
+          throw InvalidArgument("curve.type", "remove_knot needs " + types_phrase(Capability::knot_removal) + ", got a " + std::string(type_name(c)));
         }
       },
       c);
@@ -59,13 +59,7 @@ AnySubdivision subdivide_in(const PointList& L, SubdivisionScheme scheme, int de
 }  // namespace
 
 AnySubdivision subdivide(const PointList& P, SubdivisionScheme scheme, int degree, double tension, int iterations, bool closed) {
-  switch (P.dim) {
-    case 1: return subdivide_in<1>(P, scheme, degree, tension, iterations, closed);
-    case 2: return subdivide_in<2>(P, scheme, degree, tension, iterations, closed);
-    case 3: return subdivide_in<3>(P, scheme, degree, tension, iterations, closed);
-    case 4: return subdivide_in<4>(P, scheme, degree, tension, iterations, closed);
-    default: throw InvalidArgument("points", "points must have 1 to " + std::to_string(max_dimension) + " coordinates");
-  }
+  return dispatch_dimension(P.dim, [&]<int D>() { return subdivide_in<D>(P, scheme, degree, tension, iterations, closed); });
 }
 
 }  // namespace casteljau::io

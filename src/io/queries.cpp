@@ -22,13 +22,6 @@ namespace {
 
 using casteljau::detail::format_number;
 
-template <class V>
-std::vector<double> coords(const V& v) {
-  std::vector<double> out;
-  for (int k = 0; k < V::dimension; ++k) out.push_back(v[k]);
-  return out;
-}
-
 }  // namespace
 
 AnyProjection project(const AnyCurve& c, std::span<const double> point, bool farthest) {
@@ -44,10 +37,7 @@ AnyProjection project(const AnyCurve& c, std::span<const double> point, bool far
           require_finite(point[static_cast<std::size_t>(k)], "point[" + std::to_string(k) + "]");
           q[k] = point[static_cast<std::size_t>(k)];
         }
-        const auto r = casteljau::project(p, q, farthest);
-        AnyProjection out{r.t, coords(r.point), r.distance, r.all_t, {}};
-        for (const auto& iv : r.intervals) out.intervals.push_back({iv.lo, iv.hi});
-        return out;
+        return AnyProjection(casteljau::project(p, q, farthest));
       },
       pieces(c));
 }
@@ -65,13 +55,7 @@ AnyBox bounds(const AnyCurve& c, std::optional<double> from, std::optional<doubl
   return std::visit(
       [&]<class P>(const P& p) {
         const auto dom = p.domain();
-        const auto b = casteljau::bounds(p, from.value_or(dom.lo), to.value_or(dom.hi));
-        AnyBox out;
-        for (int k = 0; k < P::dimension; ++k) {
-          out.lo.push_back(b.lo[k]);
-          out.hi.push_back(b.hi[k]);
-        }
-        return out;
+        return AnyBox(casteljau::bounds(p, from.value_or(dom.lo), to.value_or(dom.hi)));
       },
       pieces(c));
 }
@@ -118,11 +102,11 @@ std::vector<double> curvature(const AnyCurve& c, std::span<const double> t) {
       pieces(c));
 }
 
-std::vector<AnyFrame> frames(const AnyCurve& c, std::span<const double> t) {
+AnyFrames frames(const AnyCurve& c, std::span<const double> t) {
   return std::visit(
-      [&]<class P>(const P& p) {
+      [&]<class P>(const P& p) -> AnyFrames {
         constexpr int D = P::dimension;
-        std::vector<AnyFrame> out;
+        Frames<double, D> out;
         for (std::size_t j = 0; j < t.size(); ++j) {
           const std::string where = "t[" + std::to_string(j) + "]";
           std::optional<Frame<double, D>> f;
@@ -139,18 +123,18 @@ std::vector<AnyFrame> frames(const AnyCurve& c, std::span<const double> t) {
             throw InvalidArgument(where, "the principal normal is undefined at t = " + format_number(t[j]) +
                                              ": the curvature is zero (a straight stretch or a point of zero curvature)");
           }
-          AnyFrame a;
-          a.tangent = coords(f->tangent);
-          if (f->normal) a.normal = coords(*f->normal);
-          if (f->binormal) a.binormal = coords(*f->binormal);
-          a.curvature = f->curvature;
-          a.torsion = f->torsion;
-          const auto finite = [](const std::vector<double>& v) { return std::all_of(v.begin(), v.end(), [](double x) { return std::isfinite(x); }); };
-          if (!finite(a.tangent) || !finite(a.normal) || !finite(a.binormal) || !std::isfinite(a.curvature) ||
-              (a.torsion && !std::isfinite(*a.torsion))) {
+          const auto finite = [](const std::optional<Vector<double, D>>& v) {
+            if (!v) return true;
+            for (int k = 0; k < D; ++k) {
+              if (!std::isfinite((*v)[k])) return false;
+            }
+            return true;
+          };
+          if (!finite(f->tangent) || !finite(f->normal) || !finite(f->binormal) || !std::isfinite(f->curvature) ||
+              (f->torsion && !std::isfinite(*f->torsion))) {
             throw InvalidArgument(where, "the frame at t = " + format_number(t[j]) + " is not representable");
           }
-          out.push_back(std::move(a));
+          out.push_back(std::move(*f));
         }
         return out;
       },
@@ -172,10 +156,7 @@ double area(const AnyCurve& c) {
 AnyFeatures features(const AnyCurve& c) {
   return std::visit(
       [&](const auto& p) {
-        const auto f = casteljau::features(p);
-        AnyFeatures out{f.inflections, f.cusps, {}};
-        for (const auto& e : f.extrema) out.extrema.push_back(e);
-        return out;
+        return AnyFeatures(casteljau::features(p));
       },
       pieces(c));
 }
@@ -185,8 +166,7 @@ AnyDistance distance(const AnyCurve& a, const AnyCurve& b) {
   return std::visit(
       [&]<class PA, class PB>(const PA& x, const PB& y) -> AnyDistance {
         if constexpr (PA::dimension == PB::dimension) {
-          const auto r = casteljau::distance(x, y);
-          return {r.distance, r.t, {coords(r.points[0]), coords(r.points[1])}};
+          return AnyDistance(casteljau::distance(x, y));
         } else {
           throw InvalidArgument("curves[1]", "must have the dimension of curves[0] (" + std::to_string(PA::dimension) + "), got " +
                                                  std::to_string(PB::dimension));

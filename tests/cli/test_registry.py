@@ -183,6 +183,72 @@ class LimitsTest(CliTest):
         self.assertEqual(len(r["curve"]["points"]), 1001)
 
 
+# One valid curve object of every type of docs/cli.md's "Curve objects" table.
+SAMPLES = {
+    "bezier": bezier([[0, 0], [1, 2], [2, 0]]),
+    "rational_bezier": {"type": "rational_bezier", "points": [[0, 0], [1, 2], [2, 0]], "weights": [1, 2, 1]},
+    "bspline": {"type": "bspline", "degree": 2, "knots": [0, 0, 0, 1, 2, 2, 2], "points": [[0, 0], [1, 2], [2, 0], [3, 1]]},
+    "nurbs": {"type": "nurbs", "degree": 2, "knots": [0, 0, 0, 1, 2, 2, 2], "points": [[0, 0], [1, 2], [2, 0], [3, 1]],
+              "weights": [1, 2, 1, 1]},
+    "polyline": polyline([[0, 0], [1, 1], [2, 0]]),
+    "cubic_spline": {"type": "cubic_spline", "params": [0, 1, 2], "points": [[0, 0], [1, 1], [2, 0]]},
+    "hermite": {"type": "hermite", "params": [0, 1, 2], "points": [[0, 0], [1, 1], [2, 0]], "tangent_rule": "catmull_rom"},
+    "path": {"type": "path", "segments": [bezier([[0, 0], [1, 2], [2, 0]])]},
+    "lagrange": {"type": "lagrange", "params": [0, 1, 2], "points": [[0, 0], [1, 1], [2, 0]]},
+    "catmull_rom": {"type": "catmull_rom", "points": [[0, 0], [1, 1], [2, 0], [3, 1]]},
+}
+
+
+class CapabilityTest(CliTest):
+    """A command that needs a member some curve types lack (split, elevate, the knot
+    operations) names in its refusal exactly the types it works on: found here by running
+    it on every type, not from a list."""
+
+    def capability(self, command, extra):
+        works, refused = set(), {}
+        for name, curve in SAMPLES.items():
+            rc, out, err = run(command, dict({"curve": curve}, **extra))
+            if err.startswith("error: curve.type: "):
+                refused[name] = err
+            else:
+                works.add(name)  # answered, or refused for another reason (a parameter)
+        self.assertTrue(works and refused, command)
+        for name, err in refused.items():
+            prefix = f"error: curve.type: {command} needs a "
+            self.assertTrue(err.startswith(prefix), err)
+            listed = err[len(prefix):err.index(" curve, got a ")]
+            *head, last = listed.split(" or ")
+            names = (head[0].split(", ") if head else []) + [last]
+            self.assertEqual(set(names), works, err)
+            self.assertTrue(err.rstrip().split(" (")[0].endswith(f"got a {name}"), err)
+        return works
+
+    def test_split(self):
+        self.assertEqual(self.capability("split", {"t": 1}), {"bezier", "rational_bezier", "bspline", "nurbs"})
+
+    def test_elevate(self):
+        self.capability("elevate", {"times": 1})
+
+    def test_knot_operations(self):
+        self.assertEqual(self.capability("insert_knot", {"knot": 0.5}), {"bspline", "nurbs"})
+        self.assertEqual(self.capability("remove_knot", {"knot": 1}), {"bspline", "nurbs"})
+
+
+class MessageTest(CliTest):
+    def test_one_time_is_singular(self):
+        # Degree 1: an interior knot at most once.
+        c = {"type": "bspline", "degree": 1, "knots": [0, 0, 1, 1, 2, 2], "points": [[0], [1], [2], [3]]}
+        err = self.bad("eval", {"curve": c, "t": [0]}, "curve.knots[3]", contains="at most once for degree 1")
+        self.assertNotIn("1 times", err)
+
+    def test_help_names_every_curve_type(self):
+        rc, out, err = run(None, args=["--help"])
+        self.assertEqual(rc, 0)
+        first = out.splitlines()[0]
+        for name in SAMPLES:
+            self.assertIn(name, first)
+
+
 if __name__ == "__main__":
     test_cli.BINARY = os.path.abspath(sys.argv.pop(1))
     unittest.main(verbosity=1)

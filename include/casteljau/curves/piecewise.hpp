@@ -230,10 +230,11 @@ const Pieces<T, D>& pieces(const Pieces<T, D>& c) {
   return c;
 }
 
-/// Appends the pieces of a curve whose domain is mapped affinely onto [lo, hi] of a
-/// composite curve (the same for a path segment and for a nested path).
-template <class T, int D>
-void append_pieces(const Pieces<T, D>& p, const Interval<T>& onto, std::vector<BezierPiece<T, D>>& segs, std::vector<T>& breaks) {
+/// Appends the segments of a composite curve (Pieces, Path) whose domain is mapped
+/// affinely onto [lo, hi] of another composite curve: the one splice of a segment's pieces
+/// into a path's pieces and of a nested path into a path.
+template <class Composite, class Seg, class T>
+void append_pieces(const Composite& p, const Interval<T>& onto, std::vector<Seg>& segs, std::vector<T>& breaks) {
   const Interval<T> from = p.domain();
   if (breaks.empty()) breaks.push_back(onto.lo);
   for (std::size_t j = 0; j < p.size(); ++j) {

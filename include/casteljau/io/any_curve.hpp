@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <span>
+#include <string>
 #include <string_view>
 #include <utility>
 #include <variant>
@@ -64,6 +65,37 @@ struct AnyCurveOf<CurveTypeList<C...>, std::integer_sequence<int, Ds...>> {
 /// that std::visit hands a generic lambda the concrete type.
 using AnyCurve = typename detail::AnyCurveOf<CurveTypes, std::make_integer_sequence<int, max_dimension>>::type;
 
+/// Calls f.template operator()<D>() for the run-time dimension d in 1..max_dimension (the
+/// one switch from a run-time dimension to a template argument). Throws
+/// InvalidArgument("", "dimension must be 1..4, got d") for any other d.
+template <class F, int D = 1>
+decltype(auto) dispatch_dimension(int d, F&& f) {
+  if constexpr (D < max_dimension) {
+    if (d != D) return dispatch_dimension<F, D + 1>(d, std::forward<F>(f));
+  } else if (d != D) {
+    throw InvalidArgument("", "dimension must be 1.." + std::to_string(max_dimension) + ", got " + std::to_string(d));
+  }
+  return f.template operator()<D>();
+}
+
+/// What only some curve types can do: the member a run-time operation calls.
+enum class Capability {
+  split,           ///< split(t) (SplittableCurve)
+  elevate,         ///< elevate(times)
+  knot_insertion,  ///< insert_knot(u, times)
+  knot_removal,    ///< remove_knot(u, times, tolerance)
+};
+
+/// The curve-JSON names of every registered type, in the order of CurveTypes.
+[[nodiscard]] std::span<const std::string_view> curve_type_names();
+
+/// The names of the registered types that have the capability, in registry order (from
+/// the types themselves: a type that gains the member is listed with no other change).
+[[nodiscard]] std::vector<std::string_view> types_with(Capability c);
+
+/// "a bezier, rational_bezier, bspline or nurbs curve": types_with(c) for messages.
+[[nodiscard]] std::string types_phrase(Capability c);
+
 /// The dimension d of the curve.
 [[nodiscard]] int dimension(const AnyCurve& c);
 /// The curve's type name in curve JSON ("bezier", "polyline", ...).
@@ -87,11 +119,13 @@ struct PointList {
   }
 };
 
+/// S<double, D> for every D in 1..max_dimension, one variant: a result of the library at
+/// the curve's dimension (written by the to_json of io/results.hpp).
+template <template <class, int> class S>
+using PerDimension = typename detail::AnyCurveOf<CurveTypeList<S>, std::make_integer_sequence<int, max_dimension>>::type;
+
 /// An axis-aligned box in the curve's dimension.
-struct AnyBox {
-  std::vector<double> lo;
-  std::vector<double> hi;
-};
+using AnyBox = PerDimension<Box>;
 
 /// The curve's points at the parameters t (any finite t; outside the domain the first or
 /// last piece is extrapolated). Errors name "t[j]": a non-finite parameter, a point that

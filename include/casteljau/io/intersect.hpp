@@ -2,9 +2,7 @@
 // compiled once in src/io/intersect.cpp.
 #pragma once
 
-#include <array>
-#include <vector>
-
+#include "casteljau/algo/intersect.hpp"
 #include "casteljau/io/any_curve.hpp"
 
 namespace casteljau::io {
@@ -15,30 +13,15 @@ namespace casteljau::io {
 /// rejection (0.73 s). Arcs, subdivision and refinement all grow with the degree.
 inline constexpr int max_intersect_degree = 500;
 
-/// An isolated common point a(ta) = b(tb) (see casteljau::intersect).
-struct AnyIntersection {
-  double ta = 0;
-  double tb = 0;
-  std::array<double, 2> point{};
-  bool tangent = false;
-};
-
-/// a over [a0, a1] (a0 < a1) traces b from b0 to b1.
-struct AnyOverlap {
-  double a0 = 0, a1 = 0, b0 = 0, b1 = 0;
-};
-
-struct AnyIntersections {
-  std::vector<AnyIntersection> points;
-  std::vector<AnyOverlap> overlaps;
-};
+/// The result is the library's Intersections<double> (algo/intersect.hpp; its JSON:
+/// io/results.hpp).
 
 /// The intersections of two 2-D curves (algo/intersect.hpp). Throws
 /// InvalidArgument("curves[i]", ...) for a curve that is not 2-D or has a piece above
 /// max_intersect_degree, NumericalError when the subdivision limit is reached.
-[[nodiscard]] AnyIntersections intersect(const AnyCurve& a, const AnyCurve& b);
+[[nodiscard]] Intersections<double> intersect(const AnyCurve& a, const AnyCurve& b);
 
 /// The self-intersections of one 2-D curve (ta < tb).
-[[nodiscard]] AnyIntersections self_intersect(const AnyCurve& a);
+[[nodiscard]] Intersections<double> self_intersect(const AnyCurve& a);
 
 }  // namespace casteljau::io

@@ -4,6 +4,7 @@
 
 #include <initializer_list>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -78,6 +79,7 @@ class Fields {
   /// Throws InvalidArgument(field, "unknown field (<owner> has: a, b, c)") for the first
   /// field not in `allowed`.
   void allow_only(std::initializer_list<std::string_view> allowed, std::string_view owner) const;
+  void allow_only(std::span<const std::string_view> allowed, std::string_view owner) const;
 
  private:
   const Json& j_;

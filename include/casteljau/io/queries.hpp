@@ -5,23 +5,28 @@
 // dimension, not per curve type).
 #pragma once
 
-#include <array>
 #include <optional>
 #include <span>
 #include <vector>
 
+#include "casteljau/algo/distance.hpp"
+#include "casteljau/algo/features.hpp"
+#include "casteljau/algo/frame.hpp"
+#include "casteljau/algo/project.hpp"
 #include "casteljau/io/any_curve.hpp"
 
 namespace casteljau::io {
 
-/// See casteljau::project (algo/project.hpp).
-struct AnyProjection {
-  double t = 0;
-  std::vector<double> point;
-  double distance = 0;
-  std::vector<double> all_t;                       // every tied isolated parameter, when more than one
-  std::vector<std::array<double, 2>> intervals;  // parameter intervals of constant extreme distance
-};
+/// One frame per parameter.
+template <class T, int D>
+using Frames = std::vector<Frame<T, D>>;
+
+// The results are the library's structs at the curve's dimension (their JSON:
+// io/results.hpp), and AnyBox (io/any_curve.hpp).
+using AnyProjection = PerDimension<Projection>;
+using AnyFeatures = PerDimension<Features>;
+using AnyDistance = PerDimension<CurveDistance>;
+using AnyFrames = PerDimension<Frames>;
 
 /// The nearest (farthest with `farthest`) point of the curve to `point` over its whole
 /// domain, global. Throws InvalidArgument("point", ...) when the point's dimension is not
@@ -47,42 +52,21 @@ struct AnyProjection {
 /// derivative is not representable.
 [[nodiscard]] std::vector<double> curvature(const AnyCurve& c, std::span<const double> t);
 
-/// The Frenet frame at one parameter (algo/frame.hpp): unit tangent; the normal (2-D: the
-/// left normal; 3-D and 4-D: the principal normal); the binormal and torsion (3-D only);
-/// the curvature (signed in 2-D). Vectors are empty where the dimension has none.
-struct AnyFrame {
-  std::vector<double> tangent;
-  std::vector<double> normal;
-  std::vector<double> binormal;
-  double curvature = 0;
-  std::optional<double> torsion;
-};
-
-/// The frame at each parameter (any finite t; at a break the right-hand piece, at the
+/// The Frenet frame (algo/frame.hpp) at each parameter (any finite t; at a break the right-hand piece, at the
 /// domain's end the last). Throws InvalidArgument("t[j]", ...) where it is undefined: the
 /// velocity vanishes (a cusp or a stop), or in 3-D and 4-D the curvature does (no
 /// principal normal: a straight stretch, a point of zero curvature).
-[[nodiscard]] std::vector<AnyFrame> frames(const AnyCurve& c, std::span<const double> t);
+[[nodiscard]] AnyFrames frames(const AnyCurve& c, std::span<const double> t);
 
 /// The signed area of a closed plane curve (algo/area.hpp). Throws
 /// InvalidArgument("curve", ...) for a curve that is not 2-D or not closed.
 [[nodiscard]] double area(const AnyCurve& c);
 
 /// Inflections and cusps (2-D; empty otherwise) and per-axis extrema (algo/features.hpp).
-struct AnyFeatures {
-  std::vector<double> inflections;
-  std::vector<double> cusps;
-  std::vector<std::vector<double>> extrema;  // one list per axis
-};
 [[nodiscard]] AnyFeatures features(const AnyCurve& c);
 
 /// The minimum distance between two curves of one dimension (algo/distance.hpp).
 /// Throws InvalidArgument("curves[1]", ...) when the dimensions differ.
-struct AnyDistance {
-  double distance = 0;
-  std::array<double, 2> t{};
-  std::array<std::vector<double>, 2> points;
-};
 [[nodiscard]] AnyDistance distance(const AnyCurve& a, const AnyCurve& b);
 
 }  // namespace casteljau::io

@@ -1,0 +1,24 @@
+// The command families of the registry (io/commands.hpp), one source file each
+// (internal: not installed). Results are written by the to_json of io/results.hpp.
+#pragma once
+
+#include <span>
+#include <string>
+
+#include "casteljau/io/commands.hpp"
+
+namespace casteljau::io::detail {
+
+/// src/io/commands_curve.cpp: eval, split, elevate, to_bezier, flatten, insert_knot,
+/// remove_knot, render.
+std::span<const Command> curve_commands();
+/// src/io/commands_query.cpp: bounds, length, param_at_length, project, features,
+/// distance, area, intersect.
+std::span<const Command> query_commands();
+/// src/io/commands_points.cpp: subdivide, fit.
+std::span<const Command> point_commands();
+
+/// A finite number as JSON writes it (shortest round-trip form), for messages.
+inline std::string number_text(double v) { return Json(v).dump(); }
+
+}  // namespace casteljau::io::detail
