@@ -94,18 +94,16 @@ std::vector<double> param_at_length(const AnyCurve& c, std::span<const double> l
 }
 
 std::vector<double> curvature(const AnyCurve& c, std::span<const double> t) {
-  const PointList d1 = derivatives(c, t, 1), d2 = derivatives(c, t, 2);
   return std::visit(
-      [&]<class Curve>(const Curve&) {
-        constexpr int D = Curve::dimension;
+      [&](const auto& p) {
         std::vector<double> out;
         for (std::size_t j = 0; j < t.size(); ++j) {
-          Vector<double, D> v1, v2;
-          for (int k = 0; k < D; ++k) {
-            v1[k] = d1[j][static_cast<std::size_t>(k)];
-            v2[k] = d2[j][static_cast<std::size_t>(k)];
+          std::optional<double> kappa;
+          try {
+            kappa = casteljau::curvature(p, t[j]);  // scale-free: in each piece's own parameter
+          } catch (const InvalidArgument& e) {
+            throw InvalidArgument("t[" + std::to_string(j) + "]", e.problem());
           }
-          const auto kappa = curvature_of(v1, v2);
           if (!kappa || !std::isfinite(*kappa)) {
             throw InvalidArgument("t[" + std::to_string(j) + "]",
                                   "curvature is undefined at t = " + format_number(t[j]) +
