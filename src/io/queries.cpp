@@ -22,6 +22,19 @@ namespace {
 
 using casteljau::detail::format_number;
 
+/// Refuses a query whose work (see casteljau::detail::query_work) is past the limit that
+/// keeps a request within seconds, naming the request's field and the figures.
+template <class P>
+void check_work(const P& p, const std::string& field) {
+  const double work = casteljau::detail::query_work(p);
+  if (work > casteljau::detail::max_query_work) {
+    throw InvalidArgument(field, "the query would take about " + std::to_string(static_cast<long long>(work)) + " units of work (" +
+                                     std::to_string(p.size()) + " Bézier pieces, (degree + 1)^2 summed over them), more than the limit of " +
+                                     std::to_string(static_cast<long long>(casteljau::detail::max_query_work)) +
+                                     ": use fewer pieces or a lower degree");
+  }
+}
+
 template <class V>
 std::vector<double> coords(const V& v) {
   std::vector<double> out;
@@ -44,6 +57,7 @@ AnyProjection project(const AnyCurve& c, std::span<const double> point, bool far
           require_finite(point[static_cast<std::size_t>(k)], "point[" + std::to_string(k) + "]");
           q[k] = point[static_cast<std::size_t>(k)];
         }
+        check_work(p, "curve");
         const auto r = casteljau::project(p, q, farthest);
         AnyProjection out{r.t, coords(r.point), r.distance, r.all_t, {}};
         for (const auto& iv : r.intervals) out.intervals.push_back({iv.lo, iv.hi});
@@ -55,6 +69,7 @@ AnyProjection project(const AnyCurve& c, std::span<const double> point, bool far
 double length(const AnyCurve& c, std::optional<double> from, std::optional<double> to) {
   return std::visit(
       [&](const auto& p) {
+        check_work(p, "curve");
         const auto dom = p.domain();
         return casteljau::arc_length(p, from.value_or(dom.lo), to.value_or(dom.hi));
       },
@@ -79,6 +94,7 @@ AnyBox bounds(const AnyCurve& c, std::optional<double> from, std::optional<doubl
 std::vector<double> param_at_length(const AnyCurve& c, std::span<const double> lengths) {
   return std::visit(
       [&]<class P>(const P& p) {
+        check_work(p, "curve");
         const ArcLengthTable<double, P::dimension> table(p);
         std::vector<double> out;
         for (std::size_t i = 0; i < lengths.size(); ++i) {
@@ -170,6 +186,7 @@ double area(const AnyCurve& c) {
 AnyFeatures features(const AnyCurve& c) {
   return std::visit(
       [&](const auto& p) {
+        check_work(p, "curve");
         const auto f = casteljau::features(p);
         AnyFeatures out{f.inflections, f.cusps, {}};
         for (const auto& e : f.extrema) out.extrema.push_back(e);
@@ -183,6 +200,8 @@ AnyDistance distance(const AnyCurve& a, const AnyCurve& b) {
   return std::visit(
       [&]<class PA, class PB>(const PA& x, const PB& y) -> AnyDistance {
         if constexpr (PA::dimension == PB::dimension) {
+          check_work(x, "curves[0]");
+          check_work(y, "curves[1]");
           const auto r = casteljau::distance(x, y);
           return {r.distance, r.t, {coords(r.points[0]), coords(r.points[1])}};
         } else {
