@@ -35,6 +35,29 @@ void check_work(const P& p, const std::string& field) {
   }
 }
 
+/// The same limit checked on the curve as given, before its Bézier pieces are made (for a
+/// B-spline of degree p on n control points that conversion alone costs O(n p^2) or more:
+/// a minute at n = 3000, p = 300): n (p + 1)^2, at least the pieces' work. Types without a
+/// single degree (paths, interpolating splines) are checked on their pieces.
+void check_curve_work(const AnyCurve& c, const std::string& field) {
+  const double work = std::visit(
+      [](const auto& x) -> double {
+        if constexpr (requires { x.degree(); x.points(); }) {
+          const double n = static_cast<double>(x.points().size()), d = static_cast<double>(x.degree()) + 1;
+          return n * d * d;
+        } else {
+          return 0;
+        }
+      },
+      c);
+  if (work > casteljau::detail::max_query_work) {
+    throw InvalidArgument(field, "the query would take about " + std::to_string(static_cast<long long>(work)) +
+                                     " units of work (control points x (degree + 1)^2), more than the limit of " +
+                                     std::to_string(static_cast<long long>(casteljau::detail::max_query_work)) +
+                                     ": use fewer control points or a lower degree");
+  }
+}
+
 template <class V>
 std::vector<double> coords(const V& v) {
   std::vector<double> out;
@@ -45,6 +68,7 @@ std::vector<double> coords(const V& v) {
 }  // namespace
 
 AnyProjection project(const AnyCurve& c, std::span<const double> point, bool farthest) {
+  check_curve_work(c, "curve");
   return std::visit(
       [&]<class P>(const P& p) {
         constexpr int D = P::dimension;
@@ -67,6 +91,7 @@ AnyProjection project(const AnyCurve& c, std::span<const double> point, bool far
 }
 
 double length(const AnyCurve& c, std::optional<double> from, std::optional<double> to) {
+  check_curve_work(c, "curve");
   return std::visit(
       [&](const auto& p) {
         check_work(p, "curve");
@@ -92,6 +117,7 @@ AnyBox bounds(const AnyCurve& c, std::optional<double> from, std::optional<doubl
 }
 
 std::vector<double> param_at_length(const AnyCurve& c, std::span<const double> lengths) {
+  check_curve_work(c, "curve");
   return std::visit(
       [&]<class P>(const P& p) {
         check_work(p, "curve");
@@ -184,6 +210,7 @@ double area(const AnyCurve& c) {
 }
 
 AnyFeatures features(const AnyCurve& c) {
+  check_curve_work(c, "curve");
   return std::visit(
       [&](const auto& p) {
         check_work(p, "curve");
@@ -196,6 +223,8 @@ AnyFeatures features(const AnyCurve& c) {
 }
 
 AnyDistance distance(const AnyCurve& a, const AnyCurve& b) {
+  check_curve_work(a, "curves[0]");
+  check_curve_work(b, "curves[1]");
   const AnyPieces pa = pieces(a), pb = pieces(b);
   return std::visit(
       [&]<class PA, class PB>(const PA& x, const PB& y) -> AnyDistance {

@@ -562,8 +562,8 @@ class ExtremeWeightsTest(CliTest):
 class WorkLimitTest(CliTest):
     def test_queries_past_the_work_limit_are_refused(self):
         # A B-spline of degree 300 on 3000 control points: 2700 pieces of degree 300, about
-        # 2.4e8 units of (degree + 1)^2 work (over 30 s per query before): refused at once,
-        # naming the curve and the figures.
+        # 2.7e8 units of (degree + 1)^2 work (over 30 s per query before, a minute for its
+        # Bézier pieces alone): refused at once, naming the curve and the figures.
         rng = random.Random(300)
         n, p = 3000, 300
         U = [0.0] * (p + 1) + [i / (n - p) for i in range(1, n - p)] + [1.0] * (p + 1)
@@ -571,6 +571,9 @@ class WorkLimitTest(CliTest):
         for cmd, extra in (("length", {}), ("features", {}), ("project", {"point": [0, 0]}), ("param_at_length", {"lengths": [0]})):
             self.bad(cmd, dict({"curve": bs}, **extra), "curve", contains="more than the limit of 10000000")
         self.bad("distance", {"curves": [bezier([[0, 0], [1, 1]]), bs]}, "curves[1]", contains="units of work")
+        # A path of Bézier segments of degree 300: checked on its pieces.
+        seg = bezier([[rng.uniform(-9, 9), rng.uniform(-9, 9)] for _ in range(301)])
+        self.bad("length", {"curve": {"type": "path", "segments": [seg] * 120}}, "curve", contains="Bézier pieces")
         # A cubic B-spline on 6000 control points (6000 pieces, 96,000 units) is answered.
         n, p = 6000, 3
         U = [0.0] * (p + 1) + [i / (n - p) for i in range(1, n - p)] + [1.0] * (p + 1)

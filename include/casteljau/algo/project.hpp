@@ -176,6 +176,7 @@ Projection<typename C::Scalar, C::dimension> project(const C& c, const Point<typ
           bool all_constant = true;
           for (std::size_t j = 0; j < parts.size(); ++j) {
             detail::projection_candidates<T, D>(parts[j].piece, q, ts, constant);
+            std::sort(ts.begin(), ts.end());  // in the curve's order: parameters mapped back may round together
             all_constant = all_constant && constant;
             for (T u : ts)
               cand.push_back({p.global_parameter(i, parts[j].map.t_of(u)), distance_at(rparts[j].piece, u), false, parts[j].piece(u)});
@@ -200,7 +201,9 @@ Projection<typename C::Scalar, C::dimension> project(const C& c, const Point<typ
     else
       r.intervals.push_back(iv);
   }
-  std::sort(cand.begin(), cand.end(), [](const Candidate& a, const Candidate& b) { return a.t < b.t; });
+  // Stable: candidates were made in the curve's order (pieces, parts, sorted parameters),
+  // which equal parameters (a part's rounded image) keep for the runs below.
+  std::stable_sort(cand.begin(), cand.end(), [](const Candidate& a, const Candidate& b) { return a.t < b.t; });
   const Interval<T> dom = p.domain();
   const T merge = T(1e-9) * dom.length();  // one minimiser seen from two pieces, or twice
   // Every stationary point of the distance is a candidate, so between consecutive
