@@ -37,14 +37,15 @@ void check_work(const P& p, const std::string& field) {
 
 /// The same limit checked on the curve as given, before its Bézier pieces are made (for a
 /// B-spline of degree p on n control points that conversion alone costs O(n p^2) or more:
-/// a minute at n = 3000, p = 300): n (p + 1)^2, at least the pieces' work. Types without a
-/// single degree (paths, interpolating splines) are checked on their pieces.
+/// a minute at n = 3000, p = 300): at most n - p pieces of degree p, (n - p) (p + 1)^2
+/// (a Bézier curve: one piece). Types without a single degree (paths, interpolating
+/// splines) are checked on their pieces.
 void check_curve_work(const AnyCurve& c, const std::string& field) {
   const double work = std::visit(
       [](const auto& x) -> double {
         if constexpr (requires { x.degree(); x.points(); }) {
           const double n = static_cast<double>(x.points().size()), d = static_cast<double>(x.degree()) + 1;
-          return n * d * d;
+          return std::max(1.0, n - d + 1) * d * d;
         } else {
           return 0;
         }
@@ -52,7 +53,7 @@ void check_curve_work(const AnyCurve& c, const std::string& field) {
       c);
   if (work > casteljau::detail::max_query_work) {
     throw InvalidArgument(field, "the query would take about " + std::to_string(static_cast<long long>(work)) +
-                                     " units of work (control points x (degree + 1)^2), more than the limit of " +
+                                     " units of work (pieces x (degree + 1)^2), more than the limit of " +
                                      std::to_string(static_cast<long long>(casteljau::detail::max_query_work)) +
                                      ": use fewer control points or a lower degree");
   }

@@ -562,7 +562,7 @@ class ExtremeWeightsTest(CliTest):
 class WorkLimitTest(CliTest):
     def test_queries_past_the_work_limit_are_refused(self):
         # A B-spline of degree 300 on 3000 control points: 2700 pieces of degree 300, about
-        # 2.7e8 units of (degree + 1)^2 work (over 30 s per query before, a minute for its
+        # 2.4e8 units of (degree + 1)^2 work (over 30 s per query before, a minute for its
         # Bézier pieces alone): refused at once, naming the curve and the figures.
         rng = random.Random(300)
         n, p = 3000, 300
