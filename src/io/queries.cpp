@@ -22,9 +22,47 @@ namespace {
 
 using casteljau::detail::format_number;
 
+/// Refuses a query whose work (see casteljau::detail::query_work) is past the limit that
+/// keeps a request within seconds, naming the request's field and the figures.
+template <class P>
+void check_work(const P& p, const std::string& field) {
+  const double work = casteljau::detail::query_work(p);
+  if (work > casteljau::detail::max_query_work) {
+    throw InvalidArgument(field, "the query would take about " + std::to_string(static_cast<long long>(work)) + " units of work (" +
+                                     std::to_string(p.size()) + " Bézier pieces, (degree + 1)^2 summed over them), more than the limit of " +
+                                     std::to_string(static_cast<long long>(casteljau::detail::max_query_work)) +
+                                     ": use fewer pieces or a lower degree");
+  }
+}
+
+/// The same limit checked on the curve as given, before its Bézier pieces are made (for a
+/// B-spline of degree p on n control points that conversion alone costs O(n p^2) or more:
+/// a minute at n = 3000, p = 300): at most n - p pieces of degree p, (n - p) (p + 1)^2
+/// (a Bézier curve: one piece). Types without a single degree (paths, interpolating
+/// splines) are checked on their pieces.
+void check_curve_work(const AnyCurve& c, const std::string& field) {
+  const double work = std::visit(
+      [](const auto& x) -> double {
+        if constexpr (requires { x.degree(); x.points(); }) {
+          const double n = static_cast<double>(x.points().size()), d = static_cast<double>(x.degree()) + 1;
+          return std::max(1.0, n - d + 1) * d * d;
+        } else {
+          return 0;
+        }
+      },
+      c);
+  if (work > casteljau::detail::max_query_work) {
+    throw InvalidArgument(field, "the query would take about " + std::to_string(static_cast<long long>(work)) +
+                                     " units of work (pieces x (degree + 1)^2), more than the limit of " +
+                                     std::to_string(static_cast<long long>(casteljau::detail::max_query_work)) +
+                                     ": use fewer control points or a lower degree");
+  }
+}
+
 }  // namespace
 
 AnyProjection project(const AnyCurve& c, std::span<const double> point, bool farthest) {
+  check_curve_work(c, "curve");
   return std::visit(
       [&]<class P>(const P& p) {
         constexpr int D = P::dimension;
@@ -37,14 +75,17 @@ AnyProjection project(const AnyCurve& c, std::span<const double> point, bool far
           require_finite(point[static_cast<std::size_t>(k)], "point[" + std::to_string(k) + "]");
           q[k] = point[static_cast<std::size_t>(k)];
         }
+        check_work(p, "curve");
         return AnyProjection(casteljau::project(p, q, farthest));
       },
       pieces(c));
 }
 
 double length(const AnyCurve& c, std::optional<double> from, std::optional<double> to) {
+  check_curve_work(c, "curve");
   return std::visit(
       [&](const auto& p) {
+        check_work(p, "curve");
         const auto dom = p.domain();
         return casteljau::arc_length(p, from.value_or(dom.lo), to.value_or(dom.hi));
       },
@@ -61,8 +102,10 @@ AnyBox bounds(const AnyCurve& c, std::optional<double> from, std::optional<doubl
 }
 
 std::vector<double> param_at_length(const AnyCurve& c, std::span<const double> lengths) {
+  check_curve_work(c, "curve");
   return std::visit(
       [&]<class P>(const P& p) {
+        check_work(p, "curve");
         const ArcLengthTable<double, P::dimension> table(p);
         std::vector<double> out;
         for (std::size_t i = 0; i < lengths.size(); ++i) {
@@ -78,18 +121,16 @@ std::vector<double> param_at_length(const AnyCurve& c, std::span<const double> l
 }
 
 std::vector<double> curvature(const AnyCurve& c, std::span<const double> t) {
-  const PointList d1 = derivatives(c, t, 1), d2 = derivatives(c, t, 2);
   return std::visit(
-      [&]<class Curve>(const Curve&) {
-        constexpr int D = Curve::dimension;
+      [&](const auto& p) {
         std::vector<double> out;
         for (std::size_t j = 0; j < t.size(); ++j) {
-          Vector<double, D> v1, v2;
-          for (int k = 0; k < D; ++k) {
-            v1[k] = d1[j][static_cast<std::size_t>(k)];
-            v2[k] = d2[j][static_cast<std::size_t>(k)];
+          std::optional<double> kappa;
+          try {
+            kappa = casteljau::curvature(p, t[j]);  // scale-free: in each piece's own parameter
+          } catch (const InvalidArgument& e) {
+            throw InvalidArgument("t[" + std::to_string(j) + "]", e.problem());
           }
-          const auto kappa = curvature_of(v1, v2);
           if (!kappa || !std::isfinite(*kappa)) {
             throw InvalidArgument("t[" + std::to_string(j) + "]",
                                   "curvature is undefined at t = " + format_number(t[j]) +
@@ -154,18 +195,24 @@ double area(const AnyCurve& c) {
 }
 
 AnyFeatures features(const AnyCurve& c) {
+  check_curve_work(c, "curve");
   return std::visit(
       [&](const auto& p) {
+        check_work(p, "curve");
         return AnyFeatures(casteljau::features(p));
       },
       pieces(c));
 }
 
 AnyDistance distance(const AnyCurve& a, const AnyCurve& b) {
+  check_curve_work(a, "curves[0]");
+  check_curve_work(b, "curves[1]");
   const AnyPieces pa = pieces(a), pb = pieces(b);
   return std::visit(
       [&]<class PA, class PB>(const PA& x, const PB& y) -> AnyDistance {
         if constexpr (PA::dimension == PB::dimension) {
+          check_work(x, "curves[0]");
+          check_work(y, "curves[1]");
           return AnyDistance(casteljau::distance(x, y));
         } else {
           throw InvalidArgument("curves[1]", "must have the dimension of curves[0] (" + std::to_string(PA::dimension) + "), got " +

@@ -12,6 +12,7 @@ Usage: test_intersect.py PATH_TO_CASTELJAU [unittest options]
 """
 import math
 import os
+from fractions import Fraction
 import random
 import sys
 import unittest
@@ -134,6 +135,49 @@ class TangentTest(CliTest):
         self.assertEqual(x["kind"], "tangent")
         self.assert_close(x["t"], [0.5, 0.5], 1e-15)
         self.assert_close(x["point"], [1, 0], 1e-15)
+
+    def test_high_degree_touches(self):
+        # Pieces of degree >= 4 go to the general engine, where a touch refined as a double
+        # root is located to sqrt(eps / curvature) only: it must still be one `tangent`
+        # point at the touch. The parabola (0,0), (1,2), (2,0) elevated exactly to degree 5
+        # (apex (1, 1) at t = 1/2) against y = 1 - 1e-12: within the near-miss distance,
+        # one tangent point at the apex (it was one crossing 1e-6 away).
+        P = [[Fraction(0), Fraction(0)], [Fraction(1), Fraction(2)], [Fraction(2), Fraction(0)]]
+        for n in range(2, 5):  # Forrest: Q_i = i/(n+1) P_(i-1) + (1 - i/(n+1)) P_i
+            P = [P[0]] + [[Fraction(i, n + 1) * P[i - 1][k] + (1 - Fraction(i, n + 1)) * P[i][k] for k in range(2)]
+                          for i in range(1, n + 1)] + [P[-1]]
+        quintic = bezier([[float(x) for x in p] for p in P])
+        r = self.ok("intersect", {"curves": [quintic, bezier([[-1, 1 - 1e-12], [3, 1 - 1e-12]])]})
+        self.assertEqual(len(r["intersections"]), 1, r)
+        x = r["intersections"][0]
+        self.assertEqual(x["kind"], "tangent", r)
+        # The apex to a few eps over the curvature (2 per unit parameter^2 here).
+        self.assertLess(abs(x["t"][0] - 0.5), 1e-7, r)
+        # Chebyshev polynomials T_n (n = 8, 10, 12) as the graph y = T_n(x), x in [-1, 1],
+        # a Bézier curve of degree n (power to Bernstein coefficients in exact rationals):
+        # T_n = cos(n acos x) reaches +-1 at x = cos(k pi / n), with zero slope inside
+        # (0 < k < n): a touch of the lines y = +-1 there; the ends x = +-1 are crossings.
+        for n in (8, 10, 12):
+            c = [Fraction(0)] * (n + 1)  # power coefficients in x of T_n (T_(k+1) = 2x T_k - T_(k-1))
+            t0, t1 = [Fraction(1)] + [Fraction(0)] * n, [Fraction(0), Fraction(1)] + [Fraction(0)] * (n - 1)
+            for _ in range(n - 1):
+                t0, t1 = t1, [2 * (t1[i - 1] if i else 0) - t0[i] for i in range(n + 1)]
+            c = t1
+            # x = 2u - 1: power coefficients in u, then Bernstein b_i = sum_j C(i,j)/C(n,j) a_j.
+            a = [Fraction(0)] * (n + 1)
+            for k, ck in enumerate(c):
+                for j in range(k + 1):
+                    a[j] += ck * math.comb(k, j) * Fraction(2) ** j * Fraction(-1) ** (k - j)
+            b = [sum(Fraction(math.comb(i, j), math.comb(n, j)) * a[j] for j in range(i + 1)) for i in range(n + 1)]
+            graph = bezier([[-1 + 2 * i / n, float(b[i])] for i in range(n + 1)])
+            for level in (1, -1):
+                r = self.ok("intersect", {"curves": [graph, bezier([[-2, level], [2, level]])]})
+                want = sorted(math.cos(k * math.pi / n) for k in range(1, n) if (-1) ** k == level)
+                inner = [x for x in r["intersections"] if 1e-6 < x["t"][0] < 1 - 1e-6]
+                self.assertEqual(len(inner), len(want), (n, level, r))
+                for x, xk in zip(inner, want):
+                    self.assertEqual(x["kind"], "tangent", (n, level, x))
+                    self.assertLess(abs(x["point"][0] - xk), 1e-7, (n, level, x))
 
     def test_rotated_touch_found_once(self):
         # The same touch rotated by several angles: rounded coordinates may make the curves
@@ -274,6 +318,32 @@ class SelfTest(CliTest):
         self.assert_close(r["intersections"][0]["t"], [0.5, 2.5], 1e-15)
         self.assert_close(r["intersections"][0]["point"], [1, 1], 1e-15)
 
+    def test_crossing_at_the_closing_point_listed_once(self):
+        # A figure eight through its own closing point: the polyline passes (0, 0) at t = 0,
+        # 3 and 6 (= 0): one self-intersection, (0, 3); (3, 6) is the same pair of passes.
+        eight = [[0, 0], [1, 1], [1, -1], [0, 0], [-1, 1], [-1, -1], [0, 0]]
+        r = self.ok("intersect", {"curves": [{"type": "polyline", "points": eight}]})
+        self.assertEqual(r, {"intersections": [{"t": [0.0, 3.0], "point": [0.0, 0.0], "kind": "crossing"}], "overlaps": []})
+        # The same figure as a path of line segments and as a closed Catmull-Rom / periodic
+        # curve through its points: one point at the closing point, whose other pass is
+        # where the curve comes back through (0, 0).
+        path = {"type": "path", "segments": [bezier([eight[i], eight[i + 1]]) for i in range(6)]}
+        r = self.ok("intersect", {"curves": [path]})
+        self.assertEqual(len(r["intersections"]), 1, r)
+        self.assert_close(r["intersections"][0]["t"], [0, 3], 1e-15)
+        # A smooth closed curve: the uniform cubic B-spline on the control points below
+        # (the last three repeat the first three: periodic), domain [3, 9]. At t = 3 and 6
+        # its point is (P_i + 4 P_i+1 + P_i+2) / 6 = (0, 0) with tangents (P_i+2 - P_i) / 2 =
+        # (2, 2) and (-2, 2): a crossing at the closing point, listed once as (3, 6) (it
+        # was listed again as (6, 9)).
+        ctrl = [[-2, -2], [0, 0], [2, 2], [2, -2], [0, 0], [-2, 2], [-2, -2], [0, 0], [2, 2]]
+        bs = {"type": "bspline", "degree": 3, "knots": list(range(13)), "points": ctrl}
+        r = self.ok("intersect", {"curves": [bs]})
+        self.assertEqual(len(r["intersections"]), 1, r)
+        self.assert_close(r["intersections"][0]["t"], [3, 6], 1e-15)
+        self.assert_close(r["intersections"][0]["point"], [0, 0], 1e-15)
+        self.assertEqual(r["intersections"][0]["kind"], "crossing")
+
 
 def random_cubic(rng):
     return [[rng.random(), rng.random()] for _ in range(4)]
@@ -412,6 +482,31 @@ class HardInputTest(CliTest):
         for h in r["intersections"]:
             self.assertLess(abs(h["point"][1] - 0.5), 1e-12, h)
             self.assertLess(dist(de_casteljau(C, h["t"][0]), h["point"]), 1e-12, h)
+
+
+    def test_identical_high_degree_curves_are_one_overlap(self):
+        # Identical curves coincide everywhere: one overlap over both domains, no point
+        # (every common point lies inside it). Each pair of identical monotone arcs is an
+        # overlap at once (it took seconds per pair at high degree).
+        rng = random.Random(61)
+        P = [[rng.random(), rng.random()] for _ in range(61)]
+        r = self.ok("intersect", {"curves": [bezier(P), bezier(P)]})
+        self.assertEqual(r, {"intersections": [], "overlaps": [{"a": [0.0, 1.0], "b": [0.0, 1.0]}]})
+
+    def test_answers_past_the_limit_are_refused(self):
+        # A random 3,000-point polyline meets itself about 2.5 million times (a 114 MB
+        # answer before): refused, naming the request's field and the limit.
+        rng = random.Random(3000)
+        poly = {"type": "polyline", "points": [[rng.random(), rng.random()] for _ in range(3000)]}
+        self.bad("intersect", {"curves": [poly]}, "curves", contains="more than 100000 points")
+        # Two random 2,000-point polylines (about a million crossings): refused too.
+        a = {"type": "polyline", "points": [[rng.random(), rng.random()] for _ in range(2000)]}
+        b = {"type": "polyline", "points": [[rng.random(), rng.random()] for _ in range(2000)]}
+        self.bad("intersect", {"curves": [a, b]}, "curves", contains="more than 100000 points")
+        # Below the limit the answer stands: 300 random points meet themselves thousands of times.
+        small = {"type": "polyline", "points": [[rng.random(), rng.random()] for _ in range(300)]}
+        r = self.ok("intersect", {"curves": [small]})
+        self.assertGreater(len(r["intersections"]), 1000)
 
 
 

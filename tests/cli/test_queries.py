@@ -335,6 +335,24 @@ class ProjectTest(CliTest):
                 u, d = Oracle.of(bezier(pts)).distance_extreme([0.6, 0.4])
                 self.assertLessEqual(abs(got["distance"] / s - float(d)), 1e-12, (pts, s))
 
+    def test_flat_minimum_is_one_answer(self):
+        # The centre of curvature at a vertex: (C - q) . C' has a triple root there (the
+        # distance is flat to fourth order). The symmetric cubic's vertex is t = 1/2 with
+        # C(1/2) = (3/2, 3/2), C' = (3, 0), C'' = (0, -12): radius 3/4, centre (3/2, 3/4).
+        got = self.ok("project", {"curve": bezier([[0, 0], [1, 2], [2, 2], [3, 0]]), "point": [1.5, 0.75]})
+        self.assertNotIn("all_t", got)
+        # Located as a simple root of a derivative: a few eps (it was 5e-9 off, three times).
+        self.assertAlmostEqual(got["t"], 0.5, delta=1e-12)
+        self.assertAlmostEqual(got["distance"], 0.75, delta=4e-16)
+        # The oracle agrees on the distance (dense samples refined in 30 digits).
+        u, d = Oracle.of(bezier([[0, 0], [1, 2], [2, 2], [3, 0]])).distance_extreme([1.5, 0.75])
+        self.assertLessEqual(abs(got["distance"] - float(d)), 1e-15)
+        # The same cubic as a B-spline on a domain of length 1e6: one answer at 5e5.
+        bs = {"type": "bspline", "degree": 3, "knots": [0, 0, 0, 0, 1e6, 1e6, 1e6, 1e6], "points": [[0, 0], [1, 2], [2, 2], [3, 0]]}
+        got = self.ok("project", {"curve": bs, "point": [1.5, 0.75]})
+        self.assertNotIn("all_t", got)
+        self.assertAlmostEqual(got["t"], 5e5, delta=1e-6)  # 1e-12 of the domain
+
     def test_bad_input(self):
         self.bad("project", {"curve": bezier([[0, 0], [1, 1]]), "point": [1]}, "point", contains="2 coordinates")
         self.bad("project", {"curve": bezier([[0, 0], [1, 1]])}, "point", contains="missing")
@@ -455,12 +473,112 @@ class CurvatureTest(CliTest):
                     if dim == 3:
                         self.assertGreaterEqual(k, 0)
 
+    def test_independent_of_the_domains_scale(self):
+        # Curvature is geometric: the cubic (0,0), (1,2), (2,2), (3,0) as a B-spline on
+        # [0, L] has -36 / 45^(3/2) at its start and -4/3 at its middle for every L (it was
+        # 0 at L = 1e200 and refused at L = 1e-160: derivatives under- and overflowing).
+        for L in (1e-300, 1e-200, 1e-160, 1.0, 1e160, 1e200, 1e300):
+            bs = {"type": "bspline", "degree": 3, "knots": [0] * 4 + [L] * 4, "points": [[0, 0], [1, 2], [2, 2], [3, 0]]}
+            got = self.ok("eval", {"curve": bs, "t": [0, L / 2, L], "curvature": True})["curvature"]
+            self.assert_close(got, [-36 / 45 ** 1.5, -4 / 3, -36 / 45 ** 1.5], 1e-14, L)
+            fr = self.ok("eval", {"curve": bs, "t": [L / 2], "frame": True})["frame"]
+            self.assert_close(fr["curvature"], [-4 / 3], 1e-14, L)
+            # A path of the cubic on breaks [0, L] likewise.
+            path = {"type": "path", "segments": [bezier([[0, 0], [1, 2], [2, 2], [3, 0]])], "breaks": [0, L]}
+            got = self.ok("eval", {"curve": path, "t": [L / 2], "curvature": True})["curvature"]
+            self.assert_close(got, [-4 / 3], 1e-14, L)
+
     def test_line_and_cusp(self):
         got = self.ok("eval", {"curve": bezier([[0], [1], [3]]), "t": [0.5], "curvature": True})["curvature"]
         self.assertEqual(got, [0.0])
         self.bad("eval", {"curve": bezier([[0, 0], [1, 1], [0, 1], [1, 0]]), "t": [0.2, 0.5], "curvature": True}, "t[1]",
                  contains="velocity is zero")
         self.bad("eval", {"curve": bezier([[0, 0], [1, 1]]), "t": [0.5], "curvature": "yes"}, "curvature")
+
+
+def hugging_quadratic(w, nurbs=False):
+    """The rational quadratic (1,0), (1,1), (0,1) with weights 1, w, 1 (as a NURBS of one piece)."""
+    c = {"type": "rational_bezier", "points": [[1, 0], [1, 1], [0, 1]], "weights": [1, w, 1]}
+    if nurbs:
+        c = {"type": "nurbs", "degree": 2, "knots": [0, 0, 0, 1, 1, 1], "points": c["points"], "weights": c["weights"]}
+    return c
+
+
+class ExtremeWeightsTest(CliTest):
+    """Weights 1, W, 1 with W up to 1e30: the curve hugs its control polygon and passes each
+    leg within about 1 / W of a parameter end. The references integrate and minimise in
+    45-digit mpmath (t within 1e-30 of 1 needs 31) with breakpoints spaced geometrically from 1e-3 / W to 1/2 at both ends
+    (so that the quadrature sees the legs; mpmath resolves t within 1e-30 of 1)."""
+
+    @staticmethod
+    def breakpoints(w):
+        out, k = [mpf(0)], mpf(1) / mpf(w) * mpf("1e-3")
+        while k < mpf("0.5"):
+            out.append(k)
+            k *= 4
+        mid = out[1:]
+        return out + [mpf("0.5")] + [1 - x for x in reversed(mid)] + [mpf(1)]
+
+    def test_length_project_param_at_length(self):
+        with mpmath.workdps(45):
+            for w in (1e8, 1e30):
+                g = BezierPiece([[mpf(1), mpf(0)], [mpf(1), mpf(1)], [mpf(0), mpf(1)]], [mpf(1), mpf(w), mpf(1)])
+                speed = lambda u: norm(g.df(u))
+                pts = self.breakpoints(w)
+                total = mpmath.quad(speed, pts)
+                # The nearest point to (1, 3/2): golden-section search on a grid over the
+                # breakpoints (the distance is unimodal: a convex curve seen from outside).
+                q = [mpf(1), mpf("1.5")]
+                dist = lambda u: norm([x - y for x, y in zip(g.f(u), q)])
+                grid = [a + (b - a) * i / 8 for a, b in zip(pts, pts[1:]) for i in range(8)] + [mpf(1)]
+                i = min(range(len(grid)), key=lambda i: dist(grid[i]))
+                lo, hi = grid[max(i - 1, 0)], grid[min(i + 1, len(grid) - 1)]
+                for _ in range(200):  # the bracket shrinks by (2/3)^200 = 1e-35
+                    m1, m2 = lo + (hi - lo) / 3, hi - (hi - lo) / 3
+                    if dist(m1) < dist(m2):
+                        hi = m2
+                    else:
+                        lo = m1
+                dmin = dist((lo + hi) / 2)
+                for nurbs in (False, True):
+                    c = hugging_quadratic(w, nurbs)
+                    got = self.ok("length", {"curve": c})["length"]
+                    self.assertLessEqual(abs(got - float(total)), 1e-12 * float(total), (w, nurbs))
+                    pr = self.ok("project", {"curve": c, "point": [1, 1.5]})
+                    self.assertLessEqual(abs(pr["distance"] - float(dmin)), 1e-12, (w, nurbs, pr))
+                    self.assertNotIn("all_t", pr)
+                    # The arc length up to each parameter returned is the one asked for, to
+                    # 1e-12 of the length plus what the double nearest the answer allows: the
+                    # speed there times one ulp of t (near t = 1 the second leg runs at a
+                    # speed of about W per unit of t, so that 1e-8 is the best at W = 1e8).
+                    ss = [0.5, 1.0, 1.5]
+                    ts = self.ok("param_at_length", {"curve": c, "lengths": ss})["t"]
+                    for s, t in zip(ss, ts):
+                        part = [x for x in pts if x < t] + [mpf(t)]
+                        slack = 1e-12 * float(total) + float(speed(mpf(t))) * math.ulp(t)
+                        self.assertLessEqual(abs(mpmath.quad(speed, part) - s), slack, (w, nurbs, s, t))
+
+
+class WorkLimitTest(CliTest):
+    def test_queries_past_the_work_limit_are_refused(self):
+        # A B-spline of degree 300 on 3000 control points: 2700 pieces of degree 300, about
+        # 2.4e8 units of (degree + 1)^2 work (over 30 s per query before, a minute for its
+        # Bézier pieces alone): refused at once, naming the curve and the figures.
+        rng = random.Random(300)
+        n, p = 3000, 300
+        U = [0.0] * (p + 1) + [i / (n - p) for i in range(1, n - p)] + [1.0] * (p + 1)
+        bs = {"type": "bspline", "degree": p, "knots": U, "points": [[rng.uniform(-9, 9), rng.uniform(-9, 9)] for _ in range(n)]}
+        for cmd, extra in (("length", {}), ("features", {}), ("project", {"point": [0, 0]}), ("param_at_length", {"lengths": [0]})):
+            self.bad(cmd, dict({"curve": bs}, **extra), "curve", contains="more than the limit of 10000000")
+        self.bad("distance", {"curves": [bezier([[0, 0], [1, 1]]), bs]}, "curves[1]", contains="units of work")
+        # A path of Bézier segments of degree 300: checked on its pieces.
+        seg = bezier([[rng.uniform(-9, 9), rng.uniform(-9, 9)] for _ in range(301)])
+        self.bad("length", {"curve": {"type": "path", "segments": [seg] * 120}}, "curve", contains="Bézier pieces")
+        # A cubic B-spline on 6000 control points (6000 pieces, 96,000 units) is answered.
+        n, p = 6000, 3
+        U = [0.0] * (p + 1) + [i / (n - p) for i in range(1, n - p)] + [1.0] * (p + 1)
+        cubic = {"type": "bspline", "degree": p, "knots": U, "points": [[rng.uniform(-9, 9), rng.uniform(-9, 9)] for _ in range(n)]}
+        self.assertGreater(self.ok("length", {"curve": cubic})["length"], 0)
 
 
 class AreaTest(CliTest):

@@ -192,6 +192,80 @@ TEST(Project, NearestFarthestTiesAndIntervals) {
   EXPECT_INVALID_ARGUMENT(project(parabola, P2(std::nan(""), 0)), "point[0]", "finite");
 }
 
+// A flat minimum is one answer at its true location. From the centre of curvature at a
+// vertex (an extremum of the curvature) the distance is flat to fourth order: (C - q) . C'
+// has a triple root there, which rounding splits into a cluster of sign changes. The
+// symmetric cubic (0,0), (1,2), (2,2), (3,0) has C(1/2) = (3/2, 3/2), C'(1/2) = (3, 0),
+// C''(1/2) = (0, -12): curvature -36 / 27, radius 3/4, centre (3/2, 3/4). y = x^2 (the
+// quadratic (-1,1), (0,-1), (1,1)) has radius 1/2 at its vertex: centre (0, 1/2).
+TEST(Project, FlatMinimumAtTheCentreOfCurvature) {
+  const auto r = project(B2{{0, 0}, {1, 2}, {2, 2}, {3, 0}}, P2(1.5, 0.75));
+  EXPECT_TRUE(r.all_t.empty());
+  // The triple root located as the simple root of the derivative's derivative: a few eps
+  // (the cluster it replaces spread over 1e-8).
+  EXPECT_NEAR(r.t, 0.5, 1e-12);
+  EXPECT_NEAR(r.distance, 0.75, 4 * eps);
+  const auto p = project(B2{{-1, 1}, {0, -1}, {1, 1}}, P2(0, 0.5));
+  EXPECT_TRUE(p.all_t.empty());
+  EXPECT_NEAR(p.t, 0.5, 1e-12);
+  EXPECT_NEAR(p.distance, 0.5, 4 * eps);
+  // The same seen through a B-spline on a huge domain and a path: still one answer.
+  const BSpline<double, 2> bs(3, {0, 0, 0, 0, 1e6, 1e6, 1e6, 1e6}, {{0, 0}, {1, 2}, {2, 2}, {3, 0}});
+  const auto b = project(bs, P2(1.5, 0.75));
+  EXPECT_TRUE(b.all_t.empty());
+  EXPECT_NEAR(b.t, 5e5, 1e-6);  // 1e-12 of the domain
+}
+
+// A rational quadratic (1,0), (1,1), (0,1) with weights 1, W, 1 hugs its control polygon:
+// it lies in the triangle (convex hull), is convex, and passes C(1/2) = P1 - (1, 1) / (2 (1 + W)).
+// So its length lies in [2 - 2 / W, 2] (between the two chords through C(1/2) and the
+// polygon), its distance from (1, 3/2) in [1/2, 1/2 + 1 / W] (y <= 1 on the curve), and by
+// the symmetry t -> 1 - t, (x, y) -> (y, x), the arc length to C(1/2) is half the length.
+// For W >= 1e16 these bounds pin the answers to rounding; in double the curve passes its
+// second leg within 1e-30 of t = 1 (for W = 1e30), where t has no digits left.
+TEST(ExtremeWeights, RationalQuadraticHuggingItsPolygon) {
+  for (const double w : {1e16, 1e30}) {
+    SCOPED_TRACE(w);
+    const R2 c({{1, 0}, {1, 1}, {0, 1}}, {1, w, 1});
+    // 1e-12 relative is the contract; the bounds above are tighter than that.
+    EXPECT_NEAR(arc_length(c), 2.0, 2e-12);
+    EXPECT_NEAR(arc_length(c, 0.0, 0.5), 1.0, 1e-12);
+    EXPECT_NEAR(arc_length(c, 0.5, 1.0), 1.0, 1e-12);
+    const auto r = project(c, P2(1, 1.5));
+    EXPECT_NEAR(r.distance, 0.5, 1e-12);
+    EXPECT_TRUE(r.all_t.empty());
+    // The point reported is on the curve near the corner, at the distance reported.
+    EXPECT_NEAR(norm(r.point - P2(1, 1.5)), r.distance, 4 * eps);
+    // Half the length is reached at the corner (within 1e-12 of the length along the legs).
+    const double t = ArcLengthTable<double, 2>(c).parameter_at(1.0);
+    EXPECT_LE(norm(c(t) - P2(1, 1)), 4e-12) << t;
+  }
+  // A NURBS of the same data (one piece) gives the same answers.
+  const Nurbs<double, 2> n(2, {0, 0, 0, 1, 1, 1}, {{1, 0}, {1, 1}, {0, 1}}, {1, 1e30, 1});
+  EXPECT_NEAR(arc_length(n), 2.0, 2e-12);
+  EXPECT_NEAR(project(n, P2(1, 1.5)).distance, 0.5, 1e-12);
+}
+
+// Curvature and the frame do not depend on the scale of the parameter: the cubic above as a
+// B-spline on [0, L] has curvature -36 / 45^(3/2) at its start (C' = 3 (1, 2), C'' = (0, -12)
+// per unit parameter) and -4/3 at its middle, for any L.
+TEST(Curvature, IndependentOfTheDomainsScale) {
+  for (const double len : {1e-300, 1e-200, 1e-160, 1.0, 1e160, 1e200, 1e300}) {
+    SCOPED_TRACE(len);
+    const BSpline<double, 2> bs(3, {0, 0, 0, 0, len, len, len, len}, {{0, 0}, {1, 2}, {2, 2}, {3, 0}});
+    const auto p = pieces(bs);
+    const auto k0 = curvature(p, 0.0), km = curvature(p, len / 2);
+    ASSERT_TRUE(k0 && km);
+    // A few roundings of the derivatives and of one division chain.
+    EXPECT_NEAR(*k0, -36 / std::pow(45.0, 1.5), 8 * eps);
+    EXPECT_NEAR(*km, -4.0 / 3, 8 * eps);
+    const auto f = frame(bs, len / 2);
+    ASSERT_TRUE(f.has_value());
+    EXPECT_NEAR(f->curvature, -4.0 / 3, 8 * eps);
+    EXPECT_NEAR(f->tangent[0], 1.0, 4 * eps);
+  }
+}
+
 // The shared degenerate fixtures through every query: finite answers, the closest point
 // no farther than any of 2001 samples, the length between the chord and the control
 // polygon's length.

@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "casteljau/curves/concepts.hpp"
+#include "casteljau/curves/piecewise.hpp"
 
 namespace casteljau {
 
@@ -35,11 +36,27 @@ std::optional<T> curvature_of(const Vector<T, D>& d1, const Vector<T, D>& d2) {
 }
 
 /// Curvature at t of a differentiable curve (see curvature_of): std::nullopt where the
-/// speed is zero.
+/// speed is zero. The derivatives are taken in the curve's own parameter: for a domain
+/// far from unit length use the overload on Pieces, which does not depend on its scale.
 template <DifferentiableCurve C>
   requires(C::dimension >= 2)
 std::optional<typename C::Scalar> curvature(const C& c, typename C::Scalar t) {
   return curvature_of(c.derivative_at(t, 1), c.derivative_at(t, 2));
+}
+
+/// Curvature at u of a curve given by its exact Bézier pieces (at an interior break the
+/// right-hand piece answers, at the domain's end the last, as derivative_at). Curvature
+/// is a geometric quantity, unchanged by an increasing affine change of parameter, so it
+/// is computed from the derivatives of the piece in its own parameter on [0, 1], not in
+/// the curve's: a domain of length 1e200 (or 1e-200) scales the k-th derivative by its
+/// k-th power, which underflows (overflows) although the curvature is representable.
+/// Throws InvalidArgument("t", ...) for a non-finite u.
+template <class T, int D>
+std::optional<T> curvature(const Pieces<T, D>& p, T u) {
+  require_finite(u, "t");
+  const std::size_t i = p.segment_index(u);
+  const auto t = p.local_parameter(i, u);
+  return std::visit([&](const auto& s) { return curvature_of(s.derivative_at(t, 1), s.derivative_at(t, 2)); }, p.segments()[i]);
 }
 
 }  // namespace casteljau

@@ -123,10 +123,17 @@ std::optional<Frame<typename C::Scalar, C::dimension>> frame(const C& c, typenam
   require_finite(u, "t");
   const auto& p = pieces(c);  // a reference when c is Pieces; else the local owns them
   const std::size_t i = p.segment_index(u);
-  const T scale = p.own_domain(i).length() / p.segment_domain(i).length();
-  const auto noise = std::visit([](const auto& piece) { return detail::derivative_noise<T, D>(piece); }, p.segments()[i]);
-  return frame_of<T, D>(p.derivative_at(u, 1), p.derivative_at(u, 2), p.derivative_at(u, 3), noise[0] * scale,
-                        noise[1] * scale * scale);
+  const T t = p.local_parameter(i, u);
+  // The frame, curvature and torsion are unchanged by an increasing affine change of
+  // parameter: the piece's own derivatives (in t on [0, 1]) give them without the chain
+  // rule's powers of the break length, which under- or overflow for a domain of length
+  // 1e200 or 1e-200.
+  return std::visit(
+      [&](const auto& piece) {
+        const auto noise = detail::derivative_noise<T, D>(piece);
+        return frame_of<T, D>(piece.derivative_at(t, 1), piece.derivative_at(t, 2), piece.derivative_at(t, 3), noise[0], noise[1]);
+      },
+      p.segments()[i]);
 }
 
 }  // namespace casteljau

@@ -188,6 +188,17 @@ bool fat_line_apart(const CA& a, const CB& b, typename CA::Scalar slack) {
 /// arcs takes a few hundred. Hitting it means the curves run within the tolerance of each
 /// other over a long stretch without coinciding: reported, not silently truncated.
 inline constexpr std::size_t max_nodes = 2'000'000;
+/// The most common points an answer may list: a random 3,000-point polyline meets itself
+/// about 2.5 million times (a 114 MB answer). Past it the request is refused rather than
+/// answered in hundreds of megabytes; the raw points found on the way (before merging,
+/// about one per point for lines, a few for curves) are capped at twice this.
+inline constexpr std::size_t max_points = 100'000;
+
+/// The refusal past max_points.
+[[noreturn]] inline void too_many_points(std::size_t found) {
+  throw InvalidArgument("curves", "the curves meet in more than " + std::to_string(max_points) + " points (" + std::to_string(found) +
+                                      " found before stopping): the answer is refused as too large");
+}
 /// Depth at which a part counts as flat whatever its shape (2^-50 of the piece: below the
 /// resolution of the parameters of double).
 inline constexpr int max_depth = 50;
@@ -543,8 +554,14 @@ bool intersect_arcs(const Prepared<T>& A, std::size_t ia, const Prepared<T>& B, 
   for (const auto& [s0, t0, edge] : ctx.seeds) {
     Refined<T> r = refine(a, ra, b, rb, s0, t0);
     if (!(r.distance <= ctx.tol)) continue;
-    if (std::abs(cross(direction(a, r.s), direction(b, r.t))) <= T(1e-6)) {
-      clean = false;
+    // A touch refined as a double root is located to about sqrt(eps / curvature) only,
+    // where the tangents of a curve of high curvature (a Chebyshev polynomial of degree
+    // 12 touching y = 1: curvature about 1e4 per unit parameter) already differ by more
+    // than 1e-6: the polish (parallel tangents, a common point within 1e-5 in the
+    // parameters) is tried up to 1e-4, and where it finds the touch the point is there.
+    const T angle = std::abs(cross(direction(a, r.s), direction(b, r.t)));
+    if (angle <= T(1e-6)) clean = false;
+    if (angle <= T(1e-4)) {
       if (auto p = polish_touch(a, ra, b, rb, r, ctx.tol)) r = *p;
     }
     bool dup = false;
@@ -783,6 +800,16 @@ Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
       const Arc<T>& ra = A.arcs[i];
       const Arc<T>& rb = PB.arcs[j];
       if (!boxes_meet(A.arc_boxes[i], PB.arc_boxes[j], ctx.slack)) continue;
+      // The same arc on both sides (identical curves, or a curve that repeats a piece):
+      // an overlap over the whole arc, without subdividing two coincident arcs down to
+      // the near-miss distance all along (20 s for a degree-500 curve and its copy).
+      if (A.arc_parts[i] == PB.arc_parts[j]) {
+        overlaps.push_back(RawOverlap{{{ca.global_parameter(ra.piece, ra.lo), ca.global_parameter(ra.piece, ra.hi)},
+                                       cb->global_parameter(rb.piece, rb.lo), cb->global_parameter(rb.piece, rb.hi)},
+                                      {},
+                                      {}});
+        continue;
+      }
       // The overlap test (a few root solves) only where the arcs may overlap: a tangent
       // point found, or the subdivision running long.
       // The first pass stops at the first band along which the arcs stay within tol (an
@@ -810,6 +837,7 @@ Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
         if (stopped || ctx.exhausted) found = arc_points(i, j);
       }
       hits.insert(hits.end(), found.begin(), found.end());
+      if (hits.size() > 2 * max_points) too_many_points(hits.size());
     }
   }
 
@@ -1059,15 +1087,66 @@ Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
   }
 
   Intersections<T> out;
-  for (const auto& h : kept) {
-    const Vector<T, 2> da = direction(A.unit[h.pa], h.sa), db = direction(PB.unit[h.pb], h.sb);
+  for (auto h : kept) {
+    Vector<T, 2> da = direction(A.unit[h.pa], h.sa), db = direction(PB.unit[h.pb], h.sb);
     // A curve that is a point has no direction: its meeting with another is a crossing.
-    const bool tangent = h.touch || (norm(da) > 0 && norm(db) > 0 && std::abs(cross(da, db)) <= T(1e-6));
+    bool tangent = h.touch || (norm(da) > 0 && norm(db) > 0 && std::abs(cross(da, db)) <= T(1e-6));
+    // A touch located as a double root (to sqrt(eps / curvature): 1e-8 off on a Chebyshev
+    // polynomial of degree 12, where its tangent already turned by 4e-6) or as a minimum of
+    // a band's separation: polished where the tangents are parallel and the curves within
+    // the near-miss distance (polish_touch, within 1e-5 in both parameters); then it is the
+    // touch, and tangent. A second point polished onto the same touch is not listed again.
+    if (!tangent && norm(da) > 0 && norm(db) > 0 && std::abs(cross(da, db)) <= T(1e-4)) {
+      const Arc<T> aa{h.pa, T(0), T(1)}, ab{h.pb, T(0), T(1)};
+      if (auto p = polish_touch(A.unit[h.pa], aa, PB.unit[h.pb], ab, Refined<T>{h.sa, h.sb, h.distance}, tol)) {
+        h.sa = p->s;
+        h.sb = p->t;
+        h.ta = ca.global_parameter(h.pa, p->s);
+        h.tb = cb->global_parameter(h.pb, p->t);
+        da = direction(A.unit[h.pa], h.sa);
+        db = direction(PB.unit[h.pb], h.sb);
+        tangent = std::abs(cross(da, db)) <= T(1e-6);
+        const T ma = T(merge_fraction) * piece_length(ca, h.pa), mb = T(merge_fraction) * piece_length(*cb, h.pb);
+        if (tangent && std::any_of(out.points.begin(), out.points.end(), [&](const CurveIntersection<T>& x) {
+              return std::abs(x.ta - h.ta) <= ma && std::abs(x.tb - h.tb) <= mb;
+            }))
+          continue;
+      }
+    }
     out.points.push_back({h.ta, h.tb, std::visit([&](const auto& x) { return x(h.sa); }, ca.segments()[h.pa]),
                           tangent ? IntersectionKind::tangent : IntersectionKind::crossing});
   }
   std::sort(out.points.begin(), out.points.end(), [](const auto& x, const auto& y) { return x.ta < y.ta; });
+  if (self && closed_a) {
+    // A closed curve crossing itself at its closing point passes there three times in
+    // parameters (start, middle, end): the pairs (start, middle) and (middle, end) are one
+    // self-intersection. Parameters at the end of the domain count as its start (within
+    // merge_fraction of their piece); such a pair is listed once, the first in ta.
+    auto near_end = [&](T t) { return t >= dom_a.hi - T(merge_fraction) * piece_length(ca, ca.segment_index(t)); };
+    auto same_t = [&](T x, T y) {
+      return std::abs(x - y) <= T(merge_fraction) * std::max(piece_length(ca, ca.segment_index(x)), piece_length(ca, ca.segment_index(y)));
+    };
+    auto canonical = [&](const CurveIntersection<T>& x) {
+      T u = near_end(x.ta) ? dom_a.lo : x.ta, v = near_end(x.tb) ? dom_a.lo : x.tb;
+      if (u > v) std::swap(u, v);
+      return std::pair<T, T>{u, v};
+    };
+    std::vector<CurveIntersection<T>> once;
+    std::vector<std::pair<T, T>> closing;  // canonical pairs of the kept points that touch the closing point
+    for (const auto& x : out.points) {
+      const bool touches = near_end(x.ta) || near_end(x.tb) || same_t(x.ta, dom_a.lo) || same_t(x.tb, dom_a.lo);
+      if (touches) {
+        const auto c = canonical(x);
+        if (std::any_of(closing.begin(), closing.end(), [&](const auto& k) { return same_t(k.first, c.first) && same_t(k.second, c.second); }))
+          continue;
+        closing.push_back(c);
+      }
+      once.push_back(x);
+    }
+    out.points = std::move(once);
+  }
   out.overlaps = std::move(joined);
+  if (out.points.size() + out.overlaps.size() > max_points) too_many_points(out.points.size() + out.overlaps.size());
   return out;
 }
 
@@ -1150,6 +1229,7 @@ std::optional<Intersections<T>> low_degree_pieces(const Pieces<T, 2>& pa, const 
         if ((i > 0 && s < joint) || (i + 1 < sa.size() && s > 1 - joint) || (j > 0 && t < joint) || (j + 1 < sb.size() && t > 1 - joint))
           return std::nullopt;
         found.push_back({pa.global_parameter(i, s), pb.global_parameter(j, t), s, i, j});
+        if (found.size() > max_points) too_many_points(found.size());
       }
     }
   }

@@ -83,11 +83,34 @@ void projection_candidates(const Piece& c, const Point<T, D>& q, std::vector<T>&
   }
   // An interior extremum of the distance is a sign change of g (or g vanishes on the whole
   // piece, handled above): the sign-change roots of the root engine's first stage are all
-  // the candidates needed; a root of even multiplicity is a stationary inflection of the
-  // distance, never its extremum, so the engine's multiplicity stages (three more root
-  // isolations) are skipped here.
-  for (T r : bernstein_roots<T>(g))
-    if (r > 0 && r < 1) ts.push_back(r);
+  // the candidates needed where they are simple; a root of even multiplicity is a
+  // stationary inflection of the distance, never its extremum.
+  const std::vector<T> simple = bernstein_roots<T>(g);
+  // A flat extremum (the point at a centre of curvature: g has a triple root there, the
+  // distance is flat to fourth order) is a root of odd multiplicity m >= 3 of g: rounding
+  // splits it into a cluster of sign changes within about eps^(1/m) of it, one answer
+  // seen several times, each located poorly. It shows as roots closer than the engine's
+  // largest cluster radius (1e-3) or as a root where g' is within its rounding noise of
+  // zero; then the multiplicity stages (up to three more isolations, on g's derivatives)
+  // merge the cluster into one root located as the simple root of g^(m-1). Simple roots
+  // keep the cheap path.
+  const T noise = slack * std::numeric_limits<T>::epsilon() * detail::max_abs<T>(std::span<const T>(a));
+  bool multiple = false;
+  for (std::size_t i = 0; i + 1 < simple.size() && !multiple; ++i) multiple = simple[i + 1] - simple[i] <= T(1e-3);
+  if (!multiple && !simple.empty() && g.size() > 2) {
+    const std::vector<T> dg = bernstein_derivative_coefficients<T>(g);
+    // g'(r) is below this bound only if r is a multiple root as far as the data tell: a
+    // simple root with |g'(r)| this small moves by noise / |g'| >= 1e-4 under rounding.
+    const T small = std::max(T(1e4) * noise, std::sqrt(noise * detail::max_abs<T>(std::span<const T>(dg))));
+    for (T r : simple) multiple = multiple || std::abs(bernstein_value_fast<T>(std::span<const T>(dg), r)) <= small;
+  }
+  if (!multiple) {
+    for (T r : simple)
+      if (r > 0 && r < 1) ts.push_back(r);
+    return;
+  }
+  for (const auto& r : bernstein_roots_with_multiplicity<T>(g, {T(0), T(1)}, noise))
+    if (r.t > 0 && r.t < 1) ts.push_back(r.t);
 }
 
 }  // namespace detail
@@ -121,6 +144,8 @@ Projection<typename C::Scalar, C::dimension> project(const C& c, const Point<typ
   struct Candidate {
     T t;
     T d;
+    bool exact;             // t is the candidate's parameter exactly (not a rounded image)
+    Point<T, D> point{};    // the curve's point there when not exact
   };
   // Distances are measured on the curve moved so that q is the origin, and halved (so
   // that nothing overflows): their rounding is then a few eps of |c(t) - q|, not of the
@@ -137,9 +162,26 @@ Projection<typename C::Scalar, C::dimension> project(const C& c, const Point<typ
         [&](const auto& piece) {
           const auto& rp = std::get<std::decay_t<decltype(piece)>>(rel.segments()[i]);
           for (const auto& P : piece.points()) reach = std::max(reach, detail::safe_distance(P, q));
-          detail::projection_candidates<T, D>(piece, q, ts, constant);
-          for (T t : ts) cand.push_back({p.global_parameter(i, t), distance_at(rp, t)});
-          if (constant) flat.push_back({p.segment_domain(i), distance_at(rp, T(0))});
+          const auto parts = detail::regular_parts(piece);
+          if (parts.front().map.identity) {
+            detail::projection_candidates<T, D>(piece, q, ts, constant);
+            for (T t : ts) cand.push_back({p.global_parameter(i, t), distance_at(rp, t), true});
+            if (constant) flat.push_back({p.segment_domain(i), distance_at(rp, T(0))});
+            return;
+          }
+          // Extreme weights: candidates on parts with tame parametrisations (the same
+          // splits on the moved curve: same weights), their points and distances taken
+          // on the parts, the parameters mapped back (rounded).
+          const auto rparts = detail::regular_parts(rp);
+          bool all_constant = true;
+          for (std::size_t j = 0; j < parts.size(); ++j) {
+            detail::projection_candidates<T, D>(parts[j].piece, q, ts, constant);
+            std::sort(ts.begin(), ts.end());  // in the curve's order: parameters mapped back may round together
+            all_constant = all_constant && constant;
+            for (T u : ts)
+              cand.push_back({p.global_parameter(i, parts[j].map.t_of(u)), distance_at(rparts[j].piece, u), false, parts[j].piece(u)});
+          }
+          if (all_constant) flat.push_back({p.segment_domain(i), distance_at(rp, T(0))});
         },
         p.segments()[i]);
   }
@@ -159,16 +201,37 @@ Projection<typename C::Scalar, C::dimension> project(const C& c, const Point<typ
     else
       r.intervals.push_back(iv);
   }
-  std::sort(cand.begin(), cand.end(), [](const Candidate& a, const Candidate& b) { return a.t < b.t; });
+  // Stable: candidates were made in the curve's order (pieces, parts, sorted parameters),
+  // which equal parameters (a part's rounded image) keep for the runs below.
+  std::stable_sort(cand.begin(), cand.end(), [](const Candidate& a, const Candidate& b) { return a.t < b.t; });
   const Interval<T> dom = p.domain();
   const T merge = T(1e-9) * dom.length();  // one minimiser seen from two pieces, or twice
-  for (const auto& x : cand) {
-    if (!ties(x.d)) continue;
-    const bool inside = std::any_of(r.intervals.begin(), r.intervals.end(),
-                                    [&](const Interval<T>& iv) { return x.t >= iv.lo && x.t <= iv.hi; });
-    if (inside) continue;
-    if (!r.all_t.empty() && x.t - r.all_t.back() <= merge) continue;
-    r.all_t.push_back(x.t);
+  // Every stationary point of the distance is a candidate, so between consecutive
+  // candidates (in t) the distance is monotone: a run of consecutive tied candidates
+  // bounds the distance within the tie on its whole stretch. Such a run is one extremum
+  // at the resolution of the tie (a flat minimum, whose rounded derivative changes sign
+  // several times; a curve hugging its control polygon at an extreme weight), reported
+  // once, at its best candidate. Distinct tied extrema are separated by a stationary
+  // point of the other kind, whose distance does not tie.
+  const auto inside = [&](T t) {
+    return std::any_of(r.intervals.begin(), r.intervals.end(), [&](const Interval<T>& iv) { return t >= iv.lo && t <= iv.hi; });
+  };
+  for (std::size_t i = 0; i < cand.size();) {
+    if (!ties(cand[i].d)) {
+      ++i;
+      continue;
+    }
+    std::size_t j = i, pick = i;
+    bool in_interval = false;
+    for (; j < cand.size() && ties(cand[j].d); ++j) {
+      in_interval = in_interval || inside(cand[j].t);
+      if (better(cand[j].d, cand[pick].d)) pick = j;
+    }
+    i = j;
+    if (in_interval) continue;  // the interval stands for it
+    const T t = cand[pick].t;
+    if (!r.all_t.empty() && t - r.all_t.back() <= merge) continue;
+    r.all_t.push_back(t);
   }
   r.t = r.all_t.empty() ? r.intervals.front().lo : r.all_t.front();
   if (!r.intervals.empty()) r.t = std::min(r.t, r.intervals.front().lo);
@@ -176,6 +239,16 @@ Projection<typename C::Scalar, C::dimension> project(const C& c, const Point<typ
   r.point = p(r.t);
   // The distance reported is the one at the reported parameter (equal to best within tol).
   r.distance = distance_at(rel, r.t);
+  // A candidate of a part of a piece with extreme weights: its parameter is a rounded
+  // image (a point within 1e-30 of a parameter end has no double of its own), so its
+  // point and distance are the ones found on the part.
+  const Candidate* chosen = nullptr;
+  for (const auto& x : cand)
+    if (x.t == r.t && (!chosen || better(x.d, chosen->d))) chosen = &x;
+  if (chosen && !chosen->exact && (r.intervals.empty() || r.t < r.intervals.front().lo)) {
+    r.point = chosen->point;
+    r.distance = chosen->d;
+  }
   return r;
 }
 
