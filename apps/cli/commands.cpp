@@ -289,11 +289,11 @@ Response fit(const Json& req) {
   if (const Json* j = f.optional("parametrization")) {
     const std::string s = io::string_from_json(*j, "parametrization");
     if (s == "uniform") {
-      r.parametrization = 0;
+      r.parametrization = Parametrization::uniform;
     } else if (s == "chord") {
-      r.parametrization = 1;
+      r.parametrization = Parametrization::chord;
     } else if (s == "centripetal") {
-      r.parametrization = 2;
+      r.parametrization = Parametrization::centripetal;
     } else {
       throw InvalidArgument("parametrization", "unknown parametrization " + io::quoted(s) + " (uniform, chord, centripetal)");
     }
