@@ -39,7 +39,11 @@ def main():
         for f in files
         if f.endswith(".hpp"))
     base = [f"-I{a.include}"] + [x for d in a.isystem for x in ("-isystem", d)]
-    tmp = tempfile.mkdtemp(prefix="casteljau_headers_")
+    with tempfile.TemporaryDirectory(prefix="casteljau_headers_") as tmp:
+        return check(a, compilers, headers, base, tmp)
+
+
+def check(a, compilers, headers, base, tmp):
     jobs = []  # (name, command, stdin text)
     # Each header alone: the self-containedness check is about the preprocessor and name
     # lookup, the same for every compiler, so the first compiler does it.
