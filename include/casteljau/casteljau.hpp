@@ -1,5 +1,5 @@
-// The whole library in one include, except algo/fit.hpp (it brings Eigen's sparse
-// solvers; include it where fitting is used).
+// The whole header library in one include: every public type and algorithm (the
+// compiled io layer, casteljau::io, has its own headers under io/).
 #pragma once
 
 #include "casteljau/algo/area.hpp"
@@ -9,8 +9,11 @@
 #include "casteljau/algo/distance.hpp"
 #include "casteljau/algo/evaluate.hpp"
 #include "casteljau/algo/features.hpp"
+#include "casteljau/algo/fit.hpp"
 #include "casteljau/algo/flatten.hpp"
+#include "casteljau/algo/flatten_method.hpp"
 #include "casteljau/algo/frame.hpp"
+#include "casteljau/algo/intersect.hpp"
 #include "casteljau/algo/length.hpp"
 #include "casteljau/algo/project.hpp"
 #include "casteljau/algo/reduce.hpp"
@@ -27,6 +30,7 @@
 #include "casteljau/basis/de_casteljau.hpp"
 #include "casteljau/basis/hermite_basis.hpp"
 #include "casteljau/basis/extrapolate.hpp"
+#include "casteljau/basis/knot_form.hpp"
 #include "casteljau/basis/knot_ops.hpp"
 #include "casteljau/basis/knot_vector.hpp"
 #include "casteljau/basis/power.hpp"
@@ -35,12 +39,15 @@
 #include "casteljau/core/affine.hpp"
 #include "casteljau/core/error.hpp"
 #include "casteljau/core/interval.hpp"
+#include "casteljau/core/unit_frame.hpp"
 #include "casteljau/core/point.hpp"
+#include "casteljau/core/segment.hpp"
 #include "casteljau/curves/bezier.hpp"
 #include "casteljau/curves/bspline.hpp"
 #include "casteljau/curves/catmull_rom.hpp"
 #include "casteljau/curves/concepts.hpp"
 #include "casteljau/curves/conics.hpp"
+#include "casteljau/curves/nurbs.hpp"
 #include "casteljau/curves/lagrange.hpp"
 #include "casteljau/curves/cubic_spline.hpp"
 #include "casteljau/curves/hermite.hpp"

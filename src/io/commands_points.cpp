@@ -50,6 +50,8 @@ constexpr Field subdivide_fields[] = {
 };
 
 constexpr std::string_view parametrizations[] = {"uniform", "chord", "centripetal"};
+static_assert(static_cast<int>(Parametrization::uniform) == 0 && static_cast<int>(Parametrization::chord) == 1 &&
+              static_cast<int>(Parametrization::centripetal) == 2);
 
 Response fit(const Args& a) {
   AnyFitRequest r;
@@ -68,9 +70,10 @@ Response fit(const Args& a) {
     r.tolerance = a.number("tolerance");
     if (!(*r.tolerance > 0)) throw InvalidArgument("tolerance", "tolerance must be > 0, got " + number_text(*r.tolerance));
   }
-  // io::AnyFitRequest numbers the rules in the order of the choices.
+  // The choices are listed in the order of the Parametrization enum (curves/parametrization.hpp).
   const std::string& rule = a.string("parametrization");
-  r.parametrization = static_cast<int>(std::find(std::begin(parametrizations), std::end(parametrizations), rule) - std::begin(parametrizations));
+  r.parametrization = static_cast<Parametrization>(std::find(std::begin(parametrizations), std::end(parametrizations), rule) -
+                                                   std::begin(parametrizations));
   r.start_derivative = a.optional_numbers("start_derivative");
   r.end_derivative = a.optional_numbers("end_derivative");
   r.closed = a.boolean("closed");

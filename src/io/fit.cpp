@@ -30,9 +30,7 @@ AnyFit fit_in(const PointList& L, const AnyFitRequest& r) {
   req.degree = r.degree;
   req.control_points = r.control_points;
   req.tolerance = r.tolerance;
-  req.parametrization = r.parametrization == 0 ? Parametrization::uniform
-                        : r.parametrization == 2 ? Parametrization::centripetal
-                                                 : Parametrization::chord;
+  req.parametrization = r.parametrization;
   req.start_derivative = vector_of<D>(r.start_derivative, "start_derivative");
   req.end_derivative = vector_of<D>(r.end_derivative, "end_derivative");
   req.closed = r.closed;

@@ -172,8 +172,22 @@ TEST(FlattenOptimal, CauchySchwarzStepBound) {
   EXPECT_LE(bound(1, 0), 1.05 * sampled(1, 0));  // 4/9 exactly; the bound sqrt(27/128) = 0.459
 }
 
+/// The instruction sets whose compiled kernels (src/flatten, chosen like the batch
+/// evaluation kernels) this machine runs; a test runs over each and restores the choice.
+std::vector<batch::Isa> available_isas() {
+  std::vector<batch::Isa> v;
+  for (batch::Isa isa : {batch::Isa::baseline, batch::Isa::avx2, batch::Isa::avx512})
+    if (batch::isa_available(isa)) v.push_back(isa);
+  return v;
+}
+struct IsaRestore {
+  batch::Isa saved = batch::active_isa();
+  ~IsaRestore() { batch::select_isa(saved); }
+};
+
 /// The first block of the batched walk of a sampled plan (small_optimal_batched): the
-/// arrays and check bits as the walk computes them from the piece's start.
+/// arrays and check bits as the walk computes them from the piece's start (the lane
+/// kernel of the active instruction set, or the plain form).
 struct FirstBlock {
   static constexpr int B = detail::optimal_block;
   double t[B + 1], x[B + 1], y[B + 1], dx[B + 1], dy[B + 1];
@@ -185,13 +199,9 @@ FirstBlock first_block(const detail::SmallOptimalPlan<double>& plan, double tol,
   FirstBlock b;
   b.t[0] = 0, b.x[0] = plan.a0[0], b.y[0] = plan.a0[1], b.dx[0] = plan.a1[0], b.dy[0] = plan.a1[1];
   const double df = plan.F / plan.n;
-#if defined(__GNUC__)
   if (lanes) {
-    b.ok = detail::small_optimal_block_lanes<FirstBlock::B>(plan, 0.0, df, 1.0, tol * tol, b.t, b.x, b.y, b.dx, b.dy);
-  } else
-#endif
-  {
-    (void)lanes;
+    b.ok = detail::optimal_block_lanes(plan, FirstBlock::B, 0.0, df, 1.0, tol * tol, b.t, b.x, b.y, b.dx, b.dy);
+  } else {
     b.ok = detail::small_optimal_block_plain<double, FirstBlock::B>(plan, 0.0, df, 1.0, tol * tol, b.t, b.x, b.y, b.dx, b.dy);
   }
   b.cnt = std::min(FirstBlock::B, plan.n - 1);
@@ -207,43 +217,48 @@ TEST(FlattenOptimal, BatchedBlocksAgainstSampling) {
   // accepts within tol by sampling its sub-arc; then the whole polyline against the
   // densely sampled curve and the greedy count, for pieces whose first block has its first
   // failing step first, last, in the middle, or none (each case met at least twice).
-  test::SplitMix64 rng{33};
-  const double tol = 1e-3;
-  int first = 0, last = 0, middle = 0, none = 0, long_pieces = 0;
-  for (int c = 0; c < 400 && (first < 2 || last < 2 || middle < 2 || none < 2); ++c) {
-    detail::SmallPiece<double, 2> s;
-    s.m = 4;
-    std::vector<P2> Q(4);
-    for (auto& q : Q) q = P2{rng.uniform(0, 0.8), rng.uniform(0, 0.8)};
-    for (int i = 0; i < 4; ++i) s.q[static_cast<std::size_t>(i)] = Q[static_cast<std::size_t>(i)];
-    detail::SmallOptimalPlan<double> plan;
-    detail::small_optimal_plan(s, tol, plan);
-    if (!plan.sampled || plan.n < 3) continue;
-    const B2 curve(Q);
-    const FirstBlock a = first_block(plan, tol, true), b = first_block(plan, tol, false);
-    for (int k = 1; k <= a.cnt; ++k) {
-      EXPECT_NEAR(a.t[k], b.t[k], 1e-6) << c << " " << k;
-      EXPECT_NEAR(a.x[k], curve(a.t[k])[0], 1e-12);
-      EXPECT_NEAR(a.y[k], curve(a.t[k])[1], 1e-12);
-      for (const FirstBlock* f : {&a, &b}) {
-        if ((f->ok >> k) & 1u) {
-          EXPECT_LE(step_deviation(curve, f->t[k - 1], f->t[k]).first, tol * (1 + 1e-6)) << c << " " << k;
+  const IsaRestore restore;
+  for (batch::Isa isa : available_isas()) {
+    ASSERT_TRUE(batch::select_isa(isa));
+    SCOPED_TRACE(batch::isa_name(isa));
+    test::SplitMix64 rng{33};
+    const double tol = 1e-3;
+    int first = 0, last = 0, middle = 0, none = 0, long_pieces = 0;
+    for (int c = 0; c < 400 && (first < 2 || last < 2 || middle < 2 || none < 2); ++c) {
+      detail::SmallPiece<double, 2> s;
+      s.m = 4;
+      std::vector<P2> Q(4);
+      for (auto& q : Q) q = P2{rng.uniform(0, 0.8), rng.uniform(0, 0.8)};
+      for (int i = 0; i < 4; ++i) s.q[static_cast<std::size_t>(i)] = Q[static_cast<std::size_t>(i)];
+      detail::SmallOptimalPlan<double> plan;
+      detail::small_optimal_plan(s, tol, plan);
+      if (!plan.sampled || plan.n < 3) continue;
+      const B2 curve(Q);
+      const FirstBlock a = first_block(plan, tol, true), b = first_block(plan, tol, false);
+      for (int k = 1; k <= a.cnt; ++k) {
+        EXPECT_NEAR(a.t[k], b.t[k], 1e-6) << c << " " << k;
+        EXPECT_NEAR(a.x[k], curve(a.t[k])[0], 1e-12);
+        EXPECT_NEAR(a.y[k], curve(a.t[k])[1], 1e-12);
+        for (const FirstBlock* f : {&a, &b}) {
+          if ((f->ok >> k) & 1u) {
+            EXPECT_LE(step_deviation(curve, f->t[k - 1], f->t[k]).first, tol * (1 + 1e-6)) << c << " " << k;
+          }
         }
       }
+      const bool full_block = plan.n - 1 > FirstBlock::B;
+      long_pieces += full_block;
+      int* which = a.fail == 0 ? &none : a.fail == 1 ? &first : a.fail == a.cnt ? &last : &middle;
+      if (*which >= 2) continue;
+      ++*which;
+      const auto poly = checked_optimal(curve, tol, "random cubic");
+      EXPECT_LE(static_cast<double>(poly.size() - 1), 1.05 * static_cast<double>(test::near_optimal_count(curve, tol)) + 1) << c;
     }
-    const bool full_block = plan.n - 1 > FirstBlock::B;
-    long_pieces += full_block;
-    int* which = a.fail == 0 ? &none : a.fail == 1 ? &first : a.fail == a.cnt ? &last : &middle;
-    if (*which >= 2) continue;
-    ++*which;
-    const auto poly = checked_optimal(curve, tol, "random cubic");
-    EXPECT_LE(static_cast<double>(poly.size() - 1), 1.05 * static_cast<double>(test::near_optimal_count(curve, tol)) + 1) << c;
+    EXPECT_EQ(first, 2);
+    EXPECT_EQ(last, 2);
+    EXPECT_EQ(middle, 2);
+    EXPECT_EQ(none, 2);
+    EXPECT_GT(long_pieces, 10);  // pieces of more than one block
   }
-  EXPECT_EQ(first, 2);
-  EXPECT_EQ(last, 2);
-  EXPECT_EQ(middle, 2);
-  EXPECT_EQ(none, 2);
-  EXPECT_GT(long_pieces, 10);  // pieces of more than one block
 }
 
 #if defined(__GNUC__)
@@ -253,47 +268,84 @@ TEST(FlattenOptimal, ParabolaBlocksAgainstScalarForms) {
   // point the piece's, and each step's bit exactly parabola_step_within (itself tested
   // against sampling above) and t < 1, on random quadratics at several tolerances and
   // blocks; then their whole polylines against dense sampling.
-  test::SplitMix64 rng{44};
-  constexpr int B = detail::optimal_block;
-  int steps = 0, refused = 0;
-  for (int c = 0; c < 200; ++c) {
-    std::vector<P2> Q(3);
-    for (auto& q : Q) q = P2{rng.uniform(0, 0.8), rng.uniform(0, 0.8)};
-    if (c % 4 == 0) Q[1] = P2{Q[0][0] + 30 * (Q[1][0] - Q[0][0]), Q[1][1]};  // sharp tips, long chords
-    detail::SmallPiece<double, 2> s;
-    s.m = 3;
-    for (int i = 0; i < 3; ++i) s.q[static_cast<std::size_t>(i)] = Q[static_cast<std::size_t>(i)];
-    const double tol = c % 3 == 0 ? 1e-2 : c % 3 == 1 ? 1e-3 : 1e-4;
-    detail::SmallOptimalPlan<double> plan;
-    detail::small_optimal_plan(s, tol, plan);
-    if (!plan.closed || plan.n < 2) continue;
-    const B2 curve(Q);
-    const double df = 1.0 / plan.n, f_base = rng.uniform(0, 0.2) * df;  // (a base as after a repair)
-    for (int first = 1; first < plan.n; first += B) {
-      const double tp = first == 1 ? 0.0 : rng.uniform(0, 1) * 0.5;
-      double bt[B], bx[B], by[B];
-      const unsigned ok = detail::small_optimal_parabola_block(plan, f_base, df, first, tp, bt, bx, by);
-      for (int k = 0; k < B && first + k < plan.n; ++k) {
-        const double u = std::min(f_base + (first + k) * df, 1.0);
-        const auto& p = plan.span;
-        const double t =
-            p.sx != 0 ? std::clamp((detail::parabola_integral_inverse(p.a0 + u * p.da) - p.x0) * p.sx, 0.0, 1.0) : u;
-        EXPECT_NEAR(bt[k], t, 1e-9) << c << " " << k;
-        EXPECT_NEAR(bx[k], curve(bt[k])[0], 1e-12);
-        EXPECT_NEAR(by[k], curve(bt[k])[1], 1e-12);
-        const double prev = k ? bt[k - 1] : tp;
-        const bool want = detail::parabola_step_within(plan, prev, bt[k]) && bt[k] < 1;
-        EXPECT_EQ(((ok >> k) & 1u) != 0, want) << c << " " << k;
-        ++steps;
-        refused += !want;
+  const IsaRestore restore;
+  for (batch::Isa isa : available_isas()) {
+    ASSERT_TRUE(batch::select_isa(isa));
+    SCOPED_TRACE(batch::isa_name(isa));
+    test::SplitMix64 rng{44};
+    constexpr int B = detail::optimal_block;
+    int steps = 0, refused = 0;
+    for (int c = 0; c < 200; ++c) {
+      std::vector<P2> Q(3);
+      for (auto& q : Q) q = P2{rng.uniform(0, 0.8), rng.uniform(0, 0.8)};
+      if (c % 4 == 0) Q[1] = P2{Q[0][0] + 30 * (Q[1][0] - Q[0][0]), Q[1][1]};  // sharp tips, long chords
+      detail::SmallPiece<double, 2> s;
+      s.m = 3;
+      for (int i = 0; i < 3; ++i) s.q[static_cast<std::size_t>(i)] = Q[static_cast<std::size_t>(i)];
+      const double tol = c % 3 == 0 ? 1e-2 : c % 3 == 1 ? 1e-3 : 1e-4;
+      detail::SmallOptimalPlan<double> plan;
+      detail::small_optimal_plan(s, tol, plan);
+      if (!plan.closed || plan.n < 2) continue;
+      const B2 curve(Q);
+      const double df = 1.0 / plan.n, f_base = rng.uniform(0, 0.2) * df;  // (a base as after a repair)
+      for (int first = 1; first < plan.n; first += B) {
+        const double tp = first == 1 ? 0.0 : rng.uniform(0, 1) * 0.5;
+        double bt[B], bx[B], by[B];
+        const unsigned ok = detail::optimal_parabola_block_lanes(plan, f_base, df, first, tp, bt, bx, by);
+        for (int k = 0; k < B && first + k < plan.n; ++k) {
+          const double u = std::min(f_base + (first + k) * df, 1.0);
+          const auto& p = plan.span;
+          const double t =
+              p.sx != 0 ? std::clamp((detail::parabola_integral_inverse(p.a0 + u * p.da) - p.x0) * p.sx, 0.0, 1.0) : u;
+          EXPECT_NEAR(bt[k], t, 1e-9) << c << " " << k;
+          EXPECT_NEAR(bx[k], curve(bt[k])[0], 1e-12);
+          EXPECT_NEAR(by[k], curve(bt[k])[1], 1e-12);
+          const double prev = k ? bt[k - 1] : tp;
+          const bool want = detail::parabola_step_within(plan, prev, bt[k]) && bt[k] < 1;
+          EXPECT_EQ(((ok >> k) & 1u) != 0, want) << c << " " << k;
+          ++steps;
+          refused += !want;
+        }
       }
+      checked_optimal(curve, tol, "random quadratic");
     }
-    checked_optimal(curve, tol, "random quadratic");
+    EXPECT_GT(steps, 2000);
+    EXPECT_GT(refused, 20);  // both outcomes met
   }
-  EXPECT_GT(steps, 2000);
-  EXPECT_GT(refused, 20);  // both outcomes met
 }
 #endif
+
+TEST(FlattenOptimal, CompiledWalkSameInEveryInstructionSet) {
+  // flatten() of double plane cubics and quadratics runs the walk compiled in src/flatten
+  // with the lane kernels of the active instruction set: one rounding per operation in
+  // every set (no FMA contraction), so the polylines are equal bit for bit across sets,
+  // on random pieces (sampled and one-parabola plans, repairs included) at several
+  // tolerances. The float walk stays in the header (PlainBlocks): its ends exact.
+  const IsaRestore restore;
+  const auto isas = available_isas();
+  test::SplitMix64 rng{55};
+  int compared = 0;
+  for (int c = 0; c < 300; ++c) {
+    std::vector<P2> Q(c % 2 == 0 ? 4 : 3);
+    for (auto& q : Q) q = P2{rng.uniform(-50, 50), rng.uniform(-50, 50)};
+    const double tol = c % 3 == 0 ? 1e-1 : c % 3 == 1 ? 1e-3 : 1e-5;
+    const B2 curve(Q);
+    ASSERT_TRUE(batch::select_isa(isas.front()));
+    const auto ref = flatten(curve, tol, FlattenMethod::optimal);
+    for (std::size_t i = 1; i < isas.size(); ++i) {
+      ASSERT_TRUE(batch::select_isa(isas[i]));
+      EXPECT_EQ(flatten(curve, tol, FlattenMethod::optimal), ref) << c << " " << batch::isa_name(isas[i]);
+      ++compared;
+    }
+  }
+  if (isas.size() > 1) EXPECT_EQ(compared, 300 * static_cast<int>(isas.size() - 1));
+  std::vector<Point<float, 2>> Qf{{0, 0}, {1, 2}, {3, -1}, {4, 1}};
+  const Bezier<float, 2> cf(Qf);
+  const auto pf = flatten(cf, 1e-3f, FlattenMethod::optimal);
+  EXPECT_EQ(pf.front(), Qf.front());
+  EXPECT_EQ(pf.back(), Qf.back());
+  EXPECT_GT(pf.size(), 10u);
+}
 
 TEST(FlattenOptimal, CuspInflectionLoopWithinTolerance) {
   // Cusp at t = 1/2 (B'(1/2) = 0), an S-curve (one inflection), a loop; tolerances from

@@ -16,16 +16,13 @@
 #include <vector>
 
 #include "casteljau/curves/bspline.hpp"
+#include "casteljau/curves/parametrization.hpp"
 
 namespace casteljau {
 
-/// How data points get their parameters: steps of 1 (uniform), |Q_{k+1} - Q_k| (chord)
-/// or its square root (centripetal) [PT97, eq. 9.4-9.6; Lee89], divided by the total so
-/// that they run from 0 to 1.
-enum class Parametrization { uniform, chord, centripetal };
-
 /// Parameters 0 = t_0 < ... < t_last = 1 for the points Q (for a closed fit one more, for
-/// the closing edge Q_last -> Q_0). Errors: "points[k]" when a point equals the one before
+/// the closing edge Q_last -> Q_0) by the rule `kind` (curves/parametrization.hpp;
+/// [PT97, eq. 9.4-9.6; Lee89]), divided by the total so that they run from 0 to 1. Errors: "points[k]" when a point equals the one before
 /// under chord or centripetal (a zero step), "points" when all steps are zero.
 template <class T, int D>
 std::vector<T> fit_parameters(const std::vector<Point<T, D>>& Q, Parametrization kind, bool closed) {

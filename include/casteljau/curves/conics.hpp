@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "casteljau/curves/bspline.hpp"
+#include "casteljau/curves/nurbs.hpp"
 
 namespace casteljau {
 

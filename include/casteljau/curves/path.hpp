@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "casteljau/curves/bspline.hpp"
+#include "casteljau/curves/nurbs.hpp"
 #include "casteljau/curves/catmull_rom.hpp"
 #include "casteljau/curves/lagrange.hpp"
 #include "casteljau/curves/cubic_spline.hpp"

@@ -139,9 +139,10 @@ using AnyBox = PerDimension<Box>;
 [[nodiscard]] AnyBox bounds(const AnyCurve& c);
 
 /// A polyline within `tolerance` of the curve, from its start to its end (algo/flatten),
-/// by the given method. Refused with InvalidArgument("tolerance", ...) when it would need
-/// more than about max_flatten_vertices vertices.
-[[nodiscard]] PointList flatten(const AnyCurve& c, double tolerance, FlattenMethod method = FlattenMethod::subdivision);
+/// by the given method (by default `optimal`, as flatten() and the command line). Refused
+/// with InvalidArgument("tolerance", ...) when it would need more than about
+/// max_flatten_vertices vertices.
+[[nodiscard]] PointList flatten(const AnyCurve& c, double tolerance, FlattenMethod method = FlattenMethod::optimal);
 
 /// The curve as a path of bezier / rational_bezier segments with the same parametrisation.
 [[nodiscard]] AnyCurve to_bezier(const AnyCurve& c);

@@ -4,6 +4,7 @@
 #include <optional>
 #include <vector>
 
+#include "casteljau/curves/parametrization.hpp"
 #include "casteljau/io/any_curve.hpp"
 
 namespace casteljau::io {
@@ -13,7 +14,7 @@ struct AnyFitRequest {
   int degree = 3;
   std::optional<std::size_t> control_points;
   std::optional<double> tolerance;
-  int parametrization = 1;  ///< 0 uniform, 1 chord, 2 centripetal
+  Parametrization parametrization = Parametrization::chord;
   std::optional<std::vector<double>> start_derivative;
   std::optional<std::vector<double>> end_derivative;
   bool closed = false;

@@ -1,0 +1,422 @@
+// Algorithms on B-splines as plain data (KnotForm: degree, knots, points of any point
+// type, e.g. homogeneous ones), beside the knot operations of knot_ops.hpp: the Bézier
+// points of a span by blossoming, insertion checks, refinement, splitting, re-knotting of
+// the ends, knot removal on a sliding window, the outer knots for unclamping, and degree
+// reduction [PT97, chapter 5; Ramshaw87]. BSpline and Nurbs (curves/bspline.hpp,
+// curves/nurbs.hpp) wrap them with validation; degree elevation, which elevates Bézier
+// pieces, is in curves/bspline.hpp.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "casteljau/basis/bspline_basis.hpp"
+#include "casteljau/basis/knot_ops.hpp"
+#include "casteljau/basis/knot_vector.hpp"
+#include "casteljau/core/error.hpp"
+#include "casteljau/core/point.hpp"
+
+namespace casteljau::detail {
+
+/// The Bézier control points of span s: the blossom at (a^(p-j), b^j), j = 0..p, with
+/// [a, b] = [U_s, U_{s+1}] [Ramshaw87; Farin02, 8.4]. Exact up to rounding: the piece is
+/// the same polynomial.
+template <class V, class T>
+std::vector<V> span_bezier_points(std::span<const T> U, int p, std::size_t s, std::span<const V> P) {
+  std::vector<V> Q(static_cast<std::size_t>(p) + 1);
+  std::vector<T> args(static_cast<std::size_t>(p));
+  for (int j = 0; j <= p; ++j) {
+    std::fill(args.begin(), args.end() - j, U[s]);
+    std::fill(args.end() - j, args.end(), U[s + 1]);
+    Q[static_cast<std::size_t>(j)] = de_boor_blossom<V, T>(U, p, s, P, args);
+  }
+  return Q;
+}
+
+/// The non-empty spans s = p..n-1 (U_s < U_{s+1}) of a valid knot vector.
+template <class T>
+std::vector<std::size_t> nonempty_spans(std::span<const T> U, int p) {
+  std::vector<std::size_t> spans;
+  const std::size_t n = U.size() - static_cast<std::size_t>(p) - 1;
+  for (std::size_t s = static_cast<std::size_t>(p); s < n; ++s) {
+    if (U[s] < U[s + 1]) spans.push_back(s);
+  }
+  return spans;
+}
+
+template <class V>
+bool all_finite_point(const V& v) {
+  for (int d = 0; d < V::dimension; ++d) {
+    if (!std::isfinite(v[d])) return false;
+  }
+  return true;
+}
+
+template <class V>
+void require_representable(const V& v, double u, const char* what) {
+  for (int d = 0; d < V::dimension; ++d) {
+    if (!std::isfinite(v[d])) {
+      throw InvalidArgument("t", std::string(what) + " at t = " + format_number(u) + " is not representable (overflow)");
+    }
+  }
+}
+
+/// Checks that u may be inserted `times` more times into the knots U of degree p: u
+/// finite and in the domain [U_p, U_n] (InvalidArgument "knot"), times >= 1 and the
+/// multiplicity afterwards at most p (InvalidArgument "times").
+template <class T>
+void check_insertion(std::span<const T> U, int p, T u, int times) {
+  require_finite(u, "knot");
+  const std::size_t n = U.size() - static_cast<std::size_t>(p) - 1;
+  const T a = U[static_cast<std::size_t>(p)], b = U[n];
+  if (u < a || u > b) {
+    throw InvalidArgument("knot", "a knot to insert must lie in the domain [" + format_number(a) + ", " + format_number(b) +
+                                      "], got " + format_number(u));
+  }
+  if (times < 1) throw InvalidArgument("times", "insertion count must be >= 1, got " + std::to_string(times));
+  const std::size_t s = knot_multiplicity<T>(U, u);
+  if (s + static_cast<std::size_t>(times) > static_cast<std::size_t>(p)) {
+    throw InvalidArgument("times", "knot " + format_number(u) + " has multiplicity " + std::to_string(s) + "; inserting it " +
+                                       std::to_string(times) + " more times would exceed the degree " + std::to_string(p));
+  }
+}
+
+/// f with u inserted `times` times (checked as check_insertion says).
+template <class T, class V>
+KnotForm<T, V> insert_knot(KnotForm<T, V> f, T u, int times) {
+  check_insertion<T>(f.U, f.p, u, times);
+  for (int j = 0; j < times; ++j) f = insert_knot_once(f, u);
+  return f;
+}
+
+/// f with the sorted knots X inserted (each in the domain, multiplicities at most p after;
+/// InvalidArgument naming "knots[j]" of X otherwise).
+template <class T, class V>
+KnotForm<T, V> refine(const KnotForm<T, V>& f, std::span<const T> X) {
+  const std::size_t n = f.U.size() - static_cast<std::size_t>(f.p) - 1;
+  for (std::size_t j = 0; j < X.size(); ++j) {
+    const std::string where = "knots[" + std::to_string(j) + "]";
+    require_finite(X[j], where);
+    if (j > 0 && X[j] < X[j - 1]) throw InvalidArgument(where, "knots to insert must be sorted");
+    if (X[j] < f.U[static_cast<std::size_t>(f.p)] || X[j] > f.U[n]) {
+      throw InvalidArgument(where, "a knot to insert must lie in the domain, got " + format_number(X[j]));
+    }
+    const std::size_t s = knot_multiplicity<T>(f.U, X[j]) + knot_multiplicity<T>(X, X[j]);
+    if (s > static_cast<std::size_t>(f.p)) {
+      throw InvalidArgument(where, "knot " + format_number(X[j]) + " would have multiplicity " + std::to_string(s) +
+                                       ", more than the degree " + std::to_string(f.p));
+    }
+  }
+  return refine_knots<T, V>(f, X);
+}
+
+/// The halves of f at u strictly inside the domain (InvalidArgument "t" otherwise): u is
+/// inserted up to multiplicity p [PT97, §5.3: splitting by knot insertion], the left half
+/// keeps the knots up to u plus one more u (clamped at u), the right half one u plus the
+/// rest. Both keep their parameter: left on [U_p, u], right on [u, U_n].
+template <class T, class V>
+std::pair<KnotForm<T, V>, KnotForm<T, V>> split(const KnotForm<T, V>& f, T u) {
+  require_finite(u, "t");
+  const std::size_t n = f.U.size() - static_cast<std::size_t>(f.p) - 1;
+  const T a = f.U[static_cast<std::size_t>(f.p)], b = f.U[n];
+  if (!(u > a && u < b)) {
+    throw InvalidArgument("t", "a B-spline splits at a parameter strictly inside its domain (" + format_number(a) + ", " +
+                                   format_number(b) + "), got " + format_number(u));
+  }
+  const std::size_t s = knot_multiplicity<T>(f.U, u);
+  KnotForm<T, V> g = f;
+  for (std::size_t j = s; j < static_cast<std::size_t>(f.p); ++j) g = insert_knot_once(g, u);
+  const std::size_t j0 = static_cast<std::size_t>(std::lower_bound(g.U.begin(), g.U.end(), u) - g.U.begin());
+  const std::size_t p = static_cast<std::size_t>(f.p);
+  KnotForm<T, V> left{f.p, std::vector<T>(g.U.begin(), g.U.begin() + static_cast<std::ptrdiff_t>(j0 + p)),
+                      std::vector<V>(g.P.begin(), g.P.begin() + static_cast<std::ptrdiff_t>(j0))};
+  left.U.push_back(u);
+  KnotForm<T, V> right{f.p, {u}, std::vector<V>(g.P.begin() + static_cast<std::ptrdiff_t>(j0 - 1), g.P.end())};
+  right.U.insert(right.U.end(), g.U.begin() + static_cast<std::ptrdiff_t>(j0), g.U.end());
+  return {std::move(left), std::move(right)};
+}
+
+/// The same curve with new outer knots: L (p knots <= U_p) before the domain knots
+/// U_p..U_n and R (p knots >= U_n) after them; the p - 1 points at each end whose knot
+/// windows change are the blossoms of the end pieces (reblossom_ends). Clamping
+/// (L = U_p repeated) and unclamping use it [PT97, §12.2 does the same by knot insertion
+/// and its inverse]. The caller validates the result (a BSpline constructor).
+template <class T, class V>
+KnotForm<T, V> with_outer_knots(const KnotForm<T, V>& f, const std::vector<T>& L, const std::vector<T>& R) {
+  const std::size_t p = static_cast<std::size_t>(f.p);
+  const std::size_t n = f.P.size();
+  std::vector<T> Ub(L);
+  Ub.insert(Ub.end(), f.U.begin() + static_cast<std::ptrdiff_t>(p), f.U.begin() + static_cast<std::ptrdiff_t>(n) + 1);
+  Ub.insert(Ub.end(), R.begin(), R.end());
+  std::vector<V> Q = reblossom_ends<T, V>(f, Ub, p - 1, p - 1, f.P);
+  return {f.p, std::move(Ub), std::move(Q)};
+}
+
+/// Knot removal, left to right, on a window W of a C^0 form (knots U0, points P0, degree
+/// q) that slides along (elevate, reduce_degree_form): a removal at x reads and changes
+/// only knots and points within q + 1 indices of the run of x (and q removals there reach
+/// q further), so what lies more than 2 q + 2 left of the run is final and moves to the
+/// result. W keeps the pairing of the whole form (knot i with point i, q + 1 more knots
+/// than points), so remove_knot_once and insert_knot_once work on it as on a whole curve.
+/// Cost O(N q) instead of O(N removals).
+template <class T, class V>
+class SlidingWindow {
+ public:
+  SlidingWindow(const std::vector<T>& U0, const std::vector<V>& P0, int q) : W{q, {}, {}}, U0_(U0), P0_(P0), q_(q) {
+    extend_to(1);
+  }
+
+  /// Brings x's run and q + 1 knots after it into W (as far as the form goes).
+  void reach(T x) {
+    std::size_t after = run_end(x);
+    while (after == W.U.size() || W.U.size() < after + sz(q_) + 1) {
+      const std::size_t before = W.U.size();
+      extend_to(before + 1);
+      if (W.U.size() == before) break;
+      after = run_end(x);
+    }
+  }
+
+  /// Moves what lies more than 2 q + 2 left of x's run, final now, to the result.
+  void settle(T x) {
+    const std::size_t end = run_end(x), reach = 2 * sz(q_) + 2;
+    if (end <= reach) return;
+    const auto c = static_cast<std::ptrdiff_t>(std::min(end - reach, W.P.size()));
+    done_.U.insert(done_.U.end(), W.U.begin(), W.U.begin() + c);
+    done_.P.insert(done_.P.end(), W.P.begin(), W.P.begin() + c);
+    W.U.erase(W.U.begin(), W.U.begin() + c);
+    W.P.erase(W.P.begin(), W.P.begin() + c);
+  }
+
+  /// The whole form after the removals: the settled part and the rest of the form.
+  KnotForm<T, V> finish() {
+    extend_to(U0_.size() + 1);
+    done_.U.insert(done_.U.end(), W.U.begin(), W.U.end());
+    done_.P.insert(done_.P.end(), W.P.begin(), W.P.end());
+    return std::move(done_);
+  }
+
+  KnotForm<T, V> W;  ///< the window: removals work on it directly
+
+ private:
+  std::size_t run_end(T x) const { return static_cast<std::size_t>(std::upper_bound(W.U.begin(), W.U.end(), x) - W.U.begin()); }
+
+  void extend_to(std::size_t knots_needed) {
+    while (W.U.size() < knots_needed && next_ + sz(q_) < U0_.size()) {
+      if (next_ < P0_.size()) W.P.push_back(P0_[next_]);
+      if (next_ == 0) {  // the first q + 1 knots come with the first point
+        W.U.insert(W.U.end(), U0_.begin(), U0_.begin() + q_ + 1);
+        next_ = 1;
+        continue;
+      }
+      W.U.push_back(U0_[next_ + sz(q_)]);
+      ++next_;
+    }
+  }
+
+  const std::vector<T>& U0_;
+  const std::vector<V>& P0_;
+  int q_;
+  std::size_t next_ = 0;  // the next point (and knot) of the form to move into W
+  KnotForm<T, V> done_{q_, {}, {}};
+};
+
+
+/// Outer knots for unclamping: p knots spaced by the length h of the end span, a - p h ..
+/// a - h on the left and b + h .. b + p h on the right.
+template <class T>
+std::pair<std::vector<T>, std::vector<T>> unclamped_outer_knots(std::span<const T> U, int p) {
+  const std::vector<std::size_t> spans = nonempty_spans(U, p);
+  const std::size_t n = U.size() - static_cast<std::size_t>(p) - 1;
+  const T a = U[static_cast<std::size_t>(p)], b = U[n];
+  const T ha = U[spans.front() + 1] - U[spans.front()], hb = U[spans.back() + 1] - U[spans.back()];
+  std::vector<T> L(static_cast<std::size_t>(p)), R(static_cast<std::size_t>(p));
+  for (int k = 1; k <= p; ++k) {
+    L[static_cast<std::size_t>(p - k)] = a - static_cast<T>(k) * ha;
+    R[static_cast<std::size_t>(k - 1)] = b + static_cast<T>(k) * hb;
+  }
+  return {std::move(L), std::move(R)};
+}
+
+/// Validates a knot to remove: finite, a knot strictly inside the domain (InvalidArgument
+/// "knot"), times >= 1 and at most its multiplicity ("times"), tolerance > 0 and finite
+/// ("tolerance").
+template <class T>
+void check_removal(std::span<const T> U, int p, T u, int times, T tolerance) {
+  require_finite(u, "knot");
+  const std::size_t n = U.size() - static_cast<std::size_t>(p) - 1;
+  const T a = U[static_cast<std::size_t>(p)], b = U[n];
+  const std::size_t s = knot_multiplicity<T>(U, u);
+  if (!(u > a && u < b) || s == 0) {
+    throw InvalidArgument("knot", format_number(u) + " is not a knot strictly inside the domain [" + format_number(a) + ", " +
+                                      format_number(b) + "]");
+  }
+  if (times < 1) throw InvalidArgument("times", "removal count must be >= 1, got " + std::to_string(times));
+  if (static_cast<std::size_t>(times) > s) {
+    throw InvalidArgument("times", "knot " + format_number(u) + " has multiplicity " + std::to_string(s) + ", cannot remove it " +
+                                       std::to_string(times) + " times");
+  }
+  require_finite(tolerance, "tolerance");
+  if (!(tolerance > 0)) throw InvalidArgument("tolerance", "tolerance must be > 0, got " + format_number(tolerance));
+}
+
+/// Validates a degree reduction: degree >= 2 ("degree"), tolerance finite and > 0
+/// ("tolerance").
+template <class T>
+void check_reduction(int p, T tolerance) {
+  if (p < 2) throw InvalidArgument("degree", "degree reduction needs degree >= 2 (the result has degree >= 1), got " + std::to_string(p));
+  require_finite(tolerance, "tolerance");
+  if (!(tolerance > 0)) throw InvalidArgument("tolerance", "tolerance must be > 0, got " + format_number(tolerance));
+}
+
+/// One degree less for the Bézier points P_0..P_p (p >= 2) [PT97, eq. 5.41-5.44, the
+/// reduction step of A5.11]: with alpha_i = i / p, the forward recurrence
+/// Q_i = (P_i - alpha_i Q_(i-1)) / (1 - alpha_i) from Q_0 = P_0 and the backward one
+/// Q_(i-1) = (P_i - (1 - alpha_i) Q_i) / alpha_i from Q_(p-1) = P_p, each used on its
+/// half (r = (p - 1) / 2: forward up to Q_r for even p, up to Q_(r-1) for odd p, where
+/// Q_r is the mean of both). Both are exact when P is an elevated degree-(p-1) curve.
+/// The end points are kept, and for even p also the end tangents. Returns the points and
+/// the bound max_i |P_i - R_i|, R the reduced curve elevated back (Forrest's equations):
+/// the difference of the two curves is a Bézier curve with those control point
+/// differences, so the bound holds at every parameter (guaranteed, up to rounding).
+template <class V, class T>
+std::pair<std::vector<V>, T> reduce_bezier_once(const std::vector<V>& P) {
+  const int p = static_cast<int>(P.size()) - 1;
+  const int r = (p - 1) / 2;
+  const auto alpha = [&](int i) { return static_cast<T>(i) / static_cast<T>(p); };
+  std::vector<V> Q(static_cast<std::size_t>(p));
+  const auto forward = [&](int i) {  // Q_i from P_i and Q_(i-1)
+    if (i == 0) return P[0];
+    const T a = alpha(i);
+    return P[sz(i)] + (a / (1 - a)) * (P[sz(i)] - Q[sz(i - 1)]);
+  };
+  const auto backward = [&](int i) {  // Q_(i-1) from P_i and Q_i
+    if (i == p) return P[sz(p)];
+    const T a = alpha(i);
+    return P[sz(i)] + ((1 - a) / a) * (P[sz(i)] - Q[sz(i)]);
+  };
+  const bool even = p % 2 == 0;
+  const int forward_last = even ? r : r - 1;
+  for (int i = 0; i <= forward_last; ++i) Q[sz(i)] = forward(i);
+  for (int i = p; i - 1 > r; --i) Q[sz(i - 1)] = backward(i);
+  if (!even) {
+    const V left = forward(r);
+    const V right = backward(r + 1);
+    Q[sz(r)] = lerp(left, right, T(0.5));
+  }
+  T bound = 0;
+  for (int i = 0; i <= p; ++i) {
+    const V R = i == 0 ? Q[0] : i == p ? Q[sz(p - 1)] : lerp(Q[sz(i)], Q[sz(i - 1)], alpha(i));
+    bound = std::max(bound, norm(P[sz(i)] - R));
+  }
+  return {std::move(Q), bound};
+}
+
+/// What reduce_degree_form returns: the reduced form, the largest per-span error bound and
+/// how many knot copies were kept beyond the target multiplicities (0: the original
+/// continuity, C^(p-1-m) at a knot of multiplicity m, except C^(p-2) at simple knots).
+template <class T, class V>
+struct FormReduction {
+  KnotForm<T, V> form;
+  T error_bound = 0;
+  int kept_knots = 0;
+};
+
+/// Degree reduction p -> p - 1 of the B-spline f (p >= 2) within `tolerance`, an error e
+/// in V's norm counting as `scale` e (1 for a B-spline; NURBS pass the factor that turns
+/// a homogeneous deviation into a Cartesian bound) [PT97, A5.11]: (1) the exact Bézier pieces of the domain's spans, (2) each
+/// reduced by one degree (reduce_bezier_once, its bound e_j), refused with InvalidArgument
+/// "tolerance" if some e_j > tolerance, (3) joined as the C^0 B-spline of degree q = p - 1,
+/// (4) each interior knot of multiplicity m in f removed from q copies down to max(m - 1, 1)
+/// (the multiplicity the reduced curve needs for f's continuity; a simple knot stays),
+/// one copy at a time (remove_knot_once), each removal accepted only if the per-span
+/// error stays within tolerance. The error is accumulated per span as A5.11 does: a removal
+/// changes the control points by d_i (measured by re-inserting the knot), which moves the
+/// curve on a span by at most the largest d_i of the points whose support covers it
+/// (basis functions >= 0 summing to 1); the sum of the span's bounds bounds its error
+/// (triangle inequality). A refused removal keeps that copy (kept_knots counts them). The
+/// result is clamped on f's domain. Cost O(k p^3): the pieces, then the removals on a
+/// sliding window of O(p) knots (k spans).
+template <class T, class V>
+FormReduction<T, V> reduce_degree_form(const KnotForm<T, V>& f, T tolerance, T scale = T(1)) {
+  const std::span<const T> U(f.U);
+  const int p = f.p, q = p - 1;
+  const std::vector<std::size_t> spans = nonempty_spans(U, p);
+  const std::size_t k = spans.size();
+  std::vector<T> breaks;
+  for (const std::size_t s : spans) breaks.push_back(U[s]);
+  breaks.push_back(U[f.P.size()]);
+  std::vector<T> err(k);
+  KnotForm<T, V> cur{q, std::vector<T>(sz(q) + 1, breaks.front()), {}};
+  for (std::size_t j = 0; j < k; ++j) {
+    auto [Q, e] = reduce_bezier_once<V, T>(span_bezier_points<V, T>(U, p, spans[j], f.P));
+    if (!(e * scale <= tolerance)) {
+      throw InvalidArgument("tolerance", "reducing the degree from " + std::to_string(p) + " to " + std::to_string(q) +
+                                             " moves the curve by up to " + format_number(e * scale) + " on [" + format_number(breaks[j]) +
+                                             ", " + format_number(breaks[j + 1]) + "], more than the tolerance " +
+                                             format_number(tolerance));
+    }
+    err[j] = e;
+    if (j == 0) {
+      cur.P.insert(cur.P.end(), Q.begin(), Q.end());
+    } else {
+      cur.P.back() = lerp(cur.P.back(), Q.front(), T(0.5));  // the same point from both pieces, up to rounding
+      cur.P.insert(cur.P.end(), Q.begin() + 1, Q.end());
+      cur.U.insert(cur.U.end(), sz(q), breaks[j]);
+    }
+  }
+  cur.U.insert(cur.U.end(), sz(q) + 1, breaks.back());
+  // Knot removal on a sliding window (SlidingWindow), as in elevate, each removal kept
+  // only while the spans it moves stay within the tolerance.
+  const std::size_t Q1 = sz(q) + 1;
+  SlidingWindow<T, V> win(cur.U, cur.P, q);
+  KnotForm<T, V>& W = win.W;
+  int kept = 0;
+  std::vector<T> add(k, T(0));
+  for (std::size_t j = 1; j < k; ++j) {
+    const T x = breaks[j];
+    win.reach(x);
+    const int m = static_cast<int>(knot_multiplicity<T>(U, x));
+    const int wanted = q - std::max(m - 1, 1);
+    for (int c = 0; c < wanted; ++c) {
+      KnotForm<T, V> g = remove_knot_once(W, x);
+      bool ok = true;
+      for (const auto& pt : g.P) ok = ok && all_finite_point(pt);
+      std::size_t s_lo = k, s_hi = 0;  // the spans the removal moves
+      if (ok) {
+        const KnotForm<T, V> back = insert_knot_once(g, x);
+        for (std::size_t i = 0; i < W.P.size() && i + Q1 < W.U.size(); ++i) {
+          const T d = norm(W.P[i] - back.P[i]);
+          if (!(d > 0)) continue;
+          // N_i is supported on [U_i, U_(i+q+1)]: the spans inside it.
+          const T lo = W.U[i], hi = W.U[i + Q1];
+          for (std::size_t s = static_cast<std::size_t>(std::lower_bound(breaks.begin(), breaks.end(), lo) - breaks.begin());
+               s < k && breaks[s + 1] <= hi; ++s) {
+            add[s] = std::max(add[s], d);
+            s_lo = std::min(s_lo, s);
+            s_hi = std::max(s_hi, s);
+          }
+        }
+        for (std::size_t s = s_lo; s <= s_hi && s < k && ok; ++s) ok = (err[s] + add[s]) * scale <= tolerance;
+      }
+      for (std::size_t s = s_lo; s <= s_hi && s < k; ++s) {
+        if (ok) err[s] += add[s];
+        add[s] = 0;
+      }
+      if (!ok) {
+        kept += wanted - c;
+        break;
+      }
+      W = std::move(g);
+    }
+    win.settle(x);
+  }
+  return {win.finish(), *std::max_element(err.begin(), err.end()) * scale, kept};
+}
+
+}  // namespace casteljau::detail
