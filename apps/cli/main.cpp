@@ -1,4 +1,4 @@
-// `casteljau COMMAND [FILE]`: the command line program of shared/spec/cli.md. Reads
+// `casteljau COMMAND [FILE]`: the command line program of docs/cli.md. Reads
 // requests, runs commands, writes responses; maps errors to exit statuses 2 (bad input)
 // and 1 (internal error), always with exactly one `error: <where>: <what>` line on stderr.
 #include <cerrno>

@@ -15,7 +15,7 @@ namespace casteljau::io::detail {
 
 namespace {
 
-// bounds: over the domain (shared/spec/cli.md), or over [from, to] (docs/cli.md).
+// bounds: over the domain, or over [from, to] (an extension of the contract; docs/cli.md).
 Response bounds(const Args& a) {
   const AnyCurve& curve = a.curve("curve");
   const auto from = a.optional_number("from"), to = a.optional_number("to");

@@ -1,4 +1,4 @@
-// Curve objects of the contract (shared/spec/cli.md): the registry of curve types (one
+// Curve objects of the contract (docs/cli.md): the registry of curve types (one
 // Format entry per type: its name, fields, reader and writer) and the conversion between
 // curve JSON and AnyCurve.
 #include <algorithm>

@@ -135,7 +135,7 @@ void flatten(const C& c, typename C::Scalar tolerance, FlattenMethod method, std
 /// - `subdivision`: recursive midpoint
 ///   subdivision until each part's control points lie within tolerance of its chord
 ///   segment (the convex hull property makes it a guaranteed bound). About 1.6x the
-///   near-optimal count on cubics (WORKLOADS.md, W3). Cost O(p^2) per halving.
+///   near-optimal count on cubics (W3 of docs/performance.md). Cost O(p^2) per halving.
 /// - `uniform`: n equal parameter steps, n from Wang's bound [Wang84; Filip86] (a proven
 ///   bound for polynomial pieces; for rational pieces Wang's formula on the Cartesian
 ///   points, doubled until every step passes the exact check below). Cheapest per vertex.

@@ -30,7 +30,7 @@ struct Projection {
   std::vector<Interval<T>> intervals;
 };
 
-/// Relative tolerance under which two distances tie (shared/spec/cli.md, `project`).
+/// Relative tolerance under which two distances tie (docs/cli.md, `project`).
 template <class T>
 inline constexpr T projection_tie = T(1e-12);
 

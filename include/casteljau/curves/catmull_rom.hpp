@@ -13,7 +13,7 @@
 namespace casteljau {
 
 /// The Catmull-Rom spline through points P_0..P_(N-1) with the parametrisation of
-/// shared/spec/cli.md: knot intervals d_i = |P_(i+1) - P_i|^alpha (1 for alpha = 0), knots
+/// docs/cli.md: knot intervals d_i = |P_(i+1) - P_i|^alpha (1 for alpha = 0), knots
 /// s_0 = 0, s_(i+1) = s_i + d_i.
 /// - Open (N >= 4): segment j = 0..N-4 runs from P_(j+1) to P_(j+2) on [s_(j+1), s_(j+2)]
 ///   shifted by -s_1, so the domain is [0, s_(N-2) - s_1]; P_0 and P_(N-1) only shape the

@@ -1,4 +1,4 @@
-// Curve JSON (shared/spec/cli.md): strict parsing with field-path errors, typed field
+// Curve JSON (docs/cli.md): strict parsing with field-path errors, typed field
 // readers, and writing curves, points and vectors.
 #pragma once
 
