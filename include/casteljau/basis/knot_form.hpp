@@ -50,14 +50,6 @@ std::vector<std::size_t> nonempty_spans(std::span<const T> U, int p) {
 }
 
 template <class V>
-bool all_finite_point(const V& v) {
-  for (int d = 0; d < V::dimension; ++d) {
-    if (!std::isfinite(v[d])) return false;
-  }
-  return true;
-}
-
-template <class V>
 void require_representable(const V& v, double u, const char* what) {
   for (int d = 0; d < V::dimension; ++d) {
     if (!std::isfinite(v[d])) {

@@ -164,6 +164,15 @@ std::ostream& write_coordinates(std::ostream& os, const std::array<T, D>& c) {
   for (std::size_t i = 0; i < D; ++i) os << (i ? ", " : "") << format_number(c[i]);
   return os << ')';
 }
+
+/// Whether every coordinate of a point or vector is finite.
+template <class V>
+bool all_finite_point(const V& v) {
+  for (int d = 0; d < V::dimension; ++d) {
+    if (!std::isfinite(v[d])) return false;
+  }
+  return true;
+}
 }  // namespace detail
 
 /// Prints "(2, 1.5)": shortest round-trip coordinates.

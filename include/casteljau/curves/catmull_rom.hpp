@@ -282,5 +282,7 @@ const Pieces<T, D>& pieces(const CatmullRom<T, D>& c) {
 }
 
 static_assert(DifferentiableCurve<CatmullRom<double, 2>>);
+static_assert(Curve<CatmullRom<double, 1>>);
+static_assert(PiecewiseBezierCurve<CatmullRom<double, 2>>);
 
 }  // namespace casteljau

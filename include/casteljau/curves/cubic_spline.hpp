@@ -489,6 +489,8 @@ Pieces<T, D> pieces(const CubicSpline<T, D>& c) {
 }
 
 static_assert(DifferentiableCurve<CubicSpline<double, 2>>);
+static_assert(Curve<CubicSpline<double, 1>>);
+static_assert(PiecewiseBezierCurve<CubicSpline<double, 2>>);
 
 /// The antiderivative F(u) = integral from u_0 to u of C, as exact quartic Bézier pieces
 /// on the same breaks (a "curve" whose points are the integral vectors): on a piece with

@@ -547,5 +547,7 @@ Pieces<T, D> pieces(const Hermite<T, D>& c) {
 }
 
 static_assert(DifferentiableCurve<Hermite<double, 2>>);
+static_assert(Curve<Hermite<double, 1>>);
+static_assert(PiecewiseBezierCurve<Hermite<double, 2>>);
 
 }  // namespace casteljau

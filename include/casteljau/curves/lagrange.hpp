@@ -208,5 +208,7 @@ Pieces<T, D> pieces(const Lagrange<T, D>& c) {
 }
 
 static_assert(DifferentiableCurve<Lagrange<double, 2>>);
+static_assert(Curve<Lagrange<double, 1>>);
+static_assert(PiecewiseBezierCurve<Lagrange<double, 2>>);
 
 }  // namespace casteljau

@@ -62,6 +62,7 @@ Pieces<T, D> pieces(const Path<T, D>& c) {
   }
   return Pieces<T, D>(std::move(segs), std::move(breaks));
 }
+static_assert(PiecewiseBezierCurve<Path<double, 2>>);
 
 /// Every curve as a Path of Bézier and rational Bézier segments with the curve's own
 /// parametrisation and breaks at its piece boundaries (the `to_bezier` command).

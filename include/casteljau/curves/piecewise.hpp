@@ -229,6 +229,9 @@ template <class T, int D>
 const Pieces<T, D>& pieces(const Pieces<T, D>& c) {
   return c;
 }
+static_assert(PiecewiseBezierCurve<Bezier<double, 2>>);
+static_assert(PiecewiseBezierCurve<RationalBezier<double, 2>>);
+static_assert(PiecewiseBezierCurve<Pieces<double, 2>>);
 
 /// Appends the segments of a composite curve (Pieces, Path) whose domain is mapped
 /// affinely onto [lo, hi] of another composite curve: the one splice of a segment's pieces
