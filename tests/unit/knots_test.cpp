@@ -73,7 +73,7 @@ TEST(KnotInsertion, Errors) {
   EXPECT_INVALID_ARGUMENT(c.insert_knot(1.5), "knot", "domain");
   EXPECT_INVALID_ARGUMENT(c.insert_knot(std::nan("")), "knot", "finite");
   EXPECT_INVALID_ARGUMENT(c.insert_knot(0.5, 2), "times", "exceed the degree");
-  EXPECT_INVALID_ARGUMENT(c.insert_knot(1.0), "times", "exceed the degree");  // clamped end
+  EXPECT_INVALID_ARGUMENT(c.insert_knot(1.0), "times", "inserting it once more would exceed the degree 2");  // clamped end
   EXPECT_INVALID_ARGUMENT(c.insert_knot(0.25, 0), "times", ">= 1");
   const std::vector<double> X{0.5, 0.5};
   EXPECT_INVALID_ARGUMENT(c.refine_knots(X), "knots[0]", "multiplicity 3");

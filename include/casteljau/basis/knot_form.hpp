@@ -74,7 +74,8 @@ void check_insertion(std::span<const T> U, int p, T u, int times) {
   const std::size_t s = knot_multiplicity<T>(U, u);
   if (s + static_cast<std::size_t>(times) > static_cast<std::size_t>(p)) {
     throw InvalidArgument("times", "knot " + format_number(u) + " has multiplicity " + std::to_string(s) + "; inserting it " +
-                                       std::to_string(times) + " more times would exceed the degree " + std::to_string(p));
+                                       (times == 1 ? std::string("once more") : std::to_string(times) + " more times") +
+                                       " would exceed the degree " + std::to_string(p));
   }
 }
 
@@ -251,7 +252,7 @@ void check_removal(std::span<const T> U, int p, T u, int times, T tolerance) {
   if (times < 1) throw InvalidArgument("times", "removal count must be >= 1, got " + std::to_string(times));
   if (static_cast<std::size_t>(times) > s) {
     throw InvalidArgument("times", "knot " + format_number(u) + " has multiplicity " + std::to_string(s) + ", cannot remove it " +
-                                       std::to_string(times) + " times");
+                                       std::to_string(times) + " times");  // times > s >= 1 here: never "1 times"
   }
   require_finite(tolerance, "tolerance");
   if (!(tolerance > 0)) throw InvalidArgument("tolerance", "tolerance must be > 0, got " + format_number(tolerance));
