@@ -14,6 +14,7 @@
 namespace {
 
 using namespace casteljau;
+using casteljau::test::max_distance;
 using P2 = Point<double, 2>;
 using Curve2 = BSpline<double, 2>;
 
@@ -25,16 +26,6 @@ std::vector<P2> some_points(int n, std::uint64_t seed) {
 }
 
 /// max |a(u) - b(u)| at 201 parameters of [lo, hi].
-template <class A, class B>
-double max_distance(const A& a, const B& b, double lo, double hi) {
-  double d = 0;
-  for (int i = 0; i <= 200; ++i) {
-    const double u = lo + (hi - lo) * i / 200;
-    d = std::max(d, distance(a(u), b(u)));
-  }
-  return d;
-}
-
 // [PT97, Ex. 5.1]: p = 3, U = {0,0,0,0,1,2,3,4,5,5,5,5}, insert u = 5/2 (span k = 5):
 // alpha_3 = 5/6, alpha_4 = 1/2, alpha_5 = 1/6, so Q_3 = 5/6 P_3 + 1/6 P_2,
 // Q_4 = 1/2 P_4 + 1/2 P_3, Q_5 = 1/6 P_5 + 5/6 P_4; Q_0..Q_2 = P_0..P_2, Q_6..Q_8 = P_5..P_7.

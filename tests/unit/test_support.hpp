@@ -17,6 +17,18 @@ namespace casteljau::test {
 /// Machine epsilon of double, the unit of the tests' tolerances.
 inline constexpr double eps = std::numeric_limits<double>::epsilon();
 
+/// The largest distance between two curves at equal parameters, sampled at samples + 1
+/// equally spaced parameters of [lo, hi].
+template <class A, class B>
+double max_distance(const A& a, const B& b, double lo, double hi, int samples = 200) {
+  double d = 0;
+  for (int i = 0; i <= samples; ++i) {
+    const double u = lo + (hi - lo) * i / samples;
+    d = std::max(d, distance(a(u), b(u)));
+  }
+  return d;
+}
+
 /// splitmix64 (Steele, Lea, Flood 2014): a tiny, fully specified generator, so the
 /// reference data are the same on every platform and standard library.
 class SplitMix64 {
