@@ -133,17 +133,7 @@ class Nurbs {
   /// exceeds the tolerance, or that needs a weight <= 0, is refused ("tolerance").
   [[nodiscard]] DegreeReduction<Nurbs> reduce_degree(T tolerance) const {
     detail::check_reduction<T>(degree(), tolerance);
-    const Box<T, D> box = control_bounds();
-    PointType c;
-    for (int d = 0; d < D; ++d) c[d] = box.lo[d] / 2 + box.hi[d] / 2;
-    KnotForm<T, Point<T, D + 1>> f = h_.form();
-    for (auto& q : f.P)
-      for (int d = 0; d < D; ++d) q[d] -= q[D] * c[d];  // w (P - c)
-    T wmin = f.P.front()[D], radius = 0;
-    for (std::size_t i = 0; i < f.P.size(); ++i) {
-      wmin = std::min(wmin, f.P[i][D]);
-      radius = std::max(radius, norm(P_[i] - c));
-    }
+    auto [f, c, wmin, radius] = centred_form();
     const T scale = std::sqrt(1 + radius * radius) / wmin;
     detail::FormReduction<T, Point<T, D + 1>> r = detail::reduce_degree_form<T, Point<T, D + 1>>(f, tolerance, scale);
     T reach = radius;
@@ -176,18 +166,7 @@ class Nurbs {
   /// w_min is the smallest weight. A removal that makes a weight non-positive is refused.
   [[nodiscard]] KnotRemoval<Nurbs> remove_knot(T u, int times = 1, T tolerance = T(1e-12)) const {
     detail::check_removal<T>(knots(), degree(), u, times, tolerance);
-    const Box<T, D> box = control_bounds();
-    PointType c;
-    for (int d = 0; d < D; ++d) c[d] = box.lo[d] / 2 + box.hi[d] / 2;
-    KnotForm<T, Point<T, D + 1>> f = h_.form();
-    for (auto& q : f.P)
-      for (int d = 0; d < D; ++d) q[d] -= q[D] * c[d];  // w (P - c)
-    T wmin = f.P.front()[D];
-    T radius = 0;
-    for (std::size_t i = 0; i < f.P.size(); ++i) {
-      wmin = std::min(wmin, f.P[i][D]);
-      radius = std::max(radius, norm(P_[i] - c));
-    }
+    auto [f, c, wmin, radius] = centred_form();
     KnotForm<T, Point<T, D + 1>> best = f, g = f;
     int removed = 0;
     for (int j = 1; j <= times; ++j) {
@@ -329,6 +308,31 @@ class Nurbs {
   friend bool operator==(const Nurbs&, const Nurbs&) = default;
 
  private:
+  /// The homogeneous form taken relative to the centre c of the control box (points
+  /// w (P - c), which the curve does not notice), with the smallest weight and the radius
+  /// max |P_i - c|: the setting of the Cartesian error bounds of reduce_degree and
+  /// remove_knot [PT97, eq. 5.30].
+  struct CentredForm {
+    KnotForm<T, Point<T, D + 1>> form;
+    PointType centre;
+    T wmin;
+    T radius;
+  };
+  [[nodiscard]] CentredForm centred_form() const {
+    const Box<T, D> box = control_bounds();
+    PointType c;
+    for (int d = 0; d < D; ++d) c[d] = box.lo[d] / 2 + box.hi[d] / 2;
+    KnotForm<T, Point<T, D + 1>> f = h_.form();
+    for (auto& q : f.P)
+      for (int d = 0; d < D; ++d) q[d] -= q[D] * c[d];  // w (P - c)
+    T wmin = f.P.front()[D], radius = 0;
+    for (std::size_t i = 0; i < f.P.size(); ++i) {
+      wmin = std::min(wmin, f.P[i][D]);
+      radius = std::max(radius, norm(P_[i] - c));
+    }
+    return {std::move(f), c, wmin, radius};
+  }
+
   /// (w_i P_i, w_i) with the weights scaled as the class comment says; checks the weights
   /// and points (the knots are checked by the B-spline made of them).
   static std::vector<Point<T, D + 1>> homogeneous_points(const std::vector<PointType>& P, const std::vector<T>& w) {
