@@ -338,7 +338,9 @@ TEST(FlattenOptimal, CompiledWalkSameInEveryInstructionSet) {
       ++compared;
     }
   }
-  if (isas.size() > 1) EXPECT_EQ(compared, 300 * static_cast<int>(isas.size() - 1));
+  if (isas.size() > 1) {
+    EXPECT_EQ(compared, 300 * static_cast<int>(isas.size() - 1));
+  }
   std::vector<Point<float, 2>> Qf{{0, 0}, {1, 2}, {3, -1}, {4, 1}};
   const Bezier<float, 2> cf(Qf);
   const auto pf = flatten(cf, 1e-3f, FlattenMethod::optimal);
