@@ -70,17 +70,27 @@ bench:
 	cmake --build $(BENCH_BUILD) -j $(JOBS) --target casteljau_bench_w1_native casteljau_bench_w1_generic casteljau_bench_w2 casteljau_bench_w3 casteljau_bench_w4 casteljau_bench_w5 casteljau_bench_w6
 	/usr/bin/python3 bench/run.py $(BENCH_BUILD)
 
-# libFuzzer (clang) with ASan+UBSan on the command line's request handling, for
-# FUZZ_SECONDS; new inputs go to $(FUZZ_BUILD)/corpus, crashes to $(FUZZ_BUILD)/crash-*.
-# Copy a crash into tests/fuzz/corpus once fixed, so every `make test` replays it.
+# libFuzzer (clang) with ASan+UBSan on the fuzz target FUZZ_TARGET (tests/fuzz: `request`,
+# the JSON request reader and the command it names), for FUZZ_SECONDS. The whole project is
+# instrumented for coverage (CASTELJAU_FUZZ); -O0 with line tables, as the sanitizer build.
+# New inputs go to $(FUZZ_BUILD)/corpus-$(FUZZ_TARGET), crashes to $(FUZZ_BUILD)/crash-*;
+# libFuzzer's final statistics (edges: cov, inputs: number_of_executed_units) end the run.
+# Copy a crash into tests/fuzz/corpus/$(FUZZ_TARGET)/ once fixed, so every `make test`
+# replays it (casteljau_fuzz_replay $(FUZZ_TARGET) FILE replays one input).
+FUZZ_TARGET ?= request
+# More libFuzzer options, e.g. FUZZ_FLAGS=-timeout=300 on a loaded machine (the timeout is
+# wall-clock time).
+FUZZ_FLAGS ?=
+FUZZ_DICT = $(wildcard tests/fuzz/$(FUZZ_TARGET).dict)
 fuzz:
 	@scripts/install-deps.sh build fuzz
-	cmake -S . -B $(FUZZ_BUILD) -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_COMPILER=clang++ \
-	  -DCASTELJAU_SANITIZE=ON -DCASTELJAU_FUZZ=ON
-	cmake --build $(FUZZ_BUILD) -j $(JOBS) --target casteljau_fuzz_request
-	mkdir -p $(FUZZ_BUILD)/corpus
-	cd $(FUZZ_BUILD) && tests/fuzz/casteljau_fuzz_request -max_total_time=$(FUZZ_SECONDS) -timeout=10 \
-	  -rss_limit_mb=4096 -artifact_prefix=$(abspath $(FUZZ_BUILD))/ corpus $(abspath tests/fuzz/corpus)
+	cmake -S . -B $(FUZZ_BUILD) $(call generator,$(FUZZ_BUILD)) -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_COMPILER=clang++ \
+	  "-DCMAKE_CXX_FLAGS_DEBUG=-O0 -gline-tables-only" -DCASTELJAU_SANITIZE=ON -DCASTELJAU_FUZZ=ON
+	cmake --build $(FUZZ_BUILD) -j $(JOBS) --target casteljau_fuzz_$(FUZZ_TARGET)
+	mkdir -p $(FUZZ_BUILD)/corpus-$(FUZZ_TARGET)
+	cd $(FUZZ_BUILD) && tests/fuzz/casteljau_fuzz_$(FUZZ_TARGET) -max_total_time=$(FUZZ_SECONDS) -timeout=10 \
+	  -rss_limit_mb=4096 -print_final_stats=1 $(if $(FUZZ_DICT),-dict=$(abspath $(FUZZ_DICT))) \
+	  $(FUZZ_FLAGS) -artifact_prefix=$(abspath $(FUZZ_BUILD))/ corpus-$(FUZZ_TARGET) $(abspath tests/fuzz/corpus/$(FUZZ_TARGET))
 
 # A Debian package of the library, its CMake package and the `casteljau` program (CPack);
 # prints the .deb's path. `dpkg -i` installs it (its dependencies: apt-get install -f).
