@@ -758,10 +758,19 @@ class BadInputTest(CliTest):
 def intersect_work(a, b=None):
     """The documented up-front estimate (docs/cli.md, intersect): over pairs of Bézier
     pieces of degrees n and m, (n + 1)(m + 1)(n + m + 2) / 2; for one curve, over its pairs
-    of distinct pieces. Pieces are given by their point counts n + 1."""
+    of distinct pieces. Pieces are given by their point counts n + 1; equal counts are
+    grouped (a 16,000-point polyline has 1.3e8 pairs), the sum taken over the groups."""
+    from collections import Counter
+    pair = lambda x, y: x * y * (x + y) // 2
+    ca = Counter(a)
     if b is None:
-        return sum(a[i] * a[j] * (a[i] + a[j]) // 2 for i in range(len(a)) for j in range(i + 1, len(a)))
-    return sum(x * y * (x + y) // 2 for x in a for y in b)
+        items = sorted(ca.items())
+        total = 0
+        for i, (x, nx) in enumerate(items):
+            total += nx * (nx - 1) // 2 * pair(x, x)  # pairs within the group
+            total += sum(nx * ny * pair(x, y) for y, ny in items[i + 1:])
+        return total
+    return sum(nx * ny * pair(x, y) for x, nx in ca.items() for y, ny in Counter(b).items())
 
 
 class WorkLimitTest(CliTest):
