@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <variant>
 
@@ -34,31 +35,6 @@ bool all_finite(const V& v) {
     if (!std::isfinite(v[d])) return false;
   }
   return true;
-}
-
-/// Wang's estimate of the segments that flattening a Bézier piece needs [Wang84; Filip86]:
-/// ceil(sqrt(n (n - 1) / 8 * max_i |P_i - 2 P_{i+1} + P_{i+2}| / tolerance)), computed on
-/// coordinates scaled by a power of two so that nothing overflows. For a rational piece
-/// the Cartesian control points give an estimate (not a bound), which is all a limit on
-/// the response size needs.
-template <class Piece>
-double wang_estimate(const Piece& c, double tolerance) {
-  const auto& P = c.points();
-  const int n = static_cast<int>(P.size()) - 1;
-  if (n < 2) return 1;
-  constexpr int D = Piece::dimension;
-  const int e = casteljau::detail::scale_exponent<typename Piece::PointType>(P);
-  double second = 0;
-  for (int i = 0; i + 2 <= n; ++i) {
-    double s2 = 0;
-    for (int d = 0; d < D; ++d) {
-      const double x = std::ldexp(P[i][d], -e) - 2 * std::ldexp(P[i + 1][d], -e) + std::ldexp(P[i + 2][d], -e);
-      s2 += x * x;
-    }
-    second = std::max(second, std::sqrt(s2));
-  }
-  // second * 2^e / tolerance, formed as a product of square roots to stay finite.
-  return std::ceil(std::sqrt(n * (n - 1) / 8.0 * second) * std::sqrt(std::ldexp(1.0, e)) / std::sqrt(tolerance));
 }
 
 /// Whether curve type C has the capability (a member the operation calls; only its
@@ -143,7 +119,11 @@ PointList flatten(const AnyCurve& c, double tolerance, FlattenMethod method) {
         if (std::isfinite(tolerance) && tolerance > 0) {
           double estimate = 0;
           for (const auto& piece : p.segments())
-            estimate += std::visit([&](const auto& b) { return wang_estimate(b, tolerance); }, piece);
+            // Wang's count of each piece (algo/flatten/uniform.hpp) on its coordinates as
+            // given and the tolerance in model units, overflow-safe; for a rational piece
+            // the Cartesian points give an estimate, which is all a limit needs.
+            estimate = std::min(std::numeric_limits<double>::max(),
+                                estimate + std::visit([&](const auto& b) { return casteljau::detail::wang_count(b, tolerance); }, piece));
           if (!(estimate <= static_cast<double>(max_flatten_vertices))) {
             throw InvalidArgument("tolerance", "the polyline would have about " + casteljau::detail::format_number(estimate) +
                                                    " vertices, more than the limit of " + std::to_string(max_flatten_vertices) +

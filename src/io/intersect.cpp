@@ -2,10 +2,13 @@
 // Bézier pieces, so the algorithm is instantiated for Pieces<double, 2> alone.
 #include "casteljau/io/intersect.hpp"
 
+#include <algorithm>
+#include <optional>
 #include <string>
 #include <variant>
 
 #include "casteljau/algo/intersect.hpp"
+#include "casteljau/algo/scalar_forms.hpp"
 
 namespace casteljau::io {
 
@@ -25,14 +28,112 @@ Pieces<double, 2> planar(const AnyCurve& c, const char* where) {
   return std::move(*q);
 }
 
-}  // namespace
+/// The sums over a curve's pieces of (n + 1), (n + 1)^2 and (n + 1)^3, n a piece's degree.
+struct PieceSums {
+  double s1 = 0, s2 = 0, s3 = 0;
+};
 
-Intersections<double> intersect(const AnyCurve& a, const AnyCurve& b) {
-  const Pieces<double, 2> pa = planar(a, "curves[0]");
-  const Pieces<double, 2> pb = planar(b, "curves[1]");
-  return casteljau::intersect(pa, pb);
+PieceSums piece_sums(const Pieces<double, 2>& p) {
+  PieceSums s;
+  for (const auto& seg : p.segments()) {
+    const double m = static_cast<double>(std::visit([](const auto& x) { return x.points().size(); }, seg));
+    s.s1 += m;
+    s.s2 += m * m;
+    s.s3 += m * m * m;
+  }
+  return s;
 }
 
-Intersections<double> self_intersect(const AnyCurve& a) { return casteljau::self_intersect(planar(a, "curves[0]")); }
+/// The same sums for the curve as given, before its pieces are made (for a B-spline of
+/// degree p on n control points that alone costs O(n p^2)): at most n - p pieces of degree
+/// p. Nothing for the types without a single degree (paths, interpolating splines), which
+/// are checked on their pieces.
+std::optional<PieceSums> given_sums(const AnyCurve& c) {
+  return std::visit(
+      [](const auto& x) -> std::optional<PieceSums> {
+        if constexpr (requires { x.degree(); x.points(); }) {
+          const double m = static_cast<double>(x.degree()) + 1;
+          const double k = std::max(1.0, static_cast<double>(x.points().size()) - m + 1);
+          return PieceSums{k * m, k * m * m, k * m * m * m};
+        } else {
+          return std::nullopt;
+        }
+      },
+      c);
+}
+
+/// Refuses a curve whose conversion to Bézier pieces alone would take more than the
+/// other queries' limit (see io/queries.hpp): pieces x (degree + 1)^2 from given_sums.
+void check_conversion(const AnyCurve& c, const char* where) {
+  const auto x = given_sums(c);
+  if (x && x->s2 > casteljau::detail::max_query_work) {
+    throw InvalidArgument(where, "making the curve's Bézier pieces would take about " + std::to_string(static_cast<long long>(x->s2)) +
+                                     " units of work (pieces x (degree + 1)^2), more than the limit of " +
+                                     std::to_string(static_cast<long long>(casteljau::detail::max_query_work)) +
+                                     ": use fewer control points or a lower degree");
+  }
+}
+
+/// The estimate of intersect_work from the sums (y null: the self-intersections of x).
+double work_of(const PieceSums& x, const PieceSums* y) {
+  // Over i, j: a_i b_j (a_i + b_j) / 2 with a_i = n_i + 1, b_j = m_j + 1.
+  if (y) return (x.s2 * y->s1 + x.s1 * y->s2) / 2;
+  // The pairs i < j of one curve: half the sum over i != j.
+  return (x.s2 * x.s1 - x.s3) / 2;
+}
+
+/// Refuses a request whose estimate (intersect_work) is past max_intersect_work, naming
+/// `field` and the figures.
+void check_intersect_work(double work, const std::string& field) {
+  if (work > max_intersect_work) {
+    throw InvalidArgument(field, "intersect would take about " + std::to_string(static_cast<long long>(work)) +
+                                     " units of work (pairs of Bézier pieces, (n + 1)(m + 1)(n + m + 2) / 2 summed over them for "
+                                     "degrees n and m), more than the limit of " +
+                                     std::to_string(static_cast<long long>(max_intersect_work)) +
+                                     ": use fewer pieces or points, or a lower degree");
+  }
+}
+
+/// The parameters of a curve on a single parameter (a one-point lagrange, whose pieces
+/// run to the next double) set to that parameter; others are left as they are.
+Intersections<double> on_domains(Intersections<double> r, const Interval<double>& da, const Interval<double>& db) {
+  if (da.lo == da.hi) {
+    for (auto& x : r.points) x.ta = da.lo;
+    for (auto& o : r.overlaps) o.a = da;
+  }
+  if (db.lo == db.hi) {
+    for (auto& x : r.points) x.tb = db.lo;
+    for (auto& o : r.overlaps) o.b_start = o.b_end = db.lo;
+  }
+  return r;
+}
+
+}  // namespace
+
+double intersect_work(const Pieces<double, 2>& a, const Pieces<double, 2>* b) {
+  const PieceSums x = piece_sums(a);
+  if (!b) return work_of(x, nullptr);
+  const PieceSums y = piece_sums(*b);
+  return work_of(x, &y);
+}
+
+Intersections<double> intersect(const AnyCurve& a, const AnyCurve& b) {
+  if (const auto x = given_sums(a), y = given_sums(b); x && y && dimension(a) == 2 && dimension(b) == 2)
+    check_intersect_work(work_of(*x, &*y), "curves");
+  check_conversion(a, "curves[0]");
+  check_conversion(b, "curves[1]");
+  const Pieces<double, 2> pa = planar(a, "curves[0]");
+  const Pieces<double, 2> pb = planar(b, "curves[1]");
+  check_intersect_work(intersect_work(pa, &pb), "curves");
+  return on_domains(casteljau::intersect(pa, pb), domain(a), domain(b));
+}
+
+Intersections<double> self_intersect(const AnyCurve& a) {
+  if (const auto x = given_sums(a); x && dimension(a) == 2) check_intersect_work(work_of(*x, nullptr), "curves[0]");
+  check_conversion(a, "curves[0]");
+  const Pieces<double, 2> p = planar(a, "curves[0]");
+  check_intersect_work(intersect_work(p, nullptr), "curves[0]");
+  return on_domains(casteljau::self_intersect(p), domain(a), domain(a));
+}
 
 }  // namespace casteljau::io

@@ -76,7 +76,16 @@ AnyProjection project(const AnyCurve& c, std::span<const double> point, bool far
           q[k] = point[static_cast<std::size_t>(k)];
         }
         check_work(p, "curve");
-        return AnyProjection(casteljau::project(p, q, farthest));
+        auto r = casteljau::project(p, q, farthest);
+        // A curve on a single parameter (a one-point lagrange: its pieces run to the next
+        // double) answers that parameter, and its domain as the interval.
+        const Interval<double> dom = domain(c);
+        if (dom.lo == dom.hi) {
+          r.t = dom.lo;
+          for (auto& u : r.all_t) u = dom.lo;
+          for (auto& i : r.intervals) i = dom;
+        }
+        return AnyProjection(std::move(r));
       },
       pieces(c));
 }

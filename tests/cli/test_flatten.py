@@ -13,6 +13,7 @@ import random
 import sys
 import unittest
 
+import mpmath
 import numpy as np
 
 import test_cli
@@ -109,6 +110,38 @@ class FlattenMethodsTest(CliTest):
         self.bad("flatten", {"curve": c, "tolerance": 0.1, "method": "fast"}, "method", contains="optimal")
         self.bad("flatten", {"curve": c, "tolerance": 0.1, "method": 3}, "method")
         self.bad("flatten", {"curve": c, "tolerance": 0, "method": "uniform"}, "tolerance")
+
+
+class FlattenEstimateTest(CliTest):
+    """The size estimate made before flattening (Wang's count summed over the pieces,
+    docs/cli.md) is a finite figure for coordinates near the largest double: the second
+    differences and the quotient overflow in plain double arithmetic (it said "about inf
+    vertices" before)."""
+
+    def figure(self, err):
+        return float(err.split("about ", 1)[1].split(" vertices", 1)[0])
+
+    def test_huge_coordinates(self):
+        # Wang's count of a quadratic: sqrt(2 * 1 / 8 * |P0 - 2 P1 + P2| / tol), in mpmath.
+        def wang(P, tol):
+            d = [mpmath.mpf(P[0][k]) - 2 * mpmath.mpf(P[1][k]) + mpmath.mpf(P[2][k]) for k in range(2)]
+            return mpmath.ceil(mpmath.sqrt(mpmath.mpf(1) / 4 * mpmath.norm(d) / mpmath.mpf(tol)))
+        cases = [([[-1.7e308, 0], [1.7e308, 1.7e308], [-1.7e308, 0]], 1),
+                 ([[-1.7e308, 0], [1.7e308, 1.7e308], [-1.7e308, 0]], 1e-300),
+                 ([[0, 0], [1e300, 1e300], [2e300, 0]], 1e-300),
+                 ([[0, 0], [1e300, 1e300], [2e300, 0]], 1e-290)]
+        for P, tol in cases:
+            err = self.bad("flatten", {"curve": bezier(P), "tolerance": tol, "method": "uniform"}, "tolerance",
+                           contains="vertices, more than the limit of 1000000")
+            # 1e-14 relative: the rounding of a few products and square roots.
+            want = wang(P, tol)
+            self.assertLessEqual(abs(self.figure(err) - float(want)), 1e-14 * float(want), (P, tol, err))
+        # A tolerance that leaves a few steps answers, with the ends as given.
+        P = [[0, 0], [1e300, 1e300], [2e300, 0]]
+        r = self.ok("flatten", {"curve": bezier(P), "tolerance": 1e299, "method": "uniform"})
+        self.assertEqual(r["points"][0], P[0])
+        self.assertEqual(r["points"][-1], P[-1])
+        self.assertEqual(len(r["points"]) - 1, int(wang(P, 1e299)))
 
 
 if __name__ == "__main__":

@@ -755,6 +755,62 @@ class BadInputTest(CliTest):
         self.bad("intersect", {"curves": [line, high]}, "curves[1]", contains="degree 500")
 
 
+def intersect_work(a, b=None):
+    """The documented up-front estimate (docs/cli.md, intersect): over pairs of Bézier
+    pieces of degrees n and m, (n + 1)(m + 1)(n + m + 2) / 2; for one curve, over its pairs
+    of distinct pieces. Pieces are given by their point counts n + 1; equal counts are
+    grouped (a 16,000-point polyline has 1.3e8 pairs), the sum taken over the groups."""
+    from collections import Counter
+    pair = lambda x, y: x * y * (x + y) // 2
+    ca = Counter(a)
+    if b is None:
+        items = sorted(ca.items())
+        total = 0
+        for i, (x, nx) in enumerate(items):
+            total += nx * (nx - 1) // 2 * pair(x, x)  # pairs within the group
+            total += sum(nx * ny * pair(x, y) for y, ny in items[i + 1:])
+        return total
+    return sum(nx * ny * pair(x, y) for x, nx in ca.items() for y, ny in Counter(b).items())
+
+
+class WorkLimitTest(CliTest):
+    LIMIT = 10 ** 9
+
+    def test_runaway_requests_are_refused_with_the_figure(self):
+        rng = random.Random(20000)
+        walk = lambda n: {"type": "polyline", "points": [[rng.uniform(-1, 1) + i, rng.uniform(-1, 1)] for i in range(n)]}
+        # Two 20,000-point polylines: 19,999^2 pairs of segments, 8 units each.
+        want = intersect_work([2] * 19999, [2] * 19999)
+        self.assertEqual(want, 8 * 19999 ** 2)
+        err = self.bad("intersect", {"curves": [walk(20000), walk(20000)]}, "curves",
+                       contains=f"about {want} units of work")
+        self.assertIn(f"limit of {self.LIMIT}", err)
+        # One 16,000-point polyline's self-intersections: 15,999 * 15,998 / 2 pairs.
+        want = intersect_work([2] * 15999)
+        self.assertGreater(want, self.LIMIT)
+        self.bad("intersect", {"curves": [walk(16000)]}, "curves[0]", contains=f"about {want} units of work")
+        # Eight degree-500 pieces against a degree-500 curve: 8 pairs of 501 * 501 * 1002 / 2.
+        bez = lambda: bezier([[rng.random(), rng.random()] for _ in range(501)])
+        path = {"type": "path", "segments": [bez() for _ in range(8)]}
+        self.bad("intersect", {"curves": [path, bez()]}, "curves", contains=f"about {intersect_work([501] * 8, [501])} units")
+        # A B-spline is estimated before its pieces are made (for 2,700 pieces of degree 300
+        # that alone takes a minute): at most n - p pieces of degree p.
+        bs = {"type": "bspline", "degree": 300, "knots": [0] * 301 + list(range(1, 2700)) + [2700] * 301,
+              "points": [[i, rng.random()] for i in range(3000)]}
+        self.bad("intersect", {"curves": [bs]}, "curves[0]", contains=f"about {intersect_work([301] * 2700)} units")
+        self.bad("intersect", {"curves": [bezier([[0, 0], [1, 1]]), bs]}, "curves[1]",
+                 contains=f"about {2700 * 301 ** 2} units of work (pieces x (degree + 1)^2)")
+
+    def test_reasonable_requests_run(self):
+        # Under the limit: two 1,000-point polylines (8e6 units) and two degree-500 curves
+        # (1.3e8) answer; polylines that meet nowhere give nothing.
+        rng = random.Random(1000)
+        a = {"type": "polyline", "points": [[i / 1000, rng.random()] for i in range(1000)]}
+        b = {"type": "polyline", "points": [[i / 1000, 2 + rng.random()] for i in range(1000)]}
+        self.assertEqual(self.ok("intersect", {"curves": [a, b]}), {"intersections": [], "overlaps": []})
+        self.assertLess(intersect_work([501], [501]), self.LIMIT)
+
+
 if __name__ == "__main__":
     test_cli.BINARY = os.path.abspath(sys.argv.pop(1))
     unittest.main(verbosity=1)

@@ -14,6 +14,7 @@ import random
 import sys
 import unittest
 
+import mpmath
 import numpy as np
 from mpmath import mpf
 from scipy.interpolate import CubicSpline
@@ -320,6 +321,196 @@ class HighDegreeTest(CliTest):
         for k in range(2):
             self.assertLessEqual(box["min"][k], p["point"][k])
             self.assertGreaterEqual(box["max"][k], p["point"][k])
+
+
+# ---------------------------------------------------------------------------------------
+# Rational curves with extreme weights (section 6 of the renovation issue). The rational
+# quadratic with points (1, 0), (1, 1), (0, 1) and weights [1, w, 1] is a conic; with a
+# huge w it runs within about 1 / w of its control polygon (legs x = 1 and y = 1), with a
+# tiny one within about w of the chord. Reference values: closed forms of this conic,
+# written here, in mpmath at 60 digits (enough for w up to 1e300: the forms below have no
+# cancellation).
+
+CONIC_P = [[1, 0], [1, 1], [0, 1]]
+
+
+def conic(w):
+    return {"type": "rational_bezier", "points": CONIC_P, "weights": [1, w, 1]}
+
+
+def conic_point(w, t):
+    """The conic at t (mpmath)."""
+    w, t = mpf(w), mpf(t)
+    b = [(1 - t) ** 2, 2 * t * (1 - t) * w, t ** 2]
+    W = sum(b)
+    return [sum(b[i] * CONIC_P[i][k] for i in range(3)) / W for k in range(2)]
+
+
+def conic_t_at_y_half(w):
+    """The t where y(t) = 1/2: 2 w t (1 - t) + 2 t - 1 = 0, the root in (0, 1/2) written
+    without cancellation: t = 1 / ((w + 1) + sqrt(w^2 + 1))."""
+    w = mpf(w)
+    return 1 / ((w + 1) + mpmath.sqrt(w * w + 1))
+
+
+class ExtremeWeightsTest(CliTest):
+    HUGE = (1e100, 1e200, 1e300)
+    TINY = (1e-100, 1e-200, 1e-300)
+
+    def test_flatten_every_method(self):
+        # The polyline runs within the tolerance of the curve: from (1, 0) to (0, 1) and
+        # within the tolerance of the corner (1, 1), which the curve passes within 1e-100;
+        # every vertex lies on the curve, so within 1e-12 of a leg (the curve is within
+        # 1e-100 of them; 1e-12 allows the rounding of the vertices). Weights 1e200 and
+        # 1e300 refused the default (optimal) method before: a second derivative of 1e400.
+        tol = 1e-3
+        for w in self.HUGE:
+            for method in ("optimal", "uniform", "subdivision"):
+                pts = self.ok("flatten", {"curve": conic(w), "tolerance": tol, "method": method})["points"]
+                self.assertEqual(pts[0], [1.0, 0.0])
+                self.assertEqual(pts[-1], [0.0, 1.0])
+                for x, y in pts:
+                    self.assertLessEqual(min(abs(x - 1), abs(y - 1)), 1e-12, (w, method, pts))
+                near = min(math.dist(v, (1, 1)) for v in pts)
+                self.assertLessEqual(near, tol, (w, method, pts))
+
+    def test_area_of_the_closed_conic(self):
+        # The conic closed by the chord from (0, 1) back to (1, 0): the triangle's area
+        # 1/2 less the sliver of width about 1 / w along the legs (below 1e-99: the double
+        # nearest is 0.5). Quadrature in t failed on it before (its ends take 1e-100 of
+        # the parameter).
+        for w in self.HUGE:
+            c = {"type": "path", "segments": [conic(w), bezier([[0, 1], [1, 0]])]}
+            # 1e-13 relative: the quadrature's tolerance (docs/accuracy.md), summed over parts.
+            self.assertLessEqual(abs(self.ok("area", {"curve": c})["area"] - 0.5), 1e-13, w)
+        for w in self.TINY:
+            # Within about w of the chord: an area below 1e-99, against the quadrature's
+            # absolute accuracy of 1e-13 of the integrand's size (about 1).
+            c = {"type": "path", "segments": [conic(w), bezier([[0, 1], [1, 0]])]}
+            self.assertLessEqual(abs(self.ok("area", {"curve": c})["area"]), 1e-13, w)
+        # Not closed: the closure is named, not a failed quadrature.
+        self.bad("area", {"curve": conic(1e200)}, "curve", contains="closed")
+
+    def test_intersect_with_lines(self):
+        # Weights tiny: within w of the chord x + y = 1, which the diagonal meets at
+        # (1/2, 1/2), t = 1/2 on both. (Huge weights are a known gap of the engine: a
+        # crossing of the leg x = 1 within 1e-100 of t = 0 is missed.)
+        for w in self.TINY:
+            r = self.ok("intersect", {"curves": [conic(w), bezier([[0, 0], [2, 2]])]})
+            self.assertEqual(len(r["intersections"]), 1, (w, r))
+            self.assert_close(r["intersections"][0]["t"], [0.5, 0.25], 1e-15)
+            self.assert_close(r["intersections"][0]["point"], [0.5, 0.5], 1e-15)
+        for w in self.HUGE + self.TINY:
+            self.assertEqual(self.ok("intersect", {"curves": [conic(w)]}), {"intersections": [], "overlaps": []})
+
+    def test_queries_that_were_right(self):
+        # Regression guard for the queries that answered correctly already: eval, bounds,
+        # length, project, distance, features, split, elevate, to_bezier.
+        for w in self.HUGE + self.TINY:
+            c = conic(w)
+            r = self.ok("eval", {"curve": c, "t": [0, 0.5, 0.25, 1]})
+            for t, p in zip([0, 0.5, 0.25, 1], r["points"]):
+                self.assert_close(p, [float(v) for v in conic_point(w, t)], 1e-15)
+            self.assertEqual(self.ok("bounds", {"curve": c}), {"min": [0.0, 0.0], "max": [1.0, 1.0]})
+            # Length: within 1/w of 2 (the legs) or of sqrt(2) (the chord), relative 1e-12.
+            want = 2.0 if w > 1 else math.sqrt(2)
+            self.assertLessEqual(abs(self.ok("length", {"curve": c})["length"] - want), 1e-12 * want, w)
+            self.assertEqual(self.ok("features", {"curve": c}), {"inflections": [], "cusps": [], "extrema": [[], []]})
+            halves = self.ok("split", {"curve": c, "t": 0.5})["curves"]
+            for h, (lo, hi) in zip(halves, [(0, 0.5), (0.5, 1)]):
+                q = self.ok("eval", {"curve": h, "t": [0.5]})["points"][0]
+                self.assert_close(q, [float(v) for v in conic_point(w, (lo + hi) / 2)], 1e-15)
+            e = self.ok("elevate", {"curve": c, "times": 1})["curve"]
+            q = self.ok("eval", {"curve": e, "t": [0.25]})["points"][0]
+            self.assert_close(q, [float(v) for v in conic_point(w, 0.25)], 1e-15)
+        for w in self.HUGE:
+            # The point (2, 1/2) is nearest to the leg x = 1 at y = 1/2: distance 1.
+            p = self.ok("project", {"curve": conic(w), "point": [2, 0.5]})
+            self.assertLessEqual(abs(p["distance"] - 1), 1e-15)
+            t = conic_t_at_y_half(w)
+            self.assertLessEqual(abs(p["t"] - float(t)), 1e-12 * float(t))
+            d = self.ok("distance", {"curves": [conic(w), bezier([[2, 0.5], [3, 0.5]])]})
+            self.assertLessEqual(abs(d["distance"] - 1), 1e-15)
+
+
+class ConstantLagrangeTest(CliTest):
+    """A one-point lagrange is the constant polynomial: its domain is the single param.
+    Every command answers as for a curve standing still at the point (docs/cli.md,
+    "lagrange and catmull_rom"), with parameters the param itself."""
+
+    P, U = [1.0, 2.0], 2.5
+
+    def curve(self):
+        return {"type": "lagrange", "params": [self.U], "points": [self.P]}
+
+    def test_answers(self):
+        c = self.curve()
+        self.assertEqual(self.ok("bounds", {"curve": c}), {"min": self.P, "max": self.P})
+        self.assertEqual(self.ok("bounds", {"curve": c, "from": self.U, "to": self.U}), {"min": self.P, "max": self.P})
+        self.assertEqual(self.ok("length", {"curve": c}), {"length": 0.0})
+        self.assertEqual(self.ok("param_at_length", {"curve": c, "lengths": [0]}), {"t": [self.U]})
+        self.assertEqual(self.ok("features", {"curve": c}), {"inflections": [], "cusps": [], "extrema": [[], []]})
+        for method in ("optimal", "uniform", "subdivision"):
+            self.assertEqual(self.ok("flatten", {"curve": c, "tolerance": 0.1, "method": method}), {"points": [self.P, self.P]})
+        # The distance is constant over the (one-parameter) domain: the interval is the
+        # domain itself, [2.5, 2.5] (it ran to the next double, 2.5000000000000004, before).
+        d = math.dist(self.P, [0, 0])
+        for farthest in (False, True):
+            r = self.ok("project", {"curve": c, "point": [0, 0], "farthest": farthest})
+            self.assertEqual(r["t"], self.U)
+            self.assertEqual(r["point"], self.P)
+            self.assertLessEqual(abs(r["distance"] - d), 1e-15 * d)
+            self.assertEqual(r["intervals"], [[self.U, self.U]])
+        r = self.ok("distance", {"curves": [c, bezier([[0, 0], [2, 4]])]})
+        self.assertEqual(r["t"], [self.U, 0.5])
+        self.assertEqual(r["distance"], 0.0)
+        # Two copies coincide: one overlap, on the param in both.
+        self.assertEqual(self.ok("intersect", {"curves": [c, c]}),
+                         {"intersections": [], "overlaps": [{"a": [self.U, self.U], "b": [self.U, self.U]}]})
+        self.assertEqual(self.ok("intersect", {"curves": [c]}), {"intersections": [], "overlaps": []})
+        r = self.ok("intersect", {"curves": [c, bezier([[0, 0], [2, 4]])]})
+        self.assertEqual([x["t"] for x in r["intersections"]], [[self.U, 0.5]])
+        # Its Bézier form: the one-point bezier on [param, the next double].
+        self.assertEqual(self.ok("to_bezier", {"curve": c}),
+                         {"curve": {"type": "path", "segments": [bezier([self.P])], "breaks": [self.U, math.nextafter(self.U, math.inf)]}})
+        self.assertEqual(self.ok("eval", {"curve": c, "t": [self.U, -7], "derivatives": 1}),
+                         {"points": [self.P, self.P], "derivatives": [[[0.0, 0.0], [0.0, 0.0]]]})
+
+    def test_refusals(self):
+        c = self.curve()
+        self.bad("eval", {"curve": c, "t": [self.U], "curvature": True}, "t[0]", contains="velocity is zero")
+        self.bad("length", {"curve": c, "from": 2, "to": self.U}, "from", contains="domain")
+        self.bad("param_at_length", {"curve": c, "lengths": [1]}, "lengths[0]")
+        self.bad("split", {"curve": c, "t": self.U}, "curve.type")
+        self.bad("elevate", {"curve": c, "times": 1}, "curve.type")
+
+
+class CurveParameterInErrorsTest(CliTest):
+    """Errors of piecewise curves quote the parameter the request sent, not a segment's
+    own parameter (a path on [10, 30] evaluated at 1e5 is its second segment at 9998)."""
+
+    def path(self, segment):
+        return {"type": "path", "segments": [bezier([[0, 0], [1, 0]]), segment], "breaks": [10, 20, 30]}
+
+    def test_eval_far_outside(self):
+        bs = {"type": "bspline", "degree": 2, "knots": [0, 0, 0, 1, 1, 1], "points": [[0, 0], [1e300, 1e300], [2, 0]]}
+        lag = {"type": "lagrange", "params": [0, 1, 2], "points": [[0, 0], [1, 1e300], [2, 0]]}
+        high = bezier([[i, (i * 7) % 5] for i in range(21)])
+        # (segment, t, how the message writes t, the segment's own parameter there)
+        for seg, t, sent, local in [(bs, 1e5, "1e+05", "9998"), (lag, 1e5, "1e+05", "19996"),
+                                    (high, 1e200, "1e+200", "9.999999999999999e+198"), (bs, 1e200, "1e+200", "9.999999999999999e+198")]:
+            for extra in ({}, {"derivatives": 2}, {"curvature": True}):
+                err = self.bad("eval", dict({"curve": self.path(seg), "t": [10, t]}, **extra), "t[1]")
+                self.assertIn(f"at t = {sent} ", err)
+                self.assertNotIn(local, err)
+
+    def test_ranges_and_lengths(self):
+        # The fields named, with the user's values, for a path on [10, 30].
+        p = self.path({"type": "polyline", "points": [[1, 0], [2, 1], [3, 0]]})
+        self.bad("bounds", {"curve": p, "from": 25, "to": 40}, "to", contains="got 40")
+        self.bad("length", {"curve": p, "from": 5, "to": 25}, "from", contains="got 5")
+        self.bad("length", {"curve": p, "from": 25, "to": 22}, "to", contains="got 22")
+        self.bad("param_at_length", {"curve": p, "lengths": [100]}, "lengths[0]", contains="got 100")
 
 
 if __name__ == "__main__":

@@ -6,6 +6,7 @@
 // (flatten_oracle.hpp).
 #include <algorithm>
 #include <cmath>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -445,4 +446,21 @@ TEST(FlattenOptimal, CountsNearTheGreedyCount) {
   }
 }
 
+// Wang's count (detail::wang_count) stays finite where its plain form overflows: the
+// second difference of a parabola with coordinates near the largest double, and a
+// tolerance near the smallest normal number. Closed form: for P0, P1, P2 the count is
+// ceil(sqrt(2 * 1 / 8 * |P0 - 2 P1 + P2| / tol)), here |P0 - 2 P1 + P2| = 4 * 2^1020 (y)
+// and tol = 2^-1000, so sqrt(2^1020 / 2^-1000) = 2^1010, an exact power of two.
+TEST(FlattenUniform, WangCountOverflowSafe) {
+  const double big = std::ldexp(1.0, 1020);
+  const std::vector<P2> P{P2{-big, 0}, P2{0, 2 * big}, P2{big, 0}};
+  const double tol = std::ldexp(1.0, -1000);
+  const double n = casteljau::detail::wang_count(std::span<const P2>(P), tol);
+  EXPECT_EQ(n, std::ldexp(1.0, 1010));
+  // The plain form where nothing overflows (unit coordinates): the same formula.
+  const std::vector<P2> Q{P2{-1, 0}, P2{0, 2}, P2{1, 0}};
+  EXPECT_EQ(casteljau::detail::wang_count(std::span<const P2>(Q), 1e-2), std::ceil(std::sqrt(0.25 * 4 / 1e-2)));
+}
+
 }  // namespace
+

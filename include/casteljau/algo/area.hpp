@@ -55,6 +55,14 @@ typename C::Scalar area(const C& c) {
     // (a - o) x (b - o): the chord's term of the sum.
     twice += (a[0] - origin[0]) * (b[1] - origin[1]) - (a[1] - origin[1]) * (b[0] - origin[0]);
   };
+  {
+    // Closed at all, before any integration (which may fail on an open curve first).
+    const T g = detail::safe_distance(p(p.domain().hi), origin);
+    if (g > gap_tol) {
+      throw InvalidArgument("curve", "must be closed for its area: the end and the start are " + detail::format_number(g) +
+                                         " apart, more than " + detail::format_number(gap_tol) + " (1e-9 of its extent)");
+    }
+  }
   Point<T, 2> previous_end = origin;
   for (std::size_t i = 0; i < p.size(); ++i) {
     std::visit(
@@ -62,28 +70,39 @@ typename C::Scalar area(const C& c) {
           const Point<T, 2> start = piece(T(0));
           if (i > 0) chord(previous_end, start, "the end of piece " + std::to_string(i - 1) + " and the start of piece " + std::to_string(i));
           previous_end = piece(T(1));
-          const auto f = detail::scalar_forms<T, 2>(piece, origin);
-          if (f.degree == 0) return;
-          const auto dx = bernstein_derivative_coefficients<T>(f.x[0]), dy = bernstein_derivative_coefficients<T>(f.x[1]);
-          const auto num = bernstein_difference<T>(bernstein_product<T>(f.x[0], dy), bernstein_product<T>(f.x[1], dx));
-          T value;
-          if (!f.rational) {
-            value = bernstein_integral<T>(num);
+          // The integral is the same in any parametrisation: a rational piece with extreme
+          // weights (1, 1e200, 1, where the quadrature cannot resolve the ends) is summed
+          // over its tame reparametrised parts (detail::regular_parts; ordinary pieces are
+          // one part, themselves).
+          auto add = [&](const auto& part) {
+            const auto f = detail::scalar_forms<T, 2>(part, origin);
+            if (f.degree == 0) return;
+            const auto dx = bernstein_derivative_coefficients<T>(f.x[0]), dy = bernstein_derivative_coefficients<T>(f.x[1]);
+            const auto num = bernstein_difference<T>(bernstein_product<T>(f.x[0], dy), bernstein_product<T>(f.x[1], dx));
+            T value;
+            if (!f.rational) {
+              value = bernstein_integral<T>(num);
+            } else {
+              auto integrand = [&](T t) {
+                const T w = de_casteljau<T, T>(std::span<const T>(f.w), t);
+                return de_casteljau<T, T>(std::span<const T>(num), t) / w / w;
+              };
+              const auto a = bernstein_sum<T>(bernstein_product<T>(bernstein_abs<T>(f.x[0]), bernstein_abs<T>(dy)),
+                                              bernstein_product<T>(bernstein_abs<T>(f.x[1]), bernstein_abs<T>(dx)));
+              auto bound = [&](T t) {
+                const T w = de_casteljau<T, T>(std::span<const T>(f.w), t);
+                return de_casteljau<T, T>(std::span<const T>(a), t) / w / w;
+              };
+              const T scale = gauss_kronrod_15<T>(bound, T(0), T(1)).value;
+              value = integrate_adaptive<T>(integrand, T(0), T(1), T(0), T(1e-13) * scale).value;
+            }
+            twice += std::ldexp(value, 2 * f.e);
+          };
+          if constexpr (requires { piece.weights(); }) {
+            for (const auto& rp : detail::regular_parts(piece)) add(rp.piece);
           } else {
-            auto integrand = [&](T t) {
-              const T w = de_casteljau<T, T>(std::span<const T>(f.w), t);
-              return de_casteljau<T, T>(std::span<const T>(num), t) / w / w;
-            };
-            const auto a = bernstein_sum<T>(bernstein_product<T>(bernstein_abs<T>(f.x[0]), bernstein_abs<T>(dy)),
-                                            bernstein_product<T>(bernstein_abs<T>(f.x[1]), bernstein_abs<T>(dx)));
-            auto bound = [&](T t) {
-              const T w = de_casteljau<T, T>(std::span<const T>(f.w), t);
-              return de_casteljau<T, T>(std::span<const T>(a), t) / w / w;
-            };
-            const T scale = gauss_kronrod_15<T>(bound, T(0), T(1)).value;
-            value = integrate_adaptive<T>(integrand, T(0), T(1), T(0), T(1e-13) * scale).value;
+            add(piece);
           }
-          twice += std::ldexp(value, 2 * f.e);
         },
         p.segments()[i]);
   }

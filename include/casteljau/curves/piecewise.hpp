@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <string_view>
 #include <variant>
 #include <vector>
 
@@ -100,7 +101,7 @@ class PiecewiseCurve {
     require_finite(u, "t");
     const std::size_t i = segment_index(u);
     const T t = local_parameter(i, u);
-    return std::visit([&](const auto& s) { return s(t); }, segments_[i]);
+    return in_curve_parameter(u, t, [&] { return std::visit([&](const auto& s) { return s(t); }, segments_[i]); });
   }
 
   /// The k-th derivative (k >= 0; k = 0 gives the point as a vector) with respect to the
@@ -110,7 +111,8 @@ class PiecewiseCurve {
     require_finite(u, "t");
     if (k < 0) throw InvalidArgument("k", "derivative order must be >= 0, got " + std::to_string(k));
     const std::size_t i = segment_index(u);
-    return segment_derivative(i, local_parameter(i, u), k);
+    const T t = local_parameter(i, u);
+    return in_curve_parameter(u, t, [&] { return segment_derivative(i, t, k); });
   }
 
   /// The k-th derivative (k >= 0) of segment i at the fraction s of its own domain (s = 0
@@ -157,6 +159,27 @@ class PiecewiseCurve {
   friend bool operator==(const PiecewiseCurve&, const PiecewiseCurve&) = default;
 
  private:
+  /// Runs f(), a segment's evaluation at its own parameter t for the curve parameter u: a
+  /// segment's error about its parameter ("t") quotes u, the value the caller passed,
+  /// rather than t (a path on [10, 30] evaluated at 1e5 is a polyline segment at 9998).
+  template <class F>
+  static auto in_curve_parameter(T u, T t, F&& f) {
+    try {
+      return f();
+    } catch (const InvalidArgument& e) {
+      if (e.where() != "t" || t == u) throw;
+      std::string problem = e.problem();
+      const std::string local = "t = " + format_number(t);
+      for (auto at = problem.find(local); at != std::string::npos; at = problem.find(local, at + 1)) {
+        const std::size_t end = at + local.size();
+        if (end < problem.size() && std::string_view("0123456789.e+-").find(problem[end]) != std::string_view::npos) continue;
+        problem.replace(at, local.size(), "t = " + format_number(u));
+        break;
+      }
+      throw InvalidArgument("t", problem);
+    }
+  }
+
   VectorType segment_derivative(std::size_t i, T t, int k) const {
     const T scale = own_domain(i).length() / segment_domain(i).length();
     return std::visit(

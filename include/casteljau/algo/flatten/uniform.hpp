@@ -9,22 +9,48 @@
 
 #include "casteljau/algo/flatten/chord.hpp"
 #include "casteljau/algo/flatten/small_piece.hpp"
+#include "casteljau/basis/extrapolate.hpp"
 
 namespace casteljau::detail {
 
 /// Wang's count for a polynomial piece with control points P [Wang84; Filip86]: with n =
-/// ceil(sqrt(p (p - 1) / 8 max_i |P_i - 2 P_(i+1) + P_(i+2)| / tol)) uniform steps, the
+/// ceil(sqrt(p (p - 1) / 8 max_i |P_i - 2 P_(i+1) + P_(i+2)| / tol)) equal steps the
 /// chord of each step is within tol of the curve (|B(t) - chord(t)| <= h^2 / 8 max |B''|
 /// and |B''| <= p (p - 1) max |second differences|). For a rational piece the same formula
 /// on its Cartesian points is an estimate only (flatten_uniform checks it). At least 1.
-/// The points should be in the unit frame (to_unit), where no difference overflows.
+/// Overflow-safe: where a second difference or the quotient would overflow (coordinates
+/// near 1e300, a tolerance near 1e-300) it is formed on the points scaled by a power of
+/// two, as a product of square roots, so the count is a finite number (at most the
+/// largest double; those in
+/// the unit frame of to_unit, as flatten passes them, never take that branch).
 template <class T, int D>
 double wang_count(std::span<const Point<T, D>> P, T tol) {
   const int p = static_cast<int>(P.size()) - 1;
   if (p < 2) return 1;
+  const double factor = p * (p - 1) / 8.0;
   double second = 0;
-  for (std::size_t i = 0; i + 2 < P.size(); ++i) second = std::max(second, static_cast<double>(norm((P[i + 2] - P[i + 1]) - (P[i + 1] - P[i]))));
-  return std::max(1.0, std::ceil(std::sqrt(p * (p - 1) / 8.0 * second / static_cast<double>(tol))));
+  bool finite = true;
+  for (std::size_t i = 0; i + 2 < P.size(); ++i) {
+    const double s = static_cast<double>(norm((P[i + 2] - P[i + 1]) - (P[i + 1] - P[i])));
+    finite = finite && std::isfinite(s);
+    second = std::max(second, s);
+  }
+  const double q = factor * second / static_cast<double>(tol);
+  if (finite && std::isfinite(q)) return std::max(1.0, std::ceil(std::sqrt(q)));
+  // second * 2^e / tol on the points scaled by 2^-e (each second difference then at most
+  // 4 in each coordinate), as sqrt(factor second) sqrt(2^e) / sqrt(tol): finite.
+  const int e = scale_exponent<Point<T, D>>(P);
+  second = 0;
+  for (std::size_t i = 0; i + 2 < P.size(); ++i) {
+    const auto a = scaled(P[i], -e), b = scaled(P[i + 1], -e), c = scaled(P[i + 2], -e);
+    second = std::max(second, static_cast<double>(norm((c - b) - (b - a))));
+  }
+  // sqrt(2^e) = 2^(e / 2) sqrt(2^(e % 2)): 2^e itself overflows for e = 1024.
+  const double root = std::ldexp(std::sqrt(std::ldexp(1.0, e % 2)), e / 2);
+  const double n = std::sqrt(factor * second) * (root / std::sqrt(static_cast<double>(tol)));
+  // Beyond the largest double only for a tolerance far below the coordinates' scale (a
+  // subnormal tolerance with coordinates near 1e308): the largest double stands for it.
+  return std::isfinite(n) ? std::max(1.0, std::ceil(n)) : std::numeric_limits<double>::max();
 }
 
 /// wang_count of a piece's control points.
