@@ -462,7 +462,9 @@ TEST(CubicSpline, BurdenFairesAtAnyScale) {
       EXPECT_NEAR(c(1.5 * a)[0], 2.40625 * b, 4e-16 * 5 * b) << a << " " << b;
       EXPECT_NEAR(c.derivative_at(1.5 * a)[0], 0.9375 * b / a, 4e-15 * b / a) << a << " " << b;
       const double second = 0.75 * b / a / a;
-      if (std::isnormal(second)) EXPECT_NEAR(c.derivative_at(1.5 * a, 2)[0], second, 4e-14 * second) << a << " " << b;
+      if (std::isnormal(second)) {
+        EXPECT_NEAR(c.derivative_at(1.5 * a, 2)[0], second, 4e-14 * second) << a << " " << b;
+      }
     }
   }
 }
