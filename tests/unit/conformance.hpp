@@ -2,11 +2,10 @@
 // suite): domain end points, finite values, derivative_at against finite differences,
 // reverse, transform, bounds, pieces, and rejection of non-finite parameters.
 //
-// A curve type joins by specialising Sample<C> and instantiating the suite in one of the
-// conformance_*.cpp files (one per family of types, so the instantiations compile in
-// parallel and no translation unit grows with the registry):
-//   using Family = ::testing::Types<...>;
-//   INSTANTIATE_TYPED_TEST_SUITE_P(Family, Conformance, Family);
+// The suite runs on every type of the library's list casteljau::CurveTypes
+// (conformance_test.cpp): a curve template C of that list names the instances the suite
+// runs in Samples<C>, and each instance has its Sample. A registered type without them
+// does not compile (the static_asserts below say what to add).
 #pragma once
 
 #include <gtest/gtest.h>
@@ -19,9 +18,50 @@
 
 namespace casteljau::test {
 
+template <class>
+inline constexpr bool no_sample = false;
+template <template <class, int> class>
+inline constexpr bool no_samples = false;
+
 /// A non-trivial sample of a curve type: make(), and its expected start() and end() points.
 template <class C>
-struct Sample;
+struct Sample {
+  static_assert(no_sample<C>, "this curve type has no conformance sample: specialise casteljau::test::Sample<C> "
+                              "in tests/unit/conformance_test.cpp (docs/architecture.md, Adding a curve type)");
+};
+
+/// The instances of a curve template that the suite runs (types: a SampleList).
+template <class... C>
+struct SampleList {
+  using types = SampleList;
+};
+template <template <class, int> class C>
+struct Samples {
+  static_assert(no_samples<C>, "a registered curve type (casteljau::CurveTypes) has no conformance samples: specialise "
+                               "casteljau::test::Samples<C> and Sample<C<double, D>> in tests/unit/conformance_test.cpp "
+                               "(docs/architecture.md, Adding a curve type)");
+  using types = SampleList<>;
+};
+
+namespace detail {
+template <class... Lists>
+struct Concat;
+template <class... A>
+struct Concat<SampleList<A...>> {
+  using type = ::testing::Types<A...>;
+};
+template <class... A, class... B, class... Rest>
+struct Concat<SampleList<A...>, SampleList<B...>, Rest...> : Concat<SampleList<A..., B...>, Rest...> {};
+template <class List, class... Extra>
+struct SuiteTypes;
+template <template <class, int> class... C, class... Extra>
+struct SuiteTypes<CurveTypeList<C...>, Extra...> : Concat<typename Samples<C>::types..., SampleList<Extra...>> {};
+}  // namespace detail
+
+/// The samples of every curve template of the list (a CurveTypeList), then Extra..., as
+/// the ::testing::Types of an INSTANTIATE_TYPED_TEST_SUITE_P.
+template <class List, class... Extra>
+using SuiteTypes = typename detail::SuiteTypes<List, Extra...>::type;
 
 template <class C>
 class Conformance : public ::testing::Test {};

@@ -17,8 +17,8 @@ using namespace casteljau;
 
 // ---------------------------------------------------------------------------------------
 // One sample per registered type and dimension. A type added to the registry without a
-// sample here does not compile (Samples<C> has no definition), so the round trip below
-// covers every type.
+// sample here does not compile (the static_assert of Samples<C> says so), so the round
+// trip below covers every type.
 
 template <int D>
 Point<double, D> pt(double a, double b) {
@@ -27,8 +27,15 @@ Point<double, D> pt(double a, double b) {
   return p;
 }
 
+template <template <class, int> class>
+inline constexpr bool no_round_trip_samples = false;
+
 template <template <class, int> class C>
-struct Samples;
+struct Samples {
+  static_assert(no_round_trip_samples<C>, "a registered curve type (casteljau::CurveTypes) has no JSON round-trip samples: "
+                                          "specialise Samples<C> in tests/unit/registry_test.cpp (docs/architecture.md, "
+                                          "Adding a curve type)");
+};
 
 template <>
 struct Samples<Bezier> {

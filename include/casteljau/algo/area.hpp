@@ -28,12 +28,13 @@ inline constexpr T area_closure_tolerance = T(1e-9);
 /// Bernstein product x y' - y x' (degree 2n - 1), whose integral is the mean of its
 /// coefficients [Farin02, 5.4]: exact up to rounding (a few n eps of the curve's extent
 /// squared). A rational piece's integrand is (X Y' - Y X') / w^2 (the w' terms cancel),
-/// integrated by adaptive Gauss-Kronrod to 1e-13 of the integral of its absolute value.
+/// integrated by adaptive Gauss-Kronrod to 1e-13 of the integral of its absolute value
+/// (for double; the same units in the last place at other scalars, detail::target_at).
 /// Gaps within the closure tolerance (end to start, piece to piece) are closed by their
 /// chords, whose area terms are included. Throws InvalidArgument("curve", ...) when the
 /// curve is not closed (naming the gap), NumericalError if a quadrature fails.
 template <class C>
-  requires PiecewiseBezierCurve<C> && (C::dimension == 2)
+  requires detail::is_pieces<C> && (C::dimension == 2)
 typename C::Scalar area(const C& c) {
   using T = typename C::Scalar;
   const auto& p = pieces(c);
@@ -94,7 +95,7 @@ typename C::Scalar area(const C& c) {
                 return de_casteljau<T, T>(std::span<const T>(a), t) / w / w;
               };
               const T scale = gauss_kronrod_15<T>(bound, T(0), T(1)).value;
-              value = integrate_adaptive<T>(integrand, T(0), T(1), T(0), T(1e-13) * scale).value;
+              value = integrate_adaptive<T>(integrand, T(0), T(1), T(0), detail::target_at<T>(1e-13) * scale).value;
             }
             twice += std::ldexp(value, 2 * f.e);
           };
@@ -108,6 +109,13 @@ typename C::Scalar area(const C& c) {
   }
   chord(previous_end, origin, "the end and the start");
   return twice / 2;
+}
+
+/// Every other curve type: the same, on its exact pieces (see detail::is_pieces).
+template <class C>
+  requires PiecewiseBezierCurve<C> && (C::dimension == 2) && (!detail::is_pieces<C>)
+typename C::Scalar area(const C& c) {
+  return area(pieces(c));
 }
 
 }  // namespace casteljau

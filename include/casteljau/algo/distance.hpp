@@ -104,7 +104,7 @@ T lower_bound(const DistancePart<T, D>& x, const DistancePart<T, D>& y) {
 /// Cost: O(number of part pairs whose bound is below the minimum); NumericalError past
 /// 2,000,000 pair evaluations (never observed). Throws as project() does.
 template <class CA, class CB>
-  requires PiecewiseBezierCurve<CA> && PiecewiseBezierCurve<CB> && (CA::dimension == CB::dimension)
+  requires detail::is_pieces<CA> && detail::is_pieces<CB> && (CA::dimension == CB::dimension)
 CurveDistance<typename CA::Scalar, CA::dimension> distance(const CA& a, const CB& b) {
   using T = typename CA::Scalar;
   constexpr int D = CA::dimension;
@@ -226,6 +226,14 @@ CurveDistance<typename CA::Scalar, CA::dimension> distance(const CA& a, const CB
   best.distance *= 2;
   best.points = {pa0(best.t[0]), pb0(best.t[1])};
   return best;
+}
+
+/// Any other pair of curve types: the same, on their exact pieces (see detail::is_pieces).
+template <class CA, class CB>
+  requires PiecewiseBezierCurve<CA> && PiecewiseBezierCurve<CB> && (CA::dimension == CB::dimension) &&
+           (!(detail::is_pieces<CA> && detail::is_pieces<CB>))
+CurveDistance<typename CA::Scalar, CA::dimension> distance(const CA& a, const CB& b) {
+  return distance(pieces(a), pieces(b));
 }
 
 }  // namespace casteljau

@@ -30,9 +30,10 @@ struct Features {
 
 /// Relative size below which the velocity counts as zero at a candidate cusp: |c'| at
 /// most this fraction of the hodograph's control polygon size. A true cusp located to
-/// a few eps gives about 1e-15; a near-cusp (a tight turn) above 1e-8 is not one.
+/// a few eps gives about 1e-15; a near-cusp (a tight turn) above 1e-8 is not one. In
+/// float, where a true cusp's rounding alone gives about 1e-7, 64 eps (7.6e-6).
 template <class T>
-inline constexpr T cusp_tolerance = T(1e-8);
+inline constexpr T cusp_tolerance = std::max(T(1e-8), 64 * std::numeric_limits<T>::epsilon());
 
 namespace detail {
 
@@ -166,7 +167,7 @@ std::optional<Vector<T, 2>> end_direction(const Piece& c, bool at_end) {
 /// isolation on D forms of degree up to 2n - 1 and one of degree up to 3n - 3 (about
 /// 0.3 s of CPU at degree 1000, 1 s rational; docs/accuracy.md).
 template <class C>
-  requires PiecewiseBezierCurve<C>
+  requires detail::is_pieces<C>
 Features<typename C::Scalar, C::dimension> features(const C& c) {
   using T = typename C::Scalar;
   constexpr int D = C::dimension;
@@ -257,6 +258,13 @@ Features<typename C::Scalar, C::dimension> features(const C& c) {
     list->erase(std::unique(list->begin(), list->end(), [&](T a, T b) { return b - a <= merge; }), list->end());
   }
   return out;
+}
+
+/// Every other curve type: the same, on its exact pieces (see detail::is_pieces).
+template <class C>
+  requires PiecewiseBezierCurve<C> && (!detail::is_pieces<C>)
+Features<typename C::Scalar, C::dimension> features(const C& c) {
+  return features(pieces(c));
 }
 
 }  // namespace casteljau

@@ -116,7 +116,7 @@ std::array<T, 2> derivative_noise(const Piece& c) {
 /// O(n^2) each. Throws InvalidArgument("t", ...) for a non-finite u or a derivative that
 /// is not representable.
 template <class C>
-  requires PiecewiseBezierCurve<C>
+  requires detail::is_pieces<C>
 std::optional<Frame<typename C::Scalar, C::dimension>> frame(const C& c, typename C::Scalar u) {
   using T = typename C::Scalar;
   constexpr int D = C::dimension;
@@ -134,6 +134,13 @@ std::optional<Frame<typename C::Scalar, C::dimension>> frame(const C& c, typenam
         return frame_of<T, D>(piece.derivative_at(t, 1), piece.derivative_at(t, 2), piece.derivative_at(t, 3), noise[0], noise[1]);
       },
       p.segments()[i]);
+}
+
+/// Every other curve type: the same, on its exact pieces (see detail::is_pieces).
+template <class C>
+  requires PiecewiseBezierCurve<C> && (!detail::is_pieces<C>)
+std::optional<Frame<typename C::Scalar, C::dimension>> frame(const C& c, typename C::Scalar u) {
+  return frame(pieces(c), u);
 }
 
 }  // namespace casteljau

@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
+#include <type_traits>
 #include <vector>
 
 #include "casteljau/algo/scalar_forms.hpp"
@@ -15,9 +17,12 @@
 namespace casteljau {
 
 /// Relative accuracy that the arc length functions aim at (the sum of the Gauss-Kronrod
-/// error estimates is below it): 1e-13, a margin of ten under the 1e-12 they promise.
+/// error estimates is below it): 1e-13 for double, a margin of ten under the 1e-12 they
+/// promise; the same number of units in the last place at other scalars
+/// (detail::target_at: 5.4e-5 for float, where 1e-13 is below the rounding of the
+/// integrand and the quadrature could not meet it; 4.9e-17 for long double).
 template <class T>
-inline constexpr T arc_length_tolerance = T(1e-13);
+inline constexpr T arc_length_tolerance = detail::target_at<T>(1e-13);
 
 namespace detail {
 
@@ -79,7 +84,10 @@ T piece_length(const PieceSpeed<T, D>& sp, T t0, T t1, std::vector<QuadratureInt
       q = integrate_adaptive<T>(sp, a, b, arc_length_tolerance<T>);
     } catch (const NumericalError&) {
       // Said in the terms of the request (the quadrature's own message names its internals).
-      throw NumericalError("the arc length cannot be computed to its accuracy target (1e-12 relative) on this curve: its "
+      throw NumericalError("the arc length cannot be computed to its accuracy target (" +
+                           (std::is_same_v<T, double> ? std::string("1e-12")
+                                                      : detail::format_number(static_cast<double>(10 * arc_length_tolerance<T>))) +
+                           " relative) on this curve: its "
                            "speed varies too sharply for adaptive quadrature within 4000 intervals per piece");
     }
     total += q.value;
@@ -103,7 +111,7 @@ T piece_length(const PieceSpeed<T, D>& sp, T t0, T t1, std::vector<QuadratureInt
 /// interval; a cubic needs 1 to 4 intervals, a random degree-1000 curve about 2000
 /// (0.08 s of CPU in all; docs/accuracy.md).
 template <class C>
-  requires PiecewiseBezierCurve<C>
+  requires detail::is_pieces<C>
 typename C::Scalar arc_length(const C& c, typename C::Scalar from, typename C::Scalar to) {
   using T = typename C::Scalar;
   constexpr int D = C::dimension;
@@ -133,6 +141,13 @@ typename C::Scalar arc_length(const C& c, typename C::Scalar from, typename C::S
   }
   if (!std::isfinite(total)) throw InvalidArgument("curve", "the arc length is not representable (it exceeds the largest double)");
   return total;
+}
+
+/// Every other curve type: the same, on its exact pieces (see detail::is_pieces).
+template <class C>
+  requires PiecewiseBezierCurve<C> && (!detail::is_pieces<C>)
+typename C::Scalar arc_length(const C& c, typename C::Scalar from, typename C::Scalar to) {
+  return arc_length(pieces(c), from, to);
 }
 
 /// The arc length of the whole curve over its domain (see the ranged overload).
@@ -185,7 +200,7 @@ class ArcLengthTable {
   /// outside the range, NumericalError if the solve does not converge in 200 steps.
   [[nodiscard]] T parameter_at(T s) const {
     require_finite(s, "s");
-    const T slack = T(1e-12) * total_;
+    const T slack = detail::target_at<T>(1e-12) * total_;
     if (s < 0 || s > total_ + slack) {
       throw InvalidArgument("s", "arc length must lie in [0, " + detail::format_number(total_) + "] (the curve's length), got " +
                                      detail::format_number(s));

@@ -134,7 +134,7 @@ void projection_candidates(const Piece& c, const Point<T, D>& q, std::vector<T>&
 /// one evaluation per candidate. Throws NumericalError if a root solve does not
 /// converge, InvalidArgument("point", ...) for a non-finite q.
 template <class C>
-  requires PiecewiseBezierCurve<C>
+  requires detail::is_pieces<C>
 Projection<typename C::Scalar, C::dimension> project(const C& c, const Point<typename C::Scalar, C::dimension>& q,
                                                       bool farthest = false) {
   using T = typename C::Scalar;
@@ -250,6 +250,14 @@ Projection<typename C::Scalar, C::dimension> project(const C& c, const Point<typ
     r.distance = chosen->d;
   }
   return r;
+}
+
+/// Every other curve type: the same, on its exact pieces (see detail::is_pieces).
+template <class C>
+  requires PiecewiseBezierCurve<C> && (!detail::is_pieces<C>)
+Projection<typename C::Scalar, C::dimension> project(const C& c, const Point<typename C::Scalar, C::dimension>& q,
+                                                      bool farthest = false) {
+  return project(pieces(c), q, farthest);
 }
 
 }  // namespace casteljau

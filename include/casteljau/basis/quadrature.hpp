@@ -36,17 +36,28 @@ namespace detail {
 // nodes +-gk_x[i] (gk_x[7] = 0), Kronrod weights gk_w, and the weights g_w of the
 // 7-point Gauss rule on the odd-indexed nodes gk_x[1], gk_x[3], gk_x[5] and 0. Checked in
 // tests/unit/queries_test.cpp: the Kronrod rule integrates t^k exactly to k = 22, the
-// Gauss rule to k = 13.
-inline constexpr std::array<double, 8> gk_x = {
-    0.991455371120812639206854697526329, 0.949107912342758524526189684047851, 0.864864423359769072789712788640926,
-    0.741531185599394439863864773280788, 0.586087235467691130294144845693013, 0.405845151377397166906606412076961,
-    0.207784955007898467600689403773245, 0.0};
-inline constexpr std::array<double, 8> gk_w = {
-    0.022935322010529224963732008058970, 0.063092092629978553290700663189204, 0.104790010322250183839876322541518,
-    0.140653259715525918745189590510238, 0.169004726639267902826583426598550, 0.190350578064785409913256402421014,
-    0.204432940075298892414161999234649, 0.209482141084727828012999174891714};
-inline constexpr std::array<double, 4> g_w = {0.129484966168869693270611432679082, 0.279705391489276667901467771423780,
-                                              0.381830050505118944950369775488975, 0.417959183673469387755102040816327};
+// Gauss rule to k = 13. Stored in long double (33 digits), so that a long double
+// integral is not limited by nodes rounded to double; each rounds to the same double as
+// its decimal literal would (checked for all 19), so double results are unchanged.
+inline constexpr std::array<long double, 8> gk_x = {
+    0.991455371120812639206854697526329L, 0.949107912342758524526189684047851L, 0.864864423359769072789712788640926L,
+    0.741531185599394439863864773280788L, 0.586087235467691130294144845693013L, 0.405845151377397166906606412076961L,
+    0.207784955007898467600689403773245L, 0.0L};
+inline constexpr std::array<long double, 8> gk_w = {
+    0.022935322010529224963732008058970L, 0.063092092629978553290700663189204L, 0.104790010322250183839876322541518L,
+    0.140653259715525918745189590510238L, 0.169004726639267902826583426598550L, 0.190350578064785409913256402421014L,
+    0.204432940075298892414161999234649L, 0.209482141084727828012999174891714L};
+inline constexpr std::array<long double, 4> g_w = {0.129484966168869693270611432679082L, 0.279705391489276667901467771423780L,
+                                              0.381830050505118944950369775488975L, 0.417959183673469387755102040816327L};
+
+/// A relative accuracy target stated for double (e.g. 1e-13), at the scalar T: scaled by
+/// T's epsilon over double's, so that it asks the same number of units in the last place
+/// at every scalar (float: 2^29 times looser, which adaptive quadrature can meet; long
+/// double: 2^11 times tighter). Exactly `target` for double.
+template <class T>
+constexpr T target_at(double target) {
+  return static_cast<T>(target) * (std::numeric_limits<T>::epsilon() / static_cast<T>(std::numeric_limits<double>::epsilon()));
+}
 
 }  // namespace detail
 

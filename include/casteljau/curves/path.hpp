@@ -16,9 +16,8 @@
 
 namespace casteljau {
 
-/// The curve types of the library, as templates over <T, D>: the one list a new curve
-/// type joins (docs/architecture.md). Path segments may be any of them; the run-time
-/// interfaces (io::AnyCurve) serve these and Path.
+/// The curve types a path segment may be, as templates over <T, D>: the one list a new
+/// curve type joins (docs/architecture.md). CurveTypes (below) is this list and Path.
 template <template <class, int> class... C>
 struct CurveTypeList {};
 using SegmentTypes =
@@ -63,6 +62,21 @@ Pieces<T, D> pieces(const Path<T, D>& c) {
   return Pieces<T, D>(std::move(segs), std::move(breaks));
 }
 static_assert(PiecewiseBezierCurve<Path<double, 2>>);
+
+namespace detail {
+template <class List>
+struct AppendPath;
+template <template <class, int> class... C>
+struct AppendPath<CurveTypeList<C...>> {
+  using type = CurveTypeList<C..., Path>;
+};
+}  // namespace detail
+
+/// Every curve type of the library: the segment types and Path. The run-time interfaces
+/// serve exactly these (io::CurveTypes), and the tests derive their lists from it: the
+/// conformance suite, the JSON round trip and the float / long double checks each fail
+/// to compile for a type without its sample (docs/architecture.md, "Adding a curve type").
+using CurveTypes = typename detail::AppendPath<SegmentTypes>::type;
 
 /// Every curve as a Path of Bézier and rational Bézier segments with the curve's own
 /// parametrisation and breaks at its piece boundaries (the `to_bezier` command).

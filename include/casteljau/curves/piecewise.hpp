@@ -235,6 +235,15 @@ template <class T, int D>
 inline constexpr bool is_bezier_piece<Bezier<T, D>> = true;
 template <class T, int D>
 inline constexpr bool is_bezier_piece<RationalBezier<T, D>> = true;
+
+/// Whether C is Pieces<T, D>. The queries that work on the exact pieces alone are written
+/// for Pieces and reached from every other curve type through pieces(c) (a one-line
+/// overload), so that their bodies are compiled once per scalar and dimension, not once
+/// per curve type.
+template <class C>
+inline constexpr bool is_pieces = false;
+template <class T, int D>
+inline constexpr bool is_pieces<Pieces<T, D>> = true;
 }  // namespace detail
 
 /// The piecewise Bézier form of a Bézier or rational Bézier curve: itself, on [0, 1].

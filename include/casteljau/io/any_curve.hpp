@@ -30,15 +30,10 @@ inline constexpr int max_degree = 1000;
 /// src/io/any_curve.cpp) exceeds it is refused before any work, naming the tolerance.
 inline constexpr std::size_t max_flatten_vertices = 1'000'000;
 
-/// The registry: every curve type the run-time interfaces serve. Its curve-JSON name,
-/// fields, reader and writer are its Format entry in src/io/curve_json.cpp.
-template <class List>
-struct AppendPath;
-template <template <class, int> class... C>
-struct AppendPath<CurveTypeList<C...>> {
-  using type = CurveTypeList<C..., Path>;
-};
-using CurveTypes = typename AppendPath<SegmentTypes>::type;
+/// The registry: every curve type the run-time interfaces serve, the library's own list
+/// (curves/path.hpp). Its curve-JSON name, fields, reader and writer are its Format entry
+/// in src/io/curve_json.cpp.
+using CurveTypes = casteljau::CurveTypes;
 
 namespace detail {
 template <class List, class Dims>
