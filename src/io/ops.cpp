@@ -3,6 +3,7 @@
 #include "casteljau/io/ops.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <type_traits>
 #include <variant>
@@ -168,6 +169,14 @@ AnyReduction reduce(const AnyCurve& c, int times, double tolerance) {
           }
           const int m = p - times;
           const std::vector<double> breaks = breaks_of(x);
+          // Measuring max_error evaluates both curves 32 (p + 1) times per piece at O(p^2)
+          // each: (pieces) (p + 1)^3 units, limited to 3e7 (about a second).
+          const double work = static_cast<double>(breaks.size() - 1) * std::pow(p + 1.0, 3);
+          if (work > 3e7) {
+            throw InvalidArgument("curve", "the reduction would take about " + format_number(work) +
+                                               " units of work (pieces x (degree + 1)^3), more than the limit of 3e7: use fewer "
+                                               "pieces or a lower degree");
+          }
           C reduced = x;
           if constexpr (bezier) {
             reduced = casteljau::reduce_degree(x, m, m >= 1 ? Endpoints::keep : Endpoints::free).curve;

@@ -9,10 +9,7 @@
 #include <random>
 #include <vector>
 
-#include "casteljau/algo/deviation.hpp"
-#include "casteljau/algo/solve.hpp"
-#include "casteljau/algo/to_bspline.hpp"
-#include "test_support.hpp"
+#include "test_support.hpp"  // the whole library (casteljau.hpp: solve, to_bspline, deviation)
 
 namespace {
 
@@ -21,7 +18,6 @@ using P2 = Point<double, 2>;
 using V2 = Vector<double, 2>;
 using B2 = Bezier<double, 2>;
 using R2 = RationalBezier<double, 2>;
-constexpr double pi = std::numbers::pi;
 
 TEST(Solve, ExactDoubleRootReportedOnce) {
   // y(t) = 12 (t - 3/8)^2 (t - 13/16) in Bernstein form (exact in double): power form
@@ -51,7 +47,7 @@ TEST(Solve, IntervalsMergeAcrossPiecesAndSwallowTheirRoots) {
 
 TEST(Solve, RationalCircleAtItsBreaksAndTangencies) {
   std::vector<BezierPiece<double, 2>> segs;
-  for (int i = 0; i < 4; ++i) segs.emplace_back(R2::circular_arc(P2(0, 0), 1.0, i * pi / 2, (i + 1) * pi / 2));
+  for (int i = 0; i < 4; ++i) segs.emplace_back(R2::circular_arc(P2(0, 0), 1.0, i * std::numbers::pi / 2, (i + 1) * std::numbers::pi / 2));
   const Pieces<double, 2> circle(std::move(segs));  // breaks 0..4
   EXPECT_EQ(solve(circle, V2(1, 0), 0.0).t, (std::vector<double>{1, 3}));  // joints, once each
   EXPECT_EQ(solve(circle, V2(0, 1), -1.0).t, (std::vector<double>{3}));    // tangency at a joint
@@ -93,7 +89,7 @@ TEST(ToBSpline, UniformCubicComesBackWithSimpleKnots) {
   const std::vector<P2> P{P2(0, 0), P2(1, 2), P2(2, -1), P2(3, 3), P2(4, 0), P2(5, 1), P2(6, -2)};
   const BSpline<double, 2> b(3, U, P);
   const auto r = to_bspline(pieces(b));
-  ASSERT_TRUE(std::holds_alternative<BSpline<double, 2>>(r));
+  ASSERT_TRUE((std::holds_alternative<BSpline<double, 2>>(r)));
   const auto& g = std::get<BSpline<double, 2>>(r);
   EXPECT_EQ(g.knots(), U);
   ASSERT_EQ(g.points().size(), P.size());
@@ -111,17 +107,17 @@ TEST(ToBSpline, ContinuityDecidesMultiplicity) {
   // A line then a parabola, C^0: the quadratic's knot twice; a gap: refused (a BSpline
   // has no jumps: interior knots at most p times).
   const Pieces<double, 2> corner({B2({P2(0, 0), P2(1, 1)}), B2({P2(1, 1), P2(2, 2), P2(3, 0)})});
-  EXPECT_EQ(std::get<BSpline<double, 2>>(to_bspline(corner)).knots(), (std::vector<double>{0, 0, 0, 1, 1, 2, 2, 2}));
+  EXPECT_EQ((std::get<BSpline<double, 2>>(to_bspline(corner)).knots()), (std::vector<double>{0, 0, 0, 1, 1, 2, 2, 2}));
   const Pieces<double, 2> gap({B2({P2(0, 0), P2(1, 1)}), B2({P2(1, 2), P2(2, 2), P2(3, 0)})});
   EXPECT_THROW((void)to_bspline(gap), InvalidArgument);
 }
 
 TEST(ToBSpline, CircleIsANurbsWithDoubleKnots) {
   std::vector<BezierPiece<double, 2>> segs;
-  for (int i = 0; i < 4; ++i) segs.emplace_back(R2::circular_arc(P2(0, 0), 1.0, i * pi / 2, (i + 1) * pi / 2));
+  for (int i = 0; i < 4; ++i) segs.emplace_back(R2::circular_arc(P2(0, 0), 1.0, i * std::numbers::pi / 2, (i + 1) * std::numbers::pi / 2));
   const Pieces<double, 2> circle(std::move(segs));
   const auto r = to_bspline(circle);
-  ASSERT_TRUE(std::holds_alternative<Nurbs<double, 2>>(r));
+  ASSERT_TRUE((std::holds_alternative<Nurbs<double, 2>>(r)));
   const auto& n = std::get<Nurbs<double, 2>>(r);
   // The homogeneous quarter arcs meet with C^0 only (their middle weights are 1/sqrt 2).
   EXPECT_EQ(n.knots(), (std::vector<double>{0, 0, 0, 1, 1, 2, 2, 3, 3, 4, 4, 4}));

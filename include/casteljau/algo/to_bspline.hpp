@@ -55,6 +55,29 @@ Point<T, D> cartesian(const Point<T, D + 1>& h) {
   return q;
 }
 
+/// Removes each knot of `joints` (each p times in U0) as often as it can while the form
+/// moves by at most `tolerance` (removal_deviation: a guaranteed bound), left to right on
+/// a SlidingWindow, so that the cost is O(N p^2) for N points, not O(N) per removal. A
+/// removal that gives a point `valid` refuses (a weight <= 0) is not made.
+template <class T, class V, class Valid>
+KnotForm<T, V> remove_joint_knots(const std::vector<T>& U0, const std::vector<V>& P0, int p, const std::vector<T>& joints,
+                                  T tolerance, Valid valid) {
+  SlidingWindow<T, V> win(U0, P0, p);
+  for (const T x : joints) {
+    win.reach(x);
+    const KnotForm<T, V> f = win.W;  // the window: O(p) points
+    for (int j = 1; j <= p; ++j) {
+      KnotForm<T, V> g = remove_knot_once(win.W, x);
+      bool finite = true;
+      for (const auto& q : g.P) finite = finite && all_finite_point(q) && valid(q);
+      if (!finite || !(removal_deviation(f, g, x, j) <= tolerance)) break;
+      win.W = std::move(g);
+    }
+    win.settle(x);
+  }
+  return win.finish();
+}
+
 }  // namespace detail
 
 /// The curve as one B-spline of degree p (the highest degree of its Bézier pieces) on the
@@ -69,11 +92,14 @@ Point<T, D> cartesian(const Point<T, D + 1>& h) {
 ///    left piece's end); a curve that jumps (a path with a gap) is refused
 ///    (InvalidArgument "curve"), as BSpline repeats an interior knot at most p times;
 /// 3. each joint's knot is removed as often as BSpline::remove_knot (Nurbs::remove_knot)
-///    can within to_bspline_tolerance times the size ([PT97] A5.8 with its guaranteed
-///    bound): k removals where the (homogeneous) curve is C^k there, so the knot keeps
+///    can within to_bspline_tolerance times the size ([PT97] A5.8, remove_knot_once, with
+///    the guaranteed bound of removal_deviation; for a rational curve on the homogeneous
+///    points about the control box's centre, the bound carried to the Cartesian curve by
+///    [PT97, eq. 5.30] as Nurbs::remove_knot does), left to right on a sliding window:
+///    k removals where the (homogeneous) curve is C^k there, so the knot keeps
 ///    multiplicity p - k, and disappears where the two pieces are one polynomial.
 /// A curve of degree 0 (constant pieces) is a degree-0 B-spline whose equal neighbours
-/// are merged. Cost: O(k p^2) for k pieces (elevation and p removals per joint).
+/// are merged. Cost: O(k p^2) for k pieces (elevation and p removals of O(p) per joint).
 template <class C>
   requires PiecewiseBezierCurve<C>
 BSplineForm<typename C::Scalar, C::dimension> to_bspline(const C& c) {
@@ -143,26 +169,50 @@ BSplineForm<typename C::Scalar, C::dimension> to_bspline(const C& c) {
     }
   }
   U.insert(U.end(), static_cast<std::size_t>(p) + 1, breaks.back());
-  const auto remove_joints = [&](auto curve) {
-    for (std::size_t i : joints) curve = curve.remove_knot(breaks[i], p, tolerance).curve;
-    return curve;
-  };
+  std::vector<T> X;
+  for (std::size_t i : joints) X.push_back(breaks[i]);
   if (!rational) {
     std::vector<Point<T, D>> Pc(P.size());
     for (std::size_t i = 0; i < P.size(); ++i) Pc[i] = detail::cartesian<T, D>(P[i]);
-    return remove_joints(BSpline<T, D>(p, std::move(U), std::move(Pc)));
+    KnotForm<T, Point<T, D>> f = detail::remove_joint_knots<T, Point<T, D>>(U, Pc, p, X, tolerance, [](const auto&) { return true; });
+    return BSpline<T, D>(p, std::move(f.U), std::move(f.P));
   }
-  // Weights back to a common scale (the largest 1): the chain of scalings in step 1 may
-  // have drifted.
+  // Rational: the homogeneous points taken about the centre c of the control box and the
+  // weights scaled to a largest of 1 (the chain of scalings in step 1 may have drifted);
+  // neither changes the curve. A homogeneous deviation d moves the Cartesian curve by at
+  // most d sqrt(1 + R^2) / w_min ([PT97, eq. 5.30], R the largest |P_i - c|), so the
+  // removals are made within tolerance w_min / sqrt(1 + R^2).
   T wmax = 0;
   for (const auto& h : P) wmax = std::max(wmax, h[D]);
-  std::vector<Point<T, D>> Pc(P.size());
-  std::vector<T> w(P.size());
-  for (std::size_t i = 0; i < P.size(); ++i) {
-    Pc[i] = detail::cartesian<T, D>(P[i]);
-    w[i] = P[i][D] / wmax;
+  Point<T, D> lo = detail::cartesian<T, D>(P.front()), hi = lo;
+  for (const auto& h : P) {
+    const Point<T, D> q = detail::cartesian<T, D>(h);
+    for (int d = 0; d < D; ++d) {
+      lo[d] = std::min(lo[d], q[d]);
+      hi[d] = std::max(hi[d], q[d]);
+    }
   }
-  return remove_joints(Nurbs<T, D>(p, std::move(U), std::move(Pc), std::move(w)));
+  const Point<T, D> centre = lerp(lo, hi, T(0.5));
+  T R = 0, wmin = 1;
+  std::vector<H> Hc(P.size());
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    const T w = P[i][D] / wmax;
+    const Vector<T, D> r = detail::cartesian<T, D>(P[i]) - centre;
+    R = std::max(R, norm(r));
+    wmin = std::min(wmin, w);
+    for (int d = 0; d < D; ++d) Hc[i][d] = w * r[d];
+    Hc[i][D] = w;
+  }
+  KnotForm<T, H> f = detail::remove_joint_knots<T, H>(U, Hc, p, X, tolerance * wmin / std::sqrt(1 + R * R),
+                                                        [](const H& q) { return q[D] > 0; });
+  std::vector<Point<T, D>> Pc(f.P.size());
+  std::vector<T> w(f.P.size());
+  for (std::size_t i = 0; i < f.P.size(); ++i) {
+    const T wi = f.P[i][D];  // > 0: removals that would not keep it so were not made
+    for (int d = 0; d < D; ++d) Pc[i][d] = f.P[i][d] / wi + centre[d];
+    w[i] = wi;
+  }
+  return Nurbs<T, D>(p, std::move(f.U), std::move(Pc), std::move(w));
 }
 
 }  // namespace casteljau
