@@ -46,6 +46,10 @@ const std::map<std::string, std::vector<Expected>> documented = {
     {"fit",
      {{"points", true}, {"degree", true}, {"control_points", false}, {"tolerance", false}, {"parametrization", false},
       {"start_derivative", false}, {"end_derivative", false}, {"closed", false}}},
+    {"solve", {{"curve", true}, {"value", true}, {"axis", false}, {"direction", false}}},
+    {"refine", {{"curve", true}, {"knots", true}}},
+    {"to_bspline", {{"curve", true}}},
+    {"reduce", {{"curve", true}, {"times", false}, {"tolerance", true}}},
 };
 
 const io::OrderedJson& command_entry(const io::OrderedJson& listing, const std::string& name) {

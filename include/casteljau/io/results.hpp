@@ -20,6 +20,7 @@
 #include "casteljau/io/intersect.hpp"
 #include "casteljau/io/json.hpp"
 #include "casteljau/io/knots.hpp"
+#include "casteljau/io/ops.hpp"
 #include "casteljau/io/queries.hpp"
 
 namespace casteljau::io {
@@ -117,6 +118,12 @@ struct Describe<Intersections<T>> {
   static constexpr auto fields = std::tuple{field("intersections", &S::points), field("overlaps", &S::overlaps)};
 };
 
+template <class T>
+struct Describe<LevelSet<T>> {
+  using S = LevelSet<T>;
+  static constexpr auto fields = std::tuple{field("t", &S::t), field("intervals", &S::intervals)};
+};
+
 // The io layer's own results, which hold curves of any type (AnyCurve).
 
 template <>
@@ -128,6 +135,12 @@ struct Describe<AnyKnotRemoval> {
 template <>
 struct Describe<AnyFit> {
   using S = AnyFit;
+  static constexpr auto fields = std::tuple{field("curve", &S::curve), field("max_error", &S::max_error)};
+};
+
+template <>
+struct Describe<AnyReduction> {
+  using S = AnyReduction;
   static constexpr auto fields = std::tuple{field("curve", &S::curve), field("max_error", &S::max_error)};
 };
 

@@ -1,0 +1,52 @@
+// Run-time operations of issue 20 on curves (AnyCurve): the level sets of a coordinate or
+// a linear functional (solve) and knot refinement (refine). Compiled once, in
+// src/io/ops.cpp: solve on the curves' exact Bézier pieces (one instantiation per
+// dimension), refine on the B-spline and NURBS types.
+#pragma once
+
+#include <optional>
+#include <span>
+
+#include "casteljau/algo/solve.hpp"
+#include "casteljau/io/any_curve.hpp"
+
+namespace casteljau::io {
+
+/// Where coordinate `axis` of the curve (or a . C(t) for `direction` a) equals `value`
+/// (algo/solve.hpp): isolated parameters and whole intervals. Exactly one of axis and
+/// direction is given. Errors: InvalidArgument "axis" (neither given, or outside
+/// 0..d-1), "direction" (both given; not d coordinates; the zero vector), "curve" (the
+/// work limit of the queries).
+[[nodiscard]] LevelSet<double> solve(const AnyCurve& c, std::optional<int> axis, std::optional<std::span<const double>> direction,
+                                     double value);
+
+/// The curve (bspline or nurbs) with every knot of X inserted at once ([PT97] A5.4).
+/// Errors: InvalidArgument "curve.type" for other types, "knots[i]" for a knot that is
+/// not finite, smaller than the one before it, outside the domain, or that would repeat
+/// more than the degree.
+[[nodiscard]] AnyCurve refine(const AnyCurve& c, std::span<const double> X);
+
+/// The curve as one bspline (nurbs when a piece is rational) on the same parameter
+/// (algo/to_bspline.hpp: pieces elevated to the highest degree, each joint's knot
+/// repeated p - k times for continuity C^k there, decided within to_bspline_tolerance).
+/// Errors: "curve" (the work limit of the queries).
+[[nodiscard]] AnyCurve to_bspline(const AnyCurve& c);
+
+/// The result of reduce: the curve of degree p - r and the largest distance between it
+/// and the original at equal parameters (algo/deviation.hpp).
+struct AnyReduction {
+  AnyCurve curve;
+  double max_error = 0;
+};
+
+/// Degree reduction of a bezier, bspline or nurbs by `times` r (1 <= r <= p) within
+/// `tolerance`: a bezier by least squares with its end points kept (free for a constant
+/// result: the mean), a bspline or nurbs by r steps of reduce_degree ([PT97] A5.11, each
+/// within the tolerance by its guaranteed bound), a degree-0 result as the curve's mean
+/// over its domain. max_error is measured (dense sampling and local maximisation, to
+/// about 1e-9 relative); a result farther than the tolerance is refused. Errors:
+/// "curve.type" for other types, "times" outside 1..p, "tolerance" (not > 0, or exceeded:
+/// the message gives the figure).
+[[nodiscard]] AnyReduction reduce(const AnyCurve& c, int times, double tolerance);
+
+}  // namespace casteljau::io

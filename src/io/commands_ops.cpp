@@ -1,0 +1,104 @@
+// The operations of issue 20: solve (where a coordinate or a linear functional of the curve
+// takes a value) and refine (many knots inserted at once). Each is one entry of the
+// registry (io/commands.hpp); the io functions are in io/ops.hpp. Examples are real
+// responses (tests/cli).
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "casteljau/io/ops.hpp"
+#include "casteljau/io/results.hpp"
+#include "commands_family.hpp"
+
+namespace casteljau::io::detail {
+
+namespace {
+
+Response solve(const Args& a) {
+  const std::optional<int> axis = a.has("axis") ? std::optional<int>(a.integer("axis")) : std::nullopt;
+  std::optional<std::span<const double>> direction;
+  if (a.has("direction")) direction = std::span<const double>(a.numbers("direction"));
+  return {to_json(io::solve(a.curve("curve"), axis, direction, a.number("value")))};
+}
+
+constexpr Field solve_fields[] = {
+    {"curve", FieldType::curve, true},
+    {"value", FieldType::number, true, {}, "the level: solves C_axis(t) = value, or a . C(t) = value"},
+    {"axis", FieldType::integer, false, {}, "a coordinate index 0..d-1 (give axis or direction)"},
+    {"direction", FieldType::vector, false, {}, "a non-zero vector a of the curve's dimension (give axis or direction)"},
+};
+
+Response refine(const Args& a) { return {OrderedJson{{"curve", to_json(io::refine(a.curve("curve"), a.numbers("knots")))}}}; }
+
+constexpr Field refine_fields[] = {
+    {"curve", FieldType::curve, true, {}, {}, {}, {}, 0, 0, Capability::knot_insertion},
+    {"knots", FieldType::numbers, true, {}, "non-decreasing, in the domain; each knot's multiplicity afterwards at most the degree"},
+};
+
+Response to_bspline(const Args& a) { return {OrderedJson{{"curve", to_json(io::to_bspline(a.curve("curve")))}}}; }
+
+constexpr Field to_bspline_fields[] = {
+    {"curve", FieldType::curve, true},
+};
+
+Response reduce(const Args& a) { return {to_json(io::reduce(a.curve("curve"), a.integer("times"), a.number("tolerance")))}; }
+
+constexpr Field reduce_fields[] = {
+    {"curve", FieldType::curve, true, {}, "a bezier, bspline or nurbs curve"},
+    {"times", FieldType::integer, false, "1", "r with 1 <= r <= p: the degree drops by r (a degree-0 result is a constant)"},
+    {"tolerance", FieldType::number, true, {}, "> 0: the largest distance allowed between the curves at equal parameters"},
+};
+
+// ---------------------------------------------------------------------------------------
+
+constexpr Command ops_family[] = {
+    {"solve", "Parameters where a coordinate (or a . C(t)) takes a value",
+     "Every parameter of the domain where coordinate `axis` of the curve, or the dot\n"
+     "product a . C(t) with `direction` a, equals `value`: the roots of the exact Bernstein\n"
+     "form of each piece (rational pieces: of its numerator), found with their\n"
+     "multiplicities so that a tangency (the curve touching the level without crossing\n"
+     "it) is not lost. A piece on which it holds throughout (zero within its rounding\n"
+     "error) gives an interval; intervals merge across pieces. Roots within 1e-10 of the\n"
+     "domain's length of each other (a root at a break, seen from both pieces) are one.",
+     "t: the isolated parameters, ascending, each once; intervals: [[t0, t1], ...] where\n"
+     "          it holds on a whole interval ([] when none; no parameter of t lies in one)",
+     R"(  echo '{"curve": {"type": "bezier", "points": [[0,0],[1,2],[2,0]]}, "axis": 1, "value": 0.5}' | casteljau solve
+  {"t":[0.1464466094067262,0.8535533905932737],"intervals":[]})",
+     solve_fields, solve},
+    {"refine", "Insert many knots at once into a bspline or nurbs curve",
+     "Knot refinement (The NURBS Book, A5.4): every knot of `knots` inserted in one pass,\n"
+     "the curve unchanged (a nurbs on its homogeneous form).",
+     "curve (the input's type, with the knots inserted)",
+     R"(  echo '{"curve": {"type": "bspline", "degree": 2, "knots": [0,0,0,1,1,1], "points": [[0,0],[1,2],[2,0]]}, "knots": [0.5, 0.5]}' | casteljau refine
+  {"curve":{"type":"bspline","degree":2,"knots":[0.0,0.0,0.0,0.5,0.5,1.0,1.0,1.0],"points":[[0.0,0.0],[0.5,1.0],[1.0,1.0],[1.5,1.0],[2.0,0.0]]}})",
+     refine_fields, refine},
+    {"to_bspline", "Any curve as one bspline (nurbs when a piece is rational)",
+     "The curve as one B-spline with the same parameter: its exact Bezier pieces elevated\n"
+     "to the highest degree p, joined, and each joint's knot removed as often as the\n"
+     "(homogeneous) curve's continuity there allows: multiplicity p - k where it is C^k,\n"
+     "none where the two pieces are one polynomial (a curve that jumps is refused). Continuity is\n"
+     "decided within 1e-9 of the curve's size (the largest distance of a control point\n"
+     "from the first): end points that close meet, and a knot removal that moves the curve\n"
+     "by at most that much (a guaranteed bound) is made.",
+     "curve (bspline, or nurbs when a piece is rational)",
+     R"(  echo '{"curve": {"type": "path", "segments": [{"type": "bezier", "points": [[-1,-1],[1,1]]}, {"type": "bezier", "points": [[1,1],[2,2],[3,0]]}]}}' | casteljau to_bspline
+  {"curve":{"type":"bspline","degree":2,"knots":[0.0,0.0,0.0,1.0,2.0,2.0,2.0],"points":[[-1.0,-1.0],[0.0,0.0],[2.0,2.0],[3.0,0.0]]}})",
+     to_bspline_fields, to_bspline},
+    {"reduce", "Degree reduction of a bezier, bspline or nurbs within a tolerance",
+     "The curve with its degree lowered by `times` r: a bezier by least squares with its end\n"
+     "points kept, a bspline or nurbs by r steps of The NURBS Book's A5.11 (each step within\n"
+     "the tolerance by its guaranteed bound); a degree-0 result is the curve's mean over\n"
+     "its domain. max_error is the largest distance between the two curves at equal\n"
+     "parameters, measured (dense sampling and a local maximisation, to about 1e-9\n"
+     "relative); a result farther than the tolerance is refused with that figure.",
+     "curve (the input's type, degree p - r), max_error",
+     R"(  echo '{"curve": {"type": "bezier", "points": [[0,0],[1,2],[3,2],[4,0]]}, "tolerance": 0.5}' | casteljau reduce
+  {"curve":{"type":"bezier","points":[[0.0,0.0],[2.0000000000000004,3.0],[4.0,0.0]]},"max_error":0.09622504486493799})",
+     reduce_fields, reduce},
+};
+
+}  // namespace
+
+std::span<const Command> ops_commands() { return ops_family; }
+
+}  // namespace casteljau::io::detail

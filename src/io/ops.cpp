@@ -1,0 +1,211 @@
+// The run-time operations of io/ops.hpp: solve and to_bspline on Pieces<double, D> (one
+// instantiation per dimension), refine and reduce on the Bézier, B-spline and NURBS types.
+#include "casteljau/io/ops.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <type_traits>
+#include <variant>
+#include <vector>
+
+#include "casteljau/algo/deviation.hpp"
+#include "casteljau/algo/reduce.hpp"
+#include "casteljau/algo/scalar_forms.hpp"
+#include "casteljau/algo/solve.hpp"
+#include "casteljau/algo/to_bspline.hpp"
+#include "casteljau/basis/quadrature.hpp"
+
+namespace casteljau::io {
+
+namespace {
+
+using casteljau::detail::format_number;
+
+/// The work limit of the queries (casteljau::detail::max_query_work), checked on the
+/// curve as given (a B-spline of n points and degree p: (n - p) pieces of (p + 1)^2)
+/// before its pieces are made, then on the pieces.
+void check_solve_work(const AnyCurve& c, const char* what = "solving") {
+  const double work = std::visit(
+      [](const auto& x) -> double {
+        if constexpr (requires { x.degree(); x.points(); }) {
+          const double n = static_cast<double>(x.points().size()), d = static_cast<double>(x.degree()) + 1;
+          return std::max(1.0, n - d + 1) * d * d;
+        } else {
+          return 0;
+        }
+      },
+      c);
+  if (work > casteljau::detail::max_query_work) {
+    throw InvalidArgument("curve", std::string(what) + " would take about " + std::to_string(static_cast<long long>(work)) +
+                                       " units of work (pieces x (degree + 1)^2), more than the limit of " +
+                                       std::to_string(static_cast<long long>(casteljau::detail::max_query_work)) +
+                                       ": use fewer control points or a lower degree");
+  }
+}
+
+}  // namespace
+
+LevelSet<double> solve(const AnyCurve& c, std::optional<int> axis, std::optional<std::span<const double>> direction, double value) {
+  const int d = dimension(c);
+  if (axis && direction) throw InvalidArgument("direction", "give axis or direction, not both");
+  if (!axis && !direction) throw InvalidArgument("axis", "give axis (a coordinate index) or direction (a vector)");
+  if (axis && (*axis < 0 || *axis >= d)) {
+    throw InvalidArgument("axis", "must be a coordinate index 0.." + std::to_string(d - 1) + " of this " + std::to_string(d) +
+                                      "-D curve, got " + std::to_string(*axis));
+  }
+  if (direction && direction->size() != static_cast<std::size_t>(d)) {
+    throw InvalidArgument("direction", "needs " + std::to_string(d) + " coordinates (the curve's dimension), got " +
+                                           std::to_string(direction->size()));
+  }
+  if (direction && std::all_of(direction->begin(), direction->end(), [](double x) { return x == 0; })) {
+    throw InvalidArgument("direction", "must not be the zero vector");
+  }
+  check_solve_work(c);
+  return std::visit(
+      [&]<class P>(const P& p) {
+        constexpr int D = P::dimension;
+        if (casteljau::detail::query_work(p) > casteljau::detail::max_query_work) {
+          throw InvalidArgument("curve", "solving would take about " + format_number(casteljau::detail::query_work(p)) +
+                                             " units of work (" + std::to_string(p.size()) +
+                                             " Bézier pieces, (degree + 1)^2 summed over them), more than the limit of " +
+                                             format_number(casteljau::detail::max_query_work));
+        }
+        Vector<double, D> a{};
+        for (int k = 0; k < D; ++k) a[k] = axis ? (k == *axis ? 1.0 : 0.0) : (*direction)[static_cast<std::size_t>(k)];
+        return casteljau::solve(p, a, value);
+      },
+      pieces(c));
+}
+
+AnyCurve refine(const AnyCurve& c, std::span<const double> X) {
+  return std::visit(
+      [&]<class C>(const C& x) -> AnyCurve {
+        if constexpr (requires { x.refine_knots(X); }) {
+          const Interval<double> dom = x.domain();
+          for (std::size_t j = 0; j < X.size(); ++j) {
+            const std::string where = "knots[" + std::to_string(j) + "]";
+            if (j > 0 && X[j] < X[j - 1]) {
+              throw InvalidArgument(where, "knots must be non-decreasing (" + format_number(X[j]) + " after " + format_number(X[j - 1]) + ")");
+            }
+            if (X[j] < dom.lo || X[j] > dom.hi) {
+              throw InvalidArgument(where, "a knot to insert must lie in the domain [" + format_number(dom.lo) + ", " +
+                                               format_number(dom.hi) + "], got " + format_number(X[j]));
+            }
+          }
+          return AnyCurve(x.refine_knots(X));  // multiplicities past the degree: "knots[j]"
+        } else {
+          throw InvalidArgument("curve.type", "refine needs " + types_phrase(Capability::knot_insertion) + ", got a " +
+                                                  std::string(type_name(c)));
+        }
+      },
+      c);
+}
+
+namespace {
+
+/// The distinct knots of a B-spline or NURBS inside its domain (its pieces' breaks), or
+/// {0, 1} for a Bézier curve.
+template <class C>
+std::vector<double> breaks_of(const C& x) {
+  const Interval<double> dom = x.domain();
+  if constexpr (requires { x.knot_vector(); }) {
+    std::vector<double> b;
+    for (const auto& run : x.knot_vector().distinct())
+      if (run.value >= dom.lo && run.value <= dom.hi) b.push_back(run.value);
+    return b;
+  } else {
+    return {dom.lo, dom.hi};
+  }
+}
+
+/// The mean of the curve over its domain, (1 / |domain|) times the integral of C (the
+/// best constant in L2), by adaptive Gauss-Kronrod per knot interval to 1e-14 relative.
+template <class C>
+Point<double, C::dimension> mean_of(const C& x, const std::vector<double>& breaks) {
+  constexpr int D = C::dimension;
+  const Interval<double> dom = x.domain();
+  Point<double, D> m;
+  for (int k = 0; k < D; ++k) {
+    double s = 0;
+    for (std::size_t i = 0; i + 1 < breaks.size(); ++i) {
+      s += integrate_adaptive<double>([&](double u) { return x(u)[k]; }, breaks[i], breaks[i + 1], 1e-14, 1e-300).value;
+    }
+    m[k] = s / (dom.hi - dom.lo);
+  }
+  return m;
+}
+
+}  // namespace
+
+AnyCurve to_bspline(const AnyCurve& c) {
+  check_solve_work(c, "the conversion");
+  return std::visit(
+      [&](const auto& p) {
+        if (casteljau::detail::query_work(p) > casteljau::detail::max_query_work) {
+          throw InvalidArgument("curve", "the conversion would take about " + format_number(casteljau::detail::query_work(p)) +
+                                             " units of work (" + std::to_string(p.size()) +
+                                             " Bézier pieces, (degree + 1)^2 summed over them), more than the limit of " +
+                                             format_number(casteljau::detail::max_query_work));
+        }
+        return std::visit([](auto&& b) { return AnyCurve(std::move(b)); }, casteljau::to_bspline(p));
+      },
+      pieces(c));
+}
+
+AnyReduction reduce(const AnyCurve& c, int times, double tolerance) {
+  require_finite(tolerance, "tolerance");
+  if (!(tolerance > 0)) throw InvalidArgument("tolerance", "must be > 0, got " + format_number(tolerance));
+  check_solve_work(c, "the reduction");
+  return std::visit(
+      [&]<class C>(const C& x) -> AnyReduction {
+        constexpr int D = C::dimension;
+        constexpr bool bezier = std::is_same_v<C, Bezier<double, D>>;
+        constexpr bool spline = std::is_same_v<C, BSpline<double, D>> || std::is_same_v<C, Nurbs<double, D>>;
+        if constexpr (bezier || spline) {
+          const int p = x.degree();
+          if (times < 1 || times > p) {
+            throw InvalidArgument("times", "must be in 1..p = " + std::to_string(p) + " (the curve's degree), got " + std::to_string(times));
+          }
+          const int m = p - times;
+          const std::vector<double> breaks = breaks_of(x);
+          // Measuring max_error evaluates both curves 32 (p + 1) times per piece at O(p^2)
+          // each: (pieces) (p + 1)^3 units, limited to 3e7 (about a second).
+          const double work = static_cast<double>(breaks.size() - 1) * std::pow(p + 1.0, 3);
+          if (work > 3e7) {
+            throw InvalidArgument("curve", "the reduction would take about " + format_number(work) +
+                                               " units of work (pieces x (degree + 1)^3), more than the limit of 3e7: use fewer "
+                                               "pieces or a lower degree");
+          }
+          C reduced = x;
+          if constexpr (bezier) {
+            reduced = casteljau::reduce_degree(x, m, m >= 1 ? Endpoints::keep : Endpoints::free).curve;
+          } else if (m == 0) {
+            const Interval<double> dom = x.domain();
+            const Point<double, D> mean = mean_of(x, breaks);
+            if constexpr (std::is_same_v<C, Nurbs<double, D>>) {
+              reduced = C(0, {dom.lo, dom.hi}, {mean}, {1.0});
+            } else {
+              reduced = C(0, {dom.lo, dom.hi}, {mean});
+            }
+          } else {
+            for (int j = 0; j < times; ++j) reduced = reduced.reduce_degree(tolerance).curve;
+          }
+          // 32 (p + 1) samples per knot interval: a peak of the difference of two degree-p
+          // polynomials is wider than that spacing.
+          const double err = max_deviation<double>(x, reduced, breaks, 32 * (p + 1));
+          if (!(err <= tolerance)) {
+            throw InvalidArgument("tolerance", "reducing the degree from " + std::to_string(p) + " to " + std::to_string(m) +
+                                                   " moves the curve by up to " + format_number(err) +
+                                                   " (largest distance at equal parameters), more than the tolerance " +
+                                                   format_number(tolerance));
+          }
+          return {AnyCurve(std::move(reduced)), err};
+        } else {
+          throw InvalidArgument("curve.type", "reduce needs a bezier, bspline or nurbs curve, got a " + std::string(type_name(c)));
+        }
+      },
+      c);
+}
+
+}  // namespace casteljau::io

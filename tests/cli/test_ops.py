@@ -1,0 +1,585 @@
+#!/usr/bin/python3
+"""Black-box tests of the operations of issue 20: `solve` (parameters where a coordinate or
+a . C(t) takes a value) and `refine` (many knots inserted at once).
+
+Oracles at test time, never the program: exact rationals (fractions) for Bernstein
+coefficients and polynomials built to have a known (double) root; mpmath.polyroots at 50
+digits on the exact power form of the numerator; scipy.interpolate.PPoly.from_spline for
+the roots of random B-splines; scipy.interpolate.BSpline and FITPACK's insert for
+refinement. Every bad-input rule of docs/cli.md for both commands.
+
+Usage: test_ops.py PATH_TO_CASTELJAU [unittest options]
+"""
+import os
+import random
+import sys
+import time
+import unittest
+from fractions import Fraction
+from math import comb
+
+import mpmath
+import numpy as np
+from scipy.interpolate import BSpline, PPoly, insert
+
+import test_cli
+from test_bspline import random_spline
+from test_cli import CliTest
+
+
+# ---------------------------------------------------------------------------------------
+# Independent helpers.
+
+def bernstein_from_power(a):
+    """Bernstein coefficients (exact Fractions) of sum a_k t^k of degree n = len(a) - 1:
+    b_i = sum_{k <= i} C(i, k) / C(n, k) a_k [Farin02, 5.6]."""
+    n = len(a) - 1
+    return [sum(Fraction(comb(i, k), comb(n, k)) * a[k] for k in range(i + 1)) for i in range(n + 1)]
+
+
+def power_from_bernstein(b):
+    """Power coefficients (exact Fractions) of sum b_i B_(i,n)(t)."""
+    n = len(b) - 1
+    a = [Fraction(0)] * (n + 1)
+    for i, bi in enumerate(b):
+        # B_(i,n) = C(n,i) t^i (1-t)^(n-i) = C(n,i) sum_j C(n-i,j) (-1)^j t^(i+j)
+        for j in range(n - i + 1):
+            a[i + j] += Fraction(bi) * comb(n, i) * comb(n - i, j) * (-1) ** j
+    return a
+
+
+def poly_mul(p, q):
+    out = [Fraction(0)] * (len(p) + len(q) - 1)
+    for i, x in enumerate(p):
+        for j, y in enumerate(q):
+            out[i + j] += x * y
+    return out
+
+
+def real_roots_01(a, merge=1e-8):
+    """Distinct real roots in [0, 1] of the exact power form a (mpmath at 50 digits);
+    roots within `merge` are one (a multiple root's images)."""
+    while len(a) > 1 and a[-1] == 0:
+        a = a[:-1]
+    if len(a) < 2:
+        return []
+    mpmath.mp.dps = 50
+    coeffs = [mpmath.mpf(x.numerator) / x.denominator for x in reversed(a)]
+    roots = mpmath.polyroots(coeffs, maxsteps=400, extraprec=400)
+    out = []
+    for r in roots:
+        r = mpmath.mpc(r)
+        # Imaginary parts of a real multiple root's images are about 1e-25^(1/m).
+        if abs(r.imag) < 1e-12 and -1e-12 <= r.real <= 1 + 1e-12:
+            out.append(min(1.0, max(0.0, float(r.real))))
+    out.sort()
+    merged = []
+    for r in out:
+        if not merged or r - merged[-1] > merge:
+            merged.append(r)
+    return merged
+
+
+def bezier(points):
+    return {"type": "bezier", "points": points}
+
+
+def bspline(U, P, p):
+    return {"type": "bspline", "degree": p, "knots": U, "points": P}
+
+
+# The circle of radius 1 about the origin as the NURBS Book's nine-point construction
+# [PT97, ex. 7.2]: four quadratic quarter arcs, a quarter per parameter interval of 1/4.
+S2 = 2 ** -0.5
+CIRCLE = {"type": "nurbs", "degree": 2,
+          "knots": [0, 0, 0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1, 1, 1],
+          "points": [[1, 0], [1, 1], [0, 1], [-1, 1], [-1, 0], [-1, -1], [0, -1], [1, -1], [1, 0]],
+          "weights": [1, S2, 1, S2, 1, S2, 1, S2, 1]}
+
+
+class SolveTest(CliTest):
+    def solve(self, curve, value, **extra):
+        return self.ok("solve", dict({"curve": curve, "value": value}, **extra))
+
+    def test_exact_double_root_once(self):
+        # y(t) = 12 (t - 3/8)^2 (t - 13/16): dyadic roots and a factor that clears the
+        # thirds, so the Bernstein coefficients are exact doubles and the double root exact.
+        r, s = Fraction(3, 8), Fraction(13, 16)
+        y = [12 * c for c in poly_mul(poly_mul([-r, 1], [-r, 1]), [-s, 1])]
+        b = bernstein_from_power(y)
+        self.assertTrue(all(float(x) == x for x in b))
+        P = [[i / 3, float(bi)] for i, bi in enumerate(b)]  # x(t) = t
+        got = self.solve(bezier(P), 0, axis=1)
+        self.assertEqual(got["intervals"], [])
+        # Simple root: a few eps; the double root, found as the derivative's simple root:
+        # a few eps too (exact data).
+        self.assert_close(got["t"], [0.375, 0.8125], 1e-14)
+
+    def test_rounded_tangency_not_lost(self):
+        # The same with roots that are not doubles (1/3 double, s simple): the rounded
+        # coefficients need not touch zero, yet the tangency must be reported, once.
+        rng = random.Random(20)
+        for _ in range(20):
+            r = Fraction(rng.randint(1, 999), 1000)
+            s = Fraction(rng.randint(1, 999), 1000)
+            if abs(r - s) < Fraction(1, 20):
+                continue
+            y = poly_mul(poly_mul([-r, 1], [-r, 1]), [-s, 1])
+            b = [float(x) for x in bernstein_from_power(y)]
+            P = [[i / 3, bi] for i, bi in enumerate(b)]
+            got = self.solve(bezier(P), 0, axis=1)["t"]
+            # A double root under rounding of relative size eps moves by about sqrt(eps)
+            # (1.5e-8) times the conditioning: 1e-6 leaves room for the cubic factor.
+            self.assertEqual(len(got), 2, f"r={r} s={s}: {got}")
+            self.assert_close(sorted(got), sorted([float(r), float(s)]), 1e-6, f"r={r} s={s}")
+
+    def test_random_polynomials_against_mpmath(self):
+        rng = random.Random(7)
+        for trial in range(40):
+            n = rng.randint(1, 9)
+            b = [rng.uniform(-1, 1) for _ in range(n + 1)]
+            d = rng.uniform(-2, 2)
+            P = [[bi, rng.uniform(-1, 1)] for bi in b]
+            # direction (1, 0): the x coordinate; direction (2, 0) too (scale-free).
+            want = real_roots_01([x - (Fraction(d) if k == 0 else 0)
+                                  for k, x in enumerate(power_from_bernstein([Fraction(bi) for bi in b]))])
+            for extra in ({"axis": 0}, {"direction": [2, 0]}):
+                value = d if "axis" in extra else 2 * d
+                got = self.solve(bezier(P), value, **extra)
+                self.assertEqual(got["intervals"], [])
+                # Random data: simple, well separated roots; 1e-9 allows a condition number
+                # of 1e6 on the few eps of the solver.
+                self.assertEqual(len(got["t"]), len(want), f"trial {trial} {b} d={d}: {got} vs {want}")
+                self.assert_close(got["t"], want, 1e-9, f"trial {trial}")
+
+    def test_rational_against_mpmath(self):
+        rng = random.Random(11)
+        for trial in range(30):
+            n = rng.randint(1, 6)
+            P = [[rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)] for _ in range(n + 1)]
+            w = [rng.uniform(0.2, 5) for _ in range(n + 1)]
+            a = [rng.uniform(-1, 1) for _ in range(3)]
+            v = rng.uniform(-0.5, 0.5)
+            # numerator sum_i w_i (a . P_i - v) B_i: exact in Fractions from the doubles.
+            num = [Fraction(wi) * (sum(Fraction(ak) * Fraction(pk) for ak, pk in zip(a, Pi)) - Fraction(v))
+                   for wi, Pi in zip(w, P)]
+            want = real_roots_01(power_from_bernstein(num))
+            got = self.solve({"type": "rational_bezier", "points": P, "weights": w}, v, direction=a)
+            self.assertEqual(len(got["t"]), len(want), f"trial {trial}: {got} vs {want}")
+            self.assert_close(got["t"], want, 1e-9, f"trial {trial}")  # as above
+
+    def test_random_bsplines_against_scipy(self):
+        rng = random.Random(3)
+        for trial in range(30):
+            p = rng.randint(1, 5)
+            U, P = random_spline(rng, p, 1, trial % 2 == 0, trial % 3 == 0)
+            lo, hi = U[p], U[len(P)]
+            v = rng.uniform(-0.5, 0.5)
+            spl = BSpline(np.array(U, float), np.array([q[0] for q in P], float), p)
+            pp = PPoly.from_spline(spl, extrapolate=False)
+            roots = [float(r) for r in pp.solve(v, discontinuity=False) if lo <= r <= hi]
+            want = []
+            for r in sorted(roots):  # PPoly reports a root at a breakpoint from both sides
+                if not want or r - want[-1] > 1e-9:
+                    want.append(r)
+            got = self.solve(bspline(U, P, p), v, axis=0)
+            self.assertEqual(got["intervals"], [])
+            self.assertEqual(len(got["t"]), len(want), f"trial {trial} p={p} U={U}: {got} vs {want}")
+            # random knots: pieces of width >= ~1e-3, conditioning of random data: 1e-8.
+            self.assert_close(got["t"], want, 1e-8, f"trial {trial}")
+
+    def test_circle_joints_and_tangencies(self):
+        # x = 0 at the quarter breaks 1/4 and 3/4 (where two pieces meet: once each);
+        # x = -1 touches at the break 1/2 (a tangency at a joint); x = 1 at both ends.
+        self.assertEqual(self.solve(CIRCLE, 0, axis=0), {"t": [0.25, 0.75], "intervals": []})
+        self.assertEqual(self.solve(CIRCLE, -1, axis=0), {"t": [0.5], "intervals": []})
+        self.assertEqual(self.solve(CIRCLE, 1, axis=0), {"t": [0, 1], "intervals": []})
+        self.assertEqual(self.solve(CIRCLE, 2, axis=0), {"t": [], "intervals": []})
+        # y = x (direction (1, -1), value 0) at 45 and 225 degrees: inside the first and
+        # third quarter, at the parameter where the rational quadratic has u = 1/2 (the
+        # arc's symmetric point), i.e. 1/8 and 5/8.
+        got = self.solve(CIRCLE, 0, direction=[1, -1])
+        self.assert_close(got["t"], [0.125, 0.625], 1e-15)  # a simple root: a few eps
+
+    def test_intervals(self):
+        # polyline: point i at parameter i.
+        poly = {"type": "polyline", "points": [[0, 0], [1, 0], [2, 1], [3, 0], [4, 0], [5, 0]]}
+        self.assertEqual(self.solve(poly, 0, axis=1), {"t": [], "intervals": [[0, 1], [3, 5]]})
+        self.assertEqual(self.solve(poly, 0.5, axis=1), {"t": [1.5, 2.5], "intervals": []})
+        self.assertEqual(self.solve(poly, 1, axis=1), {"t": [2], "intervals": []})
+        # x = value crosses each piece once; at a vertex once.
+        self.assertEqual(self.solve(poly, 3, axis=0), {"t": [3], "intervals": []})
+        # a whole Bezier on the level (y constant), and a degenerate point curve.
+        self.assertEqual(self.solve(bezier([[0, 2], [1, 2], [3, 2]]), 2, axis=1), {"t": [], "intervals": [[0, 1]]})
+        self.assertEqual(self.solve(bezier([[1, 1]]), 1, axis=0), {"t": [], "intervals": [[0, 1]]})
+        # a path: a straight segment on the level between two curved ones, breaks 0, 1, 2, 3.
+        path = {"type": "path", "segments": [bezier([[0, 1], [1, -1], [2, 0]]), bezier([[2, 0], [3, 0]]),
+                                             bezier([[3, 0], [4, 0], [5, 1]])]}
+        got = self.solve(path, 0, axis=1)
+        # first segment: y = (1-u)^2 - 2u(1-u) = 3u^2 - 4u + 1 = (3u - 1)(u - 1): u = 1/3
+        # (and u = 1, the interval's end); third: y = u^2, zero only at its start.
+        self.assertEqual(got["intervals"], [[1, 2]])
+        self.assert_close(got["t"], [1 / 3], 1e-15)
+
+    def test_crossing_at_a_break_found_once(self):
+        for ys in ([-1, 0, 1], [1, 0, -1], [1, 0, 1]):
+            poly = {"type": "polyline", "points": [[0, ys[0]], [1, ys[1]], [2, ys[2]]]}
+            self.assertEqual(self.solve(poly, 0, axis=1), {"t": [1], "intervals": []}, ys)
+
+    def test_dimensions_1_to_4(self):
+        for d in range(1, 5):
+            P = [[float(i + k) for k in range(d)] for i in range(3)]  # x_k(t) = k + 2 t
+            for k in range(d):
+                got = self.solve(bezier(P), k + 1, axis=k)
+                self.assertEqual(got, {"t": [0.5], "intervals": []})
+
+    def test_bad_input(self):
+        c = bezier([[0, 0], [1, 2], [2, 0]])
+        self.bad("solve", {"curve": c, "value": 1}, "axis", contains="axis")
+        self.bad("solve", {"curve": c, "value": 1, "axis": 0, "direction": [1, 0]}, "direction", contains="not both")
+        self.bad("solve", {"curve": c, "value": 1, "axis": 2}, "axis", contains="0..1")
+        self.bad("solve", {"curve": c, "value": 1, "axis": -1}, "axis", contains="0..1")
+        self.bad("solve", {"curve": c, "value": 1, "axis": 0.5}, "axis")
+        self.bad("solve", {"curve": c, "value": 1, "direction": [1, 0, 0]}, "direction", contains="2 coordinates")
+        self.bad("solve", {"curve": c, "value": 1, "direction": [0, 0]}, "direction", contains="zero")
+        self.bad("solve", {"curve": c, "value": 1, "direction": [1, "a"]}, "direction[1]")
+        self.bad("solve", {"curve": c, "axis": 0}, "value", contains="missing")
+        self.bad("solve", {"curve": c, "axis": 0, "value": "x"}, "value")
+        self.bad("solve", {"curve": c, "axis": 0, "value": 1, "values": 2}, "values")
+        self.bad("solve", {"axis": 0, "value": 1}, "curve", contains="missing")
+
+
+# ---------------------------------------------------------------------------------------
+
+# Refinement is a sum of convex combinations per new point (A5.4): a few eps of the
+# coordinates (|P| <= 5 here) per inserted knot; 1e-12 leaves room for tens of knots.
+TOL = 1e-12
+
+
+def scipy_insert_all(U, P, p, X):
+    """The control points after inserting X one by one with FITPACK's insert (clamped)."""
+    t = np.array(U, dtype=float)
+    c = np.vstack([np.array(P, dtype=float), np.zeros((p + 1, len(P[0])))]).T
+    for x in X:
+        t, c, _ = insert(x, (t, c, p))
+        c = np.array(c)
+    return np.array(c).T[:len(U) + len(X) - p - 1]
+
+
+class RefineTest(CliTest):
+    def assert_traces(self, curve, ref, lo, hi, tol=10 * TOL):
+        ts = [lo + (hi - lo) * i / 40 for i in range(41)]
+        got = self.ok("eval", {"curve": curve, "t": ts})["points"]
+        for t, g in zip(ts, got):
+            want = np.atleast_1d(ref(t)).tolist()
+            self.assertLessEqual(max(abs(a - b) for a, b in zip(g, want)), tol, f"t={t}")
+
+    def test_bspline_against_fitpack(self):
+        rng = random.Random(5)
+        for trial in range(25):
+            p = rng.randint(1, 5)
+            U, P = random_spline(rng, p, 2, True, trial % 2 == 0)
+            lo, hi = U[p], U[len(P)]
+            X = sorted(rng.uniform(lo, hi) for _ in range(rng.randint(1, 8)))
+            if trial % 3 == 0 and p >= 2:
+                X = sorted(X + [X[0]])  # a repeated new knot
+            r = self.ok("refine", {"curve": bspline(U, P, p), "knots": X})["curve"]
+            self.assertEqual(r["type"], "bspline")
+            self.assertEqual(r["knots"], sorted(U + X))
+            self.assertTrue(np.allclose(np.array(r["points"]), scipy_insert_all(U, P, p, X), rtol=0, atol=TOL), f"trial {trial}")
+            ref = BSpline(np.array(U, float), np.array(P, float), p)
+            self.assert_traces(r, ref, lo, hi)
+
+    def test_nurbs_unchanged(self):
+        rng = random.Random(6)
+        for trial in range(10):
+            p = rng.randint(1, 4)
+            U, P = random_spline(rng, p, 2, trial % 2 == 0, False)
+            w = [rng.uniform(0.3, 4) for _ in P]
+            lo, hi = U[p], U[len(P)]
+            X = sorted(rng.uniform(lo, hi) for _ in range(5))
+            r = self.ok("refine", {"curve": dict(bspline(U, P, p), type="nurbs", weights=w), "knots": X})["curve"]
+            self.assertEqual(r["type"], "nurbs")
+            self.assertEqual(r["knots"], sorted(U + X))
+            A = BSpline(np.array(U, float), np.array([[wi * c for c in q] for wi, q in zip(w, P)]), p)
+            W = BSpline(np.array(U, float), np.array(w, float), p)
+            self.assert_traces(r, lambda t: A(t) / float(W(t)), lo, hi, 1e-11)  # a quotient: 10x
+
+    def test_circle(self):
+        # every inserted knot is there (0.25 already has multiplicity p: refused below).
+        r = self.ok("refine", {"curve": CIRCLE, "knots": [0.1, 0.3, 0.3, 0.6]})["curve"]
+        self.assertEqual(r["knots"], sorted(CIRCLE["knots"] + [0.1, 0.3, 0.3, 0.6]))
+        self.bad("refine", {"curve": CIRCLE, "knots": [0.1, 0.25]}, "knots[1]", contains="multiplicity")
+        ts = [i / 16 for i in range(17)]
+        for q in self.ok("eval", {"curve": r, "t": ts})["points"]:
+            self.assertAlmostEqual(q[0] ** 2 + q[1] ** 2, 1, delta=1e-14)  # on the unit circle
+        self.assertEqual(self.ok("refine", {"curve": CIRCLE, "knots": []})["curve"]["knots"], CIRCLE["knots"])
+
+    def test_many_knots_at_once_is_fast(self):
+        # 20000 knots into a cubic: A5.4 is O(n + r p); one at a time would be O(r (n + r)).
+        U = [0.0] * 4 + [i / 10 for i in range(1, 10)] + [1.0] * 4
+        P = [[i, (-1) ** i] for i in range(len(U) - 4)]
+        X = [(i + 0.5) / 20000 for i in range(20000)]
+        start = time.time()
+        r = self.ok("refine", {"curve": bspline(U, P, 3), "knots": X})["curve"]
+        # parsing and writing 20000 numbers dominates; a generous 5 s on a loaded machine.
+        self.assertLess(time.time() - start, 5)
+        self.assertEqual(len(r["points"]), len(P) + len(X))
+        self.assert_traces(r, BSpline(np.array(U), np.array(P, float), 3), 0, 1)
+
+    def test_bad_input(self):
+        c = bspline([0, 0, 0, 0.5, 1, 1, 1], [[0, 0], [1, 1], [2, 0], [3, 1]], 2)
+        self.bad("refine", {"curve": c, "knots": [0.2, 0.1]}, "knots[1]", contains="non-decreasing")
+        self.bad("refine", {"curve": c, "knots": [0.2, 1.5]}, "knots[1]", contains="domain")
+        self.bad("refine", {"curve": c, "knots": [-0.1]}, "knots[0]", contains="domain")
+        # the first copy of a knot that would repeat past the degree is named
+        self.bad("refine", {"curve": c, "knots": [0.2, 0.5, 0.5]}, "knots[1]", contains="multiplicity")
+        self.bad("refine", {"curve": c, "knots": [0.2, 0]}, "knots[1]")
+        self.bad("refine", {"curve": c, "knots": [0]}, "knots[0]", contains="multiplicity")  # clamped end
+        self.bad("refine", {"curve": c, "knots": [0.1, "a"]}, "knots[1]")
+        self.bad("refine", {"curve": c, "knots": 0.5}, "knots")
+        self.bad("refine", {"curve": c}, "knots", contains="missing")
+        self.bad("refine", {"curve": bezier([[0, 0], [1, 1]]), "knots": [0.5]}, "curve.type", contains="bspline")
+
+
+# ---------------------------------------------------------------------------------------
+
+def bezier_point(P, t):
+    """de Casteljau, written here."""
+    Q = [list(map(float, q)) for q in P]
+    while len(Q) > 1:
+        Q = [[(1 - t) * a + t * b for a, b in zip(Q[j], Q[j + 1])] for j in range(len(Q) - 1)]
+    return Q[0]
+
+
+def multiplicities(U):
+    out = {}
+    for u in U:
+        out[u] = out.get(u, 0) + 1
+    return out
+
+
+def curve_oracle(c):
+    """A bspline / nurbs response as a callable (scipy.interpolate.BSpline)."""
+    U, P, p = np.array(c["knots"], float), np.array(c["points"], float), c["degree"]
+    if c["type"] == "bspline":
+        b = BSpline(U, P, p)
+        return lambda t: b(t)
+    w = np.array(c["weights"], float)
+    A, W = BSpline(U, P * w[:, None], p), BSpline(U, w, p)
+    return lambda t: A(t) / float(W(t))
+
+
+class ToBSplineTest(CliTest):
+    def convert(self, curve):
+        return self.ok("to_bspline", {"curve": curve})["curve"]
+
+    def assert_traces(self, got, ref, lo, hi, tol=1e-12, count=81):
+        f = curve_oracle(got)
+        for j in range(count):
+            t = lo + (hi - lo) * j / (count - 1)
+            g, w = np.atleast_1d(f(t)), np.atleast_1d(ref(t))
+            self.assertLessEqual(float(np.max(np.abs(g - w))), tol, f"t={t}")
+
+    def test_uniform_cubic_round_trip(self):
+        # to_bezier then to_bspline gives back the knots (C^2 joints: multiplicity 1).
+        U = [0, 0, 0, 0, 1, 2, 3, 4, 5, 5, 5, 5]
+        rng = random.Random(9)
+        P = [[rng.uniform(-3, 3), rng.uniform(-3, 3)] for _ in range(8)]
+        path = self.ok("to_bezier", {"curve": bspline(U, P, 3)})["curve"]
+        got = self.convert(path)
+        self.assertEqual((got["type"], got["degree"], got["knots"]), ("bspline", 3, U))
+        # Blossoming and two removals per knot: a few hundred eps of |P| <= 3.
+        self.assertTrue(np.allclose(np.array(got["points"]), np.array(P), rtol=0, atol=1e-12))
+
+    def test_random_bsplines_keep_their_knots(self):
+        # Random clamped splines with repeated knots: a knot of multiplicity m is C^(p-m)
+        # there (random points: not more), so it comes back with multiplicity m.
+        rng = random.Random(12)
+        for trial in range(20):
+            p = rng.randint(1, 5)
+            U, P = random_spline(rng, p, 2, True, trial % 2 == 0)
+            got = self.convert(bspline(U, P, p))
+            self.assertEqual(got["knots"], U, f"trial {trial}")
+            self.assert_traces(got, BSpline(np.array(U, float), np.array(P, float), p), U[p], U[len(P)])
+
+    def test_one_polynomial_in_two_pieces(self):
+        # A cubic cut at 1/2 (exact dyadic halves), as a path on breaks 0, 1, 2: one
+        # polynomial, so the knot goes away and the cubic's points come back.
+        P = [[0, 0], [1, 3], [3, 3], [4, 0]]
+        L = [[0, 0], [0.5, 1.5], [1.25, 2.25], [2, 2.25]]
+        R = [[2, 2.25], [2.75, 2.25], [3.5, 1.5], [4, 0]]
+        got = self.convert({"type": "path", "segments": [bezier(L), bezier(R)]})
+        self.assertEqual(got["knots"], [0, 0, 0, 0, 2, 2, 2, 2])
+        self.assertTrue(np.allclose(np.array(got["points"]), np.array(P), rtol=0, atol=1e-14))
+
+    def test_mixed_degrees_corner_and_gap(self):
+        line, par = bezier([[0, 0], [1, 1]]), bezier([[1, 1], [2, 2], [3, 0]])
+        got = self.convert({"type": "path", "segments": [line, par]})
+        # C^1 here? the line's elevated points (0,0),(0.5,0.5),(1,1) and (1,1),(2,2): the
+        # velocities at the joint, 2 (0.5, 0.5) against 2 (1, 1), differ: C^0, multiplicity 2.
+        self.assertEqual((got["degree"], got["knots"]), (2, [0, 0, 0, 1, 1, 2, 2, 2]))
+        ref = lambda t: bezier_point([[0, 0], [0.5, 0.5], [1, 1]], t) if t < 1 else bezier_point(par["points"], t - 1)
+        self.assert_traces(got, ref, 0, 2)
+        # Same speed at the joint: the line from (-1,-1) to (1,1) then the parabola: C^1.
+        got = self.convert({"type": "path", "segments": [bezier([[-1, -1], [1, 1]]), par]})
+        self.assertEqual(got["knots"], [0, 0, 0, 1, 2, 2, 2])
+        # A gap: a bspline here cannot jump (interior knots at most p times), refused.
+        self.bad("to_bspline", {"curve": {"type": "path", "segments": [line, bezier([[1, 2], [2, 2], [3, 0]])]}},
+                 "curve", contains="jumps")
+
+    def test_polyline_hermite_and_spline(self):
+        got = self.convert({"type": "polyline", "points": [[0, 0], [1, 2], [2, 0], [3, 1]]})
+        self.assertEqual((got["degree"], got["knots"], got["points"]), (1, [0, 0, 1, 2, 3, 3], [[0, 0], [1, 2], [2, 0], [3, 1]]))
+        # A Hermite curve is C^1 (multiplicity 2 in a cubic), a natural cubic spline C^2 (1).
+        herm = {"type": "hermite", "params": [0, 1, 3], "points": [[0, 0], [1, 1], [3, 0]],
+                "tangents": [[1, 0], [1, 1], [1, -1]]}
+        self.assertEqual(multiplicities(self.convert(herm)["knots"])[1], 2)
+        spline = {"type": "cubic_spline", "params": [0, 1, 2.5, 3], "points": [[0], [1], [-1], [2]]}
+        got = self.convert(spline)
+        self.assertEqual(got["knots"], [0, 0, 0, 0, 1, 2.5, 3, 3, 3, 3])
+        # against scipy's natural spline
+        from scipy.interpolate import CubicSpline
+        cs = CubicSpline([0, 1, 2.5, 3], [0, 1, -1, 2], bc_type="natural")
+        self.assert_traces(got, lambda t: [cs(t)], 0, 3, 1e-12)
+
+    def test_rational_circle(self):
+        got = self.convert(CIRCLE)
+        self.assertEqual((got["type"], got["degree"], got["knots"]), ("nurbs", 2, CIRCLE["knots"]))
+        self.assert_traces(got, curve_oracle(CIRCLE), 0, 1, 1e-14)
+        # A path of the four quarter arcs as rational Beziers (weights 1, 1/sqrt 2, 1).
+        arcs = [{"type": "rational_bezier", "points": [CIRCLE["points"][2 * i + k] for k in range(3)],
+                 "weights": [1, S2, 1]} for i in range(4)]
+        got = self.convert({"type": "path", "segments": arcs})
+        self.assertEqual((got["type"], got["knots"]), ("nurbs", [0, 0, 0, 1, 1, 2, 2, 3, 3, 4, 4, 4]))
+        f = curve_oracle(got)
+        for j in range(33):
+            x, y = f(4 * j / 32)
+            self.assertAlmostEqual(x * x + y * y, 1, delta=1e-14)  # on the unit circle: rounding
+
+    def test_bad_input(self):
+        self.bad("to_bspline", {}, "curve", contains="missing")
+        self.bad("to_bspline", {"curve": bezier([[0, 0], [1, 1]]), "tolerance": 1}, "tolerance")
+        self.bad("to_bspline", {"curve": {"type": "bezier", "points": [[0, 0], [1]]}}, "curve.points[1]")
+
+
+class ReduceTest(CliTest):
+    def reduce(self, curve, tolerance, **extra):
+        return self.ok("reduce", dict({"curve": curve, "tolerance": tolerance}, **extra))
+
+    @staticmethod
+    def measured(f, g, lo, hi, breaks=None):
+        """max |f - g| by 20001 samples and a bounded scalar search around the best."""
+        from scipy.optimize import minimize_scalar
+        ts = np.linspace(lo, hi, 20001)
+        d = [float(np.linalg.norm(np.atleast_1d(f(t)) - np.atleast_1d(g(t)))) for t in ts]
+        j = int(np.argmax(d))
+        a, b = ts[max(0, j - 1)], ts[min(len(ts) - 1, j + 1)]
+        r = minimize_scalar(lambda t: -float(np.linalg.norm(np.atleast_1d(f(t)) - np.atleast_1d(g(t)))),
+                            bounds=(a, b), method="bounded", options={"xatol": 1e-14})
+        return max(d[j], -r.fun)
+
+    def test_elevated_bezier_comes_back_exactly(self):
+        # Degree elevation in exact rationals: Q_i = i/(n+1) P_(i-1) + (1 - i/(n+1)) P_i.
+        P = [[Fraction(0), Fraction(0)], [Fraction(1), Fraction(3)], [Fraction(3), Fraction(3)], [Fraction(4), Fraction(-1)]]
+        n = 3
+        Q = [[float(Fraction(i, n + 1) * (P[i - 1][k] if i > 0 else 0) + (1 - Fraction(i, n + 1)) * (P[i][k] if i <= n else 0))
+              for k in range(2)] for i in range(n + 2)]
+        got = self.reduce(bezier(Q), 1e-9)
+        self.assertTrue(np.allclose(np.array(got["curve"]["points"]), np.array(P, dtype=float), rtol=0, atol=1e-13))
+        self.assertLess(got["max_error"], 1e-13)  # rounding of the solve only
+
+    def test_cubic_to_quadratic_least_squares(self):
+        # Oracle: the L2 problem with both ends kept, solved here by numpy on 2001 Gauss
+        # points (exact for these polynomial integrands), and the error measured here.
+        P = np.array([[0, 0], [1, 2], [3, 2.5], [4, 0]], float)
+        xg, wg = np.polynomial.legendre.leggauss(40)
+        t = (xg + 1) / 2
+        B3 = np.array([[comb(3, i) * s ** i * (1 - s) ** (3 - i) for i in range(4)] for s in t])
+        B2 = np.array([[comb(2, i) * s ** i * (1 - s) ** (2 - i) for i in range(3)] for s in t])
+        target = B3 @ P - np.outer(B2[:, 0], P[0]) - np.outer(B2[:, 2], P[3])
+        sw = np.sqrt(wg)[:, None]
+        mid = np.linalg.lstsq(B2[:, 1:2] * sw, target * sw, rcond=None)[0]
+        want = np.vstack([P[0], mid[0], P[3]])
+        got = self.reduce(bezier(P.tolist()), 1)
+        self.assertTrue(np.allclose(np.array(got["curve"]["points"]), want, rtol=0, atol=1e-12))
+        err = self.measured(lambda s: bezier_point(P.tolist(), s), lambda s: bezier_point(want.tolist(), s), 0, 1)
+        self.assertLessEqual(abs(got["max_error"] - err), 1e-9 * err)  # the contract's 1e-9 relative
+        # refused below that error, with the figure
+        msg = self.bad("reduce", {"curve": bezier(P.tolist()), "tolerance": err / 2}, "tolerance", contains="moves the curve")
+        self.assertIn(str(round(err, 6))[:6], msg)
+
+    def test_times_and_constant(self):
+        P = [[0, 0], [1, 2], [2, -1], [3, 3], [4, 1]]
+        got = self.reduce(bezier(P), 10, times=2)
+        self.assertEqual(len(got["curve"]["points"]), 3)
+        self.assertEqual(got["curve"]["points"][0], [0, 0])  # ends kept
+        self.assertEqual(got["curve"]["points"][-1], [4, 1])
+        # degree 1 -> 0: the mean, the midpoint; max error half the length.
+        got = self.reduce(bezier([[0, 0], [4, 3]]), 3)
+        self.assert_close(got["curve"]["points"], [[2, 1.5]], 1e-15)
+        self.assertAlmostEqual(got["max_error"], 2.5, delta=1e-12)
+
+    def test_bspline_reports_its_true_error(self):
+        rng = random.Random(4)
+        for trial in range(8):
+            p = rng.randint(2, 4)
+            U, P = random_spline(rng, p, 2, True, False)
+            got = self.reduce(bspline(U, P, p), 100)
+            c = got["curve"]
+            self.assertEqual((c["type"], c["degree"]), ("bspline", p - 1))
+            lo, hi = U[p], U[len(P)]
+            self.assertEqual((c["knots"][0], c["knots"][-1]), (lo, hi))
+            err = self.measured(BSpline(np.array(U, float), np.array(P, float), p), curve_oracle(c), lo, hi)
+            # Our measurement: 20001 samples and a local search; the program's: 1e-9
+            # relative. The pieces are smooth, so both find the same maximum.
+            self.assertLessEqual(abs(got["max_error"] - err), 1e-8 * max(err, 1e-300), f"trial {trial}")
+
+    def test_bspline_exactly_reducible(self):
+        # A quadratic polynomial as a clamped cubic B-spline with a knot at 1/2: elevation
+        # in exact rationals, then knot insertion by Boehm's formula, both written here.
+        P = [Fraction(0), Fraction(2), Fraction(-1)]
+        Q = [P[0], (P[0] + 2 * P[1]) / 3, (2 * P[1] + P[2]) / 3, P[2]]
+        U = [0, 0, 0, 0, 1, 1, 1, 1]
+        u = Fraction(1, 2)
+        # Boehm: a_i = (u - U_i) / (U_(i+3) - U_i) for i = 1..3.
+        R = [Q[0]] + [(1 - (u - U[i]) / (U[i + 3] - U[i])) * Q[i - 1] + (u - U[i]) / (U[i + 3] - U[i]) * Q[i] for i in (1, 2, 3)] + [Q[3]]
+        c = bspline([0, 0, 0, 0, 0.5, 1, 1, 1, 1], [[float(x)] for x in R], 3)
+        got = self.reduce(c, 1e-12)
+        self.assertEqual(got["curve"]["degree"], 2)
+        self.assertLess(got["max_error"], 1e-14)  # exact data, exact reduction: rounding
+
+    def test_nurbs(self):
+        # A quarter circle elevated to degree 3 (homogeneous elevation in exact arithmetic
+        # of the weights' squares is not rational: in floats, then reduced back).
+        s2 = 2 ** -0.5
+        H = [[1, 0, 1], [s2, s2, s2], [0, 1, 1]]  # (w x, w y, w)
+        E = [H[0]] + [[(1 / 3) * H[0][k] + (2 / 3) * H[1][k] for k in range(3)],
+                      [(2 / 3) * H[1][k] + (1 / 3) * H[2][k] for k in range(3)]] + [H[2]]
+        c = {"type": "nurbs", "degree": 3, "knots": [0, 0, 0, 0, 1, 1, 1, 1],
+             "points": [[h[0] / h[2], h[1] / h[2]] for h in E], "weights": [h[2] for h in E]}
+        got = self.reduce(c, 1e-12)
+        self.assertEqual((got["curve"]["type"], got["curve"]["degree"]), ("nurbs", 2))
+        self.assertLess(got["max_error"], 1e-14)  # rounding of the elevation here
+        f = curve_oracle(got["curve"])
+        for j in range(17):
+            x, y = f(j / 16)
+            self.assertAlmostEqual(x * x + y * y, 1, delta=1e-14)
+
+    def test_bad_input(self):
+        c = bezier([[0, 0], [1, 2], [2, 0]])
+        self.bad("reduce", {"curve": c}, "tolerance", contains="missing")
+        self.bad("reduce", {"curve": c, "tolerance": 0}, "tolerance", contains="> 0")
+        self.bad("reduce", {"curve": c, "tolerance": -1}, "tolerance", contains="> 0")
+        self.bad("reduce", {"curve": c, "tolerance": 1, "times": 0}, "times", contains="1..")
+        self.bad("reduce", {"curve": c, "tolerance": 1, "times": 3}, "times", contains="1..")
+        self.bad("reduce", {"curve": c, "tolerance": 1, "times": 1.5}, "times")
+        self.bad("reduce", {"curve": c, "tolerance": 1e-6}, "tolerance", contains="moves the curve")
+        self.bad("reduce", {"curve": {"type": "polyline", "points": [[0, 0], [1, 1]]}, "tolerance": 1}, "curve.type")
+        self.bad("reduce", {"curve": {"type": "rational_bezier", "points": [[0, 0], [1, 1], [2, 0]], "weights": [1, 2, 1]},
+                            "tolerance": 1}, "curve.type")
+
+
+if __name__ == "__main__":
+    test_cli.BINARY = os.path.abspath(sys.argv.pop(1))
+    unittest.main(verbosity=1)

@@ -1,0 +1,137 @@
+// The operations of issue 20 in the library: solve (level sets of a coordinate or a linear
+// functional), to_bspline (pieces back to one B-spline with the continuity they have) and
+// max_deviation (the largest distance at equal parameters), on closed forms and curves
+// built in the test with known roots, knots and distances.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <vector>
+
+#include "test_support.hpp"  // the whole library (casteljau.hpp: solve, to_bspline, deviation)
+
+namespace {
+
+using namespace casteljau;
+using P2 = Point<double, 2>;
+using V2 = Vector<double, 2>;
+using B2 = Bezier<double, 2>;
+using R2 = RationalBezier<double, 2>;
+
+TEST(Solve, ExactDoubleRootReportedOnce) {
+  // y(t) = 12 (t - 3/8)^2 (t - 13/16) in Bernstein form (exact in double): power form
+  // 12t^3 - 18.75t^2 + 9t - 1.37109375, b_i = sum_k C(i,k)/C(3,k) a_k (a1/3, a2/3 exact).
+  const double a0 = -1.37109375, a1 = 9, a2 = -18.75, a3 = 12;
+  const double b0 = a0, b1 = a0 + a1 / 3, b2 = a0 + 2 * a1 / 3 + a2 / 3, b3 = a0 + a1 + a2 + a3;
+  const B2 c({P2(0, b0), P2(1.0 / 3, b1), P2(2.0 / 3, b2), P2(1, b3)});
+  const auto s = solve(c, V2(0, 1), 0.0);
+  EXPECT_TRUE(s.intervals.empty());
+  ASSERT_EQ(s.t.size(), 2u);
+  EXPECT_NEAR(s.t[0], 0.375, 4 * casteljau::test::eps);  // exact data: a few eps
+  EXPECT_NEAR(s.t[1], 0.8125, 4 * casteljau::test::eps);
+}
+
+TEST(Solve, IntervalsMergeAcrossPiecesAndSwallowTheirRoots) {
+  // Breaks 0, 1, 2, 3: a parabola ending on the axis, two straight pieces on it, a rise.
+  Pieces<double, 2> p({B2({P2(0, 1), P2(1, -1), P2(2, 0)}), B2({P2(2, 0), P2(3, 0)}), B2({P2(3, 0), P2(4, 0)}),
+                       B2({P2(4, 0), P2(5, 1)})});
+  const auto s = solve(p, V2(0, 1), 0.0);
+  ASSERT_EQ(s.intervals.size(), 1u);
+  EXPECT_EQ(s.intervals[0].lo, 1.0);
+  EXPECT_EQ(s.intervals[0].hi, 3.0);
+  // (3u - 1)(u - 1) = 0 on the first piece: u = 1/3 (u = 1 is the interval's end).
+  ASSERT_EQ(s.t.size(), 1u);
+  EXPECT_NEAR(s.t[0], 1.0 / 3, 4 * casteljau::test::eps);
+}
+
+TEST(Solve, RationalCircleAtItsBreaksAndTangencies) {
+  std::vector<BezierPiece<double, 2>> segs;
+  for (int i = 0; i < 4; ++i) segs.emplace_back(R2::circular_arc(P2(0, 0), 1.0, i * std::numbers::pi / 2, (i + 1) * std::numbers::pi / 2));
+  const Pieces<double, 2> circle(std::move(segs));  // breaks 0..4
+  EXPECT_EQ(solve(circle, V2(1, 0), 0.0).t, (std::vector<double>{1, 3}));  // joints, once each
+  EXPECT_EQ(solve(circle, V2(0, 1), -1.0).t, (std::vector<double>{3}));    // tangency at a joint
+  EXPECT_EQ(solve(circle, V2(1, 0), 1.0).t, (std::vector<double>{0, 4}));  // both ends
+  EXPECT_TRUE(solve(circle, V2(1, 0), 1.5).t.empty());
+}
+
+TEST(Solve, RandomCubicsMatchSignChangesOfDenseSamples) {
+  // Property: every reported root is a root (|y| small), and their count equals the sign
+  // changes of y over 4001 samples (random data: simple roots, no tangency).
+  std::mt19937 rng(20);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (int trial = 0; trial < 200; ++trial) {
+    const B2 c({P2(0, u(rng)), P2(1, u(rng)), P2(2, u(rng)), P2(3, u(rng))});
+    const double v = 0.5 * u(rng);
+    const auto s = solve(c, V2(0, 1), v);
+    int changes = 0;
+    double prev = c(0.0)[1] - v;
+    for (int j = 1; j <= 4000; ++j) {
+      const double y = c(j / 4000.0)[1] - v;
+      if ((y > 0) != (prev > 0) && y != 0 && prev != 0) ++changes;
+      prev = y;
+    }
+    EXPECT_EQ(static_cast<int>(s.t.size()), changes) << "trial " << trial;
+    for (double t : s.t) EXPECT_NEAR(c(t)[1], v, 1e-13) << "trial " << trial;  // a few eps of |P| <= 1
+  }
+}
+
+TEST(Solve, BadDirection) {
+  const B2 c({P2(0, 0), P2(1, 1)});
+  EXPECT_THROW((void)solve(c, V2(0, 0), 1.0), InvalidArgument);
+  EXPECT_THROW((void)solve(c, V2(1, 0), std::nan("")), InvalidArgument);
+}
+
+TEST(ToBSpline, UniformCubicComesBackWithSimpleKnots) {
+  // A clamped cubic B-spline with simple interior knots: C^2 at each, so its pieces come
+  // back with every interior knot once and the same control points.
+  const std::vector<double> U{0, 0, 0, 0, 1, 2, 3, 4, 4, 4, 4};
+  const std::vector<P2> P{P2(0, 0), P2(1, 2), P2(2, -1), P2(3, 3), P2(4, 0), P2(5, 1), P2(6, -2)};
+  const BSpline<double, 2> b(3, U, P);
+  const auto r = to_bspline(pieces(b));
+  ASSERT_TRUE((std::holds_alternative<BSpline<double, 2>>(r)));
+  const auto& g = std::get<BSpline<double, 2>>(r);
+  EXPECT_EQ(g.knots(), U);
+  ASSERT_EQ(g.points().size(), P.size());
+  // Blossoming into pieces and 2 removals per knot: a few hundred eps of |P| <= 6.
+  for (std::size_t i = 0; i < P.size(); ++i) EXPECT_LT(norm(g.points()[i] - P[i]), 1e-12) << i;
+}
+
+TEST(ToBSpline, ContinuityDecidesMultiplicity) {
+  // One cubic cut in two at a dyadic parameter (exact halves): the knot disappears.
+  const B2 c({P2(0, 0), P2(1, 3), P2(3, 3), P2(4, 0)});
+  const auto [l, rr] = c.split(0.5);
+  const auto one = std::get<BSpline<double, 2>>(to_bspline(Pieces<double, 2>({l, rr})));
+  EXPECT_EQ(one.knots(), (std::vector<double>{0, 0, 0, 0, 2, 2, 2, 2}));
+  for (std::size_t i = 0; i < 4; ++i) EXPECT_LT(norm(one.points()[i] - c.points()[i]), 1e-14);
+  // A line then a parabola, C^0: the quadratic's knot twice; a gap: refused (a BSpline
+  // has no jumps: interior knots at most p times).
+  const Pieces<double, 2> corner({B2({P2(0, 0), P2(1, 1)}), B2({P2(1, 1), P2(2, 2), P2(3, 0)})});
+  EXPECT_EQ((std::get<BSpline<double, 2>>(to_bspline(corner)).knots()), (std::vector<double>{0, 0, 0, 1, 1, 2, 2, 2}));
+  const Pieces<double, 2> gap({B2({P2(0, 0), P2(1, 1)}), B2({P2(1, 2), P2(2, 2), P2(3, 0)})});
+  EXPECT_THROW((void)to_bspline(gap), InvalidArgument);
+}
+
+TEST(ToBSpline, CircleIsANurbsWithDoubleKnots) {
+  std::vector<BezierPiece<double, 2>> segs;
+  for (int i = 0; i < 4; ++i) segs.emplace_back(R2::circular_arc(P2(0, 0), 1.0, i * std::numbers::pi / 2, (i + 1) * std::numbers::pi / 2));
+  const Pieces<double, 2> circle(std::move(segs));
+  const auto r = to_bspline(circle);
+  ASSERT_TRUE((std::holds_alternative<Nurbs<double, 2>>(r)));
+  const auto& n = std::get<Nurbs<double, 2>>(r);
+  // The homogeneous quarter arcs meet with C^0 only (their middle weights are 1/sqrt 2).
+  EXPECT_EQ(n.knots(), (std::vector<double>{0, 0, 0, 1, 1, 2, 2, 3, 3, 4, 4, 4}));
+  for (int j = 0; j <= 64; ++j) {
+    const double t = j / 16.0;
+    EXPECT_LT(norm(n(t) - circle(t)), 1e-15) << t;  // the same curve, same parameter: rounding
+  }
+}
+
+TEST(MaxDeviation, FindsAPeakBetweenSamples) {
+  // |a(u) - b(u)| = u (1 - u): maximum 1/4 at u = 1/2, not a sample for 7 samples.
+  const auto a = [](double u) { return P2(u, 0); };
+  const auto b = [](double u) { return P2(u, u * (1 - u)); };
+  EXPECT_NEAR(max_deviation<double>(a, b, {0.0, 1.0}, 7), 0.25, 1e-15);  // golden section to 1e-13 in u: quadratic peak
+}
+
+}  // namespace
