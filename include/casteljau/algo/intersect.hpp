@@ -1308,8 +1308,9 @@ Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
 }
 
 /// The fast path (algo/intersect_low_degree.hpp) for two polynomial Bézier curves of
-/// degree 1 to 3; nothing when it does not apply or refuses. Its points are the general engine's answer: isolated
-/// crossings, reported with the pieces' own values at their parameters.
+/// degree 1 to 3; nothing when it does not apply or refuses. Its points are the general
+/// engine's answer: isolated crossings, reported with the pieces' own values at their
+/// parameters.
 template <class T>
 std::optional<Intersections<T>> low_degree(const Bezier<T, 2>& a, const Bezier<T, 2>& b) {
   const auto r = isect_fast::intersect_low_degree<T>(a.points(), b.points());
