@@ -571,10 +571,9 @@ RationalBezier<double, 2> onto(const RationalBezier<double, 2>& c, const Interva
 /// break interval.
 Pieces<double, 2> graph(const Pieces<double, 1>& c) {
   std::vector<BezierPiece<double, 2>> segs;
-  for (std::size_t i = 0; i < c.size(); ++i) {
-    const auto dom = c.segment_domain(i);
-    segs.push_back(std::visit([&](const auto& s) { return BezierPiece<double, 2>(onto(graph(s), dom)); }, c.segments()[i]));
-  }
+  c.for_each_piece([&](std::size_t i, const auto& s, const Interval<double>& own) {
+    segs.push_back(BezierPiece<double, 2>(onto(graph(s), c.lift(i, own))));  // the piece's break interval
+  });
   return Pieces<double, 2>(std::move(segs), c.breaks());
 }
 

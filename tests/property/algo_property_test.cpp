@@ -1,6 +1,6 @@
 // Properties of the algorithms across curve types: flattening within tolerance, C^r joins
-// built by cr_join_points pass is_cr, curvature under rigid motions and scaling, and path
-// bounds.
+// built by cr_join_points pass is_cr, curvature under rigid motions and scaling, path
+// bounds, and the piecewise algebra (for_each_piece tiles a range, portion keeps the curve).
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -130,6 +130,62 @@ RC_GTEST_PROP(AlgoProperty, PathBounds, ()) {
   RC_ASSERT(b.lo == expected.lo);
   RC_ASSERT(b.hi == expected.hi);
   for (int i = 0; i <= 400; ++i) RC_ASSERT(b.contains(p(k * i / 400.0), 1e-13));
+}
+
+// The piecewise algebra on random pieces with random breaks (on a grid of 1/16, from -4):
+// the parts for_each_piece visits, lifted back, tile the range (consecutive parts meet
+// exactly at a break; the range's ends come back to within the rounding of one map,
+// 4 eps of the domain's size), each part within its piece's own domain; locate then lift
+// returns u (the same rounding); and portion(range) is the curve on the range (at its end,
+// the last piece's end: random pieces need not meet at their breaks). Its
+// tolerance: the two evaluations map u through different breaks (a against u_i), each
+// rounding to about eps |u| (|u| <= 28) over a break interval of at least 1/16, so the
+// own parameters differ by up to about 450 eps, times the speed in the own parameter, at
+// most n (w_max / w_min)^2 max |P_(i+1) - P_i| <= 7 * 256 * 2 sqrt(2) ~ 5100: 5e-10;
+// 1e-9 with margin (the portions' own rounding, a few eps, is far below).
+RC_GTEST_PROP(AlgoProperty, PiecewiseAlgebraTilesRangesAndKeepsTheCurve, ()) {
+  const int k = *rc::gen::inRange(1, 6);
+  std::vector<BezierPiece<double, 2>> segs;
+  std::vector<double> breaks{-4 + *rc::gen::inRange(0, 16) / 16.0};
+  for (int i = 0; i < k; ++i) {
+    const int n = *rc::gen::inRange(1, 8);
+    if (*rc::gen::arbitrary<bool>())
+      segs.emplace_back(Bezier<double, 2>(prop::control_points<2>(n)));
+    else
+      segs.emplace_back(RationalBezier<double, 2>(prop::control_points<2>(n), prop::weights(n)));
+    breaks.push_back(breaks.back() + *rc::gen::inRange(1, 64) / 16.0);
+  }
+  const Pieces<double, 2> p(segs, breaks);
+  const Interval<double> dom = p.domain();
+  double a = dom.at(*prop::parameter()), b = dom.at(*prop::parameter());
+  if (*rc::gen::arbitrary<bool>()) a = breaks[static_cast<std::size_t>(*rc::gen::inRange(0, k + 1))];  // on a break
+  if (a > b) std::swap(a, b);
+  const double slack = 4 * eps * std::max(std::abs(dom.lo), std::abs(dom.hi));
+  std::vector<Interval<double>> lifted;
+  Point<double, 2> end;  // the range's end on the last piece visited (its left limit at a break)
+  p.for_each_piece({a, b}, [&](std::size_t i, const auto& piece, const Interval<double>& own) {
+    RC_ASSERT(own.lo >= piece.domain().lo);
+    RC_ASSERT(own.hi <= piece.domain().hi);
+    lifted.push_back(p.lift(i, own));
+    end = piece(own.hi);
+  });
+  RC_ASSERT(!lifted.empty());
+  RC_ASSERT(std::abs(lifted.front().lo - a) <= slack);
+  RC_ASSERT(std::abs(lifted.back().hi - b) <= slack);
+  for (std::size_t j = 1; j < lifted.size(); ++j) RC_ASSERT(lifted[j].lo == lifted[j - 1].hi);
+  const auto at = p.locate(a);
+  RC_ASSERT(std::abs(p.lift(at.index, at.t) - a) <= slack);
+  if (a < b) {
+    const auto q = p.portion({a, b});
+    RC_ASSERT(q.domain() == Interval<double>(a, b));
+    for (int j = 0; j < 50; ++j) {
+      const double u = a + (b - a) * j / 50;
+      RC_ASSERT(prop::diff(q(u), p(u)) <= 1e-9);
+    }
+    // At b the portion ends on the piece before b; p itself, at a break, on the next one
+    // (the pieces need not meet).
+    RC_ASSERT(prop::diff(q(b), end) <= 1e-9);
+  }
 }
 
 }  // namespace

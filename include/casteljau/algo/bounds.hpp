@@ -161,15 +161,15 @@ Box<typename C::Scalar, C::dimension> bounds(const C& c) {
   } else {
     Box<typename C::Scalar, C::dimension> b = Box<typename C::Scalar, C::dimension>::empty_box();
     const auto& p = pieces(c);  // a reference to c itself when c is Pieces
-    for (const auto& s : p.segments()) b.add(std::visit([](const auto& piece) { return bounds(piece); }, s));
+    p.for_each_piece([&](std::size_t, const auto& piece, const auto&) { b.add(bounds(piece)); });
     return b;
   }
 }
 
 /// The tight box of any curve over the parameter range [from, to] of its domain: the
 /// union over the Bézier pieces meeting [from, to] of their tight boxes over the part
-/// inside it (each piece's own parameters through local_parameter, so the range's ends
-/// are evaluated on the piece that holds them). Ends at a break give the break's point
+/// inside it (Pieces::for_each_piece clips the range, so the range's ends are evaluated
+/// on the piece that holds them). Ends at a break give the break's point
 /// from both sides (the same point for a continuous curve; both for a path with a gap).
 /// from == to gives the curve's point there (the right piece at a break). Accuracy and
 /// cost as for the pieces, only the pieces meeting the range examined. Throws
@@ -181,17 +181,8 @@ Box<typename C::Scalar, C::dimension> bounds(const C& c, typename C::Scalar from
   const auto& p = pieces(c);  // a reference to c itself when c is Pieces
   detail::check_range<T>(p.domain(), from, to);
   Box<T, C::dimension> b = Box<T, C::dimension>::empty_box();
-  if (from == to) {
-    b.add(p(from));
-    return b;
-  }
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    const Interval<T> seg = p.segment_domain(i);
-    if (seg.hi <= from || seg.lo >= to) continue;
-    const T t0 = from <= seg.lo ? T(0) : p.local_parameter(i, from);
-    const T t1 = to >= seg.hi ? T(1) : p.local_parameter(i, to);
-    b.add(std::visit([&](const auto& piece) { return bounds(piece, t0, t1); }, p.segments()[i]));
-  }
+  // from == to: the one piece holding it, over [t, t]: the curve's point.
+  p.for_each_piece({from, to}, [&](std::size_t, const auto& piece, const Interval<T>& own) { b.add(bounds(piece, own.lo, own.hi)); });
   return b;
 }
 

@@ -54,8 +54,7 @@ std::optional<typename C::Scalar> curvature(const C& c, typename C::Scalar t) {
 template <class T, int D>
 std::optional<T> curvature(const Pieces<T, D>& p, T u) {
   require_finite(u, "t");
-  const std::size_t i = p.segment_index(u);
-  const auto t = p.local_parameter(i, u);
+  const auto [i, t] = p.locate(u);
   return std::visit([&](const auto& s) { return curvature_of(s.derivative_at(t, 1), s.derivative_at(t, 2)); }, p.segments()[i]);
 }
 

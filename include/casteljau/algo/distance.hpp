@@ -187,7 +187,7 @@ CurveDistance<typename CA::Scalar, CA::dimension> distance(const CA& a, const CB
     const Part& y = arena[top.y];
     // Upper bound from the chords' closest parameters, evaluated on the curves.
     const auto st = closest_on_segments(x.p0, x.p1, y.p0, y.p1);
-    offer(pa.global_parameter(x.index, x.t0 + st[0] * (x.t1 - x.t0)), pb.global_parameter(y.index, y.t0 + st[1] * (y.t1 - y.t0)));
+    offer(pa.lift(x.index, x.t0 + st[0] * (x.t1 - x.t0)), pb.lift(y.index, y.t0 + st[1] * (y.t1 - y.t0)));
     const T sx = norm(x.box.hi - x.box.lo), sy = norm(y.box.hi - y.box.lo);
     const bool can_x = x.t1 - x.t0 > T(1e-15), can_y = y.t1 - y.t0 > T(1e-15);
     if (!can_x && !can_y) continue;  // at the resolution of the parameter: the offer stands

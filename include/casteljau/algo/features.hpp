@@ -178,77 +178,77 @@ Features<typename C::Scalar, C::dimension> features(const C& c) {
   // previous break (the end of the last piece that is not a single point).
   int previous_bend = 0;
   std::optional<Vector<T, 2>> previous_direction;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    std::visit(
-        [&](const auto& piece) {
-          const auto f = detail::scalar_forms<T, D>(piece, piece.points().front());
-          std::array<std::vector<T>, D> num, bound;
-          T hodograph_size = 0;
-          int biggest = 0;
-          for (int k = 0; k < D; ++k) {
-            num[k] = detail::derivative_numerator(f, k);
-            bound[k] = detail::derivative_numerator(f, k, true);
-            const T m = detail::max_abs<T>(std::span<const T>(num[k]));
-            if (m > hodograph_size) {
-              hodograph_size = m;
-              biggest = k;
-            }
-          }
-          const T slack = 8 * static_cast<T>(f.degree + 2) * (f.rational ? 4 : 1);
-          std::array<std::vector<BernsteinRoot<T>>, D> roots;
-          for (int k = 0; k < D; ++k) {
-            const int start_sign = detail::end_sign(num[k], bound[k], slack, false);
-            if (i > 0 && previous_sign[k] * start_sign < 0) out.extrema[k].push_back(p.segment_domain(i).lo);
-            const int end = detail::end_sign(num[k], bound[k], slack, true);
-            if (end != 0 || start_sign != 0) previous_sign[k] = end;
-            if (f.degree < 2) continue;
-            roots[k] = detail::numerator_roots(num[k], bound[k], slack);
-            const T noise = detail::noise_of(bound[k], slack);
-            std::erase_if(roots[k], [&](const BernsteinRoot<T>& r) {
-              return !(r.t > 0 && r.t < 1) || detail::end_root_by_rounding(num[k], r.t, noise);
-            });
-            for (const auto& r : roots[k])
-              if (r.multiplicity % 2 == 1) out.extrema[k].push_back(p.global_parameter(i, r.t));
-          }
-          if constexpr (D == 2) {
-            std::vector<T> kn, ka;
-            if (f.degree >= 2) {
-              kn = detail::curvature_numerator<T>(f, false);
-              ka = detail::curvature_numerator<T>(f, true);
-            }
-            const T kslack = 4 * slack;
-            const auto leaving = detail::end_direction<T>(piece, false), entering = detail::end_direction<T>(piece, true);
-            if (!leaving) return;  // a single point: nothing here, the next break compares across it
-            const int bend_start = kn.empty() ? 0 : detail::end_sign(kn, ka, kslack, false);
-            const int bend_end = kn.empty() ? 0 : detail::end_sign(kn, ka, kslack, true);
-            if (i > 0 && previous_direction) {
-              const Vector<T, 2>& a = *previous_direction;
-              const Vector<T, 2>& b = *leaving;
-              const T u = p.segment_domain(i).lo;
-              if (dot(a, b) < 0 && std::abs(cross(a, b)) <= cusp_tolerance<T>) {
-                out.cusps.push_back(u);
-              } else if (previous_bend * bend_start < 0) {
-                out.inflections.push_back(u);
-              }
-            }
-            previous_direction = entering;
-            previous_bend = bend_end;
-            if (f.degree < 2 || hodograph_size == 0) return;
-            std::vector<T> cusps;
-            for (const auto& r : roots[biggest]) {
-              Vector<T, D> v;
-              for (int k = 0; k < D; ++k) v[k] = detail::bernstein_value_fast<T>(std::span<const T>(num[k]), r.t);
-              if (norm(v) <= cusp_tolerance<T> * hodograph_size) cusps.push_back(r.t);
-            }
-            for (T t : detail::sign_changes(kn, ka, kslack)) {
-              const bool at_cusp = std::any_of(cusps.begin(), cusps.end(), [&](T u) { return std::abs(u - t) <= T(1e-7); });
-              if (!at_cusp) out.inflections.push_back(p.global_parameter(i, t));
-            }
-            for (T t : cusps) out.cusps.push_back(p.global_parameter(i, t));
-          }
-        },
-        p.segments()[i]);
-  }
+  std::vector<T> odd;  // a piece's roots of odd multiplicity
+  p.for_each_piece([&](std::size_t i, const auto& piece, const Interval<T>& own) {
+    const auto f = detail::scalar_forms<T, D>(piece, piece.points().front());
+    std::array<std::vector<T>, D> num, bound;
+    T hodograph_size = 0;
+    int biggest = 0;
+    for (int k = 0; k < D; ++k) {
+      num[k] = detail::derivative_numerator(f, k);
+      bound[k] = detail::derivative_numerator(f, k, true);
+      const T m = detail::max_abs<T>(std::span<const T>(num[k]));
+      if (m > hodograph_size) {
+        hodograph_size = m;
+        biggest = k;
+      }
+    }
+    const T slack = 8 * static_cast<T>(f.degree + 2) * (f.rational ? 4 : 1);
+    std::array<std::vector<BernsteinRoot<T>>, D> roots;
+    for (int k = 0; k < D; ++k) {
+      const int start_sign = detail::end_sign(num[k], bound[k], slack, false);
+      if (i > 0 && previous_sign[k] * start_sign < 0) out.extrema[k].push_back(p.lift(i, own.lo));  // the break u_i
+      const int end = detail::end_sign(num[k], bound[k], slack, true);
+      if (end != 0 || start_sign != 0) previous_sign[k] = end;
+      if (f.degree < 2) continue;
+      roots[k] = detail::numerator_roots(num[k], bound[k], slack);
+      const T noise = detail::noise_of(bound[k], slack);
+      std::erase_if(roots[k], [&](const BernsteinRoot<T>& r) {
+        return !(r.t > 0 && r.t < 1) || detail::end_root_by_rounding(num[k], r.t, noise);
+      });
+      odd.clear();
+      for (const auto& r : roots[k])
+        if (r.multiplicity % 2 == 1) odd.push_back(r.t);
+      p.lift_roots(i, odd, out.extrema[k]);
+    }
+    if constexpr (D == 2) {
+      std::vector<T> kn, ka;
+      if (f.degree >= 2) {
+        kn = detail::curvature_numerator<T>(f, false);
+        ka = detail::curvature_numerator<T>(f, true);
+      }
+      const T kslack = 4 * slack;
+      const auto leaving = detail::end_direction<T>(piece, false), entering = detail::end_direction<T>(piece, true);
+      if (!leaving) return;  // a single point: nothing here, the next break compares across it
+      const int bend_start = kn.empty() ? 0 : detail::end_sign(kn, ka, kslack, false);
+      const int bend_end = kn.empty() ? 0 : detail::end_sign(kn, ka, kslack, true);
+      if (i > 0 && previous_direction) {
+        const Vector<T, 2>& a = *previous_direction;
+        const Vector<T, 2>& b = *leaving;
+        const T u = p.lift(i, own.lo);  // the break u_i
+        if (dot(a, b) < 0 && std::abs(cross(a, b)) <= cusp_tolerance<T>) {
+          out.cusps.push_back(u);
+        } else if (previous_bend * bend_start < 0) {
+          out.inflections.push_back(u);
+        }
+      }
+      previous_direction = entering;
+      previous_bend = bend_end;
+      if (f.degree < 2 || hodograph_size == 0) return;
+      std::vector<T> cusps;
+      for (const auto& r : roots[biggest]) {
+        Vector<T, D> v;
+        for (int k = 0; k < D; ++k) v[k] = detail::bernstein_value_fast<T>(std::span<const T>(num[k]), r.t);
+        if (norm(v) <= cusp_tolerance<T> * hodograph_size) cusps.push_back(r.t);
+      }
+      std::vector<T> inflections = detail::sign_changes(kn, ka, kslack);
+      std::erase_if(inflections, [&](T t) {
+        return std::any_of(cusps.begin(), cusps.end(), [&](T u) { return std::abs(u - t) <= T(1e-7); });
+      });
+      p.lift_roots(i, inflections, out.inflections);
+      p.lift_roots(i, cusps, out.cusps);
+    }
+  });
   for (auto& e : out.extrema) std::sort(e.begin(), e.end());
   // A feature at a break may also be found, by rounding, just inside a piece next to it:
   // one report within 1e-9 of the domain's length.

@@ -226,7 +226,7 @@ template <class C>
 double flatten_count_estimate(const C& c, typename C::Scalar tolerance) {
   const auto& p = pieces(c);
   double n = 0;
-  for (const auto& s : p.segments()) n += std::visit([&](const auto& x) { return flatten_count_estimate(x, tolerance); }, s);
+  p.for_each_piece([&](std::size_t, const auto& piece, const auto&) { n += flatten_count_estimate(piece, tolerance); });
   return n;
 }
 
@@ -248,18 +248,18 @@ void flatten(const C& c, typename C::Scalar tolerance, FlattenMethod method, std
   const Pieces<T, C::dimension>& p = pieces(c);  // a reference to c itself when c is Pieces
   const std::size_t size0 = out.size();
   try {
-    for (std::size_t i = 0; i < p.size(); ++i) {
+    p.for_each_piece([&](std::size_t i, const auto& piece, const Interval<T>& own) {
       const std::size_t start = out.size();
-      std::visit([&](const auto& s) { detail::flatten_piece(s, tolerance, method, out); }, p.segments()[i]);
-      if (i == 0) continue;
+      detail::flatten_piece(piece, tolerance, method, out);
+      if (i == 0) return;
       const T gap = detail::scaled_distance(out[start - 1], out[start]);
       if (gap > tolerance) {
-        throw InvalidArgument("curve", "the curve is not connected at t = " + detail::format_number(p.breaks()[i]) +
+        throw InvalidArgument("curve", "the curve is not connected at t = " + detail::format_number(p.lift(i, own.lo)) +
                                            ": its pieces are " + detail::format_number(gap) +
                                            " apart there, more than the tolerance " + detail::format_number(tolerance));
       }
       if (gap == 0) out.erase(out.begin() + static_cast<std::ptrdiff_t>(start));
-    }
+    });
     // A piece that is a single point (a zero-length segment of a path) adds nothing: no
     // vertex is written twice in a row, but a curve that is one point keeps its two.
     const auto first = out.begin() + static_cast<std::ptrdiff_t>(size0);

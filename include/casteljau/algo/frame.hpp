@@ -122,8 +122,7 @@ std::optional<Frame<typename C::Scalar, C::dimension>> frame(const C& c, typenam
   constexpr int D = C::dimension;
   require_finite(u, "t");
   const auto& p = pieces(c);  // a reference when c is Pieces; else the local owns them
-  const std::size_t i = p.segment_index(u);
-  const T t = p.local_parameter(i, u);
+  const auto [i, t] = p.locate(u);
   // The frame, curvature and torsion are unchanged by an increasing affine change of
   // parameter: the piece's own derivatives (in t on [0, 1]) give them without the chain
   // rule's powers of the break length, which under- or overflow for a domain of length

@@ -22,6 +22,7 @@
 #include "casteljau/algo/intersect_low_degree.hpp"
 #include "casteljau/basis/bernstein_poly.hpp"
 #include "casteljau/core/segment.hpp"
+#include "casteljau/core/unit_frame.hpp"
 #include "casteljau/basis/roots.hpp"
 #include "casteljau/curves/path.hpp"
 
@@ -569,7 +570,7 @@ bool intersect_arcs(const Prepared<T>& A, std::size_t ia, const Prepared<T>& B, 
       dup = std::abs(it->second - r.t) <= T(1e-12);
     if (dup) continue;
     done.emplace(r.s, r.t);
-    hits.push_back({A.curve->global_parameter(ra.piece, r.s), B.curve->global_parameter(rb.piece, r.t), ra.piece, rb.piece, r.s,
+    hits.push_back({A.curve->lift(ra.piece, r.s), B.curve->lift(rb.piece, r.t), ra.piece, rb.piece, r.s,
                     r.t, r.distance, false, edge});
   }
   return clean && !ctx.near;
@@ -583,8 +584,8 @@ inline constexpr double merge_fraction = 1e-6;
 /// The unit-frame point of a curve at its parameter g (pieces chosen as evaluation does).
 template <class T>
 Point<T, 2> unit_at(const Pieces<T, 2>& c, const Prepared<T>& P, T g) {
-  const std::size_t p = c.segment_index(g);
-  return at(P.unit[p], c.local_parameter(p, g));
+  const auto [p, t] = c.locate(g);
+  return at(P.unit[p], t);
 }
 
 /// The foot of q on curve c near its parameter t (unit frame): Newton's method on
@@ -600,8 +601,8 @@ Foot<T> foot_near(const Pieces<T, 2>& c, const Prepared<T>& P, const Point<T, 2>
   const Interval<T> dom = c.domain();
   Foot<T> best{t, std::numeric_limits<T>::infinity()};
   for (int it = 0; it < 12; ++it) {
-    const std::size_t p = c.segment_index(t);
-    const T s = c.local_parameter(p, t), k = c.own_domain(p).length() / c.segment_domain(p).length();
+    const auto [p, s] = c.locate(t);
+    const T k = c.parameter_scale(p);
     const Point<T, 2> x = at(P.unit[p], s);
     const Vector<T, 2> e = x - q, d1 = k * derivative(P.unit[p], s), d2 = (k * k) * derivative(P.unit[p], s, 2);
     if (norm(e) < best.distance) best = {t, norm(e)};
@@ -623,8 +624,8 @@ T distance_near(const Pieces<T, 2>& c, const Prepared<T>& P, const Point<T, 2>& 
 /// The unit direction of curve c at its parameter g (pieces chosen as evaluation does).
 template <class T>
 Vector<T, 2> direction_at(const Pieces<T, 2>& c, const Prepared<T>& P, T g) {
-  const std::size_t p = c.segment_index(g);
-  return direction(P.unit[p], c.local_parameter(p, g));
+  const auto [p, t] = c.locate(g);
+  return direction(P.unit[p], t);
 }
 
 /// A curve's domain and whether the curve is closed (its ends within the near-miss
@@ -715,8 +716,8 @@ std::optional<Hit<T>> touch_in(const Pieces<T, 2>& ca, const Prepared<T>& A, con
   const Foot<T> ft = foot(s);
   if (!(ft.distance <= tol)) return std::nullopt;
   s = la.wrap(s);
-  const std::size_t pa = ca.segment_index(s), pb = cb.segment_index(ft.t);
-  return Hit<T>{s, ft.t, pa, pb, ca.local_parameter(pa, s), cb.local_parameter(pb, ft.t), ft.distance, true};
+  const auto a = ca.locate(s), b = cb.locate(ft.t);
+  return Hit<T>{s, ft.t, a.index, b.index, a.t, b.t, ft.distance, true};
 }
 
 /// Whether curves a and b, common at (ta, tb) (the end of an overlap), are still within
@@ -743,71 +744,101 @@ bool near_beyond(const Pieces<T, 2>& ca, const Prepared<T>& A, const Pieces<T, 2
   return distance_near(cb, B, unit_at(ca, A, ta2), tb2) <= tol;
 }
 
-template <class T>
-Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
-  const bool self = cb == nullptr;
-  if (self) cb = &ca;
-  // Shared unit frame: origin at a's first control point, scale the power of two that
-  // brings the largest |P - origin| of both curves into [0.5, 1).
-  const Point<T, 2> origin = points(ca.segments().front()).front();
-  T extent = 0;
-  for (const auto* c : {&ca, cb})
-    for (const auto& s : c->segments())
-      for (const auto& q : points(s))
-        for (int d = 0; d < 2; ++d) extent = std::max(extent, std::abs(q[d] / 2 - origin[d] / 2));
-  int e = 0;
-  if (extent > 0) {
-    (void)std::frexp(extent, &e);
-    ++e;
-  }
-  const Prepared<T> A = prepare(ca, origin, e);
-  const Prepared<T> B = self ? Prepared<T>{} : prepare(*cb, origin, e);
-  const Prepared<T>& PB = self ? A : B;
-  constexpr T eps = std::numeric_limits<T>::epsilon();
-  // 1e-10 of the curves' size: the near-miss threshold of the contract. 64 eps of the unit
-  // coordinates (|P| < 1) covers rounding when the curves are points or tiny far apart.
-  const T tol = std::max(T(1e-10) * std::max(A.size, PB.size), 64 * eps);
-  Context<T> ctx{tol, tol, tol + 16 * eps, 0, 0, false, {}, nullptr, nullptr, nullptr, nullptr, false};
+// solve() runs the phases below in turn; each is a function of its inputs (the prepared
+// curves, the near-miss distance) that a test can call alone.
 
-  std::vector<Hit<T>> hits;
-  // Overlaps found arc by arc, each with the points its pair of arcs gave (reported if
-  // the overlap turns out to lie inside a crossing or touch region, see below).
-  // When the first pass over a pair of arcs stopped early (see below), the pair itself
-  // (`deferred`), whose points are computed only if the overlap is rejected.
-  struct RawOverlap {
-    CurveOverlap<T> o;
-    std::vector<Hit<T>> found;
-    std::vector<std::pair<std::size_t, std::size_t>> deferred;
-  };
-  std::vector<RawOverlap> overlaps;
-  // All the points of arcs i and j (the engine's full pass).
-  auto arc_points = [&](std::size_t i, std::size_t j) {
-    std::vector<Hit<T>> found;
-    intersect_arcs(A, i, PB, j, ctx, lazy_nodes, found);
+/// The frame shared by both curves of solve() (core/unit_frame.hpp): origin at a's first
+/// control point, e the exponent that brings the largest |P - origin| over the control
+/// points of both curves into [0.5, 1) (0 when every point is the origin).
+template <class T>
+struct SharedFrame {
+  Point<T, 2> origin;
+  int e = 0;
+};
+
+/// Phase 1: the shared unit frame of curves a and b (b = a for self-intersections).
+template <class T>
+SharedFrame<T> shared_frame(const Pieces<T, 2>& ca, const Pieces<T, 2>& cb) {
+  const Point<T, 2> origin = points(ca.segments().front()).front();
+  T h = 0;
+  for (const auto* c : {&ca, &cb})
+    for (const auto& s : c->segments()) h = std::max(h, half_extent<T, 2>(points(s), origin));
+  return {origin, h > 0 ? unit_exponent(h) : 0};
+}
+
+/// The near-miss distance of two prepared curves in their unit frame: 1e-10 of the larger
+/// control-box diagonal (the contract's threshold), at least 64 eps of the unit
+/// coordinates (|P| < 1: rounding when the curves are points or tiny far apart).
+template <class T>
+T near_miss(const Prepared<T>& A, const Prepared<T>& B) {
+  return std::max(T(1e-10) * std::max(A.size, B.size), 64 * std::numeric_limits<T>::epsilon());
+}
+
+/// The intersection context of solve() for the near-miss distance tol.
+template <class T>
+Context<T> make_context(T tol) {
+  return Context<T>{tol, tol, tol + 16 * std::numeric_limits<T>::epsilon(), 0, 0, false, {}, nullptr, nullptr, nullptr, nullptr, false};
+}
+
+/// An overlap found on one pair of arcs, in the curves' parameters, with the points that
+/// pair gave (reported if the overlap turns out to lie inside a crossing or touch region:
+/// confirm_overlaps) or, when the pair's first pass stopped early, the pair itself
+/// (`deferred`), whose points are computed only if the overlap is rejected.
+template <class T>
+struct RawOverlap {
+  CurveOverlap<T> o;
+  std::vector<Hit<T>> found;
+  std::vector<std::pair<std::size_t, std::size_t>> deferred;
+};
+
+/// All the common points of arc i of A and arc j of B (the engine's full pass: lazy_nodes
+/// subdivision steps, then max_nodes). Throws NumericalError past max_nodes.
+template <class T>
+std::vector<Hit<T>> arc_points(const Prepared<T>& A, std::size_t i, const Prepared<T>& B, std::size_t j, Context<T>& ctx) {
+  std::vector<Hit<T>> found;
+  intersect_arcs(A, i, B, j, ctx, lazy_nodes, found);
+  if (ctx.exhausted) {
+    found.clear();
+    intersect_arcs(A, i, B, j, ctx, max_nodes, found);
     if (ctx.exhausted) {
-      found.clear();
-      intersect_arcs(A, i, PB, j, ctx, max_nodes, found);
-      if (ctx.exhausted) {
-        throw NumericalError("intersect: more than " + std::to_string(max_nodes) +
-                             " subdivision steps for one pair of arcs: the curves run within 1e-10 of their size of each "
-                             "other without coinciding");
-      }
+      throw NumericalError("intersect: more than " + std::to_string(max_nodes) +
+                           " subdivision steps for one pair of arcs: the curves run within 1e-10 of their size of each "
+                           "other without coinciding");
     }
-    return found;
-  };
+  }
+  return found;
+}
+
+/// What the pairs of arcs give: points, and overlaps arc by arc (in the order of the pairs).
+template <class T>
+struct ArcPairs {
+  std::vector<Hit<T>> hits;
+  std::vector<RawOverlap<T>> overlaps;
+};
+
+/// Phase 2: every pair of arcs (i of A, j of B; j > i when self, B being A) whose control
+/// boxes meet within ctx.slack. Identical arcs give an overlap over the whole arc at once.
+/// Otherwise a first pass stops at the first band along which the arcs stay within tol;
+/// where that pass is not clean (a tangent point, the subdivision running long, a near
+/// band) the overlap test (arc_overlap) runs, and an overlap keeps the pair's points (or
+/// the pair, deferred); else the pair's points (arc_points where the pass stopped early).
+/// Throws InvalidArgument past 2 max_points raw points.
+template <class T>
+ArcPairs<T> meet_arcs(const Prepared<T>& A, const Prepared<T>& B, bool self, Context<T>& ctx) {
+  const Pieces<T, 2>& ca = *A.curve;
+  const Pieces<T, 2>& cb = *B.curve;
+  ArcPairs<T> out;
   for (std::size_t i = 0; i < A.arcs.size(); ++i) {
-    for (std::size_t j = self ? i + 1 : 0; j < PB.arcs.size(); ++j) {
+    for (std::size_t j = self ? i + 1 : 0; j < B.arcs.size(); ++j) {
       const Arc<T>& ra = A.arcs[i];
-      const Arc<T>& rb = PB.arcs[j];
-      if (!boxes_meet(A.arc_boxes[i], PB.arc_boxes[j], ctx.slack)) continue;
+      const Arc<T>& rb = B.arcs[j];
+      if (!boxes_meet(A.arc_boxes[i], B.arc_boxes[j], ctx.slack)) continue;
       // The same arc on both sides (identical curves, or a curve that repeats a piece):
       // an overlap over the whole arc, without subdividing two coincident arcs down to
       // the near-miss distance all along (20 s for a degree-500 curve and its copy).
-      if (A.arc_parts[i] == PB.arc_parts[j]) {
-        overlaps.push_back(RawOverlap{{{ca.global_parameter(ra.piece, ra.lo), ca.global_parameter(ra.piece, ra.hi)},
-                                       cb->global_parameter(rb.piece, rb.lo), cb->global_parameter(rb.piece, rb.hi)},
-                                      {},
-                                      {}});
+      if (A.arc_parts[i] == B.arc_parts[j]) {
+        out.overlaps.push_back(
+            RawOverlap<T>{{ca.lift(ra.piece, Interval<T>(ra.lo, ra.hi)), cb.lift(rb.piece, rb.lo), cb.lift(rb.piece, rb.hi)}, {}, {}});
         continue;
       }
       // The overlap test (a few root solves) only where the arcs may overlap: a tangent
@@ -817,38 +848,41 @@ Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
       // the overlap is later rejected).
       std::vector<Hit<T>> found;
       ctx.stop_on_near = true;
-      const bool clean = intersect_arcs(A, i, PB, j, ctx, lazy_nodes, found);
+      const bool clean = intersect_arcs(A, i, B, j, ctx, lazy_nodes, found);
       ctx.stop_on_near = false;
       if (!clean) {
         const bool stopped = ctx.near && !ctx.exhausted;
-        if (auto o = arc_overlap(A, ra, PB, rb, tol)) {
-          RawOverlap raw{{{ca.global_parameter(ra.piece, o->s0), ca.global_parameter(ra.piece, o->s1)},
-                          cb->global_parameter(rb.piece, o->t0), cb->global_parameter(rb.piece, o->t1)},
-                         {},
-                         {}};
+        if (auto o = arc_overlap(A, ra, B, rb, ctx.tol)) {
+          RawOverlap<T> raw{{ca.lift(ra.piece, Interval<T>(o->s0, o->s1)), cb.lift(rb.piece, o->t0), cb.lift(rb.piece, o->t1)}, {}, {}};
           if (stopped) {
             raw.deferred.emplace_back(i, j);
           } else {
             raw.found = std::move(found);
           }
-          overlaps.push_back(std::move(raw));
+          out.overlaps.push_back(std::move(raw));
           continue;
         }
-        if (stopped || ctx.exhausted) found = arc_points(i, j);
+        if (stopped || ctx.exhausted) found = arc_points(A, i, B, j, ctx);
       }
-      hits.insert(hits.end(), found.begin(), found.end());
-      if (hits.size() > 2 * max_points) too_many_points(hits.size());
+      out.hits.insert(out.hits.end(), found.begin(), found.end());
+      if (out.hits.size() > 2 * max_points) too_many_points(out.hits.size());
     }
   }
+  return out;
+}
 
-  // Overlaps found arc by arc: join the ones that continue each other.
-  const T la = ca.domain().length(), lb = cb->domain().length();
+/// Phase 3: the overlaps found arc by arc, sorted by their start on a, joined where one
+/// continues the previous (its start within 1e-9 of la (a's domain length) of the
+/// previous end on a, within 1e-9 lb on b, b running the same way); the points and
+/// deferred pairs of joined ones go together. Stable for equal starts.
+template <class T>
+std::vector<RawOverlap<T>> join_overlaps(std::vector<RawOverlap<T>> overlaps, T la, T lb) {
   std::sort(overlaps.begin(), overlaps.end(), [](const auto& x, const auto& y) { return x.o.a.lo < y.o.a.lo; });
-  std::vector<RawOverlap> candidates;
+  std::vector<RawOverlap<T>> joined;
   for (auto& r : overlaps) {
     const auto& o = r.o;
-    if (!candidates.empty()) {
-      auto& p = candidates.back();
+    if (!joined.empty()) {
+      auto& p = joined.back();
       if (std::abs(o.a.lo - p.o.a.hi) <= T(1e-9) * la && std::abs(o.b_start - p.o.b_end) <= T(1e-9) * lb &&
           ((o.b_end > o.b_start) == (p.o.b_end > p.o.b_start))) {
         p.o.a.hi = o.a.hi;
@@ -858,55 +892,131 @@ Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
         continue;
       }
     }
-    candidates.push_back(std::move(r));
+    joined.push_back(std::move(r));
   }
-  // An overlap is a stretch within the near-miss distance that ends where the curves part
-  // or a curve ends. One that the curves continue beyond, still within the near-miss
-  // distance as far again past one of its ends, is a piece of a longer near region (a
-  // crossing or touch at a tiny angle, seen between joints of pieces or arcs: two circles of
-  // radius 1 with centres d apart meet at an angle d and stay within tol over 2 tol / d
-  // around each crossing): its points are reported instead, as they are off the joints.
-  //
-  // Nor is one that holds no whole monotone arc of either curve (its ends are joints or
-  // arc ends of both, staggered) while a crosses b inside it: the signed separation at
-  // its two ends of opposite signs, both beyond tol / 8 (coincident curves are apart by
-  // rounding only, about 1e-16 of the size; an offset copy within the distance keeps one
-  // side). That is a crossing at a small angle theta cut between joints closer than its
-  // near region (2 tol / theta long): two NURBS unit circles with centres d = 1.4e-5 ..
-  // 2.4e-5 apart along x, whose crossings lie between the joints of their quarters d
-  // apart, are within d^2 / 2 there but 1.5 d^2 > tol as far again beyond.
+  return joined;
+}
+
+/// Phase 4: the joined overlaps that are overlaps. An overlap is a stretch within the
+/// near-miss distance that ends where the curves part or a curve ends. One that the curves
+/// continue beyond, still within the near-miss distance as far again past one of its ends
+/// (near_beyond), is a piece of a longer near region (a crossing or touch at a tiny angle,
+/// seen between joints of pieces or arcs: two circles of radius 1 with centres d apart
+/// meet at an angle d and stay within tol over 2 tol / d around each crossing): its
+/// points are reported instead, as they are off the joints.
+///
+/// Nor is one that holds no whole monotone arc of either curve (its ends are joints or
+/// arc ends of both, staggered) while a crosses b inside it: the signed separation at
+/// its two ends of opposite signs, both beyond tol / 8 (coincident curves are apart by
+/// rounding only, about 1e-16 of the size; an offset copy within the distance keeps one
+/// side). That is a crossing at a small angle theta cut between joints closer than its
+/// near region (2 tol / theta long): two NURBS unit circles with centres d = 1.4e-5 ..
+/// 2.4e-5 apart along x, whose crossings lie between the joints of their quarters d
+/// apart, are within d^2 / 2 there but 1.5 d^2 > tol as far again beyond.
+///
+/// The points of rejected ones (found, or computed now for deferred pairs) are appended
+/// to hits; the confirmed overlaps are returned in order.
+template <class T>
+std::vector<CurveOverlap<T>> confirm_overlaps(const Prepared<T>& A, const Prepared<T>& B, std::vector<RawOverlap<T>>& candidates,
+                                              Context<T>& ctx, std::vector<Hit<T>>& hits) {
+  const Pieces<T, 2>& ca = *A.curve;
+  const Pieces<T, 2>& cb = *B.curve;
+  const T tol = ctx.tol;
   auto signed_gap = [&](T ta, T tb) {
     const Point<T, 2> p = unit_at(ca, A, ta);
-    const Foot<T> f = foot_near(*cb, PB, p, tb);
-    return std::copysign(f.distance, cross(direction_at(*cb, PB, f.t), p - unit_at(*cb, PB, f.t)));
+    const Foot<T> f = foot_near(cb, B, p, tb);
+    return std::copysign(f.distance, cross(direction_at(cb, B, f.t), p - unit_at(cb, B, f.t)));
   };
   auto covers_arc = [](const Pieces<T, 2>& c, const Prepared<T>& P, T lo, T hi) {
     const T m = T(1e-9) * c.domain().length();
     for (const auto& r : P.arcs)
-      if (c.global_parameter(r.piece, r.lo) >= lo - m && c.global_parameter(r.piece, r.hi) <= hi + m) return true;
+      if (c.lift(r.piece, r.lo) >= lo - m && c.lift(r.piece, r.hi) <= hi + m) return true;
     return false;
   };
   std::vector<CurveOverlap<T>> joined;
   for (auto& [o, found, deferred] : candidates) {
-    bool continues = near_beyond(ca, A, *cb, PB, o.a.lo, o.b_start, -(o.a.hi - o.a.lo), o.b_start - o.b_end, tol) ||
-                     near_beyond(ca, A, *cb, PB, o.a.hi, o.b_end, o.a.hi - o.a.lo, o.b_end - o.b_start, tol);
-    if (!continues && !covers_arc(ca, A, o.a.lo, o.a.hi) &&
-        !covers_arc(*cb, PB, std::min(o.b_start, o.b_end), std::max(o.b_start, o.b_end))) {
+    bool continues = near_beyond(ca, A, cb, B, o.a.lo, o.b_start, -(o.a.hi - o.a.lo), o.b_start - o.b_end, tol) ||
+                     near_beyond(ca, A, cb, B, o.a.hi, o.b_end, o.a.hi - o.a.lo, o.b_end - o.b_start, tol);
+    if (!continues && !covers_arc(ca, A, o.a.lo, o.a.hi) && !covers_arc(cb, B, std::min(o.b_start, o.b_end), std::max(o.b_start, o.b_end))) {
       const T g0 = signed_gap(o.a.lo, o.b_start), g1 = signed_gap(o.a.hi, o.b_end);
       continues = (g0 > 0) != (g1 > 0) && std::min(std::abs(g0), std::abs(g1)) > tol / 8;
     }
     if (continues) {
       hits.insert(hits.end(), found.begin(), found.end());
       for (const auto& [i, j] : deferred) {
-        const auto more = arc_points(i, j);
+        const auto more = arc_points(A, i, B, j, ctx);
         hits.insert(hits.end(), more.begin(), more.end());
       }
     } else {
       joined.push_back(o);
     }
   }
+  return joined;
+}
 
-  auto piece_length = [](const Pieces<T, 2>& c, std::size_t i) { return c.segment_domain(i).length(); };
+/// The parameter length of piece i of c (the scale of the merge distances).
+template <class T>
+T break_length(const Pieces<T, 2>& c, std::size_t i) {
+  return c.segment_domain(i).length();
+}
+
+/// Whether the point h lies inside (or at the end of, within 1e-7 of its pieces' parameter
+/// lengths) one of the overlaps, of which it is then a part, not an isolated point; for a
+/// self-intersection the overlap seen from the other side too.
+template <class T>
+bool in_overlap(const Hit<T>& h, const std::vector<CurveOverlap<T>>& overlaps, const Pieces<T, 2>& ca, const Pieces<T, 2>& cb,
+                bool self) {
+  bool inside = false;
+  for (const auto& o : overlaps) {
+    const T blo = std::min(o.b_start, o.b_end), bhi = std::max(o.b_start, o.b_end);
+    const T ma = T(1e-7) * break_length(ca, h.pa), mb = T(1e-7) * break_length(cb, h.pb);
+    inside = inside || (h.ta >= o.a.lo - ma && h.ta <= o.a.hi + ma && h.tb >= blo - mb && h.tb <= bhi + mb);
+    if (self)  // the same stretch seen from the other side
+      inside = inside || (h.tb >= o.a.lo - ma && h.tb <= o.a.hi + ma && h.ta >= blo - mb && h.ta <= bhi + mb);
+  }
+  return inside;
+}
+
+/// The curves' domains and whether each is closed (its ends within tol in the unit
+/// frame): on a closed curve the way between two parameters may pass its closing point.
+template <class T>
+struct Loops {
+  Loop<T> a, b;
+};
+template <class T>
+Loops<T> loops(const Prepared<T>& A, const Prepared<T>& B, T tol) {
+  const Interval<T> dom_a = A.curve->domain(), dom_b = B.curve->domain();
+  const bool closed_a = distance(unit_at(*A.curve, A, dom_a.lo), unit_at(*A.curve, A, dom_a.hi)) <= tol;
+  const bool closed_b = distance(unit_at(*B.curve, B, dom_b.lo), unit_at(*B.curve, B, dom_b.hi)) <= tol;
+  return {{dom_a, closed_a}, {dom_b, closed_b}};
+}
+
+/// The points of solve() after merging: one per near region, sorted by ta, and the points
+/// from edge seeds set aside (admit_edges decides which of them stand for a region).
+template <class T>
+struct MergedPoints {
+  std::vector<Hit<T>> kept;
+  std::vector<Hit<T>> edges;
+};
+
+/// Phase 5: the points of the arcs merged into one per near region. For a
+/// self-intersection each pair is ordered ta <= tb. Then, in the order of ta: points inside
+/// an overlap are dropped (in_overlap); for a self-intersection, points where consecutive
+/// arcs join, the closing point and cusps (a "loop" smaller than 100 tol) too; points from
+/// edge seeds are set aside; every other point merges into a kept one of the same near
+/// region (see the comments inside: the same point within merge_fraction of the pieces;
+/// two crossings between which the curves stay within tol are one touch, at the peak of
+/// the separation; a crossing and a touch of one region are the crossing) or is kept.
+/// Linear in the number of points (each is compared with the kept points of a window).
+template <class T>
+MergedPoints<T> merge_points(const Prepared<T>& A, const Prepared<T>& B, bool self, std::vector<Hit<T>> hits,
+                             const std::vector<CurveOverlap<T>>& overlaps, const Loops<T>& lp, T tol) {
+  const Pieces<T, 2>& ca = *A.curve;
+  const Pieces<T, 2>& cb = *B.curve;
+  const Loop<T>&loop_a = lp.a, &loop_b = lp.b;
+  const bool closed_a = loop_a.closed;
+  const Interval<T> dom_a = loop_a.dom;
+  const T la = ca.domain().length();
   if (self) {
     for (auto& h : hits) {
       if (h.ta > h.tb) {
@@ -917,41 +1027,28 @@ Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
     }
   }
   std::sort(hits.begin(), hits.end(), [](const auto& x, const auto& y) { return x.ta < y.ta; });
-  std::vector<Hit<T>> kept;
+  MergedPoints<T> out;
+  std::vector<Hit<T>>& kept = out.kept;
+  std::vector<Hit<T>>& edges = out.edges;
   // Hits merge only with kept points within 1e3 merge_fraction of the longest piece of a in
   // ta (see below); kept stays sorted by ta to within that window (a merge moves a kept
   // point towards the later hit), so each hit is compared with the kept points from 4
   // windows back only: linear in the number of points, not quadratic (a polyline crossing
   // itself 10^5 times).
   T longest_a = 0;
-  for (std::size_t p = 0; p < ca.size(); ++p) longest_a = std::max(longest_a, piece_length(ca, p));
+  for (std::size_t p = 0; p < ca.size(); ++p) longest_a = std::max(longest_a, break_length(ca, p));
   const T window = T(1e3) * T(merge_fraction) * longest_a;
-  std::vector<Hit<T>> edges;
   std::vector<std::vector<Hit<T>>> twins;  // per kept point: points merged into it, all common to rounding
   std::vector<TouchSpan<T>> spans;  // per kept point: the extreme points of its touch region
   const T exact = T(1e-3) * tol;
-  // On a closed curve the way between two parameters may pass its closing point.
-  const Interval<T> dom_a = ca.domain(), dom_b = cb->domain();
-  const bool closed_a = distance(unit_at(ca, A, dom_a.lo), unit_at(ca, A, dom_a.hi)) <= tol;
-  const bool closed_b = distance(unit_at(*cb, PB, dom_b.lo), unit_at(*cb, PB, dom_b.hi)) <= tol;
-  const Loop<T> loop_a{dom_a, closed_a}, loop_b{dom_b, closed_b};
   // A common point at which the curves cross (common to rounding, tangents apart by more
   // than crossing_noise), not a touch.
   auto crossing = [&](const Hit<T>& x) {
-    return x.distance <= exact &&
-           std::abs(cross(direction(A.unit[x.pa], x.sa), direction(PB.unit[x.pb], x.sb))) > crossing_noise<T>;
+    return x.distance <= exact && std::abs(cross(direction(A.unit[x.pa], x.sa), direction(B.unit[x.pb], x.sb))) > crossing_noise<T>;
   };
   for (const auto& h : hits) {
     // Inside (or at the end of) an overlap: part of it, not an isolated point.
-    bool in_overlap = false;
-    for (const auto& o : joined) {
-      const T blo = std::min(o.b_start, o.b_end), bhi = std::max(o.b_start, o.b_end);
-      const T ma = T(1e-7) * piece_length(ca, h.pa), mb = T(1e-7) * piece_length(*cb, h.pb);
-      in_overlap = in_overlap || (h.ta >= o.a.lo - ma && h.ta <= o.a.hi + ma && h.tb >= blo - mb && h.tb <= bhi + mb);
-      if (self)  // the same stretch seen from the other side
-        in_overlap = in_overlap || (h.tb >= o.a.lo - ma && h.tb <= o.a.hi + ma && h.ta >= blo - mb && h.ta <= bhi + mb);
-    }
-    if (in_overlap) continue;
+    if (in_overlap(h, overlaps, ca, cb, self)) continue;
     if (self) {
       // The curve meets itself where consecutive arcs join, at its closing point, and
       // at a cusp: none is a self-intersection. A "loop" whose extent is below the
@@ -960,11 +1057,10 @@ Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
       const Interval<T> dom = ca.domain();
       if (h.ta == dom.lo && h.tb == dom.hi) continue;
       Box<T, 2> loop = Box<T, 2>::empty_box();
-      for (std::size_t p = ca.segment_index(h.ta); p <= ca.segment_index(h.tb) && p < A.unit.size(); ++p) {
-        const T s0 = std::clamp(ca.local_parameter(p, h.ta), T(0), T(1)), s1 = std::clamp(ca.local_parameter(p, h.tb), T(0), T(1));
-        if (s1 > s0) loop.add(std::visit([&](const auto& x) { return part(x, s0, s1).control_bounds(); }, A.unit[p]));
-        if (!loop.empty() && diagonal(loop) > 100 * tol) break;  // a loop: no need to see the rest of it
-      }
+      ca.for_each_piece({h.ta, h.tb}, [&](std::size_t p, const auto&, const Interval<T>& own) {
+        if (own.hi > own.lo) loop.add(std::visit([&](const auto& x) { return part(x, own.lo, own.hi).control_bounds(); }, A.unit[p]));
+        return loop.empty() || diagonal(loop) <= 100 * tol;  // beyond: a loop, no need to see the rest of it
+      });
       if (!loop.empty() && diagonal(loop) <= 100 * tol) continue;
     }
     if (h.edge) {
@@ -974,7 +1070,7 @@ Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
     // h merges into kept point ki: the same point, or two points of one near region.
     auto merge_into = [&](std::size_t ki) {
       auto& k = kept[ki];
-      const T ma = T(merge_fraction) * piece_length(ca, h.pa), mb = T(merge_fraction) * piece_length(*cb, h.pb);
+      const T ma = T(merge_fraction) * break_length(ca, h.pa), mb = T(merge_fraction) * break_length(cb, h.pb);
       const T dta = loop_a.shortest(h.ta - k.ta), dtb = loop_b.shortest(h.tb - k.tb);
       const T da = std::abs(dta), db = std::abs(dtb);
       // A point of a touch region already merged (see below): the touch is sought again
@@ -994,7 +1090,7 @@ Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
       if (da <= ma && db <= mb && distance(at(A.unit[k.pa], k.sa), at(A.unit[h.pa], h.sa)) <= 1e4 * tol) {
         if (k.touch) {
           spans[ki] = widen(spans[ki]);
-          if (auto t = touch_in(ca, A, loop_a, *cb, PB, loop_b, spans[ki], tol)) k = *t;
+          if (auto t = touch_in(ca, A, loop_a, cb, B, loop_b, spans[ki], tol)) k = *t;
         } else if (h.distance <= exact && k.distance <= exact) {
           // Both common to rounding (a crossing at a tiny angle, seen from neighbouring parts
           // with roots blurred by eps / angle): the middle one in ta is kept, below.
@@ -1011,15 +1107,15 @@ Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
       // cannot be located.
       if (da <= T(1e3) * ma && db <= T(1e3) * mb) {
         const T mta = loop_a.wrap(k.ta + dta / 2), mtb = loop_b.wrap(k.tb + dtb / 2);
-        if (distance_near(*cb, PB, unit_at(ca, A, mta), mtb) <= tol) {
+        if (distance_near(cb, B, unit_at(ca, A, mta), mtb) <= tol) {
           const bool pair = !k.touch && crossing(k) && crossing(h);
           if (k.touch || pair) {
             spans[ki] = widen(k.touch ? spans[ki] : TouchSpan<T>{k.ta, k.tb, k.ta, k.tb});
-            if (auto t = touch_in(ca, A, loop_a, *cb, PB, loop_b, spans[ki], tol)) {
+            if (auto t = touch_in(ca, A, loop_a, cb, B, loop_b, spans[ki], tol)) {
               k = *t;
             } else if (pair) {  // not located (no sign change of g): at the middle
-              const std::size_t pa = ca.segment_index(mta), pb = cb->segment_index(mtb);
-              k = Hit<T>{mta, mtb, pa, pb, ca.local_parameter(pa, mta), cb->local_parameter(pb, mtb), k.distance, true};
+              const auto a = ca.locate(mta), b = cb.locate(mtb);
+              k = Hit<T>{mta, mtb, a.index, b.index, a.t, b.t, k.distance, true};
             }
           } else if (crossing(h) || (!crossing(k) && h.distance < k.distance)) {
             // A crossing and a touch of one near region (the curves cross, then come within
@@ -1058,6 +1154,22 @@ Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
   // Sorted for the search below: merges move points within the window, and one at the
   // closing point of a closed curve may have moved to the other end of its domain.
   std::sort(kept.begin(), kept.end(), [](const auto& x, const auto& y) { return x.ta < y.ta; });
+  return out;
+}
+
+/// Phase 6: the points from edge seeds (arc ends inside a near region, see band()) added to
+/// kept (sorted by ta) where they stand for a region of their own. One stands for its
+/// region only if no other point does, i.e. if the curves part (beyond tol) between it
+/// and each of its neighbours in ta among the points kept so far (the nearest 8 on each
+/// side; on a closed curve a the first and last 8 too); the closest of several such
+/// points of one region is kept. kept stays sorted by ta.
+template <class T>
+void admit_edges(const Prepared<T>& A, const Prepared<T>& B, const Loops<T>& lp, std::vector<Hit<T>>& kept, std::vector<Hit<T>> edges,
+                 T tol) {
+  const Pieces<T, 2>& ca = *A.curve;
+  const Pieces<T, 2>& cb = *B.curve;
+  const Loop<T>&loop_a = lp.a, &loop_b = lp.b;
+  const bool closed_a = loop_a.closed;
   // Points from edge seeds (arc ends inside a near region, see band()): one stands for its
   // region only if no other point does, i.e. if the curves part (beyond tol) between it
   // and each of its neighbours in ta among the points kept so far (the nearest 8 on each
@@ -1068,7 +1180,7 @@ Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
     for (int j = 0; j <= 16; ++j) {
       const T f = static_cast<T>(j) / 16;
       const T ta = loop_a.wrap(x.ta + f * da), tb = loop_b.wrap(x.tb + f * db);
-      if (!(distance_near(*cb, PB, unit_at(ca, A, ta), tb) <= tol)) return false;
+      if (!(distance_near(cb, B, unit_at(ca, A, ta), tb) <= tol)) return false;
     }
     return true;
   };
@@ -1086,9 +1198,22 @@ Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
     if (!represented) kept.insert(kept.begin() + static_cast<std::ptrdiff_t>(mid), h);
   }
 
-  Intersections<T> out;
+}
+
+/// Phase 7: the kept points as the answer's points, sorted by ta: each point's position
+/// (piece a's value), and its kind. A point is tangent if it was merged into a touch or
+/// its tangents are within 1e-6 (sine); a point whose tangents are within 1e-4 is
+/// polished as a touch first (polish_touch: a touch located as a double root is off by up
+/// to sqrt(eps / curvature)), and one that polishes onto a touch already listed is
+/// dropped. A curve that is a point has no direction: its meeting with another is a
+/// crossing.
+template <class T>
+std::vector<CurveIntersection<T>> classify(const Prepared<T>& A, const Prepared<T>& B, const std::vector<Hit<T>>& kept, T tol) {
+  const Pieces<T, 2>& ca = *A.curve;
+  const Pieces<T, 2>& cb = *B.curve;
+  std::vector<CurveIntersection<T>> points;
   for (auto h : kept) {
-    Vector<T, 2> da = direction(A.unit[h.pa], h.sa), db = direction(PB.unit[h.pb], h.sb);
+    Vector<T, 2> da = direction(A.unit[h.pa], h.sa), db = direction(B.unit[h.pb], h.sb);
     // A curve that is a point has no direction: its meeting with another is a crossing.
     bool tangent = h.touch || (norm(da) > 0 && norm(db) > 0 && std::abs(cross(da, db)) <= T(1e-6));
     // A touch located as a double root (to sqrt(eps / curvature): 1e-8 off on a Chebyshev
@@ -1098,73 +1223,104 @@ Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
     // touch, and tangent. A second point polished onto the same touch is not listed again.
     if (!tangent && norm(da) > 0 && norm(db) > 0 && std::abs(cross(da, db)) <= T(1e-4)) {
       const Arc<T> aa{h.pa, T(0), T(1)}, ab{h.pb, T(0), T(1)};
-      if (auto p = polish_touch(A.unit[h.pa], aa, PB.unit[h.pb], ab, Refined<T>{h.sa, h.sb, h.distance}, tol)) {
+      if (auto p = polish_touch(A.unit[h.pa], aa, B.unit[h.pb], ab, Refined<T>{h.sa, h.sb, h.distance}, tol)) {
         h.sa = p->s;
         h.sb = p->t;
-        h.ta = ca.global_parameter(h.pa, p->s);
-        h.tb = cb->global_parameter(h.pb, p->t);
+        h.ta = ca.lift(h.pa, p->s);
+        h.tb = cb.lift(h.pb, p->t);
         da = direction(A.unit[h.pa], h.sa);
-        db = direction(PB.unit[h.pb], h.sb);
+        db = direction(B.unit[h.pb], h.sb);
         tangent = std::abs(cross(da, db)) <= T(1e-6);
-        const T ma = T(merge_fraction) * piece_length(ca, h.pa), mb = T(merge_fraction) * piece_length(*cb, h.pb);
-        if (tangent && std::any_of(out.points.begin(), out.points.end(), [&](const CurveIntersection<T>& x) {
+        const T ma = T(merge_fraction) * break_length(ca, h.pa), mb = T(merge_fraction) * break_length(cb, h.pb);
+        if (tangent && std::any_of(points.begin(), points.end(), [&](const CurveIntersection<T>& x) {
               return std::abs(x.ta - h.ta) <= ma && std::abs(x.tb - h.tb) <= mb;
             }))
           continue;
       }
     }
-    out.points.push_back({h.ta, h.tb, std::visit([&](const auto& x) { return x(h.sa); }, ca.segments()[h.pa]),
+    points.push_back({h.ta, h.tb, std::visit([&](const auto& x) { return x(h.sa); }, ca.segments()[h.pa]),
                           tangent ? IntersectionKind::tangent : IntersectionKind::crossing});
   }
-  std::sort(out.points.begin(), out.points.end(), [](const auto& x, const auto& y) { return x.ta < y.ta; });
-  if (self && closed_a) {
-    // A closed curve crossing itself at its closing point passes there three times in
-    // parameters (start, middle, end): the pairs (start, middle) and (middle, end) are one
-    // self-intersection. Parameters at the end of the domain count as its start (within
-    // merge_fraction of their piece); such a pair is listed once, the first in ta.
-    auto near_end = [&](T t) { return t >= dom_a.hi - T(merge_fraction) * piece_length(ca, ca.segment_index(t)); };
-    auto same_t = [&](T x, T y) {
-      return std::abs(x - y) <= T(merge_fraction) * std::max(piece_length(ca, ca.segment_index(x)), piece_length(ca, ca.segment_index(y)));
-    };
-    auto canonical = [&](const CurveIntersection<T>& x) {
-      T u = near_end(x.ta) ? dom_a.lo : x.ta, v = near_end(x.tb) ? dom_a.lo : x.tb;
-      if (u > v) std::swap(u, v);
-      return std::pair<T, T>{u, v};
-    };
-    std::vector<CurveIntersection<T>> once;
-    std::vector<std::pair<T, T>> closing;  // canonical pairs of the kept points that touch the closing point
-    for (const auto& x : out.points) {
-      const bool touches = near_end(x.ta) || near_end(x.tb) || same_t(x.ta, dom_a.lo) || same_t(x.tb, dom_a.lo);
-      if (touches) {
-        const auto c = canonical(x);
-        if (std::any_of(closing.begin(), closing.end(), [&](const auto& k) { return same_t(k.first, c.first) && same_t(k.second, c.second); }))
-          continue;
-        closing.push_back(c);
-      }
-      once.push_back(x);
+  std::sort(points.begin(), points.end(), [](const auto& x, const auto& y) { return x.ta < y.ta; });
+  return points;
+}
+
+/// Phase 8 (self-intersections of a closed curve): a closed curve crossing itself at its
+/// closing point passes there three times in parameters (start, middle, end): the pairs
+/// (start, middle) and (middle, end) are one self-intersection. Parameters at the end of
+/// the domain count as its start (within merge_fraction of their piece); such a pair is
+/// listed once, the first in ta. Other points are kept, in order.
+template <class T>
+std::vector<CurveIntersection<T>> once_at_closing_point(const Pieces<T, 2>& ca, const std::vector<CurveIntersection<T>>& points) {
+  const Interval<T> dom_a = ca.domain();
+  // A closed curve crossing itself at its closing point passes there three times in
+  // parameters (start, middle, end): the pairs (start, middle) and (middle, end) are one
+  // self-intersection. Parameters at the end of the domain count as its start (within
+  // merge_fraction of their piece); such a pair is listed once, the first in ta.
+  auto near_end = [&](T t) { return t >= dom_a.hi - T(merge_fraction) * break_length(ca, ca.segment_index(t)); };
+  auto same_t = [&](T x, T y) {
+    return std::abs(x - y) <= T(merge_fraction) * std::max(break_length(ca, ca.segment_index(x)), break_length(ca, ca.segment_index(y)));
+  };
+  auto canonical = [&](const CurveIntersection<T>& x) {
+    T u = near_end(x.ta) ? dom_a.lo : x.ta, v = near_end(x.tb) ? dom_a.lo : x.tb;
+    if (u > v) std::swap(u, v);
+    return std::pair<T, T>{u, v};
+  };
+  std::vector<CurveIntersection<T>> once;
+  std::vector<std::pair<T, T>> closing;  // canonical pairs of the kept points that touch the closing point
+  for (const auto& x : points) {
+    const bool touches = near_end(x.ta) || near_end(x.tb) || same_t(x.ta, dom_a.lo) || same_t(x.tb, dom_a.lo);
+    if (touches) {
+      const auto c = canonical(x);
+      if (std::any_of(closing.begin(), closing.end(), [&](const auto& k) { return same_t(k.first, c.first) && same_t(k.second, c.second); }))
+        continue;
+      closing.push_back(c);
     }
-    out.points = std::move(once);
+    once.push_back(x);
   }
-  out.overlaps = std::move(joined);
+  return once;
+}
+
+/// The common points and overlaps of curves a and b (b = nullptr: the self-intersections
+/// of a): the phases above in turn (see intersect()).
+template <class T>
+Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
+  const bool self = cb == nullptr;
+  if (self) cb = &ca;
+  const SharedFrame<T> frame = shared_frame(ca, *cb);
+  const Prepared<T> A = prepare(ca, frame.origin, frame.e);
+  const Prepared<T> B = self ? Prepared<T>{} : prepare(*cb, frame.origin, frame.e);
+  const Prepared<T>& PB = self ? A : B;
+  const T tol = near_miss(A, PB);
+  Context<T> ctx = make_context(tol);
+  ArcPairs<T> pairs = meet_arcs(A, PB, self, ctx);
+  std::vector<RawOverlap<T>> candidates = join_overlaps(std::move(pairs.overlaps), ca.domain().length(), cb->domain().length());
+  std::vector<CurveOverlap<T>> overlaps = confirm_overlaps(A, PB, candidates, ctx, pairs.hits);
+  const Loops<T> lp = loops(A, PB, tol);
+  MergedPoints<T> merged = merge_points(A, PB, self, std::move(pairs.hits), overlaps, lp, tol);
+  admit_edges(A, PB, lp, merged.kept, std::move(merged.edges), tol);
+  Intersections<T> out;
+  out.points = classify(A, PB, merged.kept, tol);
+  if (self && lp.a.closed) out.points = once_at_closing_point(ca, out.points);
+  out.overlaps = std::move(overlaps);
   if (out.points.size() + out.overlaps.size() > max_points) too_many_points(out.points.size() + out.overlaps.size());
   return out;
 }
 
-/// The fast path (algo/intersect_low_degree.hpp) for two polynomial pieces of degree 1 to
-/// 3 whose parameters map affinely onto the curves' domains da and db; nothing when it
-/// does not apply or refuses. Its points are the general engine's answer: isolated
-/// crossings, reported with the pieces' own values at their parameters.
+/// The fast path (algo/intersect_low_degree.hpp) for two polynomial Bézier curves of
+/// degree 1 to 3; nothing when it does not apply or refuses. Its points are the general
+/// engine's answer: isolated crossings, reported with the pieces' own values at their
+/// parameters.
 template <class T>
-std::optional<Intersections<T>> low_degree(const Bezier<T, 2>& a, const Interval<T>& da, const Bezier<T, 2>& b, const Interval<T>& db) {
+std::optional<Intersections<T>> low_degree(const Bezier<T, 2>& a, const Bezier<T, 2>& b) {
   const auto r = isect_fast::intersect_low_degree<T>(a.points(), b.points());
   if (!r) return std::nullopt;
   Intersections<T> out;
   out.points.reserve(static_cast<std::size_t>(r->count));
   for (int i = 0; i < r->count; ++i) {
     const auto [s, t] = r->st[static_cast<std::size_t>(i)];
-    // Lifted as Pieces::global_parameter does.
-    const T ta = casteljau::detail::map_parameter(s, a.domain(), da), tb = casteljau::detail::map_parameter(t, b.domain(), db);
-    out.points.push_back({ta, tb, a(s), IntersectionKind::crossing});
+    // A Bézier curve's own parameter is the curve's (one piece on its own domain [0, 1]).
+    out.points.push_back({s, t, a(s), IntersectionKind::crossing});
   }
   return out;
 }
@@ -1228,7 +1384,7 @@ std::optional<Intersections<T>> low_degree_pieces(const Pieces<T, 2>& pa, const 
         const auto [s, t] = r->st[static_cast<std::size_t>(k)];
         if ((i > 0 && s < joint) || (i + 1 < sa.size() && s > 1 - joint) || (j > 0 && t < joint) || (j + 1 < sb.size() && t > 1 - joint))
           return std::nullopt;
-        found.push_back({pa.global_parameter(i, s), pb.global_parameter(j, t), s, i, j});
+        found.push_back({pa.lift(i, s), pb.lift(j, t), s, i, j});
         if (found.size() > max_points) too_many_points(found.size());
       }
     }
@@ -1305,7 +1461,7 @@ Intersections<typename CA::Scalar> intersect(const CA& a, const CB& b) {
   // Two Bézier curves of degree <= 3 (the common case, W6): the fast path, on their
   // control points directly, without building pieces.
   if constexpr (std::same_as<CA, Bezier<T, 2>> && std::same_as<CB, Bezier<T, 2>>) {
-    if (auto r = detail::isect::low_degree(a, a.domain(), b, b.domain())) return std::move(*r);
+    if (auto r = detail::isect::low_degree(a, b)) return std::move(*r);
   }
   const auto& pa = pieces(a);
   const auto& pb = pieces(b);

@@ -14,6 +14,7 @@
 #include <utility>
 
 #include "casteljau/core/point.hpp"
+#include "casteljau/core/unit_frame.hpp"
 
 namespace casteljau::detail::isect_fast {
 
@@ -399,15 +400,11 @@ template <class T>
 std::optional<Frame<T>> unit_frame(std::span<const std::span<const Point<T, 2>>> a, std::span<const std::span<const Point<T, 2>>> b) {
   if (a.empty() || b.empty() || a.front().empty()) return std::nullopt;
   const Point<T, 2> origin = a.front().front();
-  T extent = 0;
+  T extent = 0;  // half the extent (core/unit_frame.hpp)
   for (const auto* c : {&a, &b})
-    for (const auto& piece : *c)
-      for (const auto& q : piece)
-        for (int d = 0; d < 2; ++d) extent = std::max(extent, std::abs(q[d] / 2 - origin[d] / 2));
+    for (const auto& piece : *c) extent = std::max(extent, casteljau::detail::half_extent<T, 2>(piece, origin));
   if (!(extent > 0) || !std::isfinite(extent)) return std::nullopt;
-  int e = 0;
-  (void)std::frexp(extent, &e);
-  ++e;
+  const int e = casteljau::detail::unit_exponent(extent);
   // 2^-e: multiplying by it is exact (as ldexp) unless a result is subnormal.
   const T scale = std::ldexp(T(1), -e);
   if (!std::isfinite(scale) || !(scale > 0)) return std::nullopt;

@@ -118,27 +118,22 @@ typename C::Scalar arc_length(const C& c, typename C::Scalar from, typename C::S
   const auto& p = pieces(c);
   detail::check_range<T>(p.domain(), from, to);
   T total = 0;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    const Interval<T> seg = p.segment_domain(i);
-    if (seg.hi <= from || seg.lo >= to) continue;
-    const T t0 = from <= seg.lo ? T(0) : p.local_parameter(i, from);
-    const T t1 = to >= seg.hi ? T(1) : p.local_parameter(i, to);
-    total += std::visit(
-        [&](const auto& piece) {
-          if (detail::regular_parts(piece).front().map.identity) {
-            const detail::PieceSpeed<T, D> sp(piece);
-            return std::ldexp(detail::piece_length<T, D>(sp, t0, t1), sp.f.e);
-          }
-          // Extreme weights: the range's portion, in parts with tame parametrisations.
-          T sum = 0;
-          for (const auto& part : detail::regular_parts(t0 == 0 && t1 == 1 ? piece : piece.portion(t0, t1))) {
-            const detail::PieceSpeed<T, D> sp(part.piece);
-            sum += std::ldexp(detail::piece_length<T, D>(sp, T(0), T(1)), sp.f.e);
-          }
-          return sum;
-        },
-        p.segments()[i]);
-  }
+  if (from == to) return total;  // a point has no length
+  p.for_each_piece({from, to}, [&](std::size_t, const auto& piece, const Interval<T>& own) {
+    const T t0 = own.lo, t1 = own.hi;
+    if (detail::regular_parts(piece).front().map.identity) {
+      const detail::PieceSpeed<T, D> sp(piece);
+      total += std::ldexp(detail::piece_length<T, D>(sp, t0, t1), sp.f.e);
+      return;
+    }
+    // Extreme weights: the range's portion, in parts with tame parametrisations.
+    T sum = 0;
+    for (const auto& part : detail::regular_parts(t0 == 0 && t1 == 1 ? piece : piece.portion(t0, t1))) {
+      const detail::PieceSpeed<T, D> sp(part.piece);
+      sum += std::ldexp(detail::piece_length<T, D>(sp, T(0), T(1)), sp.f.e);
+    }
+    total += sum;
+  });
   if (!std::isfinite(total)) throw InvalidArgument("curve", "the arc length is not representable (it exceeds the largest double)");
   return total;
 }
@@ -167,24 +162,20 @@ class ArcLengthTable {
   template <class C>
     requires PiecewiseBezierCurve<C>
   explicit ArcLengthTable(const C& c) : pieces_(pieces(c)) {
-    for (std::size_t i = 0; i < pieces_.size(); ++i) {
-      std::visit(
-          [&](const auto& piece) {
-            // One speed per part (the piece itself unless its weights are extreme).
-            for (const auto& part : detail::regular_parts(piece)) {
-              speeds_.emplace_back(part.piece);
-              maps_.push_back(part.map);
-              std::vector<QuadratureInterval<T>> parts;
-              detail::piece_length<T, D>(speeds_.back(), T(0), T(1), &parts);
-              const int e = speeds_.back().f.e;
-              for (const auto& q : parts) {
-                cells_.push_back({i, speeds_.size() - 1, q.a, q.b, total_, std::ldexp(q.value, e)});
-                total_ += std::ldexp(q.value, e);
-              }
-            }
-          },
-          pieces_.segments()[i]);
-    }
+    pieces_.for_each_piece([&](std::size_t i, const auto& piece, const Interval<T>&) {
+      // One speed per part (the piece itself unless its weights are extreme).
+      for (const auto& part : detail::regular_parts(piece)) {
+        speeds_.emplace_back(part.piece);
+        maps_.push_back(part.map);
+        std::vector<QuadratureInterval<T>> parts;
+        detail::piece_length<T, D>(speeds_.back(), T(0), T(1), &parts);
+        const int e = speeds_.back().f.e;
+        for (const auto& q : parts) {
+          cells_.push_back({i, speeds_.size() - 1, q.a, q.b, total_, std::ldexp(q.value, e)});
+          total_ += std::ldexp(q.value, e);
+        }
+      }
+    });
     if (!std::isfinite(total_)) throw InvalidArgument("curve", "the arc length is not representable (it exceeds the largest double)");
   }
 
@@ -214,7 +205,7 @@ class ArcLengthTable {
     const Cell& cell = it == cells_.end() ? cells_.back() : *it;
     const T target = std::clamp(s - cell.start, T(0), cell.length);
     const auto& scaled_speed = speeds_[cell.part];
-    const auto lift = [&](T u) { return pieces_.global_parameter(cell.piece, maps_[cell.part].t_of(u)); };
+    const auto lift = [&](T u) { return pieces_.lift(cell.piece, maps_[cell.part].t_of(u)); };
     const int e = scaled_speed.f.e;
     auto speed = [&](T t) { return std::ldexp(scaled_speed(t), e); };
     auto partial = [&](T t) { return t <= cell.a ? T(0) : std::ldexp(gauss_kronrod_15<T>(scaled_speed, cell.a, t).value, e); };

@@ -156,35 +156,33 @@ Projection<typename C::Scalar, C::dimension> project(const C& c, const Point<typ
   std::vector<std::pair<Interval<T>, T>> flat;  // constant-distance pieces and their distance
   T reach = 0;
   std::vector<T> ts;
-  for (std::size_t i = 0; i < p.size(); ++i) {
+  // Candidates at a break come from both pieces (the end of one, the start of the next):
+  // both kept, as they carry each piece's own distance (a path may have a gap there).
+  p.for_each_piece([&](std::size_t i, const auto& piece, const Interval<T>& own) {
     bool constant = false;
-    std::visit(
-        [&](const auto& piece) {
-          const auto& rp = std::get<std::decay_t<decltype(piece)>>(rel.segments()[i]);
-          for (const auto& P : piece.points()) reach = std::max(reach, detail::safe_distance(P, q));
-          const auto parts = detail::regular_parts(piece);
-          if (parts.front().map.identity) {
-            detail::projection_candidates<T, D>(piece, q, ts, constant);
-            for (T t : ts) cand.push_back({p.global_parameter(i, t), distance_at(rp, t), true});
-            if (constant) flat.push_back({p.segment_domain(i), distance_at(rp, T(0))});
-            return;
-          }
-          // Extreme weights: candidates on parts with tame parametrisations (the same
-          // splits on the moved curve: same weights), their points and distances taken
-          // on the parts, the parameters mapped back (rounded).
-          const auto rparts = detail::regular_parts(rp);
-          bool all_constant = true;
-          for (std::size_t j = 0; j < parts.size(); ++j) {
-            detail::projection_candidates<T, D>(parts[j].piece, q, ts, constant);
-            std::sort(ts.begin(), ts.end());  // in the curve's order: parameters mapped back may round together
-            all_constant = all_constant && constant;
-            for (T u : ts)
-              cand.push_back({p.global_parameter(i, parts[j].map.t_of(u)), distance_at(rparts[j].piece, u), false, parts[j].piece(u)});
-          }
-          if (all_constant) flat.push_back({p.segment_domain(i), distance_at(rp, T(0))});
-        },
-        p.segments()[i]);
-  }
+    const auto& rp = std::get<std::decay_t<decltype(piece)>>(rel.segments()[i]);
+    for (const auto& P : piece.points()) reach = std::max(reach, detail::safe_distance(P, q));
+    const auto parts = detail::regular_parts(piece);
+    if (parts.front().map.identity) {
+      detail::projection_candidates<T, D>(piece, q, ts, constant);
+      for (T t : ts) cand.push_back({p.lift(i, t), distance_at(rp, t), true});
+      if (constant) flat.push_back({p.lift(i, own), distance_at(rp, T(0))});
+      return;
+    }
+    // Extreme weights: candidates on parts with tame parametrisations (the same
+    // splits on the moved curve: same weights), their points and distances taken
+    // on the parts, the parameters mapped back (rounded).
+    const auto rparts = detail::regular_parts(rp);
+    bool all_constant = true;
+    for (std::size_t j = 0; j < parts.size(); ++j) {
+      detail::projection_candidates<T, D>(parts[j].piece, q, ts, constant);
+      std::sort(ts.begin(), ts.end());  // in the curve's order: parameters mapped back may round together
+      all_constant = all_constant && constant;
+      for (T u : ts)
+        cand.push_back({p.lift(i, parts[j].map.t_of(u)), distance_at(rparts[j].piece, u), false, parts[j].piece(u)});
+    }
+    if (all_constant) flat.push_back({p.lift(i, own), distance_at(rp, T(0))});
+  });
   auto better = [&](T a, T b) { return farthest ? a > b : a < b; };
   T best = cand.front().d;
   for (const auto& x : cand)

@@ -5,8 +5,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <variant>
 #include <vector>
 
@@ -14,6 +16,14 @@
 #include "casteljau/curves/rational_bezier.hpp"
 
 namespace casteljau {
+
+/// A curve parameter located on its piece: the piece's index and its own parameter there
+/// (PiecewiseCurve::locate).
+template <class T>
+struct PieceParameter {
+  std::size_t index;
+  T t;
+};
 
 namespace detail {
 
@@ -94,14 +104,113 @@ class PiecewiseCurve {
 
   /// Segment i's own parameter at the curve parameter u.
   [[nodiscard]] T local_parameter(std::size_t i, T u) const { return map_parameter(u, segment_domain(i), own_domain(i)); }
-  /// The curve parameter of segment i's own parameter t (the lift of a segment query).
-  [[nodiscard]] T global_parameter(std::size_t i, T t) const { return map_parameter(t, own_domain(i), segment_domain(i)); }
+  /// The same as lift(i, t) (its older name).
+  [[nodiscard]] T global_parameter(std::size_t i, T t) const { return lift(i, t); }
+
+  // The piecewise algebra: every query is a kernel on one piece (in the piece's own
+  // parameter) plus these combinators, which are the only places where a piece's
+  // parameter and the curve's meet (docs/architecture.md, "Queries are written once").
+
+  /// The piece holding the curve parameter u and its own parameter there, as evaluation
+  /// chooses them: the right piece at an interior break, the first or last piece outside
+  /// the domain (extrapolation). The step down from the curve to a piece kernel. O(log k).
+  [[nodiscard]] PieceParameter<T> locate(T u) const {
+    const std::size_t i = segment_index(u);
+    return {i, local_parameter(i, u)};
+  }
+
+  /// The curve parameter of piece i's own parameter t: the increasing affine map of its
+  /// own domain onto [u_i, u_{i+1}], the ends exactly onto the breaks (the step up from a
+  /// piece kernel's answer to the curve's). Rounding: a few eps of the break interval.
+  [[nodiscard]] T lift(std::size_t i, T t) const { return map_parameter(t, own_domain(i), segment_domain(i)); }
+  /// An interval of piece i's own parameters lifted (its ends by lift(i, t)).
+  [[nodiscard]] Interval<T> lift(std::size_t i, const Interval<T>& own) const { return {lift(i, own.lo), lift(i, own.hi)}; }
+
+  /// Appends the lifts of piece i's parameters ts (sorted, as a root finder gives them)
+  /// to out, in order, keeping a joint duplicate once: a root at the start of piece i
+  /// (t = its own domain's start, lifted exactly to the break u_i) is left out when out
+  /// already ends with u_i, i.e. with the end root of piece i - 1 at the same break (the
+  /// ends lift exactly, so the test is an equality). Calling it for i = 0, 1, ... in turn
+  /// gives every root of the curve once, in increasing order. Roots inside a piece that
+  /// are close to each other, or equal, are the kernel's business: all kept.
+  void lift_roots(std::size_t i, std::span<const T> ts, std::vector<T>& out) const {
+    const T start = own_domain(i).lo;
+    for (const T t : ts) {
+      if (t == start && i > 0 && !out.empty() && out.back() == breaks_[i]) continue;
+      out.push_back(lift(i, t));
+    }
+  }
+
+  /// Calls f(i, piece, own) for each piece i, in order, that meets the parameter range
+  /// [range.lo, range.hi] of the domain in an interval of positive length; piece is the
+  /// segment's alternative (std::visit'ed) and own the part of its own domain inside the
+  /// range. Clipping: a range end inside a piece becomes that piece's own parameter
+  /// (local_parameter, so a query evaluates the range's end on the piece that holds it);
+  /// a piece wholly inside gets its whole own domain, its ends exact. A piece that only
+  /// touches the range at a break is not visited: a range from one break to another
+  /// visits exactly the pieces between them. A degenerate range [u, u] visits the one
+  /// piece holding u, as evaluation chooses it (the right one at an interior break, the
+  /// last at the domain's end), with own = [t, t]: a query over it sees the curve's
+  /// point there. Precondition: range.lo <= range.hi within the domain (queries check
+  /// it first, naming their arguments). f may return bool: false ends the walk (a query
+  /// that has its answer). Cost: O(log k) to find the first piece, then the calls.
+  template <class F>
+  void for_each_piece(const Interval<T>& range, F&& f) const {
+    if (range.lo == range.hi) {
+      const PieceParameter<T> at = locate(range.lo);
+      visit_piece(at.index, Interval<T>(at.t, at.t), f);
+      return;
+    }
+    for (std::size_t i = segment_index(range.lo); i < segments_.size(); ++i) {
+      const Interval<T> seg = segment_domain(i);
+      if (seg.lo >= range.hi) break;
+      if (seg.hi <= range.lo) continue;  // only before the domain's start (extrapolation)
+      const Interval<T> own = own_domain(i);
+      const T t0 = range.lo <= seg.lo ? own.lo : local_parameter(i, range.lo);
+      const T t1 = range.hi >= seg.hi ? own.hi : local_parameter(i, range.hi);
+      if (!visit_piece(i, Interval<T>(t0, t1), f)) return;
+    }
+  }
+  /// Calls f(i, piece, own) for every piece over its whole own domain (the range being
+  /// the whole domain), in order; f may return false to end the walk.
+  template <class F>
+  void for_each_piece(F&& f) const {
+    for (std::size_t i = 0; i < segments_.size(); ++i)
+      if (!visit_piece(i, own_domain(i), f)) return;
+  }
+
+  /// The derivative of piece i's own parameter with respect to the curve's: its own
+  /// domain's length over its break interval's (the chain rule's factor, per order, that
+  /// turns a piece's derivatives into the curve's).
+  [[nodiscard]] T parameter_scale(std::size_t i) const { return own_domain(i).length() / segment_domain(i).length(); }
+
+  /// The curve over the range [from, to] (from < to, within the domain) with the same
+  /// parametrisation: the pieces for_each_piece visits, those cut by a range end
+  /// replaced by their portion over the clipped own range (the segment's portion(a, b)),
+  /// the breaks inside the range kept and the range's ends as the first and last breaks.
+  /// A piece cut to a sliver may round to one point (a range end within eps of a break).
+  /// Cost: one portion per cut piece (O(n^2) for a Bézier piece of degree n), copies of
+  /// the others. Throws InvalidArgument("range", ...) unless from < to within the domain.
+  [[nodiscard]] Derived portion(const Interval<T>& range) const {
+    const Interval<T> dom = domain();
+    if (!(range.lo < range.hi) || range.lo < dom.lo || range.hi > dom.hi) {
+      throw InvalidArgument("range", "a portion needs from < to within the domain [" + format_number(dom.lo) + ", " +
+                                         format_number(dom.hi) + "], got [" + format_number(range.lo) + ", " +
+                                         format_number(range.hi) + "]");
+    }
+    std::vector<Segment> segs;
+    std::vector<T> br{range.lo};
+    for_each_piece(range, [&](std::size_t i, const auto& s, const Interval<T>& own) {
+      segs.push_back(own == Interval<T>(s.domain()) ? Segment(s) : Segment(s.portion(own.lo, own.hi)));
+      br.push_back(std::min(breaks_[i + 1], range.hi));
+    });
+    return Derived(std::move(segs), std::move(br));
+  }
 
   [[nodiscard]] PointType operator()(T u) const {
     require_finite(u, "t");
-    const std::size_t i = segment_index(u);
-    const T t = local_parameter(i, u);
-    return in_curve_parameter(u, t, [&] { return std::visit([&](const auto& s) { return s(t); }, segments_[i]); });
+    const PieceParameter<T> at = locate(u);
+    return in_curve_parameter(u, at.t, [&] { return std::visit([&](const auto& s) { return s(at.t); }, segments_[at.index]); });
   }
 
   /// The k-th derivative (k >= 0; k = 0 gives the point as a vector) with respect to the
@@ -110,9 +219,8 @@ class PiecewiseCurve {
   [[nodiscard]] VectorType derivative_at(T u, int k = 1) const {
     require_finite(u, "t");
     if (k < 0) throw InvalidArgument("k", "derivative order must be >= 0, got " + std::to_string(k));
-    const std::size_t i = segment_index(u);
-    const T t = local_parameter(i, u);
-    return in_curve_parameter(u, t, [&] { return segment_derivative(i, t, k); });
+    const PieceParameter<T> at = locate(u);
+    return in_curve_parameter(u, at.t, [&] { return segment_derivative(at.index, at.t, k); });
   }
 
   /// The k-th derivative (k >= 0) of segment i at the fraction s of its own domain (s = 0
@@ -180,8 +288,23 @@ class PiecewiseCurve {
     }
   }
 
+  // f(i, piece, own) on segment i's alternative; false when f returned false (stop).
+  template <class F>
+  bool visit_piece(std::size_t i, const Interval<T>& own, F& f) const {
+    return std::visit(
+        [&](const auto& s) {
+          if constexpr (std::is_void_v<decltype(f(i, s, own))>) {
+            f(i, s, own);
+            return true;
+          } else {
+            return static_cast<bool>(f(i, s, own));
+          }
+        },
+        segments_[i]);
+  }
+
   VectorType segment_derivative(std::size_t i, T t, int k) const {
-    const T scale = own_domain(i).length() / segment_domain(i).length();
+    const T scale = parameter_scale(i);
     return std::visit(
         [&](const auto& s) {
           if (k == 0) return s(t).to_vector();
@@ -214,7 +337,8 @@ using BezierPiece = std::variant<Bezier<T, D>, RationalBezier<T, D>>;
 /// parametrisation: piece i on [u_i, u_{i+1}], its [0, 1] mapped affinely onto it. Every
 /// curve type converts to it (the free function pieces(c)), and the queries (bounds,
 /// flatten, and later length, closest point, intersections) are written once on it,
-/// with one kernel per piece type; global_parameter() lifts a piece's parameter back.
+/// with one kernel per piece type and the combinators of PiecewiseCurve (for_each_piece,
+/// locate, lift, lift_roots, portion) between the pieces' parameters and the curve's.
 template <class T, int D>
 class Pieces : public detail::PiecewiseCurve<Pieces<T, D>, T, D, BezierPiece<T, D>> {
   using Base = detail::PiecewiseCurve<Pieces<T, D>, T, D, BezierPiece<T, D>>;

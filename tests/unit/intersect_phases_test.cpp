@@ -1,0 +1,197 @@
+// The phases of the general intersection engine (algo/intersect.hpp, solve()) called one
+// at a time on inputs whose answers are known in closed form: the shared frame, the pairs
+// of arcs, the joining and confirming of overlaps, the merging of points, edge points,
+// classification and the closing point of a closed curve.
+#include <cmath>
+#include <vector>
+
+#include "casteljau/algo/intersect.hpp"
+#include "test_support.hpp"
+
+namespace {
+
+using namespace casteljau;
+using namespace casteljau::detail::isect;
+using P2 = Point<double, 2>;
+using B2 = Bezier<double, 2>;
+using Pc = Pieces<double, 2>;
+
+/// Both curves prepared in their shared frame, with the context solve() makes.
+struct Both {
+  Pc a, b;
+  Prepared<double> A, B;
+  double tol;
+  Context<double> ctx;
+  Both(Pc a_, Pc b_) : a(std::move(a_)), b(std::move(b_)) {
+    const auto f = shared_frame(a, b);
+    A = prepare(a, f.origin, f.e);
+    B = prepare(b, f.origin, f.e);
+    tol = near_miss(A, B);
+    ctx = make_context(tol);
+  }
+};
+
+TEST(IntersectPhases, SharedFrameIsOriginAtAsFirstPointAndAPowerOfTwo) {
+  // Largest |P - origin| over both curves: 3 (x of (4, 1), y of (1, -2)); 3 2^-2 = 0.75
+  // lies in [0.5, 1), so e = 2.
+  const Pc a = pieces(B2{{1, 1}, {4, 1}});
+  const Pc b = pieces(B2{{1, -2}, {2, 0}});
+  const auto f = shared_frame(a, b);
+  EXPECT_EQ(f.origin, (P2{1, 1}));
+  EXPECT_EQ(f.e, 2);
+  // Scaled by 2^10: the same frame, 10 more in the exponent.
+  const auto g = shared_frame(pieces(B2{{1024, 1024}, {4096, 1024}}), pieces(B2{{1024, -2048}, {2048, 0}}));
+  EXPECT_EQ(g.e, 12);
+  // Every point the origin: no scale.
+  EXPECT_EQ(shared_frame(pieces(B2{{5, 5}, {5, 5}}), pieces(B2{{5, 5}, {5, 5}})).e, 0);
+}
+
+TEST(IntersectPhases, NearMissIsATenBillionthOfTheLargerDiagonal) {
+  // Unit frame e = 1 (largest |P| = 1): a spans (0, 0)..(0.5, 0), b (0, 0)..(0.25, 0.25);
+  // the larger control-box diagonal is 0.5.
+  const Both s(pieces(B2{{0, 0}, {1, 0}}), pieces(B2{{0, 0}, {0.5, 0.5}}));
+  EXPECT_DOUBLE_EQ(s.tol, 0.5e-10);
+}
+
+TEST(IntersectPhases, MeetArcsFindsTheCrossingOfTwoLines) {
+  // The diagonals of the square [0, 2]^2 cross at (1, 1), both at parameter 1/2.
+  Both s(pieces(B2{{0, 0}, {2, 2}}), pieces(B2{{0, 2}, {2, 0}}));
+  const auto pairs = meet_arcs(s.A, s.B, false, s.ctx);
+  EXPECT_TRUE(pairs.overlaps.empty());
+  ASSERT_GE(pairs.hits.size(), 1u);
+  for (const auto& h : pairs.hits) {
+    // Newton on a linear system: exact to a few eps.
+    EXPECT_NEAR(h.ta, 0.5, 4 * test::eps);
+    EXPECT_NEAR(h.tb, 0.5, 4 * test::eps);
+  }
+}
+
+TEST(IntersectPhases, MeetArcsTakesIdenticalArcsAsOneOverlap) {
+  // A quadratic and its copy: one arc each (monotone in x and y), the same arc.
+  const B2 q{{0, 0}, {1, 2}, {2, 3}};
+  Both s(pieces(q), pieces(q));
+  const auto pairs = meet_arcs(s.A, s.B, false, s.ctx);
+  EXPECT_TRUE(pairs.hits.empty());
+  ASSERT_EQ(pairs.overlaps.size(), 1u);
+  EXPECT_EQ(pairs.overlaps[0].o.a, Interval<double>(0, 1));
+  EXPECT_EQ(pairs.overlaps[0].o.b_start, 0.0);
+  EXPECT_EQ(pairs.overlaps[0].o.b_end, 1.0);
+}
+
+TEST(IntersectPhases, JoinOverlapsJoinsOnlyContinuations) {
+  using R = RawOverlap<double>;
+  std::vector<R> raw;
+  raw.push_back(R{{{0.5, 1}, 0.5, 1}, {}, {{1, 1}}});
+  raw.push_back(R{{{0, 0.5}, 0, 0.5}, {}, {{0, 0}}});
+  raw.push_back(R{{{1, 1.5}, 1.5, 1}, {}, {}});  // continues on a, but b runs back: apart
+  raw.push_back(R{{{2, 3}, 2, 3}, {}, {}});        // a gap on a: apart
+  const auto joined = join_overlaps(std::move(raw), 4.0, 4.0);
+  ASSERT_EQ(joined.size(), 3u);
+  EXPECT_EQ(joined[0].o.a, Interval<double>(0, 1));
+  EXPECT_EQ(joined[0].o.b_start, 0.0);
+  EXPECT_EQ(joined[0].o.b_end, 1.0);
+  EXPECT_EQ(joined[0].deferred.size(), 2u);  // the pairs of both parts go together
+  EXPECT_EQ(joined[1].o.a, Interval<double>(1, 1.5));
+  EXPECT_EQ(joined[2].o.a, Interval<double>(2, 3));
+}
+
+TEST(IntersectPhases, ConfirmOverlapsKeepsTheCommonStretchOfCollinearSegments) {
+  // a = (0, 0) -> (2, 0) and b = (1, 0) -> (3, 0) share x in [1, 2]: a over [0.5, 1]
+  // traces b from 0 to 0.5; beyond its ends the curves part (a ends, b leaves a's line
+  // nowhere: a ends at 1, b starts at 0).
+  Both s(pieces(B2{{0, 0}, {2, 0}}), pieces(B2{{1, 0}, {3, 0}}));
+  auto pairs = meet_arcs(s.A, s.B, false, s.ctx);
+  auto candidates = join_overlaps(std::move(pairs.overlaps), 1.0, 1.0);
+  const auto overlaps = confirm_overlaps(s.A, s.B, candidates, s.ctx, pairs.hits);
+  ASSERT_EQ(overlaps.size(), 1u);
+  // The ends are located by root solves on the other arc: a few eps.
+  EXPECT_NEAR(overlaps[0].a.lo, 0.5, 4 * test::eps);
+  EXPECT_NEAR(overlaps[0].a.hi, 1.0, 4 * test::eps);
+  EXPECT_NEAR(overlaps[0].b_start, 0.0, 4 * test::eps);
+  EXPECT_NEAR(overlaps[0].b_end, 0.5, 4 * test::eps);
+}
+
+/// A hit of the diagonals' crossing (pieces 0, parameters 1/2), at distance 0.
+Hit<double> crossing_hit() { return Hit<double>{0.5, 0.5, 0, 0, 0.5, 0.5, 0.0, false, false}; }
+
+TEST(IntersectPhases, InOverlapUsesBothParametersWithARelativeMargin) {
+  const Pc a = pieces(B2{{0, 0}, {2, 2}});
+  const std::vector<CurveOverlap<double>> overlaps{{{0.25, 0.5}, 0.75, 0.5}};  // b runs backwards
+  EXPECT_TRUE(in_overlap(crossing_hit(), overlaps, a, a, false));  // at its end (0.5, 0.5)
+  Hit<double> h = crossing_hit();
+  h.tb = 0.25;  // a inside, b outside
+  EXPECT_FALSE(in_overlap(h, overlaps, a, a, false));
+  // (0.6, 0.3) is outside a [0.25, 0.5] x b [0.55, 0.65]; swapped, (0.3, 0.6) is inside:
+  // for a self-intersection the same stretch seen from the other side.
+  h = crossing_hit();
+  h.ta = 0.6;
+  h.tb = 0.3;
+  const std::vector<CurveOverlap<double>> o2{{{0.25, 0.5}, 0.55, 0.65}};
+  EXPECT_FALSE(in_overlap(h, o2, a, a, false));
+  EXPECT_TRUE(in_overlap(h, o2, a, a, true));
+}
+
+TEST(IntersectPhases, MergePointsKeepsOnePointPerCrossing) {
+  Both s(pieces(B2{{0, 0}, {2, 2}}), pieces(B2{{0, 2}, {2, 0}}));
+  const auto lp = loops(s.A, s.B, s.tol);
+  EXPECT_FALSE(lp.a.closed);
+  EXPECT_FALSE(lp.b.closed);
+  // The same crossing found twice (from two pairs of arcs): one point.
+  const auto merged = merge_points(s.A, s.B, false, {crossing_hit(), crossing_hit()}, {}, lp, s.tol);
+  ASSERT_EQ(merged.kept.size(), 1u);
+  EXPECT_EQ(merged.kept[0].ta, 0.5);
+  EXPECT_TRUE(merged.edges.empty());
+  // An edge point is set aside, not merged.
+  Hit<double> e = crossing_hit();
+  e.edge = true;
+  const auto m2 = merge_points(s.A, s.B, false, {e}, {}, lp, s.tol);
+  EXPECT_TRUE(m2.kept.empty());
+  EXPECT_EQ(m2.edges.size(), 1u);
+}
+
+TEST(IntersectPhases, AdmitEdgesAddsAnEdgePointOnlyWhereNothingStandsForItsRegion) {
+  Both s(pieces(B2{{0, 0}, {2, 2}}), pieces(B2{{0, 2}, {2, 0}}));
+  const auto lp = loops(s.A, s.B, s.tol);
+  Hit<double> e = crossing_hit();
+  e.edge = true;
+  std::vector<Hit<double>> kept{crossing_hit()};
+  admit_edges(s.A, s.B, lp, kept, {e}, s.tol);
+  EXPECT_EQ(kept.size(), 1u);  // the crossing already stands for it
+  kept.clear();
+  admit_edges(s.A, s.B, lp, kept, {e}, s.tol);
+  ASSERT_EQ(kept.size(), 1u);
+  EXPECT_TRUE(kept[0].edge);
+}
+
+TEST(IntersectPhases, ClassifyTellsCrossingsFromTouches) {
+  {
+    Both s(pieces(B2{{0, 0}, {2, 2}}), pieces(B2{{0, 2}, {2, 0}}));
+    const auto pts = classify(s.A, s.B, {crossing_hit()}, s.tol);
+    ASSERT_EQ(pts.size(), 1u);
+    EXPECT_EQ(pts[0].kind, IntersectionKind::crossing);
+    EXPECT_EQ(pts[0].point, (P2{1, 1}));
+  }
+  {
+    // y = (1 - 2t)^2 (control points (0, 1), (1, -1), (2, 1)) touches y = 0 at t = 1/2,
+    // x = 1: parallel tangents there.
+    Both s(pieces(B2{{0, 1}, {1, -1}, {2, 1}}), pieces(B2{{0, 0}, {2, 0}}));
+    const auto pts = classify(s.A, s.B, {crossing_hit()}, s.tol);
+    ASSERT_EQ(pts.size(), 1u);
+    EXPECT_EQ(pts[0].kind, IntersectionKind::tangent);
+    EXPECT_EQ(pts[0].point, (P2{1, 0}));
+  }
+}
+
+TEST(IntersectPhases, OnceAtClosingPointListsAClosingCrossingOnce) {
+  // A curve on [0, 2] in two pieces: the closing point is at 0 and at 2. The pairs (0, 1)
+  // and (1, 2) are one self-intersection at the closing point; (0.5, 1.5) is another.
+  const Pc c({B2{{0, 0}, {1, 0}}, B2{{1, 0}, {0, 0}}}, {0.0, 1.0, 2.0});
+  const std::vector<CurveIntersection<double>> pts{
+      {0, 1, {0, 0}, IntersectionKind::crossing}, {0.5, 1.5, {0, 0}, IntersectionKind::crossing}, {1, 2, {0, 0}, IntersectionKind::crossing}};
+  const auto once = once_at_closing_point(c, pts);
+  ASSERT_EQ(once.size(), 2u);
+  EXPECT_EQ(once[0].ta, 0.0);
+  EXPECT_EQ(once[1].ta, 0.5);
+}
+
+}  // namespace
