@@ -15,6 +15,7 @@
 #include "casteljau/algo/solve.hpp"
 #include "casteljau/algo/to_bspline.hpp"
 #include "casteljau/basis/quadrature.hpp"
+#include "work_limits.hpp"
 
 namespace casteljau::io {
 
@@ -22,27 +23,8 @@ namespace {
 
 using casteljau::detail::format_number;
 
-/// The work limit of the queries (casteljau::detail::max_query_work), checked on the
-/// curve as given (a B-spline of n points and degree p: (n - p) pieces of (p + 1)^2)
-/// before its pieces are made, then on the pieces.
-void check_solve_work(const AnyCurve& c, const char* what = "solving") {
-  const double work = std::visit(
-      [](const auto& x) -> double {
-        if constexpr (requires { x.degree(); x.points(); }) {
-          const double n = static_cast<double>(x.points().size()), d = static_cast<double>(x.degree()) + 1;
-          return std::max(1.0, n - d + 1) * d * d;
-        } else {
-          return 0;
-        }
-      },
-      c);
-  if (work > casteljau::detail::max_query_work) {
-    throw InvalidArgument("curve", std::string(what) + " would take about " + std::to_string(static_cast<long long>(work)) +
-                                       " units of work (pieces x (degree + 1)^2), more than the limit of " +
-                                       std::to_string(static_cast<long long>(casteljau::detail::max_query_work)) +
-                                       ": use fewer control points or a lower degree");
-  }
-}
+/// The queries' work limit, on the curve as given and then on its pieces.
+void check_solve_work(const AnyCurve& c, const std::string& what = "solving") { limits::check_curve_work(c, "curve", what); }
 
 }  // namespace
 
@@ -65,12 +47,7 @@ LevelSet<double> solve(const AnyCurve& c, std::optional<int> axis, std::optional
   return std::visit(
       [&]<class P>(const P& p) {
         constexpr int D = P::dimension;
-        if (casteljau::detail::query_work(p) > casteljau::detail::max_query_work) {
-          throw InvalidArgument("curve", "solving would take about " + format_number(casteljau::detail::query_work(p)) +
-                                             " units of work (" + std::to_string(p.size()) +
-                                             " Bézier pieces, (degree + 1)^2 summed over them), more than the limit of " +
-                                             format_number(casteljau::detail::max_query_work));
-        }
+        limits::check_work(p, "curve", "solving");
         Vector<double, D> a{};
         for (int k = 0; k < D; ++k) a[k] = axis ? (k == *axis ? 1.0 : 0.0) : (*direction)[static_cast<std::size_t>(k)];
         return casteljau::solve(p, a, value);
@@ -142,12 +119,7 @@ AnyCurve to_bspline(const AnyCurve& c) {
   check_solve_work(c, "the conversion");
   return std::visit(
       [&](const auto& p) {
-        if (casteljau::detail::query_work(p) > casteljau::detail::max_query_work) {
-          throw InvalidArgument("curve", "the conversion would take about " + format_number(casteljau::detail::query_work(p)) +
-                                             " units of work (" + std::to_string(p.size()) +
-                                             " Bézier pieces, (degree + 1)^2 summed over them), more than the limit of " +
-                                             format_number(casteljau::detail::max_query_work));
-        }
+        limits::check_work(p, "curve", "the conversion");
         return std::visit([](auto&& b) { return AnyCurve(std::move(b)); }, casteljau::to_bspline(p));
       },
       pieces(c));

@@ -1,0 +1,51 @@
+// The work limit shared by the run-time queries and operations (private to src/io): a
+// request is refused, naming its field and the figures, before work that would take more
+// than seconds (casteljau::detail::max_query_work units).
+#pragma once
+
+#include <algorithm>
+#include <string>
+#include <variant>
+
+#include "casteljau/io/any_curve.hpp"
+
+namespace casteljau::io::limits {
+
+/// Refuses work on pieces p (see casteljau::detail::query_work) past the limit; `what` is
+/// the subject of the message ("the query", "solving", ...).
+template <class P>
+void check_work(const P& p, const std::string& field, const std::string& what = "the query") {
+  const double work = casteljau::detail::query_work(p);
+  if (work > casteljau::detail::max_query_work) {
+    throw InvalidArgument(field, what + " would take about " + std::to_string(static_cast<long long>(work)) + " units of work (" +
+                                     std::to_string(p.size()) + " Bézier pieces, (degree + 1)^2 summed over them), more than the limit of " +
+                                     std::to_string(static_cast<long long>(casteljau::detail::max_query_work)) +
+                                     ": use fewer pieces or a lower degree");
+  }
+}
+
+/// The same limit checked on the curve as given, before its Bézier pieces are made (for a
+/// B-spline of degree p on n control points that conversion alone costs O(n p^2) or more:
+/// a minute at n = 3000, p = 300): at most n - p pieces of degree p, (n - p) (p + 1)^2
+/// (a Bézier curve: one piece). Types without a single degree (paths, interpolating
+/// splines) are checked on their pieces.
+inline void check_curve_work(const AnyCurve& c, const std::string& field, const std::string& what = "the query") {
+  const double work = std::visit(
+      [](const auto& x) -> double {
+        if constexpr (requires { x.degree(); x.points(); }) {
+          const double n = static_cast<double>(x.points().size()), d = static_cast<double>(x.degree()) + 1;
+          return std::max(1.0, n - d + 1) * d * d;
+        } else {
+          return 0;
+        }
+      },
+      c);
+  if (work > casteljau::detail::max_query_work) {
+    throw InvalidArgument(field, what + " would take about " + std::to_string(static_cast<long long>(work)) +
+                                     " units of work (pieces x (degree + 1)^2), more than the limit of " +
+                                     std::to_string(static_cast<long long>(casteljau::detail::max_query_work)) +
+                                     ": use fewer control points or a lower degree");
+  }
+}
+
+}  // namespace casteljau::io::limits
