@@ -54,8 +54,10 @@ std::optional<typename C::Scalar> curvature(const C& c, typename C::Scalar t) {
 template <class T, int D>
 std::optional<T> curvature(const Pieces<T, D>& p, T u) {
   require_finite(u, "t");
-  const auto [i, t] = p.locate(u);
-  return std::visit([&](const auto& s) { return curvature_of(s.derivative_at(t, 1), s.derivative_at(t, 2)); }, p.segments()[i]);
+  // (no structured binding: clang 14 cannot capture one in a lambda)
+  const PieceParameter<T> at = p.locate(u);
+  const T t = at.t;
+  return std::visit([&](const auto& s) { return curvature_of(s.derivative_at(t, 1), s.derivative_at(t, 2)); }, p.segments()[at.index]);
 }
 
 }  // namespace casteljau

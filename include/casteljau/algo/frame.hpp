@@ -122,7 +122,9 @@ std::optional<Frame<typename C::Scalar, C::dimension>> frame(const C& c, typenam
   constexpr int D = C::dimension;
   require_finite(u, "t");
   const auto& p = pieces(c);  // a reference when c is Pieces; else the local owns them
-  const auto [i, t] = p.locate(u);
+  const PieceParameter<T> at = p.locate(u);  // not a structured binding: clang 14 cannot capture one
+  const T t = at.t;
+  const std::size_t i = at.index;
   // The frame, curvature and torsion are unchanged by an increasing affine change of
   // parameter: the piece's own derivatives (in t on [0, 1]) give them without the chain
   // rule's powers of the break length, which under- or overflow for a domain of length
