@@ -84,12 +84,12 @@ Response basis(const Args& a) {
 
 constexpr Field basis_fields[] = {
     {"kind", FieldType::string, true, {}, "bernstein, bspline, lagrange, hermite, catmull_rom, cardinal or uniform_bspline"},
-    {"t", FieldType::numbers, true, {}, "the parameters (any finite numbers: outside the domain the end pieces continue)"},
-    {"derivatives", FieldType::integer, false, "0", "k >= 0: also the derivatives of orders 1..k"},
     {"degree", FieldType::integer, false, {}, "bernstein (>= 0) and bspline (>= 0) only"},
     {"knots", FieldType::numbers, false, {}, "bspline only: non-decreasing, len = functions + degree + 1, as a bspline curve's"},
     {"params", FieldType::numbers, false, {}, "lagrange only: distinct nodes (one function per node)"},
     {"tension", FieldType::number, false, {}, "cardinal only: s in [0, 1] (tangents (1 - s) times Catmull-Rom's)"},
+    {"t", FieldType::numbers, true, {}, "the parameters (any finite numbers: outside the domain the end pieces continue)"},
+    {"derivatives", FieldType::integer, false, "0", "k >= 0: also the derivatives of orders 1..k"},
 };
 
 Response frames(const Args& a) {
