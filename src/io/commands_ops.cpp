@@ -6,6 +6,8 @@
 #include <span>
 #include <vector>
 
+#include "casteljau/io/basis.hpp"
+#include "casteljau/io/frames.hpp"
 #include "casteljau/io/ops.hpp"
 #include "casteljau/io/results.hpp"
 #include "commands_family.hpp"
@@ -47,6 +49,80 @@ constexpr Field reduce_fields[] = {
     {"curve", FieldType::curve, true, {}, "a bezier, bspline or nurbs curve"},
     {"times", FieldType::integer, false, "1", "r with 1 <= r <= p: the degree drops by r (a degree-0 result is a constant)"},
     {"tolerance", FieldType::number, true, {}, "> 0: the largest distance allowed between the curves at equal parameters"},
+};
+
+OrderedJson matrix_json(const Eigen::Matrix4d& m) {
+  OrderedJson rows = OrderedJson::array();
+  for (int i = 0; i < 4; ++i) {
+    OrderedJson row = OrderedJson::array();
+    for (int j = 0; j < 4; ++j) row.push_back(m(i, j));
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
+Response basis(const Args& a) {
+  const std::optional<int> degree = a.has("degree") ? std::optional<int>(a.integer("degree")) : std::nullopt;
+  const std::optional<double> tension = a.has("tension") ? std::optional<double>(a.number("tension")) : std::nullopt;
+  const int k = a.integer("derivatives");
+  const BasisTable table =
+      io::basis(a.string("kind"), degree, a.optional_numbers("knots"), a.optional_numbers("params"), tension, a.numbers("t"), k);
+  OrderedJson r;
+  r["values"] = table.value[0];
+  if (k > 0) {
+    OrderedJson d = OrderedJson::array();
+    for (std::size_t j = 1; j < table.value.size(); ++j) d.push_back(table.value[j]);
+    r["derivatives"] = std::move(d);
+  }
+  if (table.matrix) {
+    r["matrix"] = matrix_json(*table.matrix);
+    r["constraint"] = table.constraint ? matrix_json(*table.constraint) : OrderedJson(nullptr);
+    r["basis_matrix"] = matrix_json(*table.matrix);
+  }
+  return {r};
+}
+
+constexpr Field basis_fields[] = {
+    {"kind", FieldType::string, true, {}, "bernstein, bspline, lagrange, hermite, catmull_rom, cardinal or uniform_bspline"},
+    {"degree", FieldType::integer, false, {}, "bernstein (>= 0) and bspline (>= 0) only"},
+    {"knots", FieldType::numbers, false, {}, "bspline only: non-decreasing, len = functions + degree + 1, as a bspline curve's"},
+    {"params", FieldType::numbers, false, {}, "lagrange only: distinct nodes (one function per node)"},
+    {"tension", FieldType::number, false, {}, "cardinal only: s in [0, 1] (tangents (1 - s) times Catmull-Rom's)"},
+    {"t", FieldType::numbers, true, {}, "the parameters (any finite numbers: outside the domain the end pieces continue)"},
+    {"derivatives", FieldType::integer, false, "0", "k >= 0: also the derivatives of orders 1..k"},
+};
+
+Response frames(const Args& a) {
+  std::optional<std::span<const double>> initial;
+  if (a.has("initial_normal")) initial = std::span<const double>(a.numbers("initial_normal"));
+  const MovingFrames f = io::moving_frames(a.curve("curve"), a.numbers("t"), a.string("method"), initial);
+  const auto vectors = [](const auto& list) {
+    OrderedJson out = OrderedJson::array();
+    for (const auto& v : list) {
+      if constexpr (requires { v.has_value(); }) {
+        out.push_back(v ? OrderedJson(*v) : OrderedJson(nullptr));
+      } else {
+        out.push_back(OrderedJson(v));
+      }
+    }
+    return out;
+  };
+  OrderedJson r;
+  r["tangents"] = vectors(f.tangents);
+  r["normals"] = vectors(f.normals);
+  r["binormals"] = vectors(f.binormals);
+  return {r};
+}
+
+constexpr std::string_view frame_methods[] = {"rotation_minimizing", "frenet"};
+
+constexpr Field frames_fields[] = {
+    {"curve", FieldType::curve, true, {}, "a 3-D curve"},
+    {"t", FieldType::numbers, true, {}, "increasing parameters"},
+    {"method", FieldType::string, false, "\"rotation_minimizing\"",
+     "rotation_minimizing (double reflection) or frenet (normals and binormals null where undefined)", frame_methods},
+    {"initial_normal", FieldType::vector, false, {},
+     "rotation_minimizing: the normal at t[0] (projected onto the normal plane, normalised); default the Frenet normal"},
 };
 
 // ---------------------------------------------------------------------------------------
@@ -95,6 +171,31 @@ constexpr Command ops_family[] = {
      R"(  echo '{"curve": {"type": "bezier", "points": [[0,0],[1,2],[3,2],[4,0]]}, "tolerance": 0.5}' | casteljau reduce
   {"curve":{"type":"bezier","points":[[0.0,0.0],[2.0000000000000004,3.0],[4.0,0.0]]},"max_error":0.09622504486493799})",
      reduce_fields, reduce},
+    {"basis", "Values and derivatives of the basis functions of a kind",
+     "The basis functions of `kind` at each t: bernstein B(i, n) (degree n), bspline N(i, p)\n"
+     "on `knots` (The NURBS Book A2.3; outside the domain the end spans continue), lagrange\n"
+     "l_j of `params` (barycentric form), and the cubic kinds hermite (h00, h01, h10, h11 for\n"
+     "[p0, p1, m0, m1]), catmull_rom and cardinal ([P(i-1), P(i), P(i+1), P(i+2)]; cardinal\n"
+     "with tangents (1 - tension) times Catmull-Rom's) and uniform_bspline (four de Boor\n"
+     "points) as [1 t t^2 t^3] M. The cubic kinds and bernstein of degree 3 also give M, its\n"
+     "inverse C (exact rationals rounded once; cardinal: an LU inverse, null at tension 1)\n"
+     "and basis_matrix = M.",
+     "values: one row per t, one value per basis function; derivatives (k > 0): k tables\n"
+     "          of the same shape, orders 1..k; matrix, constraint, basis_matrix (cubic kinds)",
+     R"(  echo '{"kind": "bernstein", "degree": 2, "t": [0.5]}' | casteljau basis
+  {"values":[[0.25,0.5,0.25]]})",
+     basis_fields, basis, "", ""},
+    {"frames", "Tangents, normals and binormals of a 3-D curve at increasing t",
+     "Unit frames of a space curve at increasing parameters, binormal = tangent x normal.\n"
+     "rotation_minimizing (default): the double reflection method (Wang, Juttler, Zheng and\n"
+     "Liu 2008; fourth order in the step between samples) from the Frenet normal at t[0],\n"
+     "or from initial_normal projected onto the plane normal to the tangent there and\n"
+     "normalised. frenet: the Frenet frames, normals and binormals null where the\n"
+     "curvature is zero.",
+     "tangents, normals, binormals: one unit vector (or null: frenet) per t",
+     R"(  echo '{"curve": {"type": "bezier", "points": [[0,0,0],[1,0,0],[1,1,0],[1,1,1]]}, "t": [0, 1], "method": "frenet"}' | casteljau frames
+  {"tangents":[[1.0,0.0,0.0],[0.0,0.0,1.0]],"normals":[[0.0,1.0,0.0],[0.0,-1.0,0.0]],"binormals":[[0.0,0.0,1.0],[1.0,0.0,-0.0]]})",
+     frames_fields, frames},
 };
 
 }  // namespace

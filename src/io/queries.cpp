@@ -2,6 +2,8 @@
 // Pieces<double, D> for D = 1..4 only (a curve reaches it through its exact pieces).
 #include "casteljau/io/queries.hpp"
 
+#include "casteljau/io/frames.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -119,7 +121,9 @@ std::vector<double> curvature(const AnyCurve& c, std::span<const double> t) {
       pieces(c));
 }
 
-AnyFrames frames(const AnyCurve& c, std::span<const double> t) {
+namespace {
+
+AnyFrames frames_of(const AnyCurve& c, std::span<const double> t, bool require_normal) {
   return std::visit(
       [&]<class P>(const P& p) -> AnyFrames {
         constexpr int D = P::dimension;
@@ -136,7 +140,7 @@ AnyFrames frames(const AnyCurve& c, std::span<const double> t) {
             throw InvalidArgument(where, "the frame is undefined at t = " + format_number(t[j]) +
                                              ": the velocity is zero (a cusp or a stop), the tangent has no direction");
           }
-          if (D >= 3 && !f->normal) {
+          if (D >= 3 && !f->normal && require_normal) {
             throw InvalidArgument(where, "the principal normal is undefined at t = " + format_number(t[j]) +
                                              ": the curvature is zero (a straight stretch or a point of zero curvature)");
           }
@@ -157,6 +161,12 @@ AnyFrames frames(const AnyCurve& c, std::span<const double> t) {
       },
       pieces(c));
 }
+
+}  // namespace
+
+AnyFrames frames(const AnyCurve& c, std::span<const double> t) { return frames_of(c, t, true); }
+
+AnyFrames frenet_frames(const AnyCurve& c, std::span<const double> t) { return frames_of(c, t, false); }
 
 double area(const AnyCurve& c) {
   return std::visit(

@@ -50,6 +50,9 @@ const std::map<std::string, std::vector<Expected>> documented = {
     {"refine", {{"curve", true}, {"knots", true}}},
     {"to_bspline", {{"curve", true}}},
     {"reduce", {{"curve", true}, {"times", false}, {"tolerance", true}}},
+    {"basis",
+     {{"kind", true}, {"degree", false}, {"knots", false}, {"params", false}, {"tension", false}, {"t", true}, {"derivatives", false}}},
+    {"frames", {{"curve", true}, {"t", true}, {"method", false}, {"initial_normal", false}}},
 };
 
 const io::OrderedJson& command_entry(const io::OrderedJson& listing, const std::string& name) {

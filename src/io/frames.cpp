@@ -1,0 +1,86 @@
+// The `frames` command's library call (io/frames.hpp).
+#include "casteljau/io/frames.hpp"
+
+#include <cmath>
+#include <variant>
+
+#include "casteljau/algo/rmf.hpp"
+
+namespace casteljau::io {
+
+namespace {
+
+std::array<double, 3> to_array(const Vector<double, 3>& v) { return {v[0], v[1], v[2]}; }
+
+Vector<double, 3> cross(const Vector<double, 3>& a, const Vector<double, 3>& b) {
+  return Vector<double, 3>(a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]);
+}
+
+}  // namespace
+
+MovingFrames moving_frames(const AnyCurve& c, std::span<const double> t, const std::string& method,
+                           std::optional<std::span<const double>> initial_normal) {
+  using casteljau::detail::format_number;
+  if (dimension(c) != 3) throw InvalidArgument("curve", "frames needs a 3-D curve, got dimension " + std::to_string(dimension(c)));
+  const bool rmf = method == "rotation_minimizing";
+  if (!rmf && method != "frenet") {
+    throw InvalidArgument("method", "unknown method '" + method + "' (rotation_minimizing, frenet)");
+  }
+  if (initial_normal && !rmf) throw InvalidArgument("initial_normal", "belongs to method rotation_minimizing, not frenet");
+  if (initial_normal && initial_normal->size() != 3) {
+    throw InvalidArgument("initial_normal", "needs 3 coordinates (the curve's dimension), got " + std::to_string(initial_normal->size()));
+  }
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    require_finite(t[i], "t[" + std::to_string(i) + "]");
+    if (i > 0 && !(t[i] > t[i - 1])) {
+      throw InvalidArgument("t[" + std::to_string(i) + "]",
+                            "parameters must be increasing (" + format_number(t[i]) + " after " + format_number(t[i - 1]) + ")");
+    }
+  }
+  const AnyFrames any = frenet_frames(c, t);
+  const auto& fr = std::get<Frames<double, 3>>(any);
+  MovingFrames out;
+  std::vector<Vector<double, 3>> tangents;
+  for (const auto& f : fr) {
+    tangents.push_back(f.tangent);
+    out.tangents.push_back(to_array(f.tangent));
+  }
+  if (!rmf) {
+    for (const auto& f : fr) {
+      out.normals.push_back(f.normal ? std::optional(to_array(*f.normal)) : std::nullopt);
+      out.binormals.push_back(f.normal ? std::optional(to_array(cross(f.tangent, *f.normal))) : std::nullopt);
+    }
+    return out;
+  }
+  if (t.empty()) return out;
+  Vector<double, 3> r0;
+  if (initial_normal) {
+    const Vector<double, 3> n((*initial_normal)[0], (*initial_normal)[1], (*initial_normal)[2]);
+    const double len = norm(n);
+    const Vector<double, 3> p = n - dot(n, tangents[0]) * tangents[0];
+    const double plen = norm(p);
+    // Parallel to the tangent (or zero): nothing of it is left in the normal plane beyond
+    // the rounding of the projection.
+    if (!(len > 0) || !std::isfinite(len) || !(plen > 1e-12 * len)) {
+      throw InvalidArgument("initial_normal", "must have a component normal to the tangent at t[0] = " + format_number(t[0]) +
+                                                  " (it is zero or parallel to the tangent)");
+    }
+    r0 = p / plen;
+  } else if (fr[0].normal) {
+    r0 = *fr[0].normal;
+  } else {
+    throw InvalidArgument("initial_normal", "the curve has no Frenet normal at t[0] = " + format_number(t[0]) +
+                                                " (zero curvature): give initial_normal");
+  }
+  const PointList pts = evaluate(c, t);
+  std::vector<Vector<double, 3>> x;
+  for (std::size_t i = 0; i < pts.size(); ++i) x.emplace_back(pts[i][0], pts[i][1], pts[i][2]);
+  const auto r = rotation_minimizing_normals(x, tangents, r0);
+  for (std::size_t i = 0; i < r.size(); ++i) {
+    out.normals.push_back(to_array(r[i]));
+    out.binormals.push_back(to_array(cross(tangents[i], r[i])));
+  }
+  return out;
+}
+
+}  // namespace casteljau::io

@@ -1,0 +1,147 @@
+#!/usr/bin/python3
+"""Black-box tests of `frames`: rotation-minimizing (double reflection) and Frenet frames of
+a space curve.
+
+Oracle: the exact rotation-minimizing frame of the circular helix (r cos t, r sin t, h t):
+relative to its Frenet frame (N = (-cos t, -sin t, 0), B = T x N) the RMF normal is N
+turned about T by the angle -tau s(t), tau = h / (r^2 + h^2) the torsion and
+s = sqrt(r^2 + h^2) t the arc length (r' = -(tau) ... from N' = -kappa T + tau B: a normal
+cos(phi) N + sin(phi) B moves along T only when phi' = -tau). The helix is given to the
+program as a `lagrange` curve through 16 Chebyshev points of it on [0, pi] (half a turn;
+the program takes Lagrange curves up to degree 15): the interpolation error of cos and
+sin there is about 2 (pi / 4)^16 / 16! = 2e-15 (the Chebyshev remainder bound), so it is the
+helix to rounding (its derivatives to about n^2 times that). Invariants: unit, orthogonal
+vectors, binormal = tangent x normal.
+
+Usage: test_frames.py PATH_TO_CASTELJAU [unittest options]
+"""
+import math
+import os
+import sys
+import unittest
+
+import numpy as np
+
+import test_cli
+from test_cli import CliTest
+
+R, H = 1.0, 0.5
+TAU = H / (R * R + H * H)
+SPEED = math.sqrt(R * R + H * H)
+T_END = math.pi
+
+
+def helix_curve(n=16):
+    # Chebyshev points of the second kind on [0, 2 pi].
+    ts = [T_END / 2 * (1 - math.cos(math.pi * j / (n - 1))) for j in range(n)]
+    return {"type": "lagrange", "params": ts, "points": [[R * math.cos(t), R * math.sin(t), H * t] for t in ts]}
+
+
+def helix_frenet(t):
+    tan = np.array([-R * math.sin(t), R * math.cos(t), H]) / SPEED
+    nor = np.array([-math.cos(t), -math.sin(t), 0.0])
+    return tan, nor, np.cross(tan, nor)
+
+
+def helix_rmf_normal(t):
+    _, n, b = helix_frenet(t)
+    phi = -TAU * SPEED * t
+    return math.cos(phi) * n + math.sin(phi) * b
+
+
+def angle(a, b):
+    a, b = np.asarray(a), np.asarray(b)
+    return math.atan2(np.linalg.norm(np.cross(a, b)), float(np.dot(a, b)))
+
+
+class FramesTest(CliTest):
+    def frames(self, **req):
+        return self.ok("frames", req)
+
+    def check_orthonormal(self, r, tol):
+        for t, n, b in zip(r["tangents"], r["normals"], r["binormals"]):
+            if n is None:
+                self.assertIsNone(b)
+                continue
+            for v in (t, n, b):
+                self.assertAlmostEqual(np.linalg.norm(v), 1, delta=tol)
+            self.assertAlmostEqual(float(np.dot(t, n)), 0, delta=tol)
+            self.assert_close(b, np.cross(t, n).tolist(), tol)
+
+    def test_helix_rmf_fourth_order(self):
+        errors = []
+        for n in [16, 32, 64, 128]:
+            ts = [T_END * i / n for i in range(n + 1)]
+            r = self.frames(curve=helix_curve(), t=ts)
+            self.check_orthonormal(r, 1e-13)  # normalised each step: rounding only
+            for t, tan in zip(ts, r["tangents"]):
+                self.assertLess(angle(tan, helix_frenet(t)[0]), 1e-11)  # the interpolant's derivative error
+            err = max(angle(nv, helix_rmf_normal(t)) for t, nv in zip(ts, r["normals"]))
+            errors.append(err)
+        print(f"\nhelix r=1 h=0.5 on [0, pi], RMF normal max angle error (rad) at 16/32/64/128 steps: "
+              + ", ".join(f"{e:.3e}" for e in errors), file=sys.stderr)
+        # Double reflection is fourth order: each halving of the step divides the error by
+        # about 16; 12 leaves room for the higher-order terms at the coarsest step.
+        for a, b in zip(errors, errors[1:]):
+            self.assertGreater(a / b, 12)
+        self.assertLess(errors[-1], 1e-7)
+
+    def test_helix_initial_normal(self):
+        # Starting from the binormal instead of the normal: the whole frame turns by 90 degrees.
+        ts = [T_END * i / 256 for i in range(257)]
+        tan0, _, b0 = helix_frenet(0)
+        r = self.frames(curve=helix_curve(), t=ts, initial_normal=(3 * b0 + 2 * tan0).tolist())  # projected, normalised
+        self.assert_close(r["normals"][0], b0.tolist(), 1e-12)
+        for t, nv in zip(ts, r["normals"]):
+            want = np.cross(helix_frenet(t)[0], helix_rmf_normal(t))  # T x r: r turned by 90 degrees
+            self.assertLess(angle(nv, want), 1e-7)  # the fourth-order error at 256 steps (see above)
+
+    def test_helix_frenet(self):
+        ts = [0, 0.3, 1, 2.5, 3, T_END]
+        r = self.frames(curve=helix_curve(), t=ts, method="frenet")
+        for t, tan, nv, bv in zip(ts, r["tangents"], r["normals"], r["binormals"]):
+            want = helix_frenet(t)
+            # the interpolant's first and second derivatives, about 1e-12 of the helix's
+            self.assert_close(tan, want[0].tolist(), 1e-11)
+            self.assert_close(nv, want[1].tolist(), 1e-10)
+            self.assert_close(bv, want[2].tolist(), 1e-10)
+
+    def test_straight_line(self):
+        line = {"type": "bezier", "points": [[0, 0, 0], [1, 1, 1]]}
+        r = self.frames(curve=line, t=[0, 0.5, 1], method="frenet")
+        self.assertEqual(r["normals"], [None, None, None])
+        self.assertEqual(r["binormals"], [None, None, None])
+        s = 1 / math.sqrt(3)
+        self.assert_close(r["tangents"], [[s, s, s]] * 3, 1e-15)
+        self.bad("frames", {"curve": line, "t": [0, 1]}, "initial_normal", contains="Frenet normal")
+        r = self.frames(curve=line, t=[0, 0.5, 1], initial_normal=[0, 0, 5])
+        want = np.array([0, 0, 1]) - np.array([1, 1, 1]) / 3
+        want = (want / np.linalg.norm(want)).tolist()
+        self.assert_close(r["normals"], [want] * 3, 1e-15)  # constant along a line
+        self.check_orthonormal(r, 1e-15)
+
+    def test_empty_t(self):
+        r = self.frames(curve=helix_curve(), t=[])
+        self.assertEqual(r, {"tangents": [], "normals": [], "binormals": []})
+
+    def test_bad_input(self):
+        helix = helix_curve()
+        self.bad("frames", {"curve": {"type": "bezier", "points": [[0, 0], [1, 1], [2, 0]]}, "t": [0]}, "curve", contains="3-D")
+        self.bad("frames", {"curve": helix, "t": [0, 1, 1]}, "t[2]", contains="increasing")
+        self.bad("frames", {"curve": helix, "t": [1, 0]}, "t[1]", contains="increasing")
+        self.bad("frames", {"curve": helix, "t": [0], "method": "bishop"}, "method", contains="unknown")
+        self.bad("frames", {"curve": helix, "t": [0], "initial_normal": [1, 0]}, "initial_normal", contains="3")
+        tan0 = helix_frenet(0)[0]
+        self.bad("frames", {"curve": helix, "t": [0], "initial_normal": (2 * tan0).tolist()}, "initial_normal",
+                 contains="parallel")
+        self.bad("frames", {"curve": helix, "t": [0], "initial_normal": [0, 0, 0]}, "initial_normal")
+        self.bad("frames", {"curve": helix, "t": [0], "method": "frenet", "initial_normal": [1, 0, 0]}, "initial_normal")
+        self.bad("frames", {"curve": helix}, "t", contains="missing")
+        self.bad("frames", {"t": [0]}, "curve", contains="missing")
+        stop = {"type": "bezier", "points": [[0, 0, 0], [0, 0, 0], [1, 1, 0], [1, 1, 1]]}
+        self.bad("frames", {"curve": stop, "t": [0, 1]}, "t[0]", contains="velocity")
+
+
+if __name__ == "__main__":
+    test_cli.BINARY = os.path.abspath(sys.argv.pop(1))
+    unittest.main(verbosity=1)
