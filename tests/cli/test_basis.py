@@ -260,6 +260,10 @@ class BasisTest(CliTest):
         # A field of another kind is refused, not ignored.
         self.bad("basis", {"kind": "hermite", "tension": 0.5, "t": [0]}, "tension", contains="another kind")
         self.bad("basis", {"kind": "uniform_bspline", "degree": 3, "t": [0]}, "degree", contains="another kind")
+        # Far outside the nodes the values overflow: refused naming the parameter (the
+        # Lagrange basis on 0, 1, 2 grows like t^2 / 2: 5e599 at t = 1e300).
+        self.bad("basis", {"kind": "lagrange", "params": [0, 1, 2], "t": [0.5, 1e300]}, "t[1]", contains="not representable")
+        self.bad("basis", {"kind": "hermite", "t": [1e200]}, "t[0]", contains="not representable")
         self.bad("basis", {"kind": "bernstein", "degree": 3, "knots": [0, 1], "t": [0]}, "knots", contains="another kind")
         self.bad("basis", {"kind": "catmull_rom", "params": [0, 1], "t": [0]}, "params", contains="another kind")
         self.bad("basis", {"kind": "hermite", "t": [0], "derivatives": -1}, "derivatives", contains=">= 0")

@@ -205,6 +205,15 @@ inline BasisTable basis_table(const BasisSpec& b, std::span<const double> t, int
         }
       }
     }
+    // Far outside the data (a Lagrange basis at t = 1e300, a cubic at 1e110) the values
+    // overflow: refused naming the parameter, never a table with inf or NaN in it.
+    for (std::size_t j = 0; j <= K; ++j)
+      for (const double v : r.value[j][i])
+        if (!std::isfinite(v)) {
+          throw InvalidArgument("t[" + std::to_string(i) + "]",
+                                (j == 0 ? std::string("the basis values") : "the derivatives of order " + std::to_string(j) + " of the basis") +
+                                    " at t = " + detail::format_number(u) + " are not representable (they overflow a double)");
+        }
   }
   return r;
 }
