@@ -361,16 +361,31 @@ def polyline_crossings(A, B, n=1500):
         return Bm.T @ P
 
     a, b = sample(A), sample(B)
-    p, r = a[:-1], a[1:] - a[:-1]
-    q, s = b[:-1], b[1:] - b[:-1]
-    rxs = r[:, None, 0] * s[None, :, 1] - r[:, None, 1] * s[None, :, 0]
-    qp = q[None, :, :] - p[:, None, :]
-    with np.errstate(divide="ignore", invalid="ignore"):
-        u = (qp[..., 0] * s[None, :, 1] - qp[..., 1] * s[None, :, 0]) / rxs
-        v = (qp[..., 0] * r[:, None, 1] - qp[..., 1] * r[:, None, 0]) / rxs
-    ok = (rxs != 0) & (u >= 0) & (u <= 1) & (v >= 0) & (v <= 1)
-    i, j = np.nonzero(ok)
-    return [((i[k] + u[i[k], j[k]]) / n, (j[k] + v[i[k], j[k]]) / n) for k in range(len(i))]
+    # Only the segments of chunks whose bounding boxes overlap can cross: the chunks of 30
+    # segments are paired by their boxes first (each segment is in one chunk, so every
+    # crossing of the polylines is found once, as by the full n x n test).
+    c = 30
+    chunks = [(k, min(k + c, n)) for k in range(0, n, c)]
+
+    def boxes(P):
+        return np.array([[P[i:j + 1].min(axis=0), P[i:j + 1].max(axis=0)] for i, j in chunks])
+
+    ba, bb = boxes(a), boxes(b)
+    close = np.all((ba[:, None, 0] <= bb[None, :, 1]) & (bb[None, :, 0] <= ba[:, None, 1]), axis=-1)
+    out = []
+    for ci, cj in zip(*np.nonzero(close)):
+        (i0, i1), (j0, j1) = chunks[ci], chunks[cj]
+        p, r = a[i0:i1], a[i0 + 1:i1 + 1] - a[i0:i1]
+        q, s = b[j0:j1], b[j0 + 1:j1 + 1] - b[j0:j1]
+        rxs = r[:, None, 0] * s[None, :, 1] - r[:, None, 1] * s[None, :, 0]
+        qp = q[None, :, :] - p[:, None, :]
+        with np.errstate(divide="ignore", invalid="ignore"):
+            u = (qp[..., 0] * s[None, :, 1] - qp[..., 1] * s[None, :, 0]) / rxs
+            v = (qp[..., 0] * r[:, None, 1] - qp[..., 1] * r[:, None, 0]) / rxs
+        ok = (rxs != 0) & (u >= 0) & (u <= 1) & (v >= 0) & (v <= 1)
+        i, j = np.nonzero(ok)
+        out += [((i0 + i[k] + u[i[k], j[k]]) / n, (j0 + j[k] + v[i[k], j[k]]) / n) for k in range(len(i))]
+    return out
 
 
 class RandomPropertyTest(CliTest):

@@ -10,6 +10,8 @@
 #include <span>
 #include <vector>
 
+#include "casteljau/io/any_curve.hpp"
+#include "casteljau/io/json.hpp"
 #include "random_interp_data.hpp"
 #include "test_support.hpp"
 
@@ -542,8 +544,10 @@ TEST(TangentRules, LinesNearTheLargestDouble) {
                                              akima_tangents(u, P)};
     for (const auto& m : rules) {
       const Hermite<double, 1> h(u, P, m);
-      // The slope 2e308 / a to a few eps; the points to a few eps of 1e308.
-      for (const V1& mi : m) EXPECT_NEAR(mi[0], 2e308 / a, 1e-15 * 2e308 / a) << a;
+      // The slope 2e308 / a to a few eps (written 2 (1e308 / a): the constant 2e308 is
+      // beyond the largest double); the points to a few eps of 1e308.
+      const double slope = 2 * (1e308 / a);
+      for (const V1& mi : m) EXPECT_NEAR(mi[0], slope, 1e-15 * slope) << a;
       EXPECT_NEAR(h(0.25 * a)[0], -0.5e308, 1e-15 * 1e308) << a;
       EXPECT_NEAR(h(0.75 * a)[0], 0.5e308, 1e-15 * 1e308) << a;
     }
