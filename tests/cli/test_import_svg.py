@@ -39,7 +39,7 @@ ICONS = "/usr/share/icons/Adwaita/scalable"
 # The style that turns any drawing into its black fill silhouette.
 SILHOUETTE = ("* { fill: #000 !important; fill-opacity: 1 !important; fill-rule: nonzero !important; "
               "stroke: none !important; opacity: 1 !important; clip-path: none !important; "
-              "mask: none !important; filter: none !important; display: inline !important; "
+              "mask: none !important; filter: none !important; marker: none !important; display: inline !important; "
               "visibility: visible !important } "
               # What import_svg skips (text, images, references) is not drawn either.
               "text, image, use, switch, foreignObject { display: none !important }")
@@ -153,7 +153,67 @@ def path_data(shape):
     return " ".join(out)
 
 
-class ImportSvgTest(CliTest):
+class PixelTest(CliTest):
+    """The pixel comparison against librsvg (no tests of its own)."""
+
+    # -----------------------------------------------------------------------------------
+    # Pixels against librsvg
+
+    def silhouettes(self, documents, size):
+        """For each document (text): the alpha of librsvg's rendering of the original and of
+        the document rebuilt from the imported curves, size x size px."""
+        requests = "".join(json.dumps({"svg": d}) + "\n" for d in documents)
+        rc, out, err = test_cli.run("import_svg", text=requests, args=("--jsonl",))
+        self.assertEqual(rc, 0, err)
+        responses = [json.loads(line) for line in out.splitlines()]
+        self.assertEqual(len(responses), len(documents))
+        ET.register_namespace("", SVG_NS)
+        pairs = []
+        with tempfile.TemporaryDirectory() as tmp:
+            for k, (doc, resp) in enumerate(zip(documents, responses)):
+                self.assertNotIn("error", resp, resp)
+                root = ET.fromstring(doc)
+                style = ET.Element("{%s}style" % SVG_NS)
+                style.text = SILHOUETTE
+                root.insert(0, style)
+                frame = " ".join('%s="%s"' % (a, root.get(a)) for a in ("width", "height", "viewBox") if root.get(a))
+                rebuilt = '<svg xmlns="%s" %s>\n' % (SVG_NS, frame) + "".join(
+                    '<path fill="#000" d="%s"/>\n' % path_data(p) for p in resp["paths"] if p["subpaths"]) + "</svg>\n"
+                images = []
+                for name, text in (("original", ET.tostring(root, encoding="unicode")), ("rebuilt", rebuilt)):
+                    src, png = os.path.join(tmp, "%d-%s.svg" % (k, name)), os.path.join(tmp, "%d-%s.png" % (k, name))
+                    with open(src, "w") as f:
+                        f.write(text)
+                    subprocess.run(["rsvg-convert", "-w", str(size), "-h", str(size), "-o", png, src], check=True)
+                    images.append(read_png_alpha(png))
+                pairs.append((images[0], images[1], resp))
+        return pairs
+
+    def check_pixels(self, names, documents, size):
+        worst_max = worst_mean = 0.0
+        for name, (a, b, resp) in zip(names, self.silhouettes(documents, size)):
+            d = np.abs(a - b)
+            with self.subTest(drawing=name):
+                self.assertGreater(a.sum(), 0.01 * size * size, "the drawing draws something")
+                # Thresholds: librsvg (cairo) flattens curves within 0.1 px, and the rebuilt
+                # document describes the same edges differently (arcs as polylines,
+                # transforms applied to the control points), so an edge pixel's coverage
+                # may differ by about a tenth (measured: at most 0.12, 0.0017 on average
+                # over the drawn pixels); a wrong control point, arc or transform moves
+                # whole edges by pixels (the drawings are scaled 4x to 8x) and changes
+                # pixels by up to 1 (every point moved by 0.05 user units, 0.2 to 0.4 px,
+                # already fails one or both). Max 0.25 per pixel, and at most 0.004 on
+                # average over the drawing's pixels (alpha > 0).
+                self.assertLessEqual(d.max(), 0.25)
+                self.assertLessEqual(d.sum() / max(1.0, (a > 0).sum()), 0.004)
+            worst_max = max(worst_max, d.max())
+            worst_mean = max(worst_mean, d.sum() / max(1.0, (a > 0).sum()))
+        print("\n%d drawings at %d px: largest pixel difference %.4f, largest mean difference %.6f"
+              % (len(names), size, worst_max, worst_mean), file=sys.stderr)
+
+
+
+class ImportSvgTest(PixelTest):
     def import_svg(self, **req):
         return self.ok("import_svg", req)
 
@@ -226,61 +286,6 @@ class ImportSvgTest(CliTest):
         self.bad("import_svg", {"d": 5}, "d", contains="string")
         self.bad("import_svg", {"d": "M 1e400 0"}, "d[2]", contains="out of range")
 
-    # -----------------------------------------------------------------------------------
-    # Pixels against librsvg
-
-    def silhouettes(self, documents, size):
-        """For each document (text): the alpha of librsvg's rendering of the original and of
-        the document rebuilt from the imported curves, size x size px."""
-        requests = "".join(json.dumps({"svg": d}) + "\n" for d in documents)
-        rc, out, err = test_cli.run("import_svg", text=requests, args=("--jsonl",))
-        self.assertEqual(rc, 0, err)
-        responses = [json.loads(line) for line in out.splitlines()]
-        self.assertEqual(len(responses), len(documents))
-        ET.register_namespace("", SVG_NS)
-        pairs = []
-        with tempfile.TemporaryDirectory() as tmp:
-            for k, (doc, resp) in enumerate(zip(documents, responses)):
-                self.assertNotIn("error", resp, resp)
-                root = ET.fromstring(doc)
-                style = ET.Element("{%s}style" % SVG_NS)
-                style.text = SILHOUETTE
-                root.insert(0, style)
-                frame = " ".join('%s="%s"' % (a, root.get(a)) for a in ("width", "height", "viewBox") if root.get(a))
-                rebuilt = '<svg xmlns="%s" %s>\n' % (SVG_NS, frame) + "".join(
-                    '<path fill="#000" d="%s"/>\n' % path_data(p) for p in resp["paths"] if p["subpaths"]) + "</svg>\n"
-                images = []
-                for name, text in (("original", ET.tostring(root, encoding="unicode")), ("rebuilt", rebuilt)):
-                    src, png = os.path.join(tmp, "%d-%s.svg" % (k, name)), os.path.join(tmp, "%d-%s.png" % (k, name))
-                    with open(src, "w") as f:
-                        f.write(text)
-                    subprocess.run(["rsvg-convert", "-w", str(size), "-h", str(size), "-o", png, src], check=True)
-                    images.append(read_png_alpha(png))
-                pairs.append((images[0], images[1], resp))
-        return pairs
-
-    def check_pixels(self, names, documents, size):
-        worst_max = worst_mean = 0.0
-        for name, (a, b, resp) in zip(names, self.silhouettes(documents, size)):
-            d = np.abs(a - b)
-            with self.subTest(drawing=name):
-                self.assertGreater(a.sum(), 0.01 * size * size, "the drawing draws something")
-                # Thresholds: librsvg (cairo) flattens curves within 0.1 px, and the rebuilt
-                # document describes the same edges differently (arcs as polylines,
-                # transforms applied to the control points), so an edge pixel's coverage
-                # may differ by about a tenth (measured: at most 0.12, 0.0017 on average
-                # over the drawn pixels); a wrong control point, arc or transform moves
-                # whole edges by pixels (the drawings are scaled 4x to 8x) and changes
-                # pixels by up to 1 (every point moved by 0.05 user units, 0.2 to 0.4 px,
-                # already fails one or both). Max 0.25 per pixel, and at most 0.004 on
-                # average over the drawing's pixels (alpha > 0).
-                self.assertLessEqual(d.max(), 0.25)
-                self.assertLessEqual(d.sum() / max(1.0, (a > 0).sum()), 0.004)
-            worst_max = max(worst_max, d.max())
-            worst_mean = max(worst_mean, d.sum() / max(1.0, (a > 0).sum()))
-        print("\n%d drawings at %d px: largest pixel difference %.4f, largest mean difference %.6f"
-              % (len(names), size, worst_max, worst_mean), file=sys.stderr)
-
     @unittest.skipUnless(shutil.which("rsvg-convert"), "rsvg-convert (librsvg2-bin) is not installed")
     def test_pixels_every_element_kind(self):
         self.check_pixels(["drawing"], [DRAWING], 256)
@@ -329,6 +334,28 @@ class ImportSvgTest(CliTest):
         sample = files[::32] + [f for f in files if any(k in read_text(f) for k in ("transform=", " a ", "clip-path", "<mask"))]
         sample = sorted(set(sample))
         self.check_pixels([os.path.basename(f) for f in sample], [read_text(f) for f in sample], 128)
+
+
+class GalleryReadBackTest(PixelTest):
+    """The gallery's page (casteljau-gallery, CASTELJAU_GALLERY: set by ctest
+    gallery.import_svg) read back: every figure's inline SVG imported and compared with
+    librsvg's rendering of it."""
+
+    @unittest.skipUnless(shutil.which("rsvg-convert") and os.environ.get("CASTELJAU_GALLERY"),
+                         "no rsvg-convert, or CASTELJAU_GALLERY is not set (ctest gallery.import_svg sets it)")
+    def test_gallery_figures(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            subprocess.run([os.environ["CASTELJAU_GALLERY"], tmp], check=True, timeout=300)
+            page = read_text(os.path.join(tmp, "index.html"))
+        figures, at = [], 0
+        while (start := page.find("<svg ", at)) != -1:
+            end = page.index("</svg>", start) + len("</svg>")
+            figures.append(page[start:end])
+            at = end
+        self.assertGreaterEqual(len(figures), 10)
+        for f in figures:
+            ET.fromstring(f)  # each figure is one XML document (no nested svg cut short)
+        self.check_pixels(["figure %d" % k for k in range(len(figures))], figures, 256)
 
 
 if __name__ == "__main__":
