@@ -33,11 +33,14 @@ std::string shown(std::string_view s, std::size_t k) {
   return "'" + std::string(1, c) + "'";
 }
 
-/// For a number of SVG's grammar (no sign) that from_chars finds out of range: > 0 when
+/// Text from the input for a message: at most 32 bytes, then "…" (messages stay short).
+std::string excerpt(std::string_view s) { return s.size() <= 32 ? std::string(s) : std::string(s.substr(0, 32)) + "\u2026"; }
+
+/// For a number of SVG's grammar that from_chars finds out of range: > 0 when
 /// it is too large, <= 0 when too small (the power of ten of its first significant digit,
 /// plus one, plus the exponent; the exponent saturates at 1e6).
 long long decimal_magnitude(std::string_view x) {
-  std::size_t i = 0;
+  std::size_t i = x.empty() || (x[0] != '-' && x[0] != '+') ? 0 : 1;
   long long lead = 0;
   bool seen = false;
   while (i < x.size() && is_digit(x[i])) {
@@ -130,11 +133,11 @@ class Scanner {
       // Underflow reads as zero (a tiny coordinate); overflow is refused. Which one: the
       // decimal magnitude of the first significant digit plus the exponent.
       if (decimal_magnitude(s_.substr(from, j - from)) > 0) {
-        fail(start, "the number " + std::string(s_.substr(start, j - start)) + " is out of range");
+        fail(start, "the number " + excerpt(s_.substr(start, j - start)) + " is out of range");
       }
       v = 0;
     } else if (r.ec != std::errc() || r.ptr != s_.data() + j) {
-      fail(start, "malformed number " + std::string(s_.substr(start, j - start)));
+      fail(start, "malformed number " + excerpt(s_.substr(start, j - start)));
     }
     k_ = j;
     return v;
@@ -429,7 +432,7 @@ SvgTransform parse_transform(std::string_view text) {
     else if (name == "skewX" || name == "skewY") lo = hi = 1;
     else {
       in.fail(at, name.empty() ? "expected a transform function (matrix, translate, scale, rotate, skewX, skewY), got " + shown(text, at)
-                               : "unknown transform function '" + name + "' (matrix, translate, scale, rotate, skewX, skewY)");
+                               : "unknown transform function '" + excerpt(name) + "' (matrix, translate, scale, rotate, skewX, skewY)");
     }
     in.skip_wsp();
     if (in.peek() != '(') in.fail(in.pos(), "expected '(' after " + name + ", got " + shown(text, in.pos()));
@@ -476,7 +479,9 @@ SvgTransform parse_transform(std::string_view text) {
         t = rot;
       }
     } else if (std::fabs(std::fmod(v[0], 180.0)) == 90) {
-      in.fail(at, name + "(" + std::to_string(static_cast<int>(v[0])) + ") is not a finite transform");
+      char text[32];
+      const auto r = std::to_chars(text, text + sizeof text, v[0]);
+      in.fail(at, name + "(" + std::string(text, r.ptr) + ") is not a finite transform");
     } else if (name == "skewX") {
       t.c = std::tan(std::fmod(v[0], 180.0) * degrees);
     } else {

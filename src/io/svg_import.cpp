@@ -26,6 +26,9 @@ std::string_view trimmed(std::string_view s) {
   return s;
 }
 
+/// Text from the input for a message: at most 32 bytes, then "…".
+std::string clipped(std::string_view s) { return s.size() <= 32 ? std::string(s) : std::string(s.substr(0, 32)) + "\u2026"; }
+
 /// A length: a number with an optional unit. px and none as they are, the absolute units
 /// by CSS's fixed ratios (1in = 96px = 2.54cm = 25.4mm = 72pt = 6pc = 101.6Q); relative
 /// units (%, em, ex, ...) need a viewport or a font this reader does not have: refused.
@@ -41,7 +44,7 @@ double length(std::string_view text, std::string_view field) {
   } catch (const InvalidArgument&) {
     v.clear();
   }
-  if (v.size() != 1) throw InvalidArgument(std::string(field), "expected a length (a number with an optional unit), got '" + std::string(t) + "'");
+  if (v.size() != 1) throw InvalidArgument(std::string(field), "expected a length (a number with an optional unit), got '" + clipped(t) + "'");
   double scale = 1;
   if (u.empty() || u == "px") scale = 1;
   else if (u == "in") scale = 96;
@@ -51,11 +54,11 @@ double length(std::string_view text, std::string_view field) {
   else if (u == "pc") scale = 16;
   else if (u == "Q" || u == "q") scale = 96 / 101.6;
   else {
-    throw InvalidArgument(std::string(field), "'" + std::string(t) + "': the unit '" + std::string(u) +
+    throw InvalidArgument(std::string(field), "'" + clipped(t) + "': the unit '" + clipped(u) +
                                                   "' is relative or unknown (read: px, in, cm, mm, pt, pc, Q)");
   }
   const double x = v[0] * scale;
-  if (!std::isfinite(x)) throw InvalidArgument(std::string(field), "'" + std::string(t) + "' is out of range");
+  if (!std::isfinite(x)) throw InvalidArgument(std::string(field), "'" + clipped(t) + "' is out of range");
   return x;
 }
 

@@ -303,9 +303,14 @@ TEST(SvgImportPathData, ErrorsNameTheOffsetAndWhatWasExpected) {
   EXPECT_EQ(error_of("M0 0 A 1 1 0 2 1 3 3"), "d[13]: expected a flag (0 or 1) after 'A', got '2'");
   EXPECT_EQ(error_of("M 1 1 Z 3"), "d[8]: expected a path command (MLHVCSQTAZ, or a number continuing the previous one), got '3'");
   EXPECT_EQ(error_of("M 1e400 0"), "d[2]: the number 1e400 is out of range");
+  EXPECT_EQ(error_of("M -1e400 0"), "d[2]: the number -1e400 is out of range");
+  // 1e327 written out: no exponent, too large all the same.
+  const std::string huge = "1" + std::string(327, '0');
+  EXPECT_EQ(error_of("M 0 " + huge), "d[4]: the number " + huge.substr(0, 32) + "\u2026 is out of range");
   EXPECT_EQ(error_of("M 1e308 0 l 1e308 0"), "d[10]: a coordinate overflows (is not finite)");
   // Underflow is zero, not an error.
   EXPECT_EQ(parse("M 1e-400 0 L 1 1")[0].segments[0].points[0][0], 0.0);
+  EXPECT_EQ(parse("M -0.0000000001e-320 0 L 1 1")[0].segments[0].points[0][0], 0.0);
 }
 
 // ---------------------------------------------------------------------------------------
@@ -335,6 +340,7 @@ TEST(SvgImportTransform, FunctionsAndLists) {
   EXPECT_EQ(error("turn(1)"), "transform[0]: unknown transform function 'turn' (matrix, translate, scale, rotate, skewX, skewY)");
   EXPECT_EQ(error("scale(1"), "transform[7]: expected ')' to close scale(");
   EXPECT_EQ(error("skewX(90)"), "transform[0]: skewX(90) is not a finite transform");
+  EXPECT_EQ(error("skewY(-270)"), "transform[0]: skewY(-270) is not a finite transform");
 }
 
 TEST(SvgImportDocument, NestedGroupsComposeTransforms) {
