@@ -360,7 +360,9 @@ class GalleryReadBackTest(PixelTest):
         self.assertGreaterEqual(len(figures), 10)
         for f in figures:
             ET.fromstring(f)  # each figure is one XML document (no nested svg cut short)
-        self.check_pixels(["figure %d" % k for k in range(len(figures))], figures, 256)
+        # Every other figure (about 14: the writer's forms recur from figure to figure),
+        # to keep the test near 5 s of CPU.
+        self.check_pixels(["figure %d" % k for k in range(0, len(figures), 2)], figures[::2], 256)
 
 
 if __name__ == "__main__":
