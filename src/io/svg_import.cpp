@@ -18,6 +18,7 @@ namespace casteljau::io {
 namespace {
 
 constexpr int max_depth = 256;
+constexpr std::string_view svg_namespace = "http://www.w3.org/2000/svg";
 
 std::string_view trimmed(std::string_view s) {
   const auto space = [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f'; };
@@ -78,14 +79,30 @@ struct Walker {
   }
 
   /// The local name of an SVG element, or empty for an element of another namespace
-  /// (an editor's own elements: sodipodi:namedview, inkscape:...).
-  static std::string_view local_name(const pugi::xml_node& n) {
+  /// (an editor's own elements: sodipodi:namedview, inkscape:...). `default_ns` is the
+  /// default namespace in scope (xmlns). A prefix is resolved by the nearest xmlns:prefix
+  /// declaration; leniently, a document without declarations is SVG (no xmlns: the SVG
+  /// namespace; the prefix svg undeclared: too).
+  static std::string_view local_name(const pugi::xml_node& n, std::string_view default_ns) {
     std::string_view name = n.name();
-    if (const auto colon = name.find(':'); colon != std::string_view::npos) {
-      if (name.substr(0, colon) != "svg") return {};
-      name.remove_prefix(colon + 1);
+    const auto colon = name.find(':');
+    if (colon == std::string_view::npos) return default_ns == svg_namespace ? name : std::string_view();
+    const std::string_view prefix = name.substr(0, colon);
+    const std::string declaration = "xmlns:" + std::string(prefix);
+    std::string_view ns = prefix == "svg" ? svg_namespace : std::string_view();
+    for (pugi::xml_node p = n; p; p = p.parent()) {
+      if (const pugi::xml_attribute a = p.attribute(declaration.c_str())) {
+        ns = a.value();
+        break;
+      }
     }
-    return name;
+    return ns == svg_namespace ? name.substr(colon + 1) : std::string_view();
+  }
+
+  /// The default namespace of n's content: its xmlns, else the one in scope.
+  static std::string_view default_namespace(const pugi::xml_node& n, std::string_view in_scope) {
+    const pugi::xml_attribute a = n.attribute("xmlns");
+    return a ? std::string_view(a.value()) : in_scope;
   }
 
   static SvgTransform own_transform(const pugi::xml_node& n) {
@@ -243,11 +260,12 @@ struct Walker {
     return t * SvgTransform{sx, 0, 0, sy, tx, ty};
   }
 
-  void walk(const pugi::xml_node& parent, const SvgTransform& m, int depth) {
+  void walk(const pugi::xml_node& parent, const SvgTransform& m, int depth, std::string_view parent_ns) {
     if (depth > max_depth) throw InvalidArgument("svg", "elements nest deeper than " + std::to_string(max_depth) + " levels");
     for (pugi::xml_node n = parent.first_child(); n; n = n.next_sibling()) {
       if (n.type() != pugi::node_element) continue;
-      const std::string_view name = local_name(n);
+      const std::string_view ns = default_namespace(n, parent_ns);
+      const std::string_view name = local_name(n, ns);
       if (name.empty()) continue;
       if (name == "path" || name == "rect" || name == "circle" || name == "ellipse" || name == "line" || name == "polyline" ||
           name == "polygon") {
@@ -269,7 +287,7 @@ struct Walker {
         } catch (const InvalidArgument& e) {
           throw e.within(owner(name, index, id_of(n)));
         }
-        walk(n, inner, depth + 1);
+        walk(n, inner, depth + 1, ns);
       } else if (is_non_rendering(name)) {
         continue;
       } else {
@@ -299,8 +317,10 @@ SvgImport import_svg(std::string_view svg) {
     throw InvalidArgument("svg[" + std::to_string(r.offset) + "]", std::string("malformed XML: ") + r.description());
   }
   const pugi::xml_node root = xml.document_element();
-  if (!root || Walker::local_name(root) != "svg") {
-    throw InvalidArgument("svg", "the document's root element is <" + std::string(root ? root.name() : "") + ">, not <svg>");
+  const std::string_view ns = root ? Walker::default_namespace(root, svg_namespace) : svg_namespace;
+  if (!root || Walker::local_name(root, ns) != "svg") {
+    const std::string other = ns == svg_namespace ? "" : " in namespace '" + clipped(ns) + "'";
+    throw InvalidArgument("svg", "the document's root element is <" + clipped(root ? root.name() : "") + ">" + other + ", not <svg>");
   }
   Walker w;
   SvgTransform m;
@@ -310,7 +330,7 @@ SvgImport import_svg(std::string_view svg) {
     throw e.within("svg.svg[0]");
   }
   w.svg_count = 1;
-  w.walk(root, m, 1);
+  w.walk(root, m, 1, ns);
   return std::move(w.doc);
 }
 

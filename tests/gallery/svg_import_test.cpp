@@ -410,10 +410,15 @@ TEST(SvgImportDocument, LinesPolylinesPolygonsAndUnits) {
 TEST(SvgImportDocument, SkippedAndUnreadElements) {
   const auto doc = io::import_svg(R"svg(<svg xmlns:sodipodi="x"><sodipodi:namedview/><text id="t">hi</text><image/>
       <use href="#a"/><defs><path id="a" d="M0 0 L1 1"/></defs><foo/><a><path d="M0 0 h 1"/></a>
-      <clipPath><rect width="1" height="1"/></clipPath><svg:circle xmlns:svg="http://www.w3.org/2000/svg" r="1"/></svg>)svg");
-  ASSERT_EQ(doc.paths.size(), 2u);
+      <clipPath><rect width="1" height="1"/></clipPath><svg:circle xmlns:svg="http://www.w3.org/2000/svg" r="1"/>
+      <s:line xmlns:s="http://www.w3.org/2000/svg"/><x:line xmlns:x="urn:other"/><svg:line xmlns:svg="urn:not-svg"/>
+      <g xmlns="http://www.w3.org/1999/xhtml"><path d="M0 0 h 1"/></g></svg>)svg");
+  // Elements of other namespaces (by their prefix's declaration, or the default xmlns in
+  // scope) are neither read nor listed.
+  ASSERT_EQ(doc.paths.size(), 3u);
   EXPECT_EQ(doc.paths[0].element, "path");
   EXPECT_EQ(doc.paths[1].element, "circle");
+  EXPECT_EQ(doc.paths[2].element, "line");
   ASSERT_EQ(doc.skipped.size(), 4u);
   EXPECT_EQ(doc.skipped[0].element, "text");
   EXPECT_EQ(doc.skipped[0].id, "t");
@@ -442,6 +447,7 @@ TEST(SvgImportDocument, ErrorsNameTheElement) {
             "svg.g[0](#L).transform[10]: rotate takes 1 or 3 numbers, got 2");
   EXPECT_EQ(document_error(R"svg(<svg><path d="M0 0"></svg>)svg"), "svg[22]: malformed XML: Start-end tags mismatch");
   EXPECT_EQ(document_error(R"svg(<html/>)svg"), "svg: the document's root element is <html>, not <svg>");
+  EXPECT_EQ(document_error(R"svg(<svg xmlns="urn:x"/>)svg"), "svg: the document's root element is <svg> in namespace 'urn:x', not <svg>");
   std::string deep = "<svg>";
   for (int i = 0; i < 300; ++i) deep += "<g>";
   for (int i = 0; i < 300; ++i) deep += "</g>";
