@@ -425,12 +425,15 @@ SvgTransform parse_transform(std::string_view text) {
       name += in.peek();
       in.advance();
     }
-    int lo = 0, hi = 0;
-    if (name == "matrix") lo = hi = 6;
-    else if (name == "translate" || name == "scale") lo = 1, hi = 2;
-    else if (name == "rotate") lo = 1, hi = 3;
-    else if (name == "skewX" || name == "skewY") lo = hi = 1;
-    else {
+    // How many numbers the function takes: lo to hi (rotate: 1 or 3).
+    int lo = 1, hi = 1;
+    if (name == "matrix") {
+      lo = hi = 6;
+    } else if (name == "translate" || name == "scale") {
+      hi = 2;
+    } else if (name == "rotate") {
+      hi = 3;
+    } else if (name != "skewX" && name != "skewY") {
       in.fail(at, name.empty() ? "expected a transform function (matrix, translate, scale, rotate, skewX, skewY), got " + shown(text, at)
                                : "unknown transform function '" + excerpt(name) + "' (matrix, translate, scale, rotate, skewX, skewY)");
     }
@@ -444,14 +447,18 @@ SvgTransform parse_transform(std::string_view text) {
     while (in.peek() != ')') {
       if (in.at_end()) in.fail(in.pos(), "expected ')' to close " + name + "(");
       if (count > 0) in.skip_comma_wsp();
-      if (count == hi) in.fail(in.pos(), name + " takes " + (lo == hi ? std::to_string(lo) : std::to_string(lo) + " to " + std::to_string(hi)) +
-                                             " numbers, got a " + std::to_string(hi + 1) + "th at " + shown(text, in.pos()));
+      if (count == hi) {
+        in.fail(in.pos(), "expected ')': " + name + " takes at most " + std::to_string(hi) + (hi == 1 ? " number" : " numbers") + ", got " +
+                              shown(text, in.pos()));
+      }
       v[count++] = in.number(after);
       in.skip_wsp();
     }
     if (count < lo || (name == "rotate" && count == 2)) {
-      in.fail(in.pos(), name + " takes " + (name == "rotate" ? std::string("1 or 3") : lo == hi ? std::to_string(lo) : std::to_string(lo) + " or " + std::to_string(hi)) +
-                            " numbers, got " + std::to_string(count));
+      const std::string takes = name == "rotate" ? "1 or 3 numbers"
+                                : lo == hi       ? std::to_string(lo) + (lo == 1 ? " number" : " numbers")
+                                                 : std::to_string(lo) + " or " + std::to_string(hi) + " numbers";
+      in.fail(in.pos(), name + " takes " + takes + ", got " + std::to_string(count));
     }
     in.advance();  // ')'
     SvgTransform t;

@@ -339,6 +339,8 @@ TEST(SvgImportTransform, FunctionsAndLists) {
   EXPECT_EQ(error("rotate(1 2)"), "transform[10]: rotate takes 1 or 3 numbers, got 2");
   EXPECT_EQ(error("turn(1)"), "transform[0]: unknown transform function 'turn' (matrix, translate, scale, rotate, skewX, skewY)");
   EXPECT_EQ(error("scale(1"), "transform[7]: expected ')' to close scale(");
+  EXPECT_EQ(error("skewX()"), "transform[6]: skewX takes 1 number, got 0");
+  EXPECT_EQ(error("skewY(1 2)"), "transform[8]: expected ')': skewY takes at most 1 number, got '2'");
   EXPECT_EQ(error("skewX(90)"), "transform[0]: skewX(90) is not a finite transform");
   EXPECT_EQ(error("skewY(-270)"), "transform[0]: skewY(-270) is not a finite transform");
 }
