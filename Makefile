@@ -72,7 +72,8 @@ bench:
 	/usr/bin/python3 bench/run.py $(BENCH_BUILD)
 
 # libFuzzer (clang) with ASan+UBSan on the fuzz target FUZZ_TARGET (tests/fuzz: `request`,
-# the JSON request reader and the command it names), for FUZZ_SECONDS. The whole project is
+# the JSON request reader and the command it names; `svg`, SVG documents, path data and
+# transform lists), for FUZZ_SECONDS. The whole project is
 # instrumented for coverage (CASTELJAU_FUZZ); -O0 with line tables, as the sanitizer build.
 # New inputs go to $(FUZZ_BUILD)/corpus-$(FUZZ_TARGET), crashes to $(FUZZ_BUILD)/crash-*;
 # libFuzzer's final statistics (edges: cov, inputs: number_of_executed_units) end the run.
