@@ -19,6 +19,8 @@ std::span<const Command> query_commands();
 std::span<const Command> point_commands();
 /// src/io/commands_ops.cpp: solve, refine, to_bspline, reduce (issue 20).
 std::span<const Command> ops_commands();
+/// src/io/commands_outlines.cpp: to_svg_path, glyph (issue 17).
+std::span<const Command> outline_commands();
 
 /// A finite number as JSON writes it (shortest round-trip form), for messages.
 inline std::string number_text(double v) { return Json(v).dump(); }
