@@ -23,7 +23,7 @@ Figure glyph_outlines_figure() {
   const Row rows[] = {{"/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf", "DejaVu Sans (TrueType: quadratics)"},
                       {"/usr/share/fonts/opentype/urw-base35/NimbusSans-Regular.otf", "Nimbus Sans (CFF: cubics)"}};
   const double size = 100;   // the em in model units: one unit is about a pixel below
-  const double tol = 0.25;   // flattening tolerance in those units
+  const double tol = 1.5;    // flattening tolerance in those units: coarse enough to see
   SvgDocument doc(width, 300);
   doc.title("A word in two fonts, with its flattening");
   std::string counts;
@@ -44,6 +44,7 @@ Figure glyph_outlines_figure() {
           ++pieces;
         }
         doc.polyline(poly, thin(ink, 1));
+        for (const P2& v : poly) doc.circle(v, 1.3, Paint{.fill = accent});
         vertices += poly.size();
       }
     }
@@ -56,7 +57,7 @@ Figure glyph_outlines_figure() {
       "The word &ldquo;" + word + "&rdquo; from <code>casteljau glyph</code> (FreeType reads the font; each contour a closed "
       "path, laid out with the fonts' advances and pair kerning), at an em of " + fixed(size, 0) +
       " units, drawn wide and grey, and flattened by <code>flatten</code> (optimal) at tolerance " + fixed(tol, 2) +
-      " (the dark polylines): " + counts + ".";
+      " (the dark polylines, vertices in red): " + counts + ".";
   return {"glyphs", "Font outlines: TrueType quadratics and CFF cubics", doc.str(), cap};
 }
 
