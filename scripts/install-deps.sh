@@ -13,6 +13,7 @@ build_pkgs=(
   libmpfr-dev libgmp-dev
   python3-scipy python3-mpmath
   libocct-modeling-data-dev libocct-foundation-dev
+  libfreetype-dev fonts-dejavu-core fonts-urw-base35
 )
 fuzz_pkgs=()
 bench_pkgs=(lib2geom-dev libocct-modeling-data-dev libocct-foundation-dev libocct-modeling-algorithms-dev libboost-dev libdouble-conversion-dev libgsl-dev libsisl-dev

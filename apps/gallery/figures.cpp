@@ -930,6 +930,7 @@ const std::vector<FigureFunction>& figure_list() {
       intersections, flattening_methods,
       runge_phenomenon, catmull_rom_alpha, hermite_basis,
       spline_boundaries, monotone_vs_natural,
+      glyph_outlines_figure,
   };
   return list;
 }

@@ -46,6 +46,9 @@ Figure noisy_fit();
 Figure spline_boundaries();
 Figure monotone_vs_natural();
 
+/// A word in a TrueType and a CFF font with its flattening (figures_glyphs.cpp).
+Figure glyph_outlines_figure();
+
 /// The page: a self-contained HTML document (inline CSS and SVG, no scripts).
 std::string html_page(const std::vector<Figure>& figures);
 

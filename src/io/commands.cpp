@@ -131,7 +131,7 @@ bool declares(const Command& c, std::string_view field) {
 std::vector<Command> collect() {
   std::vector<Command> all;
   for (const auto family : {detail::curve_commands(), detail::query_commands(), detail::point_commands(), detail::ops_commands(),
-                            detail::svg_import_commands()}) {
+                            detail::svg_import_commands(), detail::outline_commands()}) {
     all.insert(all.end(), family.begin(), family.end());
   }
   return all;

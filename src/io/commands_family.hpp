@@ -21,6 +21,8 @@ std::span<const Command> point_commands();
 std::span<const Command> ops_commands();
 /// src/io/commands_svg_import.cpp: import_svg (issue 17).
 std::span<const Command> svg_import_commands();
+/// src/io/commands_outlines.cpp: to_svg_path, glyph (issue 17).
+std::span<const Command> outline_commands();
 
 /// A finite number as JSON writes it (shortest round-trip form), for messages.
 inline std::string number_text(double v) { return Json(v).dump(); }

@@ -54,6 +54,8 @@ const std::map<std::string, std::vector<Expected>> documented = {
      {{"kind", true}, {"degree", false}, {"knots", false}, {"params", false}, {"tension", false}, {"t", true}, {"derivatives", false}}},
     {"frames", {{"curve", true}, {"t", true}, {"method", false}, {"initial_normal", false}}},
     {"import_svg", {{"svg", false}, {"d", false}}},
+    {"to_svg_path", {{"curve", true}, {"tolerance", false}}},
+    {"glyph", {{"font", true}, {"text", true}, {"size", false}}},
 };
 
 const io::OrderedJson& command_entry(const io::OrderedJson& listing, const std::string& name) {

@@ -108,8 +108,8 @@ TYPED_TEST_P(Conformance, PiecesTraceTheCurve) {
   }
   // Every piece's parameter lifts back to the curve's: the piece's ends are the breaks.
   for (std::size_t i = 0; i < p.size(); ++i) {
-    EXPECT_EQ(p.global_parameter(i, 0.0), p.breaks()[i]);
-    EXPECT_EQ(p.global_parameter(i, 1.0), p.breaks()[i + 1]);
+    EXPECT_EQ(p.lift(i, 0.0), p.breaks()[i]);
+    EXPECT_EQ(p.lift(i, 1.0), p.breaks()[i + 1]);
   }
 }
 

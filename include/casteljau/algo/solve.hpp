@@ -137,8 +137,8 @@ LevelSet<typename C::Scalar> solve(const C& c, const Vector<typename C::Scalar, 
           if (at_end) roots.push_back(span.hi);
           for (const auto& r : bernstein_roots_with_multiplicity<T>(f, {T(0), T(1)}, noise)) {
             if ((at_start && r.t <= T(1e-10)) || (at_end && r.t >= 1 - T(1e-10))) continue;
-            // The piece's ends map exactly onto its break (Pieces::global_parameter).
-            roots.push_back(p.global_parameter(i, r.t));
+            // The piece's ends map exactly onto its break (Pieces::lift).
+            roots.push_back(p.lift(i, r.t));
           }
         },
         p.segments()[i]);
