@@ -400,8 +400,15 @@ class JumpQueriesTest(CliTest):
         r = self.ok("project", {"curve": STEPS, "point": [2, 3]})
         self.assertEqual(r["distance"], 0)
         self.assertEqual(r["t"], 1)
+        # nearest the second tooth's top (2, 1), its left limit at the jump t = 2: the pieces
+        # as they are (evaluation at 2 gives the right limit (2, 0), 1.1 away)
+        r = self.ok("project", {"curve": SAW, "point": [2, 1.1]})
+        self.assertEqual((r["t"], r["point"]), (2, [2, 1]))
+        self.assertAlmostEqual(r["distance"], 0.1, delta=1e-15)
         d = self.ok("distance", {"curves": [SAW, {"type": "bezier", "points": [[1.5, 2], [2.5, 2]]}]})
-        self.assertAlmostEqual(d["distance"], 1, delta=1e-12)  # to the top of a tooth, at x = 2 or 3
+        self.assertEqual(d["distance"], 1)  # from the same top (2, 1) to (2, 2)
+        self.assertEqual(d["t"], [2, 0.5])
+        self.assertEqual(d["points"], [[2, 1], [2, 2]])
 
     def test_area_refuses_a_jump(self):
         closed_with_jump = {"type": "bspline", "degree": 1, "knots": [0, 0, 1, 1, 2, 2],

@@ -252,6 +252,28 @@ TEST(Jumps, DegreeZeroOperations) {
   EXPECT_EQ(flat.remove_knot(1.0).curve.knots(), (std::vector<double>{0, 2}));
 }
 
+// Queries on the pieces as they are: the sawtooth (t, t - floor t) jumps at 1 and 2. Its
+// length is 3 sqrt 2 (the jumps add nothing); the point (2, 1.1) is nearest the second
+// tooth's top (2, 1), the left limit at t = 2 (evaluation there gives (2, 0), 1.1 away);
+// the line y = 2 over [1.5, 2.5] is 1 from that top; flatten refuses the jump of 1 at a
+// tolerance 0.5; its box is [0, 3] x [0, 1].
+TEST(Jumps, QueriesTakeThePiecesAsTheyAre) {
+  const Curve2 c(1, {0, 0, 1, 1, 2, 2, 3, 3}, {P2(0, 0), P2(1, 1), P2(1, 0), P2(2, 1), P2(2, 0), P2(3, 1)});
+  EXPECT_NEAR(arc_length(c), 3 * std::sqrt(2.0), 1e-14);  // three straight pieces: rounding
+  const auto pr = project(c, P2(2, 1.1));
+  EXPECT_EQ(pr.t, 2);
+  EXPECT_EQ(pr.point, P2(2, 1));
+  EXPECT_NEAR(pr.distance, 0.1, 1e-15);
+  const auto d = distance(c, Bezier<double, 2>({P2(1.5, 2), P2(2.5, 2)}));
+  EXPECT_EQ(d.distance, 1);
+  EXPECT_EQ(d.points[0], P2(2, 1));
+  EXPECT_EQ(d.t[0], 2);
+  EXPECT_INVALID_ARGUMENT((void)flatten(c, 0.5), "curve", "apart");
+  const auto box = bounds(c);
+  EXPECT_EQ(box.lo, P2(0, 0));
+  EXPECT_EQ(box.hi, P2(3, 1));
+}
+
 TEST(BSplineClamp, UniformCubicToBezier) {
   const std::vector<P2> P = some_points(4, 60);
   const Curve2 c(3, {0, 1, 2, 3, 4, 5, 6, 7}, P);
