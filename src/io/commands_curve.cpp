@@ -118,7 +118,7 @@ Response insert_knot(const Args& a) {
 constexpr Field insert_knot_fields[] = {
     {"curve", FieldType::curve, true, {}, {}, {}, {}, 0, 0, Capability::knot_insertion},
     {"knot", FieldType::number, true, {}, "in the domain"},
-    {"times", FieldType::integer, false, "1", ">= 1; the knot's multiplicity afterwards is at most the degree"},
+    {"times", FieldType::integer, false, "1", ">= 1; the knot's multiplicity afterwards is at most p + 1 (p + 1: a break)"},
 };
 
 Response remove_knot(const Args& a) {

@@ -34,7 +34,7 @@ Response refine(const Args& a) { return {OrderedJson{{"curve", to_json(io::refin
 
 constexpr Field refine_fields[] = {
     {"curve", FieldType::curve, true, {}, {}, {}, {}, 0, 0, Capability::knot_insertion},
-    {"knots", FieldType::numbers, true, {}, "non-decreasing, in the domain; each knot's multiplicity afterwards at most the degree"},
+    {"knots", FieldType::numbers, true, {}, "non-decreasing, in the domain; each knot's multiplicity afterwards at most p + 1"},
 };
 
 Response to_bspline(const Args& a) { return {OrderedJson{{"curve", to_json(io::to_bspline(a.curve("curve")))}}}; }
@@ -152,7 +152,7 @@ constexpr Command ops_family[] = {
      "The curve as one B-spline with the same parameter: its exact Bezier pieces elevated\n"
      "to the highest degree p, joined, and each joint's knot removed as often as the\n"
      "(homogeneous) curve's continuity there allows: multiplicity p - k where it is C^k,\n"
-     "none where the two pieces are one polynomial (a curve that jumps is refused). Continuity is\n"
+     "none where the two pieces are one polynomial, p + 1 where it jumps (a gap). Continuity is\n"
      "decided within 1e-9 of the curve's size (the largest distance of a control point\n"
      "from the first): end points that close meet, and a knot removal that moves the curve\n"
      "by at most that much (a guaranteed bound) is made.",

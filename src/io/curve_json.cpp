@@ -234,7 +234,7 @@ RawSpline read_spline(const Fields& f, std::string_view noun) {
   RawSpline r;
   const std::optional<int> dim = read_dim(f);
   r.degree = integer_from_json(f.required("degree"), "degree");
-  if (r.degree < 1) throw InvalidArgument("degree", std::string(noun) + " needs degree >= 1, got " + std::to_string(r.degree));
+  if (r.degree < 0) throw InvalidArgument("degree", std::string(noun) + " needs degree >= 0, got " + std::to_string(r.degree));
   if (r.degree > max_degree) {
     throw InvalidArgument("degree", "degree " + std::to_string(r.degree) + " is above the highest supported degree " +
                                         std::to_string(max_degree));

@@ -191,7 +191,14 @@ class BSplineErrorsTest(CliTest):
         self.bad_curve(c(knots=[0, 0, 0, 0, 1, 1]), "curve.knots[3]", "end knot")
         self.bad_curve(c(knots=[0, 0, 1, 1, 2, 2]), "curve.knots", "empty")
         self.bad_curve(c(knots=[0, 0, 0, 1, 1, "x"]), "curve.knots[5]")
-        self.bad_curve(c(degree=0), "curve.degree", ">= 1")
+        self.bad_curve(c(degree=-1), "curve.degree", ">= 0")
+        # degree 0 needs len(points) + 1 knots, each at most once (p + 1)
+        self.bad_curve(c(degree=0), "curve.knots", "len(points) + degree + 1 = 4")
+        self.bad_curve(c(degree=0, knots=[0, 1, 1, 2]), "curve.knots[2]", "at most once")
+        # an interior knot p + 1 = 3 times is a break (allowed); 4 times is not
+        big = [[0, 0], [1, 1], [2, 0], [3, 0], [4, 0], [5, 1]]
+        self.ok("eval", {"curve": c(points=big, knots=[0, 0, 0, 0.5, 0.5, 0.5, 1, 1, 1]), "t": [0.5]})
+        self.bad_curve(c(points=big, knots=[0, 0, 0, 0.5, 0.5, 0.5, 0.5, 1, 1]), "curve.knots[6]", "at most 3 times")
         self.bad_curve(c(degree=3), "curve.points", "at least 4 control points")
         self.bad_curve(c(degree=1.5), "curve.degree")
         self.bad_curve({"type": "bspline", "knots": [0, 0, 0, 1, 1, 1], "points": self.P}, "curve.degree", "missing")
@@ -216,6 +223,237 @@ class BSplineErrorsTest(CliTest):
         c = {"type": "bspline", "degree": 2, "knots": [0, 0, 0, 1, 1, 1], "points": self.P}
         self.bad("split", {"curve": c, "t": 1}, "t", contains="strictly inside")
         self.bad("split", {"curve": c, "t": 0}, "t", contains="strictly inside")
+
+def random_jump_spline(rng, p, dim, clamped):
+    """Knots on the domain [0, 1] with 1..4 distinct interior knots of multiplicities
+    1..p + 1, the first one p + 1 (a break where the curve may jump); random points."""
+    inner = sorted(rng.uniform(0.05, 0.95) for _ in range(rng.randint(1, 4)))
+    U = []
+    for j, x in enumerate(inner):
+        U += [x] * (p + 1 if j == 0 else rng.randint(1, p + 1))
+    U.sort()
+    if clamped:
+        U = [0.0] * (p + 1) + U + [1.0] * (p + 1)
+    else:
+        U = sorted(rng.uniform(-1, -0.01) for _ in range(p)) + [0.0] + U + [1.0] + sorted(rng.uniform(1.01, 2) for _ in range(p))
+    n = len(U) - p - 1
+    P = [[rng.uniform(-5, 5) for _ in range(dim)] for _ in range(n)]
+    return U, P
+
+
+SAW = {"type": "bspline", "degree": 1, "knots": [0, 0, 1, 1, 2, 2, 3, 3],
+       "points": [[0, 0], [1, 1], [1, 0], [2, 1], [2, 0], [3, 1]]}  # (t, t - floor(t)): jumps at 1, 2
+STEPS = {"type": "bspline", "degree": 0, "knots": [0, 1, 2, 4], "points": [[0, 1], [2, 3], [5, 5]]}
+
+
+class JumpOracleTest(CliTest):
+    """Degree 0 and breaks of multiplicity p + 1 against scipy.interpolate.BSpline, which
+    takes the same side: the right limit at an interior knot, the last non-empty span at
+    the domain's end, the end pieces continued outside (extrapolate=True)."""
+
+    def test_points_and_derivatives_match_scipy(self):
+        rng = random.Random(20261202)
+        cases = 0
+        for p in range(0, 6):
+            for dim in (1, 2, 3):
+                for clamped in (True, False):
+                    U, P = random_jump_spline(rng, p, dim, clamped)
+                    n = len(P)
+                    ts = parameters(rng, U, p, n) + sorted(set(U))  # every knot, also outside the domain
+                    k = p + 1
+                    r = self.ok("eval", {"curve": {"type": "bspline", "degree": p, "knots": U, "points": P},
+                                         "t": ts, "derivatives": k})
+                    ref = BSpline(np.array(U), np.array(P), p, extrapolate=True)
+                    spans = [b - a for a, b in zip(U[p:n], U[p + 1:n + 1]) if b > a]
+                    grow = max(p, 1) / min(spans)
+                    size = 1 + max(abs(c) for q in P for c in q)
+                    for j, t in enumerate(ts):
+                        # de Boor's convex combinations: a few eps of max |P| inside the domain;
+                        # outside (at most 1.1 the domain away, spans >= 0.01 apart) the end
+                        # piece's polynomial amplifies it by (1 + grow)^p at most.
+                        inside = U[p] <= t <= U[n]
+                        scale = size * (1 if inside else (1 + grow) ** p)
+                        want = ref(t).tolist()
+                        self.assertTrue(all(abs(x - y) <= 1e-12 * scale for x, y in zip(r["points"][j], want)),
+                                        f"p={p} U={U} t={t}: {r['points'][j]} vs {want}")
+                        for order in range(1, k + 1):
+                            want = ref(t, order).tolist()
+                            got = r["derivatives"][order - 1][j]
+                            # each order divides by a knot difference: (p / shortest span)^order.
+                            tol = 1e-12 * scale * (1 + grow) ** order
+                            self.assertTrue(all(abs(x - y) <= tol for x, y in zip(got, want)),
+                                            f"p={p} order={order} U={U} t={t}: {got} vs {want}")
+                    cases += 1
+        self.assertEqual(cases, 36)
+
+    def test_nurbs_jumps_as_the_quotient_of_scipy_splines(self):
+        rng = random.Random(8)
+        for p in (0, 1, 2, 3):
+            U, P = random_jump_spline(rng, p, 2, rng.random() < 0.5)
+            w = [rng.uniform(0.2, 5) for _ in P]
+            n = len(P)
+            ts = [x for x in parameters(rng, U, p, n) if U[p] <= x <= U[n]]
+            r = self.ok("eval", {"curve": {"type": "nurbs", "degree": p, "knots": U, "points": P, "weights": w},
+                                 "t": ts, "derivatives": 1})
+            A = BSpline(np.array(U), np.array([[wi * c for c in q] for wi, q in zip(w, P)]), p)
+            W = BSpline(np.array(U), np.array(w), p)
+            for j, t in enumerate(ts):
+                wt = float(W(t))
+                C = (A(t) / wt).tolist()
+                dC = ((A(t, 1) - float(W(t, 1)) * A(t) / wt) / wt).tolist()
+                # a quotient of weights in [0.2, 5]: 25x the B-spline's rounding, and more for
+                # the derivative (as test_nurbs_matches_the_quotient_of_scipy_splines).
+                self.assertTrue(close(r["points"][j], C, 10 * (1 + max(map(abs, C)))), f"p={p} t={t}")
+                self.assertTrue(close(r["derivatives"][0][j], dC, 1e4 * (1 + max(map(abs, dC)))), f"p={p} t={t}")
+
+    def test_knot_operations_keep_the_curve(self):
+        # insert up to p + 1, refine, split at a jump, elevate and to_bezier -> to_bspline,
+        # each compared with scipy's evaluation of the original at random parameters and at
+        # every knot (right limits).
+        rng = random.Random(31)
+        for p in (0, 1, 2, 3):
+            U, P = random_jump_spline(rng, p, 2, True)
+            c = {"type": "bspline", "degree": p, "knots": U, "points": P}
+            ref = BSpline(np.array(U), np.array(P), p)
+            ts = sorted(set([rng.uniform(0, 1) for _ in range(40)] + U))
+            want = ref(ts)
+
+            def traces(curve, lo=0.0, hi=1.0, what=""):
+                sel = [j for j, t in enumerate(ts) if lo <= t < hi or t == hi == 1.0]
+                got = self.ok("eval", {"curve": curve, "t": [ts[j] for j in sel]})["points"]
+                for g, j in zip(got, sel):
+                    # convex combinations (insertion, blossoms, Forrest's elevation): rounding
+                    # of a few eps times max |P| <= 5.
+                    self.assertTrue(close(g, want[j].tolist(), 10), f"{what} p={p} t={ts[j]}: {g} vs {want[j]}")
+
+            x = rng.uniform(0.05, 0.95)
+            r = self.ok("insert_knot", {"curve": c, "knot": x, "times": p + 1})["curve"]
+            self.assertEqual(r["knots"].count(x), p + 1)
+            traces(r, what="insert_knot")
+            traces(self.ok("refine", {"curve": c, "knots": [x] * (p + 1)})["curve"], what="refine")
+            traces(self.ok("elevate", {"curve": c, "times": 2})["curve"], what="elevate")
+            e = self.ok("elevate", {"curve": c, "times": 2})["curve"]
+            jump = U[p + 1] if p > 0 else U[1]
+            self.assertEqual(e["knots"].count(jump), U.count(jump) + 2)  # a jump stays a jump
+            a, b = self.ok("split", {"curve": c, "t": jump})["curves"]
+            traces(a, 0.0, jump, "split left")
+            traces(b, jump, 1.0, "split right")
+            pieces = self.ok("to_bezier", {"curve": c})["curve"]
+            self.assertEqual(pieces["breaks"], sorted(set(U)))
+            for seg in pieces["segments"]:
+                self.assertEqual(len(seg["points"]), p + 1)  # degree 0: one point
+            traces(pieces, what="to_bezier")
+            back = self.ok("to_bspline", {"curve": pieces})["curve"]
+            traces(back, what="to_bspline")
+            if p > 0:
+                self.assertEqual(back["knots"].count(jump), p + 1)  # the jump: not even C^0
+
+
+class JumpQueriesTest(CliTest):
+    """What each command answers on a curve that jumps (SAW) and on degree 0 (STEPS):
+    the pieces as they are, a jump treated as a path's gap (docs/cli.md)."""
+
+    def test_to_bezier(self):
+        c = self.ok("to_bezier", {"curve": SAW})["curve"]
+        self.assertEqual(c["breaks"], [0, 1, 2, 3])
+        self.assertEqual([s["points"] for s in c["segments"]], [[[0, 0], [1, 1]], [[1, 0], [2, 1]], [[2, 0], [3, 1]]])
+        c = self.ok("to_bezier", {"curve": STEPS})["curve"]
+        self.assertEqual(c["breaks"], [0, 1, 2, 4])
+        self.assertEqual([s["points"] for s in c["segments"]], [[[0, 1]], [[2, 3]], [[5, 5]]])
+
+    def test_eval_right_limits(self):
+        r = self.ok("eval", {"curve": SAW, "t": [0.5, 1, 2, 3], "derivatives": 2, "curvature": True})
+        self.assertEqual(r["points"], [[0.5, 0.5], [1, 0], [2, 0], [3, 1]])
+        self.assertEqual(r["derivatives"][0], [[1, 1]] * 4)
+        self.assertEqual(r["derivatives"][1], [[0, 0]] * 4)
+        self.assertEqual(r["curvature"], [0, 0, 0, 0])  # straight pieces
+        r = self.ok("eval", {"curve": STEPS, "t": [-1, 0, 1, 1.5, 2, 4, 5], "derivatives": 1})
+        self.assertEqual(r["points"], [[0, 1], [0, 1], [2, 3], [2, 3], [5, 5], [5, 5], [5, 5]])
+        self.assertEqual(r["derivatives"][0], [[0, 0]] * 7)
+
+    def test_flatten_refuses_a_jump_beyond_the_tolerance(self):
+        self.bad("flatten", {"curve": SAW, "tolerance": 0.5}, "curve", contains="apart")
+        self.bad("flatten", {"curve": STEPS, "tolerance": 0.5}, "curve", contains="apart")
+        # a jump within the tolerance is bridged: the polyline keeps both limits
+        small = {"type": "bspline", "degree": 1, "knots": [0, 0, 1, 1, 2, 2], "points": [[0, 0], [1, 0], [1, 0.001], [2, 0]]}
+        pts = self.ok("flatten", {"curve": small, "tolerance": 0.01})["points"]
+        self.assertEqual(pts, [[0, 0], [1, 0], [1, 0.001], [2, 0]])
+
+    def test_length_sums_the_pieces(self):
+        # three teeth of length sqrt 2; the jumps add nothing
+        self.assertAlmostEqual(self.ok("length", {"curve": SAW})["length"], 3 * math.sqrt(2), delta=1e-13)
+        self.assertAlmostEqual(self.ok("length", {"curve": SAW, "from": 0.5, "to": 1.5})["length"], math.sqrt(2), delta=1e-13)
+        t = self.ok("param_at_length", {"curve": SAW, "lengths": [1.5 * math.sqrt(2)]})["t"]
+        self.assertAlmostEqual(t[0], 1.5, delta=1e-12)
+        self.assertEqual(self.ok("length", {"curve": STEPS})["length"], 0)  # points do not move
+
+    def test_bounds_project_distance(self):
+        b = self.ok("bounds", {"curve": SAW})
+        self.assertEqual((b["min"], b["max"]), ([0, 0], [3, 1]))
+        b = self.ok("bounds", {"curve": STEPS})
+        self.assertEqual((b["min"], b["max"]), ([0, 1], [5, 5]))
+        # (1, 0.9) is nearest the first tooth's end region: foot (0.95, 0.95) at t = 0.95
+        r = self.ok("project", {"curve": SAW, "point": [1, 0.9]})
+        self.assertAlmostEqual(r["t"], 0.95, delta=1e-12)
+        self.assertAlmostEqual(r["distance"], 0.05 * math.sqrt(2), delta=1e-12)
+        # a step is nearest where its point is: the whole step [1, 2) at distance 0
+        r = self.ok("project", {"curve": STEPS, "point": [2, 3]})
+        self.assertEqual(r["distance"], 0)
+        self.assertEqual(r["t"], 1)
+        # nearest the second tooth's top (2, 1), its left limit at the jump t = 2: the pieces
+        # as they are (evaluation at 2 gives the right limit (2, 0), 1.1 away)
+        r = self.ok("project", {"curve": SAW, "point": [2, 1.1]})
+        self.assertEqual((r["t"], r["point"]), (2, [2, 1]))
+        self.assertAlmostEqual(r["distance"], 0.1, delta=1e-15)
+        d = self.ok("distance", {"curves": [SAW, {"type": "bezier", "points": [[1.5, 2], [2.5, 2]]}]})
+        self.assertEqual(d["distance"], 1)  # from the same top (2, 1) to (2, 2)
+        self.assertEqual(d["t"], [2, 0.5])
+        self.assertEqual(d["points"], [[2, 1], [2, 2]])
+
+    def test_area_refuses_a_jump(self):
+        closed_with_jump = {"type": "bspline", "degree": 1, "knots": [0, 0, 1, 1, 2, 2],
+                            "points": [[0, 0], [1, 0], [1, 1], [0, 0]]}
+        self.bad("area", {"curve": closed_with_jump}, "curve", contains="apart")
+        self.bad("area", {"curve": STEPS}, "curve")
+
+    def test_intersect_and_solve_take_the_pieces_as_they_are(self):
+        line = {"type": "bezier", "points": [[0, 0.5], [3, 0.5]]}
+        r = self.ok("intersect", {"curves": [SAW, line]})
+        ts = [x["t"][0] for x in r["intersections"]]
+        self.assertEqual(len(ts), 3)
+        for got, want in zip(ts, [0.5, 1.5, 2.5]):
+            self.assertAlmostEqual(got, want, delta=1e-12)
+        r = self.ok("solve", {"curve": SAW, "value": 0.5, "axis": 1})
+        for got, want in zip(r["t"], [0.5, 1.5, 2.5]):
+            self.assertAlmostEqual(got, want, delta=1e-12)
+        self.assertEqual(len(r["t"]), 3)
+        r = self.ok("solve", {"curve": STEPS, "value": 3, "axis": 1})
+        self.assertEqual((r["t"], r["intervals"]), ([], [[1, 2]]))
+
+    def test_operations_on_jumps(self):
+        # remove_knot of a jump knot: refused within the tolerance (the curve is not
+        # continuous there), accepted when the jump is within twice the tolerance
+        r = self.ok("remove_knot", {"curve": SAW, "knot": 1})
+        self.assertEqual(r["removed"], 0)
+        self.assertEqual(r["curve"]["knots"], SAW["knots"])
+        r = self.ok("remove_knot", {"curve": SAW, "knot": 1, "tolerance": 0.5})
+        self.assertEqual(r["removed"], 1)
+        self.assertEqual(r["curve"]["points"][1], [1, 0.5])  # the midpoint of the two limits
+        # insertion past p + 1 is refused
+        self.bad("insert_knot", {"curve": SAW, "knot": 1}, "times", contains="p + 1")
+        self.bad("refine", {"curve": STEPS, "knots": [1]}, "knots[0]", contains="p + 1")
+        # to_bspline of a path with a gap: the break p + 1 times, the gap kept
+        path = {"type": "path", "segments": [{"type": "bezier", "points": [[0, 0], [1, 1]]},
+                                             {"type": "bezier", "points": [[1, 2], [2, 2], [3, 0]]}]}
+        b = self.ok("to_bspline", {"curve": path})["curve"]
+        self.assertEqual(b["knots"], [0, 0, 0, 1, 1, 1, 2, 2, 2])
+        self.assertEqual(self.ok("eval", {"curve": b, "t": [1]})["points"], [[1, 2]])
+        # reduce keeps the jump; degree 1 to 0 is one constant (the mean), within tolerance
+        cubic = self.ok("elevate", {"curve": SAW, "times": 2})["curve"]
+        r = self.ok("reduce", {"curve": cubic, "times": 2, "tolerance": 1e-9})
+        self.assertEqual(r["curve"]["knots"], SAW["knots"])
+        self.bad("reduce", {"curve": SAW, "tolerance": 0.1}, "tolerance")
+
 
 if __name__ == "__main__":
     test_cli.BINARY = os.path.abspath(sys.argv.pop(1))

@@ -131,7 +131,7 @@ class InsertKnotTest(KnotTest):
         c = bspline([0, 0, 0, 0.5, 1, 1, 1], [[0, 0], [1, 1], [2, 0], [3, 1]], 2)
         self.bad("insert_knot", {"curve": c, "knot": 1.5}, "knot", contains="domain")
         self.bad("insert_knot", {"curve": c, "knot": -0.1}, "knot", contains="domain")
-        self.bad("insert_knot", {"curve": c, "knot": 0.5, "times": 2}, "times", contains="degree")
+        self.bad("insert_knot", {"curve": c, "knot": 0.5, "times": 3}, "times", contains="p + 1")
         self.bad("insert_knot", {"curve": c, "knot": 0}, "times", contains="degree")  # clamped end: p + 1 already
         self.bad("insert_knot", {"curve": c, "knot": 0.3, "times": 0}, "times")
         self.bad("insert_knot", {"curve": c, "knot": 0.3, "times": 1.5}, "times")

@@ -306,10 +306,11 @@ class RefineTest(CliTest):
             self.assert_traces(r, lambda t: A(t) / float(W(t)), lo, hi, 1e-11)  # a quotient: 10x
 
     def test_circle(self):
-        # every inserted knot is there (0.25 already has multiplicity p: refused below).
+        # every inserted knot is there (0.25 already has multiplicity p: once more makes a
+        # break, p + 1, allowed; twice more is refused below).
         r = self.ok("refine", {"curve": CIRCLE, "knots": [0.1, 0.3, 0.3, 0.6]})["curve"]
         self.assertEqual(r["knots"], sorted(CIRCLE["knots"] + [0.1, 0.3, 0.3, 0.6]))
-        self.bad("refine", {"curve": CIRCLE, "knots": [0.1, 0.25]}, "knots[1]", contains="multiplicity")
+        self.bad("refine", {"curve": CIRCLE, "knots": [0.1, 0.25, 0.25]}, "knots[1]", contains="multiplicity")
         ts = [i / 16 for i in range(17)]
         for q in self.ok("eval", {"curve": r, "t": ts})["points"]:
             self.assertAlmostEqual(q[0] ** 2 + q[1] ** 2, 1, delta=1e-14)  # on the unit circle
@@ -332,8 +333,8 @@ class RefineTest(CliTest):
         self.bad("refine", {"curve": c, "knots": [0.2, 0.1]}, "knots[1]", contains="non-decreasing")
         self.bad("refine", {"curve": c, "knots": [0.2, 1.5]}, "knots[1]", contains="domain")
         self.bad("refine", {"curve": c, "knots": [-0.1]}, "knots[0]", contains="domain")
-        # the first copy of a knot that would repeat past the degree is named
-        self.bad("refine", {"curve": c, "knots": [0.2, 0.5, 0.5]}, "knots[1]", contains="multiplicity")
+        # the first copy of a knot that would repeat past p + 1 is named
+        self.bad("refine", {"curve": c, "knots": [0.2, 0.5, 0.5, 0.5]}, "knots[1]", contains="multiplicity")
         self.bad("refine", {"curve": c, "knots": [0.2, 0]}, "knots[1]")
         self.bad("refine", {"curve": c, "knots": [0]}, "knots[0]", contains="multiplicity")  # clamped end
         self.bad("refine", {"curve": c, "knots": [0.1, "a"]}, "knots[1]")
@@ -424,9 +425,13 @@ class ToBSplineTest(CliTest):
         # Same speed at the joint: the line from (-1,-1) to (1,1) then the parabola: C^1.
         got = self.convert({"type": "path", "segments": [bezier([[-1, -1], [1, 1]]), par]})
         self.assertEqual(got["knots"], [0, 0, 0, 1, 2, 2, 2])
-        # A gap: a bspline here cannot jump (interior knots at most p times), refused.
-        self.bad("to_bspline", {"curve": {"type": "path", "segments": [line, bezier([[1, 2], [2, 2], [3, 0]])]}},
-                 "curve", contains="jumps")
+        # A gap (not even C^0): the break p + 1 times, the B-spline jumps there as the path
+        # does (the right piece's start at the break).
+        gap = {"type": "path", "segments": [line, bezier([[1, 2], [2, 2], [3, 0]])]}
+        got = self.convert(gap)
+        self.assertEqual((got["degree"], got["knots"]), (2, [0, 0, 0, 1, 1, 1, 2, 2, 2]))
+        self.assertEqual(got["points"], [[0, 0], [0.5, 0.5], [1, 1], [1, 2], [2, 2], [3, 0]])
+        self.assertEqual(self.ok("eval", {"curve": got, "t": [1]})["points"], [[1, 2]])
 
     def test_polyline_hermite_and_spline(self):
         got = self.convert({"type": "polyline", "points": [[0, 0], [1, 2], [2, 0], [3, 1]]})

@@ -236,9 +236,9 @@ class CapabilityTest(CliTest):
 
 class MessageTest(CliTest):
     def test_one_time_is_singular(self):
-        # Degree 1: an interior knot at most once.
-        c = {"type": "bspline", "degree": 1, "knots": [0, 0, 1, 1, 2, 2], "points": [[0], [1], [2], [3]]}
-        err = self.bad("eval", {"curve": c, "t": [0]}, "curve.knots[3]", contains="at most once for degree 1")
+        # Degree 0: a knot at most once (p + 1; degree 1 now allows an interior knot twice).
+        c = {"type": "bspline", "degree": 0, "knots": [0, 1, 1, 2], "points": [[0], [1], [2]]}
+        err = self.bad("eval", {"curve": c, "t": [0]}, "curve.knots[2]", contains="at most once (p + 1) for degree 0")
         self.assertNotIn("1 times", err)
 
     def test_help_names_every_curve_type(self):

@@ -165,6 +165,56 @@ RC_GTEST_PROP(KnotProperty, RemovalUndoesInsertion, ()) {
   for (std::size_t i = 0; i < c.points().size(); ++i) RC_ASSERT(distance(r.curve.points()[i], c.points()[i]) <= 1e-10);
 }
 
+/// A random B-spline of degree 0..5 whose interior knots (on the 1/16 grid) may repeat
+/// p + 1 times: breaks where the curve may jump (degree 0: every knot).
+C2 random_jumping_bspline() {
+  const int p = *rc::gen::inRange(0, 6);
+  std::vector<double> X;
+  for (int i = *rc::gen::inRange(0, 6); i > 0; --i) {
+    const double x = *rc::gen::inRange(1, 16) / 16.0;
+    X.insert(X.end(), static_cast<std::size_t>(*rc::gen::inRange(1, p + 2)), x);
+  }
+  std::sort(X.begin(), X.end());
+  for (const double x : X) RC_PRE(std::count(X.begin(), X.end(), x) <= p + 1);
+  const bool clamped = *rc::gen::arbitrary<bool>();
+  std::vector<double> U;
+  for (int i = p; i >= 0; --i) U.push_back(clamped ? 0.0 : -i / 16.0);
+  U.insert(U.end(), X.begin(), X.end());
+  for (int i = 0; i <= p; ++i) U.push_back(clamped ? 1.0 : 1 + i / 16.0);
+  KnotVector<double> kv(p, std::move(U));
+  const int n = static_cast<int>(kv.points());
+  return C2(std::move(kv), prop::control_points<2>(n - 1));
+}
+
+// With jumps and at degree 0: the basis is still the Cox-de Boor definition (right
+// limits at every knot, a break too); insertion up to p + 1, elevation and split keep the
+// curve (parameters on the 1/64 grid hit the knots: the right limits agree as well); the
+// left half of a split at a jump ends at the left limit. Bounds as the properties above.
+RC_GTEST_PROP(KnotProperty, JumpsAndDegreeZeroKeepTheCurve, ()) {
+  const C2 c = random_jumping_bspline();
+  const std::vector<double>& U = c.knots();
+  const int p = c.degree(), n = static_cast<int>(c.points().size());
+  const auto [a, b] = c.domain();
+  const double u = a + (b - a) * *rc::gen::inRange(0, 65) / 64.0;
+  const std::size_t s = find_span<double>(U, p, u);
+  std::vector<double> N(static_cast<std::size_t>(p) + 1);
+  basis_functions<double>(U, p, s, u, N);
+  for (int i = 0; i < n; ++i) {
+    const int r = i - (static_cast<int>(s) - p);
+    const double ours = r >= 0 && r <= p ? N[static_cast<std::size_t>(r)] : 0.0;
+    RC_ASSERT(std::abs(ours - cox_de_boor(U, i, p, u, b)) <= 1e-13);
+  }
+  const int m = static_cast<int>(knot_multiplicity<double>(U, u));
+  if (m <= p) RC_ASSERT(gap(c, c.insert_knot(u, *rc::gen::inRange(1, p + 2 - m)), a, b) <= 1e-12);
+  RC_ASSERT(gap(c, c.elevate(*rc::gen::inRange(1, 4)), a - 0.05, b + 0.05) <= 1e-12);
+  if (u > a && u < b) {
+    const auto [l, r] = c.split(u);
+    RC_ASSERT(gap(c, r, u, b) <= 1e-12);
+    RC_ASSERT(gap(c, l, a, u - (u - a) / 1024) <= 1e-12);  // not at u itself: a jump's left limit
+    if (m == p + 1) RC_ASSERT(distance(l(u), c(std::nextafter(u, a))) <= 1e-12);
+  }
+}
+
 // The closed Lane-Riesenfeld limit is periodic: value and derivatives 1..p-1 agree at the
 // two ends of its domain (derivatives of order k scale like 2^k times the coordinates on
 // unit knot spacing: 1e-12 covers the rounding).

@@ -51,18 +51,22 @@ TEST(BSplineBasis, FindSpan) {
 
 TEST(BSplineBasis, KnotErrors) {
   auto check = [](std::vector<double> U, int p) { check_knots<double>(U, p); };
-  EXPECT_INVALID_ARGUMENT(check({0, 0, 1, 1}, 0), "degree", ">= 1");
+  EXPECT_INVALID_ARGUMENT(check({0, 1}, -1), "degree", ">= 0");
+  EXPECT_INVALID_ARGUMENT(check({0, 0, 1}, 0), "knots[1]", "may be repeated at most once (p + 1) for degree 0");
   EXPECT_INVALID_ARGUMENT(check({0, 0, 1}, 1), "knots", "at least 4 knots");
   EXPECT_INVALID_ARGUMENT(check({0, 0, 2, 1, 3, 3}, 1), "knots[3]", "non-decreasing (1 after 2)");
   EXPECT_INVALID_ARGUMENT(check({0, 0, 0, 0, 1, 1, 1}, 2), "knots[3]", "end knot may be repeated at most 3 times");
-  EXPECT_INVALID_ARGUMENT(check({0, 0, 0, 0.5, 0.5, 0.5, 1, 1, 1}, 2), "knots[5]", "interior knot may be repeated at most 2");
+  // p + 1 = 3 copies of an interior knot: a break where the curve may jump (allowed); 4 are not.
+  check({0, 0, 0, 0.5, 0.5, 0.5, 1, 1, 1}, 2);
+  EXPECT_INVALID_ARGUMENT(check({0, 0, 0, 0.5, 0.5, 0.5, 0.5, 1, 1, 1}, 2), "knots[6]", "interior knot may be repeated at most 3");
   EXPECT_INVALID_ARGUMENT(check({0, 0, NAN, 1}, 1), "knots[2]", "finite");
-  EXPECT_INVALID_ARGUMENT(check({0, 1, 1, 1, 1, 2}, 2), "knots[3]", "repeated 4 times");  // the first knot past p
+  EXPECT_INVALID_ARGUMENT(check({0, 1, 1, 1, 1, 2}, 2), "knots[4]", "repeated 4 times");  // the first knot past p + 1
 }
 
 TEST(BSpline, ConstructionErrors) {
   const std::vector<P2> P{{0, 0}, {1, 1}, {2, 0}};
-  EXPECT_INVALID_ARGUMENT((BSpline<double, 2>(0, {0, 1, 2}, P)), "degree", ">= 1");
+  EXPECT_INVALID_ARGUMENT((BSpline<double, 2>(-1, {0, 1, 2}, P)), "degree", ">= 0");
+  EXPECT_INVALID_ARGUMENT((BSpline<double, 2>(0, {0, 1, 2}, P)), "knots", "len(points) + degree + 1 = 4");
   EXPECT_INVALID_ARGUMENT((BSpline<double, 2>(3, {0, 0, 0, 0, 1, 1, 1}, P)), "points", "at least 4 control points");
   EXPECT_INVALID_ARGUMENT((BSpline<double, 2>(2, {0, 0, 0, 1, 1}, P)), "knots", "len(points) + degree + 1 = 6");
   EXPECT_INVALID_ARGUMENT((BSpline<double, 2>(1, {0, 1, 0.5, 2, 3}, P)), "knots[2]", "non-decreasing");
@@ -88,6 +92,59 @@ TEST(BSpline, SingleSpanIsBezier) {
   const auto p = pieces(b);
   ASSERT_EQ(p.size(), 1u);
   EXPECT_EQ((std::get<Bezier<double, 2>>(p.segments()[0]).points()), P);
+}
+
+// Degree 0 is a step function: C(t) = P_i on [U_i, U_(i+1)), the last value at the
+// domain's end, the end values continued outside; every derivative is zero; each piece is a
+// one-point Bézier curve.
+TEST(BSpline, DegreeZeroIsAStepFunction) {
+  using P1 = Point<double, 1>;
+  const BSpline<double, 1> c(0, {0, 1, 2, 3}, {P1(4), P1(5), P1(7)});
+  const std::vector<std::pair<double, double>> want{{-0.5, 4}, {0, 4}, {0.5, 4}, {1, 5}, {1.999, 5}, {2, 7}, {3, 7}, {3.5, 7}};
+  for (const auto& [t, v] : want) {
+    EXPECT_EQ(c(t), P1(v)) << t;
+    EXPECT_EQ(c.derivative_at(t, 1), (Vector<double, 1>(0))) << t;
+    EXPECT_EQ(c.derivative_at(t, 3), (Vector<double, 1>(0))) << t;
+  }
+  std::vector<double> ts;
+  for (const auto& [t, v] : want) ts.push_back(t);
+  std::vector<P1> out(ts.size());
+  c.evaluate(ts, out);
+  for (std::size_t j = 0; j < ts.size(); ++j) EXPECT_EQ(out[j], P1(want[j].second)) << ts[j];
+  const auto p = pieces(c);
+  ASSERT_EQ(p.size(), 3u);
+  EXPECT_EQ(p.breaks(), (std::vector<double>{0, 1, 2, 3}));
+  EXPECT_EQ((std::get<Bezier<double, 1>>(p.segments()[1]).points()), (std::vector<P1>{P1(5)}));
+}
+
+// A sawtooth of degree 1 with jumps (every interior knot twice, p + 1):
+// C(t) = (t, t - floor(t)) on [0, 3), the right limit 0 at the teeth, the left limit 1 at
+// the end; velocity (1, 1) everywhere, also at a jump (the right piece's).
+TEST(BSpline, SawtoothJumpsToTheRightLimit) {
+  const BSpline<double, 2> c(1, {0, 0, 1, 1, 2, 2, 3, 3}, {P2(0, 0), P2(1, 1), P2(1, 0), P2(2, 1), P2(2, 0), P2(3, 1)});
+  for (const double t : {0.0, 0.25, 0.5, 1.0, 1.75, 2.0, 2.5}) {
+    EXPECT_EQ(c(t), P2(t, t - std::floor(t))) << t;  // dyadic: exact
+    EXPECT_EQ(c.derivative_at(t, 1), V2(1, 1)) << t;
+  }
+  EXPECT_EQ(c(3.0), P2(3, 1));
+  EXPECT_EQ(c.derivative_at(1.0, 2), V2(0, 0));
+  const auto p = pieces(c);
+  ASSERT_EQ(p.size(), 3u);
+  EXPECT_EQ(p.breaks(), (std::vector<double>{0, 1, 2, 3}));
+  EXPECT_EQ((std::get<Bezier<double, 2>>(p.segments()[1]).points()), (std::vector<P2>{P2(1, 0), P2(2, 1)}));
+  // A quadratic jump: two Bézier pieces 0, 1, 0 on [0, 1] and 5, 6, 9 on [1, 2]. At 1 the
+  // right piece answers: 5 and slope 2 (6 - 5) (the left limits are 0 and 2 (0 - 1)).
+  using P1 = Point<double, 1>;
+  const BSpline<double, 1> q(2, {0, 0, 0, 1, 1, 1, 2, 2, 2}, {P1(0), P1(1), P1(0), P1(5), P1(6), P1(9)});
+  EXPECT_EQ(q(1.0), P1(5));
+  EXPECT_EQ(q.derivative_at(1.0, 1), (Vector<double, 1>(2)));
+  EXPECT_EQ(q(0.5), P1(0.5));
+  EXPECT_EQ(q(2.0), P1(9));
+  // NURBS: the same rule on the homogeneous points.
+  const Nurbs<double, 2> n(1, {0, 0, 1, 1, 2, 2}, {P2(0, 0), P2(1, 1), P2(4, 0), P2(4, 2)}, {1, 2, 1, 1});
+  EXPECT_EQ(n(1.0), P2(4, 0));
+  EXPECT_EQ(n(2.0), P2(4, 2));
+  EXPECT_LT(norm(n(0.5) - P2(2.0 / 3, 2.0 / 3)), 1e-15);  // (0.5 (0, 0) + 1 (1, 1)) / 1.5
 }
 
 // The uniform cubic B-spline segment on [0, 1] with knots -3..4 has Bézier points

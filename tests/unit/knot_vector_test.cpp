@@ -20,13 +20,13 @@ using Knots = std::vector<double>;
 // -- Validation: the contract's knot rules, with the field and the rule in the message.
 
 TEST(KnotVector, EveryRuleHasItsMessage) {
-  EXPECT_INVALID_ARGUMENT(KV(0, Knots{0, 1}), "degree", "degree >= 1");
+  EXPECT_INVALID_ARGUMENT(KV(-1, Knots{0, 1}), "degree", "degree >= 0");
   EXPECT_INVALID_ARGUMENT(KV(2, Knots{0, 0, 0, 1, 1}), "knots", "needs at least 6 knots");
   EXPECT_INVALID_ARGUMENT(KV(2, Knots{0, 0, 0, 1, 0.5, 2, 2, 2}), "knots[4]", "non-decreasing");
-  EXPECT_INVALID_ARGUMENT(KV(2, Knots{0, 0, 0, 1, 1, 1, 2, 2, 2}), "knots[5]", "an interior knot may be repeated at most 2 times");
+  EXPECT_INVALID_ARGUMENT(KV(2, Knots{0, 0, 0, 1, 1, 1, 1, 2, 2, 2}), "knots[6]", "an interior knot may be repeated at most 3 times");
   EXPECT_INVALID_ARGUMENT(KV(2, Knots{0, 0, 0, 0, 1, 2, 2, 2}), "knots[3]", "an end knot may be repeated at most 3 times");
-  // Degree 1: "at most once", not "at most 1 times" (issue 15).
-  EXPECT_INVALID_ARGUMENT(KV(1, Knots{0, 0, 0.5, 0.5, 1, 1}), "knots[3]", "an interior knot may be repeated at most once for degree 1");
+  // Degree 0: "at most once", not "at most 1 times" (issue 15).
+  EXPECT_INVALID_ARGUMENT(KV(0, Knots{0, 0.5, 0.5, 1}), "knots[2]", "an interior knot may be repeated at most once (p + 1) for degree 0");
   EXPECT_INVALID_ARGUMENT(KV(2, Knots{0, 0, std::nan(""), 1, 1, 1}), "knots[2]", "finite");
   EXPECT_INVALID_ARGUMENT(KV(2, Knots{0, 0, std::numeric_limits<double>::infinity(), 1, 1, 1}), "knots[2]", "finite");
   // U_2 = U_3 = 1: a knot vector whose every multiplicity is allowed but whose domain is empty.
@@ -79,7 +79,8 @@ TEST(KnotVector, UniformAndClampedUniform) {
   // n = p + 1: the Bézier knots.
   EXPECT_EQ(KV::clamped_uniform(3, 2, -1, 2).knots(), (Knots{-1, -1, -1, 2, 2, 2}));
   EXPECT_INVALID_ARGUMENT(KV::uniform(2, 2), "points", "at least 3 control points");
-  EXPECT_INVALID_ARGUMENT(KV::clamped_uniform(4, 0), "degree", "degree >= 1");
+  EXPECT_INVALID_ARGUMENT(KV::clamped_uniform(4, -1), "degree", "degree >= 0");
+  EXPECT_EQ(KV::clamped_uniform(4, 0).knots(), (Knots{0, 0.25, 0.5, 0.75, 1}));  // degree 0: every knot once
   EXPECT_INVALID_ARGUMENT(KV::clamped_uniform(4, 2, 1, 1), "domain", "a < b");
   EXPECT_INVALID_ARGUMENT(KV::uniform(4, 2, 0, std::nan("")), "domain.hi", "finite");
 }

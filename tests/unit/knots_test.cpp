@@ -63,11 +63,11 @@ TEST(KnotInsertion, Errors) {
   const Curve2 c(2, {0, 0, 0, 0.5, 1, 1, 1}, some_points(4, 53));
   EXPECT_INVALID_ARGUMENT(c.insert_knot(1.5), "knot", "domain");
   EXPECT_INVALID_ARGUMENT(c.insert_knot(std::nan("")), "knot", "finite");
-  EXPECT_INVALID_ARGUMENT(c.insert_knot(0.5, 2), "times", "exceed the degree");
-  EXPECT_INVALID_ARGUMENT(c.insert_knot(1.0), "times", "inserting it once more would exceed the degree 2");  // clamped end
+  EXPECT_INVALID_ARGUMENT(c.insert_knot(0.5, 3), "times", "would exceed p + 1 = 3");
+  EXPECT_INVALID_ARGUMENT(c.insert_knot(1.0), "times", "inserting it once more would exceed p + 1 = 3");  // clamped end
   EXPECT_INVALID_ARGUMENT(c.insert_knot(0.25, 0), "times", ">= 1");
-  const std::vector<double> X{0.5, 0.5};
-  EXPECT_INVALID_ARGUMENT(c.refine_knots(X), "knots[0]", "multiplicity 3");
+  const std::vector<double> X{0.5, 0.5, 0.5};
+  EXPECT_INVALID_ARGUMENT(c.refine_knots(X), "knots[0]", "multiplicity 4, more than p + 1 = 3");
 }
 
 // Removal undoes insertion exactly (up to rounding), and a knot the curve needs stays.
@@ -164,6 +164,116 @@ TEST(BSplineElevate, CurveAndContinuityKept) {
 // Clamping the uniform cubic on [3, 4] (knots 0..7, points P0..P3) gives its Bézier form:
 // (P0 + 4 P1 + P2) / 6, (2 P1 + P2) / 3, (P1 + 2 P2) / 3, (P1 + 4 P2 + P3) / 6 [PT97, §5.6;
 // Farin02, 7.? uniform B-spline to Bézier].
+// -- Breaks of multiplicity p + 1, where a B-spline may jump, and degree 0.
+
+/// max |a(u) - b(u)| at 201 parameters of [lo, hi] and at every knot listed (right limits).
+template <class A, class B>
+double max_distance_and_knots(const A& a, const B& b, double lo, double hi, const std::vector<double>& knots) {
+  double d = max_distance(a, b, lo, hi);
+  for (const double u : knots) d = std::max(d, distance(a(u), b(u)));
+  return d;
+}
+
+// Insertion up to p + 1 is allowed and keeps the curve (p + 1 is how a B-spline is cut in
+// two: the point where it passes appears twice); split there gives the same halves as
+// splitting the original.
+TEST(Jumps, InsertionUpToPPlusOneKeepsTheCurve) {
+  const Curve2 c(3, {0, 0, 0, 0, 1, 2, 3, 4, 5, 5, 5, 5}, some_points(8, 61));
+  const Curve2 d = c.insert_knot(2.5, 4);
+  EXPECT_EQ(d.knot_vector().multiplicity(2.5), 4u);
+  EXPECT_LE(max_distance_and_knots(c, d, 0, 5, {1, 2, 2.5, 3, 4, 5}), 1e-13);  // convex combinations: rounding
+  const Curve2 r = c.refine_knots(std::vector<double>{2, 2, 2});  // 1 + 3 = p + 1
+  EXPECT_EQ(r.knot_vector().multiplicity(2.0), 4u);
+  EXPECT_LE(max_distance_and_knots(c, r, 0, 5, {2}), 1e-13);
+  const auto [l, rt] = d.split(2.5);
+  const auto [l0, r0] = c.split(2.5);
+  EXPECT_EQ(l.knots(), l0.knots());
+  EXPECT_EQ(rt.knots(), r0.knots());
+  EXPECT_LE(max_distance(l, l0, 0, 2.5), 1e-13);
+  EXPECT_LE(max_distance(rt, r0, 2.5, 5), 1e-13);
+}
+
+// A quadratic that jumps at 1 (Bézier pieces 0, 1, 0 and 5, 6, 9 in y): split there gives
+// the two pieces; elevation keeps the jump (the knot p + 1 + r times) and the curve;
+// removal of the jump knot is refused (moves the curve by half the jump), and accepted
+// where the curve is continuous.
+TEST(Jumps, SplitElevateRemoveAtAJump) {
+  const Curve2 c(2, {0, 0, 0, 1, 1, 1, 2, 2, 2}, {P2(0, 0), P2(0.5, 1), P2(1, 0), P2(1, 5), P2(1.5, 6), P2(2, 9)});
+  const auto [l, r] = c.split(1.0);
+  EXPECT_EQ(l.knots(), (std::vector<double>{0, 0, 0, 1, 1, 1}));
+  EXPECT_EQ(r.knots(), (std::vector<double>{1, 1, 1, 2, 2, 2}));
+  EXPECT_EQ(l(1.0), P2(1, 0));  // the left half ends at the left limit
+  EXPECT_EQ(r(1.0), P2(1, 5));
+  const Curve2 e = c.elevate(2);
+  EXPECT_EQ(e.degree(), 4);
+  EXPECT_EQ(e.knot_vector().multiplicity(1.0), 5u);
+  EXPECT_LE(max_distance_and_knots(c, e, 0, 2, {1, 2}), 1e-14);  // Forrest's equations: rounding
+  EXPECT_LE(distance(e(std::nextafter(1.0, 0.0)), P2(1, 0)), 1e-14);
+  const auto kept = c.remove_knot(1.0, 1, 1e-9);
+  EXPECT_EQ(kept.removed, 0);
+  EXPECT_EQ(kept.curve, c);
+  const auto joined = c.remove_knot(1.0, 1, 2.5);  // the midpoint moves the curve by 2.5
+  EXPECT_EQ(joined.removed, 1);
+  EXPECT_EQ(joined.curve(1.0), P2(1, 2.5));
+  // Continuous at a break of multiplicity p + 1: removed back to the original.
+  const Curve2 s(3, {0, 0, 0, 0, 1, 2, 3, 3, 3, 3}, some_points(6, 62));
+  const auto back = s.insert_knot(1.5, 4).remove_knot(1.5, 4);
+  EXPECT_EQ(back.removed, 4);
+  EXPECT_EQ(back.curve.knots(), s.knots());
+  EXPECT_LE(max_distance(back.curve, s, 0, 3), 1e-12);
+  // Degree reduction keeps the jump: the elevated curve comes back.
+  const auto red = c.elevate(1).reduce_degree(1e-9);
+  EXPECT_EQ(red.curve.knots(), c.knots());
+  EXPECT_LE(max_distance_and_knots(red.curve, c, 0, 2, {1}), 1e-12);
+}
+
+// Degree 0: elevation gives the same steps at degree r (every knot r + 1 times); insertion
+// of a knot that is not one splits a step; split at a knot; a knot of degree 0 is always a
+// break (multiplicity 1 = p + 1): insertion there is refused.
+TEST(Jumps, DegreeZeroOperations) {
+  const Curve2 c(0, {0, 1, 2, 4}, {P2(0, 1), P2(2, 3), P2(5, 5)});
+  const Curve2 e = c.elevate(1);
+  EXPECT_EQ(e.knots(), (std::vector<double>{0, 0, 1, 1, 2, 2, 4, 4}));
+  EXPECT_LE(max_distance_and_knots(c, e, 0, 4, {1, 2, 4}), 0.0);  // equal points: exact
+  const Curve2 d = c.insert_knot(3.0);
+  EXPECT_EQ(d.knots(), (std::vector<double>{0, 1, 2, 3, 4}));
+  EXPECT_LE(max_distance_and_knots(c, d, 0, 4, {3}), 0.0);
+  EXPECT_INVALID_ARGUMENT(c.insert_knot(1.0), "times", "would exceed p + 1 = 1");
+  const auto [l, r] = c.split(2.0);
+  EXPECT_EQ(l.knots(), (std::vector<double>{0, 1, 2}));
+  EXPECT_EQ(r.knots(), (std::vector<double>{2, 4}));
+  EXPECT_EQ(l(2.0), P2(2, 3));
+  EXPECT_EQ(r(2.0), P2(5, 5));
+  const auto [l1, r1] = c.split(1.5);
+  EXPECT_EQ(l1.knots(), (std::vector<double>{0, 1, 1.5}));
+  EXPECT_EQ(r1.knots(), (std::vector<double>{1.5, 2, 4}));
+  EXPECT_EQ(c.remove_knot(1.0, 1, 1e-9).removed, 0);
+  const Curve2 flat(0, {0, 1, 2}, {P2(1, 1), P2(1, 1)});
+  EXPECT_EQ(flat.remove_knot(1.0).curve.knots(), (std::vector<double>{0, 2}));
+}
+
+// Queries on the pieces as they are: the sawtooth (t, t - floor t) jumps at 1 and 2. Its
+// length is 3 sqrt 2 (the jumps add nothing); the point (2, 1.1) is nearest the second
+// tooth's top (2, 1), the left limit at t = 2 (evaluation there gives (2, 0), 1.1 away);
+// the line y = 2 over [1.5, 2.5] is 1 from that top; flatten refuses the jump of 1 at a
+// tolerance 0.5; its box is [0, 3] x [0, 1].
+TEST(Jumps, QueriesTakeThePiecesAsTheyAre) {
+  const Curve2 c(1, {0, 0, 1, 1, 2, 2, 3, 3}, {P2(0, 0), P2(1, 1), P2(1, 0), P2(2, 1), P2(2, 0), P2(3, 1)});
+  EXPECT_NEAR(arc_length(c), 3 * std::sqrt(2.0), 1e-14);  // three straight pieces: rounding
+  const auto pr = project(c, P2(2, 1.1));
+  EXPECT_EQ(pr.t, 2);
+  EXPECT_EQ(pr.point, P2(2, 1));
+  EXPECT_NEAR(pr.distance, 0.1, 1e-15);
+  const auto d = distance(c, Bezier<double, 2>({P2(1.5, 2), P2(2.5, 2)}));
+  EXPECT_EQ(d.distance, 1);
+  EXPECT_EQ(d.points[0], P2(2, 1));
+  EXPECT_EQ(d.t[0], 2);
+  EXPECT_INVALID_ARGUMENT((void)flatten(c, 0.5), "curve", "apart");
+  const auto box = bounds(c);
+  EXPECT_EQ(box.lo, P2(0, 0));
+  EXPECT_EQ(box.hi, P2(3, 1));
+}
+
 TEST(BSplineClamp, UniformCubicToBezier) {
   const std::vector<P2> P = some_points(4, 60);
   const Curve2 c(3, {0, 1, 2, 3, 4, 5, 6, 7}, P);

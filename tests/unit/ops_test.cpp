@@ -104,12 +104,16 @@ TEST(ToBSpline, ContinuityDecidesMultiplicity) {
   const auto one = std::get<BSpline<double, 2>>(to_bspline(Pieces<double, 2>({l, rr})));
   EXPECT_EQ(one.knots(), (std::vector<double>{0, 0, 0, 0, 2, 2, 2, 2}));
   for (std::size_t i = 0; i < 4; ++i) EXPECT_LT(norm(one.points()[i] - c.points()[i]), 1e-14);
-  // A line then a parabola, C^0: the quadratic's knot twice; a gap: refused (a BSpline
-  // has no jumps: interior knots at most p times).
+  // A line then a parabola, C^0: the quadratic's knot twice; a gap (not even C^0): the
+  // knot p + 1 = 3 times and both pieces whole, the B-spline jumps there as the path does.
   const Pieces<double, 2> corner({B2({P2(0, 0), P2(1, 1)}), B2({P2(1, 1), P2(2, 2), P2(3, 0)})});
   EXPECT_EQ((std::get<BSpline<double, 2>>(to_bspline(corner)).knots()), (std::vector<double>{0, 0, 0, 1, 1, 2, 2, 2}));
   const Pieces<double, 2> gap({B2({P2(0, 0), P2(1, 1)}), B2({P2(1, 2), P2(2, 2), P2(3, 0)})});
-  EXPECT_THROW((void)to_bspline(gap), InvalidArgument);
+  const auto jump = std::get<BSpline<double, 2>>(to_bspline(gap));
+  EXPECT_EQ(jump.knots(), (std::vector<double>{0, 0, 0, 1, 1, 1, 2, 2, 2}));
+  EXPECT_EQ(jump(1.0), P2(1, 2));  // the right limit at the break
+  EXPECT_LT(norm(jump(0.5) - P2(0.5, 0.5)), 1e-15);
+  EXPECT_LT(norm(jump(1.5) - gap(1.5)), 1e-15);
 }
 
 TEST(ToBSpline, CircleIsANurbsWithDoubleKnots) {

@@ -146,6 +146,8 @@ Projection<typename C::Scalar, C::dimension> project(const C& c, const Point<typ
     T d;
     bool exact;             // t is the candidate's parameter exactly (not a rounded image)
     Point<T, D> point{};    // the curve's point there when not exact
+    std::size_t piece = 0;  // the piece it comes from, and its own parameter there
+    T own = 0;
   };
   // Distances are measured on the curve moved so that q is the origin, and halved (so
   // that nothing overflows): their rounding is then a few eps of |c(t) - q|, not of the
@@ -165,7 +167,7 @@ Projection<typename C::Scalar, C::dimension> project(const C& c, const Point<typ
     const auto parts = detail::regular_parts(piece);
     if (parts.front().map.identity) {
       detail::projection_candidates<T, D>(piece, q, ts, constant);
-      for (T t : ts) cand.push_back({p.lift(i, t), distance_at(rp, t), true});
+      for (T t : ts) cand.push_back({p.lift(i, t), distance_at(rp, t), true, {}, i, t});
       if (constant) flat.push_back({p.lift(i, own), distance_at(rp, T(0))});
       return;
     }
@@ -245,6 +247,13 @@ Projection<typename C::Scalar, C::dimension> project(const C& c, const Point<typ
     if (x.t == r.t && (!chosen || better(x.d, chosen->d))) chosen = &x;
   if (chosen && !chosen->exact && (r.intervals.empty() || r.t < r.intervals.front().lo)) {
     r.point = chosen->point;
+    r.distance = chosen->d;
+  }
+  // The end of a piece at a break where the next piece starts elsewhere (a path's gap, a
+  // B-spline's jump): evaluation at the break gives the next piece's start, so when the
+  // end is better beyond the tie tolerance (a real gap, not rounding), its point answers.
+  if (chosen && chosen->exact && better(chosen->d, r.distance) && !ties(r.distance) && p.locate(r.t).index != chosen->piece) {
+    r.point = std::visit([&](const auto& s) { return s(chosen->own); }, p.segments()[chosen->piece]);
     r.distance = chosen->d;
   }
   return r;

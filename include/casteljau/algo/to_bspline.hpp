@@ -89,8 +89,9 @@ KnotForm<T, V> remove_joint_knots(const std::vector<T>& U0, const std::vector<V>
 ///    wherever the Cartesian one is);
 /// 2. the pieces are joined with each interior break repeated p times where they meet
 ///    (end points within to_bspline_tolerance of the curve's size: the shared point is the
-///    left piece's end); a curve that jumps (a path with a gap) is refused
-///    (InvalidArgument "curve"), as BSpline repeats an interior knot at most p times;
+///    left piece's end); where they do not (a path with a gap: the curve is not even C^0,
+///    k = -1) the break is repeated p + 1 times and both end points are kept, so the
+///    B-spline jumps there exactly as the curve does (the right limit answers at the break);
 /// 3. each joint's knot is removed as often as BSpline::remove_knot (Nurbs::remove_knot)
 ///    can within to_bspline_tolerance times the size ([PT97] A5.8, remove_knot_once, with
 ///    the guaranteed bound of removal_deviation; for a rational curve on the homogeneous
@@ -161,11 +162,9 @@ BSplineForm<typename C::Scalar, C::dimension> to_bspline(const C& c) {
         U.push_back(breaks[i]);
       }
     } else {
-      // A B-spline of degree >= 1 here repeats an interior knot at most p times (BSpline's
-      // invariant), so it cannot jump.
-      throw InvalidArgument("curve", "the curve jumps at t = " + detail::format_number(breaks[i]) + " (its pieces are " +
-                                         detail::format_number(norm(detail::cartesian<T, D>(P.back()) - detail::cartesian<T, D>(Q.front()))) +
-                                         " apart there): a bspline cannot represent a jump");
+      // A jump: the break p + 1 times, both pieces whole (no knot of it is removed).
+      P.insert(P.end(), Q.begin(), Q.end());
+      U.insert(U.end(), static_cast<std::size_t>(p) + 1, breaks[i]);
     }
   }
   U.insert(U.end(), static_cast<std::size_t>(p) + 1, breaks.back());

@@ -14,11 +14,11 @@
 
 namespace casteljau {
 
-/// Checks the sizes of a B-spline: degree p >= 1 ("degree"), at least p + 1 control
+/// Checks the sizes of a B-spline: degree p >= 0 ("degree"), at least p + 1 control
 /// points ("points") and points + p + 1 knots ("knots"). The one place these messages
 /// live: the curve constructors and KnotVector call it before check_knots.
 inline void check_knot_count(int p, std::size_t knots, std::size_t points) {
-  if (p < 1) throw InvalidArgument("degree", "a B-spline needs degree >= 1, got " + std::to_string(p));
+  if (p < 0) throw InvalidArgument("degree", "a B-spline needs degree >= 0, got " + std::to_string(p));
   if (points < static_cast<std::size_t>(p) + 1) {
     throw InvalidArgument("points", "degree " + std::to_string(p) + " needs at least " + std::to_string(p + 1) +
                                         " control points, got " + std::to_string(points));
@@ -29,13 +29,14 @@ inline void check_knot_count(int p, std::size_t knots, std::size_t points) {
   }
 }
 
-/// Checks a knot vector U_0..U_m for degree p >= 1 with n = m - p control points
-/// (m + 1 = n + p + 1 knots): every knot finite, non-decreasing, an interior knot repeated
-/// at most p times, an end knot at most p + 1 times, n >= p + 1, and U_p < U_n (a non-empty
-/// domain). Throws InvalidArgument naming "degree", "knots" or "knots[i]" with the rule.
+/// Checks a knot vector U_0..U_m for degree p >= 0 with n = m - p control points
+/// (m + 1 = n + p + 1 knots): every knot finite, non-decreasing, repeated at most p + 1
+/// times (an interior knot of multiplicity p + 1 is a break where the curve may jump;
+/// degree 0 thus has distinct knots), n >= p + 1, and U_p < U_n (a non-empty domain).
+/// Throws InvalidArgument naming "degree", "knots" or "knots[i]" with the rule.
 template <class T>
 void check_knots(std::span<const T> U, int p) {
-  if (p < 1) throw InvalidArgument("degree", "a B-spline needs degree >= 1, got " + std::to_string(p));
+  if (p < 0) throw InvalidArgument("degree", "a B-spline needs degree >= 0, got " + std::to_string(p));
   const std::size_t order = static_cast<std::size_t>(p) + 1;
   if (U.size() < 2 * order) {
     throw InvalidArgument("knots", "degree " + std::to_string(p) + " needs at least " + std::to_string(2 * order) +
@@ -55,12 +56,11 @@ void check_knots(std::span<const T> U, int p) {
     while (j + 1 < U.size() && U[j + 1] == U[i]) ++j;
     const std::size_t mult = j - i + 1;
     const bool at_end = i == 0 || j == U.size() - 1;
-    const std::size_t limit = at_end ? order : order - 1;
-    if (mult > limit) {
-      throw InvalidArgument("knots[" + std::to_string(i + limit) + "]",
+    if (mult > order) {
+      throw InvalidArgument("knots[" + std::to_string(i + order) + "]",
                             "knot " + detail::format_number(U[i]) + " is repeated " + std::to_string(mult) + " times; " +
                                 (at_end ? "an end knot" : "an interior knot") + " may be repeated at most " +
-                                (limit == 1 ? std::string("once") : std::to_string(limit) + " times") + " for degree " +
+                                (order == 1 ? std::string("once") : std::to_string(order) + " times") + " (p + 1) for degree " +
                                 std::to_string(p));
     }
     i = j + 1;

@@ -60,7 +60,8 @@ void require_representable(const V& v, double u, const char* what) {
 
 /// Checks that u may be inserted `times` more times into the knots U of degree p: u
 /// finite and in the domain [U_p, U_n] (InvalidArgument "knot"), times >= 1 and the
-/// multiplicity afterwards at most p (InvalidArgument "times").
+/// multiplicity afterwards at most p + 1 (InvalidArgument "times"): insertion up to p + 1
+/// makes a break, where the curve may jump afterwards (it does not: the same curve).
 template <class T>
 void check_insertion(std::span<const T> U, int p, T u, int times) {
   require_finite(u, "knot");
@@ -72,10 +73,10 @@ void check_insertion(std::span<const T> U, int p, T u, int times) {
   }
   if (times < 1) throw InvalidArgument("times", "insertion count must be >= 1, got " + std::to_string(times));
   const std::size_t s = knot_multiplicity<T>(U, u);
-  if (s + static_cast<std::size_t>(times) > static_cast<std::size_t>(p)) {
+  if (s + static_cast<std::size_t>(times) > static_cast<std::size_t>(p) + 1) {
     throw InvalidArgument("times", "knot " + format_number(u) + " has multiplicity " + std::to_string(s) + "; inserting it " +
                                        (times == 1 ? std::string("once more") : std::to_string(times) + " more times") +
-                                       " would exceed the degree " + std::to_string(p));
+                                       " would exceed p + 1 = " + std::to_string(p + 1) + " (the degree plus one)");
   }
 }
 
@@ -87,8 +88,8 @@ KnotForm<T, V> insert_knot(KnotForm<T, V> f, T u, int times) {
   return f;
 }
 
-/// f with the sorted knots X inserted (each in the domain, multiplicities at most p after;
-/// InvalidArgument naming "knots[j]" of X otherwise).
+/// f with the sorted knots X inserted (each in the domain, multiplicities at most p + 1
+/// after; InvalidArgument naming "knots[j]" of X otherwise).
 template <class T, class V>
 KnotForm<T, V> refine(const KnotForm<T, V>& f, std::span<const T> X) {
   const std::size_t n = f.U.size() - static_cast<std::size_t>(f.p) - 1;
@@ -100,9 +101,9 @@ KnotForm<T, V> refine(const KnotForm<T, V>& f, std::span<const T> X) {
       throw InvalidArgument(where, "a knot to insert must lie in the domain, got " + format_number(X[j]));
     }
     const std::size_t s = knot_multiplicity<T>(f.U, X[j]) + knot_multiplicity<T>(X, X[j]);
-    if (s > static_cast<std::size_t>(f.p)) {
+    if (s > static_cast<std::size_t>(f.p) + 1) {
       throw InvalidArgument(where, "knot " + format_number(X[j]) + " would have multiplicity " + std::to_string(s) +
-                                       ", more than the degree " + std::to_string(f.p));
+                                       ", more than p + 1 = " + std::to_string(f.p + 1) + " (the degree plus one)");
     }
   }
   return refine_knots<T, V>(f, X);
@@ -111,7 +112,9 @@ KnotForm<T, V> refine(const KnotForm<T, V>& f, std::span<const T> X) {
 /// The halves of f at u strictly inside the domain (InvalidArgument "t" otherwise): u is
 /// inserted up to multiplicity p [PT97, §5.3: splitting by knot insertion], the left half
 /// keeps the knots up to u plus one more u (clamped at u), the right half one u plus the
-/// rest. Both keep their parameter: left on [U_p, u], right on [u, U_n].
+/// rest. Both keep their parameter: left on [U_p, u], right on [u, U_n]. At a break of
+/// multiplicity p + 1 (where the curve may jump) the knots and points part there as they
+/// are: the left half ends at the left limit, the right half starts at the right one.
 template <class T, class V>
 std::pair<KnotForm<T, V>, KnotForm<T, V>> split(const KnotForm<T, V>& f, T u) {
   require_finite(u, "t");
@@ -122,10 +125,16 @@ std::pair<KnotForm<T, V>, KnotForm<T, V>> split(const KnotForm<T, V>& f, T u) {
                                    format_number(b) + "), got " + format_number(u));
   }
   const std::size_t s = knot_multiplicity<T>(f.U, u);
-  KnotForm<T, V> g = f;
-  for (std::size_t j = s; j < static_cast<std::size_t>(f.p); ++j) g = insert_knot_once(g, u);
-  const std::size_t j0 = static_cast<std::size_t>(std::lower_bound(g.U.begin(), g.U.end(), u) - g.U.begin());
   const std::size_t p = static_cast<std::size_t>(f.p);
+  if (s == p + 1) {
+    const std::size_t j0 = static_cast<std::size_t>(std::lower_bound(f.U.begin(), f.U.end(), u) - f.U.begin());
+    const auto J = static_cast<std::ptrdiff_t>(j0);
+    return {KnotForm<T, V>{f.p, std::vector<T>(f.U.begin(), f.U.begin() + J + f.p + 1), std::vector<V>(f.P.begin(), f.P.begin() + J)},
+            KnotForm<T, V>{f.p, std::vector<T>(f.U.begin() + J, f.U.end()), std::vector<V>(f.P.begin() + J, f.P.end())}};
+  }
+  KnotForm<T, V> g = f;
+  for (std::size_t j = s; j < p; ++j) g = insert_knot_once(g, u);
+  const std::size_t j0 = static_cast<std::size_t>(std::lower_bound(g.U.begin(), g.U.end(), u) - g.U.begin());
   KnotForm<T, V> left{f.p, std::vector<T>(g.U.begin(), g.U.begin() + static_cast<std::ptrdiff_t>(j0 + p)),
                       std::vector<V>(g.P.begin(), g.P.begin() + static_cast<std::ptrdiff_t>(j0))};
   left.U.push_back(u);
@@ -142,6 +151,7 @@ std::pair<KnotForm<T, V>, KnotForm<T, V>> split(const KnotForm<T, V>& f, T u) {
 template <class T, class V>
 KnotForm<T, V> with_outer_knots(const KnotForm<T, V>& f, const std::vector<T>& L, const std::vector<T>& R) {
   const std::size_t p = static_cast<std::size_t>(f.p);
+  if (p == 0) return f;  // degree 0: no outer knots (U_0 = U_p, U_n = U_(n+p))
   const std::size_t n = f.P.size();
   std::vector<T> Ub(L);
   Ub.insert(Ub.end(), f.U.begin() + static_cast<std::ptrdiff_t>(p), f.U.begin() + static_cast<std::ptrdiff_t>(n) + 1);
@@ -326,6 +336,7 @@ struct FormReduction {
 /// reduced by one degree (reduce_bezier_once, its bound e_j), refused with InvalidArgument
 /// "tolerance" if some e_j > tolerance, (3) joined as the C^0 B-spline of degree q = p - 1,
 /// (4) each interior knot of multiplicity m in f removed from q copies down to max(m - 1, 1)
+/// (a break of multiplicity p + 1, where f may jump, keeps q + 1 copies and both points)
 /// (the multiplicity the reduced curve needs for f's continuity; a simple knot stays),
 /// one copy at a time (remove_knot_once), each removal accepted only if the per-span
 /// error stays within tolerance. The error is accumulated per span as A5.11 does: a removal
@@ -357,6 +368,10 @@ FormReduction<T, V> reduce_degree_form(const KnotForm<T, V>& f, T tolerance, T s
     err[j] = e;
     if (j == 0) {
       cur.P.insert(cur.P.end(), Q.begin(), Q.end());
+    } else if (knot_multiplicity<T>(U, breaks[j]) == sz(p) + 1) {
+      // A break where f may jump: both pieces' end points kept, q + 1 copies of the knot.
+      cur.P.insert(cur.P.end(), Q.begin(), Q.end());
+      cur.U.insert(cur.U.end(), sz(q) + 1, breaks[j]);
     } else {
       cur.P.back() = lerp(cur.P.back(), Q.front(), T(0.5));  // the same point from both pieces, up to rounding
       cur.P.insert(cur.P.end(), Q.begin() + 1, Q.end());

@@ -62,7 +62,8 @@ std::size_t last_knot_at_or_below(std::span<const T> U, T u) {
 /// Inserts u once (Boehm's algorithm [Boehm80; PT97, eq. 5.15]): with U_k <= u < U_{k+1},
 /// Q_i = alpha_i P_i + (1 - alpha_i) P_{i-1}, alpha_i = (u - U_i) / (U_{i+p} - U_i) for
 /// k-p+1 <= i <= k, the other points shifted. The curve is unchanged; every new point is
-/// a convex combination of two old ones. Preconditions: U_p <= u <= U_n and the run of u
+/// a convex combination of two old ones (raising a multiplicity from p to p + 1 repeats
+/// the point where the curve passes). Preconditions: U_p <= u <= U_n and the run of u
 /// does not reach the last knot (the caller checks the multiplicity). Cost O(n + p).
 template <class T, class V>
 KnotForm<T, V> insert_knot_once(const KnotForm<T, V>& f, T u) {
@@ -143,7 +144,9 @@ KnotForm<T, V> refine_knots(const KnotForm<T, V>& f, std::span<const T> X) {
 /// i = r-p..r-s, half from the left and half from the right, and the one equation left
 /// over is ignored [PT97, eq. 5.28-5.29 and A5.8]. Exact when the curve is C^(p-s) at u;
 /// otherwise the curve moves, and the caller measures by how much (removal_deviation).
-/// Cost O(n + p).
+/// A break of multiplicity s = p + 1 (where the curve may jump) has no equation: its two
+/// limits P_(r-p-1) and P_(r-p) become one point, their midpoint (exact when the curve is
+/// continuous there; otherwise it moves by half the jump). Cost O(n + p).
 template <class T, class V>
 KnotForm<T, V> remove_knot_once(const KnotForm<T, V>& f, T u) {
   const std::span<const T> U(f.U);
@@ -158,6 +161,10 @@ KnotForm<T, V> remove_knot_once(const KnotForm<T, V>& f, T u) {
   auto& Q = g.P;
   for (int i = 0; i < first; ++i) Q[detail::sz(i)] = f.P[detail::sz(i)];
   for (int i = last + 1; i < static_cast<int>(f.P.size()); ++i) Q[detail::sz(i - 1)] = f.P[detail::sz(i)];
+  if (s == p + 1) {
+    Q[detail::sz(first - 1)] = lerp(f.P[detail::sz(first - 1)], f.P[detail::sz(first)], T(0.5));
+    return g;
+  }
   const auto alpha = [&](int i) { return (u - U[detail::sz(i)]) / (U[detail::sz(i + p + 1)] - U[detail::sz(i)]); };
   // Unknowns Q_first..Q_{last-1}: the left recurrence divides by alpha_i, the right one by
   // 1 - alpha_i; each is used where its divisor is the larger, near its own end.

@@ -41,12 +41,13 @@ struct KnotRun {
   friend bool operator==(const KnotRun&, const KnotRun&) = default;
 };
 
-/// The knots U_0..U_m of a B-spline of degree p >= 1 with n = m - p control points, on
+/// The knots U_0..U_m of a B-spline of degree p >= 0 with n = m - p control points, on
 /// the domain [U_p, U_n]. Invariants (checked once, by the constructors, with the messages
 /// of check_knot_count and check_knots): the knot rules of check_knots (finite,
-/// non-decreasing, interior multiplicity <= p, end multiplicity <= p + 1, U_p < U_n).
-/// Nothing assumes clamped ends. Span search follows find_span's rule: the right limit at
-/// an interior knot, the last non-empty span at U_n, the end spans outside the domain;
+/// non-decreasing, multiplicity <= p + 1, U_p < U_n; an interior knot of multiplicity
+/// p + 1 is a break where the curve may jump). Nothing assumes clamped ends. Span search
+/// follows find_span's rule: the right limit at an interior knot (at a jump, the span to
+/// its right), the last non-empty span at U_n, the end spans outside the domain;
 /// the first and last non-empty spans are found once here, so a search costs only the
 /// binary search (or the walk from a hint).
 template <class T>

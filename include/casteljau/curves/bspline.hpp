@@ -1,4 +1,4 @@
-// B-spline curves of any degree p >= 1 and dimension: evaluation by de Boor's algorithm,
+// B-spline curves of any degree p >= 0 and dimension: evaluation by de Boor's algorithm,
 // derivatives from the basis-function derivatives, and the exact Bézier pieces by
 // blossoming [PT97, chapters 2-4; Ramshaw87]. The algorithms on plain knot data are in
 // basis/knot_form.hpp; NURBS in curves/nurbs.hpp.
@@ -26,7 +26,9 @@ namespace detail {
 /// domain's spans are elevated (Bezier::elevate, Forrest's equations), joined into the
 /// C^0 B-spline of degree q = p + r (every interior knot q times), and each interior knot
 /// of multiplicity m in U is removed q - (m + r) = p - m times (remove_knot_once: exact,
-/// since the elevated curve is still C^(p-m) there). Ends: a clamped end stays clamped;
+/// since the elevated curve is still C^(p-m) there; a break of multiplicity p + 1, where
+/// the curve may jump, keeps both pieces' end points and q + 1 copies, as [PT97, A5.9]
+/// raises every multiplicity by r). Ends: a clamped end stays clamped;
 /// an unclamped one gets the outer knots U_0 (r + 1 times), U_1, .., U_{p-1} and its end
 /// points by blossoming (with_outer_knots), unless keep_unclamped_ends is false, the new
 /// degree is above 100 or a blossom value overflows (then both ends are clamped). Cost O(spans (p + r) p + p^3) plus, for an
@@ -47,6 +49,9 @@ KnotForm<T, Point<T, E>> elevate(const KnotForm<T, Point<T, E>>& f, int r, bool 
     const std::vector<V> Q = piece.elevate(r).points();
     if (k == 0) {
       P0.insert(P0.end(), Q.begin(), Q.end());
+    } else if (knot_multiplicity<T>(U, U[spans[k]]) == static_cast<std::size_t>(p) + 1) {
+      P0.insert(P0.end(), Q.begin(), Q.end());  // a break where the curve may jump: both limits
+      U0.insert(U0.end(), static_cast<std::size_t>(q) + 1, U[spans[k]]);
     } else {
       P0.back() = lerp(P0.back(), Q.front(), T(0.5));  // the same point from both sides, up to rounding
       P0.insert(P0.end(), Q.begin() + 1, Q.end());
@@ -107,12 +112,14 @@ struct KnotRemoval {
   int removed = 0;
 };
 
-/// A B-spline curve C(u) = sum_i N_{i,p}(u) P_i with degree p >= 1, knots U_0..U_{n+p}
+/// A B-spline curve C(u) = sum_i N_{i,p}(u) P_i with degree p >= 0, knots U_0..U_{n+p}
 /// and control points P_0..P_{n-1}, on the domain [U_p, U_n]. Invariants (checked in the
 /// constructor, naming "degree", "knots", "knots[i]", "points[i][j]"): the knot rules of
 /// check_knots, n + p + 1 knots, finite points. Clamped or not: nothing assumes the end
-/// knots are repeated. At a knot inside the domain the right limit answers, at U_n the
-/// left one; outside the domain the first or last piece is extrapolated.
+/// knots are repeated. An interior knot of multiplicity p + 1 is a break where the curve
+/// may jump (degree 0: piecewise constant, a jump at every knot). At a knot inside the
+/// domain the right limit answers (derivatives too), at U_n the left one (the last
+/// non-empty span); outside the domain the first or last piece is extrapolated.
 template <class T, int D>
 class BSpline {
  public:
@@ -229,7 +236,8 @@ class BSpline {
 
   /// The same curve with u inserted `times` times (Boehm's algorithm, [PT97, A5.1] one
   /// copy at a time): u in the domain (InvalidArgument "knot"), multiplicity afterwards at
-  /// most p ("times"). New points are convex combinations: the curve moves by a few eps.
+  /// most p + 1 ("times"; p + 1 makes a break, the way a B-spline is cut in two). New
+  /// points are convex combinations: the curve moves by a few eps.
   [[nodiscard]] BSpline insert_knot(T u, int times = 1) const { return from_form(detail::insert_knot<T, PointType>(form(), u, times)); }
 
   /// The same curve with the sorted knots X inserted at once [PT97, A5.4].
@@ -240,6 +248,8 @@ class BSpline {
   /// computed from the previous one [PT97, eq. 5.28-5.29, A5.8], and accepted only if the
   /// bound of removal_deviation (re-insert the knot, compare the control points: a
   /// guaranteed bound, not an estimate) against the original curve is within tolerance.
+  /// At a break of multiplicity p + 1 the first removal joins the two limits at their
+  /// midpoint: it is accepted only where the curve jumps by at most twice the tolerance.
   /// Stops at the first removal refused. Errors: see detail::check_removal.
   [[nodiscard]] KnotRemoval<BSpline> remove_knot(T u, int times = 1, T tolerance = T(1e-12)) const {
     detail::check_removal<T>(kv_.knots(), kv_.degree(), u, times, tolerance);
@@ -258,14 +268,15 @@ class BSpline {
   }
 
   /// The halves at u strictly inside the domain, each keeping its parameter (left on
-  /// [U_p, u], right on [u, U_n]), by knot insertion up to multiplicity p.
+  /// [U_p, u], right on [u, U_n]), by knot insertion up to multiplicity p (at a break of
+  /// multiplicity p + 1 the halves end and start at the left and right limits).
   [[nodiscard]] Split<BSpline> split(T u) const {
     auto [l, r] = detail::split<T, PointType>(form(), u);
     return {from_form(std::move(l)), from_form(std::move(r))};
   }
 
   /// The same curve at degree p + r (r >= 0; InvalidArgument "r" otherwise), every
-  /// interior knot one r more times (continuity kept); see detail::elevate for the method.
+  /// interior knot r more times (continuity kept, a jump too); see detail::elevate.
   [[nodiscard]] BSpline elevate(int r = 1) const {
     if (r < 0) throw InvalidArgument("r", "degree elevation count must be >= 0, got " + std::to_string(r));
     if (r == 0) return *this;
@@ -357,6 +368,8 @@ class BSpline {
 
 /// The exact Bézier pieces of a B-spline: one degree-p piece per non-empty knot span of
 /// the domain, breaks at the distinct knots U_p .. U_n (blossoming; cost O(p^3) a span).
+/// At a break of multiplicity p + 1 consecutive pieces need not meet (a path with a gap);
+/// a degree-0 piece is a one-point Bézier curve.
 template <class T, int D>
 Pieces<T, D> pieces(const BSpline<T, D>& c) {
   const std::span<const T> U(c.knots());
