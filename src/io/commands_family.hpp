@@ -17,7 +17,7 @@ std::span<const Command> curve_commands();
 std::span<const Command> query_commands();
 /// src/io/commands_points.cpp: subdivide, fit.
 std::span<const Command> point_commands();
-/// src/io/commands_ops.cpp: solve, refine, to_bspline, reduce (issue 20).
+/// src/io/commands_ops.cpp: solve, refine, to_bspline, reduce, basis, frames, offset (issue 20).
 std::span<const Command> ops_commands();
 
 /// A finite number as JSON writes it (shortest round-trip form), for messages.

@@ -53,6 +53,8 @@ const std::map<std::string, std::vector<Expected>> documented = {
     {"basis",
      {{"kind", true}, {"degree", false}, {"knots", false}, {"params", false}, {"tension", false}, {"t", true}, {"derivatives", false}}},
     {"frames", {{"curve", true}, {"t", true}, {"method", false}, {"initial_normal", false}}},
+    {"offset",
+     {{"curve", true}, {"distance", true}, {"tolerance", true}, {"trim", false}, {"join", false}, {"miter_limit", false}}},
 };
 
 const io::OrderedJson& command_entry(const io::OrderedJson& listing, const std::string& name) {
