@@ -16,14 +16,16 @@ namespace {
 
 /// The most cubics an offset may make: with trim, the raw offset's self-intersections cost
 /// about 32 n^2 units for n cubics (io/intersect.hpp's intersect_work), 8e8 at 5000, under
-/// its limit of 1e9; without, the fitting alone (about 50 microseconds a cubic) at 20000.
-constexpr double max_offset_segments_trimmed = 5000;
-constexpr double max_offset_segments = 20000;
+/// its limit of 1e9; the fitting alone takes about 1.5 ms of CPU a cubic (a 2400-point
+/// polyline, 2768 cubics with its round joins: 4.2 s, measured on the shared machine), so
+/// the same limit without trim: several seconds at most.
+constexpr double max_offset_segments = 5000;
 
-/// The fitting samples each piece at 16 (n + 1) points at O(n^2) each (stretches) and
-/// measures every candidate with a few hundred evaluations: sum over pieces of (n + 1)^3,
-/// limited to 1e8 (about a second).
-constexpr double max_offset_piece_work = 1e8;
+/// The fitting samples each piece at 16 (n + 1) points and measures each candidate cubic
+/// with a few thousand evaluations, each O(n^2) for a piece of degree n: the sum over the
+/// pieces of (n + 1)^2 (16 (n + 1) + 20000), limited to 1e9 (a few seconds: a 2400-point
+/// polyline is 1.9e8 units, one degree-100 piece 2.2e8).
+constexpr double max_offset_piece_work = 1e9;
 
 }  // namespace
 
@@ -56,23 +58,24 @@ AnyCurve offset(const AnyCurve& c, double distance, double tolerance, bool trim,
   AnyPieces any = pieces(c);
   const auto& p = std::get<Pieces<double, 2>>(any);
   limits::check_work(p, "curve", "the offset");
-  double cubes = 0;
+  double work = 0;
   for (const auto& s : p.segments()) {
     const double m = static_cast<double>(std::visit([](const auto& x) { return x.degree(); }, s)) + 1;
-    cubes += m * m * m;
+    work += m * m * (16 * m + 20000);
   }
-  if (cubes > max_offset_piece_work) {
-    throw InvalidArgument("curve", "the offset would take about " + std::to_string(static_cast<long long>(cubes)) +
-                                       " units of work ((degree + 1)^3 summed over the Bézier pieces), more than the limit of " +
+  if (work > max_offset_piece_work) {
+    throw InvalidArgument("curve", "the offset would take about " + std::to_string(static_cast<long long>(work)) +
+                                       " units of work ((degree + 1)^2 (16 (degree + 1) + 20000) summed over the Bézier pieces), "
+                                       "more than the limit of " +
                                        std::to_string(static_cast<long long>(max_offset_piece_work)) +
                                        ": use fewer pieces or a lower degree");
   }
-  const double limit = trim ? max_offset_segments_trimmed : max_offset_segments;
+  const double limit = max_offset_segments;
   const double estimate = offset_segments_estimate(p, distance, tolerance);
   if (estimate > limit) {
     throw InvalidArgument("tolerance", "the offset would need about " + std::to_string(static_cast<long long>(estimate)) +
                                            " cubic segments, more than the limit of " + std::to_string(static_cast<long long>(limit)) +
-                                           (trim ? " (with trim)" : "") + ": use a larger tolerance or fewer pieces");
+                                           ": use a larger tolerance or fewer pieces");
   }
   o.max_segments = static_cast<std::size_t>(limit);
   OffsetCurve<double> r = casteljau::offset(p, o);
