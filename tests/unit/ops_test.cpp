@@ -182,15 +182,15 @@ TEST(Offset, LineIsParallel) {
 TEST(Offset, ParabolaAgainstItsClosedForm) {
   // y = x^2 on [-1, 1]: the quadratic Bézier (-1, 1), (0, -1), (1, 1) with x = 2t - 1.
   const auto parabola = pieces(B2({P2(-1, 1), P2(0, -1), P2(1, 1)}));
-  const double d = 0.3, tol = 1e-6;  // below the radius of curvature 1/2 at the vertex: no cusp
+  const double d = 0.3, tol = 1e-5;  // below the radius of curvature 1/2 at the vertex: no cusp
   const auto r = offset(parabola, offset_options(d, tol));
   std::vector<P2> exact;
-  for (int j = 0; j <= 20000; ++j) {
-    const double x = -1 + j / 10000.0, s = std::sqrt(1 + 4 * x * x);
+  for (int j = 0; j <= 4000; ++j) {
+    const double x = -1 + j / 2000.0, s = std::sqrt(1 + 4 * x * x);
     exact.push_back(P2(x - 2 * d * x / s, x * x + d / s));
   }
-  // Distance to the dense polyline of the exact offset: its chords' sagitta is below
-  // (1e-4)^2 kappa / 8 < 1e-8 (kappa < 5 here), within the margin below.
+  // Distance to the dense polyline of the exact offset: its chords (at most 1.2e-3 long)
+  // have a sagitta below (1.2e-3)^2 kappa / 8 < 1e-6 (kappa < 5 here), the margin below.
   const auto to_exact = [&](const P2& p) {
     double best = 1e300;
     for (std::size_t k = 0; k + 1 < exact.size(); ++k) {
@@ -202,8 +202,8 @@ TEST(Offset, ParabolaAgainstItsClosedForm) {
   };
   double worst = 0;
   for (const auto& B : r.segments)
-    for (int j = 0; j <= 40; ++j) worst = std::max(worst, to_exact(B(j / 40.0)));
-  EXPECT_LE(worst, tol + 1e-8);
+    for (int j = 0; j <= 20; ++j) worst = std::max(worst, to_exact(B(j / 20.0)));
+  EXPECT_LE(worst, tol + 1e-6);
 }
 
 TEST(Offset, ParabolaLoopTrimmedAtItsSelfIntersection) {
@@ -241,7 +241,7 @@ TEST(Offset, FewerCubicsThanUniformSubdivision) {
   const auto s_curve = pieces(B2({P2(0, 0), P2(1, 3), P2(3, -2), P2(4, 1)}));
   const auto arc = Pieces<double, 2>(std::vector<BezierPiece<double, 2>>{R2::circular_arc(P2(0, 0), 1.0, 0.0, 3.0)});
   for (const auto* c : {&s_curve, &arc}) {
-    for (const double tol : {1e-3, 1e-6}) {
+    for (const double tol : {1e-3, 1e-4}) {
       auto o = offset_options(0.2, tol, false);
       const auto greedy = offset(*c, o);
       o.fit = OffsetFit::uniform;
@@ -260,7 +260,7 @@ TEST(Offset, CornersAndErrors) {
   o.join = OffsetJoin::miter;
   const auto m = offset(L, o);
   ASSERT_EQ(m.segments.size(), 4u);
-  EXPECT_EQ(m.segments[1].points().back(), P2(2.5, -0.5));
+  EXPECT_LT(norm(m.segments[1].points().back() - P2(2.5, -0.5)), 1e-15);  // a unit vector and a cosine: a few ulps
   o.join = OffsetJoin::round;
   const auto r = offset(L, o);
   EXPECT_LE(worst_on({r.segments.begin() + 1, r.segments.end() - 1}, [](const P2& p) { return norm(p - P2(2, 0)) - 0.5; }), 1e-6);
