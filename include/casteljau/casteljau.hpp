@@ -16,6 +16,7 @@
 #include "casteljau/algo/frame.hpp"
 #include "casteljau/algo/rmf.hpp"
 #include "casteljau/algo/intersect.hpp"
+#include "casteljau/algo/offset.hpp"
 #include "casteljau/algo/length.hpp"
 #include "casteljau/algo/project.hpp"
 #include "casteljau/algo/reduce.hpp"

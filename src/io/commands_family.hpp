@@ -17,7 +17,7 @@ std::span<const Command> curve_commands();
 std::span<const Command> query_commands();
 /// src/io/commands_points.cpp: subdivide, fit.
 std::span<const Command> point_commands();
-/// src/io/commands_ops.cpp: solve, refine, to_bspline, reduce (issue 20).
+/// src/io/commands_ops.cpp: solve, refine, to_bspline, reduce, basis, frames, offset (issue 20).
 std::span<const Command> ops_commands();
 /// src/io/commands_svg_import.cpp: import_svg (issue 17).
 std::span<const Command> svg_import_commands();

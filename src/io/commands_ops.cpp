@@ -1,5 +1,6 @@
 // The operations of issue 20: solve (where a coordinate or a linear functional of the curve
-// takes a value) and refine (many knots inserted at once). Each is one entry of the
+// takes a value), refine (many knots inserted at once), to_bspline, reduce, basis, frames
+// and offset. Each is one entry of the
 // registry (io/commands.hpp); the io functions are in io/ops.hpp. Examples are real
 // responses (tests/cli).
 #include <optional>
@@ -125,6 +126,22 @@ constexpr Field frames_fields[] = {
      "rotation_minimizing: the normal at t[0] (projected onto the normal plane, normalised); default the Frenet normal"},
 };
 
+Response offset(const Args& a) {
+  return {OrderedJson{{"curve", to_json(io::offset(a.curve("curve"), a.number("distance"), a.number("tolerance"), a.boolean("trim"),
+                                                   a.string("join"), a.number("miter_limit")))}}};
+}
+
+constexpr std::string_view offset_joins[] = {"round", "miter", "bevel"};
+
+constexpr Field offset_fields[] = {
+    {"curve", FieldType::curve, true, {}, "a 2-D curve"},
+    {"distance", FieldType::number, true, {}, "d: the signed distance, positive to the left of the direction of travel"},
+    {"tolerance", FieldType::number, true, {}, "> 0: the largest distance between the cubics and the exact offset (both ways)"},
+    {"trim", FieldType::boolean, false, "true", "cut away the loops where |d| exceeds the radius of curvature, and at inner corners"},
+    {"join", FieldType::string, false, "\"round\"", "at the outer side of the input's corners: round, miter or bevel", offset_joins},
+    {"miter_limit", FieldType::number, false, "4", ">= 1: a miter longer than this times |d| becomes a bevel (as SVG's)"},
+};
+
 // ---------------------------------------------------------------------------------------
 
 constexpr Command ops_family[] = {
@@ -196,6 +213,21 @@ constexpr Command ops_family[] = {
      R"(  echo '{"curve": {"type": "bezier", "points": [[0,0,0],[1,0,0],[1,1,0],[1,1,1]]}, "t": [0, 1], "method": "frenet"}' | casteljau frames
   {"tangents":[[1.0,0.0,0.0],[0.0,0.0,1.0]],"normals":[[0.0,1.0,0.0],[0.0,-1.0,0.0]],"binormals":[[0.0,0.0,1.0],[1.0,0.0,-0.0]]})",
      frames_fields, frames},
+    {"offset", "The offset of a 2-D curve as cubic Bezier segments within a tolerance",
+     "The curve moved by `distance` d along its unit normal (positive: to the left of the\n"
+     "direction of travel), C(t) + d N(t), as a path of cubic bezier segments within\n"
+     "`tolerance` of it, measured both ways (each cubic against its stretch of the exact\n"
+     "offset, by projected samples). The curve's exact pieces are cut at their cusps and\n"
+     "where the offset has cusps (1 - d kappa = 0, kappa > 0 turning left); each stretch gets the longest cubics\n"
+     "the tolerance allows. Corners of the input get `join` on their outer side (round:\n"
+     "an arc of radius |d|; miter, a bevel beyond miter_limit; bevel); the inner side a\n"
+     "line. With `trim`, each part of the raw offset that runs against the curve (between\n"
+     "two cusps, or an inner corner's line) is cut away with the smallest loop holding it,\n"
+     "at a self-intersection of the raw offset.",
+     "curve: a path of cubic bezier segments, each starting where the previous ends",
+     R"(  echo '{"curve": {"type": "bezier", "points": [[0,0],[2,0]]}, "distance": 1, "tolerance": 0.001}' | casteljau offset
+  {"curve":{"type":"path","segments":[{"type":"bezier","points":[[0.0,1.0],[0.6666666666666666,1.0],[1.3333333333333335,1.0],[2.0,1.0]]}],"breaks":[0.0,1.0]}})",
+     offset_fields, offset},
 };
 
 }  // namespace

@@ -56,6 +56,8 @@ const std::map<std::string, std::vector<Expected>> documented = {
     {"import_svg", {{"svg", false}, {"d", false}}},
     {"to_svg_path", {{"curve", true}, {"tolerance", false}}},
     {"glyph", {{"font", true}, {"text", true}, {"size", false}}},
+    {"offset",
+     {{"curve", true}, {"distance", true}, {"tolerance", true}, {"trim", false}, {"join", false}, {"miter_limit", false}}},
 };
 
 const io::OrderedJson& command_entry(const io::OrderedJson& listing, const std::string& name) {

@@ -1,7 +1,7 @@
 // The operations of issue 20 in the library: solve (level sets of a coordinate or a linear
 // functional), to_bspline (pieces back to one B-spline with the continuity they have) and
 // max_deviation (the largest distance at equal parameters), on closed forms and curves
-// built in the test with known roots, knots and distances.
+// built in the test with known roots, knots and distances; offset against closed forms.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -136,6 +136,142 @@ TEST(MaxDeviation, FindsAPeakBetweenSamples) {
   const auto a = [](double u) { return P2(u, 0); };
   const auto b = [](double u) { return P2(u, u * (1 - u)); };
   EXPECT_NEAR(max_deviation<double>(a, b, {0.0, 1.0}, 7), 0.25, 1e-15);  // golden section to 1e-13 in u: quadratic peak
+}
+
+// ---------------------------------------------------------------------------------------
+// offset: closed forms (concentric circles, parallel lines, the parabola's offset
+// (x - 2 d x / s, x^2 + d / s), s = sqrt(1 + 4 x^2)), measured on dense samples of the
+// output against them.
+
+/// The largest |f(B(u))| over 200 samples of every cubic (a signed distance's residual).
+template <class F>
+double worst_on(const std::vector<B2>& cubics, const F& residual) {
+  double worst = 0;
+  for (const auto& B : cubics)
+    for (int j = 0; j <= 200; ++j) worst = std::max(worst, std::abs(residual(B(j / 200.0))));
+  return worst;
+}
+
+OffsetOptions<double> offset_options(double d, double tol, bool trim = true) {
+  OffsetOptions<double> o;
+  o.distance = d;
+  o.tolerance = tol;
+  o.trim = trim;
+  return o;
+}
+
+TEST(Offset, CircleArcIsConcentric) {
+  const Pieces<double, 2> arc(std::vector<BezierPiece<double, 2>>{R2::circular_arc(P2(0, 0), 2.0, 0.0, 2.0)});
+  for (const double d : {0.5, -0.5, 1.5}) {
+    const auto r = offset(arc, offset_options(d, 1e-7));
+    ASSERT_FALSE(r.segments.empty());
+    // Left of a counter-clockwise arc is inward: radius 2 - d.
+    EXPECT_LE(worst_on(r.segments, [&](const P2& p) { return norm(p - P2(0, 0)) - (2 - d); }), 1e-7) << d;
+    EXPECT_LT(norm(r.segments.front().points().front() - P2(2 - d, 0)), 1e-14);
+    EXPECT_LT(norm(r.segments.back().points().back() - P2((2 - d) * std::cos(2.0), (2 - d) * std::sin(2.0))), 1e-14);
+    EXPECT_LE(r.max_error, 1e-7);
+    for (std::size_t i = 1; i < r.segments.size(); ++i) EXPECT_EQ(r.segments[i].points().front(), r.segments[i - 1].points().back());
+  }
+}
+
+TEST(Offset, LineIsParallel) {
+  const auto r = offset(pieces(B2({P2(0, 0), P2(3, 4)})), offset_options(5, 1e-9));
+  ASSERT_EQ(r.segments.size(), 1u);
+  // Left of (3, 4) / 5 is (-4, 3) / 5: the line moved by (-4, 3), to rounding.
+  for (const auto& p : r.segments[0].points()) EXPECT_NEAR(cross(V2(3, 4), p - P2(-4, 3)), 0.0, 1e-14);
+  EXPECT_LT(norm(r.segments[0].points().front() - P2(-4, 3)), 1e-15);
+  EXPECT_LT(norm(r.segments[0].points().back() - P2(-1, 7)), 1e-14);
+}
+
+TEST(Offset, ParabolaAgainstItsClosedForm) {
+  // y = x^2 on [-1, 1]: the quadratic Bézier (-1, 1), (0, -1), (1, 1) with x = 2t - 1.
+  const auto parabola = pieces(B2({P2(-1, 1), P2(0, -1), P2(1, 1)}));
+  const double d = 0.3, tol = 1e-5;  // below the radius of curvature 1/2 at the vertex: no cusp
+  const auto r = offset(parabola, offset_options(d, tol));
+  std::vector<P2> exact;
+  for (int j = 0; j <= 4000; ++j) {
+    const double x = -1 + j / 2000.0, s = std::sqrt(1 + 4 * x * x);
+    exact.push_back(P2(x - 2 * d * x / s, x * x + d / s));
+  }
+  // Distance to the dense polyline of the exact offset: its chords (at most 1.2e-3 long)
+  // have a sagitta below (1.2e-3)^2 kappa / 8 < 1e-6 (kappa < 5 here), the margin below.
+  const auto to_exact = [&](const P2& p) {
+    double best = 1e300;
+    for (std::size_t k = 0; k + 1 < exact.size(); ++k) {
+      const V2 a = p - exact[k], e = exact[k + 1] - exact[k];
+      const double s = std::clamp(dot(a, e) / dot(e, e), 0.0, 1.0);
+      best = std::min(best, norm(a - e * s));
+    }
+    return best;
+  };
+  double worst = 0;
+  for (const auto& B : r.segments)
+    for (int j = 0; j <= 20; ++j) worst = std::max(worst, to_exact(B(j / 20.0)));
+  EXPECT_LE(worst, tol + 1e-6);
+}
+
+TEST(Offset, ParabolaLoopTrimmedAtItsSelfIntersection) {
+  // d = 1 beyond the radius 1/2 at the vertex: cusps at x = +-0.383 and a swallowtail
+  // closing on the axis at (0, 3/4 + 1/2) (where sqrt(1 + 4 x^2) = 2 d).
+  const auto parabola = pieces(B2({P2(-1, 1), P2(0, -1), P2(1, 1)}));
+  const double tol = 1e-6;
+  const auto raw = offset(parabola, offset_options(1.0, tol, false));
+  const auto cut = offset(parabola, offset_options(1.0, tol, true));
+  EXPECT_EQ(raw.loops_cut, 0u);
+  EXPECT_EQ(cut.loops_cut, 1u);
+  EXPECT_LT(cut.segments.size(), raw.segments.size());
+  bool meets = false;
+  // The cubics' crossing: each branch within tol, crossing at 120 degrees.
+  for (const auto& B : cut.segments) meets = meets || norm(B.points().back() - P2(0, 1.25)) < tol / std::sin(std::numbers::pi / 3);
+  EXPECT_TRUE(meets);
+  // Everything kept is at least d - tol from the parabola (the loop's points are closer).
+  const auto to_parabola = [](const P2& p) {
+    double best = 1e300;
+    for (int j = 0; j <= 4000; ++j) {
+      const double x = -1.5 + 3.0 * j / 4000;
+      best = std::min(best, norm(p - P2(x, x * x)));
+    }
+    return best;
+  };
+  double nearest = 1e300;
+  for (const auto& B : cut.segments)
+    for (int j = 0; j <= 20; ++j) nearest = std::min(nearest, to_parabola(B(j / 20.0)));
+  EXPECT_GE(nearest, 1.0 - tol - 1e-6);  // the sampled parabola's spacing 7.5e-4: its error is below 1e-6 near the minimum
+}
+
+TEST(Offset, FewerCubicsThanUniformSubdivision) {
+  // The reference of issue 20: uniform subdivision (n equal parameter parts, Hermite
+  // cubics, n = 1, 2, ... until within the tolerance). The greedy fit takes no more.
+  const auto s_curve = pieces(B2({P2(0, 0), P2(1, 3), P2(3, -2), P2(4, 1)}));
+  const auto arc = Pieces<double, 2>(std::vector<BezierPiece<double, 2>>{R2::circular_arc(P2(0, 0), 1.0, 0.0, 3.0)});
+  for (const auto* c : {&s_curve, &arc}) {
+    for (const double tol : {1e-3, 1e-4}) {
+      auto o = offset_options(0.2, tol, false);
+      const auto greedy = offset(*c, o);
+      o.fit = OffsetFit::uniform;
+      const auto uniform = offset(*c, o);
+      EXPECT_LE(greedy.segments.size(), uniform.segments.size()) << tol;
+      EXPECT_LE(greedy.max_error, tol);
+      EXPECT_LE(uniform.max_error, tol);
+    }
+  }
+}
+
+TEST(Offset, CornersAndErrors) {
+  // The polyline (0,0) -> (2,0) -> (2,2) at d = -0.5: a miter at (2.5, -0.5).
+  const Pieces<double, 2> L(std::vector<BezierPiece<double, 2>>{B2({P2(0, 0), P2(2, 0)}), B2({P2(2, 0), P2(2, 2)})});
+  auto o = offset_options(-0.5, 1e-6);
+  o.join = OffsetJoin::miter;
+  const auto m = offset(L, o);
+  ASSERT_EQ(m.segments.size(), 4u);
+  EXPECT_LT(norm(m.segments[1].points().back() - P2(2.5, -0.5)), 1e-15);  // a unit vector and a cosine: a few ulps
+  o.join = OffsetJoin::round;
+  const auto r = offset(L, o);
+  EXPECT_LE(worst_on({r.segments.begin() + 1, r.segments.end() - 1}, [](const P2& p) { return norm(p - P2(2, 0)) - 0.5; }), 1e-6);
+  EXPECT_THROW((void)offset(L, offset_options(1, 0)), InvalidArgument);
+  EXPECT_THROW((void)offset(pieces(B2({P2(1, 1), P2(1, 1)})), offset_options(1, 1e-3)), InvalidArgument);
+  o.miter_limit = 0.5;
+  EXPECT_THROW((void)offset(L, o), InvalidArgument);
 }
 
 }  // namespace

@@ -1,11 +1,13 @@
 // Run-time operations of issue 20 on curves (AnyCurve): the level sets of a coordinate or
-// a linear functional (solve) and knot refinement (refine). Compiled once, in
+// a linear functional (solve), knot refinement (refine), conversion to one B-spline,
+// degree reduction and offsets. Compiled once, in
 // src/io/ops.cpp: solve on the curves' exact Bézier pieces (one instantiation per
 // dimension), refine on the B-spline and NURBS types.
 #pragma once
 
 #include <optional>
 #include <span>
+#include <string_view>
 
 #include "casteljau/algo/solve.hpp"
 #include "casteljau/io/any_curve.hpp"
@@ -48,5 +50,16 @@ struct AnyReduction {
 /// "curve.type" for other types, "times" outside 1..p, "tolerance" (not > 0, or exceeded:
 /// the message gives the figure).
 [[nodiscard]] AnyReduction reduce(const AnyCurve& c, int times, double tolerance);
+
+/// The offset of a 2-D curve at signed distance `distance` (positive to the left of the
+/// direction of travel) as a path of cubic bezier segments within `tolerance` of the exact
+/// offset (algo/offset.hpp), with `join` ("round", "miter", "bevel") at the input's
+/// corners and, with `trim`, its loops cut away. Compiled in src/io/offset.cpp, in the
+/// unity group that instantiates the intersections it trims with. Errors: "curve" (not
+/// 2-D: "offset needs a 2-D curve"; a single point; a gap; the work limits), "distance",
+/// "tolerance" (not > 0; too small for the curve's size; more cubics than the limit, with
+/// the estimate), "join", "miter_limit" (< 1).
+[[nodiscard]] AnyCurve offset(const AnyCurve& c, double distance, double tolerance, bool trim, std::string_view join,
+                              double miter_limit);
 
 }  // namespace casteljau::io

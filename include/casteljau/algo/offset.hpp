@@ -1,0 +1,783 @@
+// Offset curves of plane curves: C(t) + d N(t) approximated by cubic Béziers within a
+// measured tolerance, with joins at the corners of the input and the loops of the raw
+// offset trimmed at its self-intersections.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <functional>
+#include <limits>
+#include <numbers>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "casteljau/algo/intersect.hpp"
+#include "casteljau/core/error.hpp"
+#include "casteljau/core/unit_frame.hpp"
+#include "casteljau/curves/piecewise.hpp"
+
+namespace casteljau {
+
+/// How the outer side of a corner of the input (a G0 joint) is closed.
+enum class OffsetJoin {
+  round,  ///< a circular arc of radius |d| about the corner (as cubics within the tolerance)
+  miter,  ///< the two offset tangent lines extended to their meeting point (bevel past miter_limit)
+  bevel,  ///< one straight line between the two offset end points
+};
+
+/// How the cubics are placed along each smooth stretch of the offset.
+enum class OffsetFit {
+  greedy,   ///< each cubic as long as the tolerance allows (near the fewest); the default
+  uniform,  ///< the reference: n equal parameter parts, Hermite cubics, n = 1, 2, ... until within the tolerance
+};
+
+template <class T>
+struct OffsetOptions {
+  T distance = 0;   ///< d: positive to the left of the direction of travel
+  T tolerance = 0;  ///< the largest distance allowed between the cubics and the exact offset (both ways)
+  bool trim = true;
+  OffsetJoin join = OffsetJoin::round;
+  T miter_limit = 4;  ///< miter length over |d| (SVG's stroke-miterlimit), >= 1
+  OffsetFit fit = OffsetFit::greedy;
+  std::size_t max_segments = 20000;  ///< the work limit: more cubics than this are refused
+};
+
+/// The result of offset(): the cubics in order (a path, continuous except where noted in
+/// offset()), the largest measured distance of a cubic of the raw offset from its exact
+/// source (offset stretch or join), and the number of loops cut by the trim.
+template <class T>
+struct OffsetCurve {
+  std::vector<Bezier<T, 2>> segments;
+  T max_error = 0;
+  std::size_t loops_cut = 0;
+  std::size_t raw_segments = 0;  ///< cubics before trimming
+};
+
+namespace detail::offset {
+
+template <class T>
+Vector<T, 2> left(const Vector<T, 2>& v) {
+  return Vector<T, 2>{-v[1], v[0]};
+}
+
+template <class T>
+Vector<T, 2> unit(const Vector<T, 2>& v) {
+  const T n = norm(v);
+  return n > 0 ? v / n : Vector<T, 2>{};
+}
+
+/// One smooth source of the offset, parametrised on [lo, hi]: a stretch of the exact
+/// offset of one piece (between the piece's cusps and the offset's cusps) or a join arc.
+/// point(t), velocity(t) (its derivative) and tangent(t) (the unit direction of travel,
+/// its limit at an end where the velocity vanishes).
+template <class T>
+struct Source {
+  std::function<Point<T, 2>(T)> point;
+  std::function<Vector<T, 2>(T)> velocity;
+  std::function<Vector<T, 2>(T)> tangent;
+  T lo = 0, hi = 1;
+  bool reversed = false;  ///< runs against the curve (1 - d kappa < 0), or an inner corner's line
+};
+
+/// The minimum over [lo, hi] of f (unimodal there) by golden section in `steps` steps
+/// (the bracket shrinks by 0.618 a step): the best parameter seen and its value, the
+/// ends included.
+template <class T, class F>
+std::pair<T, T> golden_min(const F& f, T lo, T hi, int steps) {
+  constexpr T r = T(0.6180339887498948482045868343656381L);
+  T a = lo, b = hi;
+  T x1 = b - r * (b - a), x2 = a + r * (b - a);
+  T f1 = f(x1), f2 = f(x2);
+  for (int k = 0; k < steps; ++k) {
+    if (f1 <= f2) {
+      b = x2, x2 = x1, f2 = f1;
+      x1 = b - r * (b - a), f1 = f(x1);
+    } else {
+      a = x1, x1 = x2, f1 = f2;
+      x2 = a + r * (b - a), f2 = f(x2);
+    }
+  }
+  std::pair<T, T> best = f1 <= f2 ? std::pair<T, T>{x1, f1} : std::pair<T, T>{x2, f2};
+  for (const T e : {lo, hi}) {
+    const T v = f(e);
+    if (v < best.second) best = {e, v};
+  }
+  return best;
+}
+
+/// A curve sampled at increasing parameters, to measure distances to it: f its point,
+/// v its derivative.
+template <class T>
+struct Sampled {
+  std::function<Point<T, 2>(T)> f;
+  std::function<Vector<T, 2>(T)> v;
+  std::vector<T> t;
+  std::vector<Point<T, 2>> p;
+
+  /// The distance from q to the curve: the nearest sample, golden section on the squared
+  /// distance over the two sample intervals about it (8 steps: 2% of their length), then
+  /// five Gauss-Newton steps t -= (f - q) . v / |v|^2 (kept in the bracket), which
+  /// converge at the rate distance x curvature (1e-5 and less for a point within the
+  /// tolerance), so that a point on the curve (where the distance grows linearly, not
+  /// quadratically) measures to rounding. The smallest distance seen.
+  T distance(const Point<T, 2>& q) const {
+    std::size_t k = 0;
+    T best = std::numeric_limits<T>::infinity();
+    for (std::size_t j = 0; j < p.size(); ++j) {
+      const T s = squared_norm(p[j] - q);
+      if (s < best) best = s, k = j;
+    }
+    const T lo = t[k > 0 ? k - 1 : 0], hi = t[std::min(k + 1, t.size() - 1)];
+    auto [u, m] = golden_min([&](T x) { return squared_norm(f(x) - q); }, lo, hi, 8);
+    best = std::min(best, m);
+    for (int it = 0; it < 5; ++it) {
+      const Vector<T, 2> vel = v(u);
+      const T vv = squared_norm(vel);
+      if (!(vv > 0)) break;
+      u = std::clamp(u - dot(f(u) - q, vel) / vv, lo, hi);
+      best = std::min(best, squared_norm(f(u) - q));
+    }
+    return std::sqrt(best);
+  }
+};
+
+/// The measured Hausdorff distance between the cubic B (on [0, 1]) and the source over
+/// [a, b]: 33 samples each way, each sample's distance to the other curve computed by
+/// projection (Sampled::distance), then the largest of each direction maximised locally
+/// over its two sample intervals (golden section on the distance). The error of a cubic
+/// fit is a smooth function of the parameter with a few bumps per segment (at most about
+/// four between its interpolated ends), which 32 intervals resolve; the local
+/// maximisation finds the bump's top. `stop_above`: when the samples of one direction
+/// exceed it, that value is returned at once (a rejected candidate; the cheap direction,
+/// the source's samples against the cubic, first).
+template <class T>
+T hausdorff(const Bezier<T, 2>& B, const Source<T>& s, T a, T b, T stop_above) {
+  constexpr int m = 32;
+  Sampled<T> exact{s.point, s.velocity, {}, {}}, cubic{[&](T u) { return B(u); }, [&](T u) { return B.derivative_at(u, 1); }, {}, {}};
+  exact.t.resize(m + 1), exact.p.resize(m + 1), cubic.t.resize(m + 1), cubic.p.resize(m + 1);
+  for (int j = 0; j <= m; ++j) {
+    const T f = T(j) / m;
+    exact.t[j] = j == m ? b : a + (b - a) * f;
+    exact.p[j] = s.point(exact.t[j]);
+    cubic.t[j] = f;
+    cubic.p[j] = B(f);
+  }
+  T e1 = 0, e2 = 0;
+  int j1 = 0, j2 = 0;
+  for (int j = 0; j <= m; ++j) {
+    const T x = cubic.distance(exact.p[j]);
+    if (x > e1) e1 = x, j1 = j;
+    if (e1 > stop_above) return e1;
+  }
+  for (int j = 0; j <= m; ++j) {
+    const T y = exact.distance(cubic.p[j]);
+    if (y > e2) e2 = y, j2 = j;
+    if (e2 > stop_above) return e2;
+  }
+  const auto peak = [&](const Sampled<T>& from, const Sampled<T>& to, int j) {
+    const T lo = from.t[j > 0 ? j - 1 : 0], hi = from.t[std::min(j + 1, m)];
+    // The top of a bump is flat: 16 steps (5e-4 of the two intervals, a 1/16 of the
+    // segment) find its height to about 1e-5 relative.
+    return std::sqrt(-golden_min(
+                          [&](T u) {
+                            const T dd = to.distance(from.f(u));
+                            return -dd * dd;
+                          },
+                          lo, hi, 16)
+                          .second);
+  };
+  return std::max({e1, e2, peak(exact, cubic, j1), peak(cubic, exact, j2)});
+}
+
+/// Candidate cubics for the source over [a, b] with its end points and end tangent
+/// directions: the least-squares fit of the two handle lengths to the normal distances of
+/// 15 interior samples (Gauss-Newton, below; the fixed-tangent fit of [Schneider90] made
+/// geometric), when its lengths are positive, then the Hermite cubic (handles the
+/// source's velocity times (b - a) / 3).
+template <class T>
+std::vector<Bezier<T, 2>> candidates(const Source<T>& s, T a, T b) {
+  const Point<T, 2> P0 = s.point(a), P3 = s.point(b);
+  const Vector<T, 2> T0 = s.tangent(a), T3 = s.tangent(b);
+  const T h = (b - a) / 3;
+  const T ha = norm(s.velocity(a)) * h, hb = norm(s.velocity(b)) * h;
+  std::vector<Bezier<T, 2>> out;
+  const Bezier<T, 2> hermite({P0, P0 + T0 * ha, P3 - T3 * hb, P3});
+  constexpr int m = 15;
+  std::vector<Point<T, 2>> q(m + 2);
+  std::vector<T> u(m + 2);
+  for (int j = 0; j <= m + 1; ++j) q[j] = j == 0 ? P0 : j == m + 1 ? P3 : s.point(a + (b - a) * T(j) / (m + 1));
+  u[0] = 0;
+  for (int j = 1; j <= m + 1; ++j) u[j] = u[j - 1] + norm(q[j] - q[j - 1]);
+  if (!(u[m + 1] > 0)) return {hermite};
+  for (int j = 1; j <= m + 1; ++j) u[j] /= u[m + 1];
+  // Gauss-Newton on the handle lengths (alpha, beta) for the normal distances of the
+  // samples to the cubic: each sample projected on the current cubic (Newton on
+  // (B(u) - q) . B'(u), from its last foot), its residual e = n . (B(u) - q) with n the
+  // cubic's unit normal there, whose derivatives are n . (b1(u) T0) and -n . (b2(u) T3)
+  // (the foot moves along the cubic, which changes the distance only to second order).
+  // Fitting the shape, not the parametrisation, converges in a few steps where the
+  // alternation of linear least squares and reparametrisation [Schneider90] crawls.
+  T alpha = ha > 0 ? ha : norm(P3 - P0) / 3, beta = hb > 0 ? hb : norm(P3 - P0) / 3;
+  bool ok = false;
+  for (int round = 0; round < 8; ++round) {
+    const Bezier<T, 2> B({P0, P0 + T0 * alpha, P3 - T3 * beta, P3});
+    T a11 = 0, a12 = 0, a22 = 0, r1 = 0, r2 = 0;
+    for (int j = 1; j <= m; ++j) {
+      for (int it = 0; it < 3; ++it) {
+        const Vector<T, 2> e = B(u[j]) - q[j], d1 = B.derivative_at(u[j], 1), d2 = B.derivative_at(u[j], 2);
+        const T den = dot(d1, d1) + dot(e, d2);
+        if (den > 0) u[j] = std::clamp(u[j] - dot(e, d1) / den, T(0), T(1));
+      }
+      const T v = u[j], w = 1 - v;
+      const T b1 = 3 * v * w * w, b2 = 3 * v * v * w;
+      const Vector<T, 2> n = unit(left(B.derivative_at(v, 1)));
+      const T e = dot(n, B(v) - q[j]), ja = dot(n, T0) * b1, jb = -dot(n, T3) * b2;
+      a11 += ja * ja, a12 += ja * jb, a22 += jb * jb, r1 += ja * e, r2 += jb * e;
+    }
+    const T det = a11 * a22 - a12 * a12;
+    if (!(std::abs(det) > std::numeric_limits<T>::epsilon() * 16 * (a11 * a22))) break;  // a straight stretch: any lengths
+    const T al = alpha - (r1 * a22 - r2 * a12) / det, be = beta - (a11 * r2 - a12 * r1) / det;
+    if (!(al > 0 && be > 0 && std::isfinite(al) && std::isfinite(be))) break;  // the last good lengths stay
+    const bool done = std::abs(al - alpha) + std::abs(be - beta) <= std::numeric_limits<T>::epsilon() * 4 * (alpha + beta);
+    alpha = al, beta = be, ok = true;
+    if (done) break;
+  }
+  if (ok) out.push_back(Bezier<T, 2>({P0, P0 + T0 * alpha, P3 - T3 * beta, P3}));
+  out.push_back(hermite);  // last: usually the worse, then rejected on its first samples
+  return out;
+}
+
+/// The fitter's state: the raw offset's cubics and a reversed flag per cubic.
+template <class T>
+struct Raw {
+  std::vector<Bezier<T, 2>> cubics;
+  std::vector<bool> reversed;
+  T max_error = 0;
+  T tolerance = 0;
+  std::size_t max_segments = 0;
+
+  void push(Bezier<T, 2> B, bool rev) {
+    const auto& Q = B.points();
+    const T tiny = 64 * std::numeric_limits<T>::epsilon();  // in the unit frame
+    if (std::all_of(Q.begin(), Q.end(), [&](const auto& p) { return norm(p - Q.front()) <= tiny; })) return;  // a point
+    if (cubics.size() >= max_segments) {
+      throw InvalidArgument("tolerance", "the offset needs more than " + std::to_string(max_segments) +
+                                             " cubic segments at this tolerance (the limit): use a larger tolerance");
+    }
+    if (!cubics.empty()) {  // continuous: the previous end (equal up to rounding at G1 joints)
+      std::vector<Point<T, 2>> P = B.points();
+      P[0] = cubics.back().points().back();
+      B = Bezier<T, 2>(std::move(P));
+    }
+    cubics.push_back(std::move(B));
+    reversed.push_back(rev);
+  }
+};
+
+/// The best candidate over [a, b] and its measured error (stop_above as hausdorff's).
+template <class T>
+std::pair<Bezier<T, 2>, T> best_fit(const Source<T>& s, T a, T b, T stop_above, bool hermite_only) {
+  auto cs = candidates(s, a, b);
+  if (hermite_only) cs.erase(cs.begin(), cs.end() - 1);
+  std::optional<Bezier<T, 2>> best;
+  T err = std::numeric_limits<T>::infinity();
+  for (auto& c : cs) {
+    const T e = hausdorff(c, s, a, b, std::min(stop_above, err));
+    if (!(e >= err)) err = e, best = std::move(c);
+  }
+  if (!best) best = cs.front(), err = std::numeric_limits<T>::infinity();
+  return {std::move(*best), err};
+}
+
+/// Approximates the whole source by cubics within the tolerance into raw.
+template <class T>
+void approximate(const Source<T>& s, OffsetFit fit, Raw<T>& raw) {
+  const T tol = raw.tolerance;
+  const T min_step = (s.hi - s.lo) * T(1e-9);
+  if (fit == OffsetFit::uniform) {
+    for (std::size_t n = 1;; ++n) {
+      if (n > raw.max_segments) {
+        throw InvalidArgument("tolerance", "the reference subdivision needs more than " + std::to_string(raw.max_segments) + " cubics");
+      }
+      std::vector<Bezier<T, 2>> parts;
+      T worst = 0;
+      bool ok = true;
+      for (std::size_t i = 0; i < n && ok; ++i) {
+        const T a = s.lo + (s.hi - s.lo) * T(i) / T(n), b = i + 1 == n ? s.hi : s.lo + (s.hi - s.lo) * T(i + 1) / T(n);
+        auto [B, e] = best_fit(s, a, b, tol, true);
+        ok = e <= tol;
+        worst = std::max(worst, e);
+        parts.push_back(std::move(B));
+      }
+      if (ok) {
+        raw.max_error = std::max(raw.max_error, worst);
+        for (auto& B : parts) raw.push(std::move(B), s.reversed);
+        return;
+      }
+    }
+  }
+  T a = s.lo;
+  while (a < s.hi) {
+    auto [B, e] = best_fit(s, a, s.hi, tol, false);
+    T b = s.hi;
+    if (!(e <= tol)) {
+      // The longest step within the tolerance: halve until one fits, then bisect between
+      // it and the failed double (six rounds: the step within 1/64 of the longest).
+      T ok_b = a, bad_b = s.hi;
+      T step = (s.hi - a) / 2;
+      for (;;) {
+        if (step < min_step) {
+          throw InvalidArgument("tolerance", "cannot be met by cubics near the offset's parameter " + std::to_string(a) +
+                                                 " of a piece (below the rounding of the computation): use a larger tolerance");
+        }
+        auto f = best_fit(s, a, a + step, tol, false);
+        if (f.second <= tol) {
+          ok_b = a + step, B = std::move(f.first), e = f.second;
+          break;
+        }
+        bad_b = a + step;
+        step /= 2;
+      }
+      for (int k = 0; k < 6; ++k) {
+        const T mid = (ok_b + bad_b) / 2;
+        auto f = best_fit(s, a, mid, tol, false);
+        if (f.second <= tol) {
+          ok_b = mid, B = std::move(f.first), e = f.second;
+        } else {
+          bad_b = mid;
+        }
+      }
+      b = ok_b;
+    }
+    raw.max_error = std::max(raw.max_error, e);
+    raw.push(std::move(B), s.reversed);
+    a = b;
+  }
+}
+
+/// The unit tangent of a piece at its own parameter t, the limit from inside [lo, hi]
+/// where the first derivative vanishes: the first non-zero derivative of order k (up to
+/// 6), signed (-1)^(k-1) at the right end of the stretch (C'(t) ~ C^(k)(t0) (t - t0)^(k-1)
+/// / (k-1)!). `tiny`: the size below which a derivative counts as zero.
+template <class T, class Piece>
+Vector<T, 2> limit_tangent(const Piece& c, T t, bool from_left, T tiny) {
+  for (int k = 1; k <= 6; ++k) {
+    const Vector<T, 2> v = c.derivative_at(t, k);
+    if (norm(v) > tiny) return unit(v) * ((from_left && k % 2 == 0) ? T(-1) : T(1));
+  }
+  return {};
+}
+
+/// A corner of the input: the curve's point and its unit tangents before and after.
+template <class T>
+struct Corner {
+  Point<T, 2> at;
+  Vector<T, 2> before, after;
+};
+
+/// The angle turned from u to v (unit vectors), in (-pi, pi].
+template <class T>
+T turn(const Vector<T, 2>& u, const Vector<T, 2>& v) {
+  return std::atan2(cross(u, v), dot(u, v));
+}
+
+/// Cubics of a straight line a -> b (control points at thirds).
+template <class T>
+Bezier<T, 2> line(const Point<T, 2>& a, const Point<T, 2>& b) {
+  const Vector<T, 2> v = b - a;
+  return Bezier<T, 2>({a, a + v / T(3), a + v * (T(2) / 3), b});
+}
+
+/// The join at a corner (d != 0) into raw: nothing where the tangents agree within 1e-9
+/// rad; at an outer corner (the side of the offset away from the turn, or both sides of a
+/// reversal) a round arc about the corner (rotating against the sign of d), a miter or a
+/// bevel; at an inner corner the straight line between the two offset end points, marked
+/// reversed (the trim cuts it away with the overlapping ends of the offsets).
+template <class T>
+void join(const Corner<T>& c, const OffsetOptions<T>& o, T d, Raw<T>& raw) {
+  const T theta = turn(c.before, c.after);
+  const Point<T, 2> P = c.at + left(c.before) * d, Q = c.at + left(c.after) * d;
+  if (std::abs(theta) <= T(1e-9)) return;
+  const bool reversal = std::abs(theta) >= std::numbers::pi_v<T> * (1 - T(1e-12));
+  const bool outer = reversal || theta * d < 0;
+  if (!outer) {
+    raw.push(line(P, Q), true);
+    return;
+  }
+  const T sweep = std::abs(theta);  // rotating by -sign(d)
+  if (o.join == OffsetJoin::miter && !reversal && 1 / std::cos(sweep / 2) <= o.miter_limit) {
+    const Point<T, 2> M = c.at + unit(left(c.before) + left(c.after)) * (d / std::cos(sweep / 2));
+    raw.push(line(P, M), false);
+    raw.push(line(M, Q), false);
+    return;
+  }
+  if (o.join != OffsetJoin::round) {
+    raw.push(line(P, Q), false);
+    return;
+  }
+  const T r = std::abs(d), dir = d > 0 ? T(-1) : T(1);
+  const Vector<T, 2> e0 = left(c.before) * (d > 0 ? T(1) : T(-1));  // start direction from the centre
+  const Point<T, 2> centre = c.at;
+  const T phi0 = std::atan2(e0[1], e0[0]);
+  Source<T> arc;
+  arc.point = [=](T s) { return centre + Vector<T, 2>{std::cos(phi0 + dir * s), std::sin(phi0 + dir * s)} * r; };
+  arc.velocity = [=](T s) { return Vector<T, 2>{-std::sin(phi0 + dir * s), std::cos(phi0 + dir * s)} * (r * dir); };
+  arc.tangent = [=](T s) { return Vector<T, 2>{-std::sin(phi0 + dir * s), std::cos(phi0 + dir * s)} * dir; };
+  arc.lo = 0, arc.hi = sweep;
+  // Exact end points (the arc's own ends differ from P and Q by rounding).
+  approximate(arc, OffsetFit::greedy, raw);
+}
+
+/// The offset's stretches of one piece (own parameter [0, 1]) split at the piece's cusps
+/// (zero speed) and the offset's cusps (1 - d kappa = 0, or a touch of it), each with the
+/// curve's tangents at its ends.
+template <class T>
+struct Stretch {
+  T lo, hi;
+  bool reversed;
+  Vector<T, 2> t_lo, t_hi;  // the curve's unit tangents (limits) at the ends
+};
+
+template <class T, class Piece>
+std::vector<Stretch<T>> stretches(const Piece& c, T d, T tiny) {
+  const int n = c.degree();
+  const int M = std::max(64, 16 * (n + 1));
+  const auto speed = [&](T t) { return norm(c.derivative_at(t, 1)); };
+  const auto g = [&](T t) {  // 1 - d kappa
+    const Vector<T, 2> d1 = c.derivative_at(t, 1), d2 = c.derivative_at(t, 2);
+    const T s = norm(d1);
+    return 1 - d * cross(d1, d2) / (s * s * s);
+  };
+  std::vector<T> grid(M + 1);
+  std::vector<T> sp(M + 1);
+  T top = 0;
+  for (int j = 0; j <= M; ++j) grid[j] = T(j) / M, sp[j] = speed(grid[j]), top = std::max(top, sp[j]);
+  // The piece's interior cusps: local minima of the speed below 1e-6 of its largest.
+  std::vector<T> cusps{T(0)};
+  for (int j = 1; j < M; ++j) {
+    if (sp[j] <= sp[j - 1] && sp[j] <= sp[j + 1]) {
+      T lo = grid[j - 1], hi = grid[j + 1];
+      const T rr = T(0.6180339887498948482045868343656381L);
+      for (int k = 0; k < 60; ++k) {
+        const T x1 = hi - rr * (hi - lo), x2 = lo + rr * (hi - lo);
+        if (speed(x1) <= speed(x2)) hi = x2; else lo = x1;
+      }
+      const T t = (lo + hi) / 2;
+      if (speed(t) <= T(1e-6) * top && t > grid[1] / 4 && t < 1 - grid[1] / 4) cusps.push_back(t);
+    }
+  }
+  cusps.push_back(T(1));
+  std::vector<Stretch<T>> out;
+  for (std::size_t i = 0; i + 1 < cusps.size(); ++i) {
+    const T a = cusps[i], b = cusps[i + 1];
+    // The offset's cusps on (a, b): sign changes of g on a grid, and near-zero minima of |g|.
+    std::vector<T> cuts{a};
+    if (d != 0) {
+      const int K = M;
+      const T h = (b - a) / K;
+      std::vector<T> gv(K + 1);
+      for (int j = 0; j <= K; ++j) {
+        const T t = a + h * T(j) + (j == 0 ? h / 1024 : j == K ? -h / 1024 : T(0));  // off the cusps, where g is undefined
+        gv[j] = g(t);
+      }
+      for (int j = 0; j < K; ++j) {
+        const T t0 = a + h * T(j), t1 = j + 1 == K ? b : a + h * T(j + 1);
+        if ((gv[j] < 0) != (gv[j + 1] < 0) && std::isfinite(gv[j]) && std::isfinite(gv[j + 1])) {
+          T lo = std::max(t0, a + h / 1024), hi = std::min(t1, b - h / 1024);
+          const bool neg_lo = g(lo) < 0;
+          for (int k = 0; k < 80 && lo < hi; ++k) {
+            const T mid = (lo + hi) / 2;
+            if ((g(mid) < 0) == neg_lo) lo = mid; else hi = mid;
+          }
+          cuts.push_back((lo + hi) / 2);
+        } else if (j > 0 && std::abs(gv[j]) <= std::abs(gv[j - 1]) && std::abs(gv[j]) <= std::abs(gv[j + 1])) {
+          T lo = a + h * T(j - 1), hi = a + h * T(j + 1);
+          const T rr = T(0.6180339887498948482045868343656381L);
+          for (int k = 0; k < 60; ++k) {
+            const T x1 = hi - rr * (hi - lo), x2 = lo + rr * (hi - lo);
+            if (std::abs(g(x1)) <= std::abs(g(x2))) hi = x2; else lo = x1;
+          }
+          const T t = (lo + hi) / 2;
+          if (std::abs(g(t)) <= T(1e-9)) cuts.push_back(t);  // |d| touches the radius of curvature
+        }
+      }
+      std::sort(cuts.begin(), cuts.end());
+    }
+    cuts.push_back(b);
+    for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
+      const T lo = cuts[k], hi = cuts[k + 1];
+      if (!(hi > lo)) continue;
+      const T mid = (lo + hi) / 2;
+      // At a cusp of the piece the speed is zero only to the accuracy of its minimisation:
+      // derivatives below 1e-5 of the largest speed count as zero there.
+      const T zero_lo = (k == 0 && i > 0) ? T(1e-5) * top : tiny;
+      const T zero_hi = (k + 2 == cuts.size() && i + 2 < cusps.size()) ? T(1e-5) * top : tiny;
+      Stretch<T> s{lo, hi, d != 0 && g(mid) < 0, limit_tangent<T>(c, lo, false, zero_lo), limit_tangent<T>(c, hi, true, zero_hi)};
+      out.push_back(s);
+    }
+  }
+  return out;
+}
+
+/// The Source of the offset of piece c over a stretch.
+template <class T, class Piece>
+Source<T> stretch_source(const Piece& c, const Stretch<T>& s, T d) {
+  Source<T> src;
+  const T sign = s.reversed ? T(-1) : T(1);
+  const auto tan = [=](T t) -> Vector<T, 2> {
+    if (t == s.lo) return s.t_lo;
+    if (t == s.hi) return s.t_hi;
+    const Vector<T, 2> v = unit(c.derivative_at(t, 1));
+    return norm(v) > 0 ? v : (t - s.lo < s.hi - t ? s.t_lo : s.t_hi);
+  };
+  src.point = [=](T t) { return c(t) + left(tan(t)) * d; };
+  src.velocity = [=](T t) {
+    const Vector<T, 2> d1 = c.derivative_at(t, 1), d2 = c.derivative_at(t, 2);
+    const T sp = norm(d1);
+    if (!(sp > 0)) return Vector<T, 2>{};
+    return d1 * (1 - d * cross(d1, d2) / (sp * sp * sp));
+  };
+  src.tangent = [=](T t) { return tan(t) * sign; };
+  src.lo = s.lo, src.hi = s.hi;
+  src.reversed = s.reversed;
+  return src;
+}
+
+/// Cuts the loops of the raw offset (see offset()): returns the kept parameter intervals
+/// of the raw path (cubic i on [i, i + 1]).
+template <class T>
+std::vector<Interval<T>> kept_intervals(const Pieces<T, 2>& raw, const std::vector<bool>& reversed, bool closed, std::size_t& loops) {
+  const T n = static_cast<T>(reversed.size());
+  const Intersections<T> x = self_intersect(raw);
+  std::vector<Interval<T>> cuts;
+  for (std::size_t i = 0; i < reversed.size();) {
+    if (!reversed[i]) {
+      ++i;
+      continue;
+    }
+    std::size_t j = i;
+    while (j < reversed.size() && reversed[j]) ++j;
+    const T r0 = static_cast<T>(i), r1 = static_cast<T>(j);
+    // The smallest loop holding the region [r0, r1]: inside [ta, tb], or for a closed raw
+    // offset round the closing point, outside it (wrap).
+    T best = std::numeric_limits<T>::infinity(), lo = 0, hi = 0;
+    bool found = false, wrap = false;
+    for (const auto& p : x.points) {
+      if (p.ta <= r0 && p.tb >= r1 && p.tb - p.ta < best) best = p.tb - p.ta, lo = p.ta, hi = p.tb, found = true, wrap = false;
+      if (closed && (p.tb <= r0 || p.ta >= r1) && n - (p.tb - p.ta) < best) {
+        best = n - (p.tb - p.ta), lo = p.ta, hi = p.tb, found = true, wrap = true;
+      }
+    }
+    if (found && !wrap) cuts.push_back({lo, hi}), ++loops;
+    if (found && wrap) cuts.push_back({T(0), lo}), cuts.push_back({hi, n}), ++loops;
+    i = j;
+  }
+  std::sort(cuts.begin(), cuts.end(), [](const auto& a, const auto& b) { return a.lo < b.lo; });
+  std::vector<Interval<T>> kept;
+  T at = 0;
+  for (const auto& c : cuts) {
+    if (c.lo > at) kept.push_back({at, c.lo});
+    at = std::max(at, c.hi);
+  }
+  if (at < n) kept.push_back({at, n});
+  return kept;
+}
+
+}  // namespace detail::offset
+
+/// An estimate of the number of cubics offset() makes, before any work: per piece at least
+/// one, plus its turning measured on 32 (n + 1) samples, each angle dtheta counted as
+/// dtheta / phi_max, phi_max = (tolerance / (c r))^(1/6) the largest arc of the offset's
+/// radius r = |1 - d kappa| / |kappa| that one cubic approximates within the tolerance
+/// (a cubic's error on a circular arc of angle phi is about c r phi^6, c = 1.8e-5: the
+/// classic quarter circle with handles 0.5523 r is 2.7e-4 r off); plus two per piece for
+/// its cusps and joins. Cost: O(pieces n^2).
+template <class T>
+double offset_segments_estimate(const Pieces<T, 2>& curve, T distance, T tolerance) {
+  double total = 0;
+  for (const auto& seg : curve.segments()) {
+    std::visit(
+        [&](const auto& c) {
+          const int m = 32 * (c.degree() + 1);
+          double sum = 0;
+          for (int j = 0; j < m; ++j) {
+            const T t = (T(j) + T(0.5)) / T(m);
+            const Vector<T, 2> d1 = c.derivative_at(t, 1), d2 = c.derivative_at(t, 2);
+            const double sp = static_cast<double>(norm(d1));
+            if (!(sp > 0)) continue;
+            const double k = static_cast<double>(cross(d1, d2)) / (sp * sp * sp);
+            const double dtheta = std::abs(k) * sp / m;
+            if (!(dtheta > 1e-15) || !std::isfinite(dtheta)) continue;
+            const double r = std::abs(1 - static_cast<double>(distance) * k) / std::abs(k);
+            sum += dtheta * std::pow(1.8e-5 * r / static_cast<double>(tolerance), 1.0 / 6);
+          }
+          total += 2 + std::ceil(std::isfinite(sum) ? sum : 0);
+        },
+        seg);
+  }
+  return total;
+}
+
+/// The offset of a plane curve at signed distance d (positive to the left of the
+/// direction of travel), C(t) + d N(t) with N the unit normal turned +90 degrees from the
+/// tangent, as cubic Bézier segments within `tolerance` of it.
+///
+/// Method. The curve is taken in its unit frame (origin at its first control point, a
+/// power-of-two scale: huge and tiny coordinates behave as unit ones). Each exact piece
+/// (Bézier or rational Bézier) is cut at its cusps (interior zeros of the speed, found as
+/// minima below 1e-6 of the piece's largest speed on a grid of max(64, 16 (n + 1)) points)
+/// and at the offset's cusps, where 1 - d kappa(t) changes sign (kappa the signed curvature, > 0 where the curve turns left;
+/// bisection to full precision) or touches zero (|d| equals a radius of curvature: minima
+/// of |1 - d kappa| below 1e-9) [Farouki90]. On each stretch the offset is smooth and runs with the
+/// curve (1 - d kappa > 0) or against it; its tangent is +-T(t), the curve's (its limit
+/// where the speed vanishes). Each stretch is approximated greedily: the longest cubic
+/// from the current parameter that is within the tolerance (halving, then six rounds of
+/// bisection), the cubic interpolating the offset's end points and tangent directions,
+/// with the handle lengths of a least-squares fit to 15 samples or of the Hermite cubic,
+/// whichever measures closer. The error is measured both ways (see detail::offset::
+/// hausdorff: 33 projected samples each way, the worst refined by a local maximisation),
+/// an estimate of the Hausdorff distance, not a bound.
+///
+/// Joins. At each G0 corner of the input (a joint of pieces, or a cusp inside one, where
+/// the tangents differ by more than 1e-9 rad; at the closing point of a closed curve too)
+/// the outer side gets `join`: a round arc of radius |d| (approximated as above), a miter
+/// (the offset lines extended to their meeting point, while 1 / cos(theta / 2) <=
+/// miter_limit for a turn theta; a bevel beyond, as SVG's stroke-miterlimit) or a bevel
+/// line; a reversal (a turn of pi) is always closed by a round arc or a bevel. The inner
+/// side gets a straight line from one offset end to the other, traversed backwards.
+///
+/// Trim. The raw offset's reversed regions are its stretches that run against the curve
+/// (between two cusps of the offset, where |d| exceeds the radius of curvature on the
+/// concave side) and the lines at inner corners. Each region is cut away with the smallest
+/// loop of the raw offset that holds it: the part between the two parameters of one of
+/// its self-intersections (algo/intersect.hpp), or for a closed curve the part round the
+/// closing point outside them. A region that no loop holds (a cusp near an open end whose
+/// swallowtail is cut short by the end) is kept; loops without a reversed region (the
+/// offset of a far part of the curve crossing another's) are kept.
+///
+/// Result: the cubics in order, each starting where the previous ends. d = 0 gives the
+/// curve itself as cubics (exact for polynomial pieces of degree <= 3). Pieces that are
+/// single points are skipped. Errors: InvalidArgument "distance", "tolerance" (not > 0 and
+/// finite; below 1e-11 of the curve's size plus |d|; more than max_segments cubics),
+/// "curve" (a single point), "distance" when the trim leaves nothing.
+template <class T>
+OffsetCurve<T> offset(const Pieces<T, 2>& curve, const OffsetOptions<T>& o) {
+  using namespace detail::offset;
+  if (!std::isfinite(o.distance)) throw InvalidArgument("distance", "must be a finite number");
+  if (!(o.tolerance > 0) || !std::isfinite(o.tolerance)) throw InvalidArgument("tolerance", "must be a finite number > 0");
+  if (!(o.miter_limit >= 1) || !std::isfinite(o.miter_limit)) throw InvalidArgument("miter_limit", "must be a finite number >= 1");
+  // The unit frame of every control point.
+  std::vector<Point<T, 2>> all;
+  for (const auto& s : curve.segments()) std::visit([&](const auto& c) { all.insert(all.end(), c.points().begin(), c.points().end()); }, s);
+  const Point<T, 2> origin = all.front();
+  const T half = detail::half_extent<T, 2>(all, origin);
+  if (!(half > 0)) throw InvalidArgument("curve", "is a single point: its offset is undefined");
+  const int e = detail::unit_exponent(half);
+  const T scale = detail::pow2<T>(-e);
+  const T d = o.distance * scale, tol = o.tolerance * scale;
+  if (tol < T(1e-11) * (1 + std::abs(d))) {
+    throw InvalidArgument("tolerance", "is below 1e-11 of the curve's size plus |distance|: cubics in floating point cannot be "
+                                       "measured that close");
+  }
+  const auto to_frame = [&](const auto& c) {
+    using C = std::decay_t<decltype(c)>;
+    std::vector<Point<T, 2>> P;
+    for (const auto& p : c.points()) P.push_back(detail::to_unit(p, origin, e));
+    if constexpr (std::is_same_v<C, Bezier<T, 2>>) {
+      return BezierPiece<T, 2>(Bezier<T, 2>(std::move(P)));
+    } else {
+      return BezierPiece<T, 2>(RationalBezier<T, 2>(std::move(P), c.weights()));
+    }
+  };
+  const T tiny = 64 * std::numeric_limits<T>::epsilon();  // a derivative this small (in the unit frame) counts as zero
+  Raw<T> raw;
+  raw.tolerance = tol;
+  raw.max_segments = o.max_segments;
+  std::optional<Vector<T, 2>> prev;  // the curve's tangent at the end of the last stretch
+  std::optional<Vector<T, 2>> first;
+  Point<T, 2> first_at{}, last_at{};
+  bool any = false;
+  for (const auto& seg : curve.segments()) {
+    const BezierPiece<T, 2> piece = std::visit(to_frame, seg);
+    std::visit(
+        [&](const auto& c) {
+          const auto& P = c.points();
+          if (std::all_of(P.begin(), P.end(), [&](const auto& p) { return norm(p - P.front()) <= tiny; })) return;  // a point
+          bool piece_start = true;
+          for (const auto& s : stretches<T>(c, d, tiny)) {
+            if (!any) first = s.t_lo, first_at = c(s.lo), any = true;
+            if (piece_start && prev && norm(c(s.lo) - last_at) > tol) {
+              throw InvalidArgument("curve", "has a gap of " + std::to_string(norm(c(s.lo) - last_at) / scale) +
+                                                 " between two pieces, more than the tolerance: its offset would not be connected");
+            }
+            piece_start = false;
+            if (prev && d != 0) join(Corner<T>{c(s.lo), *prev, s.t_lo}, o, d, raw);
+            approximate(stretch_source<T>(c, s, d), o.fit, raw);
+            prev = s.t_hi;
+            last_at = c(s.hi);
+          }
+        },
+        piece);
+  }
+  if (!any) throw InvalidArgument("curve", "is a single point: its offset is undefined");
+  const bool closed = norm(last_at - first_at) <= T(1e-10);
+  if (closed && d != 0) join(Corner<T>{first_at, *prev, *first}, o, d, raw);
+  if (closed && !raw.cubics.empty()) {  // the last end exactly on the first start
+    std::vector<Point<T, 2>> P = raw.cubics.back().points();
+    const Point<T, 2> start = raw.cubics.front().points().front();
+    if (norm(P.back() - start) <= tol) P.back() = start, raw.cubics.back() = Bezier<T, 2>(std::move(P));
+  }
+  if (raw.cubics.empty()) {
+    throw InvalidArgument("distance", "the offset is a single point (|distance| equals the radius of curvature all along)");
+  }
+  OffsetCurve<T> out;
+  out.raw_segments = raw.cubics.size();
+  out.max_error = raw.max_error / scale;
+  std::vector<Bezier<T, 2>> kept = raw.cubics;
+  if (o.trim && std::find(raw.reversed.begin(), raw.reversed.end(), true) != raw.reversed.end()) {
+    std::vector<BezierPiece<T, 2>> segs(raw.cubics.begin(), raw.cubics.end());
+    const Pieces<T, 2> path(std::move(segs));
+    const bool raw_closed = norm(raw.cubics.back().points().back() - raw.cubics.front().points().front()) <= tol;
+    const auto keep = kept_intervals(path, raw.reversed, closed && raw_closed, out.loops_cut);
+    kept.clear();
+    for (const auto& iv : keep) {
+      if (!(iv.hi > iv.lo)) continue;
+      const Pieces<T, 2> part = path.portion(iv);
+      for (const auto& s : part.segments()) {
+        const auto& B = std::get<Bezier<T, 2>>(s);
+        const auto& P = B.points();
+        if (std::all_of(P.begin(), P.end(), [&](const auto& p) { return norm(p - P.front()) <= tiny; })) continue;
+        kept.push_back(B);
+      }
+    }
+    if (kept.empty()) throw InvalidArgument("distance", "the trimmed offset is empty: |distance| exceeds the curve's radius everywhere");
+    for (std::size_t i = 1; i < kept.size(); ++i) {  // portions cut at one intersection meet to rounding
+      std::vector<Point<T, 2>> P = kept[i].points();
+      if (norm(P.front() - kept[i - 1].points().back()) <= tol) P.front() = kept[i - 1].points().back(), kept[i] = Bezier<T, 2>(std::move(P));
+    }
+  }
+  // Back from the unit frame.
+  const T back = detail::pow2<T>(e);
+  for (auto& B : kept) {
+    std::vector<Point<T, 2>> P;
+    for (const auto& p : B.points()) {
+      Point<T, 2> q;
+      for (int k = 0; k < 2; ++k) q[k] = p[k] * back + origin[k];
+      P.push_back(q);
+    }
+    out.segments.push_back(Bezier<T, 2>(std::move(P)));
+  }
+  return out;
+}
+
+/// The offset of any plane curve through its exact pieces.
+template <class C>
+  requires PiecewiseBezierCurve<C> && (C::dimension == 2) && (!detail::is_pieces<C>)
+OffsetCurve<typename C::Scalar> offset(const C& c, const OffsetOptions<typename C::Scalar>& o) {
+  return offset(pieces(c), o);
+}
+
+}  // namespace casteljau
