@@ -336,6 +336,42 @@ BSpline<T, D> natural_cubic_bspline(const std::vector<T>& t, const Eigen::Matrix
 
 }  // namespace detail
 
+namespace detail {
+
+/// The smoothing spline's values g (n x d) and interior second derivatives (m x d) at its
+/// lambda (given, or chosen by GCV: the criterion's value then in gcv), with the
+/// coordinates as columns: the part of smoothing_spline that does not depend on the
+/// dimension, compiled once per scalar type.
+template <class T>
+struct SmoothingSolution {
+  Eigen::Matrix<T, Eigen::Dynamic, Eigen::Dynamic> gamma, g;
+  T lambda;
+  T gcv;
+};
+
+template <class T>
+SmoothingSolution<T> smoothing_solution(const std::vector<T>& t, const Eigen::Matrix<T, Eigen::Dynamic, Eigen::Dynamic>& y,
+                                        std::optional<T> lambda, int max_evaluations) {
+  ReinschSystem<T> sys(t, y);
+  SmoothingSolution<T> out{{}, {}, T(0), std::numeric_limits<T>::quiet_NaN()};
+  if (!lambda) {
+    const auto criterion = [&](double l) { return static_cast<double>(gcv_criterion<T>(sys, static_cast<T>(l), y)); };
+    const BrentMinimum best = brent_bounded(criterion, 0.0, static_cast<double>(y.rows()), 1e-5, max_evaluations);
+    if (!best.converged || !std::isfinite(best.fx)) {
+      throw NumericalError("the minimisation of the GCV criterion did not converge in " + std::to_string(best.evaluations) +
+                           " evaluations (the limit for this many points): give smoothing as a number");
+    }
+    lambda = static_cast<T>(best.x);
+    out.gcv = static_cast<T>(best.fx);
+  }
+  out.lambda = *lambda;
+  Eigen::Matrix<T, Eigen::Dynamic, Eigen::Dynamic> r;
+  sys.solve(out.lambda, out.gamma, r, out.g);
+  return out;
+}
+
+}  // namespace detail
+
 /// The smoothing spline through the points Q at the parameters t (strictly increasing, at
 /// least 2): the cubic spline minimising sum_k |Q_k - C(t_k)|^2 + lambda * integral over
 /// [t_0, t_last] of |C''(t)|^2, knots at every parameter, which is the natural cubic spline
@@ -354,21 +390,8 @@ SmoothingSpline<T, D> smoothing_spline(const std::vector<Point<T, D>>& Q, const 
   Eigen::Matrix<T, Eigen::Dynamic, Eigen::Dynamic> y(static_cast<Eigen::Index>(n), D);
   for (std::size_t k = 0; k < n; ++k)
     for (int c = 0; c < D; ++c) y(static_cast<Eigen::Index>(k), c) = Q[k][c];
-  detail::ReinschSystem<T> sys(t, y);
-  T gcv = std::numeric_limits<T>::quiet_NaN();
-  if (!lambda) {
-    const auto criterion = [&](double l) { return static_cast<double>(detail::gcv_criterion<T>(sys, static_cast<T>(l), y)); };
-    const detail::BrentMinimum best = detail::brent_bounded(criterion, 0.0, static_cast<double>(n), 1e-5, max_evaluations);
-    if (!best.converged || !std::isfinite(best.fx)) {
-      throw NumericalError("the minimisation of the GCV criterion did not converge in " + std::to_string(best.evaluations) +
-                           " evaluations (the limit for this many points): give smoothing as a number");
-    }
-    lambda = static_cast<T>(best.x);
-    gcv = static_cast<T>(best.fx);
-  }
-  Eigen::Matrix<T, Eigen::Dynamic, Eigen::Dynamic> gamma, r, g;
-  sys.solve(*lambda, gamma, r, g);
-  return {detail::natural_cubic_bspline<T, D>(t, g, gamma), *lambda, gcv};
+  const detail::SmoothingSolution<T> s = detail::smoothing_solution<T>(t, y, lambda, max_evaluations);
+  return {detail::natural_cubic_bspline<T, D>(t, s.g, s.gamma), s.lambda, s.gcv};
 }
 
 }  // namespace casteljau
