@@ -118,6 +118,18 @@ void read_value(const Field& field, const Json& j, Args::Value& v) {
     case FieldType::curves:
       v.curves = curves_from_json(j, field);
       break;
+    case FieldType::number_or_choice:
+      if (j.is_string()) {
+        v.string = j.get<std::string>();
+        if (std::find(field.choices.begin(), field.choices.end(), v.string) == field.choices.end()) {
+          throw InvalidArgument(where, "unknown " + where + " " + io::quoted(v.string) + " (a number, or " + detail::join(field.choices) + ")");
+        }
+      } else if (j.is_number()) {
+        v.number = number_from_json(j, where, field.noun.empty() ? field.name : field.noun);
+      } else {
+        throw InvalidArgument(where, "must be a number or one of " + detail::join(field.choices) + ", got " + std::string(kind_of(j)));
+      }
+      break;
   }
 }
 
@@ -164,6 +176,7 @@ std::optional<double> Args::optional_number(std::string_view name) const {
 int Args::integer(std::string_view name) const { return filled(name).integer; }
 bool Args::boolean(std::string_view name) const { return filled(name).boolean; }
 const std::string& Args::string(std::string_view name) const { return filled(name).string; }
+const std::string& Args::choice(std::string_view name) const { return filled(name).string; }
 const std::vector<double>& Args::numbers(std::string_view name) const { return filled(name).numbers; }
 std::optional<std::vector<double>> Args::optional_numbers(std::string_view name) const {
   const Value& v = at(name);
@@ -216,6 +229,7 @@ std::string_view field_type_name(FieldType t) {
     case FieldType::points: return "point[]";
     case FieldType::curve: return "curve";
     case FieldType::curves: return "curve[]";
+    case FieldType::number_or_choice: return "number|string";
   }
   return "";
 }

@@ -49,9 +49,34 @@ constexpr Field subdivide_fields[] = {
     {"closed", FieldType::boolean, false, "false", "a closed polygon"},
 };
 
+constexpr std::string_view smoothing_choices[] = {"gcv"};
 constexpr std::string_view parametrizations[] = {"uniform", "chord", "centripetal"};
 static_assert(static_cast<int>(Parametrization::uniform) == 0 && static_cast<int>(Parametrization::chord) == 1 &&
               static_cast<int>(Parametrization::centripetal) == 2);
+
+/// The smoothing fit's fields. The smoothing spline is the natural cubic spline (the
+/// minimiser over all functions with a square-integrable second derivative): degree 3,
+/// free (natural) ends, knots at every parameter; every field asking for something else
+/// is refused, naming it.
+void read_smoothing(const Args& a, bool cp, bool tol, AnyFitRequest& r) {
+  if (cp) throw InvalidArgument("control_points", "give one of control_points, tolerance or smoothing (a smoothing fit has a knot at every point)");
+  if (tol) throw InvalidArgument("tolerance", "give one of control_points, tolerance or smoothing");
+  if (r.degree != 3) {
+    throw InvalidArgument("degree", "a smoothing fit is cubic (the minimiser of the penalty on the second derivative is a natural cubic spline): degree must be 3, got " +
+                                        std::to_string(r.degree));
+  }
+  for (const char* name : {"start_derivative", "end_derivative"}) {
+    if (a.has(name)) throw InvalidArgument(name, "a smoothing fit has natural ends (zero second derivative) and takes no end derivatives");
+  }
+  if (a.boolean("closed")) throw InvalidArgument("closed", "a smoothing fit is open (periodic smoothing is not served)");
+  if (a.choice("smoothing") == "gcv") {
+    r.smoothing_gcv = true;
+  } else {
+    const double lambda = a.number("smoothing");
+    if (!(lambda >= 0)) throw InvalidArgument("smoothing", "lambda must be >= 0, got " + number_text(lambda));
+    r.smoothing = lambda;
+  }
+}
 
 Response fit(const Args& a) {
   AnyFitRequest r;
@@ -60,15 +85,19 @@ Response fit(const Args& a) {
     throw InvalidArgument("degree", "degree must be in 1.." + std::to_string(max_degree) + ", got " + std::to_string(r.degree));
   }
   const bool cp = a.has("control_points"), tol = a.has("tolerance");
-  if (cp && tol) throw InvalidArgument("tolerance", "give either control_points or tolerance, not both");
-  if (!cp && !tol) throw InvalidArgument("control_points", "required field is missing (or give tolerance)");
-  if (cp) {
-    const int n = a.integer("control_points");
-    if (n < 1) throw InvalidArgument("control_points", "must be >= 1, got " + std::to_string(n));
-    r.control_points = static_cast<std::size_t>(n);
+  if (a.has("smoothing")) {
+    read_smoothing(a, cp, tol, r);
   } else {
-    r.tolerance = a.number("tolerance");
-    if (!(*r.tolerance > 0)) throw InvalidArgument("tolerance", "tolerance must be > 0, got " + number_text(*r.tolerance));
+    if (cp && tol) throw InvalidArgument("tolerance", "give either control_points or tolerance, not both");
+    if (!cp && !tol) throw InvalidArgument("control_points", "required field is missing (or give tolerance or smoothing)");
+    if (cp) {
+      const int n = a.integer("control_points");
+      if (n < 1) throw InvalidArgument("control_points", "must be >= 1, got " + std::to_string(n));
+      r.control_points = static_cast<std::size_t>(n);
+    } else {
+      r.tolerance = a.number("tolerance");
+      if (!(*r.tolerance > 0)) throw InvalidArgument("tolerance", "tolerance must be > 0, got " + number_text(*r.tolerance));
+    }
   }
   // The choices are listed in the order of the Parametrization enum (curves/parametrization.hpp).
   const std::string& rule = a.string("parametrization");
@@ -85,6 +114,7 @@ constexpr Field fit_fields[] = {
     {"degree", FieldType::integer, true, {}, "p in 1..1000"},
     {"control_points", FieldType::integer, false, {}, "how many (>= 1); or give tolerance"},
     {"tolerance", FieldType::number, false, {}, "> 0: the fewest control points within it; or give control_points"},
+    {"smoothing", FieldType::number_or_choice, false, {}, "lambda >= 0 or \"gcv\": the cubic smoothing spline (degree 3); or give control_points", smoothing_choices},
     {"parametrization", FieldType::string, false, "\"chord\"", "the points' parameters, divided by the last", parametrizations},
     {"start_derivative", FieldType::vector, false, {}, "the curve's derivative at its start (open curves)"},
     {"end_derivative", FieldType::vector, false, {}, "the curve's derivative at its end (open curves)"},
@@ -117,9 +147,13 @@ constexpr Command point_family[] = {
      "      interpolation when nothing fewer is;\n"
      "  closed: a periodic curve (C^(degree-1) where it closes; the last point may repeat the\n"
      "      first): interpolation with control_points = the number of distinct points, periodic\n"
-     "      least squares with fewer (at least degree + 1), or the fewest within tolerance.",
+     "      least squares with fewer (at least degree + 1), or the fewest within tolerance;\n"
+     "  smoothing: lambda >= 0 or \"gcv\": the cubic (degree 3) natural spline with a knot at\n"
+     "      every parameter minimising sum |Q_k - C(t_k)|^2 + lambda * integral |C''|^2, as\n"
+     "      scipy's make_smoothing_spline per coordinate; gcv chooses lambda by generalised\n"
+     "      cross-validation (stacked over the coordinates). Open curves, no end derivatives.",
      "curve (bspline), max_error (largest distance from a point to the curve at the\n"
-     "          point's parameter)",
+     "          point's parameter), smoothing (the lambda of a smoothing fit)",
      R"(  echo '{"points": [[0,0],[1,1],[2,0]], "degree": 2, "control_points": 3, "parametrization": "uniform"}' | casteljau fit
   {"curve":{"type":"bspline","degree":2,"knots":[0.0,0.0,0.0,1.0,1.0,1.0],"points":[[0.0,0.0],[1.0,2.0],[2.0,0.0]]},"max_error":0.0})",
      fit_fields, fit, "", "points"},

@@ -4,7 +4,9 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <cmath>
 #include <limits>
+#include <numbers>
 #include <optional>
 #include <string>
 #include <type_traits>
@@ -12,6 +14,7 @@
 #include <variant>
 #include <vector>
 
+#include "casteljau/curves/conics.hpp"
 #include "casteljau/curves/parametrization.hpp"
 #include "casteljau/io/json.hpp"
 #include "text.hpp"
@@ -199,18 +202,41 @@ struct Format<Lagrange> {
   }
 };
 
+/// The name of `j` among `names` (a string field), or InvalidArgument(where, "must be 'a',
+/// 'b' or 'c', got 'x'").
+std::size_t choice_from_json(const Json& j, std::string_view where, std::initializer_list<std::string_view> names) {
+  const std::string s = string_from_json(j, where);
+  std::size_t i = 0;
+  std::string list;
+  for (const std::string_view n : names) {
+    if (s == n) return i;
+    list += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + io::quoted(n);
+    ++i;
+  }
+  throw InvalidArgument(std::string(where), "must be " + list + ", got " + io::quoted(s));
+}
+
 template <>
 struct Format<CatmullRom> {
   static constexpr std::string_view name = "catmull_rom";
   static AnyCurve read(const Fields& f) {
-    f.allow_only({"type", "points", "alpha", "closed", "dim"}, "a catmull_rom");
+    f.allow_only({"type", "points", "alpha", "closed", "ends", "dim"}, "a catmull_rom");
     const std::optional<int> dim = read_dim(f);
     const bool closed = f.has("closed") && boolean_from_json(*f.optional("closed"), "closed");
-    const RawPoints P = read_points(f.required("points"), closed ? 3 : 4, closed ? "a closed catmull_rom" : "an open catmull_rom");
+    CatmullRomEnds ends = CatmullRomEnds::inner;
+    if (const Json* ej = f.optional("ends")) {
+      ends = static_cast<CatmullRomEnds>(choice_from_json(*ej, "ends", {"inner", "reflect"}));
+      if (closed) throw InvalidArgument("ends", "belongs to open curves: a closed catmull_rom has no end points");
+    }
+    const bool reflect = ends == CatmullRomEnds::reflect;
+    const RawPoints P = read_points(f.required("points"), closed ? 3 : reflect ? 2 : 4,
+                                    closed    ? "a closed catmull_rom"
+                                    : reflect ? "an open catmull_rom with ends 'reflect'"
+                                              : "an open catmull_rom");
     check_dim(dim, P.dim);
     const double alpha = f.has("alpha") ? number_from_json(*f.optional("alpha"), "alpha") : 0.5;
     // The alpha range and the coincident points are the constructor's checks.
-    return dispatch_dimension(P.dim, [&]<int D>() { return AnyCurve(CatmullRom<double, D>(P.points<D>(), alpha, closed)); });
+    return dispatch_dimension(P.dim, [&]<int D>() { return AnyCurve(CatmullRom<double, D>(P.points<D>(), alpha, closed, ends)); });
   }
   template <int D>
   static OrderedJson write(const CatmullRom<double, D>& c) {
@@ -218,7 +244,9 @@ struct Format<CatmullRom> {
       throw InvalidArgument("curve", "this catmull_rom curve (an image under a map that is not a similarity) keeps knots that its "
                                      "points do not give: curve JSON cannot express it");
     }
-    return OrderedJson{{"type", name}, {"points", points_json(c.points())}, {"alpha", c.alpha()}, {"closed", c.closed()}};
+    OrderedJson out{{"type", name}, {"points", points_json(c.points())}, {"alpha", c.alpha()}, {"closed", c.closed()}};
+    if (c.ends() == CatmullRomEnds::reflect) out["ends"] = "reflect";  // the default is left out, as before ends existed
+    return out;
   }
 };
 
@@ -294,20 +322,6 @@ Vector<double, D> vector_of(const std::array<double, max_dimension>& a) {
   Vector<double, D> v;
   for (int k = 0; k < D; ++k) v[k] = a[static_cast<std::size_t>(k)];
   return v;
-}
-
-/// The name of `j` among `names` (a string field), or InvalidArgument(where, "must be 'a',
-/// 'b' or 'c', got 'x'").
-std::size_t choice_from_json(const Json& j, std::string_view where, std::initializer_list<std::string_view> names) {
-  const std::string s = string_from_json(j, where);
-  std::size_t i = 0;
-  std::string list;
-  for (const std::string_view n : names) {
-    if (s == n) return i;
-    list += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + io::quoted(n);
-    ++i;
-  }
-  throw InvalidArgument(std::string(where), "must be " + list + ", got " + io::quoted(s));
 }
 
 /// The points and params of a cubic_spline or hermite: `params`, or `parametrization`
@@ -535,17 +549,112 @@ void for_each_type(CurveTypeList<C...>, F&& f) {
 }
 
 
+// ---------------------------------------------------------------------------------------
+// Shorthands: circle, ellipse and arc, read as the exact nurbs they stand for (conics.hpp,
+// [PT97, A7.1]: quadratic pieces of at most 90 degrees, starting at the start angle). They
+// are not types of the registry: what is read is a Nurbs, and a response writes it as one.
+
+constexpr std::string_view shorthand_names[] = {"circle", "ellipse", "arc"};
+
+/// A finite number field that must be > 0.
+double positive_from_json(const Json& j, const std::string& where) {
+  const double v = number_from_json(j, where);
+  if (!(v > 0)) throw InvalidArgument(where, "must be > 0, got " + casteljau::detail::format_number(v));
+  return v;
+}
+
+/// The center: 2-D, or 3-D when `normal` is allowed and given (its dimension must then be 3).
+RawPoints read_center(const Fields& f, bool normal_allowed) {
+  const std::optional<int> dim = read_dim(f);
+  const std::vector<double> c = numbers_from_json(f.required("center"), "center");
+  const bool has_normal = normal_allowed && f.has("normal");
+  const std::size_t want = has_normal ? 3 : 2;
+  if (c.size() != want) {
+    throw InvalidArgument("center", "needs " + std::to_string(want) + " coordinates" +
+                                        (has_normal ? std::string(" (a circle with a normal is 3-D)")
+                                                    : normal_allowed ? std::string(" (3 with a normal)") : std::string(" (a plane curve)")) +
+                                        ", got " + std::to_string(c.size()));
+  }
+  RawPoints P;
+  P.dim = static_cast<int>(want);
+  P.coords.resize(1);
+  std::copy(c.begin(), c.end(), P.coords[0].begin());
+  check_dim(dim, P.dim);
+  return P;
+}
+
+AnyCurve read_circle(const Fields& f) {
+  f.allow_only({"type", "center", "radius", "normal", "dim"}, "a circle");
+  const RawPoints O = read_center(f, true);
+  const double r = positive_from_json(f.required("radius"), "radius");
+  const double two_pi = 2 * std::numbers::pi;
+  if (O.dim == 2) return AnyCurve(nurbs_ellipse_arc(O.points<2>()[0], Vector<double, 2>(r, 0.0), Vector<double, 2>(0.0, r), 0.0, two_pi));
+  // 3-D: the plane through the center perpendicular to the normal; angle 0 points along
+  // the coordinate axis least aligned with the normal (the first of x, y, z on ties),
+  // projected into the plane, and the circle runs counter-clockwise seen from the normal's
+  // tip (Y = n x X).
+  const std::vector<double> nv = numbers_from_json(f.required("normal"), "normal");
+  if (nv.size() != 3) throw InvalidArgument("normal", "needs 3 coordinates, got " + std::to_string(nv.size()));
+  Vector<double, 3> n(nv[0], nv[1], nv[2]);
+  const double scale = std::max({std::abs(n[0]), std::abs(n[1]), std::abs(n[2])});
+  if (!(scale > 0)) throw InvalidArgument("normal", "must be a non-zero vector");
+  n = (1 / scale) * n;  // no overflow or underflow in the norm
+  n = (1 / norm(n)) * n;
+  int axis = 0;
+  for (int k = 1; k < 3; ++k)
+    if (std::abs(n[k]) < std::abs(n[axis])) axis = k;
+  Vector<double, 3> e(0.0, 0.0, 0.0);
+  e[axis] = 1;
+  Vector<double, 3> X = e - dot(e, n) * n;
+  X = (1 / norm(X)) * X;
+  const Vector<double, 3> Y(n[1] * X[2] - n[2] * X[1], n[2] * X[0] - n[0] * X[2], n[0] * X[1] - n[1] * X[0]);  // n x X
+  return AnyCurve(nurbs_ellipse_arc(O.points<3>()[0], r * X, r * Y, 0.0, two_pi));
+}
+
+AnyCurve read_ellipse(const Fields& f) {
+  f.allow_only({"type", "center", "radii", "rotation", "dim"}, "an ellipse");
+  const RawPoints O = read_center(f, false);
+  const Json& rj = f.required("radii");
+  const std::vector<double> radii = numbers_from_json(rj, "radii");
+  if (radii.size() != 2) throw InvalidArgument("radii", "needs 2 numbers [a, b], got " + std::to_string(radii.size()));
+  for (std::size_t i = 0; i < 2; ++i) positive_from_json(rj[i], index_path("radii", i));
+  const double rot = f.has("rotation") ? number_from_json(*f.optional("rotation"), "rotation") : 0.0;
+  const double c = std::cos(rot), s = std::sin(rot);
+  return AnyCurve(nurbs_ellipse_arc(O.points<2>()[0], Vector<double, 2>(radii[0] * c, radii[0] * s),
+                                    Vector<double, 2>(-radii[1] * s, radii[1] * c), 0.0, 2 * std::numbers::pi));
+}
+
+AnyCurve read_arc(const Fields& f) {
+  f.allow_only({"type", "center", "radius", "start_angle", "end_angle", "dim"}, "an arc");
+  const RawPoints O = read_center(f, false);
+  const double r = positive_from_json(f.required("radius"), "radius");
+  const double a0 = number_from_json(f.required("start_angle"), "start_angle");
+  const double a1 = number_from_json(f.required("end_angle"), "end_angle");
+  if (!(a1 > a0)) {
+    throw InvalidArgument("end_angle", "must be greater than start_angle (the arc runs counter-clockwise from start to end), got " +
+                                           casteljau::detail::format_number(a1) + " <= " + casteljau::detail::format_number(a0));
+  }
+  if (!(a1 - a0 <= 2 * std::numbers::pi)) {
+    throw InvalidArgument("end_angle", "the sweep end_angle - start_angle must be at most 2 pi, got " + casteljau::detail::format_number(a1 - a0));
+  }
+  return AnyCurve(nurbs_ellipse_arc(O.points<2>()[0], Vector<double, 2>(r, 0.0), Vector<double, 2>(0.0, r), a0, a1));
+}
+
 thread_local int path_depth = 0;
 
 AnyCurve read_curve_object(const Json& j) {
   const Fields f(j, "a curve");
   const std::string type = string_from_json(f.required("type"), "type");
+  if (type == "circle") return read_circle(f);
+  if (type == "ellipse") return read_ellipse(f);
+  if (type == "arc") return read_arc(f);
   std::optional<AnyCurve> out;
   for_each_type(CurveTypes{}, [&]<template <class, int> class C>() {
     if (!out && type == Format<C>::name) out = Format<C>::read(f);
   });
   if (out) return std::move(*out);
-  throw InvalidArgument("type", "unknown curve type " + io::quoted(type) + " (known: " + join(curve_type_names()) + ")");
+  throw InvalidArgument("type", "unknown curve type " + io::quoted(type) + " (known: " + join(curve_type_names()) +
+                                    "; shorthands read as nurbs: " + join(shorthand_names) + ")");
 }
 
 /// Adds one path segment (any curve object of dimension D) on the break interval `onto`:

@@ -474,6 +474,93 @@ class CatmullRomTest(CliTest):
                  text='{"curve": {"type": "catmull_rom", "points": [[0, 0], [1, 1], [2, 0], [3, 1]]}, "t": [NaN]}')
 
 
+
+def reflected(P):
+    """The contract's phantom end points around P: 2 P_0 - P_1 first, 2 P_(N-1) - P_(N-2) last."""
+    first = [2 * a - b for a, b in zip(P[0], P[1])]
+    last = [2 * a - b for a, b in zip(P[-1], P[-2])]
+    return [first] + [list(p) for p in P] + [last]
+
+
+class CatmullRomReflectTest(CliTest):
+    def test_matches_the_pyramid_on_the_reflected_points(self):
+        # ends "reflect": the open curve of the N + 2 points with the phantoms, by the
+        # pyramid oracle above on that list (its parameter starts at its second point,
+        # P_0). The program forms a phantom in double (2 P_0 - P_1 rounded once): a few
+        # eps of the scale, below the tolerance of the pyramid test.
+        rng = random.Random(67)
+        for alpha in (0, 0.5, 1, 0.3):
+            for dim in (1, 2, 3):
+                for N in (2, 3, 4, rng.randint(5, 9)):
+                    P = [[rng.uniform(-5, 5) for _ in range(dim)] for _ in range(N)]
+                    c = catmull_rom(P, alpha=alpha, ends="reflect")
+                    tb = self.ok("to_bezier", {"curve": c})["curve"]
+                    breaks = tb["breaks"]
+                    self.assertEqual(len(tb["segments"]), N - 1)
+                    lo, hi = breaks[0], breaks[-1]
+                    self.assertEqual(lo, 0)
+                    ts = breaks + [rng.uniform(lo, hi) for _ in range(8)]
+                    r = self.ok("eval", {"curve": c, "t": ts, "derivatives": 1})
+                    scale = max(abs(x) for p in P for x in p)
+                    shortest = min(b - a for a, b in zip(breaks, breaks[1:]))
+                    E = reflected(P)
+                    for j, t in enumerate(ts):
+                        want = catmull_rom_oracle(E, alpha, False, t, 1)
+                        for k in range(2):
+                            got = r["points"][j] if k == 0 else r["derivatives"][0][j]
+                            tol = 1e-12 * scale * (1 + 1 / shortest) ** k
+                            for a, b in zip(got, want[k]):
+                                self.assertLessEqual(abs(a - b), tol, f"alpha={alpha} N={N} P={P} t={t} k={k}")
+
+    def test_runs_through_every_point(self):
+        # The breaks are the points' parameters: the curve is at points[j] there, exactly
+        # (the Bézier pieces' end points are the points).
+        P = [[0, 0], [1, 2], [3, 3], [4, 1], [6, 0], [7, 2], [8, 5], [9, 4]]  # a robot path through 8 waypoints
+        for alpha in (0, 0.5, 1):
+            c = catmull_rom(P, alpha=alpha, ends="reflect")
+            breaks = self.ok("to_bezier", {"curve": c})["curve"]["breaks"]
+            self.assertEqual(len(breaks), len(P))
+            pts = self.ok("eval", {"curve": c, "t": breaks})["points"]
+            self.assertEqual(pts, [[float(x) for x in p] for p in P])
+            # The knot intervals are |P_(i+1) - P_i|^alpha (the phantoms' intervals repeat
+            # the end ones and do not show in the domain).
+            want = [0.0]
+            for a, b in zip(P, P[1:]):
+                want.append(want[-1] + (math.dist(a, b) ** alpha if alpha else 1.0))
+            for a, b in zip(breaks, want):
+                self.assertAlmostEqual(a, b, delta=1e-14 * want[-1])
+        # The default (and "inner") is the contract's curve from points[1] to points[N-2].
+        inner = self.ok("eval", {"curve": catmull_rom(P, ends="inner"), "t": [0]})["points"][0]
+        self.assertEqual(inner, [1, 2])
+        self.assertEqual(self.ok("eval", {"curve": catmull_rom(P), "t": [0]})["points"][0], [1, 2])
+
+    def test_two_points_give_the_segment(self):
+        # Phantoms 2 P_0 - P_1 and 2 P_1 - P_0 on the line: the curve is the segment, at
+        # constant speed for alpha 0 (the tangents are P_1 - P_0 at both ends).
+        P = [[1, 1], [4, 5]]
+        r = self.ok("eval", {"curve": catmull_rom(P, alpha=0, ends="reflect"), "t": [0, 0.25, 0.5, 1], "derivatives": 1})
+        for t, p, v in zip([0, 0.25, 0.5, 1], r["points"], r["derivatives"][0]):
+            self.assertAlmostEqual(p[0], 1 + 3 * t, delta=1e-15)
+            self.assertAlmostEqual(p[1], 1 + 4 * t, delta=1e-15)
+            self.assertAlmostEqual(v[0], 3, delta=1e-14)
+            self.assertAlmostEqual(v[1], 4, delta=1e-14)
+
+    def test_errors(self):
+        P = [[0, 0], [1, 1], [2, 0], [3, 1]]
+        self.bad("eval", {"curve": catmull_rom(P, closed=True, ends="reflect"), "t": [0]}, "curve.ends", contains="open")
+        self.bad("eval", {"curve": catmull_rom(P, closed=True, ends="inner"), "t": [0]}, "curve.ends", contains="open")
+        self.bad("eval", {"curve": catmull_rom(P, ends="mirror"), "t": [0]}, "curve.ends", contains="reflect")
+        self.bad("eval", {"curve": catmull_rom(P, ends=1), "t": [0]}, "curve.ends")
+        self.bad("eval", {"curve": catmull_rom(P[:1], ends="reflect"), "t": [0]}, "curve.points", contains="at least 2")
+        self.bad("eval", {"curve": catmull_rom(P[:3], ends="inner"), "t": [0]}, "curve.points", contains="at least 4")
+        self.bad("eval", {"curve": catmull_rom([[0, 0], [0, 0], [1, 1]], ends="reflect"), "t": [0]}, "curve.points[1]",
+                 contains="equals points[0]")
+        self.bad("eval", {"curve": catmull_rom([[0, 0], [1, 1], [1, 1]], ends="reflect"), "t": [0]}, "curve.points[2]",
+                 contains="equals points[1]")
+        # A phantom point beyond the largest double is refused naming the points.
+        self.bad("eval", {"curve": catmull_rom([[1.5e308], [-1e308], [0]], ends="reflect", alpha=0), "t": [0]}, "curve.points",
+                 contains="phantom")
+
 if __name__ == "__main__":
     test_cli.BINARY = os.path.abspath(sys.argv.pop(1))
     unittest.main(verbosity=1)

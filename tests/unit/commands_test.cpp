@@ -44,7 +44,7 @@ const std::map<std::string, std::vector<Expected>> documented = {
     {"subdivide",
      {{"points", true}, {"scheme", true}, {"degree", false}, {"tension", false}, {"iterations", true}, {"closed", false}}},
     {"fit",
-     {{"points", true}, {"degree", true}, {"control_points", false}, {"tolerance", false}, {"parametrization", false},
+     {{"points", true}, {"degree", true}, {"control_points", false}, {"tolerance", false}, {"smoothing", false}, {"parametrization", false},
       {"start_derivative", false}, {"end_derivative", false}, {"closed", false}}},
     {"solve", {{"curve", true}, {"value", true}, {"axis", false}, {"direction", false}}},
     {"refine", {{"curve", true}, {"knots", true}}},
@@ -114,6 +114,9 @@ TEST(Commands, ListingTypesAndDefaults) {
   EXPECT_EQ(method["default"], "optimal");
   EXPECT_EQ(method["choices"], io::OrderedJson::array({"uniform", "subdivision", "optimal"}));
   EXPECT_EQ(field_entry(command_entry(listing, "fit"), "parametrization")["default"], "chord");
+  // fit's smoothing: a number or the choice "gcv".
+  EXPECT_EQ(field_entry(command_entry(listing, "fit"), "smoothing")["type"], "number|string");
+  EXPECT_EQ(field_entry(command_entry(listing, "fit"), "smoothing")["choices"], io::OrderedJson::array({"gcv"}));
   EXPECT_EQ(field_entry(command_entry(listing, "subdivide"), "tension")["default"], 1.0 / 16);
   EXPECT_EQ(field_entry(command_entry(listing, "subdivide"), "points")["type"], "point[]");
   const auto& curves = field_entry(command_entry(listing, "distance"), "curves");

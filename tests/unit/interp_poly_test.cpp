@@ -371,6 +371,36 @@ TEST(CatmullRom, Errors) {
   EXPECT_EQ(rest(1.0), P2(1, 1));
 }
 
+// ends reflect: the curve of the points with the phantoms 2 P_0 - P_1 and 2 P_(N-1) -
+// P_(N-2) around them (written out here), from P_0 to P_(N-1).
+TEST(CatmullRom, ReflectedEndsRunThroughEveryPoint) {
+  for (double alpha : {0.0, 0.5, 1.0}) {
+    const CatmullRom<double, 2> c(kCr, alpha, false, CatmullRomEnds::reflect);
+    std::vector<P2> E{kCr[0] + (kCr[0] - kCr[1])};
+    E.insert(E.end(), kCr.begin(), kCr.end());
+    E.push_back(kCr.back() + (kCr.back() - kCr[kCr.size() - 2]));
+    const CatmullRom<double, 2> inner(E, alpha);
+    ASSERT_EQ(c.bezier_pieces().size(), kCr.size() - 1);
+    EXPECT_EQ(c.bezier_pieces(), inner.bezier_pieces());
+    EXPECT_EQ(c.points(), kCr);
+    EXPECT_EQ(c.intervals().size(), kCr.size() + 1);
+    EXPECT_EQ(c(0.0), kCr[0]);
+    EXPECT_EQ(c(c.domain().hi), kCr.back());
+    // Reversal and transforms keep the ends.
+    EXPECT_EQ(c.reverse().ends(), CatmullRomEnds::reflect);
+    EXPECT_EQ(c.reverse().reverse(), c);
+    EXPECT_LE(test::max_coord_diff(c.reverse()(0.0), kCr.back()), 0.0);
+    EXPECT_EQ(c.transform(Affine<double, 2>::translate(V2(1, 1))).ends(), CatmullRomEnds::reflect);
+  }
+  // Two points: the segment.
+  const CatmullRom<double, 2> two({P2(0, 0), P2(3, 4)}, 0.5, false, CatmullRomEnds::reflect);
+  EXPECT_LE(test::max_coord_diff(two(two.domain().hi / 2), P2(1.5, 2)), 1e-15);
+  EXPECT_INVALID_ARGUMENT((CatmullRom<double, 2>({P2(0, 0)}, 0.5, false, CatmullRomEnds::reflect)), "points", "at least 2");
+  EXPECT_INVALID_ARGUMENT((CatmullRom<double, 2>(kCr, 0.5, true, CatmullRomEnds::reflect)), "ends", "open");
+  EXPECT_INVALID_ARGUMENT((CatmullRom<double, 2>({P2(0, 0), P2(0, 0), P2(1, 1)}, 0.5, false, CatmullRomEnds::reflect)), "points[1]",
+                          "equals points[0]");
+}
+
 // The Barry-Goldman pyramid [BarryGoldman88] of the segment from P_1 to P_2 with knots
 // t_0..t_3, in long double (whose range, to 1e4932, holds every product of the scaled
 // data below): the reference the scaled curves are checked against, written here.

@@ -486,4 +486,71 @@ TEST(Fit, NearSingularLeastSquaresNamesControlPoints) {
   EXPECT_INVALID_ARGUMENT(io::fit(Q, r), "control_points", "too many for the spread of the data parameters");
 }
 
+// Smoothing (algo/smoothing.hpp through io::fit). lambda = 0 is natural cubic
+// interpolation: the library's CubicSpline (a different code path: a tridiagonal solve
+// for the slopes) at the fit's uniform parameters.
+TEST(Fit, SmoothingAtZeroIsTheNaturalSpline) {
+  const io::PointList Q = noisy_blob(21);
+  io::AnyFitRequest r;
+  r.parametrization = Parametrization::uniform;
+  r.smoothing = 0.0;
+  const io::AnyFit f = io::fit(Q, r);
+  ASSERT_TRUE(f.smoothing && *f.smoothing == 0.0);
+  EXPECT_LE(f.max_error, 1e-12);
+  std::vector<double> t;
+  std::vector<P2> P;
+  for (std::size_t i = 0; i < Q.size(); ++i) {
+    t.push_back(static_cast<double>(i) / static_cast<double>(Q.size() - 1));
+    P.push_back(P2{{Q[i][0], Q[i][1]}});
+  }
+  const CubicSpline<double, 2> natural(t, P);
+  const auto& c = std::get<BSpline<double, 2>>(f.curve);
+  for (double u = 0; u <= 1; u += 1.0 / 1024) EXPECT_LE(test::max_coord_diff(c(u), natural(u)), 1e-11) << u;  // both to rounding of |P| ~ 1
+}
+
+// gcv: the lambda returned minimises the criterion formed here from the dense influence
+// matrix, whose column j is the smoothing fit of the unit vector e_j (1-D points at
+// uniform parameters, which do not depend on the values): GCV = (|y - A y|^2 / n) /
+// (1 - tr(A) / n)^2. Brent's bracket is 1e-5 wide: the neighbours 1e-4 away are no lower.
+TEST(Fit, SmoothingGcvMinimisesTheDenseCriterion) {
+  const std::size_t n = 25;
+  test::SplitMix64 rng(5);
+  io::PointList y{1, {}};
+  for (std::size_t i = 0; i < n; ++i) y.push_back(std::array<double, 1>{std::sin(0.3 * static_cast<double>(i)) + rng.uniform(-0.2, 0.2)});
+  io::AnyFitRequest r;
+  r.parametrization = Parametrization::uniform;
+  r.smoothing_gcv = true;
+  const io::AnyFit best = io::fit(y, r);
+  ASSERT_TRUE(best.smoothing);
+  const auto fitted = [&](const io::PointList& data, double lambda) {
+    io::AnyFitRequest q;
+    q.parametrization = Parametrization::uniform;
+    q.smoothing = lambda;
+    const auto& c = std::get<BSpline<double, 1>>(io::fit(data, q).curve);
+    std::vector<double> g;
+    for (std::size_t i = 0; i < n; ++i) g.push_back(c(static_cast<double>(i) / static_cast<double>(n - 1))[0]);
+    return g;
+  };
+  const auto gcv = [&](double lambda) {
+    double trace = 0, rss = 0;
+    for (std::size_t j = 0; j < n; ++j) {
+      io::PointList e{1, std::vector<double>(n, 0.0)};
+      e.coords[j] = 1;
+      trace += fitted(e, lambda)[j];
+    }
+    const std::vector<double> g = fitted(y, lambda);
+    for (std::size_t i = 0; i < n; ++i) rss += (y[i][0] - g[i]) * (y[i][0] - g[i]);
+    const double den = 1 - trace / static_cast<double>(n);
+    return rss / static_cast<double>(n) / (den * den);
+  };
+  const double l = *best.smoothing, g0 = gcv(l);
+  EXPECT_GT(l, 0);
+  EXPECT_LE(g0, gcv(l + 1e-4) * (1 + 1e-9));
+  if (l > 1e-4) {
+    EXPECT_LE(g0, gcv(l - 1e-4) * (1 + 1e-9));
+  }
+  // And no lambda of a coarse logarithmic scan over (0, n) does better.
+  for (double s = 1e-8; s < static_cast<double>(n); s *= 3) EXPECT_LE(g0, gcv(s) * (1 + 1e-9)) << s;
+}
+
 }  // namespace

@@ -107,7 +107,9 @@ struct Samples<CatmullRom> {
   static std::vector<CatmullRom<double, D>> make() {
     const std::vector<Point<double, D>> P{pt<D>(0, 0), pt<D>(1, 1), pt<D>(-0.3, 2.5), pt<D>(2, 0.1), pt<D>(3, 3)};
     return {CatmullRom<double, D>(P), CatmullRom<double, D>(P, 0.0, true), CatmullRom<double, D>(P, 1.0 / 3, false),
-            CatmullRom<double, D>({P[0], P[0], P[0], P[0]}, 0.0)};
+            CatmullRom<double, D>({P[0], P[0], P[0], P[0]}, 0.0),
+            CatmullRom<double, D>(P, 0.5, false, CatmullRomEnds::reflect),  // `ends` written and read back
+            CatmullRom<double, D>({P[1], P[2]}, 0.0, false, CatmullRomEnds::reflect)};
   }
 };
 
@@ -287,3 +289,30 @@ TEST(Pieces, BoundsOnPiecesUseTheDomainNotTheUnitInterval) {
 }
 
 }  // namespace
+
+// The shorthands are read as the nurbs of conics.hpp (the construction itself is tested in
+// knots_test.cpp against the NURBS Book): the same curve, and a nurbs is what is written.
+TEST(Registry, ShorthandsAreReadAsNurbs) {
+  const auto read = [](const char* text) { return io::curve_from_json(io::parse_json(text)); };
+  const io::AnyCurve c = read(R"({"type": "circle", "center": [1, 2], "radius": 3})");
+  using N2 = Nurbs<double, 2>;
+  ASSERT_TRUE(std::holds_alternative<N2>(c));
+  EXPECT_EQ(std::get<N2>(c), nurbs_circle(P2(1.0, 2.0), 3.0));
+  EXPECT_EQ(io::type_name(c), "nurbs");
+  EXPECT_EQ(io::to_json(c)["type"], "nurbs");
+  const io::AnyCurve a = read(R"({"type": "arc", "center": [0, 0], "radius": 2, "start_angle": -1, "end_angle": 2})");
+  EXPECT_EQ(std::get<N2>(a), nurbs_arc(P2(0.0, 0.0), 2.0, -1.0, 2.0));
+  const io::AnyCurve e = read(R"({"type": "ellipse", "center": [0, 0], "radii": [2, 1], "dim": 2})");
+  EXPECT_EQ(std::get<N2>(e), nurbs_ellipse(P2(0.0, 0.0), V2(2.0, 0.0), V2(0.0, 1.0)));
+  // 3-D with a normal along z: the plane circle lifted to the center's height.
+  const io::AnyCurve s = read(R"({"type": "circle", "center": [0, 0, 5], "radius": 1, "normal": [0, 0, 2]})");
+  const auto& n = std::get<Nurbs<double, 3>>(s);
+  for (double t : {0.0, 0.1, 0.3, 0.5, 0.9}) {
+    const Point<double, 3> q = n(t);
+    EXPECT_EQ(q[2], 5.0);
+    EXPECT_NEAR(std::hypot(q[0], q[1]), 1.0, 4e-16);  // on the circle to rounding
+  }
+  EXPECT_INVALID_ARGUMENT(read(R"({"type": "circle", "center": [0, 0], "radius": 0})"), "radius", "> 0");
+  EXPECT_INVALID_ARGUMENT(read(R"({"type": "arc", "center": [0, 0], "radius": 1, "start_angle": 0, "end_angle": 7})"), "end_angle", "2 pi");
+  EXPECT_INVALID_ARGUMENT(read(R"({"type": "ellipse", "center": [0, 0], "radii": [1, 2], "weights": [1]})"), "weights", "unknown field");
+}

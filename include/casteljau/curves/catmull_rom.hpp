@@ -12,6 +12,12 @@
 
 namespace casteljau {
 
+/// How an open Catmull-Rom curve treats its end points: `inner` (the contract's default)
+/// runs from P_1 to P_(N-2), the end points only shaping the end tangents; `reflect` first
+/// adds the phantom points 2 P_0 - P_1 before and 2 P_(N-1) - P_(N-2) after, so that the
+/// curve runs through every point, from P_0 to P_(N-1).
+enum class CatmullRomEnds { inner, reflect };
+
 /// The Catmull-Rom spline through points P_0..P_(N-1) with the parametrisation of
 /// docs/cli.md: knot intervals d_i = |P_(i+1) - P_i|^alpha (1 for alpha = 0), knots
 /// s_0 = 0, s_(i+1) = s_i + d_i.
@@ -20,6 +26,11 @@ namespace casteljau {
 ///   end tangents.
 /// - Closed (N >= 3): the points wrap (P_N = P_0); segment j runs from P_j to P_(j+1) on
 ///   [s_j, s_(j+1)], domain [0, s_N]; the curve closes with C1 continuity.
+/// - Open with ends `reflect` (N >= 2): the open curve of the N + 2 points P_(-1) =
+///   2 P_0 - P_1, P_0, ..., P_(N-1), P_N = 2 P_(N-1) - P_(N-2) (knots of those, s_0 at the
+///   phantom P_(-1)): N - 1 segments from P_0 to P_(N-1), the parameter starting at P_0.
+///   Its end tangents are those of the parabola through the reflected triple (for alpha 0,
+///   P_1 - P_0 at the start).
 /// Each segment is the cubic Hermite interpolant of its end points with the tangent of the
 /// non-uniform Catmull-Rom spline, which is the derivative of the Barry-Goldman pyramid:
 /// m_i = (P_i - P_(i-1)) / d_(i-1) - (P_(i+1) - P_(i-1)) / (d_(i-1) + d_i) + (P_(i+1) - P_i) / d_i,
@@ -32,7 +43,7 @@ namespace casteljau {
 /// derivatives (with respect to the parameter s) run on those pieces, so the right
 /// segment answers at a joint and the end segments extrapolate.
 /// Invariants (checked in the constructor): alpha finite in [0, 1] ("alpha"), enough points
-/// ("points"), finite coordinates ("points[i][d]"), for alpha > 0 no two consecutive
+/// ("points"), ends `reflect` only when open ("ends"), finite coordinates ("points[i][d]"), for alpha > 0 no two consecutive
 /// points equal (a zero knot interval, "points[i]"), and a representable parameter: every
 /// interval a normal double, the knots finite, the Bézier points finite ("points").
 template <class T, int D>
@@ -43,14 +54,21 @@ class CatmullRom {
   using VectorType = Vector<T, D>;
   static constexpr int dimension = D;
 
-  explicit CatmullRom(std::vector<PointType> points, T alpha = T(0.5), bool closed = false)
-      : P_(std::move(points)), alpha_(alpha), closed_(closed), d_(intervals_of(P_, alpha_, closed_)), pieces_(build(P_, d_, closed_)) {}
+  explicit CatmullRom(std::vector<PointType> points, T alpha = T(0.5), bool closed = false, CatmullRomEnds ends = CatmullRomEnds::inner)
+      : P_(std::move(points)),
+        alpha_(alpha),
+        closed_(closed),
+        ends_(ends),
+        d_(intervals_of(P_, alpha_, closed_, ends_)),
+        pieces_(build(P_, d_, closed_, ends_)) {}
 
+  /// The points given (without the phantom points of ends `reflect`).
   [[nodiscard]] const std::vector<PointType>& points() const { return P_; }
   [[nodiscard]] T alpha() const { return alpha_; }
   [[nodiscard]] bool closed() const { return closed_; }
+  [[nodiscard]] CatmullRomEnds ends() const { return ends_; }
   /// The knot intervals d_i: N - 1 of them when open, N when closed (d_(N-1) from P_(N-1)
-  /// back to P_0).
+  /// back to P_0), N + 1 with ends `reflect` (the first and last to the phantom points).
   [[nodiscard]] const std::vector<T>& intervals() const { return d_; }
   /// Whether the intervals are |P_(i+1) - P_i|^alpha of the points, to 8 eps relative (true
   /// unless the curve is the image under a map that is not a similarity: transform keeps
@@ -96,7 +114,7 @@ class CatmullRom {
       Q.assign(P_.rbegin(), P_.rend());
       e.assign(d_.rbegin(), d_.rend());
     }
-    return CatmullRom(std::move(Q), alpha_, closed_, std::move(e), follow_);
+    return CatmullRom(std::move(Q), alpha_, closed_, ends_, std::move(e), follow_);
   }
 
   /// The exact image under an affine map: the mapped points with the same knot intervals
@@ -105,25 +123,31 @@ class CatmullRom {
   /// (knots_follow_points() is false): chordal and centripetal parametrisations commute
   /// only with similarities.
   [[nodiscard]] CatmullRom transform(const Affine<T, D>& m) const {
-    return CatmullRom(mapped_points(m, P_), alpha_, closed_, d_, follow_);
+    return CatmullRom(mapped_points(m, P_), alpha_, closed_, ends_, d_, follow_);
   }
 
   /// The box of the Bézier control points: it contains the curve over its domain.
   [[nodiscard]] Box<T, D> control_bounds() const { return pieces_.control_bounds(); }
 
   friend bool operator==(const CatmullRom& a, const CatmullRom& b) {
-    return a.P_ == b.P_ && a.alpha_ == b.alpha_ && a.closed_ == b.closed_ && a.d_ == b.d_ && a.follow_ == b.follow_;
+    return a.P_ == b.P_ && a.alpha_ == b.alpha_ && a.closed_ == b.closed_ && a.ends_ == b.ends_ && a.d_ == b.d_ && a.follow_ == b.follow_;
   }
 
  private:
-  CatmullRom(std::vector<PointType> points, T alpha, bool closed, std::vector<T> intervals, bool follow)
-      : P_(std::move(points)), alpha_(alpha), closed_(closed), d_(std::move(intervals)), follow_(follow), pieces_(build(P_, d_, closed_)) {
+  CatmullRom(std::vector<PointType> points, T alpha, bool closed, CatmullRomEnds ends, std::vector<T> intervals, bool follow)
+      : P_(std::move(points)),
+        alpha_(alpha),
+        closed_(closed),
+        ends_(ends),
+        d_(std::move(intervals)),
+        follow_(follow),
+        pieces_(build(P_, d_, closed_, ends_)) {
     if (follow_) {
       // Whether the points still give these intervals, to rounding (8 eps relative: a
       // rotation or uniform scaling moves each distance by a few ulps); not when the mapped
       // points' own intervals are not doubles (the kept ones are).
       try {
-        const std::vector<T> e = intervals_of(P_, alpha_, closed_);
+        const std::vector<T> e = intervals_of(P_, alpha_, closed_, ends_);
         for (std::size_t i = 0; i < e.size(); ++i)
           follow_ = follow_ && std::abs(e[i] - d_[i]) <= 8 * std::numeric_limits<T>::epsilon() * d_[i];
       } catch (const InvalidArgument&) {
@@ -167,23 +191,67 @@ class CatmullRom {
   /// length itself is not a normal double. An interval that overflows, or falls below
   /// the normal range (where it keeps fewer than the double's 53 bits, and its ratios to
   /// the others, which shape the curve, are no longer exact) is refused naming "points".
-  static std::vector<T> intervals_of(const std::vector<PointType>& P, T alpha, bool closed) {
+  /// The name of point i of the working list (working_points) in messages: with ends
+  /// `reflect` index i is the given point i - 1, or a phantom point.
+  static std::string point_name(std::size_t i, std::size_t count, CatmullRomEnds ends) {
+    if (ends == CatmullRomEnds::inner) return "points[" + std::to_string(i) + "]";
+    if (i == 0) return "the phantom point 2 points[0] - points[1]";
+    if (i + 1 == count) {
+      return "the phantom point 2 points[" + std::to_string(count - 3) + "] - points[" + std::to_string(count - 4) + "]";
+    }
+    return "points[" + std::to_string(i - 1) + "]";
+  }
+
+  /// The points the pieces are built on: the given ones, with the phantom end points
+  /// 2 P_0 - P_1 and 2 P_(N-1) - P_(N-2) around them for ends `reflect` (needs N >= 2).
+  /// Throws InvalidArgument("points") when a phantom point overflows.
+  static std::vector<PointType> working_points(const std::vector<PointType>& P, CatmullRomEnds ends) {
+    if (ends == CatmullRomEnds::inner) return P;
+    const std::size_t N = P.size();
+    std::vector<PointType> E;
+    E.reserve(N + 2);
+    E.push_back(P[0] + (P[0] - P[1]));
+    E.insert(E.end(), P.begin(), P.end());
+    E.push_back(P[N - 1] + (P[N - 1] - P[N - 2]));
+    for (const std::size_t i : {std::size_t(0), N + 1}) {
+      if (!detail::all_finite_point(E[i])) {
+        throw InvalidArgument("points", point_name(i, N + 2, ends) + " overflows a double: scale the points, or use ends 'inner'");
+      }
+    }
+    return E;
+  }
+
+  static std::vector<T> intervals_of(const std::vector<PointType>& given, T alpha, bool closed, CatmullRomEnds ends) {
     require_finite(alpha, "alpha");
     if (!(alpha >= 0 && alpha <= 1)) throw InvalidArgument("alpha", "alpha must lie in [0, 1], got " + detail::format_number(alpha));
-    const std::size_t need = closed ? 3 : 4;
-    if (P.size() < need) {
-      throw InvalidArgument("points", std::string("a") + (closed ? " closed" : "n open") + " catmull_rom curve needs at least " +
-                                          std::to_string(need) + " points, got " + std::to_string(P.size()));
+    const bool reflect = ends == CatmullRomEnds::reflect;
+    if (closed && reflect) throw InvalidArgument("ends", "'reflect' is for open curves: a closed catmull_rom has no end points");
+    const std::size_t need = closed ? 3 : reflect ? 2 : 4;
+    if (given.size() < need) {
+      throw InvalidArgument("points", std::string("a") + (closed ? " closed" : "n open") + " catmull_rom curve" +
+                                          (reflect ? " with ends 'reflect'" : "") + " needs at least " + std::to_string(need) +
+                                          " points, got " + std::to_string(given.size()));
     }
-    for (std::size_t i = 0; i < P.size(); ++i) require_finite_point(P[i], "points[" + std::to_string(i) + "]");
+    for (std::size_t i = 0; i < given.size(); ++i) require_finite_point(given[i], "points[" + std::to_string(i) + "]");
+    if (reflect && alpha > 0) {  // the given points first: a phantom point equals its neighbour only when they do
+      for (std::size_t i = 1; i < given.size(); ++i) {
+        if (given[i] == given[i - 1]) {
+          throw InvalidArgument("points[" + std::to_string(i) + "]", "equals points[" + std::to_string(i - 1) +
+                                                                         "]: with alpha > 0 consecutive points must differ (a zero knot interval)");
+        }
+      }
+    }
+    const std::vector<PointType> P = working_points(given, ends);
+    const auto name = [&](std::size_t i) { return point_name(i, P.size(), ends); };
     const std::size_t N = P.size(), m = closed ? N : N - 1;
     std::vector<T> d(m);
     for (std::size_t i = 0; i < m; ++i) {
       const std::size_t next = (i + 1) % N;
       const Length len = length_of(P[i], P[next]);
       if (len.scale == 0 && alpha > 0) {
-        throw InvalidArgument("points[" + std::to_string(next) + "]",
-                              "equals points[" + std::to_string(i) + "]: with alpha > 0 consecutive points must differ (a zero knot interval)" +
+        throw InvalidArgument(reflect ? std::string("points") : "points[" + std::to_string(next) + "]",
+                              (reflect ? name(next) + " equals " : std::string("equals ")) + name(i) +
+                                  ": with alpha > 0 consecutive points must differ (a zero knot interval)" +
                                   std::string(closed && next == 0 ? " (the curve is closed: the last point is followed by the first)" : ""));
       }
       if (alpha == 0) {
@@ -200,8 +268,7 @@ class CatmullRom {
       }
       if (!std::isfinite(d[i]) || d[i] < std::numeric_limits<T>::min()) {
         const bool over = !std::isfinite(d[i]) || d[i] > 1;
-        throw InvalidArgument("points", "the knot interval |points[" + std::to_string(next) + "] - points[" + std::to_string(i) +
-                                            "]|^alpha (alpha " + detail::format_number(alpha) + ") " +
+        throw InvalidArgument("points", "the knot interval |" + name(next) + " - " + name(i) + "|^alpha (alpha " + detail::format_number(alpha) + ") " +
                                             (over ? "overflows a double (above " + detail::format_number(std::numeric_limits<T>::max()) + ")"
                                                   : "= " + detail::format_number(d[i]) + " underflows a double (below the normal range, " +
                                                         detail::format_number(std::numeric_limits<T>::min()) +
@@ -227,7 +294,9 @@ class CatmullRom {
   /// (p, n the neighbours), w = 1 / (1 + d_p / d_a) and v likewise. For alpha = 0 these are
   /// (P_b - P_p) / 2 and (P_n - P_a) / 2. Throws InvalidArgument("points") when the knots
   /// sum beyond the largest double or a control point overflows.
-  static Pieces<T, D> build(const std::vector<PointType>& P, const std::vector<T>& d, bool closed) {
+  static Pieces<T, D> build(const std::vector<PointType>& given, const std::vector<T>& d, bool closed, CatmullRomEnds ends) {
+    const std::vector<PointType> P = working_points(given, ends);
+    const auto name = [&](std::size_t i) { return point_name(i, P.size(), ends); };
     const std::size_t N = P.size();
     std::vector<BezierPiece<T, D>> segs;
     std::vector<T> breaks{T(0)};
@@ -244,18 +313,18 @@ class CatmullRom {
       const T third = 1 / (3 * sigma);
       const PointType c1 = P[a] + third * out, c2 = P[b] - third * in;
       if (!detail::all_finite_point(c1) || !detail::all_finite_point(c2)) {
-        throw InvalidArgument("points", "the Bézier control points of the segment from points[" + std::to_string(a) + "] to points[" +
-                                            std::to_string(b) + "] overflow a double");
+        throw InvalidArgument("points", "the Bézier control points of the segment from " + name(a) + " to " + name(b) + " overflow a double");
       }
       segs.emplace_back(Bezier<T, D>({P[a], c1, c2, P[b]}));
       const T next = breaks.back() + da;
       if (!std::isfinite(next)) {
-        throw InvalidArgument("points", "the knots s_i (sums of |P_(i+1) - P_i|^alpha) exceed the largest double at points[" +
-                                            std::to_string(b) + "]: the curve's parameter cannot be represented");
+        throw InvalidArgument("points", "the knots s_i (sums of |P_(i+1) - P_i|^alpha) exceed the largest double at " + name(b) +
+                                            ": the curve's parameter cannot be represented");
       }
       if (!(next > breaks.back())) {
-        throw InvalidArgument("points[" + std::to_string(b) + "]", "the knot interval " + detail::format_number(da) +
-                                                                       " vanishes next to the knot " + detail::format_number(breaks.back()));
+        throw InvalidArgument(ends == CatmullRomEnds::reflect ? std::string("points") : name(b),
+                              (ends == CatmullRomEnds::reflect ? "at " + name(b) + ", " : std::string()) + "the knot interval " +
+                                  detail::format_number(da) + " vanishes next to the knot " + detail::format_number(breaks.back()));
       }
       breaks.push_back(next);
     };
@@ -270,6 +339,7 @@ class CatmullRom {
   std::vector<PointType> P_;
   T alpha_;
   bool closed_;
+  CatmullRomEnds ends_;
   std::vector<T> d_;
   bool follow_ = true;
   Pieces<T, D> pieces_;

@@ -22,8 +22,8 @@ namespace casteljau {
 /// each is the rational quadratic Bézier with end points on the curve, middle point
 /// O + (cos(mid) X + sin(mid) Y) / cos(d / 2) (where the end tangents meet) and middle
 /// weight cos(d / 2); knots 0 (3 times), 1/k, 1/k, .., 1 (3 times). Exact: the points lie
-/// on the conic up to rounding (a few eps of |O| + |X| + |Y|); the parametrization is not
-/// the angle (it is rational). Errors: "start_angle"/"end_angle" non-finite, "end_angle"
+/// on the conic up to rounding (a few eps of |O| + |X| + |Y|); a full turn ends exactly at
+/// its start point; the parametrization is not the angle (it is rational). Errors: "start_angle"/"end_angle" non-finite, "end_angle"
 /// for a sweep not in (0, 2 pi], "axes" for non-finite or dependent X, Y.
 template <class T, int D>
 Nurbs<T, D> nurbs_ellipse_arc(const Point<T, D>& O, const Vector<T, D>& X, const Vector<T, D>& Y, T start, T end) {
@@ -67,6 +67,9 @@ Nurbs<T, D> nurbs_ellipse_arc(const Point<T, D>& O, const Vector<T, D>& X, const
       U.push_back(u);
     }
   }
+  // A full turn closes exactly (cos and sin of start + 2 pi in floating point miss the
+  // start point by an ulp or two).
+  if (sweep == two_pi) P.back() = P.front();
   U.insert(U.end(), {T(1), T(1), T(1)});
   return Nurbs<T, D>(2, std::move(U), std::move(P), std::move(w));
 }

@@ -30,10 +30,12 @@ enum class FieldType {
   points,   ///< a polygon: an array of points of one dimension 1..max_dimension, at least one
   curve,    ///< a curve object (curve JSON)
   curves,   ///< an array of curve objects, between min_count and max_count of them
+  number_or_choice,  ///< a finite number, or a string among `choices` (read by Args::choice)
 };
 
 /// The name of a field type in the API listing and in help: "number", "integer",
-/// "boolean", "string", "number[]", "point", "vector", "point[]", "curve", "curve[]".
+/// "boolean", "string", "number[]", "point", "vector", "point[]", "curve", "curve[]",
+/// "number|string".
 [[nodiscard]] std::string_view field_type_name(FieldType t);
 
 /// One field of a request.
@@ -74,6 +76,8 @@ class Args {
   [[nodiscard]] int integer(std::string_view name) const;
   [[nodiscard]] bool boolean(std::string_view name) const;
   [[nodiscard]] const std::string& string(std::string_view name) const;
+  /// number_or_choice: the string given, or empty when a number was (read it by number()).
+  [[nodiscard]] const std::string& choice(std::string_view name) const;
   /// number[], point, vector.
   [[nodiscard]] const std::vector<double>& numbers(std::string_view name) const;
   [[nodiscard]] std::optional<std::vector<double>> optional_numbers(std::string_view name) const;

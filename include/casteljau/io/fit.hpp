@@ -18,11 +18,16 @@ struct AnyFitRequest {
   std::optional<std::vector<double>> start_derivative;
   std::optional<std::vector<double>> end_derivative;
   bool closed = false;
+  /// A smoothing spline (algo/smoothing.hpp) instead of control_points / tolerance:
+  /// lambda >= 0, or chosen by generalised cross-validation (smoothing_gcv).
+  std::optional<double> smoothing;
+  bool smoothing_gcv = false;
 };
 
 struct AnyFit {
   AnyCurve curve;
   double max_error = 0;
+  std::optional<double> smoothing;  ///< the lambda of a smoothing fit (chosen, for gcv)
 };
 
 /// Fits a bspline to the points (dimension 1..max_dimension) as casteljau::fit does.

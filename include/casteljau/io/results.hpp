@@ -135,7 +135,7 @@ struct Describe<AnyKnotRemoval> {
 template <>
 struct Describe<AnyFit> {
   using S = AnyFit;
-  static constexpr auto fields = std::tuple{field("curve", &S::curve), field("max_error", &S::max_error)};
+  static constexpr auto fields = std::tuple{field("curve", &S::curve), field("max_error", &S::max_error), field("smoothing", &S::smoothing)};
 };
 
 template <>
