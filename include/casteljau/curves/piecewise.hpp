@@ -104,8 +104,6 @@ class PiecewiseCurve {
 
   /// Segment i's own parameter at the curve parameter u.
   [[nodiscard]] T local_parameter(std::size_t i, T u) const { return map_parameter(u, segment_domain(i), own_domain(i)); }
-  /// The same as lift(i, t) (its older name).
-  [[nodiscard]] T global_parameter(std::size_t i, T t) const { return lift(i, t); }
 
   // The piecewise algebra: every query is a kernel on one piece (in the piece's own
   // parameter) plus these combinators, which are the only places where a piece's
