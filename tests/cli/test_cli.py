@@ -40,7 +40,8 @@ def run(command, request=None, args=(), text=None):
 # "Not yet served").
 CONTRACT_COMMANDS = ("eval", "split", "elevate", "insert_knot", "remove_knot", "subdivide", "to_bezier",
                      "bounds", "length", "param_at_length", "features", "distance", "area", "project",
-                     "intersect", "flatten", "fit", "render", "solve", "refine", "to_bspline", "reduce", "basis", "frames")
+                     "intersect", "flatten", "fit", "render", "solve", "refine", "to_bspline", "reduce", "basis", "frames",
+                     "to_quadratic")
 
 
 def supported_commands():

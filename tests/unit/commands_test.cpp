@@ -53,6 +53,7 @@ const std::map<std::string, std::vector<Expected>> documented = {
     {"basis",
      {{"kind", true}, {"degree", false}, {"knots", false}, {"params", false}, {"tension", false}, {"t", true}, {"derivatives", false}}},
     {"frames", {{"curve", true}, {"t", true}, {"method", false}, {"initial_normal", false}}},
+    {"to_quadratic", {{"curve", true}, {"tolerance", true}}},
 };
 
 const io::OrderedJson& command_entry(const io::OrderedJson& listing, const std::string& name) {
