@@ -145,18 +145,19 @@ TEST(MaxDeviation, FindsAPeakBetweenSamples) {
 /// The largest distance from the points a to the polyline b (brute force).
 template <int D>
 double to_polyline(const std::vector<Point<double, D>>& a, const std::vector<Point<double, D>>& b) {
-  double worst = 0;
+  double worst = 0;  // squared distances (moderate coordinates: no overflow)
   for (const auto& p : a) {
     double best = INFINITY;
     for (std::size_t j = 0; j + 1 < b.size(); ++j) {
       const Vector<double, D> e = b[j + 1] - b[j];
       const double ee = dot(e, e);
       const double u = ee > 0 ? std::clamp(dot(p - b[j], e) / ee, 0.0, 1.0) : 0.0;
-      best = std::min(best, norm(p - (b[j] + u * e)));
+      const Vector<double, D> r = p - (b[j] + u * e);
+      best = std::min(best, dot(r, r));
     }
     worst = std::max(worst, best);
   }
-  return worst;
+  return std::sqrt(worst);
 }
 
 /// Checks a chain against the curve: breaks, two-sided distance within tol plus `slack`,
