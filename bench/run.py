@@ -208,6 +208,7 @@ def w5_table(rows):
 
 def w3_tables(rows):
     """One table per dataset; the goals of issue 8 for casteljau/optimal."""
+    rows = {n: b for n, b in rows.items() if n.startswith("W3/")}  # the W11 rows of the same program apart
     out_text, out_md, goals = "", "", []
     sets = []
     for name in rows:
@@ -245,6 +246,34 @@ def w3_tables(rows):
                          f"{time_ratio:.2f}x the time of {uniform_name.split('/', 1)[1]} (goal <= {W3_GOAL_VS_UNIFORM}), "
                          f"{over} curves over the tolerance (goal 0): " + ("MET" if ok else "NOT MET"))
     return out_text, out_md, goals
+
+
+def w11_table(rows):
+    """W11, quadratic approximation: casteljau's rows (the W3 program) and cu2qu's (bench/w11_cu2qu.py)
+    side by side per dataset and tolerance; goals: 0 over tolerance, fewer segments and less time
+    than cu2qu."""
+    headers = ["dataset/tolerance", "library", "ms", "us/curve", "segments", "x cu2qu", "over tol", "max deviation", "time x cu2qu"]
+    out, goals = [], []
+    keys = sorted({n.split("/", 3)[3] for n in rows if n.startswith("W11/") and "/quadratic/" in n})
+    for key in keys:
+        peer = rows.get(f"W11/cu2qu/quadratic/{key}")
+        for lib in ("casteljau", "cu2qu"):
+            b = rows.get(f"W11/{lib}/quadratic/{key}")
+            if not b:
+                continue
+            curves = b.get("curves", 0) or 1
+            ms = to_ms(b)
+            out.append([key, lib, f"{ms:.1f}", f"{ms * 1e3 / curves:.2f}", f"{b.get('segments', 0):.0f}",
+                        f"{b['segments'] / peer['segments']:.3f}" if peer else "-", f"{b.get('over_tolerance', 0):.0f}",
+                        f"{b.get('max_deviation', 0):.4g}", fmt_ratio(ms / to_ms(peer)) if peer else "-"])
+        ours = rows.get(f"W11/casteljau/quadratic/{key}")
+        if ours and peer:
+            ok = ours["segments"] < peer["segments"] and to_ms(ours) < to_ms(peer) and int(ours.get("over_tolerance", 0)) == 0
+            goals.append(f"W11 quadratic {key}: {ours['segments'] / peer['segments']:.3f}x cu2qu's segments, "
+                         f"{to_ms(ours) / to_ms(peer):.2f}x its time, {int(ours.get('over_tolerance', 0))} over the tolerance "
+                         "(goal: fewer, faster, 0): " + ("MET" if ok else "NOT MET"))
+    text, md = table(headers, out)
+    return text, md, goals
 
 
 def w4_table(rows):
@@ -330,6 +359,8 @@ def main():
 
     context = None
     soa_ms = {}
+    w11_rows = {}
+    os.environ["CASTELJAU_W11_DUMP"] = res_dir  # the W3 program writes W11's datasets there
     for label, exe_name in (("-O3 -march=native", "casteljau_bench_w1_native"), ("-O2 generic x86-64", "casteljau_bench_w1_generic")):
         exe = os.path.join(bench_dir, exe_name)
         if not os.path.exists(exe):
@@ -382,6 +413,24 @@ def main():
         else:
             text_all += f"\n{title}\n{text}"
             md_all += f"\n### {title}\n\n{md}"
+        goals += g
+        if exe_name == "casteljau_bench_w3":
+            w11_rows = {n: b for n, b in rows.items() if n.startswith("W11/")}
+
+    # W11 (quadratic half): fonttools' cu2qu on the datasets the W3 program wrote
+    # (CASTELJAU_W11_DUMP, set by main() before running it), beside casteljau's rows.
+    if w11_rows:
+        w11_json = os.path.join(res_dir, "W11.json")
+        subprocess.run(["/usr/bin/python3", os.path.join(os.path.dirname(os.path.abspath(__file__)), "w11_cu2qu.py"), res_dir, w11_json,
+                        "--repetitions", str(args.repetitions)], check=False)
+        if os.path.exists(w11_json):
+            with open(w11_json) as f:
+                for b in json.load(f)["benchmarks"]:
+                    w11_rows[b["name"]] = b
+        text, md, g = w11_table(w11_rows)
+        title = "W11, quadratic approximation of W3's datasets at 1e-3 and 1e-1 of the unit (box 100, em 2048)"
+        text_all += f"\n{title}\n{text}"
+        md_all += f"\n### {title}\n\n{md}"
         goals += g
 
     if context:

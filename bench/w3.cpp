@@ -1,4 +1,5 @@
-// W3 of docs/performance.md: flattening at tolerance 0.1 of 10,000 random cubics
+// W3 and the quadratic half of W11 of docs/performance.md.
+// W3: flattening at tolerance 0.1 of 10,000 random cubics
 // (dataset `random`) and of DejaVuSans's quadratics elevated to cubics (`glyphs`), against
 // cairo (cairo_copy_path_flat) and OCCT (GCPnts_TangentialDeflection, GCPnts_QuasiUniformDeflection)
 // in the same run, with the workload's near-optimal count. Names W3/<library>/<method>/<dataset>;
@@ -12,6 +13,8 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
+#include <tuple>
 #include <functional>
 #include <map>
 #include <numbers>
@@ -21,6 +24,7 @@
 #include <vector>
 
 #include "casteljau/algo/flatten.hpp"
+#include "casteljau/algo/to_quadratic.hpp"
 #include "casteljau/curves/bezier.hpp"
 #include "common.hpp"
 
@@ -468,6 +472,145 @@ void occt_quasi_uniform(const std::vector<Cubic>& cs, Polylines& out) {
 }
 #endif
 
+// ---- W11, quadratic approximation ------------------------------------------------------
+// W3's datasets at tolerance 1e-3 and 1e-1 of the unit (random: the box, 100; glyphs: the
+// em, 2048). Names W11/casteljau/quadratic/<dataset>/<1e-3|1e-1>; counters segments,
+// over_tolerance (curves whose measured deviation exceeds 1.0001 x tol), max_deviation.
+// The same measure is written in bench/w11_cu2qu.py for fonttools' cu2qu.
+
+using Quad = std::array<P2, 3>;
+
+P2 quad_point(const Quad& q, double s) {
+  const double u = 1 - s;
+  return P2{u * u * q[0][0] + 2 * u * s * q[1][0] + s * s * q[2][0], u * u * q[0][1] + 2 * u * s * q[1][1] + s * s * q[2][1]};
+}
+
+/// Newton on (x(s) - p) . x'(s) = 0 from s, clamped to [0, 1], for x = f (point, first and
+/// second derivative at s); returns the distance at the end.
+template <class F>
+double refine_distance(const F& f, const P2& p, double s) {
+  for (int it = 0; it < 8; ++it) {
+    const auto [x, d1, d2] = f(s);
+    const double rx = x[0] - p[0], ry = x[1] - p[1];
+    const double g = rx * d1[0] + ry * d1[1];
+    double gp = d1[0] * d1[0] + d1[1] * d1[1] + rx * d2[0] + ry * d2[1];
+    if (!(gp > 0)) gp = d1[0] * d1[0] + d1[1] * d1[1];
+    if (!(gp > 0)) break;
+    s = std::clamp(s - g / gp, 0.0, 1.0);
+  }
+  const P2 x = std::get<0>(f(s));
+  return std::hypot(x[0] - p[0], x[1] - p[1]);
+}
+
+/// The two-sided distance between a cubic and its chain of quadratics: the cubic at
+/// S = 64 + 16 k parameters (k segments) to the chain, each quadratic at 64 parameters to
+/// the cubic; each distance from the nearest of 33 (resp. S) samples refined by Newton's
+/// method on that curve.
+double quad_deviation(const Cubic& c, const Quad* q, std::size_t k) {
+  const std::size_t S = 64 + 16 * k;
+  const auto qf = [](const Quad& a) {
+    return [&a](double s) {
+      const P2 x = quad_point(a, s);
+      const P2 d1{2 * ((1 - s) * (a[1][0] - a[0][0]) + s * (a[2][0] - a[1][0])), 2 * ((1 - s) * (a[1][1] - a[0][1]) + s * (a[2][1] - a[1][1]))};
+      const P2 d2{2 * (a[0][0] - 2 * a[1][0] + a[2][0]), 2 * (a[0][1] - 2 * a[1][1] + a[2][1])};
+      return std::tuple{x, d1, d2};
+    };
+  };
+  const auto cf = [&c](double s) {
+    const double u = 1 - s;
+    const P2 x = value(c, s);
+    P2 d1, d2;
+    for (int i = 0; i < 2; ++i) {
+      d1[i] = 3 * (u * u * (c[1][i] - c[0][i]) + 2 * u * s * (c[2][i] - c[1][i]) + s * s * (c[3][i] - c[2][i]));
+      d2[i] = 6 * (u * (c[2][i] - 2 * c[1][i] + c[0][i]) + s * (c[3][i] - 2 * c[2][i] + c[1][i]));
+    }
+    return std::tuple{x, d1, d2};
+  };
+  double worst = 0;
+  std::vector<P2> cs(S);
+  for (std::size_t j = 0; j < S; ++j) cs[j] = value(c, static_cast<double>(j) / static_cast<double>(S - 1));
+  for (const P2& p : cs) {
+    double best = INFINITY;
+    for (std::size_t i = 0; i < k; ++i) {
+      double b2 = INFINITY, at = 0;
+      for (int j = 0; j <= 32; ++j) {
+        const P2 x = quad_point(q[i], j / 32.0);
+        const double d2 = (x[0] - p[0]) * (x[0] - p[0]) + (x[1] - p[1]) * (x[1] - p[1]);
+        if (d2 < b2) b2 = d2, at = j / 32.0;
+      }
+      best = std::min(best, refine_distance(qf(q[i]), p, at));
+    }
+    worst = std::max(worst, best);
+  }
+  for (std::size_t i = 0; i < k; ++i) {
+    for (int j = 0; j <= 64; ++j) {
+      const P2 p = quad_point(q[i], j / 64.0);
+      double b2 = INFINITY;
+      std::size_t at = 0;
+      for (std::size_t m = 0; m < S; ++m) {
+        const double d2 = (cs[m][0] - p[0]) * (cs[m][0] - p[0]) + (cs[m][1] - p[1]) * (cs[m][1] - p[1]);
+        if (d2 < b2) b2 = d2, at = m;
+      }
+      worst = std::max(worst, refine_distance(cf, p, static_cast<double>(at) / static_cast<double>(S - 1)));
+    }
+  }
+  return worst;
+}
+
+/// The unit of a dataset (W11): the random cubics' box, the glyphs' em.
+double w11_unit(const std::string& set) { return set == "glyphs" ? 2048.0 : 100.0; }
+
+void w11_casteljau(benchmark::State& state, const std::string& set, double rel, const std::string& name) {
+  const auto& cs = dataset(set);
+  const double tol = rel * w11_unit(set);
+  std::vector<Quad> out;
+  std::vector<std::size_t> first;
+  for (auto _ : state) {
+    out.clear();
+    first.clear();
+    for (const Cubic& c : cs) {
+      first.push_back(out.size());
+      const casteljau::Bezier<double, 2> b({c[0], c[1], c[2], c[3]});
+      const auto r = casteljau::to_quadratic(b, tol);
+      for (const auto& q : r.segments) out.push_back(Quad{q.points()[0], q.points()[1], q.points()[2]});
+    }
+    first.push_back(out.size());
+    benchmark::DoNotOptimize(out.data());
+  }
+  static std::map<std::string, Measured> cache;
+  auto it = cache.find(name);
+  if (it == cache.end()) {
+    Measured m;
+    m.curves = cs.size();
+    m.segments = out.size();
+    for (std::size_t i = 0; i < cs.size(); ++i) {
+      const double d = quad_deviation(cs[i], out.data() + first[i], first[i + 1] - first[i]);
+      m.max_deviation = std::max(m.max_deviation, d);
+      m.over += !(d <= 1.0001 * tol);
+    }
+    it = cache.emplace(name, m).first;
+  }
+  state.counters["curves"] = static_cast<double>(it->second.curves);
+  state.counters["segments"] = static_cast<double>(it->second.segments);
+  state.counters["over_tolerance"] = static_cast<double>(it->second.over);
+  state.counters["max_deviation"] = it->second.max_deviation;
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * cs.size()));
+}
+
+/// With CASTELJAU_W11_DUMP=DIR, each dataset is written to DIR/w11_<set>.f64 (raw
+/// little-endian doubles, x0 y0 ... x3 y3 per cubic) for bench/w11_cu2qu.py.
+void w11_dump(const std::string& set) {
+  const char* dir = std::getenv("CASTELJAU_W11_DUMP");
+  if (!dir) return;
+  const auto& cs = dataset(set);
+  const std::string path = std::string(dir) + "/w11_" + set + ".f64";
+  std::FILE* f = std::fopen(path.c_str(), "wb");
+  if (!f) throw std::runtime_error("W11: cannot write " + path);
+  for (const Cubic& c : cs)
+    for (const P2& p : c) std::fwrite(&p[0], sizeof(double), 2, f);
+  std::fclose(f);
+}
+
 void reg(const std::string& library_method, const std::string& set, void (*flatten_all)(const std::vector<Cubic>&, Polylines&)) {
   const std::string name = "W3/" + library_method + "/" + set;
   benchmark::RegisterBenchmark(name.c_str(), [name, set, flatten_all](benchmark::State& st) { run(st, name, set, flatten_all); })
@@ -485,6 +628,12 @@ int main(int argc, char** argv) {
   std::fprintf(stderr, "W3: built without FreeType (libfreetype-dev): no glyphs dataset\n");
 #endif
   for (const std::string& set : sets) {
+    for (const auto& [rel, label] : {std::pair{1e-3, "1e-3"}, std::pair{1e-1, "1e-1"}}) {
+      const std::string name = std::string("W11/casteljau/quadratic/") + set + "/" + label;
+      benchmark::RegisterBenchmark(name.c_str(), [name, set, rel = rel](benchmark::State& st) { w11_casteljau(st, set, rel, name); })
+          ->Unit(benchmark::kMillisecond)
+          ->UseRealTime();
+    }
     reg("near_optimal/greedy", set, near_optimal);
     reg("plain/wang_uniform", set, wang_uniform);
 #if CASTELJAU_BENCH_HAVE_FLATTEN_METHODS
@@ -510,7 +659,10 @@ int main(int argc, char** argv) {
   }
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  for (const std::string& set : sets) dataset(set);  // inputs read before any timing
+  for (const std::string& set : sets) {
+    dataset(set);  // inputs read before any timing
+    w11_dump(set);
+  }
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   return 0;

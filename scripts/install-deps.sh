@@ -11,7 +11,7 @@ build_pkgs=(
   libeigen3-dev nlohmann-json3-dev libcli11-dev libpugixml-dev librsvg2-bin
   libgtest-dev libgmock-dev librapidcheck-dev libbenchmark-dev
   libmpfr-dev libgmp-dev
-  python3-scipy python3-mpmath
+  python3-scipy python3-mpmath python3-fonttools
   libocct-modeling-data-dev libocct-foundation-dev
   libfreetype-dev fonts-dejavu-core fonts-urw-base35
 )

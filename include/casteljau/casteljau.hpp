@@ -24,6 +24,7 @@
 #include "casteljau/algo/span_table.hpp"
 #include "casteljau/algo/subdivision.hpp"
 #include "casteljau/algo/to_bspline.hpp"
+#include "casteljau/algo/to_quadratic.hpp"
 #include "casteljau/algo/scalar_forms.hpp"
 #include "casteljau/basis/barycentric.hpp"
 #include "casteljau/basis/basis_kinds.hpp"

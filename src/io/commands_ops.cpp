@@ -62,6 +62,15 @@ OrderedJson matrix_json(const Eigen::Matrix4d& m) {
   return rows;
 }
 
+Response to_quadratic(const Args& a) {
+  return {OrderedJson{{"curve", to_json(io::to_quadratic(a.curve("curve"), a.number("tolerance")))}}};
+}
+
+constexpr Field to_quadratic_fields[] = {
+    {"curve", FieldType::curve, true},
+    {"tolerance", FieldType::number, true, {}, "> 0: the largest distance allowed between the curve and the quadratics (Hausdorff)"},
+};
+
 Response basis(const Args& a) {
   const std::optional<int> degree = a.has("degree") ? std::optional<int>(a.integer("degree")) : std::nullopt;
   const std::optional<double> tension = a.has("tension") ? std::optional<double>(a.number("tension")) : std::nullopt;
@@ -188,6 +197,20 @@ constexpr Command ops_family[] = {
      R"(  echo '{"curve": {"type": "bezier", "points": [[0,0],[1,2],[3,2],[4,0]]}, "tolerance": 0.5}' | casteljau reduce
   {"curve":{"type":"bezier","points":[[0.0,0.0],[2.0000000000000004,3.0],[4.0,0.0]]},"max_error":0.09622504486493799})",
      reduce_fields, reduce},
+    {"to_quadratic", "Any curve as a path of quadratic beziers within a tolerance",
+     "The curve as a chain of quadratic Bezier segments, each piece on its own: degree <= 2\n"
+     "exactly, other pieces cut at their cusps and covered greedily by the longest segments\n"
+     "that start and end on the curve with its tangent directions (the middle control point\n"
+     "where the two tangent lines meet; two quadratics joined smoothly where the lines of a\n"
+     "space curve are skew). Joints are tangent-continuous wherever the curve is (input\n"
+     "joints within 1e-6 rad get one shared direction); corners stay corners. Each segment's\n"
+     "distance to the part it replaces is bounded (33 samples with their nearest points on\n"
+     "the quadratic, plus a second-derivative margin between samples) within the tolerance.",
+     "curve: a path of quadratic bezier segments (3 points each), breaks at the curve's\n"
+     "          parameters of the joints",
+     R"(  echo '{"curve": {"type": "bezier", "points": [[0,0],[1,2],[3,2],[4,0]]}, "tolerance": 0.1}' | casteljau to_quadratic
+  {"curve":{"type":"path","segments":[{"type":"bezier","points":[[0.0,0.0],[1.1459201863788262,2.2918403727576524],[2.9242624424712513,1.2367163775457741]]},{"type":"bezier","points":[[2.9242624424712513,1.2367163775457741],[3.5745581702817146,0.8508836594365714],[4.0,0.0]]}],"breaks":[0.0,0.7094769766403243,1.0]}})",
+     to_quadratic_fields, to_quadratic},
     {"basis", "Values and derivatives of the basis functions of a kind",
      "The basis functions of `kind` at each t: bernstein B(i, n) (degree n), bspline N(i, p)\n"
      "on `knots` (The NURBS Book A2.3; outside the domain the end spans continue), lagrange\n"

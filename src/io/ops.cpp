@@ -14,6 +14,7 @@
 #include "casteljau/algo/scalar_forms.hpp"
 #include "casteljau/algo/solve.hpp"
 #include "casteljau/algo/to_bspline.hpp"
+#include "casteljau/algo/to_quadratic.hpp"
 #include "casteljau/basis/quadrature.hpp"
 #include "work_limits.hpp"
 
@@ -178,6 +179,48 @@ AnyReduction reduce(const AnyCurve& c, int times, double tolerance) {
         }
       },
       c);
+}
+
+AnyCurve to_quadratic(const AnyCurve& c, double tolerance) {
+  require_finite(tolerance, "tolerance");
+  if (!(tolerance > 0)) throw InvalidArgument("tolerance", "must be > 0, got " + format_number(tolerance));
+  check_solve_work(c, "the approximation");
+  return std::visit(
+      [&]<class P>(const P& p) {
+        constexpr int D = P::dimension;
+        limits::check_work(p, "curve", "the approximation");
+        // The count beforehand: a piece of degree n >= 3 whose third differences reach M3
+        // (third derivative at most n (n - 1) (n - 2) M3 = d3) needs about
+        // (d3 / (24 tol))^(1/3) quadratics for a parametric error of tol, more than the
+        // geometric fit needs (its error falls as the fourth power of the step).
+        double estimate = 0;
+        for (const auto& piece : p.segments()) {
+          estimate += std::visit(
+              [&](const auto& b) {
+                const auto& P3 = b.points();
+                const std::size_t n = P3.size() - 1;
+                if (n < 3) return 1.0;
+                double m3 = 0;
+                for (std::size_t k = 0; k + 3 <= n; ++k) {
+                  m3 = std::max(m3, norm((P3[k + 3] - P3[k]) - 3.0 * (P3[k + 2] - P3[k + 1])));
+                }
+                const double d3 = static_cast<double>(n) * static_cast<double>(n - 1) * static_cast<double>(n - 2) * m3;
+                return std::ceil(std::cbrt(d3 / (24 * tolerance)));
+              },
+              piece);
+        }
+        if (!(estimate <= static_cast<double>(max_quadratic_segments))) {
+          throw InvalidArgument("tolerance", "the approximation would need about " + format_number(estimate) +
+                                                 " quadratic segments, more than the limit of " +
+                                                 std::to_string(max_quadratic_segments) + ": use a larger tolerance");
+        }
+        const QuadraticChain<double, D> r = casteljau::to_quadratic(p, tolerance, max_quadratic_segments);
+        std::vector<Segment<double, D>> segs;
+        segs.reserve(r.segments.size());
+        for (const auto& q : r.segments) segs.emplace_back(q);
+        return AnyCurve(Path<double, D>(std::move(segs), r.breaks));
+      },
+      pieces(c));
 }
 
 }  // namespace casteljau::io

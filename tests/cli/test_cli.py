@@ -41,7 +41,7 @@ def run(command, request=None, args=(), text=None):
 CONTRACT_COMMANDS = ("eval", "split", "elevate", "insert_knot", "remove_knot", "subdivide", "to_bezier",
                      "bounds", "length", "param_at_length", "features", "distance", "area", "project",
                      "intersect", "flatten", "fit", "render", "solve", "refine", "to_bspline", "reduce", "basis", "frames", "offset",
-                     "import_svg", "to_svg_path", "glyph")
+                     "to_quadratic", "import_svg", "to_svg_path", "glyph")
 
 
 def supported_commands():

@@ -58,6 +58,7 @@ const std::map<std::string, std::vector<Expected>> documented = {
     {"glyph", {{"font", true}, {"text", true}, {"size", false}}},
     {"offset",
      {{"curve", true}, {"distance", true}, {"tolerance", true}, {"trim", false}, {"join", false}, {"miter_limit", false}}},
+    {"to_quadratic", {{"curve", true}, {"tolerance", true}}},
 };
 
 const io::OrderedJson& command_entry(const io::OrderedJson& listing, const std::string& name) {

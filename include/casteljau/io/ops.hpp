@@ -61,5 +61,16 @@ struct AnyReduction {
 /// the estimate), "join", "miter_limit" (< 1).
 [[nodiscard]] AnyCurve offset(const AnyCurve& c, double distance, double tolerance, bool trim, std::string_view join,
                               double miter_limit);
+/// The most quadratic segments to_quadratic makes (about the response size of flatten's
+/// limit: three points a segment).
+inline constexpr std::size_t max_quadratic_segments = 300'000;
+
+/// The curve as a path of quadratic bezier segments within `tolerance` of it (Hausdorff),
+/// tangent-continuous where the curve is (algo/to_quadratic.hpp), breaks at the curve's
+/// parameters of the joints. Errors: "tolerance" (not finite and > 0; more than
+/// max_quadratic_segments segments, estimated beforehand from each piece's third
+/// differences or met while working: the message gives the figures), "curve" (the work
+/// limit of the queries).
+[[nodiscard]] AnyCurve to_quadratic(const AnyCurve& c, double tolerance);
 
 }  // namespace casteljau::io

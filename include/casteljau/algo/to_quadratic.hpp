@@ -1,0 +1,593 @@
+// Quadratic approximation: any curve as a chain of quadratic Bézier segments within a
+// tolerance (Hausdorff), tangent-continuous wherever the curve is, with near the fewest
+// segments. Written once on the exact pieces (Pieces<T, D>).
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <string>
+#include <type_traits>
+#include <variant>
+#include <vector>
+
+#include "casteljau/curves/piecewise.hpp"
+
+namespace casteljau {
+
+/// A chain of quadratic Bézier segments approximating a curve: segment i replaces the
+/// curve over [breaks[i], breaks[i + 1]] (the curve's own parameter, so the chain has the
+/// curve's domain). max_error is the largest of the segments' measured error bounds (see
+/// to_quadratic).
+template <class T, int D>
+struct QuadraticChain {
+  std::vector<Bezier<T, D>> segments;
+  std::vector<T> breaks;
+  T max_error = 0;
+};
+
+namespace detail::quadratic {
+
+/// Samples per part in the error bound (to_quadratic): the margin between samples falls
+/// as 1 / N^2.
+inline constexpr int bound_samples = 32;
+
+/// Input joints whose tangent directions differ by less than this angle (radians) are
+/// treated as tangent-continuous: both sides get one shared direction, so the output is
+/// exactly G1 there.
+template <class T>
+inline constexpr T snap_angle = T(1e-6);
+
+template <class T, int D>
+Vector<T, D> unit(const Vector<T, D>& v) {
+  const T n = norm(v);
+  return n > 0 ? v / n : Vector<T, D>{};
+}
+
+/// The unit tangent direction of a Bézier form (polynomial, or the Cartesian points of
+/// a rational one with positive weights) at its start (at_start) or end, as the curve is
+/// travelled: the first control point that stands out from the end point (|P_k - P_0| >
+/// 1e-7 of the polygon's size; lower-order derivatives that vanish are skipped, which is
+/// the limit direction at a cusp or a zero-length handle). Zero for a polygon that is
+/// one point.
+template <class T, int D>
+Vector<T, D> end_direction(const std::vector<Point<T, D>>& C, bool at_start) {
+  const std::size_t n = C.size() - 1;
+  const Point<T, D>& e = at_start ? C[0] : C[n];
+  T size = 0;
+  for (const auto& p : C) size = std::max(size, norm(p - e));
+  if (!(size > 0)) return {};
+  const T small = T(1e-7) * size;
+  for (std::size_t k = 1; k <= n; ++k) {
+    const Vector<T, D> d = at_start ? C[k] - C[0] : C[n] - C[n - k];
+    if (norm(d) > small) return unit(d);
+  }
+  return {};
+}
+
+/// The quadratics from p0 (direction t0) to p2 (direction t1) whose end tangents are t0
+/// and t1: one quadratic whose middle point is where the tangent lines meet, ahead of p0
+/// and behind p2 (alpha, beta > 0 in p0 + alpha t0 = p2 - beta t1). When the lines are
+/// skew (a space curve, beyond 1e-12 of the chord), two quadratics (p0, a, m), (m, b, p2)
+/// with a = p0 + (v0 / 4) t0, b = p2 - (v1 / 4) t1 and m their midpoint, v0 and v1 the
+/// part's speeds at its ends: each half matches the part's end point and end derivative
+/// (as cu2qu's two-piece spline), and the halves are tangent-continuous at m (a, m, b on
+/// one line) with equal speeds. Parallel directions: the chord's midpoint when the chord
+/// runs along them (a straight part). None otherwise (lines meeting behind; parallel
+/// lines apart). The intersection is computed in the orthonormal frame u1 = t0,
+/// u2 = (t1 - (t0 . t1) t0) normalised, which stays accurate for nearly parallel lines.
+template <class T, int D>
+std::optional<std::vector<std::array<Point<T, D>, 3>>> tangent_chain(const Point<T, D>& p0, const Vector<T, D>& t0, const Point<T, D>& p2,
+                                                                     const Vector<T, D>& t1, T v0, T v1) {
+  using Chain = std::vector<std::array<Point<T, D>, 3>>;
+  const Vector<T, D> d = p2 - p0;
+  const T chord = norm(d);
+  if (!(chord > 0)) return Chain{{p0, p0, p2}};  // a part that is one point (or closed: measured)
+  const T c = dot(t0, t1);
+  const Vector<T, D> w = t1 - c * t0;
+  const T s = norm(w);
+  if (!(s > T(16) * std::numeric_limits<T>::epsilon())) {
+    const T a = dot(d, t0), b = dot(d, t1);
+    if (a > 0 && b > 0 && norm(d - a * t0) <= T(1e-9) * chord) return Chain{{p0, p0 + T(0.5) * d, p2}};
+    return std::nullopt;
+  }
+  const Vector<T, D> u2 = w / s;
+  const T d1 = dot(d, t0), d2 = dot(d, u2);
+  const Vector<T, D> off = d - d1 * t0 - d2 * u2;  // the part of the chord out of the lines' plane
+  if (norm(off) > T(1e-12) * chord) {
+    if (!(v0 > 0 && v1 > 0)) return std::nullopt;
+    const Point<T, D> a = p0 + (v0 / T(4)) * t0, b = p2 - (v1 / T(4)) * t1;
+    const Point<T, D> m = a + T(0.5) * (b - a);
+    return Chain{{p0, a, m}, {m, b, p2}};
+  }
+  // alpha t0 + beta t1 = (d1, d2) in the frame: t1 = (c, s).
+  const T beta = d2 / s, alpha = d1 - beta * c;
+  if (!(alpha > 0 && beta > 0) || !std::isfinite(alpha) || !std::isfinite(beta)) return std::nullopt;
+  return Chain{{p0, p0 + alpha * t0, p2}};
+}
+
+/// The point of the quadratic q at s and its first two derivatives.
+template <class T, int D>
+struct QuadraticForm {
+  Point<T, D> p0;
+  Vector<T, D> b, a;  // q(s) = p0 + 2 s b + s^2 a
+  explicit QuadraticForm(const std::array<Point<T, D>, 3>& q) : p0(q[0]), b(q[1] - q[0]), a((q[0] - q[1]) + (q[2] - q[1])) {}
+  Point<T, D> at(T s) const { return p0 + (T(2) * s) * b + (s * s) * a; }
+  Vector<T, D> d1(T s) const { return T(2) * b + (T(2) * s) * a; }
+};
+
+/// An upper bound of the Hausdorff (indeed the Fréchet) distance between a part c of the
+/// curve on [0, 1] and a chain q of one or two quadratics (joined with equal speeds, as
+/// tangent_chain makes them) with the same end points, on the chain's parameter
+/// sigma in [0, m] (quadratic i on [i, i + 1]). Method: c is sampled at s_j = j / N
+/// (N = bound_samples); each sample's nearest point on each quadratic is found by
+/// Newton's method on (q(x) - c(s)) . q'(x) = 0 from the neighbours' feet, clamped to
+/// the quadratic, and the nearer kept; the ends are pinned to the ends (sigma_0 = 0,
+/// sigma_N = m). The piecewise linear map sigma(s) through those feet is continuous and
+/// onto [0, m], so every point of either curve is within max_s |c(s) - q(sigma(s))| of
+/// the other. Between samples, f = c - q o sigma (C^1: the chain is C^1 in sigma)
+/// differs from its linear interpolant by at most h^2 / 8 max |c'' - q'' sigma'^2|
+/// (h = 1 / N, sigma' the slope there, c'' within the convex hull of the caller's `hull`
+/// vectors, so the max is taken over them), which is added to the larger end value. Stops early (returning a value above `stop`)
+/// once a sample exceeds it; samples are taken middle-first so that a part far out of
+/// tolerance is refused after a few.
+template <class T, int D, class Eval>
+T error_bound(const Eval& c, const std::vector<std::array<Point<T, D>, 3>>& q, const std::vector<Vector<T, D>>& hull, T stop) {
+  constexpr int N = bound_samples;
+  const int m = static_cast<int>(q.size());
+  std::array<QuadraticForm<T, D>, 2> form{QuadraticForm<T, D>(q[0]), QuadraticForm<T, D>(q[m - 1])};
+  std::array<T, N + 1> sigma{}, f{};
+  // The foot of p on quadratic i from the guess x (its own parameter): Newton, clamped.
+  const auto foot_on = [&](const QuadraticForm<T, D>& qf, const Point<T, D>& p, T x) {
+    for (int it = 0; it < 12; ++it) {
+      // r = q(x) - p, d = q'(x); g = r . d, g' = d . d + r . q''
+      T g = 0, dd = 0, ra = 0;
+      for (int k = 0; k < D; ++k) {
+        const T bk = qf.b[k], ak = qf.a[k];
+        const T r = qf.p0[k] + x * (T(2) * bk + x * ak) - p[k], d = T(2) * (bk + x * ak);
+        g += r * d;
+        dd += d * d;
+        ra += r * ak;
+      }
+      T gp = dd + T(2) * ra;
+      if (!(gp > 0)) gp = dd;
+      if (!(gp > 0)) break;
+      const T nx = std::clamp(x - g / gp, T(0), T(1));
+      const bool close = std::abs(nx - x) <= T(1e-3) * std::sqrt(std::numeric_limits<T>::epsilon());
+      x = nx;
+      if (close) break;
+    }
+    return x;
+  };
+  const auto distance_at = [&](const QuadraticForm<T, D>& qf, const Point<T, D>& p, T x) {
+    T s2 = 0;
+    for (int k = 0; k < D; ++k) {
+      const T r = qf.p0[k] + x * (T(2) * qf.b[k] + x * qf.a[k]) - p[k];
+      s2 += r * r;
+    }
+    return std::sqrt(s2);  // points near the curve: no overflow
+  };
+  const auto foot = [&](int j, T guess) {
+    const Point<T, D> p = c(T(j) / T(N));
+    T best = std::numeric_limits<T>::infinity(), at = 0;
+    for (int i = 0; i < m; ++i) {
+      const auto& qf = form[static_cast<std::size_t>(i)];
+      const T x = foot_on(qf, p, std::clamp(guess - T(i), T(0), T(1)));
+      const T dist = distance_at(qf, p, x);
+      if (dist < best) {
+        best = dist;
+        at = T(i) + x;
+      }
+    }
+    sigma[static_cast<std::size_t>(j)] = at;
+    f[static_cast<std::size_t>(j)] = best;
+    return best;
+  };
+  sigma[0] = 0;
+  sigma[N] = T(m);
+  f[0] = norm(c(T(0)) - q.front()[0]);
+  f[N] = norm(c(T(1)) - q.back()[2]);
+  if (std::max(f[0], f[N]) > stop) return std::max(f[0], f[N]);
+  // Middle first (N a power of two): 1/2, 1/4, 3/4, 1/8, ...; each guess between the
+  // neighbours' feet.
+  for (int step = N / 2; step >= 1; step /= 2) {
+    for (int j = step; j < N; j += 2 * step) {
+      if (foot(j, T(0.5) * (sigma[static_cast<std::size_t>(j - step)] + sigma[static_cast<std::size_t>(j + step)])) > stop) {
+        return f[static_cast<std::size_t>(j)];
+      }
+    }
+  }
+  T bound = 0;
+  const T h = T(1) / T(N);
+  for (std::size_t j = 0; j < N; ++j) {
+    const T slope = (sigma[j + 1] - sigma[j]) / h;
+    // f'' = c'' - q'' slope^2 on the interval (q'' of the quadratic the interval's feet
+    // lie on; an interval across the pair's joint takes the larger of the two).
+    const std::size_t i0 = std::min<std::size_t>(static_cast<std::size_t>(sigma[j]), static_cast<std::size_t>(m - 1));
+    const std::size_t i1 = std::min<std::size_t>(static_cast<std::size_t>(sigma[j + 1]), static_cast<std::size_t>(m - 1));
+    T f2 = 0;
+    for (std::size_t i = std::min(i0, i1); i <= std::max(i0, i1); ++i) {
+      const Vector<T, D> w = (T(2) * slope * slope) * form[i].a;
+      for (const auto& v : hull) f2 = std::max(f2, norm(v - w));
+    }
+    bound = std::max(bound, std::max(f[j], f[j + 1]) + h * h / T(8) * f2);
+  }
+  return bound;
+}
+
+/// The point at s of the Bézier form with control points P (de Casteljau, on the stack
+/// up to degree 15).
+template <class T, int D>
+Point<T, D> bezier_point(const std::vector<Point<T, D>>& P, T s) {
+  const std::size_t n = P.size();
+  if (n == 4) {  // the common cubic, unrolled on the coordinates
+    Point<T, D> out;
+    for (int k = 0; k < D; ++k) {
+      const T a = P[0][k] + s * (P[1][k] - P[0][k]), b = P[1][k] + s * (P[2][k] - P[1][k]), c = P[2][k] + s * (P[3][k] - P[2][k]);
+      const T d = a + s * (b - a), e = b + s * (c - b);
+      out[k] = d + s * (e - d);
+    }
+    return out;
+  }
+  std::vector<Point<T, D>> large;
+  std::array<Point<T, D>, 16> small;
+  Point<T, D>* w = small.data();
+  if (n > small.size()) {
+    large = P;
+    w = large.data();
+  } else {
+    std::copy(P.begin(), P.end(), small.begin());
+  }
+  for (std::size_t k = 1; k < n; ++k)
+    for (std::size_t i = 0; i + k < n; ++i) w[i] = w[i] + s * (w[i + 1] - w[i]);
+  return w[0];
+}
+
+/// The control points of the polynomial piece P over [a, b] of [0, 1], into out (reused):
+/// the left part at b, then the right part of that at a / b (de Casteljau in place).
+template <class T, int D>
+void polynomial_portion(const std::vector<Point<T, D>>& P, T a, T b, std::vector<Point<T, D>>& out) {
+  out = P;
+  const std::size_t n = out.size() - 1;
+  if (b < T(1)) {
+    for (std::size_t k = 1; k <= n; ++k)
+      for (std::size_t i = n; i >= k; --i) out[i] = out[i - 1] + b * (out[i] - out[i - 1]);
+  }
+  if (a > T(0)) {
+    const T t = a / b;
+    for (std::size_t k = 1; k <= n; ++k)
+      for (std::size_t i = 0; i + k <= n; ++i) out[i] = out[i] + t * (out[i + 1] - out[i]);
+  }
+}
+
+/// A part of a piece (its own parameter [a, b] mapped onto [0, 1]): its control points,
+/// evaluation and a bound on its second derivative.
+template <class Piece>
+struct Part {
+  using T = typename Piece::Scalar;
+  static constexpr int D = Piece::dimension;
+  static constexpr bool polynomial = std::is_same_v<Piece, Bezier<T, D>>;
+  std::vector<Point<T, D>> points;  // polynomial parts
+  std::optional<Piece> form;        // rational parts
+
+  void make(const Piece& piece, T a, T b) {
+    if constexpr (polynomial) {
+      polynomial_portion(piece.points(), a, b, points);
+    } else {
+      form.emplace(piece.portion(a, b));
+      points = form->points();
+    }
+  }
+  Point<T, D> operator()(T s) const {
+    if constexpr (polynomial) {
+      return bezier_point(points, s);
+    } else {
+      return (*form)(s);
+    }
+  }
+
+  /// |c'| at the start or the end (the limit along the first differing control point
+  /// where the derivative vanishes: n |P_k - P_0| / k, a stand-in for the speed).
+  T end_speed(bool at_start) const {
+    const std::size_t n = points.size() - 1;
+    for (std::size_t k = 1; k <= n; ++k) {
+      const T d = at_start ? norm(points[k] - points[0]) : norm(points[n] - points[n - k]);
+      if (d > 0) {
+        T v = T(n) * d / T(k);
+        if constexpr (!polynomial) v *= at_start ? form->weights()[1] / form->weights()[0] : form->weights()[n - 1] / form->weights()[n];
+        return v;
+      }
+    }
+    return 0;
+  }
+
+  /// Vectors whose convex hull holds c'' on [0, 1], into out (the margin of error_bound
+  /// takes max |v - w| over them for |c'' - w|): n (n - 1) times the second differences
+  /// for a polynomial (the second hodograph's control points: a bound); for a rational
+  /// piece c'' at the N + 1 sample parameters (an estimate, not a bound).
+  void second_derivative_hull(std::vector<Vector<T, D>>& out) const {
+    out.clear();
+    const auto& C = points;
+    const int n = static_cast<int>(C.size()) - 1;
+    if (n < 2) {
+      out.push_back(Vector<T, D>{});
+      return;
+    }
+    if constexpr (polynomial) {
+      for (std::size_t k = 0; k + 2 < C.size(); ++k) out.push_back(T(n) * T(n - 1) * ((C[k] - C[k + 1]) + (C[k + 2] - C[k + 1])));
+    } else {
+      for (int j = 0; j <= bound_samples; ++j) out.push_back(form->derivative_at(T(j) / T(bound_samples), 2));
+    }
+  }
+};
+
+/// The directions of a piece at its own parameter t, from the left and from the right
+/// (the limit directions where the derivative vanishes).
+template <class Piece, class T>
+std::pair<Vector<T, Piece::dimension>, Vector<T, Piece::dimension>> directions_at(const Piece& piece, T t) {
+  const Interval<T> own = piece.domain();
+  Vector<T, Piece::dimension> left{}, right{};
+  if (t > own.lo) left = end_direction(piece.portion(own.lo, t).points(), false);
+  if (t < own.hi) right = end_direction(piece.portion(t, own.hi).points(), true);
+  return {left, right};
+}
+
+/// The cusps of a piece inside its own domain: parameters where the derivative vanishes
+/// (|c'| <= 1e-9 of its largest value on the piece, found by sampling 16 (n + 1) points
+/// and refining each low local minimum of |c'| by golden section) and the direction turns
+/// back (the one-sided directions opposed). Sorted.
+template <class Piece>
+std::vector<typename Piece::Scalar> cusps(const Piece& piece) {
+  using T = typename Piece::Scalar;
+  std::vector<T> out;
+  const int n = piece.degree();
+  if (n < 2) return out;
+  const int M = 16 * (n + 1);
+  std::vector<T> speed(static_cast<std::size_t>(M) + 1);
+  T top = 0;
+  for (int j = 0; j <= M; ++j) {
+    speed[static_cast<std::size_t>(j)] = norm(piece.derivative_at(T(j) / T(M), 1));
+    top = std::max(top, speed[static_cast<std::size_t>(j)]);
+  }
+  if (!(top > 0)) return out;
+  for (int j = 1; j < M; ++j) {
+    const T v = speed[static_cast<std::size_t>(j)];
+    if (!(v <= speed[static_cast<std::size_t>(j - 1)] && v <= speed[static_cast<std::size_t>(j + 1)]) || v > T(0.05) * top) continue;
+    T x0 = T(j - 1) / T(M), x3 = T(j + 1) / T(M);
+    constexpr T g = T(0.6180339887498949L);
+    T x1 = x3 - g * (x3 - x0), x2 = x0 + g * (x3 - x0);
+    const auto sp = [&](T x) { return norm(piece.derivative_at(x, 1)); };
+    T f1 = sp(x1), f2 = sp(x2);
+    for (int it = 0; it < 200 && x3 - x0 > T(4) * std::numeric_limits<T>::epsilon(); ++it) {
+      if (f1 < f2) {
+        x3 = x2;
+        x2 = x1;
+        f2 = f1;
+        x1 = x3 - g * (x3 - x0);
+        f1 = sp(x1);
+      } else {
+        x0 = x1;
+        x1 = x2;
+        f1 = f2;
+        x2 = x0 + g * (x3 - x0);
+        f2 = sp(x2);
+      }
+    }
+    const T tc = f1 < f2 ? x1 : x2;
+    if (std::min(f1, f2) > T(1e-9) * top || tc <= T(0) || tc >= T(1)) continue;
+    const auto [left, right] = directions_at(piece, tc);
+    if (dot(left, right) < 0 && (out.empty() || tc > out.back())) out.push_back(tc);
+  }
+  return out;
+}
+
+/// The chain of one span [s0, s1] of a piece (no cusp inside), from direction t_start at
+/// its start to t_end at its end: greedy, each segment reaching as far as it can (the
+/// largest end found to 1% of its step by galloping and bisection) with the quadratic
+/// whose middle point is where the end tangents meet; consecutive segments share the
+/// point and the direction at their joint. Appends segments and own parameters of their
+/// ends; throws when more than max_segments would be made.
+template <class Piece, class T = typename Piece::Scalar, int D = Piece::dimension>
+void approximate_span(const Piece& piece, T s0, T s1, const Point<T, D>& p_start, const Point<T, D>& p_end, Vector<T, D> t_start,
+                      const Vector<T, D>& t_end, T tolerance, std::size_t max_segments, std::vector<std::array<Point<T, D>, 3>>& out,
+                      std::vector<T>& ends, T& max_error) {
+  T t0 = s0;
+  Point<T, D> p0 = p_start;
+  Vector<T, D> dir0 = t_start;
+  T step = s1 - s0;
+  const T min_step = T(1e-9) * (s1 - s0);
+  struct Try {
+    std::vector<std::array<Point<T, D>, 3>> q;
+    Vector<T, D> dir1;
+    T error;  // infinite when the tangent lines do not meet ahead
+    bool ok;  // within the tolerance
+  };
+  // The quadratic over [t0, t1] and its error bound, or none when the tangent lines do
+  // not meet ahead or the bound exceeds the tolerance.
+  Part<Piece> part;
+  std::vector<Vector<T, D>> hull;
+  const auto attempt = [&](T t1) -> Try {
+    part.make(piece, t0, t1);
+    const bool last = t1 == s1;
+    const Point<T, D> p2 = last ? p_end : part.points.back();
+    const Vector<T, D> dir1 = last ? t_end : end_direction(part.points, false);
+    Vector<T, D> d0 = dir0;
+    if (squared_norm(d0) == 0) d0 = end_direction(part.points, true);
+    auto q = tangent_chain(p0, d0, p2, dir1, part.end_speed(true), part.end_speed(false));
+    if (!q) return Try{{}, dir1, std::numeric_limits<T>::infinity(), false};
+    part.second_derivative_hull(hull);
+    const T e = error_bound<T, D>(part, *q, hull, tolerance);
+    return Try{std::move(*q), dir1, e, e <= tolerance};
+  };
+  const auto accept = [&](const Try& r, T t1) {
+    if (out.size() + r.q.size() > max_segments) {
+      throw InvalidArgument("tolerance", "the approximation needs more than " + std::to_string(max_segments) +
+                                             " quadratic segments: use a larger tolerance");
+    }
+    for (const auto& x : r.q) out.push_back(x);
+    if (r.q.size() == 2) ends.push_back(t0 + T(0.5) * (t1 - t0));
+    ends.push_back(t1);
+    max_error = std::max(max_error, r.error);
+    step = t1 - t0;
+    t0 = t1;
+    p0 = r.q.back()[2];
+    dir0 = r.dir1;
+  };
+  while (t0 < s1) {
+    // The farthest end: a model of the error (growing as the fourth power of the step on
+    // smooth parts) proposes each next end from the last error; a bracket [lo, hi]
+    // (feasible, infeasible) keeps the search safe where the model fails (bisection).
+    // Accepted once an end is feasible with an error of at least 90% of the tolerance,
+    // or the bracket is within 2% of the step.
+    T lo = t0, hi = s1;
+    bool hi_tested = false;
+    std::optional<Try> best;
+    T x = std::min(s1, t0 + step);
+    for (int it = 0; it < 200; ++it) {
+      Try r = attempt(x);
+      const T e = r.error;  // the bound, or a lower bound above the tolerance, or infinite
+      if (r.ok) {
+        lo = x;
+        const bool enough = x == s1 || r.error >= T(0.9) * tolerance;
+        best = std::move(r);
+        if (enough) break;
+      } else {
+        hi = x;
+        hi_tested = true;
+      }
+      if (best && hi_tested && hi - lo <= T(0.02) * (lo - t0)) break;
+      if (!best && hi - t0 <= min_step) break;
+      T g = std::numeric_limits<T>::quiet_NaN();
+      if (std::isfinite(e) && e > 0) g = t0 + (x - t0) * std::sqrt(std::sqrt(T(0.95) * tolerance / e));
+      if (!(g > lo)) g = lo + T(0.5) * (hi - lo);
+      if (g >= hi) g = hi_tested ? lo + T(0.5) * (hi - lo) : s1;
+      if (g == x) break;
+      x = g;
+    }
+    if (!best) {
+      // No quadratic through the tangent lines fits even over the smallest step (not
+      // expected between cusps): the part over min_step as a straight quadratic, measured.
+      const T t1 = std::min(s1, t0 + min_step);
+      part.make(piece, t0, t1);
+      const Point<T, D> p2 = t1 == s1 ? p_end : part.points.back();
+      const std::vector<std::array<Point<T, D>, 3>> q{{p0, p0 + T(0.5) * (p2 - p0), p2}};
+      part.second_derivative_hull(hull);
+      const T e = error_bound<T, D>(part, q, hull, std::numeric_limits<T>::max());
+      accept(Try{q, t1 == s1 ? t_end : end_direction(part.points, false), e, true}, t1);
+      continue;
+    }
+    accept(*best, lo);
+  }
+}
+
+}  // namespace detail::quadratic
+
+/// The curve as a chain of quadratic Bézier segments within `tolerance` (> 0) of it.
+///
+/// Each exact piece is handled on its own: a polynomial of degree <= 2 is exact (a point
+/// or a line as a quadratic with its middle point at the chord's midpoint, a quadratic as
+/// itself; so is a rational piece of degree <= 1, or of degree 2 with equal weights). Any
+/// other piece is cut at its cusps, and each span between them is covered greedily: from
+/// its start, the segment reaching farthest (to 1% of its step) whose middle control point
+/// is where the curve's tangent lines at the segment's two ends meet, within the
+/// tolerance. The segment therefore starts and ends on the curve with the curve's
+/// tangent directions (G1 Hermite interpolation, error falling as the fourth power of
+/// the step on smooth parts), and consecutive segments share one direction at their
+/// joint. A part whose tangent lines do not meet ahead (an inflection in the middle, skew
+/// lines of a space curve) is made shorter. Piece joints where the curve's directions
+/// agree to snap_angle get one shared direction; corners (G0 joints, cusps) stay
+/// corners.
+///
+/// The error of each segment is measured as an upper bound of the Hausdorff distance to
+/// the part it replaces (detail::quadratic::error_bound: 33 samples with their nearest
+/// points on the quadratic and a second-derivative margin between samples; a bound for
+/// polynomial pieces, and for rational pieces with an estimated margin). max_error is the
+/// largest. Errors: InvalidArgument "tolerance" (not finite and > 0; more than
+/// max_segments segments needed).
+template <class C>
+  requires detail::is_pieces<C>
+QuadraticChain<typename C::Scalar, C::dimension> to_quadratic(const C& p, typename C::Scalar tolerance,
+                                                               std::size_t max_segments = std::numeric_limits<std::size_t>::max()) {
+  using T = typename C::Scalar;
+  constexpr int D = C::dimension;
+  using namespace detail::quadratic;
+  if (!std::isfinite(tolerance) || !(tolerance > 0)) {
+    throw InvalidArgument("tolerance", "must be a finite number > 0, got " + detail::format_number(tolerance));
+  }
+  QuadraticChain<T, D> r;
+  r.breaks.push_back(p.domain().lo);
+  const std::size_t k = p.size();
+  // Each piece's end directions, with the shared direction at tangent-continuous joints.
+  std::vector<Vector<T, D>> start_dir(k), end_dir(k);
+  for (std::size_t i = 0; i < k; ++i) {
+    std::visit(
+        [&](const auto& s) {
+          start_dir[i] = end_direction(s.points(), true);
+          end_dir[i] = end_direction(s.points(), false);
+        },
+        p.segments()[i]);
+  }
+  for (std::size_t i = 0; i + 1 < k; ++i) {
+    const Vector<T, D> a = end_dir[i], b = start_dir[i + 1];
+    const Point<T, D> pa = std::visit([](const auto& s) { return s.points().back(); }, p.segments()[i]);
+    const Point<T, D> pb = std::visit([](const auto& s) { return s.points().front(); }, p.segments()[i + 1]);
+    if (squared_norm(a) == 0 || squared_norm(b) == 0 || !(pa == pb)) continue;
+    const T angle = std::atan2(norm(a - dot(a, b) * b), dot(a, b));
+    if (angle < snap_angle<T>) end_dir[i] = start_dir[i + 1] = unit(a + b);
+  }
+  std::vector<std::array<Point<T, D>, 3>> quads;
+  std::vector<T> ends;
+  for (std::size_t i = 0; i < k; ++i) {
+    quads.clear();
+    ends.clear();
+    std::visit(
+        [&]<class S>(const S& s) {
+          const auto& P = s.points();
+          const int n = s.degree();
+          bool equal_weights = true;
+          if constexpr (!std::is_same_v<S, Bezier<T, D>>) {
+            for (const T w : s.weights()) equal_weights = equal_weights && w == s.weights().front();
+          }
+          if (n <= 1 || (n == 2 && equal_weights)) {
+            const Point<T, D> mid = n == 2 ? P[1] : P.front() + T(0.5) * (P.back() - P.front());
+            quads.push_back({P.front(), mid, P.back()});
+            ends.push_back(T(1));
+            return;
+          }
+          std::vector<T> cut{T(0)};
+          for (const T c : detail::quadratic::cusps(s)) cut.push_back(c);
+          cut.push_back(T(1));
+          for (std::size_t j = 0; j + 1 < cut.size(); ++j) {
+            const T a = cut[j], b = cut[j + 1];
+            const auto span = s.portion(a, b);
+            const Point<T, D> pa = j == 0 ? P.front() : span.points().front();
+            const Point<T, D> pb = j + 2 == cut.size() ? P.back() : span.points().back();
+            const Vector<T, D> da = j == 0 ? start_dir[i] : end_direction(span.points(), true);
+            const Vector<T, D> db = j + 2 == cut.size() ? end_dir[i] : end_direction(span.points(), false);
+            approximate_span(s, a, b, pa, pb, da, db, tolerance, max_segments - std::min(max_segments, r.segments.size()), quads, ends,
+                             r.max_error);
+            if (r.segments.size() + quads.size() > max_segments) {
+              throw InvalidArgument("tolerance", "the approximation needs more than " + std::to_string(max_segments) +
+                                                     " quadratic segments: use a larger tolerance");
+            }
+          }
+        },
+        p.segments()[i]);
+    for (std::size_t j = 0; j < quads.size(); ++j) {
+      r.segments.push_back(Bezier<T, D>({quads[j][0], quads[j][1], quads[j][2]}));
+      r.breaks.push_back(j + 1 == quads.size() ? p.breaks()[i + 1] : p.lift(i, ends[j]));
+    }
+  }
+  return r;
+}
+
+/// Any other curve type: on its exact pieces (pieces(c)).
+template <class C>
+  requires(!detail::is_pieces<C>) && PiecewiseBezierCurve<C>
+auto to_quadratic(const C& c, typename C::Scalar tolerance, std::size_t max_segments = std::numeric_limits<std::size_t>::max()) {
+  return to_quadratic(pieces(c), tolerance, max_segments);
+}
+
+}  // namespace casteljau
