@@ -274,6 +274,8 @@ TEST(Offset, CornersAndErrors) {
   EXPECT_THROW((void)offset(pieces(B2({P2(1, 1), P2(1, 1)})), offset_options(1, 1e-3)), InvalidArgument);
   o.miter_limit = 0.5;
   EXPECT_THROW((void)offset(L, o), InvalidArgument);
+}
+
 // to_quadratic: closed forms (exact low degrees, an elevated quadratic), and on random and
 // special curves an independent check written here: dense samples of both curves, the
 // two-sided distance (each sample to the other's dense polyline) within the tolerance,
