@@ -1,0 +1,177 @@
+// to_quadratic (issue 20) in the library. Its checks sample the curves densely (a brute-force
+// two-sided distance between polylines of thousands of points), so this source is one of
+// the unit executable's own, built at -O1 (at -O0 the suite took 48 s).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include "test_support.hpp"  // the whole library (casteljau.hpp: to_quadratic)
+
+namespace {
+
+using namespace casteljau;
+using P2 = Point<double, 2>;
+using B2 = Bezier<double, 2>;
+using R2 = RationalBezier<double, 2>;
+
+// to_quadratic: closed forms (exact low degrees, an elevated quadratic), and on random and
+// special curves an independent check written here: dense samples of both curves, the
+// two-sided distance (each sample to the other's dense polyline) within the tolerance,
+// joints tangent-continuous.
+
+/// The largest distance from the points a to the polyline b (brute force).
+template <int D>
+double to_polyline(const std::vector<Point<double, D>>& a, const std::vector<Point<double, D>>& b) {
+  double worst = 0;  // squared distances (moderate coordinates: no overflow)
+  for (const auto& p : a) {
+    double best = INFINITY;
+    for (std::size_t j = 0; j + 1 < b.size(); ++j) {
+      const Vector<double, D> e = b[j + 1] - b[j];
+      const double ee = dot(e, e);
+      const double u = ee > 0 ? std::clamp(dot(p - b[j], e) / ee, 0.0, 1.0) : 0.0;
+      const Vector<double, D> r = p - (b[j] + u * e);
+      best = std::min(best, dot(r, r));
+    }
+    worst = std::max(worst, best);
+  }
+  return std::sqrt(worst);
+}
+
+/// Checks a chain against the curve: breaks, two-sided distance within tol plus `slack`,
+/// joints where the curve is tangent-continuous (its one-sided derivatives at the joint's
+/// parameter) within 1e-9 rad; returns the segment count.
+template <class C>
+std::size_t check_chain(const C& c, const QuadraticChain<double, C::dimension>& r, double tol, double slack, const char* what) {
+  constexpr int D = C::dimension;
+  SCOPED_TRACE(what);
+  EXPECT_EQ(r.breaks.size(), r.segments.size() + 1);
+  EXPECT_EQ(r.breaks.front(), c.domain().lo);
+  EXPECT_EQ(r.breaks.back(), c.domain().hi);
+  std::vector<Point<double, D>> curve, quads;
+  const int per = 400;
+  const auto dom = c.domain();
+  for (int j = 0; j <= per * 8; ++j) curve.push_back(c(dom.lo + (dom.hi - dom.lo) * j / (per * 8.0)));
+  for (const auto& q : r.segments) {
+    EXPECT_EQ(q.degree(), 2);
+    for (int j = 0; j <= per; ++j) {
+      const double s = j / double(per);
+      const auto& P = q.points();
+      Point<double, D> x;
+      for (int k = 0; k < D; ++k) x[k] = (1 - s) * (1 - s) * P[0][k] + 2 * s * (1 - s) * P[1][k] + s * s * P[2][k];
+      quads.push_back(x);
+    }
+  }
+  EXPECT_LE(to_polyline(curve, quads), tol + slack);
+  EXPECT_LE(to_polyline(quads, curve), tol + slack);
+  for (std::size_t i = 0; i + 1 < r.segments.size(); ++i) {
+    const double u = r.breaks[i + 1];
+    // The curve's one-sided tangents at the joint, by differences a little to each side.
+    const double h = 1e-7 * (dom.hi - dom.lo);
+    const auto before = c(u) - c(u - h), after = c(u + h) - c(u);
+    if (dot(before, after) <= 0.999 * norm(before) * norm(after)) continue;  // a corner or a cusp of the curve
+    const auto& A = r.segments[i].points();
+    const auto& B = r.segments[i + 1].points();
+    const auto ta = A[2] - A[1], tb = B[1] - B[0];
+    const double angle = std::atan2(norm(ta - dot(ta, tb) / dot(tb, tb) * tb), dot(ta, tb) / norm(tb));
+    EXPECT_LE(angle, 1e-9) << "joint " << i << " at t = " << u;
+    EXPECT_EQ(A[2], B[0]);
+  }
+  return r.segments.size();
+}
+
+TEST(ToQuadratic, LowDegreesAreExactInOneSegment) {
+  const B2 quad({P2(0, 0), P2(1, 2), P2(3, -1)});
+  const auto r = to_quadratic(quad, 1e-9);
+  ASSERT_EQ(r.segments.size(), 1u);
+  EXPECT_EQ(r.segments[0], quad);  // the quadratic itself
+  const auto l = to_quadratic(B2({P2(1, 1), P2(3, 5)}), 1e-9);
+  ASSERT_EQ(l.segments.size(), 1u);
+  EXPECT_EQ(l.segments[0], B2({P2(1, 1), P2(2, 3), P2(3, 5)}));  // the line, its midpoint in the middle
+}
+
+TEST(ToQuadratic, ElevatedQuadraticIsOneSegment) {
+  const B2 quad({P2(0, 0), P2(2, 3), P2(5, 1)});
+  const auto r = to_quadratic(quad.elevate(1), 1e-9);
+  ASSERT_EQ(r.segments.size(), 1u);
+  for (int k = 0; k < 3; ++k) {
+    // The tangent lines of the cubic meet at the quadratic's middle point (rounding of
+    // the elevation and of the intersection: a few eps of the size 5).
+    EXPECT_NEAR(r.segments[0].points()[k][0], quad.points()[k][0], 1e-14);
+    EXPECT_NEAR(r.segments[0].points()[k][1], quad.points()[k][1], 1e-14);
+  }
+}
+
+TEST(ToQuadratic, RandomCubicsWithinToleranceAndTangentContinuous) {
+  std::mt19937_64 rng(20);
+  std::uniform_real_distribution<double> u(0, 100);
+  std::size_t total = 0;
+  for (int i = 0; i < 8; ++i) {  // 8: the brute-force distance check costs O(samples^2) per curve
+    const B2 c({P2(u(rng), u(rng)), P2(u(rng), u(rng)), P2(u(rng), u(rng)), P2(u(rng), u(rng))});
+    const double tol = i % 2 ? 0.1 : 1.0;
+    const auto r = to_quadratic(c, tol);
+    EXPECT_LE(r.max_error, tol);
+    // Slack: polylines of 3200 and 400 points a segment: chords within (arc length /
+    // count)^2 curvature / 8 of the curves, far below 1e-3 here.
+    total += check_chain(c, r, tol, 1e-3, "random cubic");
+  }
+  EXPECT_GT(total, 8u);
+}
+
+TEST(ToQuadratic, PathKeepsCornersAndSmoothJoints) {
+  // A smooth joint (collinear handles) and a corner.
+  Pieces<double, 2> p({B2({P2(0, 0), P2(1, 2), P2(2, 2), P2(3, 0)}), B2({P2(3, 0), P2(4, -2), P2(5, -2), P2(6, 0)}),
+                       B2({P2(6, 0), P2(6, 3), P2(8, 3), P2(9, 1)})});
+  const auto r = to_quadratic(p, 1e-3);
+  check_chain(p, r, 1e-3, 1e-4, "path");
+  // The joint at t = 1 is smooth, the one at t = 2 a corner: both are breaks.
+  EXPECT_NE(std::find(r.breaks.begin(), r.breaks.end(), 1.0), r.breaks.end());
+  EXPECT_NE(std::find(r.breaks.begin(), r.breaks.end(), 2.0), r.breaks.end());
+}
+
+TEST(ToQuadratic, CuspZeroHandlesSpaceCurvesAndConics) {
+  // A cusp at t = 1/2 (P3 + P2 - P1 - P0 = 0), handles of zero length, a twisted cubic
+  // (tangent lines skew: pairs of quadratics), a rational quarter circle.
+  const B2 cusp({P2(0, 0), P2(1, 1), P2(0, 1), P2(1, 0)});
+  const auto rc = to_quadratic(cusp, 1e-3);
+  for (const auto& q : rc.segments)
+    for (const auto& x : q.points()) EXPECT_TRUE(std::isfinite(x[0]) && std::isfinite(x[1]));
+  check_chain(cusp, rc, 1e-3, 1e-4, "cusp");
+  const B2 zero({P2(0, 0), P2(0, 0), P2(1, 1), P2(1, 1)});
+  check_chain(zero, to_quadratic(zero, 1e-4), 1e-4, 1e-5, "zero-length handles");
+  using P3 = Point<double, 3>;
+  const Bezier<double, 3> twisted({P3(0, 0, 0), P3(1, 0, 0), P3(1, 1, 0), P3(1, 1, 1)});
+  const auto rt = to_quadratic(twisted, 1e-4);
+  check_chain(twisted, rt, 1e-4, 1e-5, "twisted cubic");
+  const R2 quarter({P2(1, 0), P2(1, 1), P2(0, 1)}, {1.0, std::sqrt(0.5), 1.0});
+  const auto rq = to_quadratic(quarter, 1e-6);
+  check_chain(quarter, rq, 1e-6, 1e-7, "quarter circle");
+  // The circle's radial error at the segments' midpoints, a closed form: |Q(1/2)| - 1.
+  for (const auto& q : rq.segments) {
+    const auto& P = q.points();
+    EXPECT_LE(std::abs(norm((0.25 * (P[0].to_vector() + P[2].to_vector())) + 0.5 * P[1].to_vector()) - 1), 1e-6);
+  }
+}
+
+TEST(ToQuadratic, BadTolerance) {
+  const B2 c({P2(0, 0), P2(1, 2), P2(3, 2), P2(4, 0)});
+  for (const double tol : {0.0, -1.0, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+    try {
+      (void)to_quadratic(c, tol);
+      ADD_FAILURE() << "accepted tolerance " << tol;
+    } catch (const InvalidArgument& e) {
+      EXPECT_EQ(e.where(), "tolerance");
+    }
+  }
+  try {
+    (void)to_quadratic(c, 1e-12, 10);
+    ADD_FAILURE() << "more than 10 segments accepted";
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(e.where(), "tolerance");
+  }
+}
+
+}  // namespace
