@@ -323,7 +323,7 @@ bool cubic_spline_slopes_fused(const std::vector<T>& u, const std::vector<Point<
   constexpr T smallest = std::numeric_limits<T>::min();
   const auto slope_ok = [&](const V& d, std::size_t i) {
     bool good = true;
-    for (int k = 0; k < D; ++k) good &= (std::abs(d[k]) >= smallest) | (P[i + 1][k] == P[i][k]);
+    for (int k = 0; k < D; ++k) good = good && (std::abs(d[k]) >= smallest || P[i + 1][k] == P[i][k]);
     return good;
   };
   T hl = hh(0);  // the downward sweep's h_(i-1), d_(i-1)

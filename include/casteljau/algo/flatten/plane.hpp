@@ -12,19 +12,9 @@
 #include <vector>
 
 #include "casteljau/algo/flatten/common.hpp"
+#include "casteljau/algo/flatten/force_inline.hpp"
 #include "casteljau/algo/flatten/plane_plan.hpp"
 #include "casteljau/algo/flatten/small_piece.hpp"
-
-// The small kernels' helpers are called once or twice per vertex: GCC, left to itself,
-// does not inline them into the step loop (about 30% slower on W3). Undefined at the end
-// of the file.
-#if defined(__GNUC__)
-#define CASTELJAU_FLATTEN_INLINE [[gnu::always_inline]] inline
-#define CASTELJAU_FLATTEN_LAMBDA __attribute__((always_inline))
-#else
-#define CASTELJAU_FLATTEN_LAMBDA
-#define CASTELJAU_FLATTEN_INLINE inline
-#endif
 
 namespace casteljau::detail {
 
@@ -664,5 +654,3 @@ unsigned optimal_parabola_block_lanes(const SmallOptimalPlan<double>& plan, doub
 
 }  // namespace casteljau::detail
 
-#undef CASTELJAU_FLATTEN_INLINE
-#undef CASTELJAU_FLATTEN_LAMBDA

@@ -10,17 +10,7 @@
 #include <cstdint>
 
 #include "casteljau/core/point.hpp"
-
-// The small kernels' helpers are called once or twice per vertex: GCC, left to itself,
-// does not inline them into the step loop (about 30% slower on W3). Undefined at the end
-// of the file.
-#if defined(__GNUC__)
-#define CASTELJAU_FLATTEN_INLINE [[gnu::always_inline]] inline
-#define CASTELJAU_FLATTEN_LAMBDA __attribute__((always_inline))
-#else
-#define CASTELJAU_FLATTEN_LAMBDA
-#define CASTELJAU_FLATTEN_INLINE inline
-#endif
+#include "casteljau/algo/flatten/force_inline.hpp"
 
 namespace casteljau::detail {
 
@@ -116,5 +106,3 @@ inline constexpr int optimal_block = 8;
 
 }  // namespace casteljau::detail
 
-#undef CASTELJAU_FLATTEN_INLINE
-#undef CASTELJAU_FLATTEN_LAMBDA
