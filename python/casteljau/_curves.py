@@ -241,11 +241,12 @@ class Curve:
         if pts.ndim != 2:
             raise Error(f"points: must be one point (d,) or an array of points (n, d), got shape {pts.shape}")
         rows = json.loads(self._c.run_each("project", _dumps({"farthest": farthest}), "curve", "point", "points", pts))
-        out: dict[str, Any] = {}
-        for key in (rows[0] if rows else {"t": 0, "point": 0, "distance": 0}):
-            vals = [r[key] for r in rows]
-            out[key] = np.array(vals, dtype=np.float64) if rows else np.zeros((0,) + ((self.dim,) if key == "point" else ()))
-        return Result(**out)
+        # t, point and distance per row (all_t and intervals, present on ties only, are left
+        # out here: project one point to see them).
+        d = self.dim
+        return Result(t=np.array([r["t"] for r in rows], dtype=np.float64),
+                      point=np.array([r["point"] for r in rows], dtype=np.float64).reshape(len(rows), d),
+                      distance=np.array([r["distance"] for r in rows], dtype=np.float64))
 
 
 def _hodograph(c: Curve) -> Curve:

@@ -155,6 +155,15 @@ def test_project_vectorised():
     np.testing.assert_allclose(r.point, [[1, 0], [3, 0], [4, 0], [0, 0]], atol=EPS)
     np.testing.assert_allclose(r.distance, [1, 2, math.sqrt(2), 1], atol=EPS)
     np.testing.assert_allclose(r.t, [0.25, 0.75, 1, 0], atol=EPS)
+    # The unit circle's centre ties along the whole circle (the response then has all_t or
+    # intervals): every row still gives t, point, distance; distance 1 from the centre, 1
+    # from (2, 0) at the point (1, 0).
+    circle = casteljau.Curve.from_json({"type": "circle", "center": [0, 0], "radius": 1})
+    rc = circle.project(np.array([[0.0, 0.0], [2.0, 0.0]]))
+    np.testing.assert_allclose(rc.distance, [1, 1], atol=EPS)
+    np.testing.assert_allclose(rc.point[1], [1, 0], atol=EPS)
+    empty = seg.project(np.zeros((0, 2)))
+    assert empty.t.shape == (0,) and empty.point.shape == (0, 2)
     one = seg.project([1, 1])
     assert one.distance == pytest.approx(1)
     with pytest.raises(casteljau.Error, match=r"^points\[1\]\[0\]: must be a finite number"):
