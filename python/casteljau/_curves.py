@@ -284,6 +284,8 @@ def _command_method(name: str, summary: str, fields: list) -> Any:
             raise TypeError(f"{name}() takes at most {len(params)} arguments ({', '.join(params)}), got {len(args)}")
         req = dict(zip(params, args))
         for k, v in kw.items():
+            if k.endswith("_") and k[:-1] in params:  # from_: "from" is a Python keyword
+                k = k[:-1]
             if k not in params:
                 raise TypeError(f"{name}() got an unexpected keyword argument {k!r} (fields: {', '.join(params)})")
             req[k] = v
