@@ -34,7 +34,10 @@ def _renamed(e: Error, names: dict[str, str], drop_column: bool) -> Error:
         if m:
             first = m.group(1) or ""
             second = "" if drop_column else (m.group(2) or "")
-            return Error(ours + first + second + msg[m.end():])
+            rest = msg[m.end():]
+            for lib2, ours2 in names.items():  # "params must be strictly increasing" -> "x must ..."
+                rest = re.sub(rf"\b{lib2}\b", ours2, rest)
+            return Error(ours + first + second + rest)
     return e
 
 

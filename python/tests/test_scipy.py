@@ -87,7 +87,7 @@ def test_hermite_interpolators():
 
 
 def test_errors_name_scipys_arguments():
-    with pytest.raises(casteljau.Error, match=r"^x\[2\]: "):
+    with pytest.raises(casteljau.Error, match=r"^x\[2\]: x must be strictly increasing"):
         casteljau.CubicSpline([0, 1, 1, 2], [0, 1, 2, 3])
     with pytest.raises(casteljau.Error, match=r"^y\[1\]: must be a finite number"):
         casteljau.CubicSpline([0, 1, 2], [0, np.nan, 2])
