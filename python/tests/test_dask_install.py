@@ -46,3 +46,14 @@ def test_installed_package(tmp_path):
                          cwd=tmp_path).stdout.split("\n")
     assert pathlib.Path(out[0]).is_relative_to(tmp_path)
     assert out[1] == "[[1.0, 1.0]]"
+
+
+def test_dask_worker_processes_example():
+    """examples/python/dask_flatten.py on 2 worker processes (dask's multiprocessing
+    scheduler; the curves travel pickled): its total equals the single-process one (the
+    example asserts it). 400 cubics keep it near a second of CPU."""
+    pytest.importorskip("dask")
+    example = pathlib.Path(__file__).parents[2] / "examples" / "python" / "dask_flatten.py"
+    out = subprocess.run([sys.executable, str(example), "400"], check=True, capture_output=True, text=True,
+                         env=dict(os.environ)).stdout
+    assert "400 cubics" in out
