@@ -10,8 +10,10 @@
 // - `run(command, request)`: any command, JSON text in and out;
 // - `Error` (a ValueError): the library's InvalidArgument as "<where>: <what>", the
 //   command line's message.
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <utility>
