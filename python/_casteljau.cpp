@@ -38,6 +38,9 @@ std::string where_what(const InvalidArgument& e) {
   return (e.where().empty() ? std::string("request") : e.where()) + ": " + e.problem();
 }
 
+/// A non-finite number as Python prints it ("nan", "inf", "-inf").
+std::string number_text(double v) { return std::isnan(v) ? "nan" : v > 0 ? "inf" : "-inf"; }
+
 const io::Command& command_named(const std::string& name) {
   const io::Command* c = io::find_command(name);
   if (c == nullptr) throw InvalidArgument("command", "unknown command " + io::quoted(name));
@@ -82,7 +85,8 @@ class Curve {
 
   /// The command on this curve: the request (JSON text of an object without the curve)
   /// with the curve under `field`; the response as JSON text.
-  [[nodiscard]] std::string run(const std::string& command, const std::string& request, const std::string& field) const {
+  [[nodiscard]] std::string run(const std::string& command, const std::string& request,
+                                const std::string& field) const {
     const io::Command& c = command_named(command);
     io::Json r = io::parse_json(request);
     r[field] = json_;
@@ -108,14 +112,17 @@ class Curve {
     for (std::size_t i = 0; i < n; ++i) {
       const std::string here = row_name + "[" + std::to_string(i) + "]";
       if (m == 0) {
-        if (!std::isfinite(data[i])) throw InvalidArgument(here, "must be a finite number, got " + std::to_string(data[i]));
+        if (!std::isfinite(data[i])) {
+          throw InvalidArgument(here, "must be a finite number, got " + number_text(data[i]));
+        }
         r[row_field] = data[i];
       } else {
         io::Json row = io::Json::array();
         for (std::size_t j = 0; j < m; ++j) {
           const double v = data[i * m + j];
           if (!std::isfinite(v)) {
-            throw InvalidArgument(here + "[" + std::to_string(j) + "]", "must be a finite number, got " + std::to_string(v));
+            throw InvalidArgument(here + "[" + std::to_string(j) + "]",
+                                  "must be a finite number, got " + number_text(v));
           }
           row.push_back(v);
         }

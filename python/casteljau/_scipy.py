@@ -162,7 +162,10 @@ def _end_roots(c: Curve) -> list:
         if len(nz) == 0 or nz[-1] == 0:
             continue
         for s in np.roots(coef[: nz[-1] + 1][::-1]):
-            if abs(s.imag) <= 1e-12 * max(1.0, abs(s.real)) and ((side < 0 and s.real < 0) or (side > 0 and s.real > 1)):
+            # A real root comes out of the companion matrix with an imaginary part of
+            # rounding size (1e-12 relative: far above it, far below a true complex pair's).
+            real = abs(s.imag) <= 1e-12 * max(1.0, abs(s.real))
+            if real and ((side < 0 and s.real < 0) or (side > 0 and s.real > 1)):
                 out.append(a + s.real * (b - a))
     return out
 
@@ -218,7 +221,8 @@ def _bc(bc_type: Any, m: int) -> dict:
             elif isinstance(b, str):
                 raise Error(f"bc_type: {b!r} at one end only is not supported yet (natural, clamped or (order, value))")
             order, value = b
-            ends[side] = {"order": order, "value": np.broadcast_to(np.asarray(value, dtype=np.float64).reshape(-1), (m,))}
+            v = np.broadcast_to(np.asarray(value, dtype=np.float64).reshape(-1), (m,))
+            ends[side] = {"order": order, "value": v}
         return {"boundary": ends}
     raise Error(f"bc_type: must be a string or a pair, got {bc_type!r}")
 

@@ -128,19 +128,23 @@ def test_queries_closed_forms():
     np.testing.assert_allclose(box.max, [2, 1], atol=EPS)  # apex at t = 1/2
     # Length of the parabola y = 2x - x^2 on [0, 2]: integral of sqrt(1 + (2 - 2x)^2),
     # closed form sqrt(5) + asinh(2) / 2.
+    # 1e-12: the accuracy the length command guarantees (docs/cli.md).
     assert c.length() == pytest.approx(math.sqrt(5) + math.asinh(2) / 2, rel=1e-12)
     line = casteljau.Polyline([[0, 0], [3, 4]])
     np.testing.assert_allclose(line.param_at_length([0, 2.5, 5]), [0, 0.5, 1], atol=EPS)
     # Curvature of the parabola at its apex: |x'y'' - y'x''| / |v|^3 = 2 * 8 / 8 = 2 (turning right: -2).
-    assert c.curvature(0.5) == pytest.approx(-2, rel=1e-13)
+    assert c.curvature(0.5) == pytest.approx(-2, rel=1e-13)  # a few roundings on exact inputs
     assert c.curvature(np.array([[0.5]])).shape == (1, 1)
     f = c.features()
     np.testing.assert_allclose(f.extrema[1], [0.5], atol=EPS)
     circle = casteljau.Curve.from_json({"type": "circle", "center": [0, 0], "radius": 2})
+    # Exact up to rounding for the circle's rational pieces integrated by quadrature (docs/cli.md).
     assert circle.area() == pytest.approx(4 * math.pi, rel=1e-12)
     poly = circle.flatten(1e-3)
     assert poly.shape[1] == 2 and len(poly) > 10
-    # Every vertex lies on the circle and every chord's midpoint within the tolerance.
+    # Every vertex lies on the circle (evaluated points: rounding only, 1e-12 of the radius
+    # is generous) and every chord's midpoint, its farthest point from an arc of the circle
+    # of radius 2, within the tolerance (1e-9 relative slack: the rounding of the vertices).
     np.testing.assert_allclose(np.linalg.norm(poly, axis=1), 2, atol=1e-12)
     mid = (poly[1:] + poly[:-1]) / 2
     assert np.all(2 - np.linalg.norm(mid, axis=1) <= 1e-3 * (1 + 1e-9))
@@ -181,7 +185,8 @@ def test_module_functions():
     pts = np.array([[0, 0], [1, 1], [2, 0], [3, 1]], dtype=float)
     fitted = casteljau.fit(pts, degree=3, control_points=4).curve
     assert isinstance(fitted, casteljau.BSpline)
-    # Interpolation: the fitted curve passes through every point (at some parameter).
+    # Interpolation: the fitted curve passes through every point (at some parameter); 1e-9:
+    # the solve of a 4 x 4 system and the projection, far below the points' spacing of 1.
     assert np.all(fitted.project(pts).distance < 1e-9)
     # Chaikin on the square (docs/cli.md's example): each edge gives its 1/4 and 3/4 points.
     s = casteljau.subdivide(points=[[0, 0], [4, 0], [4, 4], [0, 4]], scheme="chaikin", iterations=1, closed=True)

@@ -35,7 +35,8 @@ def test_installed_package(tmp_path):
     build = os.environ.get("CASTELJAU_BUILD_DIR")
     if not build:
         pytest.skip("CASTELJAU_BUILD_DIR not set (ctest sets it)")
-    subprocess.run([os.environ.get("CASTELJAU_CMAKE", "cmake"), "--install", build, "--component", "python", "--prefix", str(tmp_path)], check=True,
+    cmake = os.environ.get("CASTELJAU_CMAKE", "cmake")
+    subprocess.run([cmake, "--install", build, "--component", "python", "--prefix", str(tmp_path)], check=True,
                    capture_output=True)
     site = next(tmp_path.glob("lib/python3/dist-packages"))
     assert (site / "casteljau" / "__init__.py").exists()
