@@ -35,6 +35,16 @@ def test_one_class_per_registry_type():
         assert cls._fields == tuple(f for f in fields if f != "type")
 
 
+def test_constructor_fields_are_what_the_reader_accepts():
+    # The reader's own message for an unknown field lists the fields it accepts: the
+    # classes' arguments must be exactly those (in the same order).
+    for json_name, cls_name, _ in _casteljau.curve_types():
+        with pytest.raises(casteljau.Error) as err:
+            casteljau.Curve.from_json({"type": json_name, "zzz": 1})
+        listed = str(err.value).split(" has: ")[1].rstrip(")").split(", ")
+        assert tuple(listed) == ("type",) + getattr(casteljau, cls_name)._fields, cls_name
+
+
 def test_commands_become_methods_and_functions():
     for name, _, fields in _casteljau.commands():
         if name == "eval":  # the call itself
