@@ -70,9 +70,11 @@ def _arrays(value: Any) -> Any:
             return Curve.from_json(value)
         return Result(**{k: _arrays(v) for k, v in value.items()})
     if isinstance(value, list):
-        if value and all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in value):
+        if not value:
+            return np.empty(0, dtype=np.float64)  # no roots, no crossings: len 0 either way
+        if all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in value):
             return np.array(value, dtype=np.float64)
-        if value and all(isinstance(v, list) for v in value) and all(
+        if all(isinstance(v, list) for v in value) and all(
             all(isinstance(x, (int, float)) and not isinstance(x, bool) for x in v) for v in value
         ):
             if len({len(v) for v in value}) == 1:

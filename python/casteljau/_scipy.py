@@ -180,6 +180,13 @@ class _ScipyCurve:
 
     _sp: PPoly | None = None
 
+    def __reduce__(self) -> tuple:
+        # Pickled by the curve's JSON form and, made scipy's way, scipy's state (x, axis,
+        # the PPoly view): a pickled CubicSpline(x, y) still answers in scipy's shapes.
+        if self._sp is None:
+            return Curve.__reduce__(self)
+        return (_restore, (self._c.to_json(), self.__dict__))
+
     def __call__(self, x: Any, nu: int = 0, extrapolate: Any = None) -> np.ndarray:
         if self._sp is None:
             return Curve.__call__(self, x, nu)
@@ -198,6 +205,12 @@ class _ScipyCurve:
 
     def roots(self, discontinuity: bool = True, extrapolate: Any = None) -> np.ndarray:
         return (self._sp or PPoly(self, (self.dim,))).roots(discontinuity, extrapolate)
+
+
+def _restore(text: str, state: dict) -> Curve:
+    c = Curve.from_json(text)
+    c.__dict__.update(state)
+    return c
 
 
 def _bc(bc_type: Any, m: int) -> dict:

@@ -62,6 +62,17 @@ def test_cubic_spline_roots_and_shapes():
     close(casteljau.CubicSpline(X, Y, extrapolate=False)(XS), si.CubicSpline(X, Y, extrapolate=False)(XS))
 
 
+def test_pickled_scipy_objects_keep_scipys_shapes():
+    import pickle
+
+    for ours in (casteljau.CubicSpline(X, Y), casteljau.BSpline([0, 0, 0, 1, 2, 2, 2], [1.0, 2.0, 0.0, 1.0], 2),
+                 casteljau.PchipInterpolator(X, Y)):
+        again = pickle.loads(pickle.dumps(ours))
+        assert type(again) is type(ours)
+        np.testing.assert_array_equal(again(XS), ours(XS))
+        assert again(1.5).shape == ()
+
+
 def test_bsplines():
     t = np.r_[0, 0.5, 1, 2, 3.5, 4, 5, 6, 7.5]  # unclamped: the domain is [t[k], t[n]]
     c = RNG.random(5)
