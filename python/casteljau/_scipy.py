@@ -89,6 +89,26 @@ class PPoly:
                 out[outside] = np.nan
         return out
 
+    @property
+    def x(self) -> np.ndarray:
+        """The breakpoints (scipy's PPoly.x)."""
+        return np.asarray(_bezier_pieces(self._curve)[0], dtype=np.float64)
+
+    @property
+    def c(self) -> np.ndarray:
+        """scipy's PPoly coefficients: c[m, i] multiplies (x - x[i])^(k - m) on piece i, shape
+        (k + 1, pieces) + tail; from each Bezier piece's power form in s = (x - x[i]) / h,
+        the coefficient of s^j divided by h^j."""
+        breaks, pieces = _bezier_pieces(self._curve)
+        k = max(len(P) - 1 for P in pieces)
+        out = np.zeros((k + 1, len(pieces), pieces[0].shape[1]))
+        for i, P in enumerate(pieces):
+            n, h = len(P) - 1, breaks[i + 1] - breaks[i]
+            for j in range(n + 1):
+                a = sum(math.comb(n, j) * math.comb(j, r) * (-1) ** (j - r) * P[r] for r in range(j + 1))
+                out[k - j, i] = a / h**j
+        return out.reshape((k + 1, len(pieces)) + self._tail)
+
     def derivative(self, nu: int = 1) -> "PPoly":
         return PPoly(self._curve.derivative(nu), self._tail, self.extrapolate)
 
@@ -240,9 +260,10 @@ def _bc(bc_type: Any, m: int) -> dict:
     raise Error(f"bc_type: must be a string or a pair, got {bc_type!r}")
 
 
-def _subclass(json_name: str, mixin: type, init: Any, doc: str) -> type:
+def _subclass(json_name: str, mixin: type, init: Any, doc: str, extra: dict | None = None) -> type:
     base = _CLASSES[json_name]
-    cls = type(base.__name__, (mixin, base), {"__init__": init, "__doc__": doc, "__module__": "casteljau"})
+    cls = type(base.__name__, (mixin, base), {"__init__": init, "__doc__": doc, "__module__": "casteljau",
+                                               **(extra or {})})
     _CLASSES[json_name] = cls
     curve_classes[base.__name__] = cls
     return cls
@@ -280,6 +301,13 @@ def _cubic_init(self: Any, *args: Any, **kw: Any) -> None:
     self.axis = a.get("axis", 0)
 
 
+def _ppoly_c(self: Any) -> np.ndarray:
+    """scipy's PPoly coefficients (made scipy's way; see PPoly.c)."""
+    if self._sp is None:
+        raise AttributeError("c: CubicSpline made from the library's fields has no scipy coefficients")
+    return self._sp.c
+
+
 CubicSpline = _subclass("cubic_spline", _ScipyCurve, _cubic_init, """The C^2 cubic interpolating spline.
 
 scipy's form ``CubicSpline(x, y, axis=0, bc_type='not-a-knot', extrapolate=None)`` returns
@@ -290,7 +318,7 @@ the curve-JSON fields) returns points of shape (..., d).
 >>> s = casteljau.CubicSpline([0, 1, 2, 3], [0, 1, 8, 27])
 >>> round(float(s(1.5)), 12)  # not-a-knot on 4 points: the cubic x^3 itself
 3.375
-""")
+""", {"c": property(_ppoly_c)})
 
 
 def _bspline_init(self: Any, *args: Any, **kw: Any) -> None:
@@ -374,7 +402,6 @@ def _hermite_interpolator(rule: str, default_extrapolate: bool, name: str) -> ty
         except Error as e:
             raise _renamed(e, {"params": "x", "points": "y"}, tail == ()) from None
         PPoly.__init__(self, curve, tail, default_extrapolate if extrapolate is None else extrapolate)
-        self.x = np.asarray(x, dtype=np.float64)
         self.axis = axis
 
     return type(name, (PPoly,), {"__init__": __init__, "__module__": "casteljau",

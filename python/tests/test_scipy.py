@@ -31,6 +31,8 @@ def test_cubic_spline(bc):
     for nu in range(4):
         close(ours(XS, nu), theirs(XS, nu))
     assert ours(2.5).shape == theirs(2.5).shape == ()
+    close(ours.x, theirs.x, rel=0)
+    close(ours.c, theirs.c)
     close(ours.derivative()(XS), theirs.derivative()(XS))
     close(ours.derivative(2)(XS), theirs.derivative(2)(XS))
     inside = XS[(XS >= X[0]) & (XS <= X[-1])]
@@ -93,6 +95,7 @@ def test_hermite_interpolators():
     close(casteljau.Akima1DInterpolator(X, Y)(xs), si.Akima1DInterpolator(X, Y)(xs))
     close(casteljau.Akima1DInterpolator(X, Y)(XS), si.Akima1DInterpolator(X, Y)(XS))  # NaN outside, both
     close(casteljau.PchipInterpolator(X, Y).derivative()(xs), si.PchipInterpolator(X, Y).derivative()(xs))
+    close(casteljau.PchipInterpolator(X, Y).c, si.PchipInterpolator(X, Y).c)
     # The degree-8 interpolating polynomial on 9 random nodes: its two evaluations (ours
     # through the Bezier form, scipy's barycentric formula) differ by eps times the
     # Lebesgue constant of the nodes (about 1e5 here); compared inside the nodes' hull.
