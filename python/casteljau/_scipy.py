@@ -367,8 +367,8 @@ library's ``BSpline(degree=, knots=, points=)`` returns points of shape (..., d)
 
 
 def make_interp_spline(x: Any, y: Any, k: int = 3, t: Any = None, bc_type: Any = None, axis: int = 0) -> Any:
-    """scipy's interpolating B-spline of odd degree k (not-a-knot knots, as scipy chooses
-    them): the collocation matrix from the registry's basis command, solved by numpy."""
+    """scipy's interpolating B-spline of degree k (without t: the knots scipy chooses), the
+    collocation matrix from the registry's basis command, solved by numpy."""
     if bc_type is not None:
         raise Error("bc_type: only None (scipy's default, not-a-knot) is supported yet")
     x = np.asarray(x, dtype=np.float64)
@@ -376,10 +376,20 @@ def make_interp_spline(x: Any, y: Any, k: int = 3, t: Any = None, bc_type: Any =
     if not isinstance(k, (int, np.integer)) or k < 0:
         raise Error(f"k: must be an integer >= 0, got {k!r}")
     if t is None:
-        if k % 2 != 1:
-            raise Error(f"k: only odd degrees are supported yet without t (got {k})")
-        m = (k - 1) // 2
-        t = np.r_[(x[0],) * (k + 1), x[m + 1 : len(x) - m - 1], (x[-1],) * (k + 1)]
+        # scipy's choices: k = 2 the midpoints without the first and last, odd k not-a-knot
+        # (the data's sites without (k - 1) / 2 at each end).
+        if k == 0:
+            # scipy's knots x and x[-1] repeat the last knot twice, which the library's
+            # bspline refuses at degree 0 (an end knot at most p + 1 times).
+            raise Error("k: 0 is not supported yet (scipy's knots repeat the last point)")
+        if k == 2:
+            mid = (x[1:] + x[:-1]) / 2
+            t = np.r_[(x[0],) * 3, mid[1:-1], (x[-1],) * 3]
+        elif k % 2 == 1:
+            m = (k - 1) // 2
+            t = np.r_[(x[0],) * (k + 1), x[m + 1 : len(x) - m - 1], (x[-1],) * (k + 1)]
+        else:
+            raise Error(f"k: even degrees above 2 need t (got {k})")
     t = np.asarray(t, dtype=np.float64)
     if len(x) != len(pts):
         raise Error(f"x: {len(x)} values but y has {len(pts)}")
