@@ -14,6 +14,7 @@ build_pkgs=(
   python3-scipy python3-mpmath python3-fonttools
   libocct-modeling-data-dev libocct-foundation-dev
   libfreetype-dev fonts-dejavu-core fonts-urw-base35
+  python3-dev python3-pybind11 pybind11-dev python3-numpy python3-pytest python3-dask  # the Python package (python/, docs/python.md)
 )
 fuzz_pkgs=()
 bench_pkgs=(lib2geom-dev libocct-modeling-data-dev libocct-foundation-dev libocct-modeling-algorithms-dev libboost-dev libdouble-conversion-dev libgsl-dev libsisl-dev

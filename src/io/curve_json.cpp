@@ -137,8 +137,10 @@ struct Format;
 template <>
 struct Format<Bezier> {
   static constexpr std::string_view name = "bezier";
+  static constexpr std::string_view class_name = "Bezier";
+  static constexpr std::string_view fields[] = {"type", "points", "degree", "dim"};
   static AnyCurve read(const Fields& f) {
-    f.allow_only({"type", "points", "degree", "dim"}, "a bezier");
+    f.allow_only(fields, "a bezier");
     const RawPoints P = read_control_points(f, "a bezier");
     return dispatch_dimension(P.dim, [&]<int D>() { return AnyCurve(Bezier<double, D>(P.points<D>())); });
   }
@@ -151,8 +153,10 @@ struct Format<Bezier> {
 template <>
 struct Format<RationalBezier> {
   static constexpr std::string_view name = "rational_bezier";
+  static constexpr std::string_view class_name = "RationalBezier";
+  static constexpr std::string_view fields[] = {"type", "points", "weights", "degree", "dim"};
   static AnyCurve read(const Fields& f) {
-    f.allow_only({"type", "points", "weights", "degree", "dim"}, "a rational_bezier");
+    f.allow_only(fields, "a rational_bezier");
     const RawPoints P = read_control_points(f, "a rational_bezier");
     // The weight count and positivity are the constructor's checks.
     const std::vector<double> w = numbers_from_json(f.required("weights"), "weights");
@@ -167,8 +171,10 @@ struct Format<RationalBezier> {
 template <>
 struct Format<Polyline> {
   static constexpr std::string_view name = "polyline";
+  static constexpr std::string_view class_name = "Polyline";
+  static constexpr std::string_view fields[] = {"type", "points", "dim"};
   static AnyCurve read(const Fields& f) {
-    f.allow_only({"type", "points", "dim"}, "a polyline");
+    f.allow_only(fields, "a polyline");
     const std::optional<int> dim = read_dim(f);
     const RawPoints P = read_points(f.required("points"), 2, "a polyline");
     check_dim(dim, P.dim);
@@ -183,8 +189,10 @@ struct Format<Polyline> {
 template <>
 struct Format<Lagrange> {
   static constexpr std::string_view name = "lagrange";
+  static constexpr std::string_view class_name = "Lagrange";
+  static constexpr std::string_view fields[] = {"type", "params", "points", "dim"};
   static AnyCurve read(const Fields& f) {
-    f.allow_only({"type", "params", "points", "dim"}, "a lagrange");
+    f.allow_only(fields, "a lagrange");
     const std::optional<int> dim = read_dim(f);
     const RawPoints P = read_points(f.required("points"), 1, "a lagrange curve");
     check_dim(dim, P.dim);
@@ -219,8 +227,10 @@ std::size_t choice_from_json(const Json& j, std::string_view where, std::initial
 template <>
 struct Format<CatmullRom> {
   static constexpr std::string_view name = "catmull_rom";
+  static constexpr std::string_view class_name = "CatmullRom";
+  static constexpr std::string_view fields[] = {"type", "points", "alpha", "closed", "ends", "dim"};
   static AnyCurve read(const Fields& f) {
-    f.allow_only({"type", "points", "alpha", "closed", "ends", "dim"}, "a catmull_rom");
+    f.allow_only(fields, "a catmull_rom");
     const std::optional<int> dim = read_dim(f);
     const bool closed = f.has("closed") && boolean_from_json(*f.optional("closed"), "closed");
     CatmullRomEnds ends = CatmullRomEnds::inner;
@@ -276,8 +286,10 @@ RawSpline read_spline(const Fields& f, std::string_view noun) {
 template <>
 struct Format<BSpline> {
   static constexpr std::string_view name = "bspline";
+  static constexpr std::string_view class_name = "BSpline";
+  static constexpr std::string_view fields[] = {"type", "degree", "knots", "points", "dim"};
   static AnyCurve read(const Fields& f) {
-    f.allow_only({"type", "degree", "knots", "points", "dim"}, "a bspline");
+    f.allow_only(fields, "a bspline");
     const RawSpline r = read_spline(f, "a bspline");
     return dispatch_dimension(r.P.dim, [&]<int D>() { return AnyCurve(BSpline<double, D>(r.degree, r.knots, r.P.points<D>())); });
   }
@@ -290,8 +302,10 @@ struct Format<BSpline> {
 template <>
 struct Format<Nurbs> {
   static constexpr std::string_view name = "nurbs";
+  static constexpr std::string_view class_name = "Nurbs";
+  static constexpr std::string_view fields[] = {"type", "degree", "knots", "points", "weights", "dim"};
   static AnyCurve read(const Fields& f) {
-    f.allow_only({"type", "degree", "knots", "points", "weights", "dim"}, "a nurbs");
+    f.allow_only(fields, "a nurbs");
     const RawSpline r = read_spline(f, "a nurbs");
     const std::vector<double> w = numbers_from_json(f.required("weights"), "weights");
     return dispatch_dimension(r.P.dim, [&]<int D>() { return AnyCurve(Nurbs<double, D>(r.degree, r.knots, r.P.points<D>(), w)); });
@@ -353,9 +367,10 @@ RawInterpolation read_interpolation_data(const Fields& f, std::string_view noun)
 template <>
 struct Format<Hermite> {
   static constexpr std::string_view name = "hermite";
+  static constexpr std::string_view class_name = "Hermite";
+  static constexpr std::string_view fields[] = {"type", "params", "parametrization", "points", "tangents", "tangent_rule", "tension", "continuity", "bias", "dim"};
   static AnyCurve read(const Fields& f) {
-    f.allow_only({"type", "params", "parametrization", "points", "tangents", "tangent_rule", "tension", "continuity", "bias", "dim"},
-                 "a hermite");
+    f.allow_only(fields, "a hermite");
     const RawInterpolation r = read_interpolation_data(f, "a hermite");
     const Json* tj = f.optional("tangents");
     const Json* rj = f.optional("tangent_rule");
@@ -434,9 +449,10 @@ struct Format<Hermite> {
 template <>
 struct Format<CubicSpline> {
   static constexpr std::string_view name = "cubic_spline";
+  static constexpr std::string_view class_name = "CubicSpline";
+  static constexpr std::string_view fields[] = {"type", "params", "parametrization", "points", "boundary", "start_derivative", "end_derivative", "dim"};
   static AnyCurve read(const Fields& f) {
-    f.allow_only({"type", "params", "parametrization", "points", "boundary", "start_derivative", "end_derivative", "dim"},
-                 "a cubic_spline");
+    f.allow_only(fields, "a cubic_spline");
     const RawInterpolation r = read_interpolation_data(f, "a cubic_spline");
     const int d = r.P.dim;
     enum Kind { natural, clamped, not_a_knot, periodic, general };
@@ -530,6 +546,8 @@ constexpr int max_path_nesting = 32;
 template <>
 struct Format<Path> {
   static constexpr std::string_view name = "path";
+  static constexpr std::string_view class_name = "Path";
+  static constexpr std::string_view fields[] = {"type", "segments", "breaks", "dim"};
   static AnyCurve read(const Fields& f);
   template <int D>
   static OrderedJson write(const Path<double, D>& c);
@@ -678,7 +696,7 @@ void append_segment(const AnyCurve& any, const Interval<double>& onto, std::vect
 }
 
 AnyCurve Format<Path>::read(const Fields& f) {
-  f.allow_only({"type", "segments", "breaks", "dim"}, "a path");
+  f.allow_only(fields, "a path");
   const std::optional<int> dim = read_dim(f);
   const Json& sj = f.required("segments");
   if (!sj.is_array()) throw InvalidArgument("segments", "must be an array of curve objects, got " + std::string(kind_of(sj)));
@@ -732,6 +750,17 @@ OrderedJson Format<Path>::write(const Path<double, D>& c) {
 }  // namespace
 
 AnyCurve curve_from_json(const Json& j) { return read_curve_object(j); }
+
+std::span<const CurveTypeInfo> curve_types() {
+  static const std::vector<CurveTypeInfo> types = [] {
+    std::vector<CurveTypeInfo> out;
+    for_each_type(CurveTypes{}, [&]<template <class, int> class C>() {
+      out.push_back({Format<C>::name, Format<C>::class_name, Format<C>::fields});
+    });
+    return out;
+  }();
+  return types;
+}
 
 std::span<const std::string_view> curve_type_names() {
   static const std::vector<std::string_view> names = [] {

@@ -93,6 +93,19 @@ class Fields {
 /// where "type" and "curve type 'bspline' is not supported yet (...)".
 [[nodiscard]] AnyCurve curve_from_json(const Json& j);
 
+/// One registered type as the bindings see it: its curve-JSON name, the library's class
+/// name ("BSpline": the Python class) and the fields of its curve-JSON object ("type"
+/// first, then in the order its reader lists them: the Python constructor's arguments).
+struct CurveTypeInfo {
+  std::string_view name;
+  std::string_view class_name;
+  std::span<const std::string_view> fields;
+};
+
+/// Every registered type, in the order of CurveTypes (from the Format entries of
+/// src/io/curve_json.cpp, which check curve JSON against the same field lists).
+[[nodiscard]] std::span<const CurveTypeInfo> curve_types();
+
 /// The curve as curve JSON: {"type", "points"[, "weights"]} or {"type": "path",
 /// "segments", "breaks"} (breaks always written). Numbers are written by nlohmann::json
 /// in shortest round-trip form.

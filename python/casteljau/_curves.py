@@ -1,0 +1,375 @@
+"""The library's curve classes and commands, generated from the compiled registry.
+
+Every curve type of the registry (``_casteljau.curve_types()``: its curve-JSON name, class
+name and fields) becomes a subclass of :class:`Curve` whose constructor takes the type's
+fields, positionally in the registry's order or as keywords. Every command of the registry
+(``_casteljau.commands()``) with a ``curve`` field becomes a method of :class:`Curve` named
+after the command, and every other command a module function: a type or a command added
+to the library reaches Python with no change here. A few methods are written by hand on
+top (evaluation, ``derivative``, ``curvature``, ``pieces``, ``project`` over many points).
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from typing import Any
+
+import numpy as np
+
+from . import _casteljau
+from ._casteljau import Error
+
+__all__ = ["Curve", "Result", "Error", "curve_classes", "run"]
+
+
+# ---------------------------------------------------------------------------------------
+# Python values <-> request JSON
+
+
+def _bad(path: str, v: float) -> Error:
+    return Error(f"{path}: must be a finite number, got {v}")
+
+
+def _plain(value: Any, path: str) -> Any:
+    """value as JSON-ready Python data: numpy arrays and scalars as lists and floats, curves
+    as their curve JSON; a NaN or infinity anywhere raises Error naming its path (JSON
+    cannot carry them, and the library refuses them)."""
+    if isinstance(value, Curve):
+        return value.to_json()
+    if isinstance(value, np.ndarray):
+        if value.dtype.kind in "fc":
+            if value.dtype.kind == "c":
+                raise Error(f"{path}: must be real numbers, got a complex array")
+            if not np.isfinite(value).all():
+                idx = tuple(int(i) for i in np.argwhere(~np.isfinite(value))[0])
+                raise _bad(path + "".join(f"[{i}]" for i in idx), value[idx])
+        return value.tolist()
+    if isinstance(value, np.generic):
+        return _plain(value.item(), path)
+    if isinstance(value, float):
+        if not math.isfinite(value):
+            raise _bad(path, value)
+        return value
+    if isinstance(value, (list, tuple)):
+        return [_plain(v, f"{path}[{i}]") for i, v in enumerate(value)]
+    if isinstance(value, dict):
+        return {k: _plain(v, f"{path}.{k}" if path else k) for k, v in value.items()}
+    return value
+
+
+def _dumps(obj: dict) -> str:
+    return json.dumps(_plain(obj, ""), separators=(",", ":"))
+
+
+def _arrays(value: Any) -> Any:
+    """Response JSON as Python: curve objects as curves, arrays of numbers (or of points)
+    as float64 numpy arrays, objects as Result."""
+    if isinstance(value, dict):
+        if "type" in value and value.get("type") in _CLASSES:
+            return Curve.from_json(value)
+        return Result(**{k: _arrays(v) for k, v in value.items()})
+    if isinstance(value, list):
+        if not value:
+            return np.empty(0, dtype=np.float64)  # no roots, no crossings: len 0 either way
+        if all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in value):
+            return np.array(value, dtype=np.float64)
+        if all(isinstance(v, list) for v in value) and all(
+            all(isinstance(x, (int, float)) and not isinstance(x, bool) for x in v) for v in value
+        ):
+            if len({len(v) for v in value}) == 1:
+                return np.array(value, dtype=np.float64)
+        return [_arrays(v) for v in value]
+    return value
+
+
+class Result:
+    """A command's answer: its fields as attributes (arrays as numpy arrays)."""
+
+    def __init__(self, **fields: Any) -> None:
+        self.__dict__.update(fields)
+
+    def __repr__(self) -> str:
+        inner = ", ".join(f"{k}={v!r}" for k, v in self.__dict__.items())
+        return f"Result({inner})"
+
+    def __eq__(self, other: object) -> bool:
+        if not isinstance(other, Result) or self.__dict__.keys() != other.__dict__.keys():
+            return False
+        return all(np.array_equal(a, b) if isinstance(a, np.ndarray) else a == b
+                   for a, b in zip(self.__dict__.values(), other.__dict__.values()))
+
+    def _fields(self) -> tuple:
+        return tuple(self.__dict__)
+
+
+def _simplify(response: dict) -> Any:
+    """A response of one field answers with that field's value (length -> a float, flatten
+    -> its points, split -> its two curves); otherwise a Result of every field."""
+    out = _arrays(response)
+    fields = out._fields() if isinstance(out, Result) else ()
+    if len(fields) == 1:
+        v = getattr(out, fields[0])
+        return tuple(v) if fields[0] == "curves" else v
+    return out
+
+
+def run(command: str, **request: Any) -> Any:
+    """Runs a command of the registry on a request given as keywords (curves, arrays and
+    numbers as they come); the response as Python (see Result)."""
+    return _simplify(json.loads(_casteljau.run(command, _dumps(request))))
+
+
+# ---------------------------------------------------------------------------------------
+# The curve classes
+
+_CLASSES: dict[str, type] = {}
+
+
+class Curve:
+    """A curve of the library. Construct one of the registry's classes (``Bezier(points)``,
+    ``Nurbs(degree=, knots=, points=, weights=)``, ...) or read curve JSON with
+    ``Curve.from_json``. Calling a curve evaluates it: ``c(t)`` for a number or an array of
+    any shape gives float64 points of shape ``t.shape + (d,)``; ``c(t, nu=k)`` the order-k
+    derivative."""
+
+    _type = ""  # the curve-JSON name (set on each generated class)
+    _fields: tuple[str, ...] = ()
+    __slots__ = ("_c", "_json")
+
+    def __init__(self, *args: Any, **fields: Any) -> None:
+        if type(self) is Curve:
+            raise TypeError("Curve is abstract: construct one of its subclasses or use Curve.from_json")
+        names = self._fields
+        if len(args) > len(names):
+            raise TypeError(f"{type(self).__name__}() takes at most {len(names)} positional arguments "
+                            f"({', '.join(names)}), got {len(args)}")
+        obj: dict[str, Any] = {"type": self._type}
+        obj.update(zip(names, args))
+        for k, v in fields.items():
+            if k not in names:
+                raise TypeError(f"{type(self).__name__}() got an unexpected keyword argument {k!r} "
+                                f"(fields: {', '.join(names)})")
+            if k in obj:
+                raise TypeError(f"{type(self).__name__}() got multiple values for argument {k!r}")
+            obj[k] = v
+        self._c = _casteljau.Curve(_dumps(obj))
+        self._json = None
+
+    @classmethod
+    def _wrap(cls, core: Any) -> "Curve":
+        c = object.__new__(_CLASSES[core.type])
+        c._c = core
+        c._json = None
+        return c
+
+    @classmethod
+    def from_json(cls, obj: dict | str) -> "Curve":
+        """The curve of a curve-JSON object (a dict or its text); on a subclass, the object
+        must be of that type."""
+        text = obj if isinstance(obj, str) else _dumps(obj)
+        c = cls._wrap(_casteljau.Curve(text))
+        if cls is not Curve and not isinstance(c, cls):
+            raise Error(f"type: {cls.__name__}.from_json needs a {cls._type!r} curve, got {c._c.type!r}")
+        return c
+
+    def to_json(self) -> dict:
+        """The curve JSON as the library writes it (a dict)."""
+        if self._json is None:
+            self._json = json.loads(self._c.to_json())
+        return self._json
+
+    def __reduce__(self) -> tuple:
+        # Pickled by its JSON form (multiprocessing, Dask).
+        return (Curve.from_json, (self._c.to_json(),))
+
+    def __repr__(self) -> str:
+        return f"{type(self).__name__}.from_json({self._c.to_json()})"
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, Curve) and self._c.to_json() == other._c.to_json()
+
+    __hash__ = None  # type: ignore[assignment]
+
+    @property
+    def dim(self) -> int:
+        """The dimension d of the curve's points."""
+        return self._c.dim
+
+    @property
+    def domain(self) -> tuple[float, float]:
+        """The parameter domain (lo, hi)."""
+        return self._c.domain
+
+    def __call__(self, t: Any, nu: int = 0) -> np.ndarray:
+        """Points (nu = 0) or order-nu derivatives at t (a number or an array of any shape):
+        float64, C-contiguous, shape t.shape + (d,). Outside the domain the end pieces
+        continue. A NaN parameter raises Error naming t[j] (j: the flat index)."""
+        return self._c.evaluate(np.asarray(t, dtype=np.float64), int(nu))
+
+    def derivative(self, k: int = 1) -> "Curve":
+        """The order-k derivative curve (the hodograph) as a Path of Bezier segments with the
+        curve's parametrisation: c.derivative(k)(t) == c(t, nu=k). Polynomial curves only
+        (the derivative of a rational curve is not a curve of the registry's types)."""
+        if k < 0:
+            raise Error(f"k: must be >= 0, got {k}")
+        c: Curve = self
+        for _ in range(k):
+            c = _hodograph(c)
+        return c
+
+    def curvature(self, t: Any) -> np.ndarray | float:
+        """The curvature at t (signed in 2-D): the shape of t."""
+        t = np.asarray(t, dtype=np.float64)
+        r = json.loads(self._c.run("eval", _dumps({"t": t.reshape(-1), "curvature": True}), "curve"))
+        k = np.array(r["curvature"], dtype=np.float64).reshape(t.shape)
+        return float(k) if k.ndim == 0 else k
+
+    def pieces(self) -> Result:
+        """The exact Bezier pieces: Result(breaks (n + 1,), segments [Bezier or
+        RationalBezier on [0, 1]])."""
+        p = self.to_bezier()
+        j = p.to_json()
+        return Result(breaks=np.array(j["breaks"], dtype=np.float64),
+                      segments=[Curve.from_json(s) for s in j["segments"]])
+
+    def project(self, point: Any, farthest: bool = False) -> Result:
+        """The nearest (farthest) point of the curve to point (d,), or to each row of points
+        (n, d): Result(t, point, distance) with arrays of shape (n,), (n, d), (n,) (one
+        point: a number, (d,), a number). The rows run in C++ without the GIL."""
+        pts = np.asarray(point, dtype=np.float64)
+        if pts.ndim == 1:
+            return _simplify(json.loads(self._c.run("project", _dumps({"point": pts, "farthest": farthest}), "curve")))
+        if pts.ndim != 2:
+            raise Error(f"points: must be one point (d,) or an array of points (n, d), got shape {pts.shape}")
+        rows = json.loads(self._c.run_each("project", _dumps({"farthest": farthest}), "curve", "point", "points", pts))
+        # t, point and distance per row (all_t and intervals, present on ties only, are left
+        # out here: project one point to see them).
+        d = self.dim
+        return Result(t=np.array([r["t"] for r in rows], dtype=np.float64),
+                      point=np.array([r["point"] for r in rows], dtype=np.float64).reshape(len(rows), d),
+                      distance=np.array([r["distance"] for r in rows], dtype=np.float64))
+
+
+def _hodograph(c: Curve) -> Curve:
+    """The first derivative of a polynomial curve as a path of Bezier segments: on the
+    break interval [a, b] a degree-n piece with points P has derivative points
+    n (P[j+1] - P[j]) / (b - a)."""
+    j = c.to_bezier().to_json()
+    breaks = j["breaks"]
+    segs = []
+    for i, s in enumerate(j["segments"]):
+        if s["type"] != "bezier":
+            raise Error(f"curve: derivative() needs a polynomial curve, this one has a {s['type']} piece "
+                        "(evaluate its derivatives with c(t, nu=k))")
+        P = np.array(s["points"], dtype=np.float64)
+        n = len(P) - 1
+        h = breaks[i + 1] - breaks[i]
+        D = n * np.diff(P, axis=0) / h if n > 0 else np.zeros_like(P)
+        segs.append({"type": "bezier", "points": D})
+    return Curve.from_json({"type": "path", "segments": segs, "breaks": breaks})
+
+
+# ---------------------------------------------------------------------------------------
+# Generation from the registry
+
+
+def _registry_commands() -> list:
+    return _casteljau.commands()
+
+
+def _command_method(name: str, summary: str, fields: list) -> Any:
+    params = [f[0] for f in fields if f[0] != "curve"]
+
+    def method(self: Curve, *args: Any, **kw: Any) -> Any:
+        if len(args) > len(params):
+            raise TypeError(f"{name}() takes at most {len(params)} arguments ({', '.join(params)}), got {len(args)}")
+        req = dict(zip(params, args))
+        for k, v in kw.items():
+            if k.endswith("_") and k[:-1] in params:  # from_: "from" is a Python keyword
+                k = k[:-1]
+            if k not in params:
+                raise TypeError(f"{name}() got an unexpected keyword argument {k!r} (fields: {', '.join(params)})")
+            req[k] = v
+        return _simplify(json.loads(self._c.run(name, _dumps(req), "curve")))
+
+    method.__name__ = name
+    method.__qualname__ = f"Curve.{name}"
+    method.__doc__ = _doc(name, summary, [f for f in fields if f[0] != "curve"])
+    return method
+
+
+def _command_function(name: str, summary: str, fields: list) -> Any:
+    params = [f[0] for f in fields]
+    gathers = bool(fields) and fields[0][1] == "curve[]"
+
+    def function(*args: Any, **kw: Any) -> Any:
+        req: dict[str, Any] = {}
+        if gathers and args and isinstance(args[0], Curve):
+            # intersect(a, b), distance(a, b): the curves array from the leading curves.
+            n = 0
+            while n < len(args) and isinstance(args[n], Curve):
+                n += 1
+            req[params[0]] = list(args[:n])
+            rest, names = args[n:], params[1:]
+        else:
+            rest, names = args, params
+        if len(rest) > len(names):
+            raise TypeError(f"{name}() takes at most {len(params)} arguments ({', '.join(params)})")
+        req.update(zip(names, rest))
+        for k, v in kw.items():
+            if k not in params:
+                raise TypeError(f"{name}() got an unexpected keyword argument {k!r} (fields: {', '.join(params)})")
+            req[k] = v
+        return _simplify(json.loads(_casteljau.run(name, _dumps(req))))
+
+    function.__name__ = name
+    function.__qualname__ = name
+    function.__doc__ = _doc(name, summary, fields)
+    return function
+
+
+def _doc(name: str, summary: str, fields: list) -> str:
+    lines = [summary + ".", "", f"The registry's command {name!r} (docs/cli.md). Arguments:"]
+    for fname, ftype, required, default, help_ in fields:
+        state = "required" if required else (f"default {default}" if default else "optional")
+        lines.append(f"    {fname} ({ftype}, {state}): {help_}")
+    return "\n".join(lines)
+
+
+# Methods written above by hand take precedence over a generated one of the same name.
+_HAND_WRITTEN = {"project"}
+# Commands that are not methods: eval is the call (and curvature), render and the readers
+# are module functions.
+_NOT_METHODS = {"eval"}
+
+functions: dict[str, Any] = {}
+for _name, _summary, _fields in _registry_commands():
+    _field_names = [f[0] for f in _fields]
+    if _name in _NOT_METHODS:
+        continue  # casteljau.run("eval", ...) still reaches it
+    if _fields and _fields[0][0] == "curve":
+        if _name not in _HAND_WRITTEN:
+            setattr(Curve, _name, _command_method(_name, _summary, _fields))
+    else:
+        functions[_name] = _command_function(_name, _summary, _fields)
+
+
+def _make_class(json_name: str, class_name: str, fields: list) -> type:
+    names = tuple(f for f in fields if f != "type")
+    doc = (f"The registry's {json_name!r} curve: {class_name}({', '.join(names)}), each a keyword or in this "
+           f"order; the fields of curve JSON (docs/cli.md).")
+    cls = type(class_name, (Curve,), {"_type": json_name, "_fields": names, "__slots__": (), "__doc__": doc,
+                                      "__module__": "casteljau"})
+    for f in names:
+        if hasattr(Curve, f):  # dim: the property of every curve
+            continue
+        setattr(cls, f, property(lambda self, f=f: _arrays(self.to_json().get(f)), doc=f"The curve JSON's {f!r}."))
+    return cls
+
+
+curve_classes: dict[str, type] = {}
+for _json_name, _class_name, _type_fields in _casteljau.curve_types():
+    _cls = _make_class(_json_name, _class_name, _type_fields)
+    _CLASSES[_json_name] = _cls
+    curve_classes[_class_name] = _cls

@@ -1,0 +1,244 @@
+"""The library's classes: generated from the registry, evaluation on arrays, the commands
+as methods and functions, errors. Expected values are closed forms computed here."""
+
+import math
+import pickle
+import threading
+
+import numpy as np
+import pytest
+
+import casteljau
+from casteljau import _casteljau
+
+# Round-off of a few operations on numbers of size 1: the library's evaluation (de
+# Casteljau, knot spans) against the closed forms written below.
+EPS = 1e-14
+
+PARABOLA = [[0.0, 0.0], [1.0, 2.0], [2.0, 0.0]]
+
+
+def parabola(t):
+    """The quadratic Bezier on PARABOLA in power form: (2t, 4t(1 - t))."""
+    t = np.asarray(t, dtype=float)
+    return np.stack([2 * t, 4 * t * (1 - t)], axis=-1)
+
+
+def test_one_class_per_registry_type():
+    names = {cls for _, cls, _ in _casteljau.curve_types()}
+    assert {"Bezier", "RationalBezier", "BSpline", "Nurbs", "Polyline", "Path", "Lagrange", "CubicSpline",
+            "Hermite", "CatmullRom"} <= names
+    for json_name, cls_name, fields in _casteljau.curve_types():
+        cls = getattr(casteljau, cls_name)
+        assert issubclass(cls, casteljau.Curve)
+        assert cls._type == json_name
+        assert cls._fields == tuple(f for f in fields if f != "type")
+
+
+def test_constructor_fields_are_what_the_reader_accepts():
+    # The reader's own message for an unknown field lists the fields it accepts: the
+    # classes' arguments must be exactly those (in the same order).
+    for json_name, cls_name, _ in _casteljau.curve_types():
+        with pytest.raises(casteljau.Error) as err:
+            casteljau.Curve.from_json({"type": json_name, "zzz": 1})
+        listed = str(err.value).split(" has: ")[1].rstrip(")").split(", ")
+        assert tuple(listed) == ("type",) + getattr(casteljau, cls_name)._fields, cls_name
+
+
+def test_commands_become_methods_and_functions():
+    for name, _, fields in _casteljau.commands():
+        if name == "eval":  # the call itself
+            assert not hasattr(casteljau, "eval") and not hasattr(casteljau.Curve, "eval")
+        elif fields and fields[0][0] == "curve":
+            assert callable(getattr(casteljau.Curve, name)), name
+        else:
+            assert callable(getattr(casteljau, name)), name
+    for name in ("intersect", "distance", "fit", "subdivide"):
+        assert callable(getattr(casteljau, name))
+
+
+def test_evaluate_shapes_and_values():
+    c = casteljau.Bezier(PARABOLA)
+    assert c.dim == 2 and c.domain == (0.0, 1.0)
+    p = c(0.25)
+    assert p.shape == (2,) and p.dtype == np.float64
+    np.testing.assert_allclose(p, parabola(0.25), rtol=0, atol=EPS)
+    t = np.linspace(-0.5, 1.5, 24).reshape(2, 3, 4)  # outside the domain too: the piece continues
+    out = c(t)
+    assert out.shape == (2, 3, 4, 2) and out.flags.c_contiguous and out.dtype == np.float64
+    np.testing.assert_allclose(out, parabola(t), rtol=0, atol=4 * EPS)
+    # A non-contiguous view and integer input are accepted.
+    np.testing.assert_allclose(c(t[:, ::2, 1]), parabola(t[:, ::2, 1]), rtol=0, atol=4 * EPS)
+    np.testing.assert_allclose(c([0, 1]), [[0, 0], [2, 0]], rtol=0, atol=0)
+
+
+def test_derivatives():
+    c = casteljau.Bezier(np.array(PARABOLA))
+    t = np.linspace(0, 1, 7)
+    # d/dt (2t, 4t - 4t^2) = (2, 4 - 8t); second derivative (0, -8).
+    np.testing.assert_allclose(c(t, nu=1), np.stack([np.full_like(t, 2), 4 - 8 * t], -1), rtol=0, atol=8 * EPS)
+    np.testing.assert_allclose(c(t, nu=2), np.tile([0.0, -8.0], (7, 1)), rtol=0, atol=16 * EPS)
+    d = c.derivative()
+    assert isinstance(d, casteljau.Path)
+    np.testing.assert_allclose(d(t), c(t, nu=1), rtol=0, atol=8 * EPS)
+    np.testing.assert_allclose(c.derivative(2)(t), c(t, nu=2), rtol=0, atol=16 * EPS)
+
+
+def test_constructors_from_fields():
+    b = casteljau.BSpline(degree=2, knots=[0, 0, 0, 1, 2, 2, 2], points=[[0], [1], [3], [4]])
+    # Keyword and positional forms agree (positional: the registry's field order).
+    assert casteljau.Nurbs(2, [0, 0, 0, 1, 1, 1], [[1, 0], [1, 1], [0, 1]], [1, math.sqrt(0.5), 1]) == casteljau.Nurbs(
+        degree=2, knots=[0, 0, 0, 1, 1, 1], points=[[1, 0], [1, 1], [0, 1]], weights=[1, math.sqrt(0.5), 1])
+    assert b.domain == (0.0, 2.0)
+    np.testing.assert_array_equal(b.knots, [0, 0, 0, 1, 2, 2, 2])
+    r = casteljau.RationalBezier([[1, 0], [1, 1], [0, 1]], [1, math.sqrt(0.5), 1])
+    # The rational quadratic with middle weight cos(45 deg) is the quarter of the unit circle.
+    u = np.linspace(0, 1, 11)
+    np.testing.assert_allclose(np.linalg.norm(r(u), axis=1), 1, rtol=0, atol=4 * EPS)
+    with pytest.raises(TypeError, match="unexpected keyword argument 'knotz'"):
+        casteljau.BSpline(degree=1, knotz=[0, 1])
+
+
+def test_json_round_trip_and_pickle():
+    c = casteljau.Curve.from_json({"type": "circle", "center": [1, 2], "radius": 3})
+    assert isinstance(c, casteljau.Nurbs)
+    again = casteljau.Curve.from_json(c.to_json())
+    assert again == c
+    p = pickle.loads(pickle.dumps(c))
+    assert p == c and type(p) is casteljau.Nurbs
+    t = np.linspace(*c.domain, 9)
+    np.testing.assert_allclose(np.linalg.norm(p(t) - [1, 2], axis=1), 3, rtol=0, atol=16 * EPS)
+    with pytest.raises(casteljau.Error, match="type: Bezier.from_json needs a 'bezier' curve"):
+        casteljau.Bezier.from_json(c.to_json())
+
+
+def test_operations():
+    c = casteljau.Bezier(PARABOLA)
+    left, right = c.split(0.5)
+    assert isinstance(left, casteljau.Bezier)
+    np.testing.assert_allclose(left(1.0), parabola(0.5), rtol=0, atol=EPS)
+    e = c.elevate(2)
+    assert len(e.points) == 5
+    t = np.linspace(0, 1, 9)
+    np.testing.assert_allclose(e(t), c(t), rtol=0, atol=4 * EPS)
+    b = casteljau.BSpline(degree=2, knots=[0, 0, 0, 1, 1, 1], points=PARABOLA)
+    k = b.insert_knot(0.5)
+    assert len(k.knots) == 7
+    np.testing.assert_allclose(k(t), c(t), rtol=0, atol=4 * EPS)
+    pieces = k.pieces()
+    np.testing.assert_array_equal(pieces.breaks, [0, 0.5, 1])
+    assert [type(s) for s in pieces.segments] == [casteljau.Bezier, casteljau.Bezier]
+    assert isinstance(k.to_bezier(), casteljau.Path)
+
+
+def test_queries_closed_forms():
+    c = casteljau.Bezier(PARABOLA)
+    box = c.bounds()
+    np.testing.assert_allclose(box.min, [0, 0], atol=EPS)
+    np.testing.assert_allclose(box.max, [2, 1], atol=EPS)  # apex at t = 1/2
+    # Length of the parabola y = 2x - x^2 on [0, 2]: integral of sqrt(1 + (2 - 2x)^2),
+    # closed form sqrt(5) + asinh(2) / 2.
+    # 1e-12: the accuracy the length command guarantees (docs/cli.md).
+    assert c.length() == pytest.approx(math.sqrt(5) + math.asinh(2) / 2, rel=1e-12)
+    line = casteljau.Polyline([[0, 0], [3, 4]])
+    np.testing.assert_allclose(line.param_at_length([0, 2.5, 5]), [0, 0.5, 1], atol=EPS)
+    # Curvature of the parabola at its apex: |x'y'' - y'x''| / |v|^3 = 2 * 8 / 8 = 2 (turning right: -2).
+    assert c.curvature(0.5) == pytest.approx(-2, rel=1e-13)  # a few roundings on exact inputs
+    assert c.curvature(np.array([[0.5]])).shape == (1, 1)
+    f = c.features()
+    np.testing.assert_allclose(f.extrema[1], [0.5], atol=EPS)
+    circle = casteljau.Curve.from_json({"type": "circle", "center": [0, 0], "radius": 2})
+    # Exact up to rounding for the circle's rational pieces integrated by quadrature (docs/cli.md).
+    assert circle.area() == pytest.approx(4 * math.pi, rel=1e-12)
+    poly = circle.flatten(1e-3)
+    assert poly.shape[1] == 2 and len(poly) > 10
+    # Every vertex lies on the circle (evaluated points: rounding only, 1e-12 of the radius
+    # is generous) and every chord's midpoint, its farthest point from an arc of the circle
+    # of radius 2, within the tolerance (1e-9 relative slack: the rounding of the vertices).
+    np.testing.assert_allclose(np.linalg.norm(poly, axis=1), 2, atol=1e-12)
+    mid = (poly[1:] + poly[:-1]) / 2
+    assert np.all(2 - np.linalg.norm(mid, axis=1) <= 1e-3 * (1 + 1e-9))
+    assert len(circle.flatten(1e-3, method="uniform")) >= 3
+
+
+def test_project_vectorised():
+    seg = casteljau.Polyline([[0, 0], [4, 0]])
+    pts = np.array([[1, 1], [3, -2], [5, 1], [-1, 0]], dtype=float)
+    r = seg.project(pts)
+    # Nearest point on the segment [0, 4] x {0}: x clamped to [0, 4].
+    np.testing.assert_allclose(r.point, [[1, 0], [3, 0], [4, 0], [0, 0]], atol=EPS)
+    np.testing.assert_allclose(r.distance, [1, 2, math.sqrt(2), 1], atol=EPS)
+    np.testing.assert_allclose(r.t, [0.25, 0.75, 1, 0], atol=EPS)
+    # The unit circle's centre ties along the whole circle (the response then has all_t or
+    # intervals): every row still gives t, point, distance; distance 1 from the centre, 1
+    # from (2, 0) at the point (1, 0).
+    circle = casteljau.Curve.from_json({"type": "circle", "center": [0, 0], "radius": 1})
+    rc = circle.project(np.array([[0.0, 0.0], [2.0, 0.0]]))
+    np.testing.assert_allclose(rc.distance, [1, 1], atol=EPS)
+    np.testing.assert_allclose(rc.point[1], [1, 0], atol=EPS)
+    empty = seg.project(np.zeros((0, 2)))
+    assert empty.t.shape == (0,) and empty.point.shape == (0, 2)
+    one = seg.project([1, 1])
+    assert one.distance == pytest.approx(1)
+    with pytest.raises(casteljau.Error, match=r"^points\[1\]\[0\]: must be a finite number"):
+        seg.project(np.array([[1, 1], [np.nan, 0]]))
+
+
+def test_module_functions():
+    a = casteljau.Polyline([[0, 0], [2, 2]])
+    b = casteljau.Polyline([[0, 2], [2, 0]])
+    r = casteljau.intersect(a, b)
+    assert len(r.intersections) == 1
+    np.testing.assert_allclose(r.intersections[0].point, [1, 1], atol=EPS)
+    d = casteljau.distance(casteljau.Polyline([[0, 0], [1, 0]]), casteljau.Polyline([[0, 3], [1, 3]]))
+    assert d.distance == pytest.approx(3)
+    pts = np.array([[0, 0], [1, 1], [2, 0], [3, 1]], dtype=float)
+    fitted = casteljau.fit(pts, degree=3, control_points=4).curve
+    assert isinstance(fitted, casteljau.BSpline)
+    # Interpolation: the fitted curve passes through every point (at some parameter); 1e-9:
+    # the solve of a 4 x 4 system and the projection, far below the points' spacing of 1.
+    assert np.all(fitted.project(pts).distance < 1e-9)
+    # Chaikin on the square (docs/cli.md's example): each edge gives its 1/4 and 3/4 points.
+    s = casteljau.subdivide(points=[[0, 0], [4, 0], [4, 4], [0, 4]], scheme="chaikin", iterations=1, closed=True)
+    np.testing.assert_allclose(s.points[:2], [[1, 0], [3, 0]])
+    assert isinstance(s.limit, casteljau.BSpline)
+
+
+def test_errors_carry_the_command_line_message():
+    assert issubclass(casteljau.Error, ValueError)
+    with pytest.raises(casteljau.Error, match=r"^points\[1\]\[1\]: must be a finite number, got nan$"):
+        casteljau.Bezier([[0, 0], [1, np.nan]])
+    with pytest.raises(casteljau.Error, match=r"^points\[1\]\[1\]: must be a finite number"):
+        casteljau.Bezier([[0, 0], [1, float("inf")]])
+    c = casteljau.Bezier(PARABOLA)
+    with pytest.raises(casteljau.Error, match=r"^t\[4\]: "):
+        c(np.array([[0, 0.1], [0.2, 0.3], [np.nan, 0.5]]))
+    with pytest.raises(casteljau.Error, match=r"^tolerance: "):
+        c.flatten(-1.0)
+    with pytest.raises(casteljau.Error, match=r"^weights"):
+        casteljau.RationalBezier([[0, 0], [1, 1]], [1, -1])
+    with pytest.raises(casteljau.Error, match=r"^command: unknown command 'nope'"):
+        _casteljau.run("nope", "{}")
+    with pytest.raises(casteljau.Error, match=r"^curve\.type: split needs"):
+        casteljau.Polyline([[0, 0], [1, 1]]).split(0.5)
+    with pytest.raises(casteljau.Error):
+        c.derivative(-1)
+
+
+def test_two_threads_evaluate_at_once():
+    c = casteljau.BSpline(degree=3, knots=np.r_[[0] * 3, np.linspace(0, 1, 50), [1] * 3],
+                          points=np.random.default_rng(1).random((52, 3)))
+    t = np.random.default_rng(2).random(50_000)
+    expected = c(t)
+    results = [None, None]
+
+    def work(i):
+        results[i] = c(t)
+
+    threads = [threading.Thread(target=work, args=(i,)) for i in range(2)]
+    for th in threads:
+        th.start()
+    for th in threads:
+        th.join()
+    for r in results:
+        np.testing.assert_array_equal(r, expected)

@@ -1,0 +1,120 @@
+"""scipy's names: the same calls on scipy.interpolate (the oracle, at test time) and on
+casteljau, compared at 1e-12 relative (the issue's bar; both evaluate the same
+polynomials in double, a few dozen roundings apart)."""
+
+import numpy as np
+import pytest
+import scipy.interpolate as si
+
+import casteljau
+
+REL = 1e-12
+
+
+def close(a, b, rel=REL):
+    a, b = np.asarray(a), np.asarray(b)
+    assert a.shape == b.shape, (a.shape, b.shape)
+    # Relative to the data's size: values near a zero of the spline have no relative accuracy.
+    scale = max(1.0, float(np.max(np.abs(b)))) if b.size else 1.0
+    np.testing.assert_allclose(a, b, rtol=rel, atol=rel * scale)
+
+
+RNG = np.random.default_rng(16)
+X = np.sort(RNG.random(9)) * 10
+Y = np.sin(X) + RNG.random(9)
+XS = np.linspace(X[0] - 1, X[-1] + 1, 101)  # extrapolated at both ends too
+
+
+@pytest.mark.parametrize("bc", ["not-a-knot", "natural", "clamped", ((1, 0.5), (2, -1.0)), ("natural", "clamped")])
+def test_cubic_spline(bc):
+    ours, theirs = casteljau.CubicSpline(X, Y, bc_type=bc), si.CubicSpline(X, Y, bc_type=bc)
+    for nu in range(4):
+        close(ours(XS, nu), theirs(XS, nu))
+    assert ours(2.5).shape == theirs(2.5).shape == ()
+    close(ours.x, theirs.x, rel=0)
+    close(ours.c, theirs.c)
+    close(ours.derivative()(XS), theirs.derivative()(XS))
+    close(ours.derivative(2)(XS), theirs.derivative(2)(XS))
+    inside = XS[(XS >= X[0]) & (XS <= X[-1])]
+    close(ours.antiderivative()(inside), theirs.antiderivative()(inside))
+    close(ours.antiderivative(2)(inside), theirs.antiderivative(2)(inside))
+    # Beyond the data the antiderivative's end pieces (Bernstein form of degree 4 and 5 on an
+    # interval of width 0.23) are evaluated at s down to -4.3 in their own parameter:
+    # rounding grows like (1 + 2|s|)^n there, about 1e4 for n = 4 (mpmath puts scipy's
+    # power form, not ours, within 1e-15 of the integral over [-3, 12]).
+    close(ours.antiderivative()(XS), theirs.antiderivative()(XS), rel=1e-10)
+    close(ours.antiderivative(2)(XS), theirs.antiderivative(2)(XS), rel=1e-10)
+    close(ours.integrate(X[1], X[-2]), theirs.integrate(X[1], X[-2]))
+    close(ours.integrate(-3.0, 12.0), theirs.integrate(-3.0, 12.0), rel=1e-10)
+
+
+def test_cubic_spline_roots_and_shapes():
+    y = np.cos(X)
+    ours, theirs = casteljau.CubicSpline(X, y), si.CubicSpline(X, y)
+    close(ours.roots(extrapolate=False), theirs.roots(extrapolate=False), rel=1e-10)  # root conditioning
+    close(ours.roots(), theirs.roots(), rel=1e-10)
+    # Vector data (n, 2, 2) keeps scipy's shapes; periodic with extrapolate.
+    Y3 = RNG.random((9, 2, 2))
+    close(casteljau.CubicSpline(X, Y3)(XS.reshape(1, -1)), si.CubicSpline(X, Y3)(XS.reshape(1, -1)))
+    Yp = np.sin(np.linspace(0, 2 * np.pi, 9))
+    Yp[-1] = Yp[0]
+    xp = np.linspace(0, 2 * np.pi, 9)
+    close(casteljau.CubicSpline(xp, Yp, bc_type="periodic")(XS), si.CubicSpline(xp, Yp, bc_type="periodic")(XS))
+    # extrapolate=False: NaN outside, as scipy.
+    close(casteljau.CubicSpline(X, Y, extrapolate=False)(XS), si.CubicSpline(X, Y, extrapolate=False)(XS))
+
+
+def test_pickled_scipy_objects_keep_scipys_shapes():
+    import pickle
+
+    for ours in (casteljau.CubicSpline(X, Y), casteljau.BSpline([0, 0, 0, 1, 2, 2, 2], [1.0, 2.0, 0.0, 1.0], 2),
+                 casteljau.PchipInterpolator(X, Y)):
+        again = pickle.loads(pickle.dumps(ours))
+        assert type(again) is type(ours)
+        np.testing.assert_array_equal(again(XS), ours(XS))
+        assert again(1.5).shape == ()
+
+
+def test_bsplines():
+    t = np.r_[0, 0.5, 1, 2, 3.5, 4, 5, 6, 7.5]  # unclamped: the domain is [t[k], t[n]]
+    c = RNG.random(5)
+    ours, theirs = casteljau.BSpline(t, c, 3), si.BSpline(t, c, 3)
+    xs = np.linspace(1, 6, 50)
+    close(ours(xs), theirs(xs))
+    close(ours(xs, 1), theirs(xs, 1))
+    close(ours.integrate(2, 5), theirs.integrate(2, 5))
+    c2 = RNG.random((5, 3))
+    close(casteljau.BSpline(t, c2, 3)(xs), si.BSpline(t, c2, 3)(xs))
+    for k in (1, 2, 3, 5):
+        close(casteljau.make_interp_spline(X, Y, k=k)(XS), si.make_interp_spline(X, Y, k=k)(XS))
+
+
+def test_hermite_interpolators():
+    xs = np.linspace(X[0], X[-1], 77)
+    close(casteljau.PchipInterpolator(X, Y)(XS), si.PchipInterpolator(X, Y)(XS))
+    close(casteljau.Akima1DInterpolator(X, Y)(xs), si.Akima1DInterpolator(X, Y)(xs))
+    close(casteljau.Akima1DInterpolator(X, Y)(XS), si.Akima1DInterpolator(X, Y)(XS))  # NaN outside, both
+    close(casteljau.PchipInterpolator(X, Y).derivative()(xs), si.PchipInterpolator(X, Y).derivative()(xs))
+    close(casteljau.PchipInterpolator(X, Y).c, si.PchipInterpolator(X, Y).c)
+    # The degree-8 interpolating polynomial on 9 random nodes: its two evaluations (ours
+    # through the Bezier form, scipy's barycentric formula) differ by eps times the
+    # Lebesgue constant of the nodes (about 1e5 here); compared inside the nodes' hull.
+    close(casteljau.BarycentricInterpolator(X, Y)(xs), si.BarycentricInterpolator(X, Y)(xs), rel=1e-9)
+
+
+def test_errors_name_scipys_arguments():
+    with pytest.raises(casteljau.Error, match=r"^x\[2\]: x must be strictly increasing"):
+        casteljau.CubicSpline([0, 1, 1, 2], [0, 1, 2, 3])
+    with pytest.raises(casteljau.Error, match=r"^y\[1\]: must be a finite number"):
+        casteljau.CubicSpline([0, 1, 2], [0, np.nan, 2])
+    knots = [0, 0, 0, 1, 0.5, 2, 2, 2]  # decreasing at index 4
+    with pytest.raises(casteljau.Error, match=r"^t\[4\]: "):
+        casteljau.BSpline(knots, [1, 2, 3, 4, 5], 2)
+    with pytest.raises(casteljau.Error, match=r"^knots\[4\]: "):
+        casteljau.BSpline(degree=2, knots=knots, points=[[1], [2], [3], [4], [5]])
+    with pytest.raises(casteljau.Error, match=r"^x\[1\]: "):
+        casteljau.CubicSpline([0, 1, 2], [0, 1, 2])(np.array([0.5, np.nan]))
+    with pytest.raises(casteljau.Error, match=r"^bc_type: "):
+        casteljau.CubicSpline(X, Y, bc_type="nonsense")
+    with pytest.raises(ValueError):  # the same exception class scipy's callers catch
+        casteljau.PchipInterpolator([0, 0, 1], [1, 2, 3])
