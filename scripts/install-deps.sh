@@ -14,6 +14,7 @@ build_pkgs=(
   python3-scipy python3-mpmath python3-fonttools
   libocct-modeling-data-dev libocct-foundation-dev
   libfreetype-dev fonts-dejavu-core fonts-urw-base35
+  libcpp-httplib-dev chromium chromium-driver python3-selenium  # casteljau serve (cpp-httplib) and its browser test (headless chromium)
 )
 fuzz_pkgs=()
 bench_pkgs=(lib2geom-dev libocct-modeling-data-dev libocct-foundation-dev libocct-modeling-algorithms-dev libboost-dev libdouble-conversion-dev libgsl-dev libsisl-dev

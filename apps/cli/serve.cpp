@@ -1,0 +1,433 @@
+// `casteljau serve`: the explorer page and every command over HTTP (docs/cli.md, "casteljau
+// serve"; the design in docs/architecture.md, "The server"). The only translation unit
+// that includes cpp-httplib.
+//
+// Each request is computed in a process of its own, forked for it by a single-threaded
+// spawner process that the server forks at start-up, before any thread exists. The child
+// arms two timers on itself (CPU time at the limit, wall time at four times it) whose
+// signals end it, so a request past its budget stops wherever it is, in any loop of the
+// library, and nothing of one request outlives it or reaches the next.
+#include "serve.hpp"
+
+#include <fcntl.h>
+#include <poll.h>
+#include <sys/prctl.h>
+#include <sys/socket.h>
+#include <sys/time.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <csignal>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <semaphore>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <thread>
+
+#include "casteljau/io/commands.hpp"
+#include "explorer_assets.hpp"
+#include "request.hpp"
+
+// Last: through <resolv.h> it defines the macro _res, a name Eigen uses.
+#include <httplib.h>
+
+namespace casteljau::cli {
+namespace {
+
+using io::Json;
+using io::OrderedJson;
+
+// ------------------------------------------------------------------------------------------
+// Plain descriptor I/O (EINTR retried).
+
+bool write_all(int fd, std::string_view s) {
+  while (!s.empty()) {
+    const ssize_t n = ::send(fd, s.data(), s.size(), MSG_NOSIGNAL);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      return false;
+    }
+    s.remove_prefix(static_cast<std::size_t>(n));
+  }
+  return true;
+}
+
+/// Reads until end of file, at most `limit` bytes; false on an error or past the limit.
+bool read_all(int fd, std::string& out, std::size_t limit) {
+  char buf[1 << 16];
+  for (;;) {
+    const ssize_t n = ::read(fd, buf, sizeof buf);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      return false;
+    }
+    if (n == 0) return true;
+    out.append(buf, static_cast<std::size_t>(n));
+    if (out.size() > limit) return false;
+  }
+}
+
+timeval to_timeval(double seconds) {
+  timeval tv{};
+  tv.tv_sec = static_cast<time_t>(seconds);
+  tv.tv_usec = static_cast<suseconds_t>((seconds - static_cast<double>(tv.tv_sec)) * 1e6);
+  if (tv.tv_sec == 0 && tv.tv_usec == 0) tv.tv_usec = 1;
+  return tv;
+}
+
+// ------------------------------------------------------------------------------------------
+// The compute side: the child's answer travels back as one frame, a kind byte then the
+// text's length (8 bytes) then the text, so that a child ended by its timer (or a crash)
+// is told from one that answered.
+
+constexpr char kind_json = 'j', kind_svg = 's', kind_bad = 'b', kind_internal = 'i', kind_not_served = 'n';
+
+std::string frame(char kind, std::string_view text) {
+  std::string f(1, kind);
+  const std::uint64_t n = text.size();
+  f.append(reinterpret_cast<const char*>(&n), sizeof n);
+  f.append(text);
+  return f;
+}
+
+/// glyph's font on a server: a file name inside the font directory, nothing else (no path,
+/// no "..": the request never names a file outside it). Returns the request to run.
+std::string glyph_request(const std::string& body, const std::string& font_dir) {
+  Json request = io::parse_json(body);
+  if (request.is_object() && request.contains("font") && request["font"].is_string()) {
+    const std::string name = request["font"].get<std::string>();
+    const bool plain = !name.empty() && name.front() != '.' && name.find_first_of("/\\") == std::string::npos &&
+                       name.find('\0') == std::string::npos && name.size() <= 255;
+    if (!plain) {
+      throw InvalidArgument("font", "the server reads fonts by file name from its font directory (no '/', not starting with '.'): " +
+                                        io::quoted(name));
+    }
+    request["font"] = font_dir + "/" + name;
+  }
+  return request.dump();
+}
+
+/// One request, in its own process: reads "NAME\nBODY" from fd, answers one frame, exits.
+[[noreturn]] void compute_child(int fd, const ServeOptions& options) {
+  std::signal(SIGCHLD, SIG_DFL);
+  ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+  // The budget: CPU time (what "computed for more than" counts, robust on a loaded machine),
+  // and wall time as a backstop. The default action of both signals ends the process.
+  std::signal(SIGPROF, SIG_DFL);
+  std::signal(SIGALRM, SIG_DFL);
+  itimerval cpu{}, wall{};
+  cpu.it_value = to_timeval(options.time_limit);
+  wall.it_value = to_timeval(4 * options.time_limit + 1);
+  ::setitimer(ITIMER_PROF, &cpu, nullptr);
+  ::setitimer(ITIMER_REAL, &wall, nullptr);
+
+  std::string input;
+  std::string out;
+  if (read_all(fd, input, options.max_body + 256)) {
+    const std::size_t nl = input.find('\n');
+    const std::string name = input.substr(0, nl);
+    std::string body = nl == std::string::npos ? std::string() : input.substr(nl + 1);
+    const io::Command* command = io::find_command(name);
+    if (!command) {
+      out = frame(kind_not_served, "command: unknown command " + io::quoted(name));
+    } else {
+      Answer a;
+      if (name == "glyph") {
+        try {
+          body = glyph_request(body, options.font_dir);
+        } catch (const InvalidArgument& e) {
+          a.error = where_what(e);
+          a.status = exit_bad_input;
+        }
+      }
+      if (a.status == exit_ok) a = answer(*command, body, false);
+      if (a.status == exit_ok) {
+        out = frame(a.is_svg ? kind_svg : kind_json, a.text);
+      } else {
+        out = frame(a.status == exit_bad_input ? kind_bad : kind_internal, clipped(a.error, max_message));
+      }
+    }
+  }
+  write_all(fd, out);
+  ::_exit(0);
+}
+
+/// The spawner: receives one socket per request on ctl and forks a child to answer on it.
+/// Single-threaded, so a fork copies no lock held by another thread.
+[[noreturn]] void spawner(int ctl, const ServeOptions& options, pid_t server) {
+  ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+  if (::getppid() != server) ::_exit(0);
+  std::signal(SIGCHLD, SIG_IGN);  // children are reaped by the system
+  std::signal(SIGINT, SIG_IGN);   // a terminal's Ctrl-C stops the server, which stops us
+  for (;;) {
+    char byte;
+    iovec iov{&byte, 1};
+    alignas(cmsghdr) char control[CMSG_SPACE(sizeof(int))];
+    msghdr msg{};
+    msg.msg_iov = &iov;
+    msg.msg_iovlen = 1;
+    msg.msg_control = control;
+    msg.msg_controllen = sizeof control;
+    const ssize_t n = ::recvmsg(ctl, &msg, MSG_CMSG_CLOEXEC);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) ::_exit(0);  // the server is gone
+    const cmsghdr* c = CMSG_FIRSTHDR(&msg);
+    if (!c || c->cmsg_level != SOL_SOCKET || c->cmsg_type != SCM_RIGHTS) continue;
+    int fd;
+    std::memcpy(&fd, CMSG_DATA(c), sizeof fd);
+    const pid_t pid = ::fork();
+    if (pid == 0) {
+      ::close(ctl);
+      compute_child(fd, options);
+    }
+    ::close(fd);  // fork failed: the server sees end of file without an answer
+  }
+}
+
+/// The server's side of the spawner.
+class Computer {
+ public:
+  explicit Computer(const ServeOptions& options) : options_(options), slots_(static_cast<std::ptrdiff_t>(jobs(options))) {
+    int sv[2];
+    if (::socketpair(AF_UNIX, SOCK_SEQPACKET | SOCK_CLOEXEC, 0, sv) != 0) throw std::runtime_error(std::strerror(errno));
+    const pid_t server = ::getpid();
+    const pid_t pid = ::fork();
+    if (pid < 0) throw std::runtime_error(std::string("cannot fork: ") + std::strerror(errno));
+    if (pid == 0) {
+      ::close(sv[0]);
+      spawner(sv[1], options, server);
+    }
+    ::close(sv[1]);
+    ctl_ = sv[0];
+    spawner_ = pid;
+  }
+
+  static unsigned jobs(const ServeOptions& options) {
+    return options.jobs > 0 ? options.jobs : std::max(1u, std::thread::hardware_concurrency());
+  }
+
+  struct Result {
+    char kind = kind_internal;
+    std::string text;
+    bool timed_out = false;
+  };
+
+  Result compute(std::string_view name, std::string_view body) {
+    slots_.acquire();
+    Result r = compute_now(name, body);
+    slots_.release();
+    return r;
+  }
+
+ private:
+  Result compute_now(std::string_view name, std::string_view body) {
+    Result r;
+    int sv[2];
+    if (::socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, sv) != 0) {
+      r.text = std::string("internal: cannot make a socket: ") + std::strerror(errno);
+      return r;
+    }
+    const auto start = std::chrono::steady_clock::now();
+    {
+      char byte = 0;
+      iovec iov{&byte, 1};
+      alignas(cmsghdr) char control[CMSG_SPACE(sizeof(int))] = {};
+      msghdr msg{};
+      msg.msg_iov = &iov;
+      msg.msg_iovlen = 1;
+      msg.msg_control = control;
+      msg.msg_controllen = sizeof control;
+      cmsghdr* c = CMSG_FIRSTHDR(&msg);
+      c->cmsg_level = SOL_SOCKET;
+      c->cmsg_type = SCM_RIGHTS;
+      c->cmsg_len = CMSG_LEN(sizeof(int));
+      std::memcpy(CMSG_DATA(c), &sv[1], sizeof(int));
+      ssize_t n;
+      do {
+        n = ::sendmsg(ctl_, &msg, MSG_NOSIGNAL);
+      } while (n < 0 && errno == EINTR);
+      ::close(sv[1]);
+      if (n != 1) {
+        ::close(sv[0]);
+        r.text = "internal: the compute process is gone";
+        return r;
+      }
+    }
+    std::string request(name);
+    request += '\n';
+    request += body;
+    write_all(sv[0], request);  // a child that stopped reading has ended: seen below
+    ::shutdown(sv[0], SHUT_WR);
+
+    // Read the frame until end of file; past the wall backstop (the child's own timers end
+    // it long before) the request is abandoned.
+    const auto backstop = start + std::chrono::duration<double>(4 * options_.time_limit + 2);
+    std::string in;
+    char buf[1 << 16];
+    for (;;) {
+      const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(backstop - std::chrono::steady_clock::now()).count();
+      if (left <= 0) break;
+      pollfd p{sv[0], POLLIN, 0};
+      const int ready = ::poll(&p, 1, static_cast<int>(std::min<long long>(left, 1000)));
+      if (ready < 0 && errno != EINTR) break;
+      if (ready <= 0) continue;
+      const ssize_t n = ::read(sv[0], buf, sizeof buf);
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) break;
+      in.append(buf, static_cast<std::size_t>(n));
+    }
+    ::close(sv[0]);
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::uint64_t length = 0;
+    if (in.size() >= 1 + sizeof length) std::memcpy(&length, in.data() + 1, sizeof length);
+    if (in.size() < 1 + sizeof length || in.size() != 1 + sizeof length + length) {
+      if (elapsed >= options_.time_limit) {
+        r.timed_out = true;
+      } else {
+        r.text = "internal: the computation ended without an answer";
+      }
+      return r;
+    }
+    r.kind = in[0];
+    r.text = in.substr(1 + sizeof length);
+    return r;
+  }
+
+  ServeOptions options_;
+  std::counting_semaphore<> slots_;
+  int ctl_ = -1;
+  pid_t spawner_ = -1;
+};
+
+std::string error_body(std::string_view message) {
+  return OrderedJson{{"error", std::string(message)}}.dump(-1, ' ', false, OrderedJson::error_handler_t::replace) + "\n";
+}
+
+void set_error(httplib::Response& res, int status, std::string_view message) {
+  res.status = status;
+  res.set_content(error_body(message), "application/json");
+}
+
+std::string format_seconds(double s) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", s);
+  return buf;
+}
+
+}  // namespace
+
+int serve(const ServeOptions& options) {
+  // The spawner first, while this process has one thread.
+  Computer computer(options);
+  std::signal(SIGPIPE, SIG_IGN);
+
+  const bool glyph_served = !options.font_dir.empty();
+  OrderedJson listing = io::api_listing();
+  if (!glyph_served) {
+    auto& list = listing["commands"];
+    for (auto it = list.begin(); it != list.end(); ++it) {
+      if ((*it)["name"] == "glyph") {
+        list.erase(it);
+        break;
+      }
+    }
+  }
+  const std::string listing_text = listing.dump(-1, ' ', false, OrderedJson::error_handler_t::replace) + "\n";
+
+  httplib::Server server;
+  const unsigned jobs = Computer::jobs(options);
+  // Connection threads wait on sockets (keep-alive, slow clients) while at most `jobs`
+  // requests compute: more threads than compute slots.
+  server.new_task_queue = [jobs] { return new httplib::ThreadPool(std::max(8u, 4 * jobs)); };
+  server.set_payload_max_length(options.max_body);
+
+  // The page: the embedded files, by exact path (nothing else is read: no file system).
+  for (const auto& asset : explorer_assets()) {
+    const std::string path = asset.path == "index.html" ? "/" : "/" + std::string(asset.path);
+    server.Get(path, [asset](const httplib::Request&, httplib::Response& res) {
+      res.set_content(std::string(asset.body), std::string(asset.type));
+      res.set_header("Cache-Control", "no-cache");
+    });
+  }
+  server.Get("/api", [&listing_text](const httplib::Request&, httplib::Response& res) {
+    res.set_content(listing_text, "application/json");
+  });
+  server.Post(R"(/api/([A-Za-z0-9_]{1,64}))", [&](const httplib::Request& req, httplib::Response& res) {
+    const std::string name = req.matches[1];
+    if (!io::find_command(name)) {
+      set_error(res, 404, "command: unknown command " + io::quoted(name));
+      return;
+    }
+    if (name == "glyph" && !glyph_served) {
+      set_error(res, 404,
+                "command: glyph is not served: its font is a file on the server (start the server with --font-dir DIR to "
+                "let it read the fonts in DIR by file name)");
+      return;
+    }
+    if (req.body.size() > options.max_body) {
+      set_error(res, 413, "request: the body is " + std::to_string(req.body.size()) + " bytes, more than the limit of " +
+                              std::to_string(options.max_body));
+      return;
+    }
+    const auto r = computer.compute(name, req.body);
+    if (r.timed_out) {
+      set_error(res, 503, "request: computed for more than " + format_seconds(options.time_limit) +
+                              " s (the server's time limit); its work was stopped");
+      return;
+    }
+    switch (r.kind) {
+      case kind_json:
+        res.set_content(r.text, "application/json");
+        break;
+      case kind_svg:
+        res.set_content(r.text, "image/svg+xml");
+        break;
+      case kind_bad:
+        set_error(res, 400, r.text);
+        break;
+      case kind_not_served:
+        set_error(res, 404, r.text);
+        break;
+      default:
+        set_error(res, 500, r.text);
+        break;
+    }
+  });
+  // Every error status carries {"error": ...}: the ones httplib answers itself (no such
+  // path, a body over the limit, a malformed request) get one here.
+  server.set_error_handler([&options](const httplib::Request& req, httplib::Response& res) {
+    if (!res.body.empty()) return;
+    switch (res.status) {
+      case 404:
+        set_error(res, 404, "path: no such page or command: " + io::quoted(clipped(req.path, 200)));
+        break;
+      case 413:
+        set_error(res, 413, "request: the body is larger than the limit of " + std::to_string(options.max_body) + " bytes");
+        break;
+      default:
+        set_error(res, res.status, "request: refused with HTTP status " + std::to_string(res.status));
+        break;
+    }
+  });
+
+  int port = options.port;
+  if (port == 0) {
+    port = server.bind_to_any_port(options.host);
+    if (port < 0) throw std::runtime_error("cannot listen on " + options.host);
+  } else if (!server.bind_to_port(options.host, port)) {
+    throw std::runtime_error("cannot listen on " + options.host + ":" + std::to_string(port) + " (in use, or not an address of this machine)");
+  }
+  const bool v6 = options.host.find(':') != std::string::npos;
+  std::printf("casteljau serve: http://%s%s%s:%d/ (%u requests computed at once, %s s each at most)\n", v6 ? "[" : "",
+              options.host.c_str(), v6 ? "]" : "", port, jobs, format_seconds(options.time_limit).c_str());
+  std::fflush(stdout);
+  if (!server.listen_after_bind()) throw std::runtime_error("the server stopped");
+  return exit_ok;
+}
+
+}  // namespace casteljau::cli
