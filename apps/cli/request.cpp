@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <exception>
 
+#include "casteljau/io/commands.hpp"
+
 namespace casteljau::cli {
 
 using casteljau::InvalidArgument;
@@ -116,5 +118,65 @@ Answer answer(const Command& command, std::string_view text, bool jsonl) {
   }
   return a;
 }
+
+bool command_exists(std::string_view name) { return io::find_command(name) != nullptr; }
+
+namespace {
+
+/// glyph's font on a server: a file name inside the font directory, nothing else (no path,
+/// no "..": the request never names a file outside it). Returns the request to run.
+std::string glyph_request(std::string_view body, const std::string& font_dir) {
+  Json request = io::parse_json(body);
+  if (request.is_object() && request.contains("font") && request["font"].is_string()) {
+    const std::string name = request["font"].get<std::string>();
+    const bool plain = !name.empty() && name.front() != '.' && name.find_first_of("/\\") == std::string::npos &&
+                       name.find('\0') == std::string::npos && name.size() <= 255;
+    if (font_dir.empty() || !plain) {
+      throw InvalidArgument("font", "the server reads fonts by file name from its font directory (no '/', not starting with '.'): " +
+                                        io::quoted(name));
+    }
+    request["font"] = font_dir + "/" + name;
+  }
+  return request.dump();
+}
+
+}  // namespace
+
+Answer answer_named(std::string_view name, std::string_view body, const std::string& font_dir) {
+  Answer a;
+  try {
+    const Command* command = io::find_command(name);
+    if (!command) throw InvalidArgument("command", "unknown command " + io::quoted(name));
+    if (name == "glyph") return answer(*command, glyph_request(body, font_dir), false);
+    return answer(*command, body, false);
+  } catch (const InvalidArgument& e) {
+    a.error = where_what(e);
+    a.status = exit_bad_input;
+  } catch (const std::exception& e) {
+    a.error = std::string("internal: ") + e.what();
+    a.status = exit_internal;
+  }
+  return a;
+}
+
+std::string api_listing_text(bool with_glyph) {
+  OrderedJson listing = io::api_listing();
+  if (!with_glyph) {
+    auto& list = listing["commands"];
+    for (auto it = list.begin(); it != list.end(); ++it) {
+      if ((*it)["name"] == "glyph") {
+        list.erase(it);
+        break;
+      }
+    }
+  }
+  return listing.dump(-1, ' ', false, OrderedJson::error_handler_t::replace) + "\n";
+}
+
+std::string error_json(std::string_view message) {
+  return OrderedJson{{"error", clipped(message, max_message)}}.dump(-1, ' ', false, OrderedJson::error_handler_t::replace) + "\n";
+}
+
+std::string quoted_text(std::string_view s) { return io::quoted(s); }
 
 }  // namespace casteljau::cli

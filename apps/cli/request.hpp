@@ -1,13 +1,19 @@
 // The request handling shared by the command line (main.cpp) and the server (serve.cpp):
 // both answer a request through answer(), so the same request gets the same bytes from
-// either.
+// either. Light on purpose: serve.cpp includes it and not the io headers (request.cpp and
+// main.cpp, which do, compile as one unit: apps/cli/CMakeLists.txt).
 #pragma once
 
 #include <cstddef>
 #include <string>
 #include <string_view>
 
-#include "casteljau/io/commands.hpp"
+namespace casteljau {
+class InvalidArgument;
+namespace io {
+struct Command;
+}
+}  // namespace casteljau
 
 namespace casteljau::cli {
 
@@ -44,5 +50,24 @@ struct Answer {
 /// it (JSON and a newline, or render's SVG document unless jsonl), or the error with
 /// exit_bad_input (InvalidArgument) or exit_internal (anything else).
 [[nodiscard]] Answer answer(const io::Command& command, std::string_view text, bool jsonl);
+
+// For the server.
+
+/// Whether a command of that name exists.
+[[nodiscard]] bool command_exists(std::string_view name);
+
+/// The request answered by the command called name, as answer() does outside --jsonl; for
+/// glyph, `font` must be a file name inside font_dir (no '/', not starting with '.'), read
+/// there. Never throws: every failure is in the Answer.
+[[nodiscard]] Answer answer_named(std::string_view name, std::string_view body, const std::string& font_dir);
+
+/// The `GET /api` listing as JSON text (and a newline), without glyph unless with_glyph.
+[[nodiscard]] std::string api_listing_text(bool with_glyph);
+
+/// {"error": message} as JSON text and a newline.
+[[nodiscard]] std::string error_json(std::string_view message);
+
+/// s between quotes as messages quote user text (io::quoted).
+[[nodiscard]] std::string quoted_text(std::string_view s);
 
 }  // namespace casteljau::cli

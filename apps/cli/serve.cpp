@@ -29,18 +29,13 @@
 #include <string_view>
 #include <thread>
 
-#include "casteljau/io/commands.hpp"
+#include <httplib.h>
+
 #include "explorer_assets.hpp"
 #include "request.hpp"
 
-// Last: through <resolv.h> it defines the macro _res, a name Eigen uses.
-#include <httplib.h>
-
 namespace casteljau::cli {
 namespace {
-
-using io::Json;
-using io::OrderedJson;
 
 // ------------------------------------------------------------------------------------------
 // Plain descriptor I/O (EINTR retried).
@@ -95,23 +90,6 @@ std::string frame(char kind, std::string_view text) {
   return f;
 }
 
-/// glyph's font on a server: a file name inside the font directory, nothing else (no path,
-/// no "..": the request never names a file outside it). Returns the request to run.
-std::string glyph_request(const std::string& body, const std::string& font_dir) {
-  Json request = io::parse_json(body);
-  if (request.is_object() && request.contains("font") && request["font"].is_string()) {
-    const std::string name = request["font"].get<std::string>();
-    const bool plain = !name.empty() && name.front() != '.' && name.find_first_of("/\\") == std::string::npos &&
-                       name.find('\0') == std::string::npos && name.size() <= 255;
-    if (!plain) {
-      throw InvalidArgument("font", "the server reads fonts by file name from its font directory (no '/', not starting with '.'): " +
-                                        io::quoted(name));
-    }
-    request["font"] = font_dir + "/" + name;
-  }
-  return request.dump();
-}
-
 /// One request, in its own process: reads "NAME\nBODY" from fd, answers one frame, exits.
 [[noreturn]] void compute_child(int fd, const ServeOptions& options) {
   std::signal(SIGCHLD, SIG_DFL);
@@ -132,20 +110,10 @@ std::string glyph_request(const std::string& body, const std::string& font_dir) 
     const std::size_t nl = input.find('\n');
     const std::string name = input.substr(0, nl);
     std::string body = nl == std::string::npos ? std::string() : input.substr(nl + 1);
-    const io::Command* command = io::find_command(name);
-    if (!command) {
-      out = frame(kind_not_served, "command: unknown command " + io::quoted(name));
+    if (!command_exists(name)) {
+      out = frame(kind_not_served, "command: unknown command " + quoted_text(name));
     } else {
-      Answer a;
-      if (name == "glyph") {
-        try {
-          body = glyph_request(body, options.font_dir);
-        } catch (const InvalidArgument& e) {
-          a.error = where_what(e);
-          a.status = exit_bad_input;
-        }
-      }
-      if (a.status == exit_ok) a = answer(*command, body, false);
+      const Answer a = answer_named(name, body, options.font_dir);
       if (a.status == exit_ok) {
         out = frame(a.is_svg ? kind_svg : kind_json, a.text);
       } else {
@@ -304,13 +272,9 @@ class Computer {
   pid_t spawner_ = -1;
 };
 
-std::string error_body(std::string_view message) {
-  return OrderedJson{{"error", std::string(message)}}.dump(-1, ' ', false, OrderedJson::error_handler_t::replace) + "\n";
-}
-
 void set_error(httplib::Response& res, int status, std::string_view message) {
   res.status = status;
-  res.set_content(error_body(message), "application/json");
+  res.set_content(error_json(message), "application/json");
 }
 
 std::string format_seconds(double s) {
@@ -327,17 +291,7 @@ int serve(const ServeOptions& options) {
   std::signal(SIGPIPE, SIG_IGN);
 
   const bool glyph_served = !options.font_dir.empty();
-  OrderedJson listing = io::api_listing();
-  if (!glyph_served) {
-    auto& list = listing["commands"];
-    for (auto it = list.begin(); it != list.end(); ++it) {
-      if ((*it)["name"] == "glyph") {
-        list.erase(it);
-        break;
-      }
-    }
-  }
-  const std::string listing_text = listing.dump(-1, ' ', false, OrderedJson::error_handler_t::replace) + "\n";
+  const std::string listing_text = api_listing_text(glyph_served);
 
   httplib::Server server;
   const unsigned jobs = Computer::jobs(options);
@@ -359,8 +313,8 @@ int serve(const ServeOptions& options) {
   });
   server.Post(R"(/api/([A-Za-z0-9_]{1,64}))", [&](const httplib::Request& req, httplib::Response& res) {
     const std::string name = req.matches[1];
-    if (!io::find_command(name)) {
-      set_error(res, 404, "command: unknown command " + io::quoted(name));
+    if (!command_exists(name)) {
+      set_error(res, 404, "command: unknown command " + quoted_text(name));
       return;
     }
     if (name == "glyph" && !glyph_served) {
@@ -404,7 +358,7 @@ int serve(const ServeOptions& options) {
     if (!res.body.empty()) return;
     switch (res.status) {
       case 404:
-        set_error(res, 404, "path: no such page or command: " + io::quoted(clipped(req.path, 200)));
+        set_error(res, 404, "path: no such page or command: " + quoted_text(clipped(req.path, 200)));
         break;
       case 413:
         set_error(res, 413, "request: the body is larger than the limit of " + std::to_string(options.max_body) + " bytes");

@@ -97,26 +97,30 @@ function coalesced(work) {
   return run;
 }
 
-// A figure: world coordinates (y up) mapped to the SVG's viewBox with one scale.
+// A figure: world coordinates (y up) mapped to the SVG's viewBox, with one scale for both
+// axes (equal) or one per axis (a plot).
 class Frame {
-  constructor(svg, xmin, xmax, ymin, ymax, margin = 20) {
+  constructor(svg, xmin, xmax, ymin, ymax, margin = 20, equal = true) {
     this.svg = svg;
     const vb = svg.viewBox.baseVal;
     this.w = vb.width;
     this.h = vb.height;
+    this.equal = equal;
     this.set(xmin, xmax, ymin, ymax, margin);
   }
   set(xmin, xmax, ymin, ymax, margin = 20) {
-    const s = Math.min((this.w - 2 * margin) / (xmax - xmin), (this.h - 2 * margin) / (ymax - ymin));
-    this.s = s;
-    this.ox = (this.w - s * (xmax - xmin)) / 2 - s * xmin;
-    this.oy = (this.h + s * (ymax - ymin)) / 2 + s * ymin;
+    let sx = (this.w - 2 * margin) / (xmax - xmin), sy = (this.h - 2 * margin) / (ymax - ymin);
+    if (this.equal) sx = sy = Math.min(sx, sy);
+    this.sx = sx;
+    this.sy = sy;
+    this.ox = (this.w - sx * (xmax - xmin)) / 2 - sx * xmin;
+    this.oy = (this.h + sy * (ymax - ymin)) / 2 + sy * ymin;
   }
   x(p) {
-    return this.ox + this.s * p[0];
+    return this.ox + this.sx * p[0];
   }
   y(p) {
-    return this.oy - this.s * p[1];
+    return this.oy - this.sy * p[1];
   }
   path(points) {
     return points.map((p, i) => (i ? "L" : "M") + this.x(p).toFixed(2) + " " + this.y(p).toFixed(2)).join("");
@@ -125,7 +129,7 @@ class Frame {
   world(ev) {
     const m = this.svg.getScreenCTM().inverse();
     const pt = new DOMPoint(ev.clientX, ev.clientY).matrixTransform(m);
-    return [(pt.x - this.ox) / this.s, (this.oy - pt.y) / this.s];
+    return [(pt.x - this.ox) / this.sx, (this.oy - pt.y) / this.sy];
   }
 }
 
@@ -176,7 +180,7 @@ const PALETTE = ["#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b
 // A plot of basis functions: values[j][i] = function i at ts[j]; marks at the knots.
 function drawBasis(svg, ts, values, cursor, knots) {
   svg.replaceChildren();
-  const frame = new Frame(svg, ts[0], ts[ts.length - 1], 0, 1, 24);
+  const frame = new Frame(svg, ts[0], ts[ts.length - 1], 0, 1, 24, false);
   el("line", { class: "axis", x1: frame.x([ts[0], 0]), y1: frame.y([0, 0]), x2: frame.x([ts[ts.length - 1], 0]), y2: frame.y([0, 0]) }, svg);
   el("line", { class: "axis", x1: frame.x([ts[0], 0]), y1: frame.y([0, 0]), x2: frame.x([ts[0], 0]), y2: frame.y([0, 1]) }, svg);
   const l1 = el("text", { class: "label", x: frame.x([ts[0], 1]) - 16, y: frame.y([0, 1]) + 4 }, svg);
