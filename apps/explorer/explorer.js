@@ -535,9 +535,88 @@ const bspline = {
 };
 
 // ---------------------------------------------------------------------------------------
-// Views and navigation (#bezier, #bspline).
+// View 5: subdivision curves.
 
-const views = { bezier, bspline };
+const subdivision = {
+  points: [
+    [1.0, 0.8],
+    [4.5, 0.3],
+    [8.2, 1.2],
+    [7.0, 4.6],
+    [4.6, 2.6],
+    [1.8, 4.9],
+  ],
+
+  init() {
+    this.svg = document.getElementById("sd-canvas");
+    this.frame = new Frame(this.svg, -0.5, 9.5, -0.5, 5.5);
+    this.update = coalesced(() => this.compute());
+    for (const id of ["sd-scheme", "sd-degree", "sd-tension", "sd-steps", "sd-closed", "sd-previous", "sd-limit"]) {
+      document.getElementById(id).addEventListener("input", () => this.update());
+    }
+  },
+
+  request(iterations) {
+    const scheme = document.getElementById("sd-scheme").value;
+    const r = { points: this.points, scheme, iterations, closed: document.getElementById("sd-closed").checked };
+    if (scheme === "lane_riesenfeld") r.degree = Number(document.getElementById("sd-degree").value) || 1;
+    if (scheme === "four_point") r.tension = Number(document.getElementById("sd-tension").value);
+    return r;
+  },
+
+  async compute() {
+    const k = Number(document.getElementById("sd-steps").value);
+    const [now, before, deep] = await Promise.all([
+      api("subdivide", this.request(k)),
+      k > 0 ? api("subdivide", this.request(k - 1)) : null,
+      api("subdivide", this.request(7)),
+    ]);
+    let limit = null;
+    if (deep.limit) {
+      const c = deep.limit, p = c.degree, n = c.points.length;
+      const ts = linspace(c.knots[p], c.knots[n], 401);
+      limit = { curve: c, points: (await api("eval", { curve: c, t: ts })).points };
+    }
+    this.draw({ k, now, before, deep, limit });
+  },
+
+  draw(r) {
+    const f = this.frame, svg = this.svg;
+    svg.replaceChildren();
+    const closed = document.getElementById("sd-closed").checked;
+    const ring = (pts) => (closed && pts.length ? pts.concat([pts[0]]) : pts);
+    el("path", { class: "polygon", d: f.path(ring(this.points)) }, svg);
+    if (document.getElementById("sd-limit").checked) {
+      const pts = r.limit ? r.limit.points : ring(r.deep.points);
+      const e = el("path", { class: "curve", id: "sd-limit-curve", d: f.path(pts) }, svg);
+      e.dataset.points = JSON.stringify(pts);
+    }
+    if (r.before && document.getElementById("sd-previous").checked) {
+      el("path", { class: "level", stroke: "#aaa", d: f.path(ring(r.before.points)) }, svg);
+    }
+    const step = el("path", { class: "level", id: "sd-step", stroke: "#d35400", d: f.path(ring(r.now.points)) }, svg);
+    step.dataset.points = JSON.stringify(r.now.points);
+    for (const p of r.now.points) el("circle", { class: "level-point", cx: f.x(p), cy: f.y(p), r: 2.5, fill: "#d35400" }, svg);
+    this.points.forEach((p, i) => {
+      const h = el("circle", { class: "handle", cx: f.x(p), cy: f.y(p), r: 9, "data-index": i, "data-point": JSON.stringify(p) }, svg);
+      dragHandle(f, h, i, (index, w) => {
+        this.points[index] = w;
+        this.update();
+      });
+    });
+    document.getElementById("sd-steps-out").textContent = String(r.k);
+    document.getElementById("sd-tension-out").textContent = Number(document.getElementById("sd-tension").value).toFixed(4);
+    document.getElementById("sd-count").textContent = String(r.now.points.length);
+    document.getElementById("sd-limit-info").textContent = r.limit
+      ? "uniform B-spline, degree " + r.limit.curve.degree + ", " + r.limit.curve.points.length + " control points" + (closed ? " (periodic)" : "")
+      : "no closed form: the polygon after 7 steps (" + r.deep.points.length + " points)";
+  },
+};
+
+// ---------------------------------------------------------------------------------------
+// Views and navigation (#bezier, #bspline, #subdivision).
+
+const views = { bezier, bspline, subdivision };
 
 function show() {
   const name = (location.hash || "#bezier").slice(1);

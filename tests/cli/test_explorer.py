@@ -144,14 +144,7 @@ class ExplorerTest(unittest.TestCase):
 
     def test_bspline_view(self):
         from selenium.webdriver.common.keys import Keys
-        from selenium.webdriver.support.ui import WebDriverWait
-        # The page is already loaded (test_bezier_view, or here): switch views by the nav link.
-        if not self.driver.current_url.startswith(self.base):
-            self.driver.get(self.base)
-        self.driver.find_element("css selector", 'nav a[data-view="bspline"]').click()
-        WebDriverWait(self.driver, 10, poll_frequency=0.05).until(
-            lambda d: d.find_element("id", "view-bspline").get_attribute("hidden") is None)
-        self.settle()
+        self.show_view("bspline")
         before = self.points("bs")
         self.drag(self.handles("bs")[3], -30, -50)
         self.settle()
@@ -181,6 +174,37 @@ class ExplorerTest(unittest.TestCase):
             self.assertAlmostEqual(((x - 4.5) ** 2 + (y - 2.5) ** 2) ** 0.5, 2, delta=1e-12)
         self.assertEqual(self.text("bs-radius"), fmt(2))
         self.driver.save_screenshot("explorer-bspline.png")
+        self.no_console_errors()
+
+    def show_view(self, name):
+        """Switches to a view by its nav link (a real click) and waits for its drawing."""
+        from selenium.webdriver.support.ui import WebDriverWait
+        if not self.driver.current_url.startswith(self.base):
+            self.driver.get(self.base)
+        self.driver.find_element("css selector", f'nav a[data-view="{name}"]').click()
+        WebDriverWait(self.driver, 10, poll_frequency=0.05).until(
+            lambda d: d.find_element("id", "view-" + name).get_attribute("hidden") is None)
+        self.settle()
+
+    def test_subdivision_view(self):
+        self.show_view("subdivision")
+        before = self.points("sd")
+        self.drag(self.handles("sd")[2], -50, 30, steps=4)
+        self.settle()
+        after = self.points("sd")
+        self.assertLess(after[2][0], before[2][0] - 0.3)
+        # The page opens on Chaikin, 2 steps, closed: the drawn step and the limit curve are
+        # the server's (the limit: the B-spline `subdivide` answers, sampled at 401
+        # parameters as the page does).
+        request = {"points": after, "scheme": "chaikin", "iterations": 2, "closed": True}
+        self.assertEqual(self.curve_points("sd-step"), self.api("subdivide", request)["points"])
+        limit = self.api("subdivide", dict(request, iterations=7))["limit"]
+        p, n = limit["degree"], len(limit["points"])
+        a, b = limit["knots"][p], limit["knots"][n]
+        ts = [a + ((b - a) * i) / 400 for i in range(401)]
+        self.assertEqual(self.curve_points("sd-limit-curve"), self.api("eval", {"curve": limit, "t": ts})["points"])
+        self.assertEqual(self.text("sd-count"), str(len(self.api("subdivide", request)["points"])))
+        self.driver.save_screenshot("explorer-subdivision.png")
         self.no_console_errors()
 
 

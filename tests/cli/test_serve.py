@@ -261,6 +261,28 @@ class ServeTest(unittest.TestCase):
                 self.assertEqual(body, expected[i])
 
 
+class FontDirTest(unittest.TestCase):
+    """glyph with --font-dir: fonts by file name inside the directory, nothing else."""
+
+    FONTS = "/usr/share/fonts/truetype/dejavu"  # fonts-dejavu-core (scripts/install-deps.sh)
+
+    def test_glyph(self):
+        server = Server("--font-dir", self.FONTS)
+        try:
+            status, _, body = server.request("GET", "/api")
+            self.assertIn("glyph", [c["name"] for c in json.loads(body)["commands"]])
+            rc, out, err = cli("glyph", json.dumps({"font": self.FONTS + "/DejaVuSans.ttf", "text": "l"}).encode())
+            self.assertEqual(rc, 0, err)
+            status, _, body = server.post("glyph", {"font": "DejaVuSans.ttf", "text": "l"})
+            self.assertEqual((status, body), (200, out))
+            for font in ("../../../etc/passwd", "/etc/passwd", ".hidden", "", "a/b.ttf", "..\\x.ttf"):
+                status, ctype, body = server.post("glyph", {"font": font, "text": "l"})
+                self.assertEqual(status, 400, (font, body))
+                self.assertTrue(json.loads(body)["error"].startswith("font: "), body)
+        finally:
+            server.stop()
+
+
 # A request known to take seconds: the self-intersections of a cubic B-spline through 4000
 # points on a Lissajous-like figure (thousands of crossings; about 2 s of CPU, measured with
 # the command line, eight times the limit; under the library's work limit for intersect).
