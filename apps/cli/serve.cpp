@@ -299,6 +299,9 @@ int serve(const ServeOptions& options) {
   // requests compute: more threads than compute slots.
   server.new_task_queue = [jobs] { return new httplib::ThreadPool(std::max(8u, 4 * jobs)); };
   server.set_payload_max_length(options.max_body);
+  // httplib writes the head and the body apart: without TCP_NODELAY, Nagle's algorithm holds
+  // the body until the client's delayed ACK, 40 ms per response.
+  server.set_tcp_nodelay(true);
 
   // The page: the embedded files, by exact path (nothing else is read: no file system).
   for (const auto& asset : explorer_assets()) {
