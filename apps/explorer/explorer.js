@@ -535,6 +535,96 @@ const bspline = {
 };
 
 // ---------------------------------------------------------------------------------------
+// View 4: interpolation.
+
+// Runge's bump 1 / (1 + 25 x^2) on [-1, 1], at 9 equally spaced x, drawn on the canvas.
+const RUNGE = linspace(-1, 1, 9).map((x) => [4.5 + 4 * x, 0.5 + 4 * (1 / (1 + 25 * x * x))]);
+
+// The parameters of a Lagrange curve through n points: equally spaced, or the Chebyshev
+// nodes (of the first kind) on the same interval [0, n - 1], increasing.
+function chebyshevParams(n) {
+  const out = [];
+  for (let i = 0; i < n; i++) out.push(((n - 1) / 2) * (1 - Math.cos(((2 * i + 1) * Math.PI) / (2 * n))));
+  return out;
+}
+
+const INTERPOLANTS = [
+  { key: "lagrange_uniform", label: "Lagrange, equally spaced parameters", color: "#d62728", on: true,
+    curve: (p) => ({ type: "lagrange", params: p.map((_, i) => i), points: p }) },
+  { key: "lagrange_chebyshev", label: "Lagrange, Chebyshev parameters", color: "#2ca02c", on: true,
+    curve: (p) => ({ type: "lagrange", params: chebyshevParams(p.length), points: p }) },
+  { key: "spline_natural", label: "cubic spline, natural (chord)", color: "#1f77b4", on: true,
+    curve: (p) => ({ type: "cubic_spline", parametrization: "chord", boundary: "natural", points: p }) },
+  { key: "spline_not_a_knot", label: "cubic spline, not-a-knot (chord)", color: "#17becf", on: false,
+    curve: (p) => ({ type: "cubic_spline", parametrization: "chord", boundary: "not-a-knot", points: p }) },
+  { key: "catmull_rom_0", label: "Catmull-Rom, uniform (α 0)", color: "#ff7f0e", on: false,
+    curve: (p) => ({ type: "catmull_rom", alpha: 0, ends: "reflect", points: p }) },
+  { key: "catmull_rom_05", label: "Catmull-Rom, centripetal (α 0.5)", color: "#9467bd", on: false,
+    curve: (p) => ({ type: "catmull_rom", alpha: 0.5, ends: "reflect", points: p }) },
+  { key: "catmull_rom_1", label: "Catmull-Rom, chordal (α 1)", color: "#8c564b", on: false,
+    curve: (p) => ({ type: "catmull_rom", alpha: 1, ends: "reflect", points: p }) },
+];
+
+const interpolation = {
+  points: RUNGE.map((p) => p.slice()),
+
+  init() {
+    this.svg = document.getElementById("ip-canvas");
+    this.frame = new Frame(this.svg, -0.5, 9.5, -0.5, 5.5);
+    this.update = coalesced(() => this.compute());
+    const box = document.getElementById("ip-choices");
+    for (const c of INTERPOLANTS) {
+      const label = document.createElement("label");
+      const input = Object.assign(document.createElement("input"), { type: "checkbox", checked: c.on, id: "ip-" + c.key });
+      input.addEventListener("input", () => this.update());
+      const swatch = Object.assign(document.createElement("span"), { textContent: "■ " });
+      swatch.style.color = c.color;
+      label.append(input, " ", swatch, c.label);
+      box.appendChild(label);
+    }
+  },
+
+  chosen() {
+    return INTERPOLANTS.filter((c) => document.getElementById("ip-" + c.key).checked);
+  },
+
+  async compute() {
+    const chosen = this.chosen();
+    const answers = await Promise.all(
+      chosen.map(async (c) => {
+        const curve = c.curve(this.points);
+        const [flat, length] = await Promise.all([api("flatten", { curve, tolerance: 0.002 }), api("length", { curve })]);
+        return { c, points: flat.points, length: length.length };
+      }),
+    );
+    this.draw(answers);
+  },
+
+  draw(answers) {
+    const f = this.frame, svg = this.svg;
+    svg.replaceChildren();
+    for (const a of answers) {
+      const e = el("path", { class: "curve", id: "ip-curve-" + a.c.key, d: f.path(a.points), style: "stroke: " + a.c.color + "; stroke-width: 2" }, svg);
+      e.dataset.points = JSON.stringify(a.points);
+    }
+    this.points.forEach((p, i) => {
+      const h = el("circle", { class: "handle", cx: f.x(p), cy: f.y(p), r: 7, "data-index": i, "data-point": JSON.stringify(p) }, svg);
+      dragHandle(f, h, i, (index, w) => {
+        this.points[index] = w;
+        this.update();
+      });
+    });
+    const dl = document.getElementById("ip-lengths");
+    dl.replaceChildren();
+    for (const a of answers) {
+      const dt = Object.assign(document.createElement("dt"), { textContent: a.c.label });
+      const dd = Object.assign(document.createElement("dd"), { textContent: fmt(a.length), id: "ip-length-" + a.c.key });
+      dl.append(dt, dd);
+    }
+  },
+};
+
+// ---------------------------------------------------------------------------------------
 // View 5: subdivision curves.
 
 const subdivision = {
@@ -614,9 +704,9 @@ const subdivision = {
 };
 
 // ---------------------------------------------------------------------------------------
-// Views and navigation (#bezier, #bspline, #subdivision).
+// Views and navigation (#bezier, #bspline, #interpolation, #subdivision).
 
-const views = { bezier, bspline, subdivision };
+const views = { bezier, bspline, interpolation, subdivision };
 
 function show() {
   const name = (location.hash || "#bezier").slice(1);

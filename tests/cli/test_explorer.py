@@ -186,6 +186,26 @@ class ExplorerTest(unittest.TestCase):
             lambda d: d.find_element("id", "view-" + name).get_attribute("hidden") is None)
         self.settle()
 
+    def test_interpolation_view(self):
+        self.show_view("interpolation")
+        before = self.points("ip")
+        self.assertEqual(len(before), 9)  # Runge's bump
+        self.drag(self.handles("ip")[4], 0, 60, steps=4)
+        self.settle()
+        after = self.points("ip")
+        self.assertLess(after[4][1], before[4][1] - 0.5)
+        # Two of the curves shown by default, as the server flattens them for the moved
+        # points (the page's tolerance, 0.002), and the lengths shown.
+        curves = {
+            "lagrange_uniform": {"type": "lagrange", "params": list(range(9)), "points": after},
+            "spline_natural": {"type": "cubic_spline", "parametrization": "chord", "boundary": "natural", "points": after},
+        }
+        for key, curve in curves.items():
+            self.assertEqual(self.curve_points("ip-curve-" + key), self.api("flatten", {"curve": curve, "tolerance": 0.002})["points"], key)
+            self.assertEqual(self.text("ip-length-" + key), fmt(self.api("length", {"curve": curve})["length"]), key)
+        self.driver.save_screenshot("explorer-interpolation.png")
+        self.no_console_errors()
+
     def test_subdivision_view(self):
         self.show_view("subdivision")
         before = self.points("sd")
