@@ -314,7 +314,34 @@ int serve(const ServeOptions& options) {
   server.Get("/api", [&listing_text](const httplib::Request&, httplib::Response& res) {
     res.set_content(listing_text, "application/json");
   });
-  server.Post(R"(/api/([A-Za-z0-9_]{1,64}))", [&](const httplib::Request& req, httplib::Response& res) {
+  // The body is read here, piece by piece, and refused as soon as it passes the limit:
+  // httplib's own limit holds for a Content-Length but not for a chunked body, which it
+  // would otherwise gather whole in memory.
+  server.Post(R"(/api/([A-Za-z0-9_]{1,64}))", [&](const httplib::Request& req, httplib::Response& res,
+                                                   const httplib::ContentReader& read_body) {
+    std::string body;
+    bool too_big = false;
+    const bool read = read_body([&](const char* data, std::size_t n) {
+      if (body.size() + n > options.max_body) {
+        too_big = true;
+        return false;
+      }
+      body.append(data, n);
+      return true;
+    });
+    // A Content-Length past the limit: httplib refuses to read before any byte arrives.
+    const std::string declared = req.get_header_value("Content-Length");
+    if (!declared.empty() && (declared.size() > 18 || std::stoull("0" + declared) > options.max_body)) too_big = true;
+    if (too_big) {
+      res.set_header("Connection", "close");
+      set_error(res, 413, "request: the body is larger than the limit of " + std::to_string(options.max_body) + " bytes");
+      return;
+    }
+    if (!read) {
+      res.set_header("Connection", "close");
+      set_error(res, 400, "request: the body could not be read (malformed chunks, or the client stopped sending)");
+      return;
+    }
     const std::string name = req.matches[1];
     if (!command_exists(name)) {
       set_error(res, 404, "command: unknown command " + quoted_text(name));
@@ -326,12 +353,7 @@ int serve(const ServeOptions& options) {
                 "let it read the fonts in DIR by file name)");
       return;
     }
-    if (req.body.size() > options.max_body) {
-      set_error(res, 413, "request: the body is " + std::to_string(req.body.size()) + " bytes, more than the limit of " +
-                              std::to_string(options.max_body));
-      return;
-    }
-    const auto r = computer.compute(name, req.body);
+    const auto r = computer.compute(name, body);
     if (r.timed_out) {
       set_error(res, 503, "request: computed for more than " + format_seconds(options.time_limit) +
                               " s (the server's time limit); its work was stopped");

@@ -221,6 +221,34 @@ class ServeTest(unittest.TestCase):
         status, ctype, body = self.server.post("eval", padded + b" ")
         self.assert_error(status, ctype, body, 413)
 
+    def test_chunked_body_limit(self):
+        # A chunked body has no length up front: refused as soon as it passes the limit,
+        # not gathered whole (up to 64 MiB sent here; the server's peak memory stays far
+        # below it).
+        with socket.create_connection((self.server.host, self.server.port), timeout=30) as s:
+            s.sendall(b"POST /api/eval HTTP/1.1\r\nHost: x\r\nTransfer-Encoding: chunked\r\n\r\n")
+            block = b"%x\r\n%s\r\n" % (1 << 20, b" " * (1 << 20))
+            try:
+                for _ in range(64):
+                    s.sendall(block)
+            except OSError:
+                pass  # the server closed the connection: what is wanted
+            data = b""
+            try:
+                while b"\r\n\r\n" not in data or len(data.partition(b"\r\n\r\n")[2]) < 10:
+                    chunk = s.recv(65536)
+                    if not chunk:
+                        break
+                    data += chunk
+            except OSError:
+                pass
+        head, _, body = data.partition(b"\r\n\r\n")
+        self.assertTrue(head.startswith(b"HTTP/1.1 413"), head[:40])
+        self.assertIn(b'"error"', body)
+        with open(f"/proc/{self.server.proc.pid}/status") as f:
+            peak_kb = int(next(l for l in f if l.startswith("VmHWM")).split()[1])
+        self.assertLess(peak_kb, 48 * 1024)
+
     def test_time_limit_stops_the_work(self):
         slow = SLOW_REQUEST
         start = time.monotonic()
