@@ -704,9 +704,112 @@ const subdivision = {
 };
 
 // ---------------------------------------------------------------------------------------
-// Views and navigation (#bezier, #bspline, #interpolation, #subdivision).
+// View 6: queries.
 
-const views = { bezier, bspline, interpolation, subdivision };
+const queries = {
+  a: [
+    [0.5, 0.8],
+    [2.2, 4.8],
+    [6.0, 0.2],
+    [9.0, 4.0],
+  ],
+  b: [
+    [0.5, 4.5],
+    [3.0, 0.2],
+    [6.0, 5.2],
+    [9.0, 0.8],
+  ],
+  mouse: null,
+
+  init() {
+    this.svg = document.getElementById("qr-canvas");
+    this.frame = new Frame(this.svg, -0.5, 9.5, -0.5, 5.5);
+    this.update = coalesced(() => this.compute());
+    for (const id of ["qr-tol", "qr-method", "qr-bounds", "qr-flat"]) document.getElementById(id).addEventListener("input", () => this.update());
+    this.svg.addEventListener("pointermove", (e) => {
+      if (e.buttons) return;  // a drag: the handles' business
+      this.mouse = this.frame.world(e);
+      this.update();
+    });
+  },
+
+  tolerance() {
+    return Math.pow(10, Number(document.getElementById("qr-tol").value));
+  },
+
+  async compute() {
+    const A = { type: "bezier", points: this.a }, B = { type: "bezier", points: this.b };
+    const ts = linspace(0, 1, 161);
+    const tolerance = this.tolerance();
+    const methods = ["optimal", "subdivision", "uniform"];
+    const [sa, sb, inter, box, length, closest, ...flats] = await Promise.all([
+      api("eval", { curve: A, t: ts }),
+      api("eval", { curve: B, t: ts }),
+      api("intersect", { curves: [A, B] }),
+      api("bounds", { curve: A }),
+      api("length", { curve: A }),
+      this.mouse ? api("project", { curve: A, point: this.mouse }) : null,
+      ...methods.map((method) => api("flatten", { curve: A, tolerance, method })),
+    ]);
+    const flat = {};
+    methods.forEach((m, i) => (flat[m] = flats[i].points));
+    this.draw({ sa, sb, inter, box, length, closest, flat });
+  },
+
+  draw(r) {
+    const f = this.frame, svg = this.svg;
+    svg.replaceChildren();
+    if (document.getElementById("qr-bounds").checked) {
+      const [x0, y0] = r.box.min, [x1, y1] = r.box.max;
+      const rect = el("rect", { class: "polygon", id: "qr-bounds-box", x: f.x([x0, 0]), y: f.y([0, y1]), width: f.x([x1, 0]) - f.x([x0, 0]), height: f.y([0, y0]) - f.y([0, y1]) }, svg);
+      rect.dataset.box = JSON.stringify(r.box);
+    }
+    el("path", { class: "polygon", d: f.path(this.a) }, svg);
+    el("path", { class: "polygon", d: f.path(this.b) }, svg);
+    el("path", { class: "curve", id: "qr-curve-a", d: f.path(r.sa.points) }, svg);
+    el("path", { class: "curve", id: "qr-curve-b", d: f.path(r.sb.points), style: "stroke: #2e8b57" }, svg);
+    const method = document.getElementById("qr-method").value;
+    if (document.getElementById("qr-flat").checked) {
+      const pts = r.flat[method];
+      el("path", { class: "level", stroke: "#d35400", d: f.path(pts) }, svg);
+      for (const p of pts) el("circle", { class: "level-point", cx: f.x(p), cy: f.y(p), r: 2.5, fill: "#d35400" }, svg);
+    }
+    const marks = el("g", { id: "qr-intersections" }, svg);
+    marks.dataset.points = JSON.stringify(r.inter.intersections.map((x) => x.point));
+    for (const x of r.inter.intersections) {
+      const p = x.point;
+      if (x.kind === "tangent") el("rect", { x: f.x(p) - 6, y: f.y(p) - 6, width: 12, height: 12, fill: "#e67e22" }, marks);
+      else el("circle", { cx: f.x(p), cy: f.y(p), r: 6, fill: "none", stroke: "#c0392b", "stroke-width": 2.5 }, marks);
+    }
+    if (r.closest && this.mouse) {
+      const p = r.closest.point;
+      el("line", { class: "cursor", x1: f.x(this.mouse), y1: f.y(this.mouse), x2: f.x(p), y2: f.y(p) }, svg);
+      el("circle", { class: "on-curve", cx: f.x(p), cy: f.y(p), r: 5 }, svg);
+    }
+    for (const [name, pts] of [["a", this.a], ["b", this.b]]) {
+      pts.forEach((p, i) => {
+        const h = el("circle", { class: "handle", cx: f.x(p), cy: f.y(p), r: 8, "data-curve": name, "data-index": i, "data-point": JSON.stringify(p) }, svg);
+        dragHandle(f, h, i, (index, w) => {
+          pts[index] = w;
+          this.update();
+        });
+      });
+    }
+    document.getElementById("qr-tol-out").textContent = this.tolerance().toExponential(2);
+    for (const m of ["optimal", "subdivision", "uniform"]) document.getElementById("qr-count-" + m).textContent = String(r.flat[m].length - 1);
+    document.getElementById("qr-length").textContent = fmt(r.length.length);
+    document.getElementById("qr-box").textContent = fmtPoint(r.box.min) + " – " + fmtPoint(r.box.max);
+    document.getElementById("qr-intersections-text").textContent = r.inter.intersections.length
+      ? r.inter.intersections.map((x) => x.kind + " at t = (" + x.t.map(fmt).join(", ") + ")").join("; ")
+      : "none";
+    document.getElementById("qr-closest").textContent = r.closest ? "t = " + fmt(r.closest.t) + ", distance " + fmt(r.closest.distance) : "move the pointer over the figure";
+  },
+};
+
+// ---------------------------------------------------------------------------------------
+// Views and navigation (#bezier, #bspline, #interpolation, #subdivision, #queries).
+
+const views = { bezier, bspline, interpolation, subdivision, queries };
 
 function show() {
   const name = (location.hash || "#bezier").slice(1);

@@ -40,7 +40,7 @@ class ExplorerTest(unittest.TestCase):
         cls.server = test_serve.Server()
         options = webdriver.ChromeOptions()
         options.binary_location = CHROMIUM
-        for arg in ("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage", "--window-size=1100,900",
+        for arg in ("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage", "--window-size=1000,800",
                     # Less background work: nothing here needs them.
                     "--disable-extensions", "--disable-background-networking", "--disable-component-update", "--disable-sync",
                     "--no-first-run", "--disable-default-apps", "--mute-audio"):
@@ -72,7 +72,7 @@ class ExplorerTest(unittest.TestCase):
     def points(self, view):
         return [json.loads(h.get_attribute("data-point")) for h in self.handles(view)]
 
-    def drag(self, element, dx, dy, steps=8):
+    def drag(self, element, dx, dy, steps=4):
         """Mouse drag by (dx, dy) CSS pixels in steps (pointerdown, pointermoves, pointerup)."""
         from selenium.webdriver.common.action_chains import ActionChains
         chain = ActionChains(self.driver).click_and_hold(element)
@@ -204,6 +204,32 @@ class ExplorerTest(unittest.TestCase):
             self.assertEqual(self.curve_points("ip-curve-" + key), self.api("flatten", {"curve": curve, "tolerance": 0.002})["points"], key)
             self.assertEqual(self.text("ip-length-" + key), fmt(self.api("length", {"curve": curve})["length"]), key)
         self.driver.save_screenshot("explorer-interpolation.png")
+        self.no_console_errors()
+
+    def test_queries_view(self):
+        self.show_view("queries")
+        handles = self.handles("qr")
+        self.drag(handles[1], 20, 30, steps=4)
+        self.settle()
+        pts = self.points("qr")
+        a, b = pts[:4], pts[4:]
+        self.assertNotEqual(a[1], [2.2, 4.8])
+        A, B = {"type": "bezier", "points": a}, {"type": "bezier", "points": b}
+        inter = self.api("intersect", {"curves": [A, B]})["intersections"]
+        marks = json.loads(self.driver.find_element("id", "qr-intersections").get_attribute("data-points"))
+        self.assertEqual(marks, [x["point"] for x in inter])
+        self.assertGreater(len(marks), 0)  # the example's curves cross
+        self.assertEqual(self.text("qr-intersections-text"), "; ".join(
+            x["kind"] + " at t = (" + ", ".join(fmt(v) for v in x["t"]) + ")" for x in inter))
+        box = json.loads(self.driver.find_element("id", "qr-bounds-box").get_attribute("data-box"))
+        self.assertEqual(box, self.api("bounds", {"curve": A}))
+        self.assertEqual(self.text("qr-length"), fmt(self.api("length", {"curve": A})["length"]))
+        # Segment counts at the page's tolerance 10^-1.5 (a count does not hinge on the last
+        # bit of the tolerance as the page's Math.pow computes it).
+        for method in ("optimal", "subdivision", "uniform"):
+            n = len(self.api("flatten", {"curve": A, "tolerance": 10 ** -1.5, "method": method})["points"]) - 1
+            self.assertEqual(self.text("qr-count-" + method), str(n), method)
+        self.driver.save_screenshot("explorer-queries.png")
         self.no_console_errors()
 
     def test_subdivision_view(self):
