@@ -2,11 +2,11 @@
 // serve"; the design in docs/architecture.md, "The server"). The only translation unit
 // that includes cpp-httplib.
 //
-// Each request is computed in a process of its own, forked for it by a single-threaded
-// spawner process that the server forks at start-up, before any thread exists. The child
-// arms two timers on itself (CPU time at the limit, wall time at four times it) whose
-// signals end it, so a request past its budget stops wherever it is, in any loop of the
-// library, and nothing of one request outlives it or reaches the next.
+// Requests are computed in worker processes (one request at a time each), forked by a
+// single-threaded spawner process that the server forks at start-up, before any thread
+// exists. For each request a worker arms two timers on itself (CPU time at the limit, wall
+// time at four times it) whose signals end it, so a request past its budget stops wherever
+// it is, in any loop of the library; the server then starts a new worker in its place.
 #include "serve.hpp"
 
 #include <fcntl.h>
@@ -19,11 +19,13 @@
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
+#include <condition_variable>
+#include <mutex>
+#include <vector>
 #include <csignal>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
-#include <semaphore>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -52,21 +54,6 @@ bool write_all(int fd, std::string_view s) {
   return true;
 }
 
-/// Reads until end of file, at most `limit` bytes; false on an error or past the limit.
-bool read_all(int fd, std::string& out, std::size_t limit) {
-  char buf[1 << 16];
-  for (;;) {
-    const ssize_t n = ::read(fd, buf, sizeof buf);
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      return false;
-    }
-    if (n == 0) return true;
-    out.append(buf, static_cast<std::size_t>(n));
-    if (out.size() > limit) return false;
-  }
-}
-
 timeval to_timeval(double seconds) {
   timeval tv{};
   tv.tv_sec = static_cast<time_t>(seconds);
@@ -76,40 +63,66 @@ timeval to_timeval(double seconds) {
 }
 
 // ------------------------------------------------------------------------------------------
-// The compute side: the child's answer travels back as one frame, a kind byte then the
-// text's length (8 bytes) then the text, so that a child ended by its timer (or a crash)
-// is told from one that answered.
+// The compute side. A request travels to a worker process as two length-prefixed strings
+// (the command's name, the body); the answer comes back as one frame, a kind byte then
+// the text's length (8 bytes) then the text, so that a worker ended by its timer (or a
+// crash) is told from one that answered.
 
 constexpr char kind_json = 'j', kind_svg = 's', kind_bad = 'b', kind_internal = 'i', kind_not_served = 'n';
 
+void append_length(std::string& s, std::uint64_t n) { s.append(reinterpret_cast<const char*>(&n), sizeof n); }
+
 std::string frame(char kind, std::string_view text) {
   std::string f(1, kind);
-  const std::uint64_t n = text.size();
-  f.append(reinterpret_cast<const char*>(&n), sizeof n);
+  append_length(f, text.size());
   f.append(text);
   return f;
 }
 
-/// One request, in its own process: reads "NAME\nBODY" from fd, answers one frame, exits.
-[[noreturn]] void compute_child(int fd, const ServeOptions& options) {
-  std::signal(SIGCHLD, SIG_DFL);
-  ::prctl(PR_SET_PDEATHSIG, SIGKILL);
-  // The budget: CPU time (what "computed for more than" counts, robust on a loaded machine),
-  // and wall time as a backstop. The default action of both signals ends the process.
-  std::signal(SIGPROF, SIG_DFL);
-  std::signal(SIGALRM, SIG_DFL);
+/// Reads exactly n bytes; false at end of file or on an error.
+bool read_exact(int fd, char* p, std::size_t n) {
+  while (n > 0) {
+    const ssize_t r = ::read(fd, p, n);
+    if (r < 0 && errno == EINTR) continue;
+    if (r <= 0) return false;
+    p += r;
+    n -= static_cast<std::size_t>(r);
+  }
+  return true;
+}
+
+bool read_string(int fd, std::string& s, std::size_t limit) {
+  std::uint64_t n;
+  if (!read_exact(fd, reinterpret_cast<char*>(&n), sizeof n) || n > limit) return false;
+  s.resize(n);
+  return read_exact(fd, s.data(), n);
+}
+
+void set_timers(double cpu_seconds, double wall_seconds) {
   itimerval cpu{}, wall{};
-  cpu.it_value = to_timeval(options.time_limit);
-  wall.it_value = to_timeval(4 * options.time_limit + 1);
+  if (cpu_seconds > 0) cpu.it_value = to_timeval(cpu_seconds);
+  if (wall_seconds > 0) wall.it_value = to_timeval(wall_seconds);
   ::setitimer(ITIMER_PROF, &cpu, nullptr);
   ::setitimer(ITIMER_REAL, &wall, nullptr);
+}
 
-  std::string input;
-  std::string out;
-  if (read_all(fd, input, options.max_body + 256)) {
-    const std::size_t nl = input.find('\n');
-    const std::string name = input.substr(0, nl);
-    std::string body = nl == std::string::npos ? std::string() : input.substr(nl + 1);
+/// A worker: answers requests from fd one after the other until end of file. Each request
+/// arms two timers on the process, CPU time at the limit (what "computed for more than"
+/// counts, whatever the machine's load) and wall time at four times it plus a second as
+/// a backstop, disarmed before the answer is written; either signal's default action ends
+/// the process wherever it is, and the server replaces it.
+[[noreturn]] void worker(int fd, const ServeOptions& options) {
+  std::signal(SIGCHLD, SIG_DFL);
+  std::signal(SIGPROF, SIG_DFL);
+  std::signal(SIGALRM, SIG_DFL);
+  ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+  const pid_t self = ::getpid();
+  if (!write_all(fd, std::string_view(reinterpret_cast<const char*>(&self), sizeof self))) ::_exit(0);
+  std::string name, body;
+  for (;;) {
+    if (!read_string(fd, name, 64) || !read_string(fd, body, options.max_body)) ::_exit(0);
+    set_timers(options.time_limit, 4 * options.time_limit + 1);
+    std::string out;
     if (!command_exists(name)) {
       out = frame(kind_not_served, "command: unknown command " + quoted_text(name));
     } else {
@@ -120,17 +133,17 @@ std::string frame(char kind, std::string_view text) {
         out = frame(a.status == exit_bad_input ? kind_bad : kind_internal, clipped(a.error, max_message));
       }
     }
+    set_timers(0, 0);
+    if (!write_all(fd, out)) ::_exit(0);
   }
-  write_all(fd, out);
-  ::_exit(0);
 }
 
-/// The spawner: receives one socket per request on ctl and forks a child to answer on it.
+/// The spawner: receives one socket per worker to start on ctl and forks the worker.
 /// Single-threaded, so a fork copies no lock held by another thread.
 [[noreturn]] void spawner(int ctl, const ServeOptions& options, pid_t server) {
   ::prctl(PR_SET_PDEATHSIG, SIGKILL);
   if (::getppid() != server) ::_exit(0);
-  std::signal(SIGCHLD, SIG_IGN);  // children are reaped by the system
+  std::signal(SIGCHLD, SIG_IGN);  // workers are reaped by the system
   std::signal(SIGINT, SIG_IGN);   // a terminal's Ctrl-C stops the server, which stops us
   for (;;) {
     char byte;
@@ -151,16 +164,16 @@ std::string frame(char kind, std::string_view text) {
     const pid_t pid = ::fork();
     if (pid == 0) {
       ::close(ctl);
-      compute_child(fd, options);
+      worker(fd, options);
     }
-    ::close(fd);  // fork failed: the server sees end of file without an answer
+    ::close(fd);  // fork failed: the server sees end of file instead of the worker's pid
   }
 }
 
-/// The server's side of the spawner.
+/// The server's side: `jobs` worker processes, each computing one request at a time.
 class Computer {
  public:
-  explicit Computer(const ServeOptions& options) : options_(options), slots_(static_cast<std::ptrdiff_t>(jobs(options))) {
+  explicit Computer(const ServeOptions& options) : options_(options) {
     int sv[2];
     if (::socketpair(AF_UNIX, SOCK_SEQPACKET | SOCK_CLOEXEC, 0, sv) != 0) throw std::runtime_error(std::strerror(errno));
     const pid_t server = ::getpid();
@@ -172,7 +185,7 @@ class Computer {
     }
     ::close(sv[1]);
     ctl_ = sv[0];
-    spawner_ = pid;
+    for (unsigned i = 0; i < jobs(options); ++i) idle_.push_back(start_worker());
   }
 
   static unsigned jobs(const ServeOptions& options) {
@@ -185,75 +198,108 @@ class Computer {
     bool timed_out = false;
   };
 
+  /// The request computed by an idle worker (waiting for one); a worker that did not answer
+  /// is replaced.
   Result compute(std::string_view name, std::string_view body) {
-    slots_.acquire();
-    Result r = compute_now(name, body);
-    slots_.release();
+    Worker w;
+    {
+      std::unique_lock lock(mutex_);
+      idle_changed_.wait(lock, [&] { return !idle_.empty(); });
+      w = idle_.back();
+      idle_.pop_back();
+    }
+    bool alive = false;
+    Result r = exchange(w, name, body, alive);
+    if (!alive) {
+      if (w.fd >= 0) ::close(w.fd);
+      if (w.pid > 0) ::kill(w.pid, SIGKILL);  // if it still runs (the wall backstop)
+      w = start_worker();
+    }
+    {
+      std::lock_guard lock(mutex_);
+      idle_.push_back(w);
+    }
+    idle_changed_.notify_one();
     return r;
   }
 
  private:
-  Result compute_now(std::string_view name, std::string_view body) {
-    Result r;
+  struct Worker {
+    int fd = -1;
+    pid_t pid = -1;
+  };
+
+  /// A new worker from the spawner ({-1, -1} when that fails: its next request answers
+  /// 500 and tries again).
+  Worker start_worker() {
     int sv[2];
-    if (::socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, sv) != 0) {
-      r.text = std::string("internal: cannot make a socket: ") + std::strerror(errno);
+    if (::socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, sv) != 0) return {};
+    char byte = 0;
+    iovec iov{&byte, 1};
+    alignas(cmsghdr) char control[CMSG_SPACE(sizeof(int))] = {};
+    msghdr msg{};
+    msg.msg_iov = &iov;
+    msg.msg_iovlen = 1;
+    msg.msg_control = control;
+    msg.msg_controllen = sizeof control;
+    cmsghdr* c = CMSG_FIRSTHDR(&msg);
+    c->cmsg_level = SOL_SOCKET;
+    c->cmsg_type = SCM_RIGHTS;
+    c->cmsg_len = CMSG_LEN(sizeof(int));
+    std::memcpy(CMSG_DATA(c), &sv[1], sizeof(int));
+    ssize_t n;
+    do {
+      n = ::sendmsg(ctl_, &msg, MSG_NOSIGNAL);
+    } while (n < 0 && errno == EINTR);
+    ::close(sv[1]);
+    Worker w{sv[0], -1};
+    if (n != 1 || !read_exact(w.fd, reinterpret_cast<char*>(&w.pid), sizeof w.pid)) {
+      ::close(w.fd);
+      return {};
+    }
+    return w;
+  }
+
+  Result exchange(const Worker& w, std::string_view name, std::string_view body, bool& alive) {
+    Result r;
+    if (w.fd < 0) {
+      r.text = "internal: no compute process could be started";
       return r;
     }
+    std::string request;
+    append_length(request, name.size());
+    request.append(name);
+    append_length(request, body.size());
+    request.append(body);
     const auto start = std::chrono::steady_clock::now();
-    {
-      char byte = 0;
-      iovec iov{&byte, 1};
-      alignas(cmsghdr) char control[CMSG_SPACE(sizeof(int))] = {};
-      msghdr msg{};
-      msg.msg_iov = &iov;
-      msg.msg_iovlen = 1;
-      msg.msg_control = control;
-      msg.msg_controllen = sizeof control;
-      cmsghdr* c = CMSG_FIRSTHDR(&msg);
-      c->cmsg_level = SOL_SOCKET;
-      c->cmsg_type = SCM_RIGHTS;
-      c->cmsg_len = CMSG_LEN(sizeof(int));
-      std::memcpy(CMSG_DATA(c), &sv[1], sizeof(int));
-      ssize_t n;
-      do {
-        n = ::sendmsg(ctl_, &msg, MSG_NOSIGNAL);
-      } while (n < 0 && errno == EINTR);
-      ::close(sv[1]);
-      if (n != 1) {
-        ::close(sv[0]);
-        r.text = "internal: the compute process is gone";
-        return r;
-      }
-    }
-    std::string request(name);
-    request += '\n';
-    request += body;
-    write_all(sv[0], request);  // a child that stopped reading has ended: seen below
-    ::shutdown(sv[0], SHUT_WR);
+    write_all(w.fd, request);  // a worker that stopped reading has ended: seen below
 
-    // Read the frame until end of file; past the wall backstop (the child's own timers end
-    // it long before) the request is abandoned.
+    // Read the frame; past the wall backstop (the worker's own timers end it long before)
+    // the request is abandoned and the worker killed.
     const auto backstop = start + std::chrono::duration<double>(4 * options_.time_limit + 2);
     std::string in;
+    std::uint64_t length = 0;
+    constexpr std::size_t head = 1 + sizeof length;
     char buf[1 << 16];
     for (;;) {
+      if (in.size() >= head) {
+        std::memcpy(&length, in.data() + 1, sizeof length);
+        if (in.size() - head >= length) break;
+      }
       const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(backstop - std::chrono::steady_clock::now()).count();
       if (left <= 0) break;
-      pollfd p{sv[0], POLLIN, 0};
+      pollfd p{w.fd, POLLIN, 0};
       const int ready = ::poll(&p, 1, static_cast<int>(std::min<long long>(left, 1000)));
       if (ready < 0 && errno != EINTR) break;
       if (ready <= 0) continue;
-      const ssize_t n = ::read(sv[0], buf, sizeof buf);
+      const std::size_t want = in.size() >= head ? std::min<std::uint64_t>(sizeof buf, head + length - in.size()) : head - in.size();
+      const ssize_t n = ::read(w.fd, buf, want);
       if (n < 0 && errno == EINTR) continue;
       if (n <= 0) break;
       in.append(buf, static_cast<std::size_t>(n));
     }
-    ::close(sv[0]);
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::uint64_t length = 0;
-    if (in.size() >= 1 + sizeof length) std::memcpy(&length, in.data() + 1, sizeof length);
-    if (in.size() < 1 + sizeof length || in.size() != 1 + sizeof length + length) {
+    if (in.size() < head || in.size() - head != length) {
       if (elapsed >= options_.time_limit) {
         r.timed_out = true;
       } else {
@@ -261,15 +307,17 @@ class Computer {
       }
       return r;
     }
+    alive = true;
     r.kind = in[0];
-    r.text = in.substr(1 + sizeof length);
+    r.text = in.substr(head);
     return r;
   }
 
   ServeOptions options_;
-  std::counting_semaphore<> slots_;
   int ctl_ = -1;
-  pid_t spawner_ = -1;
+  std::mutex mutex_;
+  std::condition_variable idle_changed_;
+  std::vector<Worker> idle_;
 };
 
 void set_error(httplib::Response& res, int status, std::string_view message) {
@@ -319,12 +367,20 @@ int serve(const ServeOptions& options) {
   // would otherwise gather whole in memory.
   server.Post(R"(/api/([A-Za-z0-9_]{1,64}))", [&](const httplib::Request& req, httplib::Response& res,
                                                    const httplib::ContentReader& read_body) {
+    // Past the limit the rest is read and dropped, up to 1 MiB more, so that a client
+    // that sent a little too much gets its 413 on a connection still in step; beyond
+    // that the connection is dropped.
     std::string body;
     bool too_big = false;
+    std::size_t dropped = 0;
     const bool read = read_body([&](const char* data, std::size_t n) {
-      if (body.size() + n > options.max_body) {
+      if (!too_big && body.size() + n > options.max_body) {
         too_big = true;
-        return false;
+        std::string().swap(body);
+      }
+      if (too_big) {
+        dropped += n;
+        return dropped <= (1u << 20);
       }
       body.append(data, n);
       return true;
@@ -333,7 +389,7 @@ int serve(const ServeOptions& options) {
     const std::string declared = req.get_header_value("Content-Length");
     if (!declared.empty() && (declared.size() > 18 || std::stoull("0" + declared) > options.max_body)) too_big = true;
     if (too_big) {
-      res.set_header("Connection", "close");
+      if (!read) res.set_header("Connection", "close");
       set_error(res, 413, "request: the body is larger than the limit of " + std::to_string(options.max_body) + " bytes");
       return;
     }
