@@ -343,9 +343,12 @@ int serve(const ServeOptions& options) {
 
   httplib::Server server;
   const unsigned jobs = Computer::jobs(options);
-  // Connection threads wait on sockets (keep-alive, slow clients) while at most `jobs`
-  // requests compute: more threads than compute slots.
-  server.new_task_queue = [jobs] { return new httplib::ThreadPool(std::max(8u, 4 * jobs)); };
+  // httplib serves a connection on one thread for as long as it lasts (keep-alive, a slow
+  // client), while at most `jobs` requests compute: many more connection threads than
+  // workers, so that idle or slow clients do not keep the others waiting; an idle
+  // connection is closed after 2 s, a client silent for 5 s in mid-request too.
+  server.new_task_queue = [jobs] { return new httplib::ThreadPool(std::max(32u, 8 * jobs)); };
+  server.set_keep_alive_timeout(2);
   server.set_payload_max_length(options.max_body);
   // httplib writes the head and the body apart: without TCP_NODELAY, Nagle's algorithm holds
   // the body until the client's delayed ACK, 40 ms per response.
