@@ -11,7 +11,7 @@ FUZZ_SECONDS ?= 120
 # cores busy. A tree configured earlier keeps its generator.
 generator = $(if $(wildcard $(1)/CMakeCache.txt),,-G Ninja)
 
-.PHONY: deps configure build demo test test-release test-headers test-asan test-asan-smoke bench fuzz package clean
+.PHONY: deps configure build demo explorer test test-release test-headers test-asan test-asan-smoke bench fuzz package clean
 
 deps:
 	@scripts/install-deps.sh build
@@ -27,6 +27,13 @@ demo: configure
 	cmake --build $(BUILD) -j $(JOBS) --target casteljau-gallery
 	$(BUILD)/apps/gallery/casteljau-gallery $(BUILD)/gallery
 	@echo "gallery: $(abspath $(BUILD)/gallery/index.html)"
+
+# The explorer: builds the program and serves the page (prints its address; Ctrl-C stops it).
+# PORT=0 takes any free port.
+PORT ?= 8080
+explorer: configure
+	cmake --build $(BUILD) -j $(JOBS) --target casteljau_cli
+	$(BUILD)/apps/cli/casteljau serve --port $(PORT)
 
 # The header check (ctest label `headers`, tests/headers) costs about 280 s of CPU (every
 # header alone, and every header with a user's file at -O0 and -O2 with g++ and clang):

@@ -15,6 +15,7 @@ build_pkgs=(
   libocct-modeling-data-dev libocct-foundation-dev
   libfreetype-dev fonts-dejavu-core fonts-urw-base35
   python3-dev python3-pybind11 pybind11-dev python3-numpy python3-pytest python3-dask  # the Python package (python/, docs/python.md)
+  libcpp-httplib-dev chromium chromium-driver python3-selenium  # casteljau serve (cpp-httplib) and its browser test (headless chromium)
 )
 fuzz_pkgs=()
 bench_pkgs=(lib2geom-dev libocct-modeling-data-dev libocct-foundation-dev libocct-modeling-algorithms-dev libboost-dev libdouble-conversion-dev libgsl-dev libsisl-dev

@@ -12,97 +12,22 @@
 #include <CLI/CLI.hpp>
 
 #include "casteljau/io/commands.hpp"
+#include "request.hpp"
+#include "serve.hpp"
 
 namespace {
 
 using casteljau::InvalidArgument;
+using casteljau::cli::Answer;
+using casteljau::cli::clipped;
+using casteljau::cli::exit_bad_input;
+using casteljau::cli::exit_internal;
+using casteljau::cli::exit_ok;
+using casteljau::cli::max_message;
+using casteljau::cli::one_line;
+using casteljau::cli::where_what;
 using casteljau::io::Command;
-using casteljau::io::Json;
 using casteljau::io::OrderedJson;
-
-constexpr int exit_ok = 0;
-constexpr int exit_internal = 1;
-constexpr int exit_bad_input = 2;
-
-/// The length of the well-formed UTF-8 sequence starting at s[i] (RFC 3629), or 0.
-std::size_t utf8_length(std::string_view s, std::size_t i) {
-  const auto b = [&](std::size_t k) { return static_cast<unsigned char>(s[k]); };
-  const unsigned char c = b(i);
-  std::size_t n;
-  unsigned char lo = 0x80, hi = 0xbf;  // range of the second byte
-  if (c >= 0xc2 && c <= 0xdf) {
-    n = 2;
-  } else if (c >= 0xe0 && c <= 0xef) {
-    n = 3;
-    if (c == 0xe0) lo = 0xa0;  // no overlong forms
-    if (c == 0xed) hi = 0x9f;  // no surrogates
-  } else if (c >= 0xf0 && c <= 0xf4) {
-    n = 4;
-    if (c == 0xf0) lo = 0x90;
-    if (c == 0xf4) hi = 0x8f;  // <= U+10FFFF
-  } else {
-    return 0;
-  }
-  if (i + n > s.size() || b(i + 1) < lo || b(i + 1) > hi) return 0;
-  for (std::size_t k = 2; k < n; ++k) {
-    if (b(i + k) < 0x80 || b(i + k) > 0xbf) return 0;
-  }
-  return n;
-}
-
-/// The message with control characters and bytes that are not UTF-8 escaped, so that it
-/// stays one line of text (user input may appear in it).
-std::string one_line(std::string_view s) {
-  std::string out;
-  for (std::size_t i = 0; i < s.size(); ++i) {
-    const char ch = s[i];
-    const auto c = static_cast<unsigned char>(ch);
-    if (c >= 0x80) {
-      if (const std::size_t n = utf8_length(s, i)) {
-        out.append(s.substr(i, n));
-        i += n - 1;
-      } else {
-        char buf[8];
-        std::snprintf(buf, sizeof buf, "\\x%02x", c);
-        out += buf;
-      }
-    } else if (c == '\n') {
-      out += "\\n";
-    } else if (c == '\r') {
-      out += "\\r";
-    } else if (c == '\t') {
-      out += "\\t";
-    } else if (c < 0x20 || c == 0x7f) {
-      char buf[8];
-      std::snprintf(buf, sizeof buf, "\\u%04x", c);
-      out += buf;
-    } else {
-      out += ch;
-    }
-  }
-  return out;
-}
-
-/// s cut to about `limit` bytes: its start and its end (whole UTF-8 characters) around an
-/// ellipsis and the length. The io layer already cuts the user text it quotes; this keeps
-/// every message bounded whatever its source (CLI11's messages echo arguments).
-std::string clipped(std::string_view s, std::size_t limit) {
-  if (s.size() <= limit) return std::string(s);
-  const auto continuation = [&](std::size_t i) { return (static_cast<unsigned char>(s[i]) & 0xc0) == 0x80; };
-  std::size_t head = limit * 2 / 3, tail = s.size() - limit / 3;
-  while (head > 0 && continuation(head)) --head;
-  while (tail < s.size() && continuation(tail)) ++tail;
-  return std::string(s.substr(0, head)) + "\u2026 (" + std::to_string(s.size()) + " bytes) \u2026" + std::string(s.substr(tail));
-}
-
-/// Longest `<where>` and whole message written (bytes): far above any message the program
-/// composes, far below what hostile input could make of one.
-constexpr std::size_t max_where = 300;
-constexpr std::size_t max_message = 800;
-
-std::string where_what(const InvalidArgument& e) {
-  return clipped(e.where().empty() ? std::string("request") : e.where(), max_where) + ": " + e.problem();
-}
 
 void print_error(std::string_view message) {
   const std::string line = "error: " + one_line(clipped(message, max_message)) + "\n";
@@ -170,37 +95,6 @@ class Input {
   bool owned_ = false;
 };
 
-/// The outcome of one request: the text to write, or an error.
-struct Answer {
-  std::string text;  // response (JSON line or SVG), on success
-  std::string error;  // "<where>: <what>", on failure
-  int status = exit_ok;
-};
-
-Answer answer(const Command& command, std::string_view text, bool jsonl) {
-  Answer a;
-  try {
-    // A blank line is not silently skipped: responses pair with input lines by position.
-    if (jsonl && text.find_first_not_of(" \t") == std::string_view::npos) {
-      throw InvalidArgument("request", "empty line (every line must hold one JSON request object)");
-    }
-    const Json request = casteljau::io::parse_json(text);
-    const auto response = casteljau::io::run(command, request);
-    if (response.is_svg && !jsonl) {
-      a.text = response.svg;
-    } else {
-      a.text = response.json.dump(-1, ' ', false, OrderedJson::error_handler_t::replace) + "\n";
-    }
-  } catch (const InvalidArgument& e) {
-    a.error = where_what(e);
-    a.status = exit_bad_input;
-  } catch (const std::exception& e) {
-    a.error = std::string("internal: ") + e.what();
-    a.status = exit_internal;
-  }
-  return a;
-}
-
 int run_single(const Command& command, const std::string& file) {
   std::string text;
   try {
@@ -210,7 +104,7 @@ int run_single(const Command& command, const std::string& file) {
     print_error(where_what(e));
     return exit_bad_input;
   }
-  const Answer a = answer(command, text, false);
+  const Answer a = casteljau::cli::answer(command, text, false);
   if (a.status != exit_ok) {
     print_error(a.error);
     return a.status;
@@ -231,7 +125,7 @@ int run_jsonl(const Command& command, const std::string& file) {
     std::string line;
     while (in.read_line(line)) {
       ++count;
-      const Answer a = answer(command, line, true);
+      const Answer a = casteljau::cli::answer(command, line, true);
       std::string out = a.text;
       if (a.status != exit_ok) {
         out = OrderedJson{{"error", clipped(a.error, max_message)}}.dump(-1, ' ', false, OrderedJson::error_handler_t::replace) + "\n";
@@ -295,12 +189,25 @@ int main(int argc, char** argv) {
     file_options.push_back(sub->add_option("FILE", file, "Request file (default: stdin; - for stdin)")->type_name(""));
     sub->add_flag("--jsonl", jsonl, "One request per line in, one response per line out");
   }
+  // `casteljau serve`: the HTTP server and the explorer page (serve.cpp).
+  casteljau::cli::ServeOptions serve_options;
+  CLI::App* serve = app.add_subcommand("serve", "Serve the explorer page and every command over HTTP (POST /api/COMMAND)");
+  serve->group("Server");
+  serve->add_option("--host", serve_options.host, "Address to bind (default: the loopback address)")->capture_default_str();
+  serve->add_option("--port", serve_options.port, "Port to listen on (0: any free port, printed)")->capture_default_str()->check(CLI::Range(0, 65535));
+  serve->add_option("--max-body", serve_options.max_body, "Largest request body in bytes (larger: 413)")->capture_default_str()->check(CLI::PositiveNumber);
+  serve->add_option("--time-limit", serve_options.time_limit, "Seconds of computing one request may take (more: 503, its work stopped)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  serve->add_option("--jobs", serve_options.jobs, "Requests computed at once (default: the number of cores)");
+  serve->add_option("--font-dir", serve_options.font_dir,
+                    "Directory whose font files the glyph command may read, by file name (default: none, glyph is refused)");
 
   // An unknown command reads better as such than as CLI11's "arguments were not expected".
   for (int i = 1; i < argc; ++i) {
     const std::string_view a = argv[i];
     if (a.empty() || a.front() != '-' || a == "-") {
-      if (!casteljau::io::find_command(a)) {
+      if (a != "serve" && !casteljau::io::find_command(a)) {
         print_error("command: unknown command " + casteljau::io::quoted(a) + " (commands: " + command_list() + ")");
         return exit_bad_input;
       }
@@ -323,6 +230,14 @@ int main(int argc, char** argv) {
   if (chosen.empty()) {
     print_error("command: missing command (commands: " + command_list() + "; run casteljau --help)");
     return exit_bad_input;
+  }
+  if (chosen.front() == serve) {
+    try {
+      return casteljau::cli::serve(serve_options);
+    } catch (const std::exception& e) {
+      print_error(std::string("serve: ") + e.what());
+      return exit_internal;
+    }
   }
   const Command* command = casteljau::io::find_command(chosen.front()->get_name());
   // An empty FILE (a script's unset variable: casteljau eval "$f") must not quietly read

@@ -1,0 +1,23 @@
+// `casteljau serve`: the HTTP server of docs/cli.md ("casteljau serve"), in serve.cpp, the
+// one translation unit that includes cpp-httplib.
+#pragma once
+
+#include <cstddef>
+#include <string>
+
+namespace casteljau::cli {
+
+struct ServeOptions {
+  std::string host = "127.0.0.1";    ///< the loopback address unless told otherwise
+  int port = 8080;                   ///< 0: any free port (the address printed says which)
+  std::size_t max_body = 1 << 20;    ///< larger request bodies: 413
+  double time_limit = 2.0;           ///< CPU seconds one request may compute (past it: 503)
+  unsigned jobs = 0;                 ///< requests computed at once; 0: the number of cores
+  std::string font_dir;              ///< fonts glyph may read, by file name; empty: glyph refused
+};
+
+/// Serves until the process is stopped (a signal); returns an exit status when the server
+/// cannot start (the address is taken, ...).
+int serve(const ServeOptions& options);
+
+}  // namespace casteljau::cli

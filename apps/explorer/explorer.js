@@ -1,0 +1,824 @@
+// The casteljau explorer: views that send every geometry to the server (POST /api/COMMAND,
+// the command line's requests and responses) and draw the answers in SVG. Plain modern
+// JavaScript, no library. Each view keeps its state (points, t, knots...) and redraws
+// from the server's answers; a drag sends at most one batch of requests at a time and,
+// when it ends, one more with the latest state (requests coalesced, never queued).
+"use strict";
+
+const SVG_NS = "http://www.w3.org/2000/svg";
+
+// ---------------------------------------------------------------------------------------
+// Helpers.
+
+function el(tag, attrs, parent) {
+  const e = document.createElementNS(SVG_NS, tag);
+  for (const [k, v] of Object.entries(attrs || {})) e.setAttribute(k, v);
+  if (parent) parent.appendChild(e);
+  return e;
+}
+
+function fmt(x) {
+  return typeof x === "number" ? x.toFixed(4) : String(x);
+}
+
+function fmtPoint(p) {
+  return "(" + p.map(fmt).join(", ") + ")";
+}
+
+function linspace(a, b, n) {
+  const out = [];
+  for (let i = 0; i < n; i++) out.push(a + ((b - a) * i) / (n - 1));
+  return out;
+}
+
+const status = document.getElementById("status");
+let pendingRequests = 0;
+
+const idleWaiters = [];
+
+function setPending(delta) {
+  pendingRequests += delta;
+  document.body.dataset.pending = String(pendingRequests);
+  if (pendingRequests === 0) {
+    // After the drawing that follows the last answer.
+    setTimeout(() => {
+      if (pendingRequests === 0) for (const resolve of idleWaiters.splice(0)) resolve();
+    }, 0);
+  }
+}
+
+// Resolves when no request is in flight and the answers are drawn (for tests and scripts).
+window.explorerIdle = () => new Promise((resolve) => (pendingRequests === 0 ? resolve() : idleWaiters.push(resolve)));
+
+// One command on the server: the response object, or an Error with the server's message.
+async function api(command, request) {
+  setPending(1);
+  try {
+    const res = await fetch("api/" + command, {
+      method: "POST",
+      headers: { "Content-Type": "application/json" },
+      body: JSON.stringify(request),
+    });
+    const body = await res.json();
+    if (!res.ok) throw new Error(command + ": " + (body.error || res.status));
+    return body;
+  } finally {
+    setPending(-1);
+  }
+}
+
+// Runs `work` (an async function) now, or once more after the running one ends: a drag
+// never queues requests behind each other, and the last state is always drawn.
+function coalesced(work) {
+  let running = false;
+  let again = false;
+  const run = async () => {
+    if (running) {
+      again = true;
+      return;
+    }
+    running = true;
+    setPending(1);
+    try {
+      do {
+        again = false;
+        try {
+          await work();
+          status.textContent = "";
+        } catch (e) {
+          status.textContent = e.message;
+        }
+      } while (again);
+    } finally {
+      running = false;
+      setPending(-1);
+    }
+  };
+  return run;
+}
+
+// A figure: world coordinates (y up) mapped to the SVG's viewBox, with one scale for both
+// axes (equal) or one per axis (a plot).
+class Frame {
+  constructor(svg, xmin, xmax, ymin, ymax, margin = 20, equal = true) {
+    this.svg = svg;
+    const vb = svg.viewBox.baseVal;
+    this.w = vb.width;
+    this.h = vb.height;
+    this.equal = equal;
+    this.set(xmin, xmax, ymin, ymax, margin);
+  }
+  set(xmin, xmax, ymin, ymax, margin = 20) {
+    let sx = (this.w - 2 * margin) / (xmax - xmin), sy = (this.h - 2 * margin) / (ymax - ymin);
+    if (this.equal) sx = sy = Math.min(sx, sy);
+    this.sx = sx;
+    this.sy = sy;
+    this.ox = (this.w - sx * (xmax - xmin)) / 2 - sx * xmin;
+    this.oy = (this.h + sy * (ymax - ymin)) / 2 + sy * ymin;
+  }
+  x(p) {
+    return this.ox + this.sx * p[0];
+  }
+  y(p) {
+    return this.oy - this.sy * p[1];
+  }
+  path(points) {
+    return points.map((p, i) => (i ? "L" : "M") + this.x(p).toFixed(2) + " " + this.y(p).toFixed(2)).join("");
+  }
+  // The world point under a pointer event.
+  world(ev) {
+    const m = this.svg.getScreenCTM().inverse();
+    const pt = new DOMPoint(ev.clientX, ev.clientY).matrixTransform(m);
+    return [(pt.x - this.ox) / this.sx, (this.oy - pt.y) / this.sy];
+  }
+}
+
+// Draggable circles: onMove(index, worldPoint) while dragging (mouse, pen or touch). The
+// pointer is captured by the figure's SVG element, which outlives the redraws that
+// replace the circle during the drag.
+function dragHandle(frame, circle, index, onMove) {
+  circle.addEventListener("pointerdown", (ev) => {
+    ev.preventDefault();
+    const svg = frame.svg, id = ev.pointerId;
+    svg.setPointerCapture(id);
+    const move = (e) => {
+      if (e.pointerId === id) onMove(index, frame.world(e));
+    };
+    const up = (e) => {
+      if (e.pointerId !== id) return;
+      svg.removeEventListener("pointermove", move);
+      svg.removeEventListener("pointerup", up);
+      svg.removeEventListener("pointercancel", up);
+    };
+    svg.addEventListener("pointermove", move);
+    svg.addEventListener("pointerup", up);
+    svg.addEventListener("pointercancel", up);
+  });
+}
+
+// The convex hull of the control points (Andrew's monotone chain): a drawing aid for the
+// convex hull property, not a geometry of the curve.
+function convexHull(points) {
+  const p = points.map((q) => q.slice()).sort((a, b) => a[0] - b[0] || a[1] - b[1]);
+  if (p.length < 3) return p;
+  const cross = (o, a, b) => (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
+  const lower = [];
+  for (const q of p) {
+    while (lower.length >= 2 && cross(lower[lower.length - 2], lower[lower.length - 1], q) <= 0) lower.pop();
+    lower.push(q);
+  }
+  const upper = [];
+  for (const q of p.slice().reverse()) {
+    while (upper.length >= 2 && cross(upper[upper.length - 2], upper[upper.length - 1], q) <= 0) upper.pop();
+    upper.push(q);
+  }
+  return lower.slice(0, -1).concat(upper.slice(0, -1));
+}
+
+const PALETTE = ["#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22", "#17becf"];
+
+// A plot of basis functions: values[j][i] = function i at ts[j]; marks at the knots.
+function drawBasis(svg, ts, values, cursor, knots) {
+  svg.replaceChildren();
+  const frame = new Frame(svg, ts[0], ts[ts.length - 1], 0, 1, 24, false);
+  el("line", { class: "axis", x1: frame.x([ts[0], 0]), y1: frame.y([0, 0]), x2: frame.x([ts[ts.length - 1], 0]), y2: frame.y([0, 0]) }, svg);
+  el("line", { class: "axis", x1: frame.x([ts[0], 0]), y1: frame.y([0, 0]), x2: frame.x([ts[0], 0]), y2: frame.y([0, 1]) }, svg);
+  const l1 = el("text", { class: "label", x: frame.x([ts[0], 1]) - 16, y: frame.y([0, 1]) + 4 }, svg);
+  l1.textContent = "1";
+  const count = values.length ? values[0].length : 0;
+  for (let i = 0; i < count; i++) {
+    const pts = ts.map((t, j) => [t, values[j][i]]);
+    el("path", { class: "basis-fn", d: frame.path(pts), stroke: PALETTE[i % PALETTE.length], "data-index": i }, svg);
+  }
+  if (cursor !== undefined) {
+    el("line", { class: "cursor", x1: frame.x([cursor, 0]), y1: frame.y([0, 0]), x2: frame.x([cursor, 0]), y2: frame.y([0, 1]) }, svg);
+  }
+  return frame;
+}
+
+// ---------------------------------------------------------------------------------------
+// View 1: de Casteljau's construction.
+
+const bezier = {
+  points: [
+    [0.5, 0.5],
+    [1.5, 4.2],
+    [4.5, 4.6],
+    [7.2, 3.4],
+    [8.5, 0.4],
+  ],
+  t: 0.4,
+  frame: null,
+
+  init() {
+    this.svg = document.getElementById("bz-canvas");
+    this.basisSvg = document.getElementById("bz-basis");
+    this.frame = new Frame(this.svg, -0.5, 9.5, -0.5, 5.5);
+    this.tInput = document.getElementById("bz-t");
+    this.update = coalesced(() => this.compute());
+    this.tInput.addEventListener("input", () => {
+      this.t = Number(this.tInput.value);
+      this.update();
+    });
+    for (const id of ["bz-construction", "bz-hull", "bz-split", "bz-elevate"]) {
+      document.getElementById(id).addEventListener("input", () => this.update());
+    }
+    document.getElementById("bz-add").addEventListener("click", () => {
+      if (this.points.length >= 11) return;  // degree <= 10
+      const a = this.points[this.points.length - 2], b = this.points[this.points.length - 1];
+      this.points.push([Math.min(9.3, b[0] + (b[0] - a[0]) * 0.5), Math.max(-0.3, Math.min(5.3, b[1] + 0.8))]);
+      this.update();
+    });
+    document.getElementById("bz-remove").addEventListener("click", () => {
+      if (this.points.length > 2) this.points.pop();
+      this.update();
+    });
+  },
+
+  curve() {
+    return { type: "bezier", points: this.points };
+  },
+
+  // De Casteljau's intermediate points b_i^k(t) (k = 1..n, i = 0..n-k): b_i^k is the Bézier
+  // curve on P_i..P_(i+k) at t, so one eval of a path made of those sub-curves, segment j
+  // asked at j + t, answers them all. Each query stays inside its own segment, clear of the
+  // next one's start: for t >= 1/2 the sub-curves are reversed and asked at 1 - t.
+  constructionRequest() {
+    const n = this.points.length - 1;
+    const reversed = this.t >= 0.5;
+    const s = reversed ? 1 - this.t : this.t;
+    const segments = [], ts = [], index = [];
+    for (let k = 1; k <= n; k++) {
+      for (let i = 0; i + k <= n; i++) {
+        const sub = this.points.slice(i, i + k + 1);
+        segments.push({ type: "bezier", points: reversed ? sub.reverse() : sub });
+        ts.push(segments.length - 1 + s);
+        index.push([k, i]);
+      }
+    }
+    return { request: { curve: { type: "path", segments }, t: ts }, index };
+  },
+
+  async compute() {
+    const n = this.points.length - 1;
+    const curve = this.curve();
+    const elevateTimes = Number(document.getElementById("bz-elevate").value) || 0;
+    const ts = linspace(0, 1, 161);
+    const construction = this.constructionRequest();
+    const jobs = [
+      api("eval", { curve, t: ts }),
+      api("eval", { curve, t: [this.t], derivatives: 1, curvature: true }),
+      api("eval", construction.request),
+      api("split", { curve, t: this.t }),
+      elevateTimes > 0 ? api("elevate", { curve, times: elevateTimes }) : null,
+      api("basis", { kind: "bernstein", degree: n, t: ts }),
+      api("basis", { kind: "bernstein", degree: n, t: [this.t] }),
+      api("length", { curve }),
+    ];
+    const [samples, at, levels, halves, elevated, basis, basisAt, length] = await Promise.all(jobs);
+    this.draw({ samples, at, levels, construction, halves, elevated, basis, basisAt, length, ts });
+  },
+
+  draw(r) {
+    const f = this.frame, svg = this.svg;
+    svg.replaceChildren();
+    const show = (id) => document.getElementById(id).checked;
+    if (show("bz-hull")) el("polygon", { class: "hull", id: "bz-hull-shape", points: convexHull(this.points).map((p) => f.x(p) + "," + f.y(p)).join(" ") }, svg);
+    el("path", { class: "polygon", d: f.path(this.points) }, svg);
+    const curve = el("path", { class: "curve", id: "bz-curve", d: f.path(r.samples.points) }, svg);
+    curve.dataset.points = JSON.stringify(r.samples.points);
+    if (show("bz-construction")) {
+      const n = this.points.length - 1;
+      const byLevel = [];
+      r.construction.index.forEach(([k, i], j) => {
+        (byLevel[k] ||= [])[i] = r.levels.points[j];
+      });
+      for (let k = 1; k < n; k++) {
+        const color = PALETTE[(k - 1) % PALETTE.length];
+        el("path", { class: "level", d: f.path(byLevel[k]), stroke: color, "data-level": k }, svg);
+        for (const p of byLevel[k]) el("circle", { class: "level-point", cx: f.x(p), cy: f.y(p), r: 3.5, fill: color }, svg);
+      }
+    }
+    if (show("bz-split")) {
+      const [left, right] = r.halves.curves;
+      el("path", { class: "half-left", id: "bz-left", d: f.path(left.points) }, svg);
+      el("path", { class: "half-right", id: "bz-right", d: f.path(right.points) }, svg);
+    }
+    if (r.elevated) {
+      const pts = r.elevated.curve.points;
+      el("path", { class: "elevated", id: "bz-elevated", d: f.path(pts) }, svg);
+      for (const p of pts) el("circle", { class: "elevated-point", cx: f.x(p), cy: f.y(p), r: 3 }, svg);
+    }
+    const c = r.at.points[0];
+    el("circle", { class: "on-curve", id: "bz-on-curve", cx: f.x(c), cy: f.y(c), r: 6 }, svg);
+    this.points.forEach((p, i) => {
+      const h = el("circle", { class: "handle", cx: f.x(p), cy: f.y(p), r: 9, "data-index": i, "data-point": JSON.stringify(p) }, svg);
+      dragHandle(f, h, i, (index, w) => {
+        this.points[index] = w;
+        this.update();
+      });
+      const label = el("text", { class: "label", x: f.x(p) + 11, y: f.y(p) - 11 }, svg);
+      label.textContent = "P" + i;
+    });
+    // Numbers.
+    document.getElementById("bz-t-out").textContent = fmt(this.t);
+    document.getElementById("bz-degree").textContent = String(this.points.length - 1);
+    document.getElementById("bz-point").textContent = fmtPoint(c);
+    document.getElementById("bz-point").dataset.value = JSON.stringify(c);
+    document.getElementById("bz-tangent").textContent = fmtPoint(r.at.derivatives[0][0]);
+    document.getElementById("bz-curvature").textContent = fmt(r.at.curvature[0]);
+    document.getElementById("bz-length").textContent = fmt(r.length.length);
+    document.getElementById("bz-bernstein").textContent = r.basisAt.values[0].map(fmt).join(", ");
+    const list = document.getElementById("bz-points");
+    list.replaceChildren(...this.points.map((p) => Object.assign(document.createElement("li"), { textContent: fmtPoint(p) })));
+    drawBasis(this.basisSvg, r.ts, r.basis.values, this.t);
+  },
+};
+
+// ---------------------------------------------------------------------------------------
+// View 3: B-splines and NURBS.
+
+function clampedUniform(count, degree) {
+  const inner = count - degree - 1;
+  const knots = [];
+  for (let i = 0; i <= degree; i++) knots.push(0);
+  for (let i = 1; i <= inner; i++) knots.push(i / (inner + 1));
+  for (let i = 0; i <= degree; i++) knots.push(1);
+  return knots;
+}
+
+const DEFAULT_BSPLINE = [
+  [0.3, 0.6],
+  [1.2, 4.0],
+  [3.2, 4.8],
+  [4.6, 1.0],
+  [6.3, 0.8],
+  [7.4, 4.5],
+  [9.0, 3.0],
+];
+
+const bspline = {
+  degree: 3,
+  points: DEFAULT_BSPLINE.map((p) => p.slice()),
+  weights: DEFAULT_BSPLINE.map(() => 1),
+  knots: clampedUniform(DEFAULT_BSPLINE.length, 3),
+  u: 0.5,
+  center: null,  // the exact circle's centre, while it is shown
+
+  init() {
+    this.svg = document.getElementById("bs-canvas");
+    this.basisSvg = document.getElementById("bs-basis");
+    this.frame = new Frame(this.svg, -0.5, 9.5, -0.5, 5.5);
+    this.update = coalesced(() => this.compute());
+    this.uInput = document.getElementById("bs-u");
+    this.uInput.addEventListener("input", () => {
+      this.u = this.domain()[0] + Number(this.uInput.value) * (this.domain()[1] - this.domain()[0]);
+      this.update();
+    });
+    document.getElementById("bs-degree").addEventListener("change", (e) => {
+      const p = Number(e.target.value);
+      if (p >= this.points.length) return;
+      this.degree = p;
+      this.knots = clampedUniform(this.points.length, p);
+      this.center = null;
+      this.update();
+    });
+    document.getElementById("bs-uniform").addEventListener("click", () => {
+      this.knots = clampedUniform(this.points.length, this.degree);
+      this.update();
+    });
+    document.getElementById("bs-reset").addEventListener("click", () => {
+      this.degree = 3;
+      document.getElementById("bs-degree").value = "3";
+      this.points = DEFAULT_BSPLINE.map((p) => p.slice());
+      this.weights = this.points.map(() => 1);
+      this.knots = clampedUniform(this.points.length, 3);
+      this.center = null;
+      this.frame.set(-0.5, 9.5, -0.5, 5.5);
+      this.renderPointList();
+      this.update();
+    });
+    document.getElementById("bs-insert").addEventListener("click", () => this.insertKnot());
+    document.getElementById("bs-circle").addEventListener("click", () => this.circle());
+    this.renderPointList();
+  },
+
+  domain() {
+    return [this.knots[this.degree], this.knots[this.points.length]];
+  },
+
+  rational() {
+    return this.weights.some((w) => w !== 1);
+  },
+
+  curve() {
+    const c = { type: this.rational() ? "nurbs" : "bspline", degree: this.degree, knots: this.knots, points: this.points };
+    if (this.rational()) c.weights = this.weights;
+    return c;
+  },
+
+  load(curve) {
+    this.degree = curve.degree;
+    this.knots = curve.knots;
+    this.points = curve.points;
+    this.weights = curve.weights || curve.points.map(() => 1);
+    document.getElementById("bs-degree").value = String(this.degree);
+    this.renderPointList();
+  },
+
+  async insertKnot() {
+    try {
+      const r = await api("insert_knot", { curve: this.curve(), knot: this.u });
+      this.load(r.curve);
+      this.update();
+    } catch (e) {
+      status.textContent = e.message;
+    }
+  },
+
+  // The exact circle: the server's NURBS for the circle shorthand (to_bspline answers it).
+  async circle() {
+    try {
+      this.center = [4.5, 2.5];
+      const r = await api("to_bspline", { curve: { type: "circle", center: this.center, radius: 2 } });
+      this.load(r.curve);
+      this.update();
+    } catch (e) {
+      status.textContent = e.message;
+    }
+  },
+
+  // One row per control point: its coordinates and its weight's slider.
+  renderPointList() {
+    const list = document.getElementById("bs-points");
+    list.replaceChildren();
+    this.points.forEach((p, i) => {
+      const li = document.createElement("li");
+      const coords = document.createElement("span");
+      coords.className = "coords";
+      const slider = Object.assign(document.createElement("input"), { type: "range", min: "0.05", max: "5", step: "0.01", value: String(this.weights[i]) });
+      slider.id = "bs-weight-" + i;
+      slider.setAttribute("aria-label", "weight of point " + i);
+      const out = document.createElement("output");
+      slider.addEventListener("input", () => {
+        this.weights[i] = Number(slider.value);
+        this.update();
+      });
+      li.append(coords, " w ", slider, " ", out);
+      list.appendChild(li);
+    });
+  },
+
+  async compute() {
+    const curve = this.curve();
+    const [a, b] = this.domain();
+    this.u = Math.min(b, Math.max(a, this.u));
+    const ts = linspace(a, b, 241);
+    const [samples, at, basis] = await Promise.all([
+      api("eval", { curve, t: ts }),
+      api("eval", { curve, t: [this.u] }),
+      api("basis", { kind: "bspline", degree: this.degree, knots: this.knots, t: ts }),
+    ]);
+    this.draw({ samples, at, basis, ts });
+  },
+
+  draw(r) {
+    const f = this.frame, svg = this.svg;
+    svg.replaceChildren();
+    el("path", { class: "polygon", d: f.path(this.points) }, svg);
+    const curve = el("path", { class: "curve", id: "bs-curve", d: f.path(r.samples.points) }, svg);
+    curve.dataset.points = JSON.stringify(r.samples.points);
+    const c = r.at.points[0];
+    el("circle", { class: "on-curve", id: "bs-on-curve", cx: f.x(c), cy: f.y(c), r: 6 }, svg);
+    this.points.forEach((p, i) => {
+      const h = el("circle", { class: "handle", cx: f.x(p), cy: f.y(p), r: 9, "data-index": i, "data-point": JSON.stringify(p) }, svg);
+      dragHandle(f, h, i, (index, w) => {
+        this.points[index] = w;
+        this.center = null;
+        this.update();
+      });
+      const label = el("text", { class: "label", x: f.x(p) + 11, y: f.y(p) - 11 }, svg);
+      label.textContent = "P" + i + (this.weights[i] !== 1 ? " (w " + this.weights[i].toFixed(3) + ")" : "");
+    });
+    // The basis functions over the knot vector, the knots draggable on its axis.
+    const [a, b] = this.domain();
+    const bf = drawBasis(this.basisSvg, r.ts, r.basis.values, this.u);
+    const p = this.degree, n = this.points.length;
+    this.knots.forEach((k, i) => {
+      if (k < a || k > b) return;
+      const interior = i > p && i < n;
+      const mark = el("circle", { class: "knot" + (interior ? "" : " fixed"), cx: bf.x([k, 0]), cy: bf.y([0, 0]), r: interior ? 7 : 5, "data-knot": i }, this.basisSvg);
+      if (interior) {
+        dragHandle(bf, mark, i, (index, w) => {
+          // Knots stay non-decreasing: between their neighbours.
+          this.knots[index] = Math.min(this.knots[index + 1], Math.max(this.knots[index - 1], w[0]));
+          this.update();
+        });
+      }
+    });
+    // Numbers.
+    document.getElementById("bs-u-out").textContent = fmt(this.u);
+    document.getElementById("bs-type").textContent = (this.rational() ? "NURBS" : "B-spline") + ", degree " + p + ", " + n + " points";
+    document.getElementById("bs-point").textContent = fmtPoint(c);
+    document.getElementById("bs-point").dataset.value = JSON.stringify(c);
+    document.getElementById("bs-domain").textContent = "[" + fmt(a) + ", " + fmt(b) + "]";
+    document.getElementById("bs-knots").textContent = this.knots.map(fmt).join(", ");
+    document.getElementById("bs-radius").textContent = this.center ? fmt(Math.hypot(c[0] - this.center[0], c[1] - this.center[1])) : "—";
+    const rows = document.getElementById("bs-points").children;
+    this.points.forEach((q, i) => {
+      if (!rows[i]) return;
+      rows[i].querySelector(".coords").textContent = fmtPoint(q);
+      rows[i].querySelector("output").textContent = this.weights[i].toFixed(3);
+      rows[i].querySelector("input").value = String(this.weights[i]);
+    });
+  },
+};
+
+// ---------------------------------------------------------------------------------------
+// View 4: interpolation.
+
+// Runge's bump 1 / (1 + 25 x^2) on [-1, 1], at 9 equally spaced x, drawn on the canvas.
+const RUNGE = linspace(-1, 1, 9).map((x) => [4.5 + 4 * x, 0.5 + 4 * (1 / (1 + 25 * x * x))]);
+
+// The parameters of a Lagrange curve through n points: equally spaced, or the Chebyshev
+// nodes (of the first kind) on the same interval [0, n - 1], increasing.
+function chebyshevParams(n) {
+  const out = [];
+  for (let i = 0; i < n; i++) out.push(((n - 1) / 2) * (1 - Math.cos(((2 * i + 1) * Math.PI) / (2 * n))));
+  return out;
+}
+
+const INTERPOLANTS = [
+  { key: "lagrange_uniform", label: "Lagrange, equally spaced parameters", color: "#d62728", on: true,
+    curve: (p) => ({ type: "lagrange", params: p.map((_, i) => i), points: p }) },
+  { key: "lagrange_chebyshev", label: "Lagrange, Chebyshev parameters", color: "#2ca02c", on: true,
+    curve: (p) => ({ type: "lagrange", params: chebyshevParams(p.length), points: p }) },
+  { key: "spline_natural", label: "cubic spline, natural (chord)", color: "#1f77b4", on: true,
+    curve: (p) => ({ type: "cubic_spline", parametrization: "chord", boundary: "natural", points: p }) },
+  { key: "spline_not_a_knot", label: "cubic spline, not-a-knot (chord)", color: "#17becf", on: false,
+    curve: (p) => ({ type: "cubic_spline", parametrization: "chord", boundary: "not-a-knot", points: p }) },
+  { key: "catmull_rom_0", label: "Catmull-Rom, uniform (α 0)", color: "#ff7f0e", on: false,
+    curve: (p) => ({ type: "catmull_rom", alpha: 0, ends: "reflect", points: p }) },
+  { key: "catmull_rom_05", label: "Catmull-Rom, centripetal (α 0.5)", color: "#9467bd", on: false,
+    curve: (p) => ({ type: "catmull_rom", alpha: 0.5, ends: "reflect", points: p }) },
+  { key: "catmull_rom_1", label: "Catmull-Rom, chordal (α 1)", color: "#8c564b", on: false,
+    curve: (p) => ({ type: "catmull_rom", alpha: 1, ends: "reflect", points: p }) },
+];
+
+const interpolation = {
+  points: RUNGE.map((p) => p.slice()),
+
+  init() {
+    this.svg = document.getElementById("ip-canvas");
+    this.frame = new Frame(this.svg, -0.5, 9.5, -0.5, 5.5);
+    this.update = coalesced(() => this.compute());
+    const box = document.getElementById("ip-choices");
+    for (const c of INTERPOLANTS) {
+      const label = document.createElement("label");
+      const input = Object.assign(document.createElement("input"), { type: "checkbox", checked: c.on, id: "ip-" + c.key });
+      input.addEventListener("input", () => this.update());
+      const swatch = Object.assign(document.createElement("span"), { textContent: "■ " });
+      swatch.style.color = c.color;
+      label.append(input, " ", swatch, c.label);
+      box.appendChild(label);
+    }
+  },
+
+  chosen() {
+    return INTERPOLANTS.filter((c) => document.getElementById("ip-" + c.key).checked);
+  },
+
+  async compute() {
+    const chosen = this.chosen();
+    const answers = await Promise.all(
+      chosen.map(async (c) => {
+        const curve = c.curve(this.points);
+        const [flat, length] = await Promise.all([api("flatten", { curve, tolerance: 0.002 }), api("length", { curve })]);
+        return { c, points: flat.points, length: length.length };
+      }),
+    );
+    this.draw(answers);
+  },
+
+  draw(answers) {
+    const f = this.frame, svg = this.svg;
+    svg.replaceChildren();
+    for (const a of answers) {
+      const e = el("path", { class: "curve", id: "ip-curve-" + a.c.key, d: f.path(a.points), style: "stroke: " + a.c.color + "; stroke-width: 2" }, svg);
+      e.dataset.points = JSON.stringify(a.points);
+    }
+    this.points.forEach((p, i) => {
+      const h = el("circle", { class: "handle", cx: f.x(p), cy: f.y(p), r: 7, "data-index": i, "data-point": JSON.stringify(p) }, svg);
+      dragHandle(f, h, i, (index, w) => {
+        this.points[index] = w;
+        this.update();
+      });
+    });
+    const dl = document.getElementById("ip-lengths");
+    dl.replaceChildren();
+    for (const a of answers) {
+      const dt = Object.assign(document.createElement("dt"), { textContent: a.c.label });
+      const dd = Object.assign(document.createElement("dd"), { textContent: fmt(a.length), id: "ip-length-" + a.c.key });
+      dl.append(dt, dd);
+    }
+  },
+};
+
+// ---------------------------------------------------------------------------------------
+// View 5: subdivision curves.
+
+const subdivision = {
+  points: [
+    [1.0, 0.8],
+    [4.5, 0.3],
+    [8.2, 1.2],
+    [7.0, 4.6],
+    [4.6, 2.6],
+    [1.8, 4.9],
+  ],
+
+  init() {
+    this.svg = document.getElementById("sd-canvas");
+    this.frame = new Frame(this.svg, -0.5, 9.5, -0.5, 5.5);
+    this.update = coalesced(() => this.compute());
+    for (const id of ["sd-scheme", "sd-degree", "sd-tension", "sd-steps", "sd-closed", "sd-previous", "sd-limit"]) {
+      document.getElementById(id).addEventListener("input", () => this.update());
+    }
+  },
+
+  request(iterations) {
+    const scheme = document.getElementById("sd-scheme").value;
+    const r = { points: this.points, scheme, iterations, closed: document.getElementById("sd-closed").checked };
+    if (scheme === "lane_riesenfeld") r.degree = Number(document.getElementById("sd-degree").value) || 1;
+    if (scheme === "four_point") r.tension = Number(document.getElementById("sd-tension").value);
+    return r;
+  },
+
+  async compute() {
+    const k = Number(document.getElementById("sd-steps").value);
+    const [now, before, deep] = await Promise.all([
+      api("subdivide", this.request(k)),
+      k > 0 ? api("subdivide", this.request(k - 1)) : null,
+      api("subdivide", this.request(7)),
+    ]);
+    let limit = null;
+    if (deep.limit) {
+      const c = deep.limit, p = c.degree, n = c.points.length;
+      const ts = linspace(c.knots[p], c.knots[n], 401);
+      limit = { curve: c, points: (await api("eval", { curve: c, t: ts })).points };
+    }
+    this.draw({ k, now, before, deep, limit });
+  },
+
+  draw(r) {
+    const f = this.frame, svg = this.svg;
+    svg.replaceChildren();
+    const closed = document.getElementById("sd-closed").checked;
+    const ring = (pts) => (closed && pts.length ? pts.concat([pts[0]]) : pts);
+    el("path", { class: "polygon", d: f.path(ring(this.points)) }, svg);
+    if (document.getElementById("sd-limit").checked) {
+      const pts = r.limit ? r.limit.points : ring(r.deep.points);
+      const e = el("path", { class: "curve", id: "sd-limit-curve", d: f.path(pts) }, svg);
+      e.dataset.points = JSON.stringify(pts);
+    }
+    if (r.before && document.getElementById("sd-previous").checked) {
+      el("path", { class: "level", stroke: "#aaa", d: f.path(ring(r.before.points)) }, svg);
+    }
+    const step = el("path", { class: "level", id: "sd-step", stroke: "#d35400", d: f.path(ring(r.now.points)) }, svg);
+    step.dataset.points = JSON.stringify(r.now.points);
+    for (const p of r.now.points) el("circle", { class: "level-point", cx: f.x(p), cy: f.y(p), r: 2.5, fill: "#d35400" }, svg);
+    this.points.forEach((p, i) => {
+      const h = el("circle", { class: "handle", cx: f.x(p), cy: f.y(p), r: 9, "data-index": i, "data-point": JSON.stringify(p) }, svg);
+      dragHandle(f, h, i, (index, w) => {
+        this.points[index] = w;
+        this.update();
+      });
+    });
+    document.getElementById("sd-steps-out").textContent = String(r.k);
+    document.getElementById("sd-tension-out").textContent = Number(document.getElementById("sd-tension").value).toFixed(4);
+    document.getElementById("sd-count").textContent = String(r.now.points.length);
+    document.getElementById("sd-limit-info").textContent = r.limit
+      ? "uniform B-spline, degree " + r.limit.curve.degree + ", " + r.limit.curve.points.length + " control points" + (closed ? " (periodic)" : "")
+      : "no closed form: the polygon after 7 steps (" + r.deep.points.length + " points)";
+  },
+};
+
+// ---------------------------------------------------------------------------------------
+// View 6: queries.
+
+const queries = {
+  a: [
+    [0.5, 0.8],
+    [2.2, 4.8],
+    [6.0, 0.2],
+    [9.0, 4.0],
+  ],
+  b: [
+    [0.5, 4.5],
+    [3.0, 0.2],
+    [6.0, 5.2],
+    [9.0, 0.8],
+  ],
+  mouse: null,
+
+  init() {
+    this.svg = document.getElementById("qr-canvas");
+    this.frame = new Frame(this.svg, -0.5, 9.5, -0.5, 5.5);
+    this.update = coalesced(() => this.compute());
+    for (const id of ["qr-tol", "qr-method", "qr-bounds", "qr-flat"]) document.getElementById(id).addEventListener("input", () => this.update());
+    this.svg.addEventListener("pointermove", (e) => {
+      if (e.buttons) return;  // a drag: the handles' business
+      this.mouse = this.frame.world(e);
+      this.update();
+    });
+  },
+
+  tolerance() {
+    return Math.pow(10, Number(document.getElementById("qr-tol").value));
+  },
+
+  async compute() {
+    const A = { type: "bezier", points: this.a }, B = { type: "bezier", points: this.b };
+    const ts = linspace(0, 1, 161);
+    const tolerance = this.tolerance();
+    const methods = ["optimal", "subdivision", "uniform"];
+    const [sa, sb, inter, box, length, closest, ...flats] = await Promise.all([
+      api("eval", { curve: A, t: ts }),
+      api("eval", { curve: B, t: ts }),
+      api("intersect", { curves: [A, B] }),
+      api("bounds", { curve: A }),
+      api("length", { curve: A }),
+      this.mouse ? api("project", { curve: A, point: this.mouse }) : null,
+      ...methods.map((method) => api("flatten", { curve: A, tolerance, method })),
+    ]);
+    const flat = {};
+    methods.forEach((m, i) => (flat[m] = flats[i].points));
+    this.draw({ sa, sb, inter, box, length, closest, flat });
+  },
+
+  draw(r) {
+    const f = this.frame, svg = this.svg;
+    svg.replaceChildren();
+    if (document.getElementById("qr-bounds").checked) {
+      const [x0, y0] = r.box.min, [x1, y1] = r.box.max;
+      const rect = el("rect", { class: "polygon", id: "qr-bounds-box", x: f.x([x0, 0]), y: f.y([0, y1]), width: f.x([x1, 0]) - f.x([x0, 0]), height: f.y([0, y0]) - f.y([0, y1]) }, svg);
+      rect.dataset.box = JSON.stringify(r.box);
+    }
+    el("path", { class: "polygon", d: f.path(this.a) }, svg);
+    el("path", { class: "polygon", d: f.path(this.b) }, svg);
+    el("path", { class: "curve", id: "qr-curve-a", d: f.path(r.sa.points) }, svg);
+    el("path", { class: "curve", id: "qr-curve-b", d: f.path(r.sb.points), style: "stroke: #2e8b57" }, svg);
+    const method = document.getElementById("qr-method").value;
+    if (document.getElementById("qr-flat").checked) {
+      const pts = r.flat[method];
+      el("path", { class: "level", stroke: "#d35400", d: f.path(pts) }, svg);
+      for (const p of pts) el("circle", { class: "level-point", cx: f.x(p), cy: f.y(p), r: 2.5, fill: "#d35400" }, svg);
+    }
+    const marks = el("g", { id: "qr-intersections" }, svg);
+    marks.dataset.points = JSON.stringify(r.inter.intersections.map((x) => x.point));
+    for (const x of r.inter.intersections) {
+      const p = x.point;
+      if (x.kind === "tangent") el("rect", { x: f.x(p) - 6, y: f.y(p) - 6, width: 12, height: 12, fill: "#e67e22" }, marks);
+      else el("circle", { cx: f.x(p), cy: f.y(p), r: 6, fill: "none", stroke: "#c0392b", "stroke-width": 2.5 }, marks);
+    }
+    if (r.closest && this.mouse) {
+      const p = r.closest.point;
+      el("line", { class: "cursor", x1: f.x(this.mouse), y1: f.y(this.mouse), x2: f.x(p), y2: f.y(p) }, svg);
+      el("circle", { class: "on-curve", cx: f.x(p), cy: f.y(p), r: 5 }, svg);
+    }
+    for (const [name, pts] of [["a", this.a], ["b", this.b]]) {
+      pts.forEach((p, i) => {
+        const h = el("circle", { class: "handle", cx: f.x(p), cy: f.y(p), r: 8, "data-curve": name, "data-index": i, "data-point": JSON.stringify(p) }, svg);
+        dragHandle(f, h, i, (index, w) => {
+          pts[index] = w;
+          this.update();
+        });
+      });
+    }
+    document.getElementById("qr-tol-out").textContent = this.tolerance().toExponential(2);
+    for (const m of ["optimal", "subdivision", "uniform"]) document.getElementById("qr-count-" + m).textContent = String(r.flat[m].length - 1);
+    document.getElementById("qr-length").textContent = fmt(r.length.length);
+    document.getElementById("qr-box").textContent = fmtPoint(r.box.min) + " – " + fmtPoint(r.box.max);
+    document.getElementById("qr-intersections-text").textContent = r.inter.intersections.length
+      ? r.inter.intersections.map((x) => x.kind + " at t = (" + x.t.map(fmt).join(", ") + ")").join("; ")
+      : "none";
+    document.getElementById("qr-closest").textContent = r.closest ? "t = " + fmt(r.closest.t) + ", distance " + fmt(r.closest.distance) : "move the pointer over the figure";
+  },
+};
+
+// ---------------------------------------------------------------------------------------
+// Views and navigation (#bezier, #bspline, #interpolation, #subdivision, #queries).
+
+const views = { bezier, bspline, interpolation, subdivision, queries };
+
+function show() {
+  const name = (location.hash || "#bezier").slice(1);
+  const current = views[name] ? name : "bezier";
+  for (const key of Object.keys(views)) document.getElementById("view-" + key).hidden = key !== current;
+  for (const a of document.querySelectorAll("nav a")) a.classList.toggle("active", a.dataset.view === current);
+  views[current].update();
+}
+
+for (const v of Object.values(views)) v.init();
+window.addEventListener("hashchange", show);
+show();
