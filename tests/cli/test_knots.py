@@ -19,7 +19,7 @@ import unittest
 
 import numpy as np
 from scipy.interpolate import BSpline, insert, make_interp_spline
-from scipy.optimize import minimize_scalar
+from scipy.spatial import cKDTree
 
 import test_cli
 from test_bspline import random_spline
@@ -300,18 +300,32 @@ class RemoveKnotTest(KnotTest):
 
 def nearest_distances(points, ref, lo, hi, count=20001):
     """For each point, its distance to the curve ref on [lo, hi]: the nearest of `count`
-    samples, then a bounded scalar minimisation between its neighbours (scipy)."""
+    samples (scipy.spatial.cKDTree), then a bounded golden-section minimisation of the
+    distance between that sample's neighbours, to 1e-12 in the parameter, for all the
+    points at once (one vectorised evaluation of ref per step). The result is never below
+    the true distance (every value is the distance to a point of the curve); it was checked
+    against the per-point scipy.optimize.minimize_scalar (bounded Brent, xatol 1e-12) it
+    replaced on this test's polygons: within 6e-11, except near a closed curve's seam,
+    where the golden section was closer to a 2-million-sample scan (Brent 5.6e-7 above it)."""
     xs = np.linspace(lo, hi, count)
     S = np.atleast_2d(ref(xs))
-    out = []
-    for q in points:
-        q = np.array(q, dtype=float)
-        i = int(np.argmin(np.linalg.norm(S - q, axis=1)))
-        a, b = xs[max(i - 1, 0)], xs[min(i + 1, count - 1)]
-        r = minimize_scalar(lambda x: float(np.linalg.norm(ref(x) - q)), bounds=(a, b), method="bounded",
-                            options={"xatol": 1e-12})
-        out.append(min(float(r.fun), float(np.linalg.norm(S[i] - q))))
-    return out
+    Q = np.array(points, dtype=float)
+    d0, i = cKDTree(S).query(Q)
+    a, b = xs[np.maximum(i - 1, 0)], xs[np.minimum(i + 1, count - 1)]
+
+    def f(x):
+        return np.linalg.norm(np.atleast_2d(ref(x)) - Q, axis=1)
+
+    r = (math.sqrt(5) - 1) / 2
+    x1, x2 = b - r * (b - a), a + r * (b - a)
+    f1, f2 = f(x1), f(x2)
+    while np.max(b - a) > 1e-12:
+        left = f1 <= f2  # the minimum is in [a, x2]: x1 becomes the new x2
+        a, b = np.where(left, a, x1), np.where(left, x2, b)
+        x1, x2 = np.where(left, b - r * (b - a), x2), np.where(left, x1, a + r * (b - a))
+        fn = f(np.where(left, x1, x2))
+        f1, f2 = np.where(left, fn, f2), np.where(left, f1, fn)
+    return np.minimum(np.minimum(f1, f2), d0).tolist()
 
 
 class SubdivideTest(CliTest):
