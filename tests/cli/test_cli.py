@@ -33,6 +33,15 @@ def run(command, request=None, args=(), text=None):
     return p.returncode, p.stdout.decode(), p.stderr.decode()
 
 
+
+def run_jsonl(command, requests):
+    """Runs `casteljau command --jsonl` once on the requests (dicts), one per line, for
+    tests that check many independent responses (one process instead of one per request).
+    Returns (exit status, the parsed response lines, stderr)."""
+    text = "".join(json.dumps(r) + "\n" for r in requests)
+    rc, out, err = run(command, args=["--jsonl"], text=text)
+    return rc, [json.loads(line) for line in out.splitlines()], err
+
 # ---------------------------------------------------------------------------------------
 # Reference geometry, written independently of the library.
 
