@@ -77,9 +77,9 @@ class Piece:
         t = mpmath.mpf(t)
         n = len(self.P) - 1
         w = [mpmath.mpf(1)] * (n + 1) if self.w is None else [mpmath.mpf(x) for x in self.w]
-        B = [mpmath.binomial(n, i) * t ** i * (1 - t) ** (n - i) for i in range(n + 1)]
-        dB = [mpmath.binomial(n, i) * (i * t ** (i - 1) * (1 - t) ** (n - i) if i > 0 else 0)
-              - mpmath.binomial(n, i) * ((n - i) * t ** i * (1 - t) ** (n - i - 1) if i < n else 0) for i in range(n + 1)]
+        B = [math.comb(n, i) * t ** i * (1 - t) ** (n - i) for i in range(n + 1)]
+        dB = [math.comb(n, i) * (i * t ** (i - 1) * (1 - t) ** (n - i) if i > 0 else 0)
+              - math.comb(n, i) * ((n - i) * t ** i * (1 - t) ** (n - i - 1) if i < n else 0) for i in range(n + 1)]
         den = sum(w[i] * B[i] for i in range(n + 1))
         dden = sum(w[i] * dB[i] for i in range(n + 1))
         num = [sum(w[i] * B[i] * mpmath.mpf(self.P[i][k]) for i in range(n + 1)) for k in range(2)]
