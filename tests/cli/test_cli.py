@@ -117,6 +117,16 @@ class CliTest(unittest.TestCase):
         self.assertEqual(out.count("\n"), 1, "one response line")
         return json.loads(out)
 
+    def ok_jsonl(self, command, requests):
+        """The responses to independent requests, through one --jsonl process (run_jsonl):
+        every line answered, none with an error, nothing on stderr."""
+        rc, answers, err = run_jsonl(command, requests)
+        self.assertEqual((rc, err), (0, ""))
+        self.assertEqual(len(answers), len(requests))
+        for a in answers:
+            self.assertNotIn("error", a)
+        return answers
+
     def bad(self, command, request=None, where="", text=None, args=(), contains=None, status=2):
         """Asserts the error contract: status 2, nothing on stdout, one stderr line
         `error: <where>: <what>`."""
