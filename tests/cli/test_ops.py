@@ -135,6 +135,7 @@ class SolveTest(CliTest):
 
     def test_random_polynomials_against_mpmath(self):
         rng = random.Random(7)
+        cases = []  # (trial, b, d, the roots, the request)
         for trial in range(40):
             n = rng.randint(1, 9)
             b = [rng.uniform(-1, 1) for _ in range(n + 1)]
@@ -145,12 +146,14 @@ class SolveTest(CliTest):
                                   for k, x in enumerate(power_from_bernstein([Fraction(bi) for bi in b]))])
             for extra in ({"axis": 0}, {"direction": [2, 0]}):
                 value = d if "axis" in extra else 2 * d
-                got = self.solve(bezier(P), value, **extra)
-                self.assertEqual(got["intervals"], [])
-                # Random data: simple, well separated roots; 1e-9 allows a condition number
-                # of 1e6 on the few eps of the solver.
-                self.assertEqual(len(got["t"]), len(want), f"trial {trial} {b} d={d}: {got} vs {want}")
-                self.assert_close(got["t"], want, 1e-9, f"trial {trial}")
+                cases.append((trial, b, d, want, dict({"curve": bezier(P), "value": value}, **extra)))
+        # The 80 requests through one --jsonl process (only the responses are checked).
+        for (trial, b, d, want, _), got in zip(cases, self.ok_jsonl("solve", [c[-1] for c in cases])):
+            self.assertEqual(got["intervals"], [])
+            # Random data: simple, well separated roots; 1e-9 allows a condition number
+            # of 1e6 on the few eps of the solver.
+            self.assertEqual(len(got["t"]), len(want), f"trial {trial} {b} d={d}: {got} vs {want}")
+            self.assert_close(got["t"], want, 1e-9, f"trial {trial}")
 
     def test_rational_against_mpmath(self):
         rng = random.Random(11)
