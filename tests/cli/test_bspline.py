@@ -66,32 +66,33 @@ def close(a, b, scale):
 class BSplineOracleTest(CliTest):
     def test_points_and_derivatives_match_scipy(self):
         rng = random.Random(20261130)
-        cases = 0
+        cases = []
         for p in range(1, 6):
             for dim in (1, 2, 3):
                 for clamped in (True, False):
                     for repeats in (False, True):
                         U, P = random_spline(rng, p, dim, clamped, repeats)
-                        n = len(P)
-                        ts = parameters(rng, U, p, n)
-                        k = p + 1
-                        r = self.ok("eval", {"curve": {"type": "bspline", "degree": p, "knots": U, "points": P},
-                                             "t": ts, "derivatives": k})
-                        ref = BSpline(np.array(U), np.array(P), p, extrapolate=True)
-                        # Derivatives grow like (p / shortest span)^order: scale the tolerance by it.
-                        spans = [b - a for a, b in zip(U[p:n], U[p + 1:n + 1]) if b > a]
-                        grow = p / min(spans)
-                        for j, t in enumerate(ts):
-                            want = ref(t).tolist()
-                            self.assertTrue(close(r["points"][j], want, 1 + max(map(abs, want))),
-                                            f"p={p} U={U} t={t}: {r['points'][j]} vs {want}")
-                            for order in range(1, k + 1):
-                                want = ref(t, order).tolist()
-                                got = r["derivatives"][order - 1][j]
-                                self.assertTrue(close(got, want, 10 * (1 + max(map(abs, want))) * (1 + grow) ** order),
-                                                f"p={p} order={order} U={U} t={t}: {got} vs {want}")
-                        cases += 1
-        self.assertEqual(cases, 60)
+                        cases.append((p, U, P, parameters(rng, U, p, len(P))))
+        # The 60 evaluations in one --jsonl process (only the responses are checked).
+        answers = self.ok_jsonl("eval", [{"curve": {"type": "bspline", "degree": p, "knots": U, "points": P},
+                                          "t": ts, "derivatives": p + 1} for p, U, P, ts in cases])
+        for (p, U, P, ts), r in zip(cases, answers):
+            n = len(P)
+            k = p + 1
+            ref = BSpline(np.array(U), np.array(P), p, extrapolate=True)
+            # Derivatives grow like (p / shortest span)^order: scale the tolerance by it.
+            spans = [b - a for a, b in zip(U[p:n], U[p + 1:n + 1]) if b > a]
+            grow = p / min(spans)
+            for j, t in enumerate(ts):
+                want = ref(t).tolist()
+                self.assertTrue(close(r["points"][j], want, 1 + max(map(abs, want))),
+                                f"p={p} U={U} t={t}: {r['points'][j]} vs {want}")
+                for order in range(1, k + 1):
+                    want = ref(t, order).tolist()
+                    got = r["derivatives"][order - 1][j]
+                    self.assertTrue(close(got, want, 10 * (1 + max(map(abs, want))) * (1 + grow) ** order),
+                                    f"p={p} order={order} U={U} t={t}: {got} vs {want}")
+        self.assertEqual(len(cases), 60)
 
     def test_nurbs_matches_the_quotient_of_scipy_splines(self):
         rng = random.Random(7)
@@ -253,38 +254,40 @@ class JumpOracleTest(CliTest):
 
     def test_points_and_derivatives_match_scipy(self):
         rng = random.Random(20261202)
-        cases = 0
+        cases = []
         for p in range(0, 6):
             for dim in (1, 2, 3):
                 for clamped in (True, False):
                     U, P = random_jump_spline(rng, p, dim, clamped)
-                    n = len(P)
-                    ts = parameters(rng, U, p, n) + sorted(set(U))  # every knot, also outside the domain
-                    k = p + 1
-                    r = self.ok("eval", {"curve": {"type": "bspline", "degree": p, "knots": U, "points": P},
-                                         "t": ts, "derivatives": k})
-                    ref = BSpline(np.array(U), np.array(P), p, extrapolate=True)
-                    spans = [b - a for a, b in zip(U[p:n], U[p + 1:n + 1]) if b > a]
-                    grow = max(p, 1) / min(spans)
-                    size = 1 + max(abs(c) for q in P for c in q)
-                    for j, t in enumerate(ts):
-                        # de Boor's convex combinations: a few eps of max |P| inside the domain;
-                        # outside (at most 1.1 the domain away, spans >= 0.01 apart) the end
-                        # piece's polynomial amplifies it by (1 + grow)^p at most.
-                        inside = U[p] <= t <= U[n]
-                        scale = size * (1 if inside else (1 + grow) ** p)
-                        want = ref(t).tolist()
-                        self.assertTrue(all(abs(x - y) <= 1e-12 * scale for x, y in zip(r["points"][j], want)),
-                                        f"p={p} U={U} t={t}: {r['points'][j]} vs {want}")
-                        for order in range(1, k + 1):
-                            want = ref(t, order).tolist()
-                            got = r["derivatives"][order - 1][j]
-                            # each order divides by a knot difference: (p / shortest span)^order.
-                            tol = 1e-12 * scale * (1 + grow) ** order
-                            self.assertTrue(all(abs(x - y) <= tol for x, y in zip(got, want)),
-                                            f"p={p} order={order} U={U} t={t}: {got} vs {want}")
-                    cases += 1
-        self.assertEqual(cases, 36)
+                    ts = parameters(rng, U, p, len(P)) + sorted(set(U))  # every knot, also outside the domain
+                    cases.append((p, U, P, ts))
+        # The 36 evaluations in one --jsonl process (only the responses are checked).
+        answers = self.ok_jsonl("eval", [{"curve": {"type": "bspline", "degree": p, "knots": U, "points": P},
+                                          "t": ts, "derivatives": p + 1} for p, U, P, ts in cases])
+        for (p, U, P, ts), r in zip(cases, answers):
+            n = len(P)
+            k = p + 1
+            ref = BSpline(np.array(U), np.array(P), p, extrapolate=True)
+            spans = [b - a for a, b in zip(U[p:n], U[p + 1:n + 1]) if b > a]
+            grow = max(p, 1) / min(spans)
+            size = 1 + max(abs(c) for q in P for c in q)
+            for j, t in enumerate(ts):
+                # de Boor's convex combinations: a few eps of max |P| inside the domain;
+                # outside (at most 1.1 the domain away, spans >= 0.01 apart) the end
+                # piece's polynomial amplifies it by (1 + grow)^p at most.
+                inside = U[p] <= t <= U[n]
+                scale = size * (1 if inside else (1 + grow) ** p)
+                want = ref(t).tolist()
+                self.assertTrue(all(abs(x - y) <= 1e-12 * scale for x, y in zip(r["points"][j], want)),
+                                f"p={p} U={U} t={t}: {r['points'][j]} vs {want}")
+                for order in range(1, k + 1):
+                    want = ref(t, order).tolist()
+                    got = r["derivatives"][order - 1][j]
+                    # each order divides by a knot difference: (p / shortest span)^order.
+                    tol = 1e-12 * scale * (1 + grow) ** order
+                    self.assertTrue(all(abs(x - y) <= tol for x, y in zip(got, want)),
+                                    f"p={p} order={order} U={U} t={t}: {got} vs {want}")
+        self.assertEqual(len(cases), 36)
 
     def test_nurbs_jumps_as_the_quotient_of_scipy_splines(self):
         rng = random.Random(8)

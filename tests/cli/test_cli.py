@@ -33,6 +33,15 @@ def run(command, request=None, args=(), text=None):
     return p.returncode, p.stdout.decode(), p.stderr.decode()
 
 
+
+def run_jsonl(command, requests):
+    """Runs `casteljau command --jsonl` once on the requests (dicts), one per line, for
+    tests that check many independent responses (one process instead of one per request).
+    Returns (exit status, the parsed response lines, stderr)."""
+    text = "".join(json.dumps(r) + "\n" for r in requests)
+    rc, out, err = run(command, args=["--jsonl"], text=text)
+    return rc, [json.loads(line) for line in out.splitlines()], err
+
 # ---------------------------------------------------------------------------------------
 # Reference geometry, written independently of the library.
 
@@ -107,6 +116,16 @@ class CliTest(unittest.TestCase):
         self.assertTrue(out.endswith("\n"))
         self.assertEqual(out.count("\n"), 1, "one response line")
         return json.loads(out)
+
+    def ok_jsonl(self, command, requests):
+        """The responses to independent requests, through one --jsonl process (run_jsonl):
+        every line answered, none with an error, nothing on stderr."""
+        rc, answers, err = run_jsonl(command, requests)
+        self.assertEqual((rc, err), (0, ""))
+        self.assertEqual(len(answers), len(requests))
+        for a in answers:
+            self.assertNotIn("error", a)
+        return answers
 
     def bad(self, command, request=None, where="", text=None, args=(), contains=None, status=2):
         """Asserts the error contract: status 2, nothing on stdout, one stderr line

@@ -24,6 +24,7 @@ import mpmath as mp
 import numpy as np
 from scipy.interpolate import BSpline, CubicSpline, make_smoothing_spline
 from scipy.optimize import minimize_scalar
+from scipy.spatial import cKDTree
 
 import test_cli
 from test_cli import CliTest
@@ -104,21 +105,49 @@ def stacked_gcv(t, Y, lam):
 
 
 def reinsch_mp(t, y, lam, dps=40):
-    """Fitted values of the smoothing spline of one coordinate, Reinsch's system at dps digits."""
+    """Fitted values of the smoothing spline of one coordinate, Reinsch's system at dps
+    digits: (R + lam Q^T Q) gamma = Q^T y, G = y - lam Q gamma. Q (n x (n-2)) has three
+    entries a column and R is tridiagonal, so the matrix is symmetric pentadiagonal and
+    positive definite: it is formed by its diagonals and solved by banded Gaussian
+    elimination without pivoting (stable for SPD), in plain lists of mpf. 40 digits: the
+    system's condition number (2e3 to 2.5e9 for the lambdas of the test, measured at 60
+    digits) leaves over 30 digits, far beyond the double results compared against it."""
     with mp.workdps(dps):
         T = [mp.mpf(v) for v in t]
-        Y = mp.matrix([mp.mpf(v) for v in y])
+        Y = [mp.mpf(v) for v in y]
         n = len(T)
         h = [T[i + 1] - T[i] for i in range(n - 1)]
-        Q, R = mp.zeros(n, n - 2), mp.zeros(n - 2, n - 2)
-        for j in range(1, n - 1):
-            Q[j - 1, j - 1], Q[j, j - 1], Q[j + 1, j - 1] = 1 / h[j - 1], -1 / h[j - 1] - 1 / h[j], 1 / h[j]
-            R[j - 1, j - 1] = (h[j - 1] + h[j]) / 3
-            if j < n - 2:
-                R[j - 1, j] = R[j, j - 1] = h[j] / 6
+        m = n - 2
+        # Column j of Q (interior node j + 1): rows j, j + 1, j + 2.
+        q = [(1 / h[j], -1 / h[j] - 1 / h[j + 1], 1 / h[j + 1]) for j in range(m)]
         L = mp.mpf(lam)
-        gamma = mp.lu_solve(R + L * (Q.T * Q), Q.T * Y)
-        G = Y - L * (Q * gamma)
+        # A[i][k] is the entry (i, i + k - 2) of R + L Q^T Q.
+        A = [[mp.mpf(0)] * 5 for _ in range(m)]
+        for j in range(m):
+            A[j][2] = (h[j] + h[j + 1]) / 3 + L * mp.fsum(c * c for c in q[j])
+            if j + 1 < m:
+                A[j][3] = A[j + 1][1] = h[j + 1] / 6 + L * (q[j][1] * q[j + 1][0] + q[j][2] * q[j + 1][1])
+            if j + 2 < m:
+                A[j][4] = A[j + 2][0] = L * q[j][2] * q[j + 2][0]
+        b = [q[j][0] * Y[j] + q[j][1] * Y[j + 1] + q[j][2] * Y[j + 2] for j in range(m)]
+        for i in range(m):  # elimination below the diagonal
+            for r in (1, 2):
+                if i + r < m:
+                    f = A[i + r][2 - r] / A[i][2]
+                    for k in range(2 - r, 5 - r):
+                        A[i + r][k] -= f * A[i][k + r]
+                    b[i + r] -= f * b[i]
+        gamma = [mp.mpf(0)] * m
+        for i in range(m - 1, -1, -1):  # back substitution
+            s = b[i]
+            for k in (3, 4):
+                if i + k - 2 < m:
+                    s -= A[i][k] * gamma[i + k - 2]
+            gamma[i] = s / A[i][2]
+        G = list(Y)
+        for j in range(m):
+            for r in range(3):
+                G[j + r] -= L * q[j][r] * gamma[j]
         return np.array([float(v) for v in G])
 
 
@@ -296,11 +325,12 @@ class SmoothingFitTest(CliTest):
         # over the middle 90% of the parameter (an open fit of a closed shape has free ends).
         pts, shape = noisy_blob(200, seed=3, noise=0.02)
         truth = shape(np.linspace(0, 2 * np.pi, 20000, endpoint=False))
+        truth_tree = cKDTree(truth)
 
         def off(curve):
             u = np.linspace(0.05, 0.95, 2000)
             C = curve_of(curve)(u)
-            d = np.sqrt(((C[:, None, :] - truth[None, :, :]) ** 2).sum(axis=2)).min(axis=1)
+            d, _ = truth_tree.query(C)  # the nearest vertex (scipy.spatial.cKDTree)
             return np.max(d), np.sqrt(np.mean(d ** 2))
 
         g = self.fit(pts, "gcv")

@@ -96,12 +96,22 @@ class FlattenMethodsTest(CliTest):
     def test_counts_and_default(self):
         rng = random.Random(42)
         totals = dict.fromkeys(METHODS, 0)
+        # The 40 curves' requests (each method, then the default) in one --jsonl process:
+        # only the responses are checked here.
+        requests = []
         for _ in range(40):
             P = [[rng.uniform(0, 100), rng.uniform(0, 100)] for _ in range(4)]
+            requests += [{"curve": bezier(P), "tolerance": 0.1, "method": m} for m in METHODS]
+            requests.append({"curve": bezier(P), "tolerance": 0.1})
+        rc, answers, err = test_cli.run_jsonl("flatten", requests)
+        self.assertEqual((rc, err), (0, ""))
+        self.assertEqual(len(answers), len(requests))
+        k = len(METHODS) + 1
+        for i in range(0, len(answers), k):
+            got = dict(zip(METHODS, (a["points"] for a in answers[i:i + len(METHODS)])))
             for method in METHODS:
-                totals[method] += len(self.flat(bezier(P), 0.1, method)) - 1
-            default = self.ok("flatten", {"curve": bezier(P), "tolerance": 0.1})["points"]
-            self.assertEqual(default, self.flat(bezier(P), 0.1, "optimal"))
+                totals[method] += len(got[method]) - 1
+            self.assertEqual(answers[i + len(METHODS)]["points"], got["optimal"])
         self.assertLess(totals["optimal"], totals["subdivision"])
         self.assertLess(totals["subdivision"], totals["uniform"])
 

@@ -53,9 +53,10 @@ def random_data(rng, n, dim, uneven=True):
 
 
 class ScipyAgreement(CliTest):
-    def agree(self, curve, ts, oracle, what, k=3, rel=REL):
-        """oracle(ts, nu) -> array (len(ts), dim); compares orders 0..k."""
-        got = evaluate(curve, ts, k)
+    def agree(self, curve, ts, oracle, what, k=3, rel=REL, got=None):
+        """oracle(ts, nu) -> array (len(ts), dim); compares orders 0..k (got: the
+        program's evaluation, when already made)."""
+        got = evaluate(curve, ts, k) if got is None else got
         x = np.array(curve.get("params", [0, 1]), dtype=float)
         length = x[-1] - x[0]
         for nu in range(k + 1):
@@ -66,6 +67,7 @@ class ScipyAgreement(CliTest):
 
     def test_cubic_spline_every_boundary(self):
         rng = random.Random(61)
+        pending = []  # (curve, ts, oracle, what)
         for n in (2, 3, 4, 5, 8, 13):
             for dim in (1, 2):
                 for uneven in (True, False):
@@ -82,7 +84,7 @@ class ScipyAgreement(CliTest):
                     for boundary, extra, bc in cases:
                         curve = dict({"type": "cubic_spline", "params": list(x), "points": y.tolist(), "boundary": boundary}, **extra)
                         s = CubicSpline(x, y, bc_type=bc)
-                        self.agree(curve, ts, lambda t, nu: s(t, nu, extrapolate=True), f"n={n} d={dim} {boundary}")
+                        pending.append((curve, ts, lambda t, nu, s=s: s(t, nu, extrapolate=True), f"n={n} d={dim} {boundary}"))
                     # Periodic: the last point repeats the first.
                     yp = y.copy()
                     yp[-1] = yp[0]
@@ -93,8 +95,15 @@ class ScipyAgreement(CliTest):
                     # all columns of a 2-D y into one (its C^2 conditions then fail); per column
                     # it is the exact solution of the cyclic system.
                     cols = [CubicSpline(x, yp[:, j], bc_type="periodic", extrapolate=True) for j in range(dim)]
-                    self.agree(curve, ts, lambda t, nu: np.stack([c(t, nu, extrapolate=True) for c in cols], axis=1),
-                               f"n={n} d={dim} periodic")
+                    pending.append((curve, ts, lambda t, nu, cols=cols: np.stack([c(t, nu, extrapolate=True) for c in cols], axis=1),
+                                    f"n={n} d={dim} periodic"))
+        # The program's evaluations in one --jsonl process (only the responses are checked).
+        rc, answers, err = test_cli.run_jsonl("eval", [{"curve": c, "t": list(ts), "derivatives": 3} for c, ts, _, _ in pending])
+        self.assertEqual((rc, err), (0, ""))
+        self.assertEqual(len(answers), len(pending))
+        for (curve, ts, oracle, what), r in zip(pending, answers):
+            got = [np.array(r["points"])] + [np.array(d) for d in r["derivatives"]]
+            self.agree(curve, ts, oracle, what, got=got)
 
     def test_default_boundary_is_natural(self):
         x, y = [0, 1, 2.5, 3], [0, 1, 0, 2]

@@ -37,7 +37,7 @@ def split_points(P, t):
 def mp_bezier(P, t):
     """Bernstein sum in mpmath (t an mpf)."""
     n = len(P) - 1
-    return [sum(mpmath.binomial(n, i) * t ** i * (1 - t) ** (n - i) * mpmath.mpf(P[i][k]) for i in range(n + 1))
+    return [sum(math.comb(n, i) * t ** i * (1 - t) ** (n - i) * mpmath.mpf(P[i][k]) for i in range(n + 1))
             for k in range(2)]
 
 

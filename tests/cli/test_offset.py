@@ -27,6 +27,7 @@ import unittest
 
 import mpmath
 import numpy as np
+from scipy.spatial import cKDTree
 
 import test_cli
 from test_cli import CliTest
@@ -76,9 +77,9 @@ class Piece:
         t = mpmath.mpf(t)
         n = len(self.P) - 1
         w = [mpmath.mpf(1)] * (n + 1) if self.w is None else [mpmath.mpf(x) for x in self.w]
-        B = [mpmath.binomial(n, i) * t ** i * (1 - t) ** (n - i) for i in range(n + 1)]
-        dB = [mpmath.binomial(n, i) * (i * t ** (i - 1) * (1 - t) ** (n - i) if i > 0 else 0)
-              - mpmath.binomial(n, i) * ((n - i) * t ** i * (1 - t) ** (n - i - 1) if i < n else 0) for i in range(n + 1)]
+        B = [math.comb(n, i) * t ** i * (1 - t) ** (n - i) for i in range(n + 1)]
+        dB = [math.comb(n, i) * (i * t ** (i - 1) * (1 - t) ** (n - i) if i > 0 else 0)
+              - math.comb(n, i) * ((n - i) * t ** i * (1 - t) ** (n - i - 1) if i < n else 0) for i in range(n + 1)]
         den = sum(w[i] * B[i] for i in range(n + 1))
         dden = sum(w[i] * dB[i] for i in range(n + 1))
         num = [sum(w[i] * B[i] * mpmath.mpf(self.P[i][k]) for i in range(n + 1)) for k in range(2)]
@@ -150,27 +151,42 @@ def cubics_of(resp):
 
 
 def nearest_distances(points, cloud):
-    """For each point, the distance to the nearest of cloud and its index (chunked)."""
-    best = np.empty(len(points))
-    idx = np.empty(len(points), dtype=int)
-    for k in range(0, len(points), 256):
-        d2 = ((points[k:k + 256, None, :] - cloud[None, :, :2]) ** 2).sum(-1)
-        idx[k:k + 256] = d2.argmin(1)
-        best[k:k + 256] = np.sqrt(d2.min(1))
+    """For each point, the distance to the nearest of cloud and its index (cKDTree)."""
+    best, idx = cKDTree(cloud[:, :2]).query(points)
     return best, idx
 
 
+def segment_distances(points, a, ab, l2):
+    """The distance from each points[k] to the segment from a[k] along ab[k] (l2 = |ab|^2)."""
+    s = np.clip(((points - a) * ab).sum(-1) / l2, 0, 1)
+    return np.sqrt(((points - (a + s[..., None] * ab)) ** 2).sum(-1))
+
+
 def polyline_distance(points, poly):
-    """Distance from each point to a polyline (array (m, 2)), exact for the polyline."""
-    a, b = poly[:-1], poly[1:]
-    ab = b - a
+    """Distance from each point to a polyline (array (m, d)), exact for the polyline: the
+    minimum over its segments of the exact segment distance. Only the segments that can be
+    nearest are measured: with c the segment's midpoint and r its half length, its distance
+    is at least |p - c| - r, so none beyond the nearest midpoint's segment distance plus the
+    largest r can be (scipy.spatial.cKDTree over the midpoints finds those). The same
+    minimum as measuring every segment (checked on this file's and test_outlines.py's
+    inputs: identical), at a fraction of the cost."""
+    points = np.asarray(points, dtype=float)
+    a = poly[:-1]
+    ab = poly[1:] - a
     l2 = np.maximum((ab ** 2).sum(1), 1e-300)
-    out = np.empty(len(points))
-    for k in range(0, len(points), 128):
-        p = points[k:k + 128, None, :]
-        s = np.clip(((p - a[None]) * ab[None]).sum(-1) / l2[None], 0, 1)
-        proj = a[None] + s[..., None] * ab[None]
-        out[k:k + 128] = np.sqrt(((p - proj) ** 2).sum(-1)).min(1)
+    mid = a + ab / 2
+    rmax = np.sqrt(l2.max()) / 2
+    tree = cKDTree(mid)
+    _, j = tree.query(points)
+    upper = segment_distances(points, a[j], ab[j], l2[j])
+    # Slack above the bound for the rounding of the distances (relative 1e-9 of the scale).
+    scale = np.abs(points).max() + np.abs(poly).max()
+    near = tree.query_ball_point(points, upper + rmax + 1e-9 * scale)
+    counts = np.fromiter((len(c) for c in near), dtype=int, count=len(points))
+    rows = np.repeat(np.arange(len(points)), counts)
+    cols = np.fromiter((i for c in near for i in c), dtype=int, count=int(counts.sum()))
+    out = upper.copy()
+    np.minimum.at(out, rows, segment_distances(points[rows], a[cols], ab[cols], l2[cols]))
     return out
 
 

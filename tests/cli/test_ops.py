@@ -135,6 +135,7 @@ class SolveTest(CliTest):
 
     def test_random_polynomials_against_mpmath(self):
         rng = random.Random(7)
+        cases = []  # (trial, b, d, the roots, the request)
         for trial in range(40):
             n = rng.randint(1, 9)
             b = [rng.uniform(-1, 1) for _ in range(n + 1)]
@@ -145,12 +146,14 @@ class SolveTest(CliTest):
                                   for k, x in enumerate(power_from_bernstein([Fraction(bi) for bi in b]))])
             for extra in ({"axis": 0}, {"direction": [2, 0]}):
                 value = d if "axis" in extra else 2 * d
-                got = self.solve(bezier(P), value, **extra)
-                self.assertEqual(got["intervals"], [])
-                # Random data: simple, well separated roots; 1e-9 allows a condition number
-                # of 1e6 on the few eps of the solver.
-                self.assertEqual(len(got["t"]), len(want), f"trial {trial} {b} d={d}: {got} vs {want}")
-                self.assert_close(got["t"], want, 1e-9, f"trial {trial}")
+                cases.append((trial, b, d, want, dict({"curve": bezier(P), "value": value}, **extra)))
+        # The 80 requests through one --jsonl process (only the responses are checked).
+        for (trial, b, d, want, _), got in zip(cases, self.ok_jsonl("solve", [c[-1] for c in cases])):
+            self.assertEqual(got["intervals"], [])
+            # Random data: simple, well separated roots; 1e-9 allows a condition number
+            # of 1e6 on the few eps of the solver.
+            self.assertEqual(len(got["t"]), len(want), f"trial {trial} {b} d={d}: {got} vs {want}")
+            self.assert_close(got["t"], want, 1e-9, f"trial {trial}")
 
     def test_rational_against_mpmath(self):
         rng = random.Random(11)
@@ -473,11 +476,15 @@ class ReduceTest(CliTest):
         return self.ok("reduce", dict({"curve": curve, "tolerance": tolerance}, **extra))
 
     @staticmethod
-    def measured(f, g, lo, hi, breaks=None):
-        """max |f - g| by 20001 samples and a bounded scalar search around the best."""
+    def measured(f, g, lo, hi, breaks=None, vectorised=False):
+        """max |f - g| by 20001 samples and a bounded scalar search around the best
+        (vectorised: f and g take the array of samples at once)."""
         from scipy.optimize import minimize_scalar
         ts = np.linspace(lo, hi, 20001)
-        d = [float(np.linalg.norm(np.atleast_1d(f(t)) - np.atleast_1d(g(t)))) for t in ts]
+        if vectorised:
+            d = np.linalg.norm((np.asarray(f(ts)) - np.asarray(g(ts))).reshape(len(ts), -1), axis=1)
+        else:
+            d = [float(np.linalg.norm(np.atleast_1d(f(t)) - np.atleast_1d(g(t)))) for t in ts]
         j = int(np.argmax(d))
         a, b = ts[max(0, j - 1)], ts[min(len(ts) - 1, j + 1)]
         r = minimize_scalar(lambda t: -float(np.linalg.norm(np.atleast_1d(f(t)) - np.atleast_1d(g(t)))),
@@ -535,7 +542,7 @@ class ReduceTest(CliTest):
             self.assertEqual((c["type"], c["degree"]), ("bspline", p - 1))
             lo, hi = U[p], U[len(P)]
             self.assertEqual((c["knots"][0], c["knots"][-1]), (lo, hi))
-            err = self.measured(BSpline(np.array(U, float), np.array(P, float), p), curve_oracle(c), lo, hi)
+            err = self.measured(BSpline(np.array(U, float), np.array(P, float), p), curve_oracle(c), lo, hi, vectorised=True)
             # Our measurement: 20001 samples and a local search; the program's: 1e-9
             # relative. The pieces are smooth, so both find the same maximum.
             self.assertLessEqual(abs(got["max_error"] - err), 1e-8 * max(err, 1e-300), f"trial {trial}")

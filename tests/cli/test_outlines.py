@@ -25,6 +25,7 @@ from scipy.optimize import brentq
 
 import test_cli
 from test_cli import CliTest, bezier, de_casteljau, rational_point
+from test_offset import polyline_distance
 
 DEJAVU = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf"
 NIMBUS_OTF = "/usr/share/fonts/opentype/urw-base35/NimbusSans-Regular.otf"
@@ -142,16 +143,9 @@ def sample_segments(segs, n=400):
 
 
 def point_to_polyline(points, poly):
-    """Distance of each point to the polyline (numpy, exact segment distance)."""
-    a, b = poly[:-1], poly[1:]
-    ab = b - a
-    l2 = np.maximum((ab * ab).sum(axis=1), 1e-300)
-    out = np.empty(len(points))
-    for k, p in enumerate(points):
-        t = np.clip(((p - a) * ab).sum(axis=1) / l2, 0, 1)
-        q = a + t[:, None] * ab
-        out[k] = np.sqrt(((q - p) ** 2).sum(axis=1)).min()
-    return out
+    """Distance of each point to the polyline (numpy, exact segment distance; the segments
+    that can be nearest found by a cKDTree: test_offset.polyline_distance)."""
+    return polyline_distance(points, poly)
 
 
 def curve_samples(piece_points, weights=None, n=4000):

@@ -506,33 +506,53 @@ def hugging_quadratic(w, nurbs=False):
 
 class ExtremeWeightsTest(CliTest):
     """Weights 1, W, 1 with W up to 1e30: the curve hugs its control polygon and passes each
-    leg within about 1 / W of a parameter end. The references integrate and minimise in
-    45-digit mpmath (t within 1e-30 of 1 needs 31) with breakpoints spaced geometrically from 1e-3 / W to 1/2 at both ends
-    (so that the quadrature sees the legs; mpmath resolves t within 1e-30 of 1)."""
+    leg within about 1 / W of a parameter end. The curve is its own mirror image in the line
+    x = y with t -> 1 - t (w_0 = w_2, P_2 the mirror of P_0, P_1 on the line), so its speed
+    is symmetric: the arc length over [0, 1/2] is integrated (mpmath.quad, breakpoints
+    spaced geometrically from 1e-3 / W to 1/2 so that the quadrature sees the leg) and the
+    length from t > 1/2 to 1 is the one from 0 to 1 - t (exact in double). Every parameter
+    integrated over is then within [0, 1/2], where 20 digits resolve t ~ 1e-33 relatively:
+    20 digits for the lengths (the checks are at 1e-12; the 45-digit integration of both
+    halves it replaces agreed to 1e-21). The nearest point is minimised in 45 digits over
+    the whole parameter (t within 1e-30 of 1 needs 31)."""
 
     @staticmethod
     def breakpoints(w):
+        """0, then geometric from 1e-3 / w up to 1/2, then their mirror images up to 1."""
+        out = ExtremeWeightsTest.half_breakpoints(w)[:-1]
+        mid = out[1:]
+        return out + [mpf("0.5")] + [1 - x for x in reversed(mid)] + [mpf(1)]
+
+    @staticmethod
+    def half_breakpoints(w):
         out, k = [mpf(0)], mpf(1) / mpf(w) * mpf("1e-3")
         while k < mpf("0.5"):
             out.append(k)
             k *= 4
-        mid = out[1:]
-        return out + [mpf("0.5")] + [1 - x for x in reversed(mid)] + [mpf(1)]
+        return out + [mpf("0.5")]
 
     def test_length_project_param_at_length(self):
-        with mpmath.workdps(45):
-            for w in (1e8, 1e30):
+        for w in (1e8, 1e30):
+            with mpmath.workdps(20):
                 g = BezierPiece([[mpf(1), mpf(0)], [mpf(1), mpf(1)], [mpf(0), mpf(1)]], [mpf(1), mpf(w), mpf(1)])
                 speed = lambda u: norm(g.df(u))
-                pts = self.breakpoints(w)
+                half = self.half_breakpoints(w)
                 # The integral over each interval between breakpoints, once: the length up to
-                # a parameter below is the sum of the whole intervals before it plus one part.
-                pieces = [mpmath.quad(speed, [a, b]) for a, b in zip(pts, pts[1:])]
-                total = mpmath.fsum(pieces)
+                # a parameter s <= 1/2 is the sum of the whole intervals before it plus one part.
+                pieces = [mpmath.quad(speed, [a, b]) for a, b in zip(half, half[1:])]
+                total = 2 * mpmath.fsum(pieces)
+
+                def length_to(s):
+                    k = sum(1 for x in half[1:] if x < s)  # whole intervals before s
+                    return mpmath.fsum(pieces[:k]) + mpmath.quad(speed, [half[k], s])
+
+            with mpmath.workdps(45):
+                g45 = BezierPiece([[mpf(1), mpf(0)], [mpf(1), mpf(1)], [mpf(0), mpf(1)]], [mpf(1), mpf(w), mpf(1)])
+                pts = self.breakpoints(w)
                 # The nearest point to (1, 3/2): golden-section search on a grid over the
                 # breakpoints (the distance is unimodal: a convex curve seen from outside).
                 q = [mpf(1), mpf("1.5")]
-                dist = lambda u: norm([x - y for x, y in zip(g.f(u), q)])
+                dist = lambda u: norm([x - y for x, y in zip(g45.f(u), q)])
                 grid = [a + (b - a) * i / 8 for a, b in zip(pts, pts[1:]) for i in range(8)] + [mpf(1)]
                 i = min(range(len(grid)), key=lambda i: dist(grid[i]))
                 lo, hi = grid[max(i - 1, 0)], grid[min(i + 1, len(grid) - 1)]
@@ -559,9 +579,11 @@ class ExtremeWeightsTest(CliTest):
                     ts = self.ok("param_at_length", {"curve": c, "lengths": ss})["t"]
                     for s, t in zip(ss, ts):
                         if t not in arc_to:  # the rational_bezier and nurbs forms mostly agree on t
-                            k = sum(1 for x in pts[1:] if x < t)  # whole intervals before t
-                            arc_to[t] = mpmath.fsum(pieces[:k]) + mpmath.quad(speed, [pts[k], mpf(t)])
-                        slack = 1e-12 * float(total) + float(speed(mpf(t))) * math.ulp(t)
+                            with mpmath.workdps(20):
+                                # 1 - t is exact in double for t in [1/2, 1] (Sterbenz).
+                                arc_to[t] = length_to(mpf(t)) if t <= 0.5 else total - length_to(mpf(1 - t))
+                        with mpmath.workdps(20):
+                            slack = 1e-12 * float(total) + float(speed(mpf(min(t, 1 - t)))) * math.ulp(t)
                         self.assertLessEqual(abs(arc_to[t] - s), slack, (w, nurbs, s, t))
 
 
