@@ -14,6 +14,8 @@ build_pkgs=(
   python3-scipy python3-mpmath python3-fonttools
   libocct-modeling-data-dev libocct-foundation-dev
   libfreetype-dev fonts-dejavu-core fonts-urw-base35
+  # HarfBuzz: the glyph command's GPOS pair kerning (issue 17)
+  libharfbuzz-dev
 )
 fuzz_pkgs=()
 bench_pkgs=(lib2geom-dev libocct-modeling-data-dev libocct-foundation-dev libocct-modeling-algorithms-dev libboost-dev libdouble-conversion-dev libgsl-dev libsisl-dev
