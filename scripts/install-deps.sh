@@ -16,6 +16,8 @@ build_pkgs=(
   libfreetype-dev fonts-dejavu-core fonts-urw-base35
   python3-dev python3-pybind11 pybind11-dev python3-numpy python3-pytest python3-dask  # the Python package (python/, docs/python.md)
   libcpp-httplib-dev chromium chromium-driver python3-selenium  # casteljau serve (cpp-httplib) and its browser test (headless chromium)
+  # HarfBuzz: the glyph command's GPOS pair kerning (issue 17)
+  libharfbuzz-dev
 )
 fuzz_pkgs=()
 bench_pkgs=(lib2geom-dev libocct-modeling-data-dev libocct-foundation-dev libocct-modeling-algorithms-dev libboost-dev libdouble-conversion-dev libgsl-dev libsisl-dev

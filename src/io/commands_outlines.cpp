@@ -102,12 +102,13 @@ constexpr Command outline_family[] = {
      "character's unhinted outline: one closed path per contour, of quadratic pieces for\n"
      "TrueType and cubic ones for CFF and Type 1 (straight edges elevated), in design\n"
      "coordinates (y up) times size / unitsPerEm, at its pen position on the baseline. The pen\n"
-     "moves by each advance plus the pair kerning FreeType reads (the `kern` table, or a Type 1\n"
-     "font's AFM file beside it; GPOS kerning is not read). A character the font lacks is an\n"
-     "error (no .notdef box). The font file is only read.",
+     "moves by each advance plus the pair kerning: the GPOS `kern` feature (HarfBuzz, nothing\n"
+     "else of shaping: one glyph per character), else the `kern` table, else a Type 1 font's\n"
+     "AFM file beside it. A character the font lacks is an error (no .notdef box). The font\n"
+     "file is only read.",
      "glyphs: [{char, origin, advance, curve (a path of closed contour paths; null for a\n"
      "          blank)}]; units_per_em, format (FreeType's name: TrueType, CFF, Type 1),\n"
-     "          kerning (whether pair kerning was read)",
+     "          kerning (whether the font has pair kerning that is read)",
      R"(  echo '{"font": "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf", "text": " "}' | casteljau glyph
   {"glyphs":[{"char":" ","origin":[0.0,0.0],"advance":651.0,"curve":null}],"units_per_em":2048,"format":"TrueType","kerning":true})",
      glyph_fields, glyph, "font", ""},

@@ -1,16 +1,24 @@
 // Font glyphs as curves (io/glyph.hpp): FreeType opens the font, maps characters to
-// glyphs, gives the unscaled outlines (FT_Outline_Decompose) and the pair kerning.
+// glyphs and gives the unscaled outlines (FT_Outline_Decompose); the pair kerning comes
+// from GPOS's `kern` feature through HarfBuzz, else from FreeType (the `kern` table, a
+// Type 1 font's AFM file).
 #include "casteljau/io/glyph.hpp"
 
 #include <ft2build.h>
 #include FT_FREETYPE_H
 #include FT_OUTLINE_H
 #include FT_FONT_FORMATS_H
+#include <hb-ot.h>
+#include <hb.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <iterator>
 #include <memory>
+#include <optional>
 #include <string>
 #include <system_error>
+#include <utility>
 #include <vector>
 
 namespace casteljau::io {
@@ -163,6 +171,195 @@ FT_Face open_face(FT_Library lib, const std::string& path) {
   return face;
 }
 
+
+// ---------------------------------------------------------------------------------------
+// GPOS pair kerning through HarfBuzz.
+//
+// HarfBuzz shapes, and shaping may change the glyph sequence (ligatures, contextual forms,
+// Unicode composition and decomposition, mark reordering, hidden default-ignorables,
+// inserted dotted circles). The response is one glyph per character, so HarfBuzz is given
+// a view of the font and of Unicode in which none of that can happen, and only positions:
+// - the face hides GSUB and AAT morx/mort (no substitution at all) and every kerning
+//   source other than GPOS (the `kern`, `kerx` and `trak` tables: FreeType reads `kern`
+//   when the font has no GPOS kern feature);
+// - the font maps each character to FreeType's glyph for it, and no variation sequence to
+//   a variant glyph;
+// - the Unicode functions neither compose, decompose nor reorder marks;
+// - the buffer keeps default-ignorables and inserts no dotted circle; each glyph keeps its
+//   character's index as its cluster (cluster level "characters": no merging).
+// Each script run is shaped twice, with only the `kern` feature and with nothing (every
+// other positioning feature off in both: mark, mkmk, curs, dist, abvm, blwm): the
+// differences of the x advances and x offsets are the kern feature's adjustments, whatever
+// else HarfBuzz does the same in both (mark widths zeroed by GDEF class, a script's
+// required feature). Positions are in font units (the font's scale is unitsPerEm), so
+// GPOS's integer values come through exactly.
+
+template <class T, void (*destroy)(T*)>
+struct HbDestroy {
+  void operator()(T* p) const { destroy(p); }
+};
+template <class T, void (*destroy)(T*)>
+using HbPtr = std::unique_ptr<T, HbDestroy<T, destroy>>;
+
+/// The kern feature's adjustment of one glyph, in font units: `after` is added to the pen
+/// after its advance, `shift` moves the glyph alone along the baseline.
+struct PairAdjustment {
+  double after = 0;
+  double shift = 0;
+};
+
+constexpr hb_tag_t kern_tag = HB_TAG('k', 'e', 'r', 'n');
+
+bool font_has_gpos_kern(hb_face_t* face) {
+  unsigned count = hb_ot_layout_table_get_feature_tags(face, HB_OT_TAG_GPOS, 0, nullptr, nullptr);
+  std::vector<hb_tag_t> tags(count);
+  hb_ot_layout_table_get_feature_tags(face, HB_OT_TAG_GPOS, 0, &count, tags.data());
+  tags.resize(count);
+  return std::find(tags.begin(), tags.end(), kern_tag) != tags.end();
+}
+
+hb_blob_t* visible_table(hb_face_t*, hb_tag_t tag, void* font_face) {
+  constexpr hb_tag_t hidden[] = {HB_OT_TAG_GSUB,         HB_TAG('m', 'o', 'r', 'x'), HB_TAG('m', 'o', 'r', 't'),
+                                 HB_TAG('k', 'e', 'r', 'n'), HB_TAG('k', 'e', 'r', 'x'), HB_TAG('t', 'r', 'a', 'k')};
+  if (std::find(std::begin(hidden), std::end(hidden), tag) != std::end(hidden)) return hb_blob_get_empty();
+  return hb_face_reference_table(static_cast<hb_face_t*>(font_face), tag);
+}
+
+/// FreeType's glyph of each character of the text, sorted by character (the font data of
+/// the HarfBuzz font's nominal-glyph function).
+using GlyphMap = std::vector<std::pair<hb_codepoint_t, hb_codepoint_t>>;
+
+hb_bool_t nominal_glyph(hb_font_t*, void* font_data, hb_codepoint_t unicode, hb_codepoint_t* glyph, void*) {
+  const auto& map = *static_cast<const GlyphMap*>(font_data);
+  const auto it = std::lower_bound(map.begin(), map.end(), std::pair<hb_codepoint_t, hb_codepoint_t>(unicode, 0));
+  if (it == map.end() || it->first != unicode) return false;
+  *glyph = it->second;
+  return true;
+}
+hb_bool_t no_variation_glyph(hb_font_t*, void*, hb_codepoint_t, hb_codepoint_t, hb_codepoint_t*, void*) { return false; }
+hb_bool_t no_compose(hb_unicode_funcs_t*, hb_codepoint_t, hb_codepoint_t, hb_codepoint_t*, void*) { return false; }
+hb_bool_t no_decompose(hb_unicode_funcs_t*, hb_codepoint_t, hb_codepoint_t*, hb_codepoint_t*, void*) { return false; }
+hb_unicode_combining_class_t not_reordered(hb_unicode_funcs_t*, hb_codepoint_t, void*) {
+  return HB_UNICODE_COMBINING_CLASS_NOT_REORDERED;
+}
+
+/// A run of characters [begin, end) of one script; characters of no script of their own
+/// (common, inherited, unknown: spaces, digits, punctuation, combining marks) join the run
+/// they are in, HB_SCRIPT_INVALID when it has no script (HarfBuzz's default script then).
+struct ScriptRun {
+  std::size_t begin = 0, end = 0;
+  hb_script_t script = HB_SCRIPT_INVALID;
+};
+
+std::vector<ScriptRun> script_runs(const std::vector<hb_codepoint_t>& text, hb_unicode_funcs_t* unicode) {
+  std::vector<ScriptRun> runs;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const hb_script_t s = hb_unicode_script(unicode, text[i]);
+    const bool own = s != HB_SCRIPT_COMMON && s != HB_SCRIPT_INHERITED && s != HB_SCRIPT_UNKNOWN;
+    if (!runs.empty() && (!own || s == runs.back().script || runs.back().script == HB_SCRIPT_INVALID)) {
+      runs.back().end = i + 1;
+      if (own) runs.back().script = s;
+      continue;
+    }
+    runs.push_back({i, i + 1, own ? s : HB_SCRIPT_INVALID});
+  }
+  return runs;
+}
+
+/// HarfBuzz's x advance and x offset of each glyph of the run (font units, by character
+/// index), with the kern feature on or off; false when HarfBuzz did not answer one glyph
+/// per character with FreeType's glyphs (a script shaper that rewrites the text itself:
+/// Thai's SARA AM, Hangul jamo).
+bool shape_run(hb_font_t* font, hb_unicode_funcs_t* unicode, const std::vector<hb_codepoint_t>& text,
+               const std::vector<FT_UInt>& glyphs, const ScriptRun& run, bool kern,
+               std::vector<hb_position_t>& advance, std::vector<hb_position_t>& offset) {
+  const HbPtr<hb_buffer_t, hb_buffer_destroy> buffer(hb_buffer_create());
+  hb_buffer_set_unicode_funcs(buffer.get(), unicode);
+  hb_buffer_set_flags(buffer.get(), static_cast<hb_buffer_flags_t>(HB_BUFFER_FLAG_PRESERVE_DEFAULT_IGNORABLES |
+                                                                   HB_BUFFER_FLAG_DO_NOT_INSERT_DOTTED_CIRCLE));
+  hb_buffer_set_cluster_level(buffer.get(), HB_BUFFER_CLUSTER_LEVEL_CHARACTERS);
+  hb_buffer_set_direction(buffer.get(), HB_DIRECTION_LTR);
+  hb_buffer_set_script(buffer.get(), run.script);
+  // The whole text is the context (clusters are indices into it); the language is left
+  // unset, so the script's default language system applies whatever the process locale.
+  hb_buffer_add_codepoints(buffer.get(), text.data(), static_cast<int>(text.size()), static_cast<unsigned>(run.begin),
+                           static_cast<int>(run.end - run.begin));
+  const auto feature = [](hb_tag_t tag, bool on) {
+    return hb_feature_t{tag, on ? 1u : 0u, HB_FEATURE_GLOBAL_START, HB_FEATURE_GLOBAL_END};
+  };
+  const hb_feature_t features[] = {feature(kern_tag, kern),
+                                   feature(HB_TAG('m', 'a', 'r', 'k'), false),
+                                   feature(HB_TAG('m', 'k', 'm', 'k'), false),
+                                   feature(HB_TAG('c', 'u', 'r', 's'), false),
+                                   feature(HB_TAG('d', 'i', 's', 't'), false),
+                                   feature(HB_TAG('a', 'b', 'v', 'm'), false),
+                                   feature(HB_TAG('b', 'l', 'w', 'm'), false)};
+  hb_shape(font, buffer.get(), features, static_cast<unsigned>(std::size(features)));
+  unsigned count = 0;
+  const hb_glyph_info_t* info = hb_buffer_get_glyph_infos(buffer.get(), &count);
+  const hb_glyph_position_t* pos = hb_buffer_get_glyph_positions(buffer.get(), nullptr);
+  if (count != run.end - run.begin) return false;
+  std::vector<bool> seen(count, false);
+  for (unsigned k = 0; k < count; ++k) {
+    const std::size_t i = info[k].cluster;
+    if (i < run.begin || i >= run.end || seen[i - run.begin] || info[k].codepoint != glyphs[i]) return false;
+    seen[i - run.begin] = true;
+    advance[i] = pos[k].x_advance;
+    offset[i] = pos[k].x_offset;
+  }
+  return true;
+}
+
+/// The GPOS `kern` feature's adjustment of each glyph of the text (`glyphs`: FreeType's
+/// glyph of each character), in font units; nullopt when the font (face 0 of the file)
+/// has no GPOS kern feature or HarfBuzz cannot read the file.
+std::optional<std::vector<PairAdjustment>> gpos_kerning(const std::string& font_path,
+                                                        const std::vector<hb_codepoint_t>& text,
+                                                        const std::vector<FT_UInt>& glyphs) {
+  const HbPtr<hb_blob_t, hb_blob_destroy> blob(hb_blob_create_from_file_or_fail(font_path.c_str()));
+  if (!blob) return std::nullopt;
+  hb_face_t* const whole = hb_face_create(blob.get(), 0);
+  if (!font_has_gpos_kern(whole)) {
+    hb_face_destroy(whole);
+    return std::nullopt;
+  }
+  // The visible face owns `whole` from here (destroyed with it).
+  const HbPtr<hb_face_t, hb_face_destroy> face(hb_face_create_for_tables(
+      visible_table, whole, [](void* f) { hb_face_destroy(static_cast<hb_face_t*>(f)); }));
+  GlyphMap map;
+  for (std::size_t i = 0; i < text.size(); ++i) map.emplace_back(text[i], glyphs[i]);
+  std::sort(map.begin(), map.end());
+  map.erase(std::unique(map.begin(), map.end()), map.end());
+
+  const HbPtr<hb_font_t, hb_font_destroy> parent(hb_font_create(face.get()));  // OpenType metrics, scale unitsPerEm
+  const HbPtr<hb_font_t, hb_font_destroy> font(hb_font_create_sub_font(parent.get()));
+  const HbPtr<hb_font_funcs_t, hb_font_funcs_destroy> font_funcs(hb_font_funcs_create());
+  hb_font_funcs_set_nominal_glyph_func(font_funcs.get(), nominal_glyph, nullptr, nullptr);
+  hb_font_funcs_set_variation_glyph_func(font_funcs.get(), no_variation_glyph, nullptr, nullptr);
+  hb_font_funcs_make_immutable(font_funcs.get());
+  hb_font_set_funcs(font.get(), font_funcs.get(), &map, nullptr);
+
+  const HbPtr<hb_unicode_funcs_t, hb_unicode_funcs_destroy> unicode(hb_unicode_funcs_create(hb_unicode_funcs_get_default()));
+  hb_unicode_funcs_set_compose_func(unicode.get(), no_compose, nullptr, nullptr);
+  hb_unicode_funcs_set_decompose_func(unicode.get(), no_decompose, nullptr, nullptr);
+  hb_unicode_funcs_set_combining_class_func(unicode.get(), not_reordered, nullptr, nullptr);
+  hb_unicode_funcs_make_immutable(unicode.get());
+
+  std::vector<PairAdjustment> adjust(text.size());
+  std::vector<hb_position_t> advance_on(text.size()), offset_on(text.size()), advance_off(text.size()), offset_off(text.size());
+  for (const ScriptRun& run : script_runs(text, unicode.get())) {
+    if (!shape_run(font.get(), unicode.get(), text, glyphs, run, true, advance_on, offset_on) ||
+        !shape_run(font.get(), unicode.get(), text, glyphs, run, false, advance_off, offset_off)) {
+      continue;  // this run is laid out without kerning
+    }
+    for (std::size_t i = run.begin; i < run.end; ++i) {
+      adjust[i].after = advance_on[i] - advance_off[i];
+      adjust[i].shift = offset_on[i] - offset_off[i];
+    }
+  }
+  return adjust;
+}
+
 }  // namespace
 
 GlyphRun glyph_outlines(const std::string& font_path, const std::string& text, std::optional<double> size) {
@@ -192,7 +389,6 @@ GlyphRun glyph_outlines(const std::string& font_path, const std::string& text, s
     std::error_code ec;
     if (std::filesystem::is_regular_file(afm, ec)) FT_Attach_File(face.get(), afm.c_str());
   }
-  run.kerning = FT_HAS_KERNING(face.get());
   // One pixel per font unit: FreeType's scale is then exactly 64 (26.6 fixed point per
   // unit), so outlines come in font units with 1/64 resolution. Not FT_LOAD_NO_SCALE:
   // unscaled, FT_Outline_Decompose computes TrueType's implied on-curve points (the
@@ -210,24 +406,45 @@ GlyphRun glyph_outlines(const std::string& font_path, const std::string& text, s
   funcs.conic_to = conic_to;
   funcs.cubic_to = cubic_to;
 
+  std::vector<hb_codepoint_t> code_points;
+  std::vector<FT_UInt> indices;
+  for (std::size_t i = 0; i < chars.size(); ++i) {
+    const char32_t cp = chars[i].first;
+    const FT_UInt index = FT_Get_Char_Index(face.get(), cp);
+    if (index == 0) throw InvalidArgument("text[" + std::to_string(i) + "]", "character " + code_point_name(cp) + " is not in the font");
+    code_points.push_back(cp);
+    indices.push_back(index);
+  }
+  // Pair kerning: GPOS's kern feature when the font has one; else what FreeType reads (the
+  // `kern` table, or the AFM file attached above), in font units after each glyph.
+  std::optional<std::vector<PairAdjustment>> adjust;
+  if (FT_IS_SFNT(face.get())) adjust = gpos_kerning(font_path, code_points, indices);
+  run.kerning = adjust.has_value() || FT_HAS_KERNING(face.get());
+  if (!adjust) {
+    adjust.emplace(chars.size());
+    if (FT_HAS_KERNING(face.get())) {
+      for (std::size_t i = 0; i + 1 < chars.size(); ++i) {
+        FT_Vector k{};
+        if (FT_Get_Kerning(face.get(), indices[i], indices[i + 1], FT_KERNING_UNSCALED, &k) == 0) (*adjust)[i].after = static_cast<double>(k.x);
+      }
+    }
+  }
+
   double pen = 0;
-  FT_UInt previous = 0;
   for (std::size_t i = 0; i < chars.size(); ++i) {
     const auto& [cp, bytes] = chars[i];
-    const FT_UInt index = FT_Get_Char_Index(face.get(), cp);
+    const FT_UInt index = indices[i];
     const std::string where = "text[" + std::to_string(i) + "]";
-    if (index == 0) throw InvalidArgument(where, "character " + code_point_name(cp) + " is not in the font");
-    if (previous != 0 && run.kerning) {
-      FT_Vector k{};
-      if (FT_Get_Kerning(face.get(), previous, index, FT_KERNING_UNSCALED, &k) == 0) pen += scale * static_cast<double>(k.x);
-    }
+    if (i > 0) pen += scale * (*adjust)[i - 1].after;
+    // A glyph the kern feature moves (a second glyph's x placement) moves alone.
+    const double x = (*adjust)[i].shift != 0 ? pen + scale * (*adjust)[i].shift : pen;
     if (FT_Load_Glyph(face.get(), index, FT_LOAD_NO_HINTING | FT_LOAD_NO_BITMAP) != 0 ||
         face->glyph->format != FT_GLYPH_FORMAT_OUTLINE) {
       throw InvalidArgument(where, "the font's glyph for character " + code_point_name(cp) + " could not be read as an outline");
     }
     Reader r;
     r.scale = scale;
-    r.origin = P2(pen, 0);
+    r.origin = P2(x, 0);
     r.degree = degree;
     if (FT_Outline_Decompose(&face->glyph->outline, &funcs, &r) != 0) {
       throw InvalidArgument(where, "the font's outline for character " + code_point_name(cp) + " is malformed");
@@ -235,12 +452,11 @@ GlyphRun glyph_outlines(const std::string& font_path, const std::string& text, s
     close_contours(r);
     GlyphOutline g;
     g.character = bytes;
-    g.origin = P2(pen, 0);
+    g.origin = P2(x, 0);
     // The unrounded advance: 16.16 fixed point in pixels, here font units.
     g.advance = scale * (static_cast<double>(face->glyph->linearHoriAdvance) / 65536);
     g.contours = std::move(r.contours);
     pen += g.advance;
-    previous = index;
     run.glyphs.push_back(std::move(g));
   }
   return run;

@@ -6,9 +6,11 @@ Oracles written here, never the program: a small SVG path-data reader (absolute 
 C, A, Z; arcs converted to centre form as SVG 1.1 F.6.5 says, radii scaled up as F.6.6),
 de Casteljau and rational evaluation, dense two-way distance comparison (numpy), and a
 TrueType reader (struct: the `head`, `hhea`, `hmtx`, `cmap` format 4, `loca`, `glyf` and
-`kern` tables, with TrueType's implied on-curve points) and an AFM reader for Type 1 fonts.
-The fonts come from Debian packages the project's scripts install (fonts-dejavu-core,
-fonts-urw-base35); a test whose font is missing fails (it is part of the build set).
+`kern` tables, with TrueType's implied on-curve points), an AFM reader for Type 1 fonts,
+and a GPOS pair-kerning reader (fontTools parses the tables; the lookup rules are written
+here). The fonts come from Debian packages the project's scripts install
+(fonts-dejavu-core, fonts-urw-base35, python3-fonttools to edit copies of them); a test
+whose font is missing fails (it is part of the build set).
 
 Usage: test_outlines.py PATH_TO_CASTELJAU [unittest options]
 """
@@ -18,9 +20,11 @@ import random
 import re
 import struct
 import sys
+import tempfile
 import unittest
 
 import numpy as np
+from fontTools.ttLib import TTFont
 from scipy.optimize import brentq
 
 import test_cli
@@ -605,6 +609,79 @@ def read_afm(path):
     return widths, kerns
 
 
+# ---------------------------------------------------------------------------------------
+# GPOS pair kerning, read here (OpenType GPOS chapter): the `kern` feature of the script's
+# default language system (DFLT when the font lists no such script), its lookups applied
+# in LookupList order and summed, in each lookup the first subtable that applies to the
+# pair: format 1 (glyph pairs) applies when it lists the second glyph in the first's pair
+# set, format 2 (class pairs) whenever it covers the first glyph (class 0 included).
+
+def gpos_kern_lookups(font, script):
+    gpos = font["GPOS"].table
+    scripts = {r.ScriptTag: r.Script for r in gpos.ScriptList.ScriptRecord}
+    langsys = (scripts.get(script) or scripts["DFLT"]).DefaultLangSys
+    records = gpos.FeatureList.FeatureRecord
+    indices = sorted({i for f in langsys.FeatureIndex if records[f].FeatureTag == "kern"
+                      for i in records[f].Feature.LookupListIndex})
+    return [gpos.LookupList.Lookup[i] for i in indices]
+
+
+def gpos_pair_kern(lookups, left, right, formats=None):
+    """The x advance adjustment of glyph `left` (a name) before `right`, in font units;
+    `formats` collects the subtable formats that applied."""
+    total = 0
+    for lookup in lookups:
+        for st in lookup.SubTable:
+            if lookup.LookupType == 9:
+                st = st.ExtSubTable
+            assert st.LookupType == 2, "the oracle reads pair adjustment lookups only"
+            # Kerning of the first glyph's advance only: what these fonts hold.
+            assert st.ValueFormat1 in (0, 4) and st.ValueFormat2 == 0, (st.ValueFormat1, st.ValueFormat2)
+            cov = st.Coverage.glyphs
+            if left not in cov:
+                continue
+            if st.Format == 1:
+                rec = [r for r in st.PairSet[cov.index(left)].PairValueRecord if r.SecondGlyph == right]
+                if not rec:
+                    continue
+                value = rec[0].Value1
+            else:
+                c1 = st.ClassDef1.classDefs.get(left, 0)
+                c2 = st.ClassDef2.classDefs.get(right, 0)
+                value = st.Class1Record[c1].Class2Record[c2].Value1
+            total += getattr(value, "XAdvance", 0) or 0
+            if formats is not None:
+                formats.add(st.Format)
+            break
+    return total
+
+
+class GposLayout:
+    """The pen positions of a text in a font with GPOS kerning, computed here."""
+
+    def __init__(self, path):
+        self.font = TTFont(path)
+        self.cmap = self.font.getBestCmap()
+        self.upem = self.font["head"].unitsPerEm
+        self.formats = set()
+
+    def kern(self, a, b, script="latn"):
+        return gpos_pair_kern(gpos_kern_lookups(self.font, script), self.cmap[ord(a)], self.cmap[ord(b)], self.formats)
+
+    def layout(self, text, size=None, script="latn"):
+        s = 1 if size is None else size / self.upem
+        lookups = gpos_kern_lookups(self.font, script)
+        names = [self.cmap[ord(c)] for c in text]
+        origins, advances, pen = [], [], 0
+        for i, g in enumerate(names):
+            if i:
+                pen += s * gpos_pair_kern(lookups, names[i - 1], g, self.formats)
+            origins.append(pen)
+            advances.append(s * self.font["hmtx"][g][0])
+            pen += advances[-1]
+        return origins, advances
+
+
 class GlyphTest(CliTest):
     @classmethod
     def setUpClass(cls):
@@ -614,6 +691,8 @@ class GlyphTest(CliTest):
         return self.ok("glyph", dict({"font": font, "text": text}, **extra))
 
     def test_dejavu_advances_and_kerning_from_the_tables(self):
+        # DejaVu's kerning is read from GPOS (test_gpos_class_pair_kerning); its `kern`
+        # table holds the same values for these pairs.
         text = "AVATAR Wally To."
         r = self.glyphs(DEJAVU, text)
         self.assertEqual(r["units_per_em"], 2048)
@@ -662,6 +741,137 @@ class GlyphTest(CliTest):
                 for sa, sb in zip(ca["segments"], cb["segments"]):
                     # One multiplication by 64 / 2048 (exact: a power of two) per coordinate.
                     self.assertEqual([[x * s for x in p] for p in sa["points"]], sb["points"])
+
+    def assert_layout(self, r, text, origins, advances, delta=0):
+        self.assertEqual([g["char"] for g in r["glyphs"]], list(text))
+        for ch, g, x, a in zip(text, r["glyphs"], origins, advances):
+            self.assertEqual(g["origin"][1], 0)
+            if delta:
+                self.assertAlmostEqual(g["origin"][0], x, delta=delta, msg=ch)
+                self.assertAlmostEqual(g["advance"], a, delta=delta, msg=ch)
+            else:
+                self.assertEqual(g["origin"][0], x, ch)
+                self.assertEqual(g["advance"], a, ch)
+
+    def test_gpos_glyph_pair_kerning(self):
+        # Nimbus Sans (CFF): kerning only in GPOS, glyph pairs (PairPos format 1).
+        gp = GposLayout(NIMBUS_OTF)
+        self.assertNotIn("kern", gp.font)
+        self.assertEqual((gp.kern("A", "V"), gp.kern("T", "o"), gp.kern("W", "a")), (-71, -91, -37))
+        text = "AVATAR Wally To. Wa"
+        r = self.glyphs(NIMBUS_OTF, text)
+        self.assertIs(r["kerning"], True)
+        # Font units: integer sums, exact.
+        self.assert_layout(r, text, *gp.layout(text))
+        # Scaled: each kerning and advance times size / unitsPerEm then summed, as the
+        # program does; 1e-12 is a few ulps of positions below 600.
+        r = self.glyphs(NIMBUS_OTF, text, size=50)
+        self.assert_layout(r, text, *gp.layout(text, size=50), delta=1e-12)
+        self.assertEqual(gp.formats, {1})
+
+    def test_gpos_class_pair_kerning(self):
+        # DejaVu Sans (TrueType): GPOS class pairs (PairPos format 2) in two lookups for
+        # Latin; its `kern` table is not read.
+        gp = GposLayout(DEJAVU)
+        self.assertEqual((gp.kern("A", "V"), gp.kern("T", "o"), gp.kern("W", "a")), (-131, -348, -131))
+        self.assertEqual(len(gpos_kern_lookups(gp.font, "latn")), 2)
+        text = "AVATAR Wally To. Wa -V (f) r, y."
+        r = self.glyphs(DEJAVU, text)
+        self.assert_layout(r, text, *gp.layout(text))
+        r = self.glyphs(DEJAVU, text, size=12)
+        self.assert_layout(r, text, *gp.layout(text, size=12), delta=1e-12)  # as above
+        self.assertEqual(gp.formats, {2})
+
+    def test_pairs_without_kerning_are_unchanged(self):
+        for font in (NIMBUS_OTF, DEJAVU):
+            gp = GposLayout(font)
+            for pair in ("ll", "AR", "Hn", "mn"):
+                self.assertEqual(gp.kern(*pair), 0, (font, pair))
+                g = self.glyphs(font, pair)["glyphs"]
+                self.assertEqual(g[0]["origin"], [0, 0])
+                self.assertEqual(g[1]["origin"], [g[0]["advance"], 0], (font, pair))
+
+    def test_one_glyph_per_character(self):
+        # Nothing but pair positioning: Nimbus Sans's GSUB ligatures (f i, f f l) are not
+        # formed, DejaVu's combining acute stays apart from its e, the precomposed e-acute
+        # is not decomposed, a zero-width joiner and Arabic letters (no contextual forms)
+        # are kept, one glyph each.
+        gp = GposLayout(NIMBUS_OTF)
+        self.assertIn("liga", {f.FeatureTag for f in gp.font["GSUB"].table.FeatureList.FeatureRecord})
+        text = "office ffle fi"
+        self.assert_layout(self.glyphs(NIMBUS_OTF, text), text, *gp.layout(text))
+        tt = TrueType(DEJAVU)
+        for text in ("Ve\u0301\u00e9", "A\u200dV", "\u0633\u0644\u0627\u0645 AV"):
+            r = self.glyphs(DEJAVU, text)
+            self.assertEqual([g["char"] for g in r["glyphs"]], list(text))
+            self.assertEqual([g["advance"] for g in r["glyphs"]], [tt.advance(tt.cmap[ord(c)]) for c in text])
+        gp = GposLayout(DEJAVU)
+        text = "Ve\u0301\u00e9"
+        self.assert_layout(self.glyphs(DEJAVU, text), text, *gp.layout(text))
+
+    def test_each_script_run_uses_its_language_system(self):
+        # DejaVu's Latin kerning is in a lookup only its `latn` script lists (DFLT, grek
+        # lack it): a text that starts in Greek still kerns its Latin word.
+        gp = GposLayout(DEJAVU)
+        self.assertEqual(gp.kern("A", "V", script="DFLT"), 0)
+        self.assertEqual(gp.kern("A", "V", script="grek"), 0)
+        r = self.glyphs(DEJAVU, "\u03a9 AV")["glyphs"]
+        self.assertEqual(r[3]["origin"][0] - r[2]["origin"][0], r[2]["advance"] + gp.kern("A", "V"))
+        self.assertEqual(gp.kern("A", "V"), -131)
+
+    def dejavu_copy(self, tmp, name, edit):
+        font = TTFont(DEJAVU)
+        edit(font)
+        path = os.path.join(tmp, name)
+        font.save(path)
+        return path
+
+    def test_gpos_first_else_the_kern_table(self):
+        # Copies of DejaVu Sans whose `kern` table says A V = +500 (GPOS: -131): with
+        # GPOS's kern feature the table is not read; without GPOS, or with a GPOS whose
+        # kern feature is renamed (to `dist`, which the program does not apply either),
+        # the kern table is read as before (the test's struct reader is the oracle).
+        tt = TrueType(DEJAVU)
+        a, v = tt.cmap[ord("A")], tt.cmap[ord("V")]
+
+        def set_av(font):
+            names = font.getGlyphOrder()
+            hits = 0
+            for sub in font["kern"].kernTables:
+                if (names[a], names[v]) in sub.kernTable:
+                    sub.kernTable[(names[a], names[v])] = 500
+                    hits += 1
+            self.assertEqual(hits, 1)
+
+        def drop_gpos(font):
+            set_av(font)
+            del font["GPOS"]
+
+        def rename_kern(font):
+            set_av(font)
+            for rec in font["GPOS"].table.FeatureList.FeatureRecord:
+                if rec.FeatureTag == "kern":
+                    rec.FeatureTag = "dist"
+
+        text = "AVATAR Wally To."
+        with tempfile.TemporaryDirectory() as tmp:
+            both = self.dejavu_copy(tmp, "both.ttf", set_av)
+            g = self.glyphs(both, "AV")["glyphs"]
+            self.assertEqual(g[1]["origin"][0], g[0]["advance"] - 131)
+            for name, edit in (("kern_only.ttf", drop_gpos), ("renamed.ttf", rename_kern)):
+                path = self.dejavu_copy(tmp, name, edit)
+                k = TrueType(path)
+                self.assertEqual(k.kern(a, v), 500)
+                r = self.glyphs(path, text)
+                self.assertIs(r["kerning"], True)
+                pen, prev = 0, None
+                for ch, g in zip(text, r["glyphs"]):
+                    gid = k.cmap[ord(ch)]
+                    if prev is not None:
+                        pen += k.kern(prev, gid)
+                    self.assertEqual(g["origin"], [pen, 0], (name, ch))
+                    pen += k.advance(gid)
+                    prev = gid
 
     def test_cff_and_type1_are_cubic_and_closed(self):
         for font, fmt in ((NIMBUS_OTF, "CFF"), (NIMBUS_T1, "Type 1")):

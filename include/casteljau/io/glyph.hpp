@@ -1,6 +1,7 @@
 // Font glyphs as curves (issue 17): the outlines of a text's characters read with FreeType
-// (TrueType, OpenType/CFF, Type 1), laid out along a baseline. Compiled once, in
-// src/io/glyph.cpp (FreeType is a private dependency of casteljau::io).
+// (TrueType, OpenType/CFF, Type 1), laid out along a baseline with the font's pair
+// kerning. Compiled once, in src/io/glyph.cpp (FreeType and HarfBuzz are private
+// dependencies of casteljau::io).
 #pragma once
 
 #include <optional>
@@ -29,7 +30,7 @@ struct GlyphRun {
   std::vector<GlyphOutline> glyphs;
   int units_per_em = 0;
   std::string format;  ///< FreeType's name of the font format: "TrueType", "CFF", "Type 1", ...
-  bool kerning = false;  ///< whether the font had pair kerning that FreeType reads
+  bool kerning = false;  ///< whether the font has pair kerning that is read (GPOS kern, kern table, AFM)
 };
 
 /// The glyphs of `text` (UTF-8, at most 10000 characters, one line) in the font file
@@ -38,9 +39,12 @@ struct GlyphRun {
 /// font units times 64, exactly) and read with FT_Outline_Decompose, which supplies the
 /// implied on-curve points of TrueType (exact at that scale; FT_LOAD_NO_SCALE would
 /// truncate their half units). Layout: the pen starts at (0, 0) and moves by each
-/// glyph's advance plus the pair kerning FreeType reads (FT_Get_Kerning: the TrueType
-/// `kern` table, or a Type 1 font's AFM file beside it, same name with `.afm`); GPOS
-/// kerning is not read. The file is only read. Errors: InvalidArgument "font" (no such
+/// glyph's advance plus the pair kerning between it and the next: the GPOS `kern`
+/// feature when the font has one (HarfBuzz, with nothing else of shaping: no
+/// substitution, no other positioning feature, one glyph per character; per script run,
+/// the script's default language system), else what FreeType reads (FT_Get_Kerning: the
+/// TrueType `kern` table, or a Type 1 font's AFM file beside it, same name with `.afm`).
+/// The file is only read. Errors: InvalidArgument "font" (no such
 /// file, not a regular file, not a font FreeType reads, a font without outlines),
 /// "text" (not UTF-8, more than 10000 characters), "text[i]" (character i, counted in
 /// code points, is not in the font: the font's .notdef box is not substituted), "size"
