@@ -855,7 +855,7 @@ constexpr Command surface_family[] = {
      "surface (fit: also max_error, the largest distance from a grid point to the surface at\n"
      "          its parameters)",
      R"(  echo '{"construct": "extrude", "curve": {"type": "bezier", "points": [[0,0,0],[1,0,0]]}, "vector": [0,0,2]}' | casteljau surface
-  {"surface":{"type":"bspline_surface","degree":[1,1],"knots":[[0.0,0.0,1.0,1.0],[0,0,1,1]],"points":[[[0.0,0.0,0.0],[0.0,0.0,2.0]],[[1.0,0.0,0.0],[1.0,0.0,2.0]]]}})",
+  {"surface":{"type":"bspline_surface","degree":[1,1],"knots":[[0.0,0.0,1.0,1.0],[0.0,0.0,1.0,1.0]],"points":[[[0.0,0.0,0.0],[0.0,0.0,2.0]],[[1.0,0.0,0.0],[1.0,0.0,2.0]]]}})",
      surface_fields, surface, "", "construct"},
     {"isocurve", "The exact curve of a surface at a fixed u or v",
      "The isocurve of a surface: for direction u the curve v -> S(value, v), for v the curve\n"

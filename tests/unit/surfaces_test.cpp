@@ -45,7 +45,7 @@ double max_gap(const S1& a, const S2& b) {
 TEST(Surfaces, ErrorsNameTheGrid) {
   const Grid3 ragged{{P3(0, 0, 0), P3(1, 0, 0), P3(2, 0, 0), P3(3, 0, 0)}, {P3(0, 1, 0), P3(1, 1, 0), P3(2, 1, 0), P3(3, 1, 0)},
                      {P3(0, 2, 0), P3(1, 2, 0), P3(2, 2, 0)}};
-  EXPECT_INVALID_ARGUMENT(BezierSurface<double, 3>{ragged}, "points[2]", "row 2 has 3 points, row 0 has 4");
+  EXPECT_INVALID_ARGUMENT((BezierSurface<double, 3>{ragged}), "points[2]", "row 2 has 3 points, row 0 has 4");
   const Grid3 square{{P3(0, 0, 0), P3(0, 1, 0)}, {P3(1, 0, 0), P3(1, 1, 0)}};
   EXPECT_INVALID_ARGUMENT((BSplineSurface<double, 3>(1, 1, {0, 0, 1, 1}, {0, 0.7, 0.5, 1}, square)), "knots[1][2]",
                           "knots must be non-decreasing (0.5 after 0.7)");
