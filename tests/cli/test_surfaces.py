@@ -431,6 +431,11 @@ class SurfaceOpsTest(CliTest):
         self.bad("insert_knot", {"surface": flat, "direction": "u", "knot": 0.5}, where="surface", contains="bspline_surface")
         self.bad("split", {"surface": s, "direction": "w", "t": 0.5}, where="direction")
         self.bad("eval", {"surface": dict(s, type="torus_surface"), "uv": [[0, 0]]}, where="surface.type")
+        # --jsonl: curve and surface requests of one command, one response line each.
+        rc, out, err = test_cli.run("eval", args=["--jsonl"], text=json.dumps({"curve": {"type": "bezier", "points": [[0], [2]]}, "t": [0.5]})
+                                    + "\n" + json.dumps({"surface": {"type": "bezier_surface", "points": [[[0], [2]]]}, "uv": [[0.5, 0.5]]}) + "\n")
+        self.assertEqual((rc, err), (0, ""))
+        self.assertEqual([json.loads(l) for l in out.splitlines()], [{"points": [[1]]}, {"points": [[1]]}])
         # A request may not hold both.
         self.bad("eval", {"surface": flat, "curve": {"type": "bezier", "points": [[0]]}, "uv": [[0, 0]]}, where="curve")
 

@@ -31,7 +31,10 @@ struct SurfaceBox {
 /// net) and examined again. The answer is the outermost control extent of the settled
 /// patches: it contains S and lies within the tolerance of a point of S. Patches deeper
 /// than max_depth halvings are settled as they are (the box still contains S; only a
-/// surface with control points near 1e300 gets there).
+/// surface with control points near 1e300 gets there), and so is every patch left after
+/// max_splits halvings for one side: an extent attained along a curve inside the patches
+/// (a torus's top circle between knots) needs patches of the tolerance's square root all
+/// along it; the box then still contains S but may miss the tolerance (issue 19: left).
 template <class T>
 SurfaceBox<T> bounds(const SurfaceForm<T>& f, T rel) {
   const std::size_t cd = f.cartesian();
@@ -54,6 +57,7 @@ SurfaceBox<T> bounds(const SurfaceForm<T>& f, T rel) {
   const T tol = rel * std::sqrt(diag);
   SurfaceBox<T> out{found.lo, found.hi};
   constexpr int max_depth = 80;
+  constexpr std::size_t max_splits = 50000;  // per side; about 0.3 s
   struct Item {
     SurfaceForm<T> patch;
     int depth;
@@ -73,6 +77,7 @@ SurfaceBox<T> bounds(const SurfaceForm<T>& f, T rel) {
       T settled = best;
       // Best first: the patch reaching farthest is examined first, so that the best point
       // approaches the extent quickly and the other patches settle at once.
+      std::size_t splits = 0;
       const auto later = [](const Item& a, const Item& b) { return a.e > b.e; };
       std::priority_queue<Item, std::vector<Item>, decltype(later)> queue(later);
       for (const auto& p : all) queue.push({p, 0, extent(p)});
@@ -85,7 +90,7 @@ SurfaceBox<T> bounds(const SurfaceForm<T>& f, T rel) {
           settled = std::min(settled, e);
           break;
         }
-        if (it.depth >= max_depth) {
+        if (it.depth >= max_depth || ++splits > max_splits) {
           settled = std::min(settled, e);
           continue;
         }
