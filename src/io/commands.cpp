@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "casteljau/io/surfaces.hpp"
 #include "commands_family.hpp"
 #include "text.hpp"
 
@@ -118,6 +119,16 @@ void read_value(const Field& field, const Json& j, Args::Value& v) {
     case FieldType::curves:
       v.curves = curves_from_json(j, field);
       break;
+    case FieldType::surface:
+      try {
+        v.surface = std::make_shared<const AnySurface>(surface_from_json(j));
+      } catch (const InvalidArgument& e) {
+        throw e.within(where);
+      }
+      break;
+    case FieldType::json:
+      v.json = j;
+      break;
     case FieldType::number_or_choice:
       if (j.is_string()) {
         v.string = j.get<std::string>();
@@ -143,7 +154,7 @@ bool declares(const Command& c, std::string_view field) {
 std::vector<Command> collect() {
   std::vector<Command> all;
   for (const auto family : {detail::curve_commands(), detail::query_commands(), detail::point_commands(), detail::ops_commands(),
-                            detail::svg_import_commands(), detail::outline_commands()}) {
+                            detail::svg_import_commands(), detail::outline_commands(), detail::surface_commands()}) {
     all.insert(all.end(), family.begin(), family.end());
   }
   return all;
@@ -189,6 +200,12 @@ const AnyCurve& Args::curve(std::string_view name) const {
   return v.curves.front();
 }
 std::span<const AnyCurve> Args::curves(std::string_view name) const { return filled(name).curves; }
+const AnySurface& Args::surface(std::string_view name) const {
+  const Value& v = filled(name);
+  if (!v.surface) undeclared(name);
+  return *v.surface;
+}
+const Json& Args::json(std::string_view name) const { return filled(name).json; }
 
 Args read_args(std::span<const Field> fields, const Json& request, std::string_view owner) {
   const Fields f(request, owner);
@@ -230,6 +247,8 @@ std::string_view field_type_name(FieldType t) {
     case FieldType::curve: return "curve";
     case FieldType::curves: return "curve[]";
     case FieldType::number_or_choice: return "number|string";
+    case FieldType::surface: return "surface";
+    case FieldType::json: return "json";
   }
   return "";
 }
@@ -237,6 +256,13 @@ std::string_view field_type_name(FieldType t) {
 std::span<const Command> commands() {
   static const std::vector<Command> all = collect();
   return all;
+}
+
+const Command* surface_form(std::string_view name) {
+  for (const auto& c : detail::surface_forms()) {
+    if (c.name == name) return &c;
+  }
+  return nullptr;
 }
 
 const Command* find_command(std::string_view name) {
@@ -252,6 +278,9 @@ std::string request_noun(const Command& command) {
 }
 
 Response run(const Command& command, const Json& request) {
+  if (request.is_object() && request.contains("surface") && !declares(command, "surface")) {
+    if (const Command* s = surface_form(command.name)) return run(*s, request);
+  }
   const Args args = read_args(command.fields, request, request_noun(command));
   Response r;
   try {

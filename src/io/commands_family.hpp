@@ -24,6 +24,12 @@ std::span<const Command> svg_import_commands();
 /// src/io/commands_outlines.cpp: to_svg_path, glyph (issue 17).
 std::span<const Command> outline_commands();
 
+/// src/io/commands_surface.cpp: surface, isocurve (issue 19).
+std::span<const Command> surface_commands();
+/// src/io/commands_surface.cpp: the surface forms of eval, split, elevate, insert_knot,
+/// to_bezier, bounds, area (io::surface_form).
+std::span<const Command> surface_forms();
+
 /// A finite number as JSON writes it (shortest round-trip form), for messages.
 inline std::string number_text(double v) { return Json(v).dump(); }
 

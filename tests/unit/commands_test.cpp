@@ -59,6 +59,10 @@ const std::map<std::string, std::vector<Expected>> documented = {
     {"offset",
      {{"curve", true}, {"distance", true}, {"tolerance", true}, {"trim", false}, {"join", false}, {"miter_limit", false}}},
     {"to_quadratic", {{"curve", true}, {"tolerance", true}}},
+    {"surface",
+     {{"construct", true}, {"curve", false}, {"curves", false}, {"vector", false}, {"axis", false}, {"angle", false}, {"degree", false},
+      {"params", false}, {"points", false}, {"control_points", false}, {"parametrization", false}}},
+    {"isocurve", {{"surface", true}, {"direction", true}, {"value", true}}},
 };
 
 const io::OrderedJson& command_entry(const io::OrderedJson& listing, const std::string& name) {

@@ -7,6 +7,7 @@
 // one file per family; the machinery: src/io/commands.cpp.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -17,6 +18,8 @@
 #include "casteljau/io/json.hpp"
 
 namespace casteljau::io {
+
+struct AnySurface;
 
 /// What a request field holds, as checked before the command runs.
 enum class FieldType {
@@ -31,11 +34,13 @@ enum class FieldType {
   curve,    ///< a curve object (curve JSON)
   curves,   ///< an array of curve objects, between min_count and max_count of them
   number_or_choice,  ///< a finite number, or a string among `choices` (read by Args::choice)
+  surface,  ///< a surface object (surface JSON, io/surfaces.hpp)
+  json,     ///< any JSON value, checked by the command (fields whose shape depends on another)
 };
 
 /// The name of a field type in the API listing and in help: "number", "integer",
 /// "boolean", "string", "number[]", "point", "vector", "point[]", "curve", "curve[]",
-/// "number|string".
+/// "number|string", "surface", "json".
 [[nodiscard]] std::string_view field_type_name(FieldType t);
 
 /// One field of a request.
@@ -84,6 +89,9 @@ class Args {
   [[nodiscard]] const PointList& points(std::string_view name) const;
   [[nodiscard]] const AnyCurve& curve(std::string_view name) const;
   [[nodiscard]] std::span<const AnyCurve> curves(std::string_view name) const;
+  [[nodiscard]] const AnySurface& surface(std::string_view name) const;
+  /// json: the value as given (or the default).
+  [[nodiscard]] const Json& json(std::string_view name) const;
 
   struct Value {
     const Field* field = nullptr;
@@ -96,6 +104,8 @@ class Args {
     std::vector<double> numbers;
     PointList points;
     std::vector<AnyCurve> curves;  ///< curve: one
+    std::shared_ptr<const AnySurface> surface;
+    Json json;
   };
 
  private:
@@ -133,8 +143,13 @@ struct Command {
   std::string_view numerical_field = "curve";
 };
 
-/// Every command, grouped by family (curve operations, queries, point sets).
+/// Every command, grouped by family (curve operations, queries, point sets, surfaces).
 [[nodiscard]] std::span<const Command> commands();
+
+/// The surface form of a command that `cli.md` defines for curves (eval, split, elevate,
+/// insert_knot, to_bezier, bounds, area): the same name, `surface` instead of `curve`; nullptr when the
+/// command has none. run() takes a request holding `surface` to it.
+[[nodiscard]] const Command* surface_form(std::string_view name);
 
 /// The command called name, or nullptr.
 [[nodiscard]] const Command* find_command(std::string_view name);
@@ -148,7 +163,8 @@ struct Command {
 /// "an eval request", "a split request": how messages name the command's request.
 [[nodiscard]] std::string request_noun(const Command& command);
 
-/// Runs the command on one parsed request. Bad input throws InvalidArgument whose where()
+/// Runs the command on one parsed request (a request with a `surface` field, to a command
+/// that does not declare one, runs the command's surface form). Bad input throws InvalidArgument whose where()
 /// is a path in the request ("curve.points[2][1]", "t[3]", "" for the request itself); a
 /// result that is not finite is refused ("request"). Anything else that escapes is an
 /// internal error.

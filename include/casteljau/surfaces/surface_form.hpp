@@ -1,0 +1,483 @@
+// Tensor-product surfaces as plain data with the dimension known at run time, and the
+// algorithms on them, written once per scalar: a surface is a curve of curves. Along u it
+// is a B-spline curve whose control "points" are the rows of the grid (Row: the row's
+// coordinates in one flat vector), so knot insertion, refinement, splitting, the Bézier
+// pieces and degree elevation are the curve algorithms of basis/knot_ops.hpp and
+// basis/knot_form.hpp applied to rows; along v the same on the transposed grid.
+// Evaluation and partial derivatives follow [PT97] A3.6 (tensor product of the basis
+// function derivatives) and A4.4 (the rational quotient rule). Rational surfaces are held
+// in homogeneous coordinates (w P, w). The typed surfaces (surfaces/surface.hpp) wrap this
+// form, so that every algorithm is compiled once per scalar, not once per type and
+// dimension.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <optional>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "casteljau/basis/binomial.hpp"
+#include "casteljau/basis/bspline_basis.hpp"
+#include "casteljau/basis/knot_form.hpp"
+#include "casteljau/basis/knot_ops.hpp"
+#include "casteljau/core/error.hpp"
+
+namespace casteljau {
+
+/// The two parameter directions of a surface.
+enum class Direction { u, v };
+
+namespace detail {
+
+/// A row of a surface's grid as one value of a vector space (the control "point" of the
+/// surface seen as a curve in the other direction): its coordinates in one flat vector.
+template <class T>
+struct Row {
+  std::vector<T> x;
+};
+
+template <class T>
+Row<T> lerp(const Row<T>& a, const Row<T>& b, T t) {
+  Row<T> r{std::vector<T>(a.x.size())};
+  const T s = 1 - t;
+  for (std::size_t i = 0; i < a.x.size(); ++i) r.x[i] = s * a.x[i] + t * b.x[i];
+  return r;
+}
+template <class T>
+Row<T> operator+(const Row<T>& a, const Row<T>& b) {
+  Row<T> r = a;
+  for (std::size_t i = 0; i < r.x.size(); ++i) r.x[i] += b.x[i];
+  return r;
+}
+template <class T>
+Row<T> operator-(const Row<T>& a, const Row<T>& b) {
+  Row<T> r = a;
+  for (std::size_t i = 0; i < r.x.size(); ++i) r.x[i] -= b.x[i];
+  return r;
+}
+template <class T>
+Row<T> operator/(const Row<T>& a, T s) {
+  Row<T> r = a;
+  for (auto& c : r.x) c /= s;
+  return r;
+}
+
+/// A B-spline curve with the dimension known at run time: degree p, knots U, n points of
+/// `dim` coordinates each (when rational: the Cartesian point, then its weight).
+template <class T>
+struct CurveForm {
+  int p = 0;
+  std::vector<T> U;
+  std::size_t dim = 0;
+  bool rational = false;
+  std::vector<T> P;  ///< n * dim
+  [[nodiscard]] std::size_t size() const { return dim == 0 ? 0 : P.size() / dim; }
+};
+
+/// A tensor-product B-spline surface with the dimension known at run time: degrees p
+/// (along u, the rows) and q (along v, the columns), knots U and V, a rows x cols grid of
+/// points of `dim` coordinates (when rational: the Cartesian point, then its weight),
+/// row-major.
+/// No invariant is enforced here: check_surface_form states them; the typed surfaces
+/// check them once.
+template <class T>
+struct SurfaceForm {
+  int p = 0, q = 0;
+  std::vector<T> U, V;
+  std::size_t rows = 0, cols = 0;
+  std::size_t dim = 0;  ///< stored coordinates per point (Cartesian dimension + 1 when rational)
+  bool rational = false;
+  std::vector<T> P;  ///< P[(i * cols + j) * dim + k]
+
+  [[nodiscard]] const T* at(std::size_t i, std::size_t j) const { return P.data() + (i * cols + j) * dim; }
+  [[nodiscard]] T* at(std::size_t i, std::size_t j) { return P.data() + (i * cols + j) * dim; }
+  /// The Cartesian dimension.
+  [[nodiscard]] std::size_t cartesian() const { return rational ? dim - 1 : dim; }
+};
+
+/// f with every rational point (P, w) taken to (w P, w) (forward) or back.
+template <class T>
+SurfaceForm<T> weighted(SurfaceForm<T> f, bool forward) {
+  if (!f.rational) return f;
+  const std::size_t cd = f.dim - 1;
+  for (std::size_t i = 0; i < f.P.size(); i += f.dim) {
+    const T w = f.P[i + cd];
+    for (std::size_t c = 0; c < cd; ++c) f.P[i + c] = forward ? f.P[i + c] * w : f.P[i + c] / w;
+  }
+  return f;
+}
+
+/// f with u and v exchanged (p with q, U with V, the grid transposed).
+template <class T>
+SurfaceForm<T> transposed(const SurfaceForm<T>& f) {
+  SurfaceForm<T> g{f.q, f.p, f.V, f.U, f.cols, f.rows, f.dim, f.rational, std::vector<T>(f.P.size())};
+  for (std::size_t i = 0; i < f.rows; ++i)
+    for (std::size_t j = 0; j < f.cols; ++j) std::copy(f.at(i, j), f.at(i, j) + f.dim, g.at(j, i));
+  return g;
+}
+
+/// f as a curve along u whose points are its rows.
+template <class T>
+KnotForm<T, Row<T>> u_curve(const SurfaceForm<T>& f) {
+  KnotForm<T, Row<T>> c{f.p, f.U, std::vector<Row<T>>(f.rows)};
+  const std::size_t w = f.cols * f.dim;
+  for (std::size_t i = 0; i < f.rows; ++i) c.P[i].x.assign(f.P.begin() + static_cast<std::ptrdiff_t>(i * w), f.P.begin() + static_cast<std::ptrdiff_t>((i + 1) * w));
+  return c;
+}
+
+/// The surface whose rows are the points of c, with f's v data.
+template <class T>
+SurfaceForm<T> from_u_curve(const SurfaceForm<T>& f, const KnotForm<T, Row<T>>& c) {
+  SurfaceForm<T> g{c.p, f.q, c.U, f.V, c.P.size(), f.cols, f.dim, f.rational, {}};
+  g.P.reserve(g.rows * g.cols * g.dim);
+  for (const auto& r : c.P) g.P.insert(g.P.end(), r.x.begin(), r.x.end());
+  return g;
+}
+
+/// Applies op (a function of the u curve of rows giving another) in `dir`: directly along
+/// u, on the transposed grid along v.
+template <class T, class Op>
+SurfaceForm<T> along_homogeneous(const SurfaceForm<T>& h, Direction dir, Op&& op) {
+  if (dir == Direction::u) return from_u_curve(h, op(u_curve(h)));
+  const SurfaceForm<T> t = transposed(h);
+  return transposed(from_u_curve(t, op(u_curve(t))));
+}
+template <class T, class Op>
+SurfaceForm<T> along(const SurfaceForm<T>& f, Direction dir, Op&& op) {
+  return weighted(along_homogeneous(weighted(f, true), dir, op), false);
+}
+
+/// The Bézier points of degree p + r of the Bézier points B of degree p (Forrest's
+/// equations [PT97, eq. 5.36]): Q_i = sum_j C(p, j) C(r, i - j) / C(p + r, i) B_j.
+template <class T>
+std::vector<Row<T>> elevate_bezier_rows(const std::vector<Row<T>>& B, int r) {
+  const int p = static_cast<int>(B.size()) - 1, n = p + r;
+  std::vector<Row<T>> Q(static_cast<std::size_t>(n) + 1, Row<T>{std::vector<T>(B.front().x.size(), T(0))});
+  for (int i = 0; i <= n; ++i) {
+    const T c = binomial<T>(n, i);
+    for (int j = std::max(0, i - r); j <= std::min(p, i); ++j) {
+      const T a = binomial<T>(p, j) * binomial<T>(r, i - j) / c;
+      auto& q = Q[static_cast<std::size_t>(i)].x;
+      const auto& b = B[static_cast<std::size_t>(j)].x;
+      for (std::size_t k = 0; k < q.size(); ++k) q[k] += a * b[k];
+    }
+  }
+  return Q;
+}
+
+/// Degree elevation by r >= 1 of a curve of rows, as the curves do it (detail::elevate in
+/// curves/bspline.hpp: pieces elevated, joined C^0, each interior knot removed back to
+/// its continuity; an unclamped end re-blossomed to the outer knots U_0 (r + 1 times),
+/// U_1, .., U_(p-1)).
+template <class T>
+KnotForm<T, Row<T>> elevate_rows(const KnotForm<T, Row<T>>& f, int r) {
+  using V = Row<T>;
+  const int p = f.p, q = p + r;
+  const std::span<const T> U(f.U);
+  const std::size_t n = f.P.size(), m = f.U.size() - 1;
+  const T a = U[static_cast<std::size_t>(p)], b = U[n];
+  const std::vector<std::size_t> spans = nonempty_spans(U, p);
+  std::vector<T> U0(static_cast<std::size_t>(q) + 1, a);
+  std::vector<V> P0;
+  for (std::size_t k = 0; k < spans.size(); ++k) {
+    const std::vector<V> Q = elevate_bezier_rows(span_bezier_points<V, T>(U, p, spans[k], f.P), r);
+    if (k == 0) {
+      P0.insert(P0.end(), Q.begin(), Q.end());
+    } else if (knot_multiplicity<T>(U, U[spans[k]]) == static_cast<std::size_t>(p) + 1) {
+      P0.insert(P0.end(), Q.begin(), Q.end());
+      U0.insert(U0.end(), static_cast<std::size_t>(q) + 1, U[spans[k]]);
+    } else {
+      P0.back() = lerp(P0.back(), Q.front(), T(0.5));
+      P0.insert(P0.end(), Q.begin() + 1, Q.end());
+      U0.insert(U0.end(), static_cast<std::size_t>(q), U[spans[k]]);
+    }
+  }
+  U0.insert(U0.end(), static_cast<std::size_t>(q) + 1, b);
+  SlidingWindow<T, V> win(U0, P0, q);
+  for (std::size_t k = 1; k < spans.size(); ++k) {
+    const T x = U[spans[k]];
+    const int mult = static_cast<int>(knot_multiplicity<T>(U, x));
+    win.reach(x);
+    for (int j = 0; j < p - mult; ++j) win.W = remove_knot_once(win.W, x);
+    win.settle(x);
+  }
+  KnotForm<T, V> g = win.finish();
+  const bool clamped_left = U[0] == a, clamped_right = U[m] == b;
+  if (clamped_left && clamped_right) return g;
+  std::vector<T> L(static_cast<std::size_t>(q), a), R(static_cast<std::size_t>(q), b);
+  if (!clamped_left) {
+    for (int j = 0; j < r; ++j) L[static_cast<std::size_t>(j)] = U[0];
+    for (int j = 0; j < p; ++j) L[static_cast<std::size_t>(r + j)] = U[static_cast<std::size_t>(j)];
+  }
+  if (!clamped_right) {
+    for (int j = 0; j < p; ++j) R[static_cast<std::size_t>(j)] = U[n + 1 + static_cast<std::size_t>(j)];
+    for (int j = 0; j < r; ++j) R[static_cast<std::size_t>(p + j)] = U[m];
+  }
+  return with_outer_knots<T, V>(g, L, R);
+}
+
+/// Checks the data of a surface (the typed surfaces' constructors call it): degrees >= 0
+/// ("degree[0]", "degree[1]"), at least p + 1 rows and q + 1 columns ("points"), the knot
+/// rules of check_knots in each direction ("knots[0][i]", "knots[1][j]"), finite points
+/// ("points[i][j][k]"), weights > 0 ("weights[i][j]").
+template <class T>
+void check_surface_form(const SurfaceForm<T>& f) {
+  const auto check_direction = [](int deg, const std::vector<T>& K, std::size_t count, int d) {
+    const std::string which = "[" + std::to_string(d) + "]";
+    const char* noun = d == 0 ? "rows of points" : "columns of points";
+    if (deg < 0) throw InvalidArgument("degree" + which, "a surface needs degrees >= 0, got " + std::to_string(deg));
+    if (count < static_cast<std::size_t>(deg) + 1) {
+      throw InvalidArgument("points", "degree " + std::to_string(deg) + " in " + (d == 0 ? "u" : "v") + " needs at least " +
+                                          std::to_string(deg + 1) + " " + noun + ", got " + std::to_string(count));
+    }
+    if (K.size() != count + static_cast<std::size_t>(deg) + 1) {
+      throw InvalidArgument("knots" + which, std::string("needs ") + (d == 0 ? "rows" : "columns") + " + degree + 1 = " +
+                                                 std::to_string(count + static_cast<std::size_t>(deg) + 1) + " knots, got " +
+                                                 std::to_string(K.size()));
+    }
+    try {
+      check_knots<T>(K, deg);
+    } catch (const InvalidArgument& e) {
+      std::string w = e.where();
+      if (w.rfind("knots", 0) == 0) w = "knots" + which + w.substr(5);
+      else if (w == "degree") w = "degree" + which;
+      throw InvalidArgument(w, e.problem());
+    }
+  };
+  check_direction(f.p, f.U, f.rows, 0);
+  check_direction(f.q, f.V, f.cols, 1);
+  for (std::size_t i = 0; i < f.rows; ++i) {
+    for (std::size_t j = 0; j < f.cols; ++j) {
+      const T* x = f.at(i, j);
+      const std::string ij = "[" + std::to_string(i) + "][" + std::to_string(j) + "]";
+      if (f.rational && !(x[f.dim - 1] > 0 && std::isfinite(x[f.dim - 1]))) {
+        throw InvalidArgument("weights" + ij, "weights must be finite and > 0, got " + format_number(x[f.dim - 1]));
+      }
+      for (std::size_t k = 0; k < f.dim; ++k) {
+        if (!std::isfinite(x[k])) {
+          throw InvalidArgument("points" + ij + "[" + std::to_string(k) + "]", "value must be finite");
+        }
+        if (f.rational && k + 1 < f.dim && !std::isfinite(x[k] * x[f.dim - 1])) {
+          throw InvalidArgument("points" + ij + "[" + std::to_string(k) + "]", "the coordinate times its weight is not finite");
+        }
+      }
+    }
+  }
+}
+
+/// f with u inserted `times` times in direction dir (the curve rules: errors "knot",
+/// "times").
+template <class T>
+SurfaceForm<T> insert_knot(const SurfaceForm<T>& f, Direction dir, T u, int times) {
+  return along(f, dir, [&](const KnotForm<T, Row<T>>& c) { return insert_knot<T, Row<T>>(c, u, times); });
+}
+
+/// f with the sorted knots X inserted in direction dir (errors "knots[j]").
+template <class T>
+SurfaceForm<T> refine(const SurfaceForm<T>& f, Direction dir, std::span<const T> X) {
+  return along(f, dir, [&](const KnotForm<T, Row<T>>& c) { return refine<T, Row<T>>(c, X); });
+}
+
+/// f elevated r >= 1 times in direction dir.
+template <class T>
+SurfaceForm<T> elevate(const SurfaceForm<T>& f, Direction dir, int r) {
+  if (r < 1) throw InvalidArgument("times", "elevation count must be >= 1, got " + std::to_string(r));
+  return along(f, dir, [&](const KnotForm<T, Row<T>>& c) { return elevate_rows<T>(c, r); });
+}
+
+/// The halves of f at t strictly inside the domain of direction dir (error "t"); both keep
+/// their parameter.
+template <class T>
+std::pair<SurfaceForm<T>, SurfaceForm<T>> split(const SurfaceForm<T>& f, Direction dir, T t) {
+  std::optional<KnotForm<T, Row<T>>> second;
+  const SurfaceForm<T> h = weighted(f, true);
+  SurfaceForm<T> first = along_homogeneous(h, dir, [&](const KnotForm<T, Row<T>>& c) {
+    auto halves = split<T, Row<T>>(c, t);
+    second = std::move(halves.second);
+    return std::move(halves.first);
+  });
+  SurfaceForm<T> other = from_u_curve(dir == Direction::u ? h : transposed(h), *second);
+  if (dir == Direction::v) other = transposed(other);
+  return {weighted(std::move(first), false), weighted(std::move(other), false)};
+}
+
+/// The exact polynomial (or rational) pieces of f: breaks in u and in v (the domain's ends
+/// and the distinct knots between), and patches[a][b] on [ubreaks[a], ubreaks[a+1]] x
+/// [vbreaks[b], vbreaks[b+1]], each a Bézier patch (degrees p, q; its knots the patch's
+/// interval, each end p + 1 resp. q + 1 times), by blossoming [Ramshaw87].
+template <class T>
+struct SurfacePatches {
+  std::vector<T> ubreaks, vbreaks;
+  std::vector<std::vector<SurfaceForm<T>>> patches;
+};
+
+template <class T>
+std::vector<SurfaceForm<T>> u_pieces(const SurfaceForm<T>& f, std::vector<T>& breaks) {
+  const KnotForm<T, Row<T>> c = u_curve(f);
+  const std::span<const T> U(c.U);
+  std::vector<SurfaceForm<T>> out;
+  breaks.clear();
+  for (const std::size_t s : nonempty_spans(U, c.p)) {
+    KnotForm<T, Row<T>> b{c.p, std::vector<T>(static_cast<std::size_t>(c.p) + 1, U[s]), span_bezier_points<Row<T>, T>(U, c.p, s, c.P)};
+    b.U.insert(b.U.end(), static_cast<std::size_t>(c.p) + 1, U[s + 1]);
+    if (breaks.empty()) breaks.push_back(U[s]);
+    breaks.push_back(U[s + 1]);
+    out.push_back(from_u_curve(f, b));
+  }
+  return out;
+}
+
+template <class T>
+SurfacePatches<T> patches(const SurfaceForm<T>& f) {
+  SurfacePatches<T> r;
+  for (const auto& strip : u_pieces(weighted(f, true), r.ubreaks)) {
+    std::vector<SurfaceForm<T>> row;
+    for (auto& piece : u_pieces(transposed(strip), r.vbreaks)) row.push_back(weighted(transposed(piece), false));
+    r.patches.push_back(std::move(row));
+  }
+  return r;
+}
+
+/// The partial derivatives of f at (u, v) up to total order k, Cartesian: out[(a * (k + 1)
+/// + b) * cd + c] = coordinate c of d^(a+b) S / du^a dv^b for a + b <= k (cd the Cartesian
+/// dimension; entries with a + b > k are zero). [PT97] A3.6 on the (homogeneous) points,
+/// then A4.4 for a rational surface. At a knot the right limit answers, at the domain's
+/// end the last span, outside the domain the end patches extrapolate (find_span).
+template <class T>
+std::vector<T> partials(const SurfaceForm<T>& f, T u, T v, int k) {
+  const std::size_t K = static_cast<std::size_t>(k) + 1, d = f.dim, cd = f.cartesian();
+  const std::size_t su = find_span<T>(f.U, f.p, u), sv = find_span<T>(f.V, f.q, v);
+  const auto Nu = basis_function_derivatives<T>(f.U, f.p, su, u, k);
+  const auto Nv = basis_function_derivatives<T>(f.V, f.q, sv, v, k);
+  const std::size_t P = static_cast<std::size_t>(f.p), Q = static_cast<std::size_t>(f.q);
+  // A[a][b]: the homogeneous partials. temp[s]: the u-derivative of order a of column s.
+  std::vector<T> A(K * K * d, T(0)), temp((Q + 1) * d);
+  const std::size_t cw = f.rational ? cd : d;  // index of the weight (none: d)
+  for (std::size_t a = 0; a < K; ++a) {
+    if (a > P) break;  // higher u-derivatives of a degree-p polynomial vanish
+    std::fill(temp.begin(), temp.end(), T(0));
+    for (std::size_t s = 0; s <= Q; ++s)
+      for (std::size_t r = 0; r <= P; ++r) {
+        const T n = Nu[a][r];
+        const T* x = f.at(su - P + r, sv - Q + s);
+        const T nw = cw < d ? n * x[cw] : n;  // (w P, w) on the fly
+        for (std::size_t c = 0; c < d; ++c) temp[s * d + c] += (c == cw ? n : nw) * x[c];
+      }
+    for (std::size_t b = 0; a + b < K; ++b) {
+      if (b > Q) break;
+      T* out = A.data() + (a * K + b) * d;
+      for (std::size_t s = 0; s <= Q; ++s)
+        for (std::size_t c = 0; c < d; ++c) out[c] += Nv[b][s] * temp[s * d + c];
+    }
+  }
+  if (!f.rational) return A;
+  if (!(A[cd] > 0)) {
+    throw InvalidArgument("uv", "the rational surface has a pole at (" + format_number(u) + ", " + format_number(v) +
+                                    ") (its weight function is " + format_number(A[cd]) + " there, outside the domain)");
+  }
+  // A4.4: S^(a,b) = (A^(a,b) - sum_(i,j) != (0,0), i <= a, j <= b  C(a,i) C(b,j) w^(i,j) S^(a-i,b-j)) / w.
+  std::vector<T> S(K * K * cd, T(0));
+  const auto w = [&](std::size_t a, std::size_t b) { return A[(a * K + b) * d + cd]; };
+  for (std::size_t a = 0; a < K; ++a) {
+    for (std::size_t b = 0; a + b < K; ++b) {
+      T* s = S.data() + (a * K + b) * cd;
+      const T* x = A.data() + (a * K + b) * d;
+      for (std::size_t c = 0; c < cd; ++c) s[c] = x[c];
+      for (std::size_t i = 0; i <= a; ++i) {
+        const T ci = binomial<T>(static_cast<int>(a), static_cast<int>(i));
+        for (std::size_t j = 0; j <= b; ++j) {
+          if (i == 0 && j == 0) continue;
+          const T c2 = ci * binomial<T>(static_cast<int>(b), static_cast<int>(j)) * w(i, j);
+          if (c2 == 0) continue;
+          const T* y = S.data() + ((a - i) * K + (b - j)) * cd;
+          for (std::size_t c = 0; c < cd; ++c) s[c] -= c2 * y[c];
+        }
+      }
+      const T w0 = w(0, 0);
+      for (std::size_t c = 0; c < cd; ++c) s[c] /= w0;
+    }
+  }
+  return S;
+}
+
+/// The point of f at (u, v), Cartesian (cd coordinates).
+template <class T>
+std::vector<T> point(const SurfaceForm<T>& f, T u, T v) {
+  std::vector<T> x = partials(f, u, v, 0);
+  x.resize(f.cartesian());
+  return x;
+}
+
+/// Unit normal and curvatures at one point of a 3-D surface, from S_u, S_v, S_uu, S_uv,
+/// S_vv: n = S_u x S_v / |S_u x S_v|, none where |S_u x S_v| <= 1e-12 |S_u| |S_v| or where
+/// one of |S_u|, |S_v| is below 1e-12 of the other (rounding noise of a zero); with E,
+/// F, G and L = S_uu . n, M = S_uv . n, N = S_vv . n: K = (LN - M^2) / (EG - F^2), H =
+/// (EN - 2FM + GL) / (2 (EG - F^2)), k1,2 = H +- sqrt(H^2 - K) (H^2 - K < 0 only by
+/// rounding: read as 0).
+template <class T>
+struct SurfaceGeometry {
+  bool defined = false;
+  T normal[3] = {0, 0, 0};
+  T gaussian = 0, mean = 0, k1 = 0, k2 = 0;
+};
+
+template <class T>
+SurfaceGeometry<T> geometry(const T* Su, const T* Sv, const T* Suu, const T* Suv, const T* Svv) {
+  SurfaceGeometry<T> g;
+  const T n[3] = {Su[1] * Sv[2] - Su[2] * Sv[1], Su[2] * Sv[0] - Su[0] * Sv[2], Su[0] * Sv[1] - Su[1] * Sv[0]};
+  const auto dot = [](const T* a, const T* b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
+  const T len = std::sqrt(dot(n, n));
+  const T E = dot(Su, Su), F = dot(Su, Sv), G = dot(Sv, Sv);
+  if (!(len > T(1e-12) * std::sqrt(E) * std::sqrt(G))) return g;
+  // A partial derivative below 1e-12 of the other is rounding noise of a zero one (a
+  // rational surface's pole row: S_v = (A_v - w_v S) / w cancels to a few eps, not to
+  // 0), so the normal is undefined there too.
+  if (!(std::min(E, G) > T(1e-24) * std::max(E, G))) return g;
+  g.defined = true;
+  for (int c = 0; c < 3; ++c) g.normal[c] = n[c] / len;
+  const T L = dot(Suu, g.normal), M = dot(Suv, g.normal), N = dot(Svv, g.normal);
+  const T den = E * G - F * F;
+  g.gaussian = (L * N - M * M) / den;
+  g.mean = (E * N - 2 * F * M + G * L) / (2 * den);
+  const T disc = std::sqrt(std::max(T(0), g.mean * g.mean - g.gaussian));
+  g.k1 = g.mean + disc;
+  g.k2 = g.mean - disc;
+  return g;
+}
+
+/// The geometry of a 3-D surface at (u, v) (partials up to order 2).
+template <class T>
+SurfaceGeometry<T> geometry(const SurfaceForm<T>& f, T u, T v) {
+  const std::vector<T> d = partials(f, u, v, 2);
+  const auto at = [&](std::size_t a, std::size_t b) { return d.data() + (a * 3 + b) * 3; };
+  return geometry<T>(at(1, 0), at(0, 1), at(2, 0), at(1, 1), at(0, 2));
+}
+
+/// The isocurve of f at `value` in direction dir: for u, the curve v -> S(value, v) (knots
+/// V, degree q, points sum_i N_i(value) (w P)_ij in homogeneous form, written back as
+/// point and weight); for v, u -> S(u, value).
+/// Exact: the tensor product evaluated in one direction.
+template <class T>
+CurveForm<T> isocurve(const SurfaceForm<T>& f, Direction dir, T value) {
+  const SurfaceForm<T> g = weighted(dir == Direction::u ? f : transposed(f), true);
+  const std::size_t s = find_span<T>(g.U, g.p, value);
+  std::vector<T> N(static_cast<std::size_t>(g.p) + 1);
+  basis_functions<T>(g.U, g.p, s, value, N);
+  CurveForm<T> c{g.q, g.V, g.dim, g.rational, std::vector<T>(g.cols * g.dim, T(0))};
+  for (std::size_t r = 0; r <= static_cast<std::size_t>(g.p); ++r) {
+    const T* row = g.at(s - static_cast<std::size_t>(g.p) + r, 0);
+    for (std::size_t x = 0; x < g.cols * g.dim; ++x) c.P[x] += N[r] * row[x];
+  }
+  if (c.rational) {
+    for (std::size_t i = 0; i < c.P.size(); i += c.dim)
+      for (std::size_t k = 0; k + 1 < c.dim; ++k) c.P[i + k] /= c.P[i + c.dim - 1];
+  }
+  return c;
+}
+
+}  // namespace detail
+}  // namespace casteljau

@@ -1,0 +1,516 @@
+#!/usr/bin/python3
+"""Black-box tests of the surfaces (issue 19): surface JSON, the surface forms of eval,
+split, elevate, insert_knot, to_bezier, isocurve, and the `surface` constructions.
+
+Oracles, all independent of the program:
+- a tensor-product evaluator written here (Cox-de Boor by its recursive definition, the
+  rational quotient), in numpy floats and in mpmath at 40 digits; partial derivatives by
+  mpmath.diff of the mpmath evaluator (numerical differentiation at high precision);
+- closed forms: the sphere, torus, cylinder and cone of `revolve` (distances, Gaussian
+  and mean curvatures), the hyperbolic paraboloid's curvatures, rotations by Rodrigues'
+  formula, extrusion and ruled surfaces from de Casteljau written here;
+- numpy.linalg.lstsq for the least-squares fit, on design matrices built here;
+- properties: splitting, elevation, knot insertion and the Bézier patches leave the
+  surface unchanged; interpolation passes through its data.
+
+Usage: test_surfaces.py PATH_TO_CASTELJAU [unittest options]
+"""
+import json
+import math
+import os
+import random
+import sys
+import unittest
+
+import mpmath
+import numpy as np
+
+import test_cli
+from test_cli import CliTest, de_casteljau
+
+# Evaluations are sums of convex combinations of O(1) data: a few dozen eps.
+TIGHT = 1e-13
+
+
+def basis(U, p, i, t):
+    """N_{i,p}(t) by the Cox-de Boor recursion (0/0 = 0), right-continuous, the last
+    non-empty span closed at the domain's end."""
+    n = len(U) - p - 1
+    if p == 0:
+        if U[i] <= t < U[i + 1]:
+            return 1
+        # the domain's end belongs to the last non-empty span
+        if t == U[n] and U[i] < U[i + 1] == U[n]:
+            return 1
+        return 0
+    a = 0 if U[i + p] == U[i] else (t - U[i]) / (U[i + p] - U[i]) * basis(U, p - 1, i, t)
+    b = 0 if U[i + p + 1] == U[i + 1] else (U[i + p + 1] - t) / (U[i + p + 1] - U[i + 1]) * basis(U, p - 1, i + 1, t)
+    return a + b
+
+
+def knots_of(s):
+    """(p, q, U, V) of a surface object (Bézier kinds: clamped on [0, 1])."""
+    P = s["points"]
+    if s["type"] in ("bezier_surface", "rational_bezier_surface"):
+        n, m = len(P) - 1, len(P[0]) - 1
+        return n, m, [0] * (n + 1) + [1] * (n + 1), [0] * (m + 1) + [1] * (m + 1)
+    return s["degree"][0], s["degree"][1], s["knots"][0], s["knots"][1]
+
+
+def evaluate(s, u, v, num=float):
+    """S(u, v) of a surface object, by the definition: sum N_i(u) N_j(v) w_ij P_ij / sum
+    N_i(u) N_j(v) w_ij, in the number type num (float or mpmath.mpf)."""
+    p, q, U, V = knots_of(s)
+    U = [num(x) for x in U]
+    V = [num(x) for x in V]
+    u, v = num(u), num(v)
+    P = s["points"]
+    W = s.get("weights")
+    d = len(P[0][0])
+    acc = [num(0)] * d
+    den = num(0)
+    for i in range(len(P)):
+        bu = basis(U, p, i, u)
+        if bu == 0:
+            continue
+        for j in range(len(P[0])):
+            b = bu * basis(V, q, j, v)
+            if b == 0:
+                continue
+            w = num(W[i][j]) if W else num(1)
+            den += b * w
+            for k in range(d):
+                acc[k] += b * w * num(P[i][j][k])
+    return [a / den for a in acc]
+
+
+def partial_mp(s, u, v, a, b):
+    """d^(a+b) S / du^a dv^b by mpmath.diff of the 40-digit evaluator (u, v away from knots)."""
+    with mpmath.workdps(40):
+        d = len(s["points"][0][0])
+        return [float(mpmath.diff(lambda x, y, k=k: evaluate(s, x, y, mpmath.mpf)[k], (mpmath.mpf(u), mpmath.mpf(v)), (a, b)))
+                for k in range(d)]
+
+
+def cross(a, b):
+    return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+
+
+def dot(a, b):
+    return sum(x * y for x, y in zip(a, b))
+
+
+def norm(a):
+    return math.sqrt(dot(a, a))
+
+
+def random_nurbs(rng, p=3, q=2, rows=5, cols=4, dim=3):
+    U = [0] * (p + 1) + sorted(rng.uniform(0.1, 0.9) for _ in range(rows - p - 1)) + [1] * (p + 1)
+    V = [0] * (q + 1) + sorted(rng.uniform(0.1, 0.9) for _ in range(cols - q - 1)) + [1] * (q + 1)
+    P = [[[rng.uniform(-2, 2) for _ in range(dim)] for _ in range(cols)] for _ in range(rows)]
+    W = [[rng.uniform(0.5, 2) for _ in range(cols)] for _ in range(rows)]
+    return {"type": "nurbs_surface", "degree": [p, q], "knots": [U, V], "points": P, "weights": W}
+
+
+def grid(n=5):
+    return [(i / n, j / n) for i in range(n + 1) for j in range(n + 1)]
+
+
+HALF = math.sqrt(0.5)
+
+
+def semicircle(r):
+    """The profile of a sphere of radius r about z: (0,0,-r) to (0,0,r) through (r,0,0)."""
+    return {"type": "nurbs", "degree": 2, "knots": [0, 0, 0, 0.5, 0.5, 1, 1, 1],
+            "points": [[0, 0, -r], [r, 0, -r], [r, 0, 0], [r, 0, r], [0, 0, r]], "weights": [1, HALF, 1, HALF, 1]}
+
+
+Z_AXIS = {"point": [0, 0, 0], "direction": [0, 0, 1]}
+
+
+class SurfaceEvalTest(CliTest):
+    def test_points_and_partials_of_a_nurbs_surface(self):
+        rng = random.Random(19)
+        s = random_nurbs(rng)
+        uv = [(0.13, 0.21), (0.47, 0.66), (0.88, 0.37)]
+        r = self.ok("eval", {"surface": s, "uv": [list(x) for x in uv], "derivatives": 2})
+        self.assertEqual(list(r["partials"]), ["u", "v", "uu", "uv", "vv"])
+        for k, (u, v) in enumerate(uv):
+            self.assert_close(r["points"][k], evaluate(s, u, v), TIGHT)
+            for name in r["partials"]:
+                a, b = name.count("u"), name.count("v")
+                # Rational second derivatives: the quotient rule on O(10) values; 1e-11
+                # relative covers its rounding (mpmath.diff's own error is far below).
+                self.assert_close(r["partials"][name][k], partial_mp(s, u, v, a, b), 1e-11, name)
+
+    def test_every_dimension_and_bezier_kinds(self):
+        for dim in (1, 2, 4):
+            P = [[[i + j + k * 0.5 for k in range(dim)] for j in range(3)] for i in range(2)]
+            P[1][1][0] = 7
+            s = {"type": "bezier_surface", "points": P}
+            r = self.ok("eval", {"surface": s, "uv": [[0.3, 0.8]]})
+            # Tensor de Casteljau: along v in each row, then along u.
+            want = de_casteljau([de_casteljau(row, 0.8) for row in P], 0.3)
+            self.assert_close(r["points"][0], want, TIGHT)
+        s = {"type": "rational_bezier_surface", "points": [[[0, 0], [0, 1]], [[1, 0], [1, 1]]], "weights": [[1, 2], [3, 4]]}
+        r = self.ok("eval", {"surface": s, "uv": [[0.25, 0.5]]})
+        self.assert_close(r["points"][0], evaluate(s, 0.25, 0.5), TIGHT)
+
+    def test_hyperbolic_paraboloid_curvature(self):
+        # (u, v, uv): K = -1 / (1 + u^2 + v^2)^2, H = -uv / (1 + u^2 + v^2)^(3/2), n ~ (-v, -u, 1).
+        s = {"type": "bezier_surface", "points": [[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]]}
+        uv = [[0.2, 0.7], [1, 1], [0, 0.5]]
+        r = self.ok("eval", {"surface": s, "uv": uv, "normal": True, "curvature": True})
+        for k, (u, v) in enumerate(uv):
+            q = 1 + u * u + v * v
+            self.assertAlmostEqual(r["gaussian"][k], -1 / q ** 2, delta=1e-14)
+            self.assertAlmostEqual(r["mean"][k], -u * v / q ** 1.5, delta=1e-14)
+            k1, k2 = r["principal"][k]
+            self.assertGreaterEqual(k1, k2)
+            self.assertAlmostEqual(k1 + k2, 2 * r["mean"][k], delta=1e-14)
+            self.assert_close(r["normals"][k], [-v / math.sqrt(q), -u / math.sqrt(q), 1 / math.sqrt(q)], 1e-15)
+
+    def test_sphere_from_revolve(self):
+        r = 2.5
+        s = self.ok("surface", {"construct": "revolve", "curve": semicircle(r), "axis": Z_AXIS})["surface"]
+        self.assertEqual(s["type"], "nurbs_surface")
+        self.assertEqual(s["degree"], [2, 2])
+        uv = [[u, v] for u in (0, 0.1, 0.3, 0.5, 0.9, 1) for v in (0, 0.7, 2.0, 3.5, 2 * math.pi)]
+        e = self.ok("eval", {"surface": s, "uv": uv, "normal": True, "curvature": True})
+        for k, (u, v) in enumerate(uv):
+            x = e["points"][k]
+            self.assertAlmostEqual(norm(x), r, delta=4e-16 * r)  # a few roundings of the rational arcs
+            self.assert_close(x, evaluate(s, u, v), TIGHT)
+            if u in (0, 1):
+                # The poles: S_v = 0, the normal is undefined (null, not NaN).
+                self.assertIsNone(e["normals"][k])
+                self.assertIsNone(e["gaussian"][k])
+                continue
+            n = e["normals"][k]
+            outward = dot(n, x) / r
+            self.assertAlmostEqual(abs(outward), 1, delta=1e-14)
+            self.assertAlmostEqual(e["gaussian"][k], 1 / r ** 2, delta=1e-13)
+            # The contract's sign: H = +1/r when S_u x S_v points inward, -1/r outward.
+            self.assertAlmostEqual(e["mean"][k], -outward / r, delta=1e-13)
+        # u along the profile from the south pole, v turning counter-clockwise about +z:
+        # S_u points up, S_v along the parallel, S_u x S_v inward.
+        self.assertLess(dot(e["normals"][uv.index([0.3, 0.7])], e["points"][uv.index([0.3, 0.7])]), 0)
+
+    def test_torus_cylinder_cone_from_revolve(self):
+        R, a = 3.0, 1.0
+        circle = {"type": "nurbs", "degree": 2, "knots": [0, 0, 0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1, 1, 1],
+                  "points": [[R + a, 0, 0], [R + a, 0, a], [R, 0, a], [R - a, 0, a], [R - a, 0, 0], [R - a, 0, -a],
+                             [R, 0, -a], [R + a, 0, -a], [R + a, 0, 0]],
+                  "weights": [1, HALF, 1, HALF, 1, HALF, 1, HALF, 1]}
+        torus = self.ok("surface", {"construct": "revolve", "curve": circle, "axis": Z_AXIS})["surface"]
+        uv = [[u, v] for u in (0.05, 0.3, 0.6, 0.8) for v in (0.4, 4)]
+        e = self.ok("eval", {"surface": torus, "uv": uv, "curvature": True})
+        for k in range(len(uv)):
+            x, y, z = e["points"][k]
+            rho = math.hypot(x, y)
+            self.assertAlmostEqual((rho - R) ** 2 + z * z, a * a, delta=1e-14)
+            # K = cos(phi) / (a (R + a cos phi)) with cos(phi) = (rho - R) / a, |H| = (2 rho - R) / (2 a rho).
+            self.assertAlmostEqual(e["gaussian"][k], (rho - R) / (a * a * rho), delta=1e-13)
+            self.assertAlmostEqual(abs(e["mean"][k]), (2 * rho - R) / (2 * a * rho), delta=1e-13)
+        line = {"type": "bezier", "points": [[2, 0, 0], [2, 0, 5]]}
+        cyl = self.ok("surface", {"construct": "revolve", "curve": line, "axis": Z_AXIS, "angle": 2})["surface"]
+        e = self.ok("eval", {"surface": cyl, "uv": [[0.5, 1.0], [0.2, 2.0]], "curvature": True})
+        for k in range(2):
+            self.assertAlmostEqual(math.hypot(*e["points"][k][:2]), 2, delta=1e-15)
+            self.assertAlmostEqual(e["gaussian"][k], 0, delta=1e-14)
+            self.assertAlmostEqual(abs(e["mean"][k]), 0.25, delta=1e-14)
+        cone = {"type": "bezier", "points": [[0, 0, 1], [1, 0, 0]]}  # apex on the axis, half-angle 45 degrees
+        s = self.ok("surface", {"construct": "revolve", "curve": cone, "axis": Z_AXIS})["surface"]
+        e = self.ok("eval", {"surface": s, "uv": [[0.5, 1.0], [0.25, 5.0], [0, 3]], "curvature": True})
+        for k, t in enumerate((0.5, 0.25)):
+            x = e["points"][k]
+            self.assertAlmostEqual(math.hypot(x[0], x[1]), t, delta=1e-15)
+            self.assertAlmostEqual(x[2], 1 - t, delta=1e-15)
+            self.assertAlmostEqual(e["gaussian"][k], 0, delta=1e-13)
+            # H of a cone: (1/2) cos(half-angle) / rho.
+            self.assertAlmostEqual(abs(e["mean"][k]), HALF / (2 * t), delta=1e-13)
+        self.assertIsNone(e["gaussian"][2])  # the apex
+
+    def test_revolve_keeps_axis_distance_about_an_oblique_axis(self):
+        rng = random.Random(5)
+        profile = {"type": "bezier", "points": [[rng.uniform(-1, 1) for _ in range(3)] for _ in range(4)]}
+        O = [0.5, -1, 2]
+        d = [1, 2, 2]  # |d| = 3
+        angle = 2.5
+        s = self.ok("surface", {"construct": "revolve", "curve": profile, "axis": {"point": O, "direction": d}, "angle": angle})["surface"]
+        dn = [x / 3 for x in d]
+        us = [0, 0.2, 0.5, 0.9, 1]
+        c = self.ok("eval", {"curve": profile, "t": us})["points"]
+        for v in (0, 0.3, 1.1, 2.2, angle):
+            e = self.ok("eval", {"surface": s, "uv": [[u, v] for u in us]})
+            for k in range(len(us)):
+                X, Y = [a - b for a, b in zip(c[k], O)], [a - b for a, b in zip(e["points"][k], O)]
+                h0, h1 = dot(X, dn), dot(Y, dn)
+                r0 = norm([x - h0 * y for x, y in zip(X, dn)])
+                r1 = norm([x - h1 * y for x, y in zip(Y, dn)])
+                scale = max(1, norm(X))
+                self.assertAlmostEqual(h0, h1, delta=1e-14 * scale)
+                self.assertAlmostEqual(r0, r1, delta=1e-14 * scale)
+            if v == angle:
+                # The end is the profile rotated by the angle (Rodrigues' formula).
+                for k in range(len(us)):
+                    X = [a - b for a, b in zip(c[k], O)]
+                    cs, sn = math.cos(angle), math.sin(angle)
+                    kx = cross(dn, X)
+                    kd = dot(dn, X)
+                    rot = [X[i] * cs + kx[i] * sn + dn[i] * kd * (1 - cs) + O[i] for i in range(3)]
+                    self.assert_close(e["points"][k], rot, 1e-14)
+
+
+class ConstructionTest(CliTest):
+    def test_extrude_and_ruled(self):
+        C = [[0, 0, 0], [1, 2, 0], [3, -1, 1], [4, 0, 0]]
+        vec = [0.5, 0, 2]
+        s = self.ok("surface", {"construct": "extrude", "curve": {"type": "bezier", "points": C}, "vector": vec})["surface"]
+        self.assertEqual(s["type"], "bspline_surface")
+        for u, v in grid(4):
+            want = [x + v * y for x, y in zip(de_casteljau(C, u), vec)]
+            self.assert_close(evaluate(s, u, v), want, TIGHT)
+        # ruled between a quadratic Bézier on [0, 1] and a cubic B-spline on [2, 4] with an
+        # interior knot: the second is mapped onto [0, 1], then (1 - v) a(u) + v b(u).
+        A = [[0, 0, 0], [1, 1, 0], [2, 0, 0]]
+        B = {"type": "bspline", "degree": 3, "knots": [2, 2, 2, 2, 3, 4, 4, 4, 4],
+             "points": [[0, 0, 1], [0.5, 1, 1], [1, 2, 1.5], [1.5, 0, 1], [2, 0, 1]]}
+        s = self.ok("surface", {"construct": "ruled", "curves": [{"type": "bezier", "points": A}, B]})["surface"]
+        uu = [0, 0.1, 0.5, 0.77, 1]
+        b = self.ok("eval", {"curve": B, "t": [2 + 2 * u for u in uu]})["points"]
+        for k, u in enumerate(uu):
+            for v in (0, 0.4, 1):
+                want = [(1 - v) * x + v * y for x, y in zip(de_casteljau(A, u), b[k])]
+                self.assert_close(evaluate(s, u, v), want, TIGHT)
+
+    def test_loft_passes_through_its_curves(self):
+        curves = [[[0, 0, z], [1, z * z, z], [2, 1, z], [3, 0, z]] for z in (0, 1, 2.5, 3)]
+        objs = [{"type": "bezier", "points": c} for c in curves]
+        s = self.ok("surface", {"construct": "loft", "curves": objs})["surface"]
+        self.assertEqual(s["degree"], [3, 3])
+        # Default params: the average distance between corresponding control points of
+        # consecutive curves, accumulated and normalised.
+        steps = [sum(math.dist(a, b) for a, b in zip(curves[k], curves[k - 1])) / 4 for k in range(1, 4)]
+        t = [0, steps[0], steps[0] + steps[1], sum(steps)]
+        t = [x / t[-1] for x in t]
+        for k, c in enumerate(curves):
+            for u in (0, 0.3, 0.8, 1):
+                self.assert_close(evaluate(s, u, t[k]), de_casteljau(c, u), 1e-12)  # one dense solve: 1e-12
+        s = self.ok("surface", {"construct": "loft", "curves": objs, "degree": 1, "params": [0, 1, 2, 5]})["surface"]
+        for k, c in enumerate(curves):
+            self.assert_close(evaluate(s, 0.6, [0, 1, 2, 5][k]), de_casteljau(c, 0.6), 1e-12)
+
+    def test_coons(self):
+        # Boundaries: c0 (v = 0) and c1 (v = 1) in u, d0 (u = 0) and d1 (u = 1) in v.
+        c0 = [[0, 0, 0], [1, 0, 1], [2, 0, 0]]
+        c1 = [[0, 2, 0], [0.7, 2, -1], [1.4, 2, 0.5], [2, 2, 0]]
+        d0 = [[0, 0, 0], [0, 1, 2], [0, 2, 0]]
+        d1 = [[2, 0, 0], [2, 2, 0]]
+        objs = [{"type": "bezier", "points": c} for c in (c0, c1, d0, d1)]
+        s = self.ok("surface", {"construct": "coons", "curves": objs})["surface"]
+        for t in (0, 0.25, 0.6, 1):
+            self.assert_close(evaluate(s, t, 0), de_casteljau(c0, t), TIGHT)
+            self.assert_close(evaluate(s, t, 1), de_casteljau(c1, t), TIGHT)
+            self.assert_close(evaluate(s, 0, t), de_casteljau(d0, t), TIGHT)
+            self.assert_close(evaluate(s, 1, t), de_casteljau(d1, t), TIGHT)
+        # Inside: ruled in v + ruled in u - bilinear, from the boundaries written here.
+        for u, v in [(0.3, 0.4), (0.8, 0.1)]:
+            rv = [(1 - v) * a + v * b for a, b in zip(de_casteljau(c0, u), de_casteljau(c1, u))]
+            ru = [(1 - u) * a + u * b for a, b in zip(de_casteljau(d0, v), de_casteljau(d1, v))]
+            bl = [(1 - u) * (1 - v) * p00 + (1 - u) * v * p01 + u * (1 - v) * p10 + u * v * p11
+                  for p00, p01, p10, p11 in zip(c0[0], c1[0], c0[-1], c1[-1])]
+            self.assert_close(evaluate(s, u, v), [a + b - c for a, b, c in zip(rv, ru, bl)], TIGHT)
+        objs[3] = {"type": "bezier", "points": [[2, 0, 0], [2, 2, 0.001]]}
+        self.bad("surface", {"construct": "coons", "curves": objs}, where="curves[3]", contains="the corners do not meet")
+
+    def test_interpolate_and_fit(self):
+        rng = random.Random(7)
+        rows, cols = 6, 5
+        Q = [[[i + rng.uniform(-0.2, 0.2), j + rng.uniform(-0.2, 0.2), math.sin(i) * math.cos(j)] for j in range(cols)]
+             for i in range(rows)]
+        s = self.ok("surface", {"construct": "interpolate", "points": Q})["surface"]
+        self.assertEqual(s["degree"], [3, 3])
+
+        def params(G):
+            # chord lengths per line, normalised, averaged over the lines [PT97, A9.3]
+            t = [0.0] * len(G)
+            for j in range(len(G[0])):
+                d = [math.dist(G[i][j], G[i - 1][j]) for i in range(1, len(G))]
+                acc = 0
+                for i in range(1, len(G)):
+                    acc += d[i - 1]
+                    t[i] += acc / sum(d)
+            return [x / len(G[0]) for x in t]
+
+        tu = params(Q)
+        tv = params([list(c) for c in zip(*Q)])
+        for i in range(rows):
+            for j in range(cols):
+                self.assert_close(evaluate(s, tu[i], tv[j]), Q[i][j], 1e-12)  # two dense solves: 1e-12
+        r = self.ok("surface", {"construct": "fit", "points": Q, "degree": [2, 2], "control_points": [4, 4]})
+        f = r["surface"]
+        U, V = f["knots"]
+        # The least-squares oracle: min |(N_u x N_v) c - q| over the whole grid, by lstsq.
+        Nu = np.array([[basis(U, 2, i, t) for i in range(4)] for t in tu], dtype=float)
+        Nv = np.array([[basis(V, 2, j, t) for j in range(4)] for t in tv], dtype=float)
+        A = np.kron(Nu, Nv)
+        q = np.array([Q[i][j] for i in range(rows) for j in range(cols)])
+        c, *_ = np.linalg.lstsq(A, q, rcond=None)
+        got = np.array([x for row in f["points"] for x in row])
+        self.assertLess(np.abs(got - c).max(), 1e-10)  # two QR solves against one: conditioning ~1e2
+        err = max(math.dist(evaluate(f, tu[i], tv[j]), Q[i][j]) for i in range(rows) for j in range(cols))
+        self.assertAlmostEqual(r["max_error"], err, delta=1e-12)
+
+
+class SurfaceOpsTest(CliTest):
+    def check_same(self, a, b, uvs, tol=TIGHT):
+        for u, v in uvs:
+            self.assert_close(evaluate(b, u, v), evaluate(a, u, v), tol, f"at {u}, {v}")
+
+    def test_split_elevate_insert_to_bezier_isocurve(self):
+        rng = random.Random(3)
+        s = random_nurbs(rng)
+        uvs = grid(5)
+        halves = self.ok("split", {"surface": s, "direction": "v", "t": 0.45})["surfaces"]
+        self.assertEqual(halves[0]["knots"][1][-1], 0.45)
+        self.check_same(s, halves[0], [(u, v) for u, v in uvs if v <= 0.45])
+        self.check_same(s, halves[1], [(u, v) for u, v in uvs if v >= 0.45])
+        e = self.ok("elevate", {"surface": s, "direction": "u", "times": 2})["surface"]
+        self.assertEqual(e["degree"], [5, 2])
+        self.check_same(s, e, uvs)
+        k = self.ok("insert_knot", {"surface": s, "direction": "u", "knot": 0.3, "times": 2})["surface"]
+        self.assertEqual(sum(1 for x in k["knots"][0] if x == 0.3), 2)
+        self.check_same(s, k, uvs)
+        b = self.ok("to_bezier", {"surface": s})
+        ub, vb = b["breaks"]
+        self.assertEqual(ub, sorted(set(s["knots"][0])))
+        self.assertEqual(vb, sorted(set(s["knots"][1])))
+        for i in range(len(ub) - 1):
+            for j in range(len(vb) - 1):
+                patch = b["patches"][i][j]
+                self.assertEqual(patch["type"], "rational_bezier_surface")
+                for x, y in [(0, 0), (0.3, 0.9), (1, 1)]:
+                    u, v = ub[i] + x * (ub[i + 1] - ub[i]), vb[j] + y * (vb[j + 1] - vb[j])
+                    self.assert_close(evaluate(patch, x, y), evaluate(s, u, v), TIGHT)
+        c = self.ok("isocurve", {"surface": s, "direction": "u", "value": 0.6})["curve"]
+        self.assertEqual(c["type"], "nurbs")
+        ts = [0, 0.2, 0.5, 0.9, 1]
+        got = self.ok("eval", {"curve": c, "t": ts})["points"]
+        for t, g in zip(ts, got):
+            self.assert_close(g, evaluate(s, 0.6, t), TIGHT)
+        # Bézier: split halves on [0, 1], the isocurve a Bézier curve.
+        bz = {"type": "bezier_surface", "points": [[[0, 0], [0, 1], [1, 2]], [[2, 0], [2, 1], [3, 3]]]}
+        h = self.ok("split", {"surface": bz, "direction": "u", "t": 0.25})["surfaces"]
+        self.assert_close(evaluate(h[1], 0.5, 0.3), evaluate(bz, 0.625, 0.3), TIGHT)
+        c = self.ok("isocurve", {"surface": bz, "direction": "v", "value": 0.3})["curve"]
+        self.assertEqual(c["type"], "bezier")
+        self.assert_close(de_casteljau(c["points"], 0.7), evaluate(bz, 0.7, 0.3), TIGHT)
+
+    def test_round_trip_and_errors(self):
+        s = random_nurbs(random.Random(11))
+        e = self.ok("elevate", {"surface": s, "direction": "u", "times": 1})
+        self.assertEqual(self.ok("to_bezier", {"surface": {"type": "bezier_surface", "points": [[[0.1, 0.7]]]}})["patches"][0][0],
+                         {"type": "bezier_surface", "points": [[[0.1, 0.7]]]})
+        self.assertIn("surface", e)
+        ragged = {"type": "bezier_surface", "points": [[[0, 0], [1, 0], [2, 0], [3, 0]], [[0, 1], [1, 1], [2, 1], [3, 1]],
+                                                       [[0, 2], [1, 2], [2, 2]]]}
+        err = self.bad("eval", {"surface": ragged, "uv": [[0, 0]]}, where="surface.points[2]")
+        self.assertIn("row 2 has 3 points, row 0 has 4", err)
+        bad_knots = dict(s, knots=[s["knots"][0], [0, 0, 0, 0.7, 0.5, 1, 1, 1]][:2])
+        bad_knots["knots"][1] = [0, 0, 0, 0.7, 0.5, 1, 1]
+        self.bad("eval", {"surface": bad_knots, "uv": [[0, 0]]}, where="surface.knots[1][4]",
+                 contains="knots must be non-decreasing (0.5 after 0.7)")
+        self.bad("eval", {"surface": dict(s, weights=s["weights"][:4]), "uv": [[0, 0]]}, where="surface.weights")
+        self.bad("eval", {"surface": s, "uv": [[0, 0], [1]]}, where="uv[1]")
+        self.bad("surface", {"construct": "sweep"}, where="construct", contains="unknown construction 'sweep' (extrude, ruled,")
+        self.bad("surface", {"construct": "extrude", "curve": {"type": "bezier", "points": [[0, 0], [1, 0]]}, "vector": [0, 1],
+                             "angle": 1}, where="angle", contains="unknown field")
+        flat = {"type": "bezier_surface", "points": [[[0, 0], [0, 1]], [[1, 0], [1, 1]]]}
+        self.bad("eval", {"surface": flat, "uv": [[0, 0]], "normal": True}, where="normal", contains="3-D")
+        self.bad("insert_knot", {"surface": flat, "direction": "u", "knot": 0.5}, where="surface", contains="bspline_surface")
+        self.bad("split", {"surface": s, "direction": "w", "t": 0.5}, where="direction")
+        self.bad("eval", {"surface": dict(s, type="torus_surface"), "uv": [[0, 0]]}, where="surface.type")
+        # --jsonl: curve and surface requests of one command, one response line each.
+        rc, out, err = test_cli.run("eval", args=["--jsonl"], text=json.dumps({"curve": {"type": "bezier", "points": [[0], [2]]}, "t": [0.5]})
+                                    + "\n" + json.dumps({"surface": {"type": "bezier_surface", "points": [[[0], [2]]]}, "uv": [[0.5, 0.5]]}) + "\n")
+        self.assertEqual((rc, err), (0, ""))
+        self.assertEqual([json.loads(l) for l in out.splitlines()], [{"points": [[1]]}, {"points": [[1]]}])
+        # A request may not hold both.
+        self.bad("eval", {"surface": flat, "curve": {"type": "bezier", "points": [[0]]}, "uv": [[0, 0]]}, where="curve")
+
+
+class SurfaceQueryTest(CliTest):
+    def test_area_closed_forms(self):
+        r, R, a = 1.5, 3.0, 1.0
+        sphere = self.ok("surface", {"construct": "revolve", "curve": semicircle(r), "axis": Z_AXIS})["surface"]
+        # Quadrature to 1e-10 relative (the contract's target).
+        self.assertAlmostEqual(self.ok("area", {"surface": sphere})["area"] / (4 * math.pi * r * r), 1, delta=1e-10)
+        line = {"type": "bezier", "points": [[2, 0, 0], [2, 0, 5]]}
+        cyl = self.ok("surface", {"construct": "revolve", "curve": line, "axis": Z_AXIS, "angle": 2})["surface"]
+        self.assertAlmostEqual(self.ok("area", {"surface": cyl})["area"] / (2 * 2 * 5), 1, delta=1e-10)
+        cone = self.ok("surface", {"construct": "revolve", "curve": {"type": "bezier", "points": [[0, 0, 1], [1, 0, 0]]},
+                                   "axis": Z_AXIS})["surface"]
+        self.assertAlmostEqual(self.ok("area", {"surface": cone})["area"] / (math.pi * math.sqrt(2)), 1, delta=1e-10)
+        # z = xy over the unit square: the integral of sqrt(1 + x^2 + y^2), by mpmath.quad.
+        hp = {"type": "bezier_surface", "points": [[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]]}
+        want = float(mpmath.quad(lambda x, y: mpmath.sqrt(1 + x * x + y * y), [0, 1], [0, 1]))
+        self.assertAlmostEqual(self.ok("area", {"surface": hp})["area"] / want, 1, delta=1e-10)
+
+    def test_bounds(self):
+        r = 1.5
+        # A sphere about an oblique axis through its centre C: the profile is the half
+        # circle from C - r d to C + r d through C + r e (e = z, perpendicular to d).
+        C, d, e = [1, 2, 3], [HALF, HALF, 0], [0, 0, 1]
+        pt = lambda a, b: [C[i] + r * (a * d[i] + b * e[i]) for i in range(3)]
+        profile = {"type": "nurbs", "degree": 2, "knots": [0, 0, 0, 0.5, 0.5, 1, 1, 1],
+                   "points": [pt(-1, 0), pt(-1, 1), pt(0, 1), pt(1, 1), pt(1, 0)], "weights": [1, HALF, 1, HALF, 1]}
+        sphere = self.ok("surface", {"construct": "revolve", "curve": profile, "axis": {"point": C, "direction": [1, 1, 0]}})["surface"]
+        b = self.ok("bounds", {"surface": sphere})
+        diag = 2 * r * math.sqrt(3)
+        for k, c in enumerate((1, 2, 3)):
+            # Containing (up to the rounding of the data: the profile's points C + r d are
+            # rounded, so the surface itself may fall short of c +- r by an ulp or two of
+            # the coordinates), and each side within 1e-9 of the diagonal (the contract).
+            ulps = 8 * 2.0 ** -52 * (abs(c) + r)
+            self.assertLessEqual(b["min"][k], c - r + ulps)
+            self.assertGreaterEqual(b["min"][k], c - r - 1e-9 * diag)
+            self.assertGreaterEqual(b["max"][k], c + r - ulps)
+            self.assertLessEqual(b["max"][k], c + r + 1e-9 * diag)
+        # A random NURBS surface: the true extremes by dense sampling refined with a local
+        # optimiser on the evaluator written here (scipy.optimize, bounded).
+        from scipy.optimize import minimize
+        s = random_nurbs(random.Random(23))
+        b = self.ok("bounds", {"surface": s})
+        pts = {(u, v): evaluate(s, u, v) for u, v in grid(20)}
+        for k in range(3):
+            for sign, key in ((1, "min"), (-1, "max")):
+                u0, v0 = min(pts, key=lambda x: sign * pts[x][k])
+                res = minimize(lambda x: sign * evaluate(s, min(max(x[0], 0), 1), min(max(x[1], 0), 1))[k], [u0, v0],
+                               bounds=[(0, 1), (0, 1)], method="L-BFGS-B", options={"ftol": 1e-15, "gtol": 1e-12})
+                extreme = sign * res.fun
+                lo, hi = [min(p[i] for p in pts.values()) for i in range(3)], [max(p[i] for p in pts.values()) for i in range(3)]
+                size = math.dist(lo, hi)
+                # Containing: beyond every point found; tight: within 1e-9 of the size from
+                # the optimiser's extreme (itself a point of the surface, so never beyond
+                # the true extreme).
+                self.assertLessEqual(sign * b[key][k], sign * extreme + 1e-15 * size)
+                self.assertGreaterEqual(sign * b[key][k], sign * extreme - 1e-9 * size)
+
+
+class SurfaceHelpTest(CliTest):
+    def test_help_examples_match_program_output_self_consistency(self):
+        # A consistency check of the help texts (as test_cli.py's for the curve commands):
+        # the printed response is the program's own; the values are checked above.
+        for c in ("surface", "isocurve"):
+            rc, out, err = test_cli.run(c, args=["--help"])
+            self.assertEqual((rc, err), (0, ""))
+            lines = out.splitlines()
+            i = next(i for i, l in enumerate(lines) if l.strip().startswith("echo '"))
+            request = lines[i].strip()[len("echo '"):lines[i].strip().index("' |")]
+            self.assertEqual(json.loads(test_cli.run(c, text=request)[1]), json.loads(lines[i + 1]), c)
+
+
+if __name__ == "__main__":
+    test_cli.BINARY = os.path.abspath(sys.argv.pop(1))
+    unittest.main()
