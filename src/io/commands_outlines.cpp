@@ -30,16 +30,6 @@ constexpr Field to_svg_path_fields[] = {
      "> 0: how far (at equal parameters) an approximating cubic may stray; required when a piece has no exact SVG form"},
 };
 
-/// A Bézier piece as curve JSON.
-OrderedJson bezier_json(const Bezier<double, 2>& b) {
-  OrderedJson points = OrderedJson::array();
-  for (const auto& p : b.points()) points.push_back(to_json(p));
-  OrderedJson j;
-  j["type"] = "bezier";
-  j["points"] = std::move(points);
-  return j;
-}
-
 Response glyph(const Args& a) {
   const GlyphRun run = io::glyph_outlines(a.string("font"), a.string("text"), a.optional_number("size"));
   OrderedJson glyphs = OrderedJson::array();
@@ -51,10 +41,13 @@ Response glyph(const Args& a) {
     if (g.contours.empty()) {
       j["curve"] = nullptr;
     } else {
+      // The pieces through the curve writer; the two path levels are built here, as a
+      // Path is flat (the writer would splice the contours into one path with breaks,
+      // where the answer is a path of closed contour paths on the default breaks).
       OrderedJson contours = OrderedJson::array();
       for (const auto& contour : g.contours) {
         OrderedJson segments = OrderedJson::array();
-        for (const auto& b : contour) segments.push_back(bezier_json(b));
+        for (const auto& b : contour) segments.push_back(to_json(AnyCurve(b)));
         OrderedJson c;
         c["type"] = "path";
         c["segments"] = std::move(segments);

@@ -648,14 +648,29 @@ AnyCurve read_arc(const Fields& f) {
   const double r = positive_from_json(f.required("radius"), "radius");
   const double a0 = number_from_json(f.required("start_angle"), "start_angle");
   const double a1 = number_from_json(f.required("end_angle"), "end_angle");
-  if (!(a1 > a0)) {
-    throw InvalidArgument("end_angle", "must be greater than start_angle (the arc runs counter-clockwise from start to end), got " +
-                                           casteljau::detail::format_number(a1) + " <= " + casteljau::detail::format_number(a0));
+  // Counter-clockwise from start to end: end > start sweeps end - start (at most 2 pi);
+  // end < start wraps, sweeping counter-clockwise from the start direction to the end
+  // direction, less than a full turn (start 3 pi / 2, end pi / 2: the left half circle).
+  const double two_pi = 2 * std::numbers::pi;
+  double end = a1;
+  if (a1 == a0) {
+    throw InvalidArgument("end_angle", "equals start_angle, an empty arc: it must be greater than start_angle (at most 2 pi "
+                                       "more: start_angle + 2 pi is the full circle) or smaller (the arc wraps past 2 pi)");
   }
-  if (!(a1 - a0 <= 2 * std::numbers::pi)) {
+  if (a1 < a0) {
+    const double sweep = std::fmod(a1 - a0, two_pi) + two_pi;  // in (0, 2 pi]
+    if (!(sweep < two_pi)) {
+      throw InvalidArgument("end_angle", "end_angle " + casteljau::detail::format_number(a1) + " is start_angle " +
+                                             casteljau::detail::format_number(a0) +
+                                             " less a whole number of turns: the arc from a direction back to itself is "
+                                             "ambiguous (for the full circle give end_angle = start_angle + 2 pi)");
+    }
+    end = a0 + sweep;
+  }
+  if (!(end - a0 <= two_pi)) {
     throw InvalidArgument("end_angle", "the sweep end_angle - start_angle must be at most 2 pi, got " + casteljau::detail::format_number(a1 - a0));
   }
-  return AnyCurve(nurbs_ellipse_arc(O.points<2>()[0], Vector<double, 2>(r, 0.0), Vector<double, 2>(0.0, r), a0, a1));
+  return AnyCurve(nurbs_ellipse_arc(O.points<2>()[0], Vector<double, 2>(r, 0.0), Vector<double, 2>(0.0, r), a0, end));
 }
 
 thread_local int path_depth = 0;

@@ -7,6 +7,7 @@
 #include <string>
 #include <variant>
 
+#include "casteljau/algo/scalar_forms.hpp"  // query_work, max_query_work
 #include "casteljau/io/any_curve.hpp"
 
 namespace casteljau::io::limits {

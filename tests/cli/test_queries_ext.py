@@ -513,6 +513,151 @@ class CurveParameterInErrorsTest(CliTest):
         self.bad("param_at_length", {"curve": p, "lengths": [100]}, "lengths[0]", contains="got 100")
 
 
+# ---------------------------------------------------------------------------------------
+# The same conic, queries that needed forms without cancellation (issue 15, section 6):
+# its derivative, curvature, arc length over a part of its domain and the parameter at an
+# arc length. Closed forms written here: with u = t / (1 - t) and Q = 1 + 2 w u + u^2,
+# the conic's offsets from the corner (1, 1) are (u^2, 1) / Q, so that
+#   R'(t) = v / W^2, v = (-2 t ((1 - t) + w t), 2 (1 - t) (t + w (1 - t))), W the weight
+#   function (1 - t)^2 + 2 w t (1 - t) + t^2 (from the derivatives of t^2 / W and
+#   (1 - t)^2 / W, which are 1 - x and 1 - y), and the curvature 4 w W^3 / |v|^3 (the cross
+#   product v x v' simplifies to 4 w W);
+#   the speed in z = ln u is u |(2 u (1 + w u), -2 (w + u))| / Q^2,
+# every term positive: no cancellation at any weight, so 40 digits suffice.
+
+def conic_derivative(w, t):
+    w, t = mpf(w), mpf(t)
+    W = (1 - t) ** 2 + 2 * w * t * (1 - t) + t ** 2
+    return [-2 * t * ((1 - t) + w * t) / W ** 2, 2 * (1 - t) * (t + w * (1 - t)) / W ** 2], W
+
+
+def conic_curvature(w, t):
+    v, W = conic_derivative(w, t)
+    v = [x * W ** 2 for x in v]
+    return 4 * mpf(w) * W ** 3 / mpmath.norm(v) ** 3
+
+
+def conic_length(w, t0, t1):
+    """The arc length over [t0, t1], integrated in z = ln(t / (1 - t)) with breakpoints at
+    the two scales where the speed concentrates (z = -+ln(2w)); an end at 0 or 1 is
+    replaced by 60 units beyond them (the tail there is below e^-60)."""
+    w = mpf(w)
+    def speed(z):
+        u = mpmath.exp(z)
+        Q = 1 + 2 * w * u + u * u
+        return u * mpmath.sqrt((2 * u * (1 + w * u)) ** 2 + (2 * (w + u)) ** 2) / Q ** 2
+    edge = abs(mpmath.log(2 * w)) + 60
+    z0 = -edge if t0 == 0 else mpmath.log(mpf(t0) / (1 - mpf(t0)))
+    z1 = edge if t1 == 1 else mpmath.log(mpf(t1) / (1 - mpf(t1)))
+    pts = sorted({z0, z1} | {z for z in (-mpmath.log(2 * w), mpf(0), mpmath.log(2 * w)) if z0 < z < z1})
+    # mpmath's target is absolute (about 10^-dps): a length of 1e-100 near the corner is
+    # integrated times w, of size 1.
+    k = max(w, mpf(1))
+    return mpmath.quad(lambda z: k * speed(z), pts) / k
+
+
+class ExtremeWeightsFormsTest(CliTest):
+    WS = (1e16, 1e30, 1e100, 1e200, 1e300, 1e-16, 1e-100, 1e-200)
+
+    @staticmethod
+    def forms(w):
+        c = conic(w)
+        return [c, {"type": "nurbs", "degree": 2, "knots": [0, 0, 0, 1, 1, 1], "points": c["points"], "weights": c["weights"]}]
+
+    def assert_rel(self, got, want, tol, msg):
+        self.assertLessEqual(abs(got - float(want)), tol * abs(float(want)), (got, float(want), msg))
+
+    def test_derivative(self):
+        # R' is a sum of positive multiples of the legs: each coordinate to a few eps of
+        # itself (1e-14: 16 eps of rounding in the weights' products and the sum). It was
+        # lost where the curve hugs its polygon: 0 for 2e-30 at t = 1/2, w = 1e30.
+        ts = [0, 0.25, 0.5, 0.75, 1]
+        with mpmath.workdps(40):
+            for w in self.WS:
+                wants = [conic_derivative(w, t)[0] for t in ts]
+                for c in self.forms(w):
+                    got = self.ok("eval", {"curve": c, "t": ts, "derivatives": 1})["derivatives"][0]
+                    for t, g, want in zip(ts, got, wants):
+                        for k in range(2):
+                            if want[k] == 0:
+                                self.assertEqual(g[k], 0.0, (w, t, c["type"]))
+                            else:
+                                self.assert_rel(g[k], want[k], 1e-14, (w, t, k, c["type"]))
+
+    def test_curvature(self):
+        # The curvature, 4 w W^3 / |v|^3: 1.4e30 at the corner for w = 1e30 (refused as a
+        # zero velocity before), 1.4e-100 at t = 1/2 for w = 1e-100 (-0.0 before: the
+        # part of R'' normal to the chord was rounded away). 1e-13: a few eps of the
+        # numerator's and the speed's terms, cubed.
+        ts = [0.25, 0.5, 0.75]
+        with mpmath.workdps(40):
+            for w in self.WS:
+                for c in self.forms(w):
+                    got = self.ok("eval", {"curve": c, "t": ts, "curvature": True})["curvature"]
+                    for t, g in zip(ts, got):
+                        self.assert_rel(g, conic_curvature(w, t), 1e-13, (w, t, c["type"]))
+            # At the ends the curvature is 1 / (2 w^2): 5e199 for w = 1e-100; 5e399 for
+            # w = 1e-200 is beyond double (refused, naming t); 5e-401 for w = 1e200
+            # underflows to 0.
+            self.assert_rel(self.ok("eval", {"curve": conic(1e-100), "t": [0], "curvature": True})["curvature"][0],
+                            conic_curvature(1e-100, 0), 1e-13, "end")
+            self.bad("eval", {"curve": conic(1e-200), "t": [0.5, 0], "curvature": True}, "t[1]", contains="not representable")
+            self.assertEqual(self.ok("eval", {"curve": conic(1e200), "t": [1], "curvature": True})["curvature"], [0.0])
+
+    def test_length_of_a_part(self):
+        # Over [1/4, 3/4] the curve stays within 1/w of the corner: length 2.1e-30 at
+        # w = 1e30 (0 before: the portion's control points round to the corner), and
+        # across the legs' ends. 1e-12 relative: the quadrature's target (docs/accuracy.md).
+        with mpmath.workdps(25):  # the integrand has no cancellation; 1e-12 is asked
+            for w in (1e16, 1e30, 1e300, 1e-100, 1e-200):
+                for t0, t1 in ((0.25, 0.75), (0, 0.3), (1e-300, 1)):
+                    want = conic_length(w, t0, t1)
+                    for c in self.forms(w):
+                        got = self.ok("length", {"curve": c, "from": t0, "to": t1})["length"]
+                        self.assert_rel(got, want, 1e-12, (w, t0, t1, c["type"]))
+
+    def test_param_at_length(self):
+        # The arc length up to each t returned is the one asked for within 1e-12 of the
+        # length (the quadrature's target), or no double is: near t = 1 the second leg is
+        # passed within 1e-100 of 1, and t = 1 answers 1.5 (the arc lengths at the doubles
+        # either side of t bracket it). Before, lengths[2] = 1 gave t = 1 (arc length 2,
+        # where t = 1/2 has 1 - 1e-100) at w >= 1e100.
+        with mpmath.workdps(25):
+            for w in (1e16, 1e100, 1e300):
+                total = conic_length(w, 0, 1)
+                ss = [0.25, 0.5, 1.0, 1.5, 1.75]
+                arc_to = {0.0: mpf(0), 1.0: total}  # t -> the arc length from 0 (both forms mostly agree on t)
+                def arc(t):
+                    if t not in arc_to:
+                        arc_to[t] = conic_length(w, 0, t)
+                    return arc_to[t]
+                for c in self.forms(w):
+                    ts = self.ok("param_at_length", {"curve": c, "lengths": ss})["t"]
+                    for s, t in zip(ss, ts):
+                        tol = 1e-12 * float(total)
+                        if abs(arc(t) - s) <= tol:
+                            continue
+                        # Else no double may do better: s lies between the arc lengths at the
+                        # doubles either side, neither of which is within the tolerance.
+                        lo = arc(math.nextafter(t, 0)) if t > 0 else mpf(0)
+                        hi = arc(math.nextafter(t, 1)) if t < 1 else total
+                        self.assertTrue(lo <= s <= hi and abs(lo - s) > tol and abs(hi - s) > tol,
+                                        (w, c["type"], s, t, float(arc(t)), float(lo), float(hi)))
+
+    def test_scaled_circle(self):
+        # The NURBS circle of radius 2 with every weight times 1e300 or 1e-300 (the same
+        # curve): curvature 1/2 everywhere, the first quarter pi long.
+        s = math.sqrt(0.5)
+        P = [[2, 0], [2, 2], [0, 2], [-2, 2], [-2, 0], [-2, -2], [0, -2], [2, -2], [2, 0]]
+        for f in (1e300, 1e-300):
+            c = {"type": "nurbs", "degree": 2, "knots": [0, 0, 0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1, 1, 1],
+                 "points": P, "weights": [f * x for x in [1, s, 1, s, 1, s, 1, s, 1]]}
+            got = self.ok("eval", {"curve": c, "t": [0, 0.1, 0.3, 0.9], "curvature": True})["curvature"]
+            self.assert_close(got, [0.5] * 4, 1e-15)
+            # 1e-12 relative: the quadrature's target.
+            self.assert_rel(self.ok("length", {"curve": c, "from": 0, "to": 0.25})["length"], math.pi, 1e-12, f)
+
+
 if __name__ == "__main__":
     test_cli.BINARY = sys.argv.pop(1)
     unittest.main()

@@ -154,6 +154,37 @@ class ShorthandTest(CliTest):
         A = self.ok("area", {"curve": ellipse([2, -1], [a, b], rotation=0.3)})["area"]
         self.assertAlmostEqual(A, math.pi * a * b, delta=1e-12 * a * b)
 
+    def test_arc_wraps_when_end_is_below_start(self):
+        # Counter-clockwise from start to end (docs/cli.md): an end angle below the start
+        # sweeps from the start direction on to the end direction, less than a full turn.
+        # From 3 pi / 2 to pi / 2: the left half circle (sweep pi); from 1 to -7 (the
+        # direction -7 + 4 pi): sweep -7 + 4 pi - 1 = 4 pi - 8; from 0.5 to 0.25: all but
+        # a quarter radian.
+        r, C = 2.0, [1, -1]
+        for a0, a1, sweep in ((1.5 * math.pi, 0.5 * math.pi, math.pi), (1.0, -7.0, 4 * math.pi - 8), (0.5, 0.25, 2 * math.pi - 0.25)):
+            c = arc(C, r, a0, a1)
+            ts = [i / 16 for i in range(17)]
+            pts = self.ok("eval", {"curve": c, "t": ts})["points"]
+            # Every point on the circle, the angle running from a0 to a0 + sweep
+            # (increasing: counter-clockwise), ending at the direction a1. 1e-15 * 4:
+            # a few eps of the coordinates, as above.
+            prev = None
+            for t, p in zip(ts, pts):
+                self.assertAlmostEqual(math.dist(p, C), r, delta=1e-15 * 4)
+                ang = math.atan2(p[1] - C[1], p[0] - C[0])
+                rel = (ang - a0) % (2 * math.pi)
+                if t == 0:
+                    rel = 0.0
+                elif t == 1:
+                    rel = sweep
+                if prev is not None:
+                    self.assertGreater(rel, prev, (a0, a1, t))
+                prev = rel
+            self.assertAlmostEqual(pts[-1][0], C[0] + r * math.cos(a1), delta=1e-15 * 8)
+            self.assertAlmostEqual(pts[-1][1], C[1] + r * math.sin(a1), delta=1e-15 * 8)
+            # Its length is r times the sweep (the length query's 1e-12 relative).
+            self.assertAlmostEqual(self.ok("length", {"curve": c})["length"], r * sweep, delta=1e-11 * r * sweep)
+
     def test_circle_in_3d(self):
         for n in ([0, 0, 1], [0, 1, 1], [1, 2, -3], [1e-200, 0, 0], [5, 5, 5]):
             C, r = [1, -2, 0.5], 1.5
@@ -216,7 +247,7 @@ class ShorthandTest(CliTest):
         bad(ellipse([0, 0], [1, 2], normal=[0, 0, 1]), "normal", "unknown field")
         bad(ellipse([0, 0, 0], [1, 2]), "center")
         bad(arc([0, 0], 1, 1, 1), "end_angle", "greater")
-        bad(arc([0, 0], 1, 1, 0), "end_angle")
+        bad(arc([0, 0], 1, 2 * math.pi, 0), "end_angle", "ambiguous")
         bad(arc([0, 0], 1, 0, 7), "end_angle", "2 pi")
         bad({"type": "arc", "center": [0, 0], "radius": 1, "start_angle": 0}, "end_angle", "missing")
         bad(arc([0, 0], 0, 0, 1), "radius")

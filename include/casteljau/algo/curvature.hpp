@@ -35,13 +35,27 @@ std::optional<T> curvature_of(const Vector<T, D>& d1, const Vector<T, D>& d2) {
   }
 }
 
+namespace detail {
+/// Curvature of a Bézier piece at t: a rational piece on [0, 1] (degree <= 24) from its
+/// jet (rational_jet: the numerator R' ^ R'' as a sum over triples of control points with
+/// positive coefficients, exact in sign and relative size where the curve hugs its chord
+/// or its control polygon), every other from the first two derivatives.
+template <class Piece>
+std::optional<typename Piece::Scalar> piece_curvature(const Piece& s, typename Piece::Scalar t) {
+  if constexpr (requires { s.jet(t, true); }) {
+    if (t >= 0 && t <= 1 && s.degree() <= rational_jet_max_degree) return jet_curvature(s.jet(t, true));
+  }
+  return curvature_of(s.derivative_at(t, 1), s.derivative_at(t, 2));
+}
+}  // namespace detail
+
 /// Curvature at t of a differentiable curve (see curvature_of): std::nullopt where the
 /// speed is zero. The derivatives are taken in the curve's own parameter: for a domain
 /// far from unit length use the overload on Pieces, which does not depend on its scale.
 template <DifferentiableCurve C>
   requires(C::dimension >= 2)
 std::optional<typename C::Scalar> curvature(const C& c, typename C::Scalar t) {
-  return curvature_of(c.derivative_at(t, 1), c.derivative_at(t, 2));
+  return detail::piece_curvature(c, t);
 }
 
 /// Curvature at u of a curve given by its exact Bézier pieces (at an interior break the
@@ -57,7 +71,7 @@ std::optional<T> curvature(const Pieces<T, D>& p, T u) {
   // (no structured binding: clang 14 cannot capture one in a lambda)
   const PieceParameter<T> at = p.locate(u);
   const T t = at.t;
-  return std::visit([&](const auto& s) { return curvature_of(s.derivative_at(t, 1), s.derivative_at(t, 2)); }, p.segments()[at.index]);
+  return std::visit([&](const auto& s) { return detail::piece_curvature(s, t); }, p.segments()[at.index]);
 }
 
 }  // namespace casteljau

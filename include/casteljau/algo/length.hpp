@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -96,6 +97,58 @@ T piece_length(const PieceSpeed<T, D>& sp, T t0, T t1, std::vector<QuadratureInt
   return total;
 }
 
+/// The arc length over [a, b] (0 <= a < b <= 1/2) of a rational piece with extreme
+/// weights, integrated in x = log2 t: its speed is concentrated within about 1 / rho of
+/// t = 0 (rho the ratio of its standard-form weights, up to 1e300 and beyond), where
+/// quadrature in t sees nothing, while |R'(t)| t is a bump of width O(1) in x at each
+/// scale where the dominant weight changes. Intervals of 4 in x from log2 b down to log2 a
+/// (to -1200 for a = 0: below, t |R'| < 2^-1200 |R'(0)| is negligible), each integrated
+/// adaptively; the speed by rational_jet (no cancellation, t far below the smallest double).
+/// Appends the partition (x intervals, ascending) to `parts` when given.
+template <class T, int D>
+T log_speed(const RationalBezier<T, D>& c, T x) {
+  JetParameter<T> p;
+  p.e = static_cast<int>(std::floor(x)) + 1;
+  p.m = std::exp2(x - static_cast<T>(p.e));
+  p.s = x < T(-80) ? T(1) : 1 - std::exp2(x);
+  const auto j = rational_jet<T, D>(std::span<const Point<T, D>>(c.points()), std::span<const T>(c.weights()), p, false);
+  return std::ldexp(norm(j.r) * p.m * std::numbers::ln2_v<T>, j.er + p.e);
+}
+
+template <class T, int D>
+T log_side_length(const RationalBezier<T, D>& c, T a, T b, std::vector<QuadratureInterval<T>>* parts = nullptr) {
+  if (!(a < b)) return T(0);
+  const T xb = std::log2(b), xa = a > 0 ? std::log2(a) : T(-1200);
+  auto g = [&](T x) { return log_speed(c, x); };
+  T total = 0;
+  std::vector<QuadratureInterval<T>> ivs;
+  for (T hi = xb; hi > xa;) {
+    const T lo = std::max(xa, hi - 4);
+    try {
+      const auto q = integrate_adaptive<T>(g, lo, hi, arc_length_tolerance<T>);
+      total += q.value;
+      if (parts) ivs.insert(ivs.begin(), q.intervals.begin(), q.intervals.end());
+    } catch (const NumericalError&) {
+      throw NumericalError("the arc length cannot be computed to its accuracy target on this curve: its speed varies too "
+                           "sharply for adaptive quadrature within 4000 intervals");
+    }
+    hi = lo;
+  }
+  if (parts) parts->insert(parts->end(), ivs.begin(), ivs.end());
+  return total;
+}
+
+/// The arc length over [t0, t1] of a rational piece with extreme weights: [t0, 1/2] in
+/// log2 t, [1/2, t1] in log2 (1 - t) on the reversed piece (1 - t is exact there), so that
+/// the ends, where the speed concentrates, are resolved on both sides.
+template <class T, int D>
+T extreme_arc_length(const RationalBezier<T, D>& c, T t0, T t1) {
+  T total = 0;
+  if (t0 < T(0.5)) total += log_side_length(c, t0, std::min(t1, T(0.5)));
+  if (t1 > T(0.5)) total += log_side_length(c.reverse(), 1 - t1, 1 - std::max(t0, T(0.5)));
+  return total;
+}
+
 }  // namespace detail
 
 /// The arc length of the curve between the parameters from <= to (both in the domain):
@@ -126,7 +179,15 @@ typename C::Scalar arc_length(const C& c, typename C::Scalar from, typename C::S
       total += std::ldexp(detail::piece_length<T, D>(sp, t0, t1), sp.f.e);
       return;
     }
-    // Extreme weights: the range's portion, in parts with tame parametrisations.
+    // Extreme weights. A part of the piece: in log t and log (1 - t) (its portion, in
+    // Cartesian control points, rounds away what lies within 1e-30 of a corner).
+    if constexpr (requires { piece.jet(t0, false); }) {
+      if (!(t0 == 0 && t1 == 1) && piece.degree() <= detail::rational_jet_max_degree) {
+        total += detail::extreme_arc_length(piece, t0, t1);
+        return;
+      }
+    }
+    // The whole piece: in parts with tame parametrisations.
     T sum = 0;
     for (const auto& part : detail::regular_parts(t0 == 0 && t1 == 1 ? piece : piece.portion(t0, t1))) {
       const detail::PieceSpeed<T, D> sp(part.piece);
@@ -163,6 +224,26 @@ class ArcLengthTable {
     requires PiecewiseBezierCurve<C>
   explicit ArcLengthTable(const C& c) : pieces_(pieces(c)) {
     pieces_.for_each_piece([&](std::size_t i, const auto& piece, const Interval<T>&) {
+      if constexpr (requires { piece.jet(T(0), false); }) {
+        if (piece.degree() <= detail::rational_jet_max_degree && !detail::regular_parts(piece).front().map.identity) {
+          // Extreme weights: cells in x = log2 t up to t = 1/2, then in x = log2 (1 - t) on
+          // the reversed piece (see detail::extreme_arc_length), so that a length is
+          // located where the speed concentrates and mapped to t without a Möbius map
+          // (whose images round to 1 for every part near the far end).
+          for (int side = 1; side <= 2; ++side) {
+            logs_.push_back(side == 1 ? piece : piece.reverse());
+            std::vector<QuadratureInterval<T>> parts;
+            detail::log_side_length(logs_.back(), T(0), T(0.5), &parts);
+            if (side == 2) std::reverse(parts.begin(), parts.end());
+            for (const auto& q : parts) {
+              // In t order: a side-2 cell starts at its larger x.
+              cells_.push_back({i, logs_.size() - 1, side, side == 1 ? q.a : q.b, side == 1 ? q.b : q.a, total_, q.value});
+              total_ += q.value;
+            }
+          }
+          return;
+        }
+      }
       // One speed per part (the piece itself unless its weights are extreme).
       for (const auto& part : detail::regular_parts(piece)) {
         speeds_.emplace_back(part.piece);
@@ -171,7 +252,7 @@ class ArcLengthTable {
         detail::piece_length<T, D>(speeds_.back(), T(0), T(1), &parts);
         const int e = speeds_.back().f.e;
         for (const auto& q : parts) {
-          cells_.push_back({i, speeds_.size() - 1, q.a, q.b, total_, std::ldexp(q.value, e)});
+          cells_.push_back({i, speeds_.size() - 1, 0, q.a, q.b, total_, std::ldexp(q.value, e)});
           total_ += std::ldexp(q.value, e);
         }
       }
@@ -199,18 +280,49 @@ class ArcLengthTable {
     const Interval<T> dom = pieces_.domain();
     if (s <= 0 || cells_.empty()) return dom.lo;
     if (s >= total_) return dom.hi;
-    // First cell whose end reaches s.
-    const auto it = std::lower_bound(cells_.begin(), cells_.end(), s,
+    // First cell whose end reaches s within the solve's tolerance (below): where the arc
+    // length barely grows (a stretch within 1e-100 of a corner at extreme weights, a
+    // stop) the rounding of the cells' sums (1e-16) must not carry s past it to a
+    // parameter whose arc length is far beyond (t = 1 for s = 1 on the conic with weights
+    // 1, 1e100, 1, arc length 2).
+    const T reach = s - 4 * std::numeric_limits<T>::epsilon() * total_;
+    const auto it = std::lower_bound(cells_.begin(), cells_.end(), reach,
                                      [](const Cell& c, T v) { return c.start + c.length < v; });
     const Cell& cell = it == cells_.end() ? cells_.back() : *it;
     const T target = std::clamp(s - cell.start, T(0), cell.length);
+    if (cell.kind != 0) {
+      // A cell in x = log2 t (kind 1) or x = log2 (1 - t) (kind 2, x decreasing with t):
+      // solved in y = x or -x, along which the arc length grows.
+      const auto& c = logs_[cell.part];
+      const T sgn = cell.kind == 1 ? T(1) : T(-1);
+      auto g = [&](T x) { return detail::log_speed(c, x); };
+      return solve(sgn * cell.a, sgn * cell.b, cell.length, target, [&](T y) { return g(sgn * y); },
+                   [&](T y) {
+                     const T x = sgn * y;
+                     if (y <= sgn * cell.a) return T(0);
+                     return gauss_kronrod_15<T>(g, std::min(x, cell.a), std::max(x, cell.a)).value;
+                   },
+                   [&](T y) {
+                     const T x = sgn * y;
+                     return pieces_.lift(cell.piece, cell.kind == 1 ? std::exp2(x) : 1 - std::exp2(x));
+                   });
+    }
     const auto& scaled_speed = speeds_[cell.part];
     const auto lift = [&](T u) { return pieces_.lift(cell.piece, maps_[cell.part].t_of(u)); };
     const int e = scaled_speed.f.e;
     auto speed = [&](T t) { return std::ldexp(scaled_speed(t), e); };
     auto partial = [&](T t) { return t <= cell.a ? T(0) : std::ldexp(gauss_kronrod_15<T>(scaled_speed, cell.a, t).value, e); };
-    T lo = cell.a, hi = cell.b;
-    T t = cell.a + (cell.b - cell.a) * (cell.length > 0 ? target / cell.length : T(0));
+    return solve(cell.a, cell.b, cell.length, target, speed, partial, lift);
+  }
+
+ private:
+  /// The u in [a, b] where partial(u) = target (partial increasing, its derivative
+  /// speed), lifted to the curve's parameter: Newton's method on a bracket (bisection when
+  /// a step leaves it or the speed is 0).
+  template <class Speed, class Partial, class Lift>
+  T solve(T a, T b, T length, T target, Speed speed, Partial partial, Lift lift) const {
+    T lo = a, hi = b;
+    T t = a + (b - a) * (length > 0 ? target / length : T(0));
     const T goal = 4 * std::numeric_limits<T>::epsilon() * total_;
     for (int it2 = 0; it2 < 200; ++it2) {
       const T r = partial(t) - target;
@@ -227,17 +339,18 @@ class ArcLengthTable {
     throw NumericalError("parameter_at: the arc length solve did not converge in 200 steps");
   }
 
- private:
   struct Cell {
     std::size_t piece;
-    std::size_t part;  // index in speeds_ and maps_
-    T a, b;       // part parameters
+    std::size_t part;  // index in speeds_ and maps_ (kind 0), in logs_ (kinds 1, 2)
+    int kind;          // 0: a part's parameter; 1: x = log2 t; 2: x = log2 (1 - t)
+    T a, b;       // part parameters, or x at the cell's start and end (in t order)
     T start;      // arc length before a
     T length;     // arc length over [a, b]
   };
   Pieces<T, D> pieces_;
   std::vector<detail::PieceSpeed<T, D>> speeds_;
   std::vector<detail::PartMap<T>> maps_;  // part parameter -> piece parameter
+  std::vector<RationalBezier<T, D>> logs_;  // pieces with extreme weights, and their reverses
   std::vector<Cell> cells_;
   T total_ = 0;
 };

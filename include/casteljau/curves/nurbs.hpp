@@ -71,10 +71,12 @@ class Nurbs {
   }
 
   /// The k-th derivative (k >= 0) by the quotient rule on the homogeneous derivatives
-  /// A^(j), w^(j): C^(k) = (A^(k) - sum_{i=1..k} C(k,i) w^(i) C^(k-i)) / w [PT97, A4.2].
+  /// A^(j), w^(j): C^(k) = (A^(k) - sum_{i=1..k} C(k,i) w^(i) C^(k-i)) / w [PT97, A4.2];
+  /// k = 1 inside the domain over pairs of control points (first_derivative).
   [[nodiscard]] VectorType derivative_at(T u, int k = 1) const {
     require_finite(u, "t");
     if (k < 0) throw InvalidArgument("k", "derivative order must be >= 0, got " + std::to_string(k));
+    if (k == 1 && u >= domain().lo && u <= domain().hi) return first_derivative(u);
     std::vector<Point<T, D + 1>> hd(static_cast<std::size_t>(k) + 1);
     for (int j = 0; j <= k; ++j) hd[static_cast<std::size_t>(j)] = Point<T, D + 1>::from_vector(h_.derivative_at(u, j));
     project(hd[0].to_vector(), u);  // the pole check
@@ -82,6 +84,43 @@ class Nurbs {
     detail::quotient_rule<T, D>(hd, k, r.data());
     detail::require_representable(r[static_cast<std::size_t>(k)], static_cast<double>(u), "the derivative");
     return r[static_cast<std::size_t>(k)];
+  }
+
+  /// C'(u) for u in the domain as sum_(i<j) w_i w_j (N_i N_j' - N_i' N_j) (P_j - P_i) / W^2
+  /// over the span's p + 1 basis functions (the quotient rule's numerator A'W - AW'
+  /// antisymmetrised; as detail::rational_jet for a Bézier piece): each pair's weights
+  /// multiply its basis Wronskian, so a large weight does not swamp the others' share
+  /// (weights 1, 1e30, 1: C'(1/2) ~ 1e-30, from terms of size 1 in the quotient rule). Each
+  /// factor is divided by W first (no overflow), the points halved (no overflow of their
+  /// differences). Cost O(p^2 D).
+  [[nodiscard]] VectorType first_derivative(T u) const {
+    const auto& kv = h_.knot_vector();
+    const int p = kv.degree();
+    const std::size_t s = kv.find_span(u), first = s - static_cast<std::size_t>(p);
+    const auto ders = basis_function_derivatives<T>(kv.knots(), p, s, u, 1);
+    const auto np = static_cast<std::size_t>(p) + 1;
+    std::vector<T> a(np), b(np);
+    T W = 0;
+    for (std::size_t j = 0; j < np; ++j) {
+      const T wj = h_.points()[first + j][D];
+      a[j] = wj * ders[0][j];
+      b[j] = wj * ders[1][j];
+      W += a[j];
+    }
+    for (std::size_t j = 0; j < np; ++j) {
+      a[j] /= W;
+      b[j] /= W;
+    }
+    VectorType v{};
+    for (std::size_t i = 0; i < np; ++i)
+      for (std::size_t j = i + 1; j < np; ++j) {
+        VectorType d;
+        for (int c = 0; c < D; ++c) d[c] = P_[first + j][c] / 2 - P_[first + i][c] / 2;
+        v += (a[i] * b[j] - b[i] * a[j]) * d;
+      }
+    v = T(2) * v;
+    detail::require_representable(v, static_cast<double>(u), "the derivative");
+    return v;
   }
 
   [[nodiscard]] Nurbs reverse() const {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "casteljau/curves/bezier.hpp"
+#include "casteljau/curves/rational_jet.hpp"
 
 namespace casteljau {
 
@@ -163,7 +164,9 @@ class RationalBezier {
   }
 
   /// The k-th derivative at t (k >= 0; k = 0 gives the point as a vector from the
-  /// origin), from the homogeneous derivatives A^(j), w^(j) by R^(k) = (A^(k) -
+  /// origin). k = 1 on [0, 1] (degree <= 24): by detail::rational_jet, a sum over pairs
+  /// of control points with positive coefficients (no cancellation at any weights).
+  /// Otherwise from the homogeneous derivatives A^(j), w^(j) by R^(k) = (A^(k) -
   /// sum_{i=1..k} C(k,i) w^(i) R^(k-i)) / w [PT97, eq. 4.8], all computed with the
   /// normalised weights and power-of-two-scaled points; far outside [0, 1] in the reversed
   /// variable u = 1/s (detail::derivatives_for_ratio, evaluate_derivatives). Throws
@@ -173,9 +176,24 @@ class RationalBezier {
     require_finite(t, "t");
     if (k < 0) throw InvalidArgument("k", "derivative order must be >= 0, got " + std::to_string(k));
     if (k == 0) return (*this)(t).to_vector();
+    if (k == 1 && t >= 0 && t <= 1 && degree() <= detail::rational_jet_max_degree) {
+      // Without cancellation (detail::rational_jet): the quotient rule below loses R'
+      // where the curve hugs its control polygon (weights 1, 1e30, 1 at t = 1/2).
+      const auto j = jet(t, false);
+      VectorType v;
+      for (int d = 0; d < D; ++d) v[d] = std::ldexp(j.r[d], j.er);
+      if (!detail::all_finite(v)) detail::throw_not_representable("the derivative of order 1", detail::format_number(t));
+      return v;
+    }
     std::vector<VectorType> r(static_cast<std::size_t>(k) + 1);
     evaluate_derivatives(t, k, r.data());
     return r[static_cast<std::size_t>(k)];
+  }
+
+  /// R'(t) and, with `second`, R' ^ R'' at t in [0, 1] for degree <= 24, computed
+  /// without cancellation from the normalised weights (see detail::rational_jet).
+  [[nodiscard]] detail::RationalJet<T, D> jet(T t, bool second) const {
+    return detail::rational_jet<T, D>(std::span<const PointType>(P_), std::span<const T>(wn_), detail::JetParameter<T>::of(t), second);
   }
 
   /// Subdivision at t in [0, 1] by the rational de Casteljau algorithm on points and
