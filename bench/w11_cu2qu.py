@@ -7,7 +7,7 @@ real_time, time_unit, counters...}]) with names W11/cu2qu/quadratic/<dataset>/<1
 and counters segments, over_tolerance (curves whose deviation exceeds 1.0001 x tol),
 max_deviation: the same two-sided measure as bench/w3.cpp's quad_deviation (the cubic at
 S = 64 + 16 k parameters to the chain, each quadratic at 65 parameters to the cubic, each
-distance from the nearest sample refined by Newton's method).
+distance from every local minimum of the sampled distances refined by Newton's method).
 
 Usage: w11_cu2qu.py DUMP_DIR OUT_JSON [--repetitions N]
 """
@@ -37,8 +37,11 @@ def chain(spline):
     return np.array([[ons[i], off[i], ons[i + 1]] for i in range(n)])
 
 
-def newton(f, p, s, iters=8):
-    """Newton on (x(s) - p) . x'(s) = 0 from s (arrays), clamped to [0, 1]; distances."""
+def newton(f, p, s, lo, hi, iters=8):
+    """Newton on (x(s) - p) . x'(s) = 0 from s (arrays), kept in [lo, hi]; distances: the
+    smaller of the start's and the end's (both points of the curve, so never below the
+    true distance: an iteration that strays cannot inflate it)."""
+    d0 = np.linalg.norm(f(s)[0] - p, axis=-1)
     for _ in range(iters):
         x, d1, d2 = f(s)
         r = x - p
@@ -46,9 +49,26 @@ def newton(f, p, s, iters=8):
         gp = np.sum(d1 * d1, axis=-1) + np.sum(r * d2, axis=-1)
         gp = np.where(gp > 0, gp, np.sum(d1 * d1, axis=-1))
         step = np.where(gp > 0, g / np.where(gp > 0, gp, 1), 0)
-        s = np.clip(s - step, 0, 1)
+        s = np.clip(s - step, lo, hi)
     x = f(s)[0]
-    return np.linalg.norm(x - p, axis=-1)
+    return np.minimum(d0, np.linalg.norm(x - p, axis=-1))
+
+
+def distances(points, f, ts, samples):
+    """The distance from each of `points` to the curve f sampled at parameters ts (points
+    `samples`): every local minimum of the sampled distance (along the samples, the ends
+    included) refined by Newton within its neighbouring samples, the smallest kept. Not only
+    the nearest sample: where the curve passes close to itself, or moves fast, the nearest
+    sample can lie on another branch than the nearest point."""
+    D = np.linalg.norm(points[:, None, :] - samples[None, :, :], axis=2)
+    pad = np.pad(D, ((0, 0), (1, 1)), constant_values=np.inf)
+    rows, cols = np.nonzero((D <= pad[:, :-2]) & (D <= pad[:, 2:]))
+    n = len(ts)
+    s0 = ts[cols]
+    d = newton(f, points[rows], s0, ts[np.maximum(cols - 1, 0)], ts[np.minimum(cols + 1, n - 1)])
+    out = np.full(len(points), np.inf)
+    np.minimum.at(out, rows, d)
+    return out
 
 
 def cubic_f(c):
@@ -74,6 +94,10 @@ def quad_f(q):
 
 
 def deviation(c, qs):
+    """The two-sided distance between the cubic c and its chain qs: the cubic at
+    S = 64 + 16 k parameters (k segments) to the chain, each quadratic at 65 parameters to
+    the cubic; each distance as in distances() (the quadratics sampled at 33 parameters,
+    the cubic at its S)."""
     k = len(qs)
     S = 64 + 16 * k
     cf = cubic_f(c)
@@ -82,15 +106,11 @@ def deviation(c, qs):
     best = np.full(S, np.inf)
     seeds = np.linspace(0, 1, 33)
     for q in qs:
-        qp = quad_f(q)(seeds)[0]
-        near = np.argmin(np.linalg.norm(cp[:, None, :] - qp[None, :, :], axis=2), axis=1)
-        best = np.minimum(best, newton(quad_f(q), cp, seeds[near]))
+        best = np.minimum(best, distances(cp, quad_f(q), seeds, quad_f(q)(seeds)[0]))
     worst = best.max()
     qs_t = np.linspace(0, 1, 65)
     for q in qs:
-        qp = quad_f(q)(qs_t)[0]
-        near = np.argmin(np.linalg.norm(qp[:, None, :] - cp[None, :, :], axis=2), axis=1)
-        worst = max(worst, newton(cf, qp, ts[near]).max())
+        worst = max(worst, distances(quad_f(q)(qs_t)[0], cf, ts, cp).max())
     return worst
 
 
