@@ -249,29 +249,32 @@ def w3_tables(rows):
 
 
 def w11_table(rows):
-    """W11, quadratic approximation: casteljau's rows (the W3 program) and cu2qu's (bench/w11_cu2qu.py)
-    side by side per dataset and tolerance; goals: 0 over tolerance, fewer segments and less time
-    than cu2qu."""
-    headers = ["dataset/tolerance", "library", "ms", "us/curve", "segments", "x cu2qu", "over tol", "max deviation", "time x cu2qu"]
+    """W11: casteljau's rows (the W3 program) beside the peer's, per operation, dataset and
+    parameter: quadratic approximation against cu2qu (bench/w11_cu2qu.py), offsets against
+    lib2geom (the W3 program); goals: 0 over tolerance, fewer segments and less time than
+    the peer."""
+    headers = ["operation/dataset/parameter", "library", "ms", "us/curve", "segments", "x peer", "over tol", "max deviation",
+               "time x peer"]
     out, goals = [], []
-    keys = sorted({n.split("/", 3)[3] for n in rows if n.startswith("W11/") and "/quadratic/" in n})
-    for key in keys:
-        peer = rows.get(f"W11/cu2qu/quadratic/{key}")
-        for lib in ("casteljau", "cu2qu"):
-            b = rows.get(f"W11/{lib}/quadratic/{key}")
-            if not b:
-                continue
-            curves = b.get("curves", 0) or 1
-            ms = to_ms(b)
-            out.append([key, lib, f"{ms:.1f}", f"{ms * 1e3 / curves:.2f}", f"{b.get('segments', 0):.0f}",
-                        f"{b['segments'] / peer['segments']:.3f}" if peer else "-", f"{b.get('over_tolerance', 0):.0f}",
-                        f"{b.get('max_deviation', 0):.4g}", fmt_ratio(ms / to_ms(peer)) if peer else "-"])
-        ours = rows.get(f"W11/casteljau/quadratic/{key}")
-        if ours and peer:
-            ok = ours["segments"] < peer["segments"] and to_ms(ours) < to_ms(peer) and int(ours.get("over_tolerance", 0)) == 0
-            goals.append(f"W11 quadratic {key}: {ours['segments'] / peer['segments']:.3f}x cu2qu's segments, "
-                         f"{to_ms(ours) / to_ms(peer):.2f}x its time, {int(ours.get('over_tolerance', 0))} over the tolerance "
-                         "(goal: fewer, faster, 0): " + ("MET" if ok else "NOT MET"))
+    for op, peer_lib in (("quadratic", "cu2qu"), ("offset", "lib2geom")):
+        keys = sorted({n.split("/", 3)[3] for n in rows if n.startswith("W11/") and f"/{op}/" in n})
+        for key in keys:
+            peer = rows.get(f"W11/{peer_lib}/{op}/{key}")
+            for lib in ("casteljau", peer_lib):
+                b = rows.get(f"W11/{lib}/{op}/{key}")
+                if not b:
+                    continue
+                curves = b.get("curves", 0) or 1
+                ms = to_ms(b)
+                out.append([f"{op}/{key}", lib, f"{ms:.1f}", f"{ms * 1e3 / curves:.2f}", f"{b.get('segments', 0):.0f}",
+                            f"{b['segments'] / peer['segments']:.3f}" if peer else "-", f"{b.get('over_tolerance', 0):.0f}",
+                            f"{b.get('max_deviation', 0):.4g}", fmt_ratio(ms / to_ms(peer)) if peer else "-"])
+            ours = rows.get(f"W11/casteljau/{op}/{key}")
+            if ours and peer:
+                ok = ours["segments"] < peer["segments"] and to_ms(ours) < to_ms(peer) and int(ours.get("over_tolerance", 0)) == 0
+                goals.append(f"W11 {op} {key}: {ours['segments'] / peer['segments']:.3f}x {peer_lib}'s segments, "
+                             f"{to_ms(ours) / to_ms(peer):.2f}x its time, {int(ours.get('over_tolerance', 0))} over the tolerance "
+                             "(goal: fewer, faster, 0): " + ("MET" if ok else "NOT MET"))
     text, md = table(headers, out)
     return text, md, goals
 
@@ -417,18 +420,24 @@ def main():
         if exe_name == "casteljau_bench_w3":
             w11_rows = {n: b for n, b in rows.items() if n.startswith("W11/")}
 
-    # W11 (quadratic half): fonttools' cu2qu on the datasets the W3 program wrote
-    # (CASTELJAU_W11_DUMP, set by main() before running it), beside casteljau's rows.
+    # W11: fonttools' cu2qu on the datasets the W3 program wrote (CASTELJAU_W11_DUMP, set by
+    # main() before running it), beside the W3 program's W11 rows (casteljau's, and
+    # lib2geom's offsets).
     if w11_rows:
         w11_json = os.path.join(res_dir, "W11.json")
+        if os.path.exists(w11_json):
+            os.remove(w11_json)
+    if any("/quadratic/" in n for n in w11_rows):  # cu2qu only beside casteljau's quadratic rows
         subprocess.run(["/usr/bin/python3", os.path.join(os.path.dirname(os.path.abspath(__file__)), "w11_cu2qu.py"), res_dir, w11_json,
                         "--repetitions", str(args.repetitions)], check=False)
         if os.path.exists(w11_json):
             with open(w11_json) as f:
                 for b in json.load(f)["benchmarks"]:
                     w11_rows[b["name"]] = b
+    if w11_rows:
         text, md, g = w11_table(w11_rows)
-        title = "W11, quadratic approximation of W3's datasets at 1e-3 and 1e-1 of the unit (box 100, em 2048)"
+        title = ("W11, W3's datasets: quadratic approximation at 1e-3 and 1e-1 of the unit (box 100, em 2048), "
+                 "offsets by 1e-2 and 1e-1 of it at 1e-3")
         text_all += f"\n{title}\n{text}"
         md_all += f"\n### {title}\n\n{md}"
         goals += g

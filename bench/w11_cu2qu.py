@@ -7,7 +7,7 @@ real_time, time_unit, counters...}]) with names W11/cu2qu/quadratic/<dataset>/<1
 and counters segments, over_tolerance (curves whose deviation exceeds 1.0001 x tol),
 max_deviation: the same two-sided measure as bench/w3.cpp's quad_deviation (the cubic at
 S = 64 + 16 k parameters to the chain, each quadratic at 65 parameters to the cubic, each
-distance from the nearest sample refined by Newton's method).
+distance from every local minimum of the sampled distances refined by Newton's method).
 
 Usage: w11_cu2qu.py DUMP_DIR OUT_JSON [--repetitions N]
 """
@@ -37,8 +37,12 @@ def chain(spline):
     return np.array([[ons[i], off[i], ons[i + 1]] for i in range(n)])
 
 
-def newton(f, p, s, iters=8):
-    """Newton on (x(s) - p) . x'(s) = 0 from s (arrays), clamped to [0, 1]; distances."""
+def newton(f, p, s, lo, hi, iters=8):
+    """Newton on (x(s) - p) . x'(s) = 0 from s (arrays), kept in [lo, hi]; distances: the
+    smaller of the start's and the end's (both points of the curve, so never below the
+    true distance: an iteration that strays cannot inflate it). f(s) gives the point and
+    the first two derivatives, row by row."""
+    d0 = np.linalg.norm(f(s)[0] - p, axis=-1)
     for _ in range(iters):
         x, d1, d2 = f(s)
         r = x - p
@@ -46,52 +50,59 @@ def newton(f, p, s, iters=8):
         gp = np.sum(d1 * d1, axis=-1) + np.sum(r * d2, axis=-1)
         gp = np.where(gp > 0, gp, np.sum(d1 * d1, axis=-1))
         step = np.where(gp > 0, g / np.where(gp > 0, gp, 1), 0)
-        s = np.clip(s - step, 0, 1)
+        s = np.clip(s - step, lo, hi)
     x = f(s)[0]
-    return np.linalg.norm(x - p, axis=-1)
+    return np.minimum(d0, np.linalg.norm(x - p, axis=-1))
 
 
-def cubic_f(c):
-    def f(s):
-        s = s[..., None]
-        u = 1 - s
-        x = u ** 3 * c[0] + 3 * u * u * s * c[1] + 3 * u * s * s * c[2] + s ** 3 * c[3]
-        d1 = 3 * (u * u * (c[1] - c[0]) + 2 * u * s * (c[2] - c[1]) + s * s * (c[3] - c[2]))
-        d2 = 6 * (u * (c[2] - 2 * c[1] + c[0]) + s * (c[3] - 2 * c[2] + c[1]))
-        return x, d1, np.broadcast_to(d2, x.shape)
-    return f
+def bezier_f(ctrl):
+    """Point, first and second derivative of the Bézier curves ctrl (array (m, n + 1, 2),
+    n = 2 or 3), curve i at s[i], for arrays s of m parameters."""
+    n = ctrl.shape[1] - 1
+    d1c = n * (ctrl[:, 1:] - ctrl[:, :-1])
+    d2c = (n - 1) * (d1c[:, 1:] - d1c[:, :-1])
+
+    def ev(c, s):
+        s = s[:, None]
+        pts = [c[:, i] for i in range(c.shape[1])]
+        while len(pts) > 1:
+            pts = [(1 - s) * pts[i] + s * pts[i + 1] for i in range(len(pts) - 1)]
+        return pts[0]
+
+    return lambda s: (ev(ctrl, s), ev(d1c, s), ev(d2c, s))
 
 
-def quad_f(q):
-    def f(s):
-        s = s[..., None]
-        u = 1 - s
-        x = u * u * q[0] + 2 * u * s * q[1] + s * s * q[2]
-        d1 = 2 * (u * (q[1] - q[0]) + s * (q[2] - q[1]))
-        d2 = 2 * (q[0] - 2 * q[1] + q[2])
-        return x, d1, np.broadcast_to(d2, x.shape)
-    return f
+def distances(points, ctrl, ts):
+    """The distance from each of `points` (P, 2) to the nearest of the curves ctrl (k, n + 1, 2),
+    each sampled at the parameters ts (M): every local minimum of the sampled distance along
+    each curve (the ends included) refined by Newton within its neighbouring samples, the
+    smallest kept. Not only the nearest sample: where a curve passes close to itself, or
+    moves fast, the nearest sample can lie on another branch than the nearest point."""
+    k, M = len(ctrl), len(ts)
+    samples = bezier_f(np.repeat(ctrl, M, axis=0))(np.tile(ts, k))[0].reshape(k, M, 2)
+    D = np.linalg.norm(points[:, None, None, :] - samples[None, :, :, :], axis=3)  # (P, k, M)
+    pad = np.pad(D, ((0, 0), (0, 0), (1, 1)), constant_values=np.inf)
+    rows, curve, cols = np.nonzero((D <= pad[:, :, :-2]) & (D <= pad[:, :, 2:]))
+    d = newton(bezier_f(ctrl[curve]), points[rows], ts[cols], ts[np.maximum(cols - 1, 0)], ts[np.minimum(cols + 1, M - 1)])
+    out = np.full(len(points), np.inf)
+    np.minimum.at(out, rows, d)
+    return out
 
 
 def deviation(c, qs):
+    """The two-sided distance between the cubic c and its chain qs: the cubic at
+    S = 64 + 16 k parameters (k segments) to the chain, each quadratic at 65 parameters to
+    the cubic; each distance as in distances() (the quadratics sampled at 33 parameters,
+    the cubic at its S)."""
     k = len(qs)
     S = 64 + 16 * k
-    cf = cubic_f(c)
     ts = np.linspace(0, 1, S)
-    cp = cf(ts)[0]
-    best = np.full(S, np.inf)
-    seeds = np.linspace(0, 1, 33)
-    for q in qs:
-        qp = quad_f(q)(seeds)[0]
-        near = np.argmin(np.linalg.norm(cp[:, None, :] - qp[None, :, :], axis=2), axis=1)
-        best = np.minimum(best, newton(quad_f(q), cp, seeds[near]))
-    worst = best.max()
-    qs_t = np.linspace(0, 1, 65)
-    for q in qs:
-        qp = quad_f(q)(qs_t)[0]
-        near = np.argmin(np.linalg.norm(qp[:, None, :] - cp[None, :, :], axis=2), axis=1)
-        worst = max(worst, newton(cf, qp, ts[near]).max())
-    return worst
+    cp = bezier_f(np.repeat(c[None], S, axis=0))(ts)[0]
+    to_chain = distances(cp, qs, np.linspace(0, 1, 33)).max()
+    qt = np.linspace(0, 1, 65)
+    qp = bezier_f(np.repeat(qs, 65, axis=0))(np.tile(qt, k))[0]
+    to_cubic = distances(qp, c[None], ts).max()
+    return max(to_chain, to_cubic)
 
 
 def main():

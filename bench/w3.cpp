@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "casteljau/algo/flatten.hpp"
+#include "casteljau/algo/offset.hpp"
 #include "casteljau/algo/to_quadratic.hpp"
 #include "casteljau/curves/bezier.hpp"
 #include "common.hpp"
@@ -44,6 +45,14 @@
 #endif
 #if CASTELJAU_BENCH_HAVE_CAIRO
 #include <cairo.h>
+#endif
+#if CASTELJAU_BENCH_HAVE_2GEOM
+#include <2geom/bezier-curve.h>
+#include <2geom/exception.h>
+#include <2geom/path.h>
+#include <2geom/piecewise.h>
+#include <2geom/sbasis-geometric.h>
+#include <2geom/sbasis-to-bezier.h>
 #endif
 #if CASTELJAU_BENCH_HAVE_OCCT_ALGO
 #include <GCPnts_QuasiUniformDeflection.hxx>
@@ -485,10 +494,17 @@ P2 quad_point(const Quad& q, double s) {
   return P2{u * u * q[0][0] + 2 * u * s * q[1][0] + s * s * q[2][0], u * u * q[0][1] + 2 * u * s * q[1][1] + s * s * q[2][1]};
 }
 
-/// Newton on (x(s) - p) . x'(s) = 0 from s, clamped to [0, 1], for x = f (point, first and
-/// second derivative at s); returns the distance at the end.
+/// Newton on (x(s) - p) . x'(s) = 0 from s, kept in [lo, hi], for x = f (point, first and
+/// second derivative at s); returns the smaller of the distances at the start and at the
+/// end (both points of the curve, so never below the true distance: an iteration that
+/// strays to a farther stationary point cannot inflate it).
 template <class F>
-double refine_distance(const F& f, const P2& p, double s) {
+double refine_distance(const F& f, const P2& p, double s, double lo, double hi) {
+  const auto dist = [&](double u) {
+    const P2 x = std::get<0>(f(u));
+    return std::hypot(x[0] - p[0], x[1] - p[1]);
+  };
+  const double d0 = dist(s);
   for (int it = 0; it < 8; ++it) {
     const auto [x, d1, d2] = f(s);
     const double rx = x[0] - p[0], ry = x[1] - p[1];
@@ -496,16 +512,38 @@ double refine_distance(const F& f, const P2& p, double s) {
     double gp = d1[0] * d1[0] + d1[1] * d1[1] + rx * d2[0] + ry * d2[1];
     if (!(gp > 0)) gp = d1[0] * d1[0] + d1[1] * d1[1];
     if (!(gp > 0)) break;
-    s = std::clamp(s - g / gp, 0.0, 1.0);
+    s = std::clamp(s - g / gp, lo, hi);
   }
-  const P2 x = std::get<0>(f(s));
-  return std::hypot(x[0] - p[0], x[1] - p[1]);
+  return std::min(d0, dist(s));
+}
+
+/// The distance from p to the curve f sampled at the n points x_j = f(j / (n - 1)): every
+/// local minimum of the sampled distance (along the samples, the ends included) refined by
+/// Newton's method within its neighbouring samples, the smallest kept. Not only the nearest
+/// sample: where the curve passes close to itself, or moves fast (samples far apart), the
+/// nearest sample can lie on another branch than the nearest point.
+template <class F>
+double distance_to(const F& f, const P2* x, std::size_t n, const P2& p) {
+  const auto d2 = [&](std::size_t j) { return (x[j][0] - p[0]) * (x[j][0] - p[0]) + (x[j][1] - p[1]) * (x[j][1] - p[1]); };
+  const double h = 1.0 / static_cast<double>(n - 1);
+  double best = INFINITY;
+  double prev = INFINITY, cur = d2(0);
+  for (std::size_t j = 0; j < n; ++j) {
+    const double next = j + 1 < n ? d2(j + 1) : INFINITY;
+    if (cur <= prev && cur <= next) {
+      const double s = static_cast<double>(j) * h;
+      best = std::min(best, refine_distance(f, p, s, j > 0 ? s - h : 0.0, j + 1 < n ? s + h : 1.0));
+    }
+    prev = cur;
+    cur = next;
+  }
+  return best;
 }
 
 /// The two-sided distance between a cubic and its chain of quadratics: the cubic at
-/// S = 64 + 16 k parameters (k segments) to the chain, each quadratic at 64 parameters to
-/// the cubic; each distance from the nearest of 33 (resp. S) samples refined by Newton's
-/// method on that curve.
+/// S = 64 + 16 k parameters (k segments) to the chain, each quadratic at 65 parameters to
+/// the cubic; each distance as in distance_to (the quadratics sampled at 33 parameters,
+/// the cubic at its S). The same measure as bench/w11_cu2qu.py's.
 double quad_deviation(const Cubic& c, const Quad* q, std::size_t k) {
   const std::size_t S = 64 + 16 * k;
   const auto qf = [](const Quad& a) {
@@ -529,31 +567,16 @@ double quad_deviation(const Cubic& c, const Quad* q, std::size_t k) {
   double worst = 0;
   std::vector<P2> cs(S);
   for (std::size_t j = 0; j < S; ++j) cs[j] = value(c, static_cast<double>(j) / static_cast<double>(S - 1));
+  std::vector<std::array<P2, 33>> qs(k);
+  for (std::size_t i = 0; i < k; ++i)
+    for (int j = 0; j <= 32; ++j) qs[i][static_cast<std::size_t>(j)] = quad_point(q[i], j / 32.0);
   for (const P2& p : cs) {
     double best = INFINITY;
-    for (std::size_t i = 0; i < k; ++i) {
-      double b2 = INFINITY, at = 0;
-      for (int j = 0; j <= 32; ++j) {
-        const P2 x = quad_point(q[i], j / 32.0);
-        const double d2 = (x[0] - p[0]) * (x[0] - p[0]) + (x[1] - p[1]) * (x[1] - p[1]);
-        if (d2 < b2) b2 = d2, at = j / 32.0;
-      }
-      best = std::min(best, refine_distance(qf(q[i]), p, at));
-    }
+    for (std::size_t i = 0; i < k; ++i) best = std::min(best, distance_to(qf(q[i]), qs[i].data(), 33, p));
     worst = std::max(worst, best);
   }
-  for (std::size_t i = 0; i < k; ++i) {
-    for (int j = 0; j <= 64; ++j) {
-      const P2 p = quad_point(q[i], j / 64.0);
-      double b2 = INFINITY;
-      std::size_t at = 0;
-      for (std::size_t m = 0; m < S; ++m) {
-        const double d2 = (cs[m][0] - p[0]) * (cs[m][0] - p[0]) + (cs[m][1] - p[1]) * (cs[m][1] - p[1]);
-        if (d2 < b2) b2 = d2, at = m;
-      }
-      worst = std::max(worst, refine_distance(cf, p, static_cast<double>(at) / static_cast<double>(S - 1)));
-    }
-  }
+  for (std::size_t i = 0; i < k; ++i)
+    for (int j = 0; j <= 64; ++j) worst = std::max(worst, distance_to(cf, cs.data(), S, quad_point(q[i], j / 64.0)));
   return worst;
 }
 
@@ -597,6 +620,218 @@ void w11_casteljau(benchmark::State& state, const std::string& set, double rel, 
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * cs.size()));
 }
 
+// ---- W11, offsets ---------------------------------------------------------------------
+// W3's datasets offset by d = 1e-2 and 1e-1 of the unit (random: the box, 100; glyphs: the
+// em, 2048), each curve on its own, at tolerance 1e-3 of the unit. Names
+// W11/<casteljau|lib2geom>/offset/<dataset>/<d>, d written 1e-2 or 1e-1; counters segments
+// (cubics), over_tolerance (curves whose measured deviation exceeds 1.0001 x tol),
+// max_deviation: the two-sided distance between the output and the exact offset
+// C(t) + d N(t) (N the left unit normal), measured after timing (offset_deviation).
+
+/// The exact offset of a cubic: C(t) + d N(t), N = C' / |C'| turned left. Where C' vanishes
+/// (an end with a zero-length handle: 2,771 of the glyphs' elevated quadratics, whose
+/// control point is their start), N is its limit: C' taken 1e-9 inside the parameter range.
+P2 exact_offset(const Cubic& c, double d, double t) {
+  const auto velocity = [&c](double s, double* v) {
+    const double u = 1 - s;
+    for (int i = 0; i < 2; ++i) v[i] = 3 * (u * u * (c[1][i] - c[0][i]) + 2 * u * s * (c[2][i] - c[1][i]) + s * s * (c[3][i] - c[2][i]));
+    return std::hypot(v[0], v[1]);
+  };
+  double v[2];
+  double n = velocity(t, v);
+  if (!(n > 0)) n = velocity(t < 0.5 ? t + 1e-9 : t - 1e-9, v);
+  const P2 x = value(c, t);
+  if (!(n > 0)) return x;  // a cubic that is one point
+  return P2{x[0] - d * v[1] / n, x[1] + d * v[0] / n};
+}
+
+/// The two-sided distance between the exact offset of c and the cubics out[0..k): the exact
+/// offset sampled at S = 64 + 16 k uniform parameters, then every interval whose chord is
+/// longer than 1/256 of the sampled length split in two (to 2^-20 of the parameter), so
+/// that the fast turns of the offset near high curvature are sampled as densely as the
+/// rest; each cubic at 65 parameters. Offset samples to the cubics: distance_to (every local
+/// minimum over the cubic's 65 samples refined by Newton). Cubic samples to the exact
+/// offset: every local minimum over the offset's samples refined by golden section on the
+/// squared distance within its neighbouring samples (40 steps: 1e-8 of the bracket), the
+/// smallest kept (never below the true distance: each is the distance to a point of the
+/// offset).
+double offset_deviation(const Cubic& c, double d, const Cubic* out, std::size_t k) {
+  if (k == 0) return INFINITY;
+  const std::size_t S = 64 + 16 * k;
+  std::vector<double> ts(S);
+  std::vector<P2> os(S);
+  for (std::size_t j = 0; j < S; ++j) {
+    ts[j] = static_cast<double>(j) / static_cast<double>(S - 1);
+    os[j] = exact_offset(c, d, ts[j]);
+  }
+  double length = 0;
+  for (std::size_t j = 1; j < S; ++j) length += std::hypot(os[j][0] - os[j - 1][0], os[j][1] - os[j - 1][1]);
+  const double step = length / 256;
+  {
+    std::vector<double> t2{ts[0]};
+    std::vector<P2> o2{os[0]};
+    std::vector<std::pair<double, P2>> stack;  // the right ends still to reach
+    for (std::size_t j = 1; j < S; ++j) {
+      stack.emplace_back(ts[j], os[j]);
+      while (!stack.empty()) {
+        const auto [tr, pr] = stack.back();
+        const double tl = t2.back();
+        const P2 pl = o2.back();
+        if (std::hypot(pr[0] - pl[0], pr[1] - pl[1]) > step && tr - tl > 0x1p-20) {
+          const double tm = 0.5 * (tl + tr);
+          stack.emplace_back(tm, exact_offset(c, d, tm));
+        } else {
+          t2.push_back(tr);
+          o2.push_back(pr);
+          stack.pop_back();
+        }
+      }
+    }
+    ts = std::move(t2);
+    os = std::move(o2);
+  }
+  const std::size_t n = ts.size();
+  // The cubics' forms and samples.
+  const auto cubic_f = [](const Cubic& a) {
+    return [&a](double s) {
+      const double u = 1 - s;
+      P2 d1, d2;
+      for (int i = 0; i < 2; ++i) {
+        d1[i] = 3 * (u * u * (a[1][i] - a[0][i]) + 2 * u * s * (a[2][i] - a[1][i]) + s * s * (a[3][i] - a[2][i]));
+        d2[i] = 6 * (u * (a[2][i] - 2 * a[1][i] + a[0][i]) + s * (a[3][i] - 2 * a[2][i] + a[1][i]));
+      }
+      return std::tuple{value(a, s), d1, d2};
+    };
+  };
+  std::vector<std::array<P2, 65>> cs(k);
+  for (std::size_t i = 0; i < k; ++i)
+    for (int j = 0; j <= 64; ++j) cs[i][static_cast<std::size_t>(j)] = value(out[i], j / 64.0);
+  double worst = 0;
+  for (const P2& p : os) {
+    double best = INFINITY;
+    for (std::size_t i = 0; i < k; ++i) best = std::min(best, distance_to(cubic_f(out[i]), cs[i].data(), 65, p));
+    worst = std::max(worst, best);
+  }
+  std::vector<double> dist(n);
+  for (std::size_t i = 0; i < k; ++i) {
+    for (const P2& p : cs[i]) {
+      for (std::size_t j = 0; j < n; ++j) dist[j] = std::hypot(os[j][0] - p[0], os[j][1] - p[1]);
+      double best = INFINITY;
+      for (std::size_t j = 0; j < n; ++j) {
+        if ((j > 0 && dist[j] > dist[j - 1]) || (j + 1 < n && dist[j] > dist[j + 1])) continue;
+        best = std::min(best, dist[j]);
+        constexpr double r = 0.6180339887498949;
+        double a = ts[j > 0 ? j - 1 : 0], b = ts[std::min(j + 1, n - 1)];
+        const auto f = [&](double t) {
+          const P2 x = exact_offset(c, d, t);
+          return std::hypot(x[0] - p[0], x[1] - p[1]);
+        };
+        double x1 = b - r * (b - a), x2 = a + r * (b - a), f1 = f(x1), f2 = f(x2);
+        for (int it = 0; it < 40; ++it) {
+          if (f1 <= f2) {
+            b = x2, x2 = x1, f2 = f1, x1 = b - r * (b - a), f1 = f(x1);
+          } else {
+            a = x1, x1 = x2, f1 = f2, x2 = a + r * (b - a), f2 = f(x2);
+          }
+        }
+        best = std::min({best, f1, f2});
+      }
+      worst = std::max(worst, best);
+    }
+  }
+  return worst;
+}
+
+/// Runs one offsetter: offset_all(curve, d, tol, out) appends the curve's offset cubics.
+void w11_offset(benchmark::State& state, const std::string& name, const std::string& set, double rel_d,
+                const std::function<void(const Cubic&, double, double, std::vector<Cubic>&)>& offset_all) {
+  const auto& cs = dataset(set);
+  const double d = rel_d * w11_unit(set), tol = 1e-3 * w11_unit(set);
+  std::vector<Cubic> out;
+  std::vector<std::size_t> first;
+  for (auto _ : state) {
+    out.clear();
+    first.clear();
+    for (const Cubic& c : cs) {
+      first.push_back(out.size());
+      offset_all(c, d, tol, out);
+    }
+    first.push_back(out.size());
+    benchmark::DoNotOptimize(out.data());
+  }
+  static std::map<std::string, Measured> cache;
+  auto it = cache.find(name);
+  if (it == cache.end()) {
+    Measured m;
+    m.curves = cs.size();
+    m.segments = out.size();
+    for (std::size_t i = 0; i < cs.size(); ++i) {
+      const double e = offset_deviation(cs[i], d, out.data() + first[i], first[i + 1] - first[i]);
+      m.max_deviation = std::max(m.max_deviation, e);
+      m.over += !(e <= 1.0001 * tol);
+    }
+    it = cache.emplace(name, m).first;
+  }
+  state.counters["curves"] = static_cast<double>(it->second.curves);
+  state.counters["segments"] = static_cast<double>(it->second.segments);
+  state.counters["over_tolerance"] = static_cast<double>(it->second.over);
+  state.counters["max_deviation"] = it->second.max_deviation;
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * cs.size()));
+}
+
+/// casteljau::offset of the cubic, untrimmed (trim = false: the raw offset, the same curve
+/// as the exact offset the measure compares with, and as lib2geom's; the trim cuts loops
+/// away, which a two-sided distance to the untrimmed offset would count as missing).
+void casteljau_offset(const Cubic& c, double d, double tol, std::vector<Cubic>& out) {
+  const casteljau::Bezier<double, 2> b({c[0], c[1], c[2], c[3]});
+  casteljau::OffsetOptions<double> o;
+  o.distance = d;
+  o.tolerance = tol;
+  o.trim = false;
+  for (const auto& s : casteljau::offset(b, o).segments) {
+    const auto& P = s.points();
+    out.push_back(Cubic{P[0], P[1], P[2], P[3]});
+  }
+}
+
+#if CASTELJAU_BENCH_HAVE_2GEOM
+/// lib2geom 1.2.2's offset (the Debian package has no half_outline, which is Inkscape's
+/// helper): the curve as an s-power basis piecewise, its unit tangent approximated by
+/// unitVector (to tol / |d|, order 3, so that d N is within tol), turned left (rot90),
+/// C + d N, back to cubics with path_from_piecewise (only cubic Béziers).
+void lib2geom_offset(const Cubic& c, double d, double tol, std::vector<Cubic>& out) {
+  Geom::Path path(Geom::Point(c[0][0], c[0][1]));
+  path.appendNew<Geom::CubicBezier>(Geom::Point(c[1][0], c[1][1]), Geom::Point(c[2][0], c[2][1]), Geom::Point(c[3][0], c[3][1]));
+  const Geom::Piecewise<Geom::D2<Geom::SBasis>> pw = path.toPwSb();
+  Geom::PathVector pv;
+  try {
+    const Geom::Piecewise<Geom::D2<Geom::SBasis>> n = Geom::rot90(Geom::unitVector(Geom::derivative(pw), tol / std::abs(d), 3));
+    pv = Geom::path_from_piecewise(pw + n * d, tol, true);
+  } catch (const Geom::Exception&) {
+    // A curve whose derivative vanishes at an end (a zero-length handle) gets a unit
+    // tangent that is not finite, and path_from_piecewise refuses it: no output for the
+    // curve, which the measure counts as over the tolerance.
+    return;
+  }
+  for (const Geom::Path& p : pv) {
+    for (std::size_t i = 0; i < p.size_open(); ++i) {
+      const auto* b = dynamic_cast<const Geom::BezierCurve*>(&p[i]);
+      if (!b) throw std::runtime_error("W11 lib2geom: path_from_piecewise made a curve that is not a Bézier");
+      const std::vector<Geom::Point> P = b->controlPoints();
+      Cubic q;
+      if (P.size() == 4) {
+        for (int j = 0; j < 4; ++j) q[static_cast<std::size_t>(j)] = P2{P[static_cast<std::size_t>(j)][0], P[static_cast<std::size_t>(j)][1]};
+      } else if (P.size() == 2) {  // a line, as the cubic at its thirds
+        for (int j = 0; j < 4; ++j) q[static_cast<std::size_t>(j)] = P2{P[0][0] + j / 3.0 * (P[1][0] - P[0][0]), P[0][1] + j / 3.0 * (P[1][1] - P[0][1])};
+      } else {
+        throw std::runtime_error("W11 lib2geom: a Bézier of order " + std::to_string(P.size() - 1));
+      }
+      out.push_back(q);
+    }
+  }
+}
+#endif
+
 /// With CASTELJAU_W11_DUMP=DIR, each dataset is written to DIR/w11_<set>.f64 (raw
 /// little-endian doubles, x0 y0 ... x3 y3 per cubic) for bench/w11_cu2qu.py.
 void w11_dump(const std::string& set) {
@@ -633,6 +868,18 @@ int main(int argc, char** argv) {
       benchmark::RegisterBenchmark(name.c_str(), [name, set, rel = rel](benchmark::State& st) { w11_casteljau(st, set, rel, name); })
           ->Unit(benchmark::kMillisecond)
           ->UseRealTime();
+    }
+    for (const auto& [rel, label] : {std::pair{1e-2, "1e-2"}, std::pair{1e-1, "1e-1"}}) {
+      std::vector<std::pair<std::string, void (*)(const Cubic&, double, double, std::vector<Cubic>&)>> libs{{"casteljau", casteljau_offset}};
+#if CASTELJAU_BENCH_HAVE_2GEOM
+      libs.emplace_back("lib2geom", lib2geom_offset);
+#endif
+      for (const auto& [lib, fn] : libs) {
+        const std::string name = "W11/" + lib + "/offset/" + set + "/" + label;
+        benchmark::RegisterBenchmark(name.c_str(), [name, set, rel = rel, fn = fn](benchmark::State& st) { w11_offset(st, name, set, rel, fn); })
+            ->Unit(benchmark::kMillisecond)
+            ->UseRealTime();
+      }
     }
     reg("near_optimal/greedy", set, near_optimal);
     reg("plain/wang_uniform", set, wang_uniform);
