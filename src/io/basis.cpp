@@ -5,6 +5,8 @@
 #include <string>
 #include <string_view>
 
+#include "work_limits.hpp"
+
 namespace casteljau::io {
 
 namespace {
@@ -51,12 +53,12 @@ BasisTable basis(const std::string& kind, std::optional<int> degree, const std::
   check_basis(b);
   const double numbers = (static_cast<double>(k) + 1) * static_cast<double>(t.size()) * static_cast<double>(basis_count(b));
   if (numbers > max_basis_numbers) {
-    throw InvalidArgument("t", "the table would hold " + std::to_string(static_cast<long long>(numbers)) +
+    throw InvalidArgument("t", "the table would hold " + limits::amount_text(numbers) +
                                    " numbers ((derivatives + 1) x len(t) x functions), more than the limit of 10000000");
   }
   if (b.kind == BasisKind::lagrange && numbers * static_cast<double>(b.params.size()) > 100 * max_basis_numbers) {
     throw InvalidArgument("params", "the Lagrange table would take about " +
-                                        std::to_string(static_cast<long long>(numbers * static_cast<double>(b.params.size()))) +
+                                        limits::amount_text(numbers * static_cast<double>(b.params.size())) +
                                         " operations ((derivatives + 1) x len(t) x len(params)^2), more than the limit of 1000000000");
   }
   return basis_table(b, t, k);

@@ -9,6 +9,7 @@
 
 #include "casteljau/algo/intersect.hpp"
 #include "casteljau/algo/scalar_forms.hpp"
+#include "work_limits.hpp"
 
 namespace casteljau::io {
 
@@ -67,9 +68,9 @@ std::optional<PieceSums> given_sums(const AnyCurve& c) {
 void check_conversion(const AnyCurve& c, const char* where) {
   const auto x = given_sums(c);
   if (x && x->s2 > casteljau::detail::max_query_work) {
-    throw InvalidArgument(where, "making the curve's Bézier pieces would take about " + std::to_string(static_cast<long long>(x->s2)) +
+    throw InvalidArgument(where, "making the curve's Bézier pieces would take about " + limits::amount_text(x->s2) +
                                      " units of work (pieces x (degree + 1)^2), more than the limit of " +
-                                     std::to_string(static_cast<long long>(casteljau::detail::max_query_work)) +
+                                     limits::amount_text(casteljau::detail::max_query_work) +
                                      ": use fewer control points or a lower degree");
   }
 }
@@ -86,10 +87,10 @@ double work_of(const PieceSums& x, const PieceSums* y) {
 /// `field` and the figures.
 void check_intersect_work(double work, const std::string& field) {
   if (work > max_intersect_work) {
-    throw InvalidArgument(field, "intersect would take about " + std::to_string(static_cast<long long>(work)) +
+    throw InvalidArgument(field, "intersect would take about " + limits::amount_text(work) +
                                      " units of work (pairs of Bézier pieces, (n + 1)(m + 1)(n + m + 2) / 2 summed over them for "
                                      "degrees n and m), more than the limit of " +
-                                     std::to_string(static_cast<long long>(max_intersect_work)) +
+                                     limits::amount_text(max_intersect_work) +
                                      ": use fewer pieces or points, or a lower degree");
   }
 }

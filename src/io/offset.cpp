@@ -64,17 +64,17 @@ AnyCurve offset(const AnyCurve& c, double distance, double tolerance, bool trim,
     work += m * m * (16 * m + 20000);
   }
   if (work > max_offset_piece_work) {
-    throw InvalidArgument("curve", "the offset would take about " + std::to_string(static_cast<long long>(work)) +
+    throw InvalidArgument("curve", "the offset would take about " + limits::amount_text(work) +
                                        " units of work ((degree + 1)^2 (16 (degree + 1) + 20000) summed over the Bézier pieces), "
                                        "more than the limit of " +
-                                       std::to_string(static_cast<long long>(max_offset_piece_work)) +
+                                       limits::amount_text(max_offset_piece_work) +
                                        ": use fewer pieces or a lower degree");
   }
   const double limit = max_offset_segments;
   const double estimate = offset_segments_estimate(p, distance, tolerance);
   if (estimate > limit) {
-    throw InvalidArgument("tolerance", "the offset would need about " + std::to_string(static_cast<long long>(estimate)) +
-                                           " cubic segments, more than the limit of " + std::to_string(static_cast<long long>(limit)) +
+    throw InvalidArgument("tolerance", "the offset would need about " + limits::amount_text(estimate) +
+                                           " cubic segments, more than the limit of " + limits::amount_text(limit) +
                                            ": use a larger tolerance or fewer pieces");
   }
   o.max_segments = static_cast<std::size_t>(limit);

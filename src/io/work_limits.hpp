@@ -4,6 +4,8 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <string>
 #include <variant>
 
@@ -12,15 +14,26 @@
 
 namespace casteljau::io::limits {
 
+/// An estimated amount for a refusal message: the integer below 2^53 ("1234567"), three
+/// significant digits above ("4.79e+49"), "more than 1e308" when it overflowed. A plain
+/// cast to an integer type is undefined past its range (an estimate can reach 1e49).
+inline std::string amount_text(double x) {
+  if (!std::isfinite(x)) return "more than 1e308";
+  if (std::abs(x) < 9007199254740992.0) return std::to_string(static_cast<long long>(x));
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", x);
+  return text;
+}
+
 /// Refuses work on pieces p (see casteljau::detail::query_work) past the limit; `what` is
 /// the subject of the message ("the query", "solving", ...).
 template <class P>
 void check_work(const P& p, const std::string& field, const std::string& what = "the query") {
   const double work = casteljau::detail::query_work(p);
   if (work > casteljau::detail::max_query_work) {
-    throw InvalidArgument(field, what + " would take about " + std::to_string(static_cast<long long>(work)) + " units of work (" +
+    throw InvalidArgument(field, what + " would take about " + amount_text(work) + " units of work (" +
                                      std::to_string(p.size()) + " Bézier pieces, (degree + 1)^2 summed over them), more than the limit of " +
-                                     std::to_string(static_cast<long long>(casteljau::detail::max_query_work)) +
+                                     amount_text(casteljau::detail::max_query_work) +
                                      ": use fewer pieces or a lower degree");
   }
 }
@@ -42,9 +55,9 @@ inline void check_curve_work(const AnyCurve& c, const std::string& field, const 
       },
       c);
   if (work > casteljau::detail::max_query_work) {
-    throw InvalidArgument(field, what + " would take about " + std::to_string(static_cast<long long>(work)) +
+    throw InvalidArgument(field, what + " would take about " + amount_text(work) +
                                      " units of work (pieces x (degree + 1)^2), more than the limit of " +
-                                     std::to_string(static_cast<long long>(casteljau::detail::max_query_work)) +
+                                     amount_text(casteljau::detail::max_query_work) +
                                      ": use fewer control points or a lower degree");
   }
 }
