@@ -94,9 +94,26 @@ std::string where_what(const InvalidArgument& e) {
   return clipped(e.where().empty() ? std::string("request") : e.where(), max_where) + ": " + e.problem();
 }
 
-Answer answer(const Command& command, std::string_view text, bool jsonl) {
+/// Runs f, which returns the answer; the library's bad input becomes status 2 with its
+/// "<where>: <what>", anything else that escapes status 1 ("internal: ...").
+template <class F>
+Answer guarded(F&& f) {
   Answer a;
   try {
+    return f();
+  } catch (const InvalidArgument& e) {
+    a.error = where_what(e);
+    a.status = exit_bad_input;
+  } catch (const std::exception& e) {
+    a.error = std::string("internal: ") + e.what();
+    a.status = exit_internal;
+  }
+  return a;
+}
+
+Answer answer(const Command& command, std::string_view text, bool jsonl) {
+  return guarded([&] {
+    Answer a;
     // A blank line is not silently skipped: responses pair with input lines by position.
     if (jsonl && text.find_first_not_of(" \t") == std::string_view::npos) {
       throw InvalidArgument("request", "empty line (every line must hold one JSON request object)");
@@ -109,14 +126,8 @@ Answer answer(const Command& command, std::string_view text, bool jsonl) {
     } else {
       a.text = response.json.dump(-1, ' ', false, OrderedJson::error_handler_t::replace) + "\n";
     }
-  } catch (const InvalidArgument& e) {
-    a.error = where_what(e);
-    a.status = exit_bad_input;
-  } catch (const std::exception& e) {
-    a.error = std::string("internal: ") + e.what();
-    a.status = exit_internal;
-  }
-  return a;
+    return a;
+  });
 }
 
 bool command_exists(std::string_view name) { return io::find_command(name) != nullptr; }
@@ -143,20 +154,12 @@ std::string glyph_request(std::string_view body, const std::string& font_dir) {
 }  // namespace
 
 Answer answer_named(std::string_view name, std::string_view body, const std::string& font_dir) {
-  Answer a;
-  try {
+  return guarded([&] {
     const Command* command = io::find_command(name);
     if (!command) throw InvalidArgument("command", "unknown command " + io::quoted(name));
     if (name == "glyph") return answer(*command, glyph_request(body, font_dir), false);
     return answer(*command, body, false);
-  } catch (const InvalidArgument& e) {
-    a.error = where_what(e);
-    a.status = exit_bad_input;
-  } catch (const std::exception& e) {
-    a.error = std::string("internal: ") + e.what();
-    a.status = exit_internal;
-  }
-  return a;
+  });
 }
 
 std::string api_listing_text(bool with_glyph) {
