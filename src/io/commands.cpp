@@ -302,11 +302,13 @@ Response run(const Command& command, const Json& request) {
   return r;
 }
 
-std::string help(const Command& command) {
+namespace {
+
+/// The request fields of a command's help, one line each.
+std::string field_lines(const Command& command) {
   std::size_t width = 0;
   for (const auto& f : command.fields) width = std::max(width, f.name.size());
-  std::string s(command.details);
-  s += "\n\nRequest:\n";
+  std::string s;
   for (const auto& f : command.fields) {
     s += "  " + std::string(f.name) + std::string(width + 2 - f.name.size(), ' ') + std::string(field_type_name(f.type));
     if (f.required) s += ", required";
@@ -319,29 +321,47 @@ std::string help(const Command& command) {
     if (!rule.empty()) s += "; " + rule;
     s += "\n";
   }
+  return s;
+}
+
+/// A command's entry in the API listing: name, summary, fields.
+OrderedJson listing_entry(const Command& c) {
+  OrderedJson fields = OrderedJson::array();
+  for (const auto& f : c.fields) {
+    OrderedJson field{{"name", f.name}, {"type", field_type_name(f.type)}, {"required", f.required}};
+    if (!f.default_json.empty()) field["default"] = OrderedJson::parse(f.default_json);
+    if (!f.choices.empty()) field["choices"] = std::vector<std::string_view>(f.choices.begin(), f.choices.end());
+    if (f.needs) field["types"] = types_with(*f.needs);
+    if (f.type == FieldType::curves) {
+      field["min_count"] = f.min_count;
+      if (f.max_count != 0) field["max_count"] = f.max_count;
+    }
+    field["help"] = f.help;
+    fields.push_back(std::move(field));
+  }
+  return OrderedJson{{"name", c.name}, {"summary", c.summary}, {"fields", std::move(fields)}};
+}
+
+}  // namespace
+
+std::string help(const Command& command) {
+  std::string s(command.details);
+  s += "\n\nRequest:\n" + field_lines(command);
   s += "Response: " + std::string(command.response) + "\n\nExample:\n" + std::string(command.example);
+  // The surface form of the command (a request with `surface`), when it has one.
+  if (const Command* sf = surface_form(command.name); sf && sf != &command) {
+    s += "\n\nSurface form (a request with `surface` instead of `curve`): " + std::string(sf->summary) + "\n" + std::string(sf->details);
+    s += "\n\nRequest (surface form):\n" + field_lines(*sf);
+    s += "Response (surface form): " + std::string(sf->response) + "\n\nExample (surface form):\n" + std::string(sf->example);
+  }
   return s;
 }
 
 OrderedJson api_listing() {
-  OrderedJson list = OrderedJson::array();
-  for (const auto& c : commands()) {
-    OrderedJson fields = OrderedJson::array();
-    for (const auto& f : c.fields) {
-      OrderedJson field{{"name", f.name}, {"type", field_type_name(f.type)}, {"required", f.required}};
-      if (!f.default_json.empty()) field["default"] = OrderedJson::parse(f.default_json);
-      if (!f.choices.empty()) field["choices"] = std::vector<std::string_view>(f.choices.begin(), f.choices.end());
-      if (f.needs) field["types"] = types_with(*f.needs);
-      if (f.type == FieldType::curves) {
-        field["min_count"] = f.min_count;
-        if (f.max_count != 0) field["max_count"] = f.max_count;
-      }
-      field["help"] = f.help;
-      fields.push_back(std::move(field));
-    }
-    list.push_back(OrderedJson{{"name", c.name}, {"summary", c.summary}, {"fields", std::move(fields)}});
-  }
-  return OrderedJson{{"commands", std::move(list)}};
+  OrderedJson list = OrderedJson::array(), forms = OrderedJson::array();
+  for (const auto& c : commands()) list.push_back(listing_entry(c));
+  for (const auto& c : detail::surface_forms()) forms.push_back(listing_entry(c));
+  return OrderedJson{{"commands", std::move(list)}, {"surface_forms", std::move(forms)}};
 }
 
 }  // namespace casteljau::io

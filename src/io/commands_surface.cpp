@@ -12,9 +12,12 @@
 #include <vector>
 
 #include "casteljau/io/surfaces.hpp"
+#include "casteljau/surfaces/surface_intersect.hpp"
+#include "casteljau/surfaces/surface_project.hpp"
 #include "casteljau/surfaces/surface_queries.hpp"
 #include "commands_family.hpp"
 #include "text.hpp"
+#include "work_limits.hpp"
 
 namespace casteljau::io::detail {
 
@@ -238,6 +241,84 @@ Response area(const Args& a) {
 
 constexpr Field surface_only_fields[] = {
     {"surface", FieldType::surface, true},
+};
+
+// ---------------------------------------------------------------------------------------
+// project, intersect
+
+/// The work of the branch and bound on a surface, refused past the limit before any: the
+/// Bézier patches (at most (rows - p) (cols - q)) times the cost of one patch's squared
+/// distance in Bernstein form ((p + 1)^2 (q + 1)^2 products per coordinate).
+constexpr double max_surface_query_work = 1e8;
+
+void check_surface_work(const SurfaceForm<double>& f, const char* field, const char* what) {
+  const double pieces = static_cast<double>(f.rows - static_cast<std::size_t>(f.p)) * static_cast<double>(f.cols - static_cast<std::size_t>(f.q));
+  const double a = f.p + 1.0, b = f.q + 1.0;
+  const double work = pieces * a * a * b * b * static_cast<double>(f.cartesian() + 1);
+  if (work > max_surface_query_work) {
+    throw InvalidArgument(field, std::string(what) + " would take about " + limits::amount_text(work) + " units of work (" +
+                                     limits::amount_text(pieces) + " Bézier patches, (p + 1)^2 (q + 1)^2 per coordinate), more than the limit of " +
+                                     limits::amount_text(max_surface_query_work) + ": use fewer control points or lower degrees");
+  }
+}
+
+Response project(const Args& a) {
+  const AnySurface& s = a.surface("surface");
+  const std::vector<double>& q = a.numbers("point");
+  if (q.size() != s.form.cartesian()) {
+    throw InvalidArgument("point", "needs " + std::to_string(s.form.cartesian()) + " coordinates (the surface's dimension), got " +
+                                       std::to_string(q.size()));
+  }
+  check_surface_work(s.form, "surface", "the projection");
+  // The squared distance in Bernstein form has degrees 2p, 2q: binomials past C(512, 256)
+  // (about 5e152) would overflow in the products.
+  if (std::max(s.form.p, s.form.q) > 256) {
+    throw InvalidArgument("surface", "project needs degrees <= 256, got [" + std::to_string(s.form.p) + ", " + std::to_string(s.form.q) + "]");
+  }
+  // The halvings allowed: about 1e9 operations, each halving costing (2p + 1) (2q + 1)
+  // (2 max(p, q) + 1) x 2; at most 200000 (a bicubic patch: about 0.2 s).
+  const double per = (2.0 * s.form.p + 1) * (2.0 * s.form.q + 1) * (2.0 * std::max(s.form.p, s.form.q) + 1) * 2;
+  const auto max_splits = static_cast<std::size_t>(std::clamp(1e9 / per, 1000.0, 200000.0));
+  const auto r = casteljau::detail::project_surface<double>(s.form, std::span<const double>(q), max_splits);
+  Response out;
+  out.json = OrderedJson{{"uv", {r.u, r.v}}, {"point", r.point}, {"distance", r.distance}};
+  if (!r.all_uv.empty()) {
+    OrderedJson all = OrderedJson::array();
+    for (const auto& x : r.all_uv) all.push_back({x[0], x[1]});
+    out.json["all_uv"] = std::move(all);
+  }
+  return out;
+}
+
+constexpr Field project_fields[] = {
+    {"surface", FieldType::surface, true},
+    {"point", FieldType::point, true, {}, "the surface's dimension"},
+};
+
+SurfaceForm<double> column(const CurveForm<double>& c);
+
+Response intersect(const Args& a) {
+  const AnySurface& s = a.surface("surface");
+  require_3d(s, "surface", "curve-surface intersections");
+  const AnyCurve& curve = a.curve("curve");
+  if (dimension(curve) != 3) {
+    throw InvalidArgument("curve", "curve-surface intersections need a 3-D curve, got " + std::to_string(dimension(curve)) + "-D");
+  }
+  limits::check_curve_work(curve, "curve", "the intersection");
+  check_surface_work(s.form, "surface", "the intersection");
+  const CurveForm<double> c = curve_form(curve);
+  const auto r = casteljau::detail::intersect_curve_surface<double>(s.form, column(c));
+  OrderedJson hits = OrderedJson::array(), overlaps = OrderedJson::array();
+  for (const auto& h : r.hits) {
+    hits.push_back(OrderedJson{{"t", h.t}, {"uv", {h.u, h.v}}, {"point", {h.point[0], h.point[1], h.point[2]}}, {"kind", h.tangent ? "tangent" : "crossing"}});
+  }
+  for (const auto& o : r.overlaps) overlaps.push_back(OrderedJson{{"t", {o[0], o[1]}}});
+  return {OrderedJson{{"intersections", std::move(hits)}, {"overlaps", std::move(overlaps)}}};
+}
+
+constexpr Field intersect_fields[] = {
+    {"surface", FieldType::surface, true, {}, "3-D"},
+    {"curve", FieldType::curve, true, {}, "3-D"},
 };
 
 // ---------------------------------------------------------------------------------------
@@ -898,6 +979,25 @@ constexpr Command surface_form_family[] = {
      R"(  echo '{"surface": {"type": "bezier_surface", "points": [[[0,0,0],[0,1,0]],[[1,0,0],[1,1,1]]]}}' | casteljau bounds
   {"min":[0.0,0.0,0.0],"max":[1.0,1.0,1.0]})",
      surface_only_fields, bounds, "surface", "surface"},
+    {"project", "The closest point of a surface to a point (guaranteed global)",
+     "The global minimum of the distance from the point to the surface over its domain, by\n"
+     "branch and bound on the Bézier patches' squared distance in Bernstein form (guaranteed).\n"
+     "Where several isolated minimisers tie (distances equal to 1e-12 relative), uv is the one\n"
+     "with the smallest u, then v, and all_uv lists each; where the minimum is attained along a\n"
+     "curve (a point on the axis of a surface of revolution, a sphere's centre), uv is one of\n"
+     "its points and all_uv is omitted.",
+     "uv, point, distance; all_uv when several isolated minimisers tie",
+     R"(  echo '{"surface": {"type": "bezier_surface", "points": [[[0,0,0],[0,1,0]],[[1,0,0],[1,1,0]]]}, "point": [0.25,0.5,2]}' | casteljau project
+  {"uv":[0.25,0.5],"point":[0.25,0.5,0.0],"distance":2.0})",
+     project_fields, project, "surface", "surface"},
+    {"intersect", "The intersections of a 3-D curve with a 3-D surface",
+     "Where a 3-D curve meets a 3-D surface: crossings and tangent touches sorted by the\n"
+     "curve's parameter t, with the surface's (u, v) and the point; overlaps: the parameter\n"
+     "intervals where the curve lies on the surface (points inside them are not listed).",
+     "intersections: [{t, uv, point, kind: crossing or tangent}]; overlaps: [{t: [t0, t1]}]",
+     R"(  echo '{"surface": {"type": "bezier_surface", "points": [[[0,0,0],[0,1,0]],[[1,0,0],[1,1,0]]]}, "curve": {"type": "bezier", "points": [[0.5,0.5,-1],[0.5,0.5,1]]}}' | casteljau intersect
+  {"intersections":[{"t":0.5,"uv":[0.5,0.5],"point":[0.5,0.5,0.0],"kind":"crossing"}],"overlaps":[]})",
+     intersect_fields, intersect, "surface", "surface"},
     {"area", "The area of a surface", "The surface area over the domain, to 1e-10 relative.", "area",
      R"(  echo '{"surface": {"type": "bezier_surface", "points": [[[0,0],[0,1]],[[2,0],[2,1]]]}}' | casteljau area
   {"area":2.0})",

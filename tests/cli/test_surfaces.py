@@ -1,6 +1,7 @@
 #!/usr/bin/python3
 """Black-box tests of the surfaces (issue 19): surface JSON, the surface forms of eval,
-split, elevate, insert_knot, to_bezier, isocurve, and the `surface` constructions.
+split, elevate, insert_knot, to_bezier, isocurve, project, intersect, and the `surface`
+constructions.
 
 Oracles, all independent of the program:
 - a tensor-product evaluator written here (Cox-de Boor by its recursive definition, the
@@ -10,6 +11,11 @@ Oracles, all independent of the program:
   and mean curvatures), the hyperbolic paraboloid's curvatures, rotations by Rodrigues'
   formula, extrusion and ruled surfaces from de Casteljau written here;
 - numpy.linalg.lstsq for the least-squares fit, on design matrices built here;
+- project: closed forms (sphere, torus, cylinder, plane, a parabolic trough's two tied
+  minimisers) and, on random surfaces, dense sampling refined by scipy.optimize on the
+  evaluator here (the answer must not be worse); intersect: closed forms (rays through
+  and tangent to a sphere, a line on a plane), points checked on both by the evaluators
+  here, crossings counted by sign changes on a graph surface;
 - properties: splitting, elevation, knot insertion and the Bézier patches leave the
   surface unchanged; interpolation passes through its data.
 
@@ -496,6 +502,272 @@ class SurfaceQueryTest(CliTest):
                 # the true extreme).
                 self.assertLessEqual(sign * b[key][k], sign * extreme + 1e-15 * size)
                 self.assertGreaterEqual(sign * b[key][k], sign * extreme - 1e-9 * size)
+
+
+def basis_matrix(U, p, n, ts):
+    """The matrix of N_i(t) (rows: the ts, columns: i < n), by the Cox-de Boor evaluator above."""
+    return np.array([[float(basis(U, p, i, t)) for i in range(n)] for t in ts])
+
+
+def dense_points(s, ts_u, ts_v):
+    """S on the grid ts_u x ts_v, by the tensor product of the basis matrices written here
+    (the rational quotient for NURBS): an array (len(ts_u), len(ts_v), d)."""
+    p, q, U, V = knots_of(s)
+    P = np.array(s["points"], dtype=float)
+    W = np.array(s["weights"], dtype=float) if "weights" in s else np.ones(P.shape[:2])
+    A, B = basis_matrix(U, p, P.shape[0], ts_u), basis_matrix(V, q, P.shape[1], ts_v)
+    num = np.einsum("ai,bj,ijk->abk", A, B, P * W[:, :, None])
+    return num / np.einsum("ai,bj,ij->ab", A, B, W)[:, :, None]
+
+
+def brute_force_distance(s, x, n=40):
+    """The least distance from x to s by dense sampling (n + 1)^2, then scipy's bounded
+    L-BFGS-B from the three best samples on the evaluator written here (never below the
+    true minimum: every value is a point of the surface)."""
+    from scipy.optimize import minimize
+    p, q, U, V = knots_of(s)
+    a, b, c, d = U[p], U[-p - 1], V[q], V[-q - 1]
+    tu, tv = np.linspace(a, b, n + 1), np.linspace(c, d, n + 1)
+    D = np.linalg.norm(dense_points(s, tu, tv) - np.array(x), axis=2)
+    best = float(D.min())
+    for k in np.argsort(D, axis=None)[:3]:
+        i, j = divmod(int(k), n + 1)
+        f = lambda y: math.dist(evaluate(s, min(max(y[0], a), b), min(max(y[1], c), d)), x)
+        res = minimize(f, [tu[i], tv[j]], bounds=[(a, b), (c, d)], method="L-BFGS-B", options={"ftol": 1e-15, "gtol": 1e-12})
+        best = min(best, float(res.fun))
+    return best
+
+
+def torus_profile(R, a):
+    """The circle of radius a about (R, 0, 0) in the xz-plane, four quarter arcs."""
+    return {"type": "nurbs", "degree": 2, "knots": [0, 0, 0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1, 1, 1],
+            "points": [[R + a, 0, 0], [R + a, 0, a], [R, 0, a], [R - a, 0, a], [R - a, 0, 0], [R - a, 0, -a],
+                       [R, 0, -a], [R + a, 0, -a], [R + a, 0, 0]],
+            "weights": [1, HALF, 1, HALF, 1, HALF, 1, HALF, 1]}
+
+
+SQUARE = {"type": "bezier_surface", "points": [[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 0]]]}  # z = 0, x = u, y = v
+
+
+class SurfaceProjectTest(CliTest):
+    def check_answer(self, s, x, r):
+        """The reported point is S(uv) (evaluator written here) and distance its distance."""
+        self.assert_close(r["point"], evaluate(s, *r["uv"]), 1e-13)  # evaluations: a few dozen eps
+        self.assertAlmostEqual(r["distance"], math.dist(r["point"], x), delta=1e-14 * max(1, r["distance"]))
+
+    def test_sphere_torus_cylinder_plane_closed_forms(self):
+        r = 2.5
+        sphere = self.ok("surface", {"construct": "revolve", "curve": semicircle(r), "axis": Z_AXIS})["surface"]
+        rng = random.Random(7)
+        for _ in range(6):
+            x = [rng.uniform(-6, 6) for _ in range(3)]
+            got = self.ok("project", {"surface": sphere, "point": x})
+            self.check_answer(sphere, x, got)
+            # | |x| - r | and the radial point; the distance is a global minimum to its
+            # rounding (a few eps of r), the point to sqrt of that (a flat minimum).
+            self.assertAlmostEqual(got["distance"], abs(norm(x) - r), delta=1e-14 * r)
+            self.assert_close(got["point"], [r * c / norm(x) for c in x], 1e-7)
+            self.assertNotIn("all_uv", got)
+        # The centre: every point ties, a whole region of minimisers (no all_uv).
+        got = self.ok("project", {"surface": sphere, "point": [0, 0, 0]})
+        self.assertAlmostEqual(got["distance"], r, delta=1e-14 * r)
+        self.assertNotIn("all_uv", got)
+        self.check_answer(sphere, [0, 0, 0], got)
+        # A torus and a point on its axis: the minimum is attained on a circle (no all_uv):
+        # sqrt(R^2 + h^2) - a.
+        R, a = 3.0, 1.0
+        torus = self.ok("surface", {"construct": "revolve", "curve": torus_profile(R, a), "axis": Z_AXIS})["surface"]
+        for h in (0.0, 0.4, -2.0):
+            got = self.ok("project", {"surface": torus, "point": [0, 0, h]})
+            self.assertAlmostEqual(got["distance"], math.hypot(R, h) - a, delta=1e-14 * R)
+            self.assertNotIn("all_uv", got)
+            self.check_answer(torus, [0, 0, h], got)
+        # A point off the axis: the nearest point of the tube circle in its half-plane.
+        x = [4.0, 1.5, 0.7]
+        got = self.ok("project", {"surface": torus, "point": x})
+        rho = math.hypot(x[0], x[1])
+        self.assertAlmostEqual(got["distance"], math.hypot(rho - R, x[2]) - a, delta=1e-14 * R)
+        self.assertNotIn("all_uv", got)
+        # A cylinder of radius 2 over 2 radians, height 5: inside its angle and height the
+        # radial distance, beyond its angle the distance to its end line.
+        cyl = self.ok("surface", {"construct": "revolve", "curve": {"type": "bezier", "points": [[2, 0, 0], [2, 0, 5]]},
+                                  "axis": Z_AXIS, "angle": 2})["surface"]
+        for x, want in (([3 * math.cos(1), 3 * math.sin(1), 2], 1.0), ([0.5 * math.cos(0.3), 0.5 * math.sin(0.3), 4], 1.5),
+                        ([1, -1, 1], math.dist([1, -1], [2, 0]))):
+            got = self.ok("project", {"surface": cyl, "point": x})
+            self.assertAlmostEqual(got["distance"], want, delta=1e-14 * 5)
+            self.check_answer(cyl, x, got)
+        # The unit square in z = 0: above it the height, beyond an edge the edge's distance,
+        # beyond a corner the corner's.
+        for x, uv, want in (([0.3, 0.6, 2], [0.3, 0.6], 2), ([1.5, 0.25, -1], [1, 0.25], math.hypot(0.5, 1)),
+                            ([-1, -2, 0], [0, 0], math.hypot(1, 2)), ([0.5, 0.5, 0], [0.5, 0.5], 0)):
+            got = self.ok("project", {"surface": SQUARE, "point": x})
+            self.assertAlmostEqual(got["distance"], want, delta=1e-15)
+            self.assert_close(got["uv"], uv, 1e-7)  # a global minimum to the distance's rounding: uv to its square root
+
+    def test_two_isolated_minimisers_tie(self):
+        # The parabolic trough z = (u - 1/2)^2 (x = u/..., y = v): from (1/2, 1/2, h) beyond its
+        # focal point, d^2 = s^2 + (h - s^2)^2 (s = u - 1/2) is least at s^2 = h - 1/2:
+        # h = 0.5625 gives u = 0.25 and 0.75, v = 0.5, d^2 = 0.0625 + 0.25.
+        trough = {"type": "bezier_surface", "points": [[[0, 0, 0.25], [0, 1, 0.25]], [[0.5, 0, -0.25], [0.5, 1, -0.25]],
+                                                       [[1, 0, 0.25], [1, 1, 0.25]]]}
+        got = self.ok("project", {"surface": trough, "point": [0.5, 0.5, 0.5625]})
+        self.assertAlmostEqual(got["distance"], math.sqrt(0.3125), delta=1e-15)
+        self.assertEqual(len(got["all_uv"]), 2)
+        self.assert_close(got["all_uv"], [[0.25, 0.5], [0.75, 0.5]], 1e-7)  # flat minima: the square root of eps
+        self.assertEqual(got["uv"], got["all_uv"][0])
+        # Off the symmetry plane the tie is broken: one minimiser, the nearer side.
+        got = self.ok("project", {"surface": trough, "point": [0.55, 0.5, 0.5625]})
+        self.assertNotIn("all_uv", got)
+        self.assertGreater(got["uv"][0], 0.5)
+
+    def test_random_surfaces_against_brute_force(self):
+        # The answer is never worse than dense sampling refined by scipy (1e-12 relative:
+        # the tie tolerance), and is a point of the surface at the distance reported.
+        rng = random.Random(1919)
+        for k in range(4):
+            s = random_nurbs(rng, p=rng.choice([2, 3]), q=rng.choice([1, 2, 3]), rows=5, cols=5)
+            if k % 2:
+                del s["weights"]
+                s["type"] = "bspline_surface"
+            for _ in range(2):
+                x = [rng.uniform(-3, 3) for _ in range(3)]
+                got = self.ok("project", {"surface": s, "point": x})
+                self.check_answer(s, x, got)
+                self.assertLessEqual(got["distance"], brute_force_distance(s, x) * (1 + 1e-12) + 1e-14)
+
+    def test_other_dimensions_and_bad_input(self):
+        # 2-D: a bilinear square patch in the plane covers the point (distance 0).
+        s2 = {"type": "bezier_surface", "points": [[[0, 0], [0, 2]], [[2, 0], [2, 2]]]}
+        got = self.ok("project", {"surface": s2, "point": [0.5, 1.5]})
+        self.assertEqual(got["distance"], 0)
+        self.assert_close(got["uv"], [0.25, 0.75], 1e-15)
+        self.bad("project", {"surface": SQUARE, "point": [1, 2]}, where="point", contains="3 coordinates")
+        self.bad("project", {"surface": SQUARE}, where="point", contains="missing")
+        self.bad("project", {"surface": SQUARE, "point": [0, 0, "x"]}, where="point[2]")
+        self.bad("project", {"surface": SQUARE, "point": [0, 0, 0], "farthest": True}, where="farthest", contains="unknown field")
+        # Past the work limit: refused at once, naming the surface.
+        n = 36
+        big = {"type": "bspline_surface", "degree": [30, 30],
+               "knots": [[0] * 31 + [k / 6 for k in range(1, 6)] + [1] * 31] * 2,
+               "points": [[[i, j, (i * j) % 7] for j in range(n)] for i in range(n)]}
+        self.bad("project", {"surface": big, "point": [0, 0, 0]}, where="surface", contains="limit")
+
+
+def line(a, b):
+    return {"type": "bezier", "points": [a, b]}
+
+
+class SurfaceIntersectTest(CliTest):
+    def check_hits(self, s, c, r, tol=1e-9):
+        """Each point is on both: C(t) by de Casteljau written here, S(uv) by the evaluator
+        (to the intersection's tolerance, 1e-9 of the size)."""
+        for h in r["intersections"]:
+            self.assert_close(h["point"], de_casteljau(c["points"], h["t"]), 1e-14)
+            self.assert_close(h["point"], evaluate(s, *h["uv"]), tol)
+        ts = [h["t"] for h in r["intersections"]]
+        self.assertEqual(ts, sorted(ts))
+
+    def test_rays_and_a_sphere(self):
+        r = 2.0
+        sphere = self.ok("surface", {"construct": "revolve", "curve": semicircle(r), "axis": Z_AXIS})["surface"]
+        # A ray (x from -5 to 5 at y0, z0): crossings where x^2 = r^2 - y0^2 - z0^2.
+        for y0, z0 in ((0.3, 0.2), (0, 0), (1.1, -1.2)):
+            c = line([-5, y0, z0], [5, y0, z0])
+            got = self.ok("intersect", {"surface": sphere, "curve": c})
+            xs = math.sqrt(r * r - y0 * y0 - z0 * z0)
+            self.assertEqual([h["kind"] for h in got["intersections"]], ["crossing", "crossing"])
+            self.assert_close([h["t"] for h in got["intersections"]], [(5 - xs) / 10, (5 + xs) / 10], 1e-12)
+            self.assertEqual(got["overlaps"], [])
+            self.check_hits(sphere, c, got)
+        # Along the axis through both poles (where the normal is only a limit).
+        c = line([0, 0, -4], [0, 0, 4])
+        got = self.ok("intersect", {"surface": sphere, "curve": c})
+        self.assertEqual([h["kind"] for h in got["intersections"]], ["crossing", "crossing"])
+        self.assert_close([h["t"] for h in got["intersections"]], [0.25, 0.75], 1e-12)
+        # Tangent: a line at distance r from the centre touches once, at x = 0 (a double
+        # root: t to the square root of the rounding).
+        z0 = math.sqrt(r * r - 0.36)
+        for c in (line([-5, r, 0], [5, r, 0]), line([-5, 0.6, z0], [5, 0.6, z0])):
+            got = self.ok("intersect", {"surface": sphere, "curve": c})
+            self.assertEqual([h["kind"] for h in got["intersections"]], ["tangent"], got)
+            self.assertAlmostEqual(got["intersections"][0]["t"], 0.5, delta=1e-7)
+            self.check_hits(sphere, c, got)
+        # Missing it by 1e-6: nothing.
+        got = self.ok("intersect", {"surface": sphere, "curve": line([-5, r + 1e-6, 0], [5, r + 1e-6, 0])})
+        self.assertEqual(got["intersections"], [])
+
+    def test_overlaps(self):
+        # A line in the plane of the square: on it from x = 0 to x = 1 (t = 0.2 .. 0.6).
+        c = line([-0.5, 0.5, 0], [2, 0.5, 0])
+        got = self.ok("intersect", {"surface": SQUARE, "curve": c})
+        self.assertEqual(got["intersections"], [])
+        self.assertEqual(len(got["overlaps"]), 1)
+        self.assert_close(got["overlaps"][0]["t"], [0.2, 0.6], 1e-12)
+        # Inside the square throughout.
+        got = self.ok("intersect", {"surface": SQUARE, "curve": line([0.1, 0.2, 0], [0.8, 0.9, 0])})
+        self.assertEqual(got["overlaps"], [{"t": [0, 1]}])
+        # An isocurve of a random NURBS surface lies on it over its whole domain.
+        rng = random.Random(3)
+        s = random_nurbs(rng)
+        iso = self.ok("isocurve", {"surface": s, "direction": "u", "value": 0.37})["curve"]
+        got = self.ok("intersect", {"surface": s, "curve": iso})
+        self.assertEqual(got["intersections"], [])
+        self.assertEqual(len(got["overlaps"]), 1)
+        self.assert_close(got["overlaps"][0]["t"], [0, 1], 1e-12)
+        # A circle of a sphere (its equator, a rational curve) lies on it.
+        r = 1.5
+        sphere = self.ok("surface", {"construct": "revolve", "curve": semicircle(r), "axis": Z_AXIS})["surface"]
+        eq = {"type": "circle", "center": [0, 0], "radius": r}
+        eq3 = {"type": "nurbs", "degree": 2, "knots": [0, 0, 0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1, 1, 1],
+               "points": [[r, 0, 0], [r, r, 0], [0, r, 0], [-r, r, 0], [-r, 0, 0], [-r, -r, 0], [0, -r, 0], [r, -r, 0], [r, 0, 0]],
+               "weights": [1, HALF, 1, HALF, 1, HALF, 1, HALF, 1]}
+        got = self.ok("intersect", {"surface": sphere, "curve": eq3})
+        self.assertEqual(got["intersections"], [])
+        self.assertEqual(len(got["overlaps"]), 1)
+        self.assert_close(got["overlaps"][0]["t"], [0, 1], 1e-12)
+
+    def test_random_graph_surfaces_against_sign_changes(self):
+        # S(u, v) = (u, v, h(u, v)), a random bicubic height; a random segment crosses it
+        # where z(t) - h(x(t), y(t)) changes sign (counted on 2000 samples, tangencies
+        # avoided by the random data): every crossing is found, each on both.
+        rng = random.Random(11)
+        for _ in range(4):
+            s = {"type": "bezier_surface", "points": [[[i / 3, j / 3, rng.uniform(-1, 1)] for j in range(4)] for i in range(4)]}
+            a = [rng.uniform(0, 0.3), rng.uniform(0, 0.3), rng.uniform(-1, 1)]
+            b = [rng.uniform(0.7, 1), rng.uniform(0.7, 1), rng.uniform(-1, 1)]
+            c = {"type": "bezier", "points": [a, [rng.uniform(0, 1), rng.uniform(0, 1), rng.uniform(-2, 2)], b]}
+            ts = np.linspace(0, 1, 2001)
+            pts = [de_casteljau(c["points"], t) for t in ts]
+            g = [p[2] - evaluate(s, p[0], p[1])[2] for p in pts]
+            changes = sum(1 for k in range(len(g) - 1) if (g[k] < 0) != (g[k + 1] < 0))
+            got = self.ok("intersect", {"surface": s, "curve": c})
+            self.assertEqual(len(got["intersections"]), changes, got)
+            self.assertTrue(all(h["kind"] == "crossing" for h in got["intersections"]))
+            self.check_hits(s, c, got)
+
+    def test_bad_input(self):
+        self.bad("intersect", {"surface": SQUARE, "curve": line([0, 0], [1, 1])}, where="curve", contains="3-D")
+        s2 = {"type": "bezier_surface", "points": [[[0, 0], [0, 2]], [[2, 0], [2, 2]]]}
+        self.bad("intersect", {"surface": s2, "curve": line([0, 0, 0], [1, 1, 1])}, where="surface", contains="3-D")
+        self.bad("intersect", {"surface": SQUARE}, where="curve", contains="missing")
+        self.bad("intersect", {"surface": SQUARE, "curves": [line([0, 0, 0], [1, 1, 1])]}, where="curves", contains="unknown field")
+
+
+class SurfaceListingTest(CliTest):
+    def test_help_and_listing_show_the_surface_forms(self):
+        rc, out, err = test_cli.run("eval", args=["--help"])
+        self.assertEqual((rc, err), (0, ""))
+        form = out.split("Surface form", 1)[1]
+        for field in ("surface", "uv", "derivatives", "normal", "curvature"):
+            self.assertRegex(form, rf"\n  {field} +\S")
+        # Each surface form's example answers as printed (a consistency check, as above).
+        for c in ("eval", "split", "elevate", "insert_knot", "to_bezier", "bounds", "area", "project", "intersect"):
+            rc, out, err = test_cli.run(c, args=["--help"])
+            lines = out.split("Example (surface form):", 1)[1].splitlines()
+            i = next(i for i, l in enumerate(lines) if l.strip().startswith("echo '"))
+            request = lines[i].strip()[len("echo '"):lines[i].strip().index("' |")]
+            self.assertEqual(json.loads(test_cli.run(c, text=request)[1]), json.loads(lines[i + 1]), c)
 
 
 class SurfaceHelpTest(CliTest):

@@ -171,13 +171,14 @@ struct Command {
 [[nodiscard]] Response run(const Command& command, const Json& request);
 
 /// The command's help: details, the request fields (type, required or default, help),
-/// the response, the example.
+/// the response, the example; then the same for its surface form when it has one.
 [[nodiscard]] std::string help(const Command& command);
 
 /// The listing of `GET /api`: {"commands": [{"name", "summary", "fields": [{"name",
 /// "type", "required", "default" (when there is one), "choices" (strings with a fixed
 /// set), "types" (curves of some types only), "min_count", "max_count" (curve arrays),
-/// "help"}, ...]}, ...]}.
+/// "help"}, ...]}, ...]}, and "surface_forms": the surface forms of the commands that have
+/// one (eval, split, ..., project, intersect), each entry as in "commands".
 [[nodiscard]] OrderedJson api_listing();
 
 }  // namespace casteljau::io
