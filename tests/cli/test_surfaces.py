@@ -697,6 +697,33 @@ class SurfaceIntersectTest(CliTest):
         got = self.ok("intersect", {"surface": sphere, "curve": line([-5, r + 1e-6, 0], [5, r + 1e-6, 0])})
         self.assertEqual(got["intersections"], [])
 
+    def test_lines_and_a_torus(self):
+        R, a = 3.0, 1.0
+        torus = self.ok("surface", {"construct": "revolve", "curve": torus_profile(R, a), "axis": Z_AXIS})["surface"]
+        # Random segments: the real roots in [0, 1] of the torus's quartic
+        # (|x|^2 + R^2 - a^2)^2 - 4 R^2 (x^2 + y^2) along them (numpy's polynomial roots).
+        rng = random.Random(31)
+        Poly = np.polynomial.Polynomial
+        for _ in range(6):
+            P0, P1 = [rng.uniform(-5, 5) for _ in range(3)], [rng.uniform(-5, 5) for _ in range(3)]
+            X = [Poly([P0[i], P1[i] - P0[i]]) for i in range(3)]
+            f = (X[0] ** 2 + X[1] ** 2 + X[2] ** 2 + R * R - a * a) ** 2 - 4 * R * R * (X[0] ** 2 + X[1] ** 2)
+            want = sorted(r.real for r in f.roots() if abs(r.imag) < 1e-9 and 0 <= r.real <= 1)
+            got = self.ok("intersect", {"surface": torus, "curve": line(P0, P1)})
+            # Simple roots of a quartic with O(10) coefficients: numpy's to about 1e-12.
+            self.assert_close([h["t"] for h in got["intersections"]], want, 1e-10)
+        # Horizontal lines at the top (z = a) touch it where they cross the top circle
+        # (two tangent points), and along the top circle's tangent at (0, 3, 1) the contact
+        # is of order 4 (z = a - x^4 / 72 + ...): one tangent point, t to the 4th root of
+        # the rounding.
+        got = self.ok("intersect", {"surface": torus, "curve": line([-5, 2, 1], [5, 2, 1])})
+        self.assertEqual([h["kind"] for h in got["intersections"]], ["tangent", "tangent"])
+        self.assert_close([h["t"] for h in got["intersections"]], [0.5 - math.sqrt(5) / 10, 0.5 + math.sqrt(5) / 10], 1e-7)
+        got = self.ok("intersect", {"surface": torus, "curve": line([-5, 3, 1], [5, 3, 1])})
+        self.assertEqual([h["kind"] for h in got["intersections"]], ["tangent"])
+        self.assertAlmostEqual(got["intersections"][0]["t"], 0.5, delta=1e-3)
+        self.assertEqual(got["overlaps"], [])
+
     def test_overlaps(self):
         # A line in the plane of the square: on it from x = 0 to x = 1 (t = 0.2 .. 0.6).
         c = line([-0.5, 0.5, 0], [2, 0.5, 0])
@@ -761,6 +788,21 @@ class SurfaceListingTest(CliTest):
         form = out.split("Surface form", 1)[1]
         for field in ("surface", "uv", "derivatives", "normal", "curvature"):
             self.assertRegex(form, rf"\n  {field} +\S")
+        # GET /api lists the surface forms beside the commands (the server of test_serve.py).
+        import test_serve
+        test_serve.BINARY = test_cli.BINARY
+        server = test_serve.Server()
+        try:
+            status, _, body = server.request("GET", "/api")
+            self.assertEqual(status, 200)
+            forms = {c["name"]: c for c in json.loads(body)["surface_forms"]}
+            self.assertEqual(set(forms), {"eval", "split", "elevate", "insert_knot", "to_bezier", "bounds", "area", "project", "intersect"})
+            self.assertEqual([f["name"] for f in forms["eval"]["fields"]], ["surface", "uv", "derivatives", "normal", "curvature"])
+            self.assertEqual([(f["name"], f["type"]) for f in forms["intersect"]["fields"]], [("surface", "surface"), ("curve", "curve")])
+            status, _, body = server.post("project", {"surface": SQUARE, "point": [0.25, 0.5, 2]})
+            self.assertEqual((status, json.loads(body)["distance"]), (200, 2.0))
+        finally:
+            server.stop()
         # Each surface form's example answers as printed (a consistency check, as above).
         for c in ("eval", "split", "elevate", "insert_knot", "to_bezier", "bounds", "area", "project", "intersect"):
             rc, out, err = test_cli.run(c, args=["--help"])

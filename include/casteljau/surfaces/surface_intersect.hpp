@@ -8,11 +8,14 @@
 // overlapping pair the larger is halved (a patch in both directions), until both are below
 // 1e-4 of the size of the data; then damped Newton (Levenberg-Marquardt) on C(t) - S(u, v)
 // = 0 from the pair's centre, inside both domains, accepts the points where the two meet to
-// 1e-9 of the size. A curve piece below 1e-2 of the size whose 9 sample points all lie on
-// the surface (a local projection to within 1e-10 of the size) lies on it: an overlap;
+// 1e-9 of the size. A curve piece between 1e-3 and 1e-2 of the size whose 9 sample points
+// all lie on the surface (a local projection to within 1e-13 of the size, or the rounding
+// of the coordinates) lies on it: an overlap (shorter ones are not seen as such);
 // the overlaps' ends are refined by bisection. Points found twice (a piece boundary, a
-// seam of a closed surface) are merged; a point is tangent where the curve's unit tangent
-// makes an angle below 1e-6 with the surface's tangent plane.
+// seam of a closed surface) are merged, and so are solutions between which the curve stays
+// on the surface to 1e-9 of the size (a touch of high order: one tangent point); a point
+// is tangent where the curve's unit tangent makes an angle below 1e-6 with the surface's
+// tangent plane.
 #pragma once
 
 #include <algorithm>
@@ -131,7 +134,10 @@ CurveSurfaceIntersection<T> intersect_curve_surface(const SurfaceForm<T>& f, con
   for (int k = 0; k < 3; ++k) mag = std::max({mag, std::abs(all.lo[k]), std::abs(all.hi[k])});
   scale = std::max(scale, 64 * eps * mag);
   if (!(scale > 0)) scale = 1;  // everything at the origin
-  const T slack = T(1e-10) * scale, leaf = T(1e-4) * scale, on_tol = T(1e-10) * scale, hit_tol = T(1e-9) * scale;
+  // on_tol: a point on the surface to the rounding of the data (looser, a touch of high
+  // order would pass for an overlap along its flat contact).
+  const T slack = T(1e-10) * scale, leaf = T(1e-4) * scale, hit_tol = T(1e-9) * scale;
+  const T on_tol = std::max(T(1e-13) * scale, 64 * eps * mag);
 
   const auto curve_at = [&](T t, int k) { return partials(c, t, T(0), k); };  // layout (k+1) x (k+1) x 3
   // The distance from C(t) to the surface near (u, v) (a local projection), and where.
@@ -263,7 +269,7 @@ CurveSurfaceIntersection<T> intersect_curve_surface(const SurfaceForm<T>& f, con
     if (keep.empty()) continue;
     const T size = bc.diagonal();
     const bool curve_splits = can_halve(w.curve, Direction::u);
-    if (size <= T(1e-2) * scale) {
+    if (size <= T(1e-2) * scale && size >= T(1e-3) * scale) {
       // Does the whole piece lie on the surface?
       std::vector<std::array<T, 2>> starts;
       for (const auto& p : keep) starts.push_back({(p.u0 + p.u1) / 2, (p.v0 + p.v1) / 2});
@@ -362,20 +368,6 @@ CurveSurfaceIntersection<T> intersect_curve_surface(const SurfaceForm<T>& f, con
         }
         // A parameter beyond the end that is off the surface.
         T step = std::max((o[1] - o[0]) / 8, T(1e-9) * (tb - ta));
-        // The ends to the rounding of the points rather than to on_tol: beyond an edge of
-        // the surface the distance grows only linearly.
-        const T end_tol = std::max(T(1e-13) * scale, 64 * eps * mag);
-        const auto on_surface = [&](T t, std::span<const std::array<T, 2>> starts, T& uu, T& vv) {
-          for (const auto& s0 : starts) {
-            T a = s0[0], b = s0[1];
-            if (local_distance(t, a, b) <= end_tol) {
-              uu = a;
-              vv = b;
-              return true;
-            }
-          }
-          return false;
-        };
         T off = on;
         bool found = false;
         for (int k2 = 0; k2 < 60; ++k2) {
@@ -415,23 +407,40 @@ CurveSurfaceIntersection<T> intersect_curve_surface(const SurfaceForm<T>& f, con
       else out.overlaps.push_back(o);
     }
   }
-  // Points: merged where found twice, dropped inside (or at the ends of) an overlap.
+  // Points: merged where found twice (the same point from two pairs), or where the curve
+  // between two of them stays on the surface to hit_tol (a touch of high order gives a run
+  // of solutions along its flat contact: one tangent point, the one that meets best).
   std::sort(raw.begin(), raw.end(), [](const Raw& a, const Raw& b) { return a.t < b.t; });
   const T tmerge = T(1e-6) * (tb - ta), dmerge = T(1e-6) * scale;
-  std::vector<Raw> merged;
+  struct Cluster {
+    Raw best, last;
+    T first_t;
+  };
+  std::vector<Cluster> merged;
   for (const auto& r : raw) {
     if (!merged.empty()) {
-      Raw& last = merged.back();
-      const std::vector<T> x = point(c, r.t, T(0)), y = point(c, last.t, T(0));
-      if (r.t - last.t <= tmerge && safe_distance(x.data(), y.data(), 3) <= dmerge) {
-        if (r.residual < last.residual) last = r;
+      Cluster& k = merged.back();
+      const std::vector<T> x = point(c, r.t, T(0)), y = point(c, k.last.t, T(0));
+      bool same = r.t - k.last.t <= tmerge && safe_distance(x.data(), y.data(), 3) <= dmerge;
+      if (!same && r.t - k.last.t <= T(1e-2) * (tb - ta)) {
+        same = true;
+        for (int q = 1; q <= 3 && same; ++q) {
+          const T tm = k.last.t + (r.t - k.last.t) * static_cast<T>(q) / 4;
+          T u = k.last.u + (r.u - k.last.u) * static_cast<T>(q) / 4, v = k.last.v + (r.v - k.last.v) * static_cast<T>(q) / 4;
+          same = local_distance(tm, u, v) <= hit_tol;
+        }
+      }
+      if (same) {
+        if (r.residual < k.best.residual) k.best = r;
+        k.last = r;
         continue;
       }
     }
-    merged.push_back(r);
+    merged.push_back({r, r, r.t});
   }
   const T tin = T(1e-9) * (tb - ta);
-  for (const auto& r : merged) {
+  for (const auto& k : merged) {
+    const Raw& r = k.best;
     bool inside = false;
     for (const auto& o : out.overlaps) inside = inside || (r.t >= o[0] - tin && r.t <= o[1] + tin);
     if (inside) continue;
@@ -460,6 +469,8 @@ CurveSurfaceIntersection<T> intersect_curve_surface(const SurfaceForm<T>& f, con
     const T* Ct = dc.data() + 2 * 3;
     const T cl = std::hypot(Ct[0], Ct[1], Ct[2]);
     if (have && cl > 0) h.tangent = std::abs(Ct[0] * nrm[0] + Ct[1] * nrm[1] + Ct[2] * nrm[2]) / cl <= T(1e-6);
+    // A run of solutions spread along the curve: a contact of high order.
+    if (k.last.t - k.first_t > T(1e-9) * (tb - ta)) h.tangent = true;
     out.hits.push_back(h);
   }
   return out;
