@@ -12,12 +12,22 @@
 // "weights" (NURBS only), "eval": [[point, first derivative, second derivative], ...] at
 // the requested parameters on the resulting curve, and for remove_knot "removed": the
 // largest k <= times for which RemoveKnot(index, multiplicity - k, tolerance) succeeds}.
+//
+// Surfaces (Geom_BSplineSurface, evaluated through GeomAdaptor_Surface, its cached
+// evaluator): {"op": "surface_eval", "degree": [p, q], "knots": [U, V] (full vectors),
+// "points": grid [i][j] of 3-D points, "weights": grid (optional: NURBS), "uv": [[u, v],
+// ...]} answers {"eval": [[S, S_u, S_v, S_uu, S_uv, S_vv], ...]} (GeomAdaptor_Surface::D2)
+// and {"d0": [S, ...]} (D0 of the same adaptor).
 // Errors: {"error": "..."}.
+#include <GeomAdaptor_Surface.hxx>
 #include <Geom_BSplineCurve.hxx>
+#include <Geom_BSplineSurface.hxx>
 #include <Standard_Failure.hxx>
 #include <TColStd_Array1OfInteger.hxx>
 #include <TColStd_Array1OfReal.hxx>
+#include <TColStd_Array2OfReal.hxx>
 #include <TColgp_Array1OfPnt.hxx>
+#include <TColgp_Array2OfPnt.hxx>
 #include <gp_Pnt.hxx>
 #include <gp_Vec.hxx>
 
@@ -122,8 +132,69 @@ int knot_index(const Handle(Geom_BSplineCurve) & c, double u) {
   return 0;
 }
 
+/// Distinct knots and multiplicities of a full knot vector.
+void knots_and_mults(const std::vector<double>& flat, std::vector<double>& distinct, std::vector<int>& mult) {
+  for (const double u : flat) {
+    if (!distinct.empty() && distinct.back() == u) {
+      ++mult.back();
+    } else {
+      distinct.push_back(u);
+      mult.push_back(1);
+    }
+  }
+}
+
+json surface_eval(const json& r) {
+  const int p = r.at("degree").at(0).get<int>(), q = r.at("degree").at(1).get<int>();
+  const auto& pts = r.at("points");
+  const int rows = static_cast<int>(pts.size()), cols = static_cast<int>(pts.at(0).size());
+  TColgp_Array2OfPnt poles(1, rows, 1, cols);
+  for (int i = 0; i < rows; ++i)
+    for (int j = 0; j < cols; ++j) {
+      const auto& x = pts.at(static_cast<std::size_t>(i)).at(static_cast<std::size_t>(j));
+      poles(i + 1, j + 1) = gp_Pnt(x.at(0).get<double>(), x.at(1).get<double>(), x.at(2).get<double>());
+    }
+  std::vector<double> du, dv;
+  std::vector<int> mu, mv;
+  knots_and_mults(r.at("knots").at(0).get<std::vector<double>>(), du, mu);
+  knots_and_mults(r.at("knots").at(1).get<std::vector<double>>(), dv, mv);
+  TColStd_Array1OfReal uk(1, static_cast<int>(du.size())), vk(1, static_cast<int>(dv.size()));
+  TColStd_Array1OfInteger um(1, static_cast<int>(du.size())), vm(1, static_cast<int>(dv.size()));
+  for (std::size_t i = 0; i < du.size(); ++i) {
+    uk(static_cast<int>(i) + 1) = du[i];
+    um(static_cast<int>(i) + 1) = mu[i];
+  }
+  for (std::size_t i = 0; i < dv.size(); ++i) {
+    vk(static_cast<int>(i) + 1) = dv[i];
+    vm(static_cast<int>(i) + 1) = mv[i];
+  }
+  Handle(Geom_BSplineSurface) s;
+  if (r.contains("weights")) {
+    TColStd_Array2OfReal w(1, rows, 1, cols);
+    for (int i = 0; i < rows; ++i)
+      for (int j = 0; j < cols; ++j) w(i + 1, j + 1) = r.at("weights").at(static_cast<std::size_t>(i)).at(static_cast<std::size_t>(j)).get<double>();
+    s = new Geom_BSplineSurface(poles, w, uk, vk, um, vm, p, q);
+  } else {
+    s = new Geom_BSplineSurface(poles, uk, vk, um, vm, p, q);
+  }
+  GeomAdaptor_Surface a(s);
+  json ev = json::array(), d0 = json::array();
+  for (const auto& uv : r.at("uv")) {
+    const double u = uv.at(0).get<double>(), v = uv.at(1).get<double>();
+    gp_Pnt x;
+    gp_Vec su, sv, suu, svv, suv;
+    a.D2(u, v, x, su, sv, suu, svv, suv);
+    ev.push_back({coords(x.X(), x.Y(), x.Z(), 3), coords(su.X(), su.Y(), su.Z(), 3), coords(sv.X(), sv.Y(), sv.Z(), 3),
+                  coords(suu.X(), suu.Y(), suu.Z(), 3), coords(suv.X(), suv.Y(), suv.Z(), 3), coords(svv.X(), svv.Y(), svv.Z(), 3)});
+    const gp_Pnt y = a.Value(u, v);
+    d0.push_back(coords(y.X(), y.Y(), y.Z(), 3));
+  }
+  return {{"eval", ev}, {"d0", d0}};
+}
+
 json answer(const json& r) {
   const std::string op = r.at("op").get<std::string>();
+  if (op == "surface_eval") return surface_eval(r);
   Curve cv = make(r);
   if (op == "eval") return describe(cv, r);
   if (op == "insert_knot") {

@@ -12,6 +12,10 @@ scale). Removal is compared where both libraries' tolerances agree by constructi
 that was inserted (removable to rounding) and a knot of a random curve (not removable at
 1e-9).
 
+Surfaces: the surface form of eval (points and partial derivatives to order 2) against
+Geom_BSplineSurface evaluated through GeomAdaptor_Surface, random B-spline and NURBS
+surfaces.
+
 Usage: test_occt.py PATH_TO_CASTELJAU PATH_TO_OCCT_ORACLE [unittest options]
 """
 import json
@@ -191,6 +195,71 @@ class OcctTest(unittest.TestCase):
                 ref = self.oracle.ask(dict(c, op="remove_knot", knot=k, times=1, tolerance=1e-9))
                 got = self.ok("remove_knot", {"curve": as_json_curve(c), "knot": k, "times": 1, "tolerance": 1e-9})
                 self.assertEqual((got["removed"], ref["removed"]), (0, 0), f"trial {trial}: knot {k} of {c}")
+
+
+def random_knots(rng, p, n):
+    """A clamped knot vector on [0, 1] for n points of degree p, one interior knot repeated
+    when the degree allows."""
+    inner = sorted(round(rng.uniform(0.02, 0.98), 6) for _ in range(n - p - 1))
+    if p >= 2 and len(inner) >= 2:
+        inner[1] = inner[0]
+    if any(inner.count(x) > p for x in inner):
+        return random_knots(rng, p, n)
+    return [0.0] * (p + 1) + inner + [1.0] * (p + 1)
+
+
+class OcctSurfaceTest(unittest.TestCase):
+    """Surface evaluation (the surface form of eval, derivatives to order 2) against OCCT's
+    Geom_BSplineSurface through GeomAdaptor_Surface (D2 and D0), random B-spline and NURBS
+    surfaces of degrees 1..4 in each direction."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.oracle = Oracle(ORACLE)
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.oracle.close()
+
+    def test_values_and_partials(self):
+        rng = random.Random(20261202)
+        names = ["u", "v", "uu", "uv", "vv"]
+        for trial in range(24):
+            p, q, rational = rng.randint(1, 4), rng.randint(1, 4), trial % 2 == 1
+            rows, cols = rng.randint(p + 1, p + 5), rng.randint(q + 1, q + 5)
+            U, V = random_knots(rng, p, rows), random_knots(rng, q, cols)
+            P = [[[rng.uniform(-5, 5) for _ in range(3)] for _ in range(cols)] for _ in range(rows)]
+            s = {"type": "bspline_surface", "degree": [p, q], "knots": [U, V], "points": P}
+            if rational:
+                s["type"] = "nurbs_surface"
+                s["weights"] = [[rng.uniform(0.3, 3) for _ in range(cols)] for _ in range(rows)]
+            uv = [[0.0, 0.0], [1.0, 1.0], [0.0, 1.0]] + [[rng.uniform(0, 1), rng.uniform(0, 1)] for _ in range(12)]
+            uv += [[x, rng.uniform(0, 1)] for x in sorted(set(U)) if 0 < x < 1]
+            req = {"op": "surface_eval", "degree": [p, q], "knots": [U, V], "points": P, "uv": uv}
+            if rational:
+                req["weights"] = s["weights"]
+            ref = self.oracle.ask(req)
+            rc, out, err = run("eval", {"surface": s, "uv": uv, "derivatives": 2})
+            self.assertEqual(rc, 0, err)
+            got = json.loads(out)
+            scale = max(1.0, max(abs(x) for row in P for pt in row for x in pt))
+            for j, (u, v) in enumerate(uv):
+                self.assert_close(got["points"][j], ref["eval"][j][0], 1e-12 * scale, f"trial {trial} S({u}, {v})")
+                self.assert_close(got["points"][j], ref["d0"][j], 1e-12 * scale, f"trial {trial} D0({u}, {v})")
+                # OCCT's derivatives at an interior knot come from one side, the contract's
+                # from the right piece: derivatives are compared off the knots only.
+                if (0 < u < 1 and u in U) or (0 < v < 1 and v in V):
+                    continue
+                for k, name in enumerate(names):
+                    b = ref["eval"][j][k + 1]
+                    # Derivatives of order k grow like (degree / span)^k: relative to the
+                    # reference's own size, a few hundred eps of it.
+                    tol = 1e-11 * max(scale, max(abs(x) for x in b))
+                    self.assert_close(got["partials"][name][j], b, tol, f"trial {trial} S_{name}({u}, {v})")
+
+    def assert_close(self, a, b, tol, what):
+        for x, y in zip(a, b):
+            self.assertLessEqual(abs(x - y), tol, f"{what}: {a} vs {b}")
 
 
 if __name__ == "__main__":
