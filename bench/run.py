@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
-"""Runs the W1-W6 benchmarks of bench/ and prints the tables of docs/performance.md.
+"""Runs the W1-W7 benchmarks of bench/ and prints the tables of docs/performance.md.
 
 Usage: bench/run.py BUILD_DIR [--repetitions N] [--min-time SECONDS] [--filter REGEX]
 
-Runs BUILD_DIR/bench/casteljau_bench_{w1_native,w1_generic,w2,w3,w4,w5,w6} (those that were built:
+Runs BUILD_DIR/bench/casteljau_bench_{w1_native,w1_generic,w2,w3,w4,w5,w6,w7} (those that were built:
 a missing peer or MPFR drops rows or executables, see bench/CMakeLists.txt) with
 Google Benchmark's JSON output (repetitions of different benchmarks interleaved at random,
 so that the shared machine's drift hits every row alike), keeps the median repetition
@@ -18,6 +18,8 @@ so that the shared machine's drift hits every row alike), keeps the median repet
     tolerance and the max deviation, time against the uniform method (Wang's bound);
   * W4: build ns per knot, random and sorted evaluation ns per point, us against GSL;
   * W6: us per pair, intersections, pairs missed and extra against the reference, max distance;
+  * W7: ns per point, B-spline and NURBS surfaces on a grid and at random (u, v), for us and
+    the peers (OCCT, SISL), max abs difference from the long double reference;
   * the goals of the benchmark issue, met or not.
 The raw JSON and the tables in Markdown go to BUILD_DIR/bench-results/.
 """
@@ -42,6 +44,10 @@ W3_TOLERANCE = 0.1
 W4_GOAL_VS_GSL = 0.5  # our time / GSL's, for build, eval_random and eval_sorted each
 W4_KNOTS = 1e6
 W4_QUERIES = 1e6
+W7_GOAL_GRID = 0.1  # our time / the fastest peer's on the grid
+W7_GOAL_RANDOM = 0.35  # our time / the fastest peer's at random (u, v)
+W7_GOAL_DIFF = 1e-13  # max abs difference from the long double reference
+W7_POINTS = 1e6
 W6_GOAL_VS_LIB2GEOM = 0.5  # our time / the fastest lib2geom method's
 W6_PAIRS = 1e4
 
@@ -203,6 +209,39 @@ def w5_table(rows):
             ratio = to_ms(ours) / t
             goals.append(f"W5 {o}: span_table / fastest peer ({name.rsplit('/', 1)[0]}) = {ratio:.2f} "
                          f"(goal <= {W5_GOAL_VS_FASTEST_PEER}): " + ("MET" if ratio <= W5_GOAL_VS_FASTEST_PEER else "NOT MET"))
+    return text, md, goals
+
+
+def w7_table(rows):
+    """W7: ns per point per method, kind and query set; the goals against the fastest peer."""
+    methods = []
+    for name in rows:
+        method = name.rsplit("/", 2)[0]
+        if method not in methods:
+            methods.append(method)
+    cases = [(k, q) for k in ("bspline", "nurbs") for q in ("grid", "random")]
+    headers = ["method"] + [f"ns/pt {k} {q}" for k, q in cases] + ["max abs diff"]
+    out = []
+    for m in methods:
+        r = [m]
+        for k, q in cases:
+            b = rows.get(f"{m}/{k}/{q}")
+            r.append(f"{to_ms(b) * 1e6 / W7_POINTS:.1f}" if b else "-")
+        diffs = [rows[f"{m}/{k}/{q}"]["max_abs_diff"] for k, q in cases if f"{m}/{k}/{q}" in rows]
+        r.append(f"{max(diffs):.1e}" if diffs else "-")
+        out.append(r)
+    text, md = table(headers, out)
+    goals = []
+    for k, q in cases:
+        ours = rows.get(f"W7/casteljau/batch/{k}/{q}")
+        peers = [(to_ms(b), n) for n, b in rows.items() if n.endswith(f"/{k}/{q}") and not n.startswith("W7/casteljau/")]
+        if ours and peers:
+            t, name = min(peers)
+            ratio = to_ms(ours) / t
+            goal = W7_GOAL_GRID if q == "grid" else W7_GOAL_RANDOM
+            ok = ratio <= goal and ours["max_abs_diff"] <= W7_GOAL_DIFF
+            goals.append(f"W7 {k} {q}: batch / fastest peer ({name.rsplit('/', 2)[0]}) = {ratio:.3f} (goal <= {goal}), "
+                         f"max abs diff {ours['max_abs_diff']:.1e} (goal <= {W7_GOAL_DIFF}): " + ("MET" if ok else "NOT MET"))
     return text, md, goals
 
 
@@ -397,6 +436,7 @@ def main():
         ("casteljau_bench_w3", 0.2, w3_tables, None),
         ("casteljau_bench_w4", 0.2, w4_table, "W4, natural cubic spline through 10^6 points, 10^6 queries"),
         ("casteljau_bench_w6", 0.2, w6_table, "W6, 10,000 random cubic pairs"),
+        ("casteljau_bench_w7", 0.2, w7_table, "W7, bicubic surface of 50 x 50 control points, 10^6 points (1000 x 1000 grid, random)"),
     )
     for exe_name, min_time, table, title in workloads:
         exe = os.path.join(bench_dir, exe_name)

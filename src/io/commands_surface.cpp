@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "casteljau/io/surfaces.hpp"
+#include "casteljau/surfaces/surface_batch.hpp"
 #include "casteljau/surfaces/surface_intersect.hpp"
 #include "casteljau/surfaces/surface_project.hpp"
 #include "casteljau/surfaces/surface_queries.hpp"
@@ -88,6 +89,26 @@ Response eval(const Args& a) {
   std::vector<OrderedJson> partials;
   for (int o = 1; o <= k; ++o)
     for (int b = 0; b <= o; ++b) partials.push_back(OrderedJson::array());
+  if (order == 0) {
+    // Points only: the batch evaluators (the same values as partials, without its
+    // per-point allocations); on a grid (u outer: the pairs are every u of the first
+    // column with every v of the first row) each row's and column's basis once.
+    std::vector<double> x(uv.size() * cd);
+    std::size_t nv = 1;
+    while (nv < uv.size() && uv[nv][0] == uv[0][0]) ++nv;
+    bool grid = uv.size() >= 4 && nv >= 2 && uv.size() % nv == 0 && uv.size() / nv >= 2;
+    for (std::size_t i = 0; grid && i < uv.size(); ++i) grid = uv[i][0] == uv[i - i % nv][0] && uv[i][1] == uv[i % nv][1];
+    if (grid) {
+      std::vector<double> us(uv.size() / nv), vs(nv);
+      for (std::size_t i = 0; i < us.size(); ++i) us[i] = uv[i * nv][0];
+      for (std::size_t j = 0; j < nv; ++j) vs[j] = uv[j][1];
+      casteljau::detail::evaluate_grid<double>(s.form, us, vs, x.data(), true);
+    } else {
+      casteljau::detail::evaluate_points<double>(s.form, uv, x.data());
+    }
+    for (std::size_t i = 0; i < uv.size(); ++i) points.push_back(std::vector<double>(x.data() + i * cd, x.data() + (i + 1) * cd));
+    return {OrderedJson{{"points", std::move(points)}}};
+  }
   for (std::size_t i = 0; i < uv.size(); ++i) {
     const auto [u, v] = uv[i];
     std::vector<double> d;
