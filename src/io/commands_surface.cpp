@@ -9,6 +9,7 @@
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "casteljau/io/surfaces.hpp"
@@ -441,6 +442,121 @@ SurfaceForm<double> from_columns(const std::vector<CurveForm<double>>& cs, int q
   return f;
 }
 
+// ---------------------------------------------------------------------------------------
+// Products of splines (the exact NURBS forms of ruled and Coons surfaces between rational
+// curves: a blend of rational curves has the product of their weight functions for weight)
+
+/// The non-rational form of data: (w x, w) of a rational curve's points as plain
+/// coordinates (dim cd + 1), or the curve itself.
+CurveForm<double> homogeneous(const CurveForm<double>& c) {
+  CurveForm<double> h = c;
+  h.rational = false;
+  if (!c.rational) return h;
+  for (std::size_t i = 0; i < h.P.size(); i += h.dim)
+    for (std::size_t k = 0; k + 1 < h.dim; ++k) h.P[i + k] *= h.P[i + h.dim - 1];
+  return h;
+}
+
+/// Coordinates first..first + count - 1 of a non-rational curve form.
+CurveForm<double> coordinates(const CurveForm<double>& c, std::size_t first, std::size_t count) {
+  CurveForm<double> r{c.p, c.U, count, false, {}};
+  for (std::size_t i = 0; i < c.P.size(); i += c.dim) r.P.insert(r.P.end(), c.P.begin() + static_cast<std::ptrdiff_t>(i + first), c.P.begin() + static_cast<std::ptrdiff_t>(i + first + count));
+  return r;
+}
+
+/// The product a(t) b(t) of a non-rational spline a (any dimension, degree pa) and a
+/// scalar one b (degree pb) on the same domain: both refined to the same breaks, their
+/// Bézier pieces multiplied (the Bernstein product: c_k = sum C(pa, i) C(pb, k - i) /
+/// C(pa + pb, k) a_i b_(k-i), degree pa + pb), joined C^0 (each interior break pa + pb
+/// times). Exact.
+CurveForm<double> spline_product(CurveForm<double> a, CurveForm<double> b) {
+  // Every break of one inserted (once) into the other: the same Bézier pieces.
+  const auto breaks_missing = [](const CurveForm<double>& have, const CurveForm<double>& other) {
+    std::vector<double> X;
+    const std::size_t p = static_cast<std::size_t>(other.p);
+    const double lo = other.U[p], hi = other.U[other.U.size() - p - 1];
+    for (std::size_t i = 0; i < other.U.size(); ++i) {
+      const double x = other.U[i];
+      if (x > lo && x < hi && (i == 0 || other.U[i - 1] != x) && std::find(have.U.begin(), have.U.end(), x) == have.U.end()) X.push_back(x);
+    }
+    return X;
+  };
+  const std::vector<double> Xa = breaks_missing(a, b), Xb = breaks_missing(b, a);
+  if (!Xa.empty()) a = of_column(casteljau::detail::refine(column(a), Direction::u, std::span<const double>(Xa)));
+  if (!Xb.empty()) b = of_column(casteljau::detail::refine(column(b), Direction::u, std::span<const double>(Xb)));
+  const auto pa = casteljau::detail::patches(column(a)), pb = casteljau::detail::patches(column(b));
+  if (pa.ubreaks != pb.ubreaks) throw std::logic_error("spline_product: the pieces do not match");
+  const std::size_t na = static_cast<std::size_t>(a.p), nb = static_cast<std::size_t>(b.p), da = a.dim;
+  const std::vector<double> ca = binomial_row<double>(a.p), cb = binomial_row<double>(b.p), cab = binomial_row<double>(a.p + b.p);
+  CurveForm<double> r{a.p + b.p, {}, da, false, {}};
+  const std::size_t m = na + nb + 1;  // points of a product piece
+  for (std::size_t k = 0; k < pa.patches.size(); ++k) {
+    const SurfaceForm<double>& x = pa.patches[k][0];
+    const SurfaceForm<double>& y = pb.patches[k][0];
+    std::vector<double> prod(m * da, 0.0);
+    for (std::size_t i = 0; i <= na; ++i)
+      for (std::size_t j = 0; j <= nb; ++j) {
+        const double f = ca[i] * cb[j] / cab[i + j] * y.at(j, 0)[0];
+        for (std::size_t c = 0; c < da; ++c) prod[(i + j) * da + c] += f * x.at(i, 0)[c];
+      }
+    for (std::size_t i = k == 0 ? 0 : 1; i < m; ++i)
+      for (std::size_t c = 0; c < da; ++c) r.P.push_back(prod[i * da + c]);
+    const double b0 = pa.ubreaks[k], b1 = pa.ubreaks[k + 1];
+    if (k == 0) r.U.insert(r.U.end(), m, b0);
+    r.U.insert(r.U.end(), k + 1 == pa.patches.size() ? m : m - 1, b1);
+  }
+  return r;
+}
+
+/// A non-rational surface form (any dimension) times a scalar spline w in direction dir:
+/// the surface seen as a curve whose points are its rows (or columns), times w.
+SurfaceForm<double> times_along(const SurfaceForm<double>& f, const CurveForm<double>& w, Direction dir) {
+  const SurfaceForm<double> g = dir == Direction::u ? f : casteljau::detail::transposed(f);
+  const CurveForm<double> c{g.p, g.U, g.cols * g.dim, false, g.P};
+  const CurveForm<double> r = spline_product(c, w);
+  SurfaceForm<double> h{r.p, g.q, r.U, g.V, r.size(), g.cols, g.dim, false, r.P};
+  return dir == Direction::u ? h : casteljau::detail::transposed(h);
+}
+
+/// The ruled surface between two compatible rational curves (Cartesian points and
+/// weights) in homogeneous form: num (the numerators, non-rational, columns v = v0 and v1,
+/// degree 1 in v) and the weight function W(u) (a scalar spline): S = num / W.
+/// (1 - v) A/wa + v B/wb = ((1 - v) A wb + v B wa) / (wa wb); with equal weights simply
+/// ((1 - v) A + v B) / w.
+struct RuledForm {
+  SurfaceForm<double> num;
+  CurveForm<double> weight;
+};
+
+RuledForm ruled_homogeneous(const std::vector<CurveForm<double>>& cs, double v0, double v1) {
+  const std::size_t cd = cs[0].dim - 1;
+  const CurveForm<double> ha = homogeneous(cs[0]), hb = homogeneous(cs[1]);
+  CurveForm<double> A = coordinates(ha, 0, cd), B = coordinates(hb, 0, cd), wa = coordinates(ha, cd, 1), wb = coordinates(hb, cd, 1);
+  RuledForm r;
+  if (wa.P == wb.P) {
+    r.weight = wa;
+  } else {
+    A = spline_product(A, wb);
+    B = spline_product(B, wa);
+    r.weight = spline_product(wa, wb);
+  }
+  r.num = from_columns({A, B}, 1, {v0, v0, v1, v1});
+  return r;
+}
+
+/// The rational surface num / W from a non-rational numerator and a positive weight surface
+/// of the same degrees and knots (Cartesian points and weights).
+SurfaceForm<double> rational_of(const SurfaceForm<double>& num, const SurfaceForm<double>& W) {
+  SurfaceForm<double> f{num.p, num.q, num.U, num.V, num.rows, num.cols, num.dim + 1, true, {}};
+  for (std::size_t i = 0; i < num.rows; ++i)
+    for (std::size_t j = 0; j < num.cols; ++j) {
+      const double w = W.at(i, j)[0];
+      for (std::size_t c = 0; c < num.dim; ++c) f.P.push_back(num.at(i, j)[c] / w);
+      f.P.push_back(w);
+    }
+  return f;
+}
+
 AnySurface finish(SurfaceForm<double> f, const char* field) {
   try {
     return make_surface(f.rational ? SurfaceKind::nurbs : SurfaceKind::bspline, std::move(f));
@@ -474,11 +590,13 @@ AnySurface ruled(const Args& a) {
   if (curves.size() != 2) throw InvalidArgument("curves", "ruled needs exactly two curves, got " + std::to_string(curves.size()));
   const auto cs = compatible_curves(curves, "curves");
   if (cs[0].rational) {
-    for (std::size_t i = cs[0].dim - 1; i < cs[0].P.size(); i += cs[0].dim) {
-      if (cs[0].P[i] != cs[1].P[i]) {
-        throw InvalidArgument("curves", "ruled surfaces between rational curves of different weights are not supported yet "
-                                        "(the blend of two rational curves needs their product form)");
-      }
+    bool same = true;
+    for (std::size_t i = cs[0].dim - 1; i < cs[0].P.size(); i += cs[0].dim) same = same && cs[0].P[i] == cs[1].P[i];
+    if (!same) {
+      // Different weights: the exact NURBS form with the weight function wa(u) wb(u).
+      const RuledForm r = ruled_homogeneous(cs, 0, 1);
+      const SurfaceForm<double> W = from_columns({r.weight, r.weight}, 1, {0, 0, 1, 1});
+      return finish(rational_of(r.num, W), "curves");
     }
   }
   return finish(from_columns(cs, 1, {0, 0, 1, 1}), "curves");
@@ -803,36 +921,102 @@ AnySurface loft(const Args& a) {
   return finish(casteljau::detail::weighted(std::move(r), false), "curves");
 }
 
+/// The Coons patch of rational boundaries (cu: c0, c1 compatible; dv: d0, d1 compatible),
+/// exact: Xv / Wv(u) + Xu / Wu(v) - B over the common denominator Wv(u) Wu(v), i.e.
+/// (Xv Wu + Xu Wv - B Wv Wu) / (Wv Wu), where Xv / Wv is the ruled surface between c0 and
+/// c1 and Xu / Wu the one between d0 and d1; the four parts brought to common degrees
+/// and knots (elevation, insertion) before they are added.
+AnySurface coons_rational(std::vector<CurveForm<double>> cu, std::vector<CurveForm<double>> dv, const std::vector<CurveForm<double>>& all,
+                          std::size_t dim, double u0, double u1, double v0, double v1) {
+  const auto as_rational = [](std::vector<CurveForm<double>>& cs) {
+    for (auto& c : cs) {
+      if (c.rational) continue;
+      std::vector<double> P;
+      for (std::size_t i = 0; i < c.P.size(); i += c.dim) {
+        P.insert(P.end(), c.P.begin() + static_cast<std::ptrdiff_t>(i), c.P.begin() + static_cast<std::ptrdiff_t>(i + c.dim));
+        P.push_back(1.0);
+      }
+      c.P = std::move(P);
+      c.dim += 1;
+      c.rational = true;
+    }
+  };
+  as_rational(cu);
+  as_rational(dv);
+  const RuledForm rv = ruled_homogeneous(cu, v0, v1);  // rows along u, v linear
+  const RuledForm ru = ruled_homogeneous(dv, u0, u1);  // rows along v, u linear
+  const SurfaceForm<double> Xu = casteljau::detail::transposed(ru.num);
+  SurfaceForm<double> N1 = times_along(rv.num, ru.weight, Direction::v);
+  SurfaceForm<double> N2 = times_along(Xu, rv.weight, Direction::u);
+  SurfaceForm<double> Bl{1, 1, {u0, u0, u1, u1}, {v0, v0, v1, v1}, 2, 2, dim, false, {}};
+  const auto first = [&](std::size_t i) { return all[i].P.data(); };
+  const auto last = [&](std::size_t i) { return all[i].P.data() + all[i].P.size() - all[i].dim; };
+  for (const double* x : {first(0), first(1), last(0), last(1)}) Bl.P.insert(Bl.P.end(), x, x + dim);  // (u0,v0) (u0,v1) (u1,v0) (u1,v1)
+  SurfaceForm<double> N3 = times_along(times_along(Bl, rv.weight, Direction::u), ru.weight, Direction::v);
+  SurfaceForm<double> D{rv.weight.p, ru.weight.p, rv.weight.U, ru.weight.U, rv.weight.size(), ru.weight.size(), 1, false, {}};
+  for (std::size_t i = 0; i < D.rows; ++i)
+    for (std::size_t j = 0; j < D.cols; ++j) D.P.push_back(rv.weight.P[i] * ru.weight.P[j]);
+  std::vector<SurfaceForm<double>*> parts{&N1, &N2, &N3, &D};
+  int P = 0, Q = 0;
+  for (const auto* f : parts) {
+    P = std::max(P, f->p);
+    Q = std::max(Q, f->q);
+  }
+  std::vector<double> Uall, Vall;
+  for (auto* f : parts) {
+    if (f->p < P) *f = casteljau::detail::elevate(*f, Direction::u, P - f->p);
+    if (f->q < Q) *f = casteljau::detail::elevate(*f, Direction::v, Q - f->q);
+    for (auto [K, all_knots, deg] : {std::tuple{&f->U, &Uall, P}, std::tuple{&f->V, &Vall, Q}}) {
+      if (all_knots->empty()) {
+        *all_knots = *K;
+        continue;
+      }
+      const std::vector<double> X = missing_knots(*all_knots, *K, deg);
+      all_knots->insert(all_knots->end(), X.begin(), X.end());
+      std::sort(all_knots->begin(), all_knots->end());
+    }
+  }
+  for (auto* f : parts) {
+    const std::vector<double> X = missing_knots(f->U, Uall, P), Y = missing_knots(f->V, Vall, Q);
+    if (!X.empty()) *f = casteljau::detail::refine(*f, Direction::u, std::span<const double>(X));
+    if (!Y.empty()) *f = casteljau::detail::refine(*f, Direction::v, std::span<const double>(Y));
+  }
+  if (N1.P.size() != N2.P.size() || N1.P.size() != N3.P.size() || N1.rows != D.rows || N1.cols != D.cols) {
+    throw std::logic_error("coons: the parts are not compatible");
+  }
+  for (std::size_t i = 0; i < N1.P.size(); ++i) N1.P[i] += N2.P[i] - N3.P[i];
+  return finish(rational_of(N1, D), "curves");
+}
+
 AnySurface coons(const Args& a) {
   const auto curves = a.curves("curves");
   if (curves.size() != 4) throw InvalidArgument("curves", "coons needs exactly four curves [c0, c1, d0, d1], got " + std::to_string(curves.size()));
   std::vector<CurveForm<double>> all;
   for (std::size_t i = 0; i < 4; ++i) {
     all.push_back(curve_form(curves[i]));
-    if (all.back().rational) {
-      throw InvalidArgument(index_path("curves", i), "coons patches of rational boundary curves are not supported yet");
-    }
     if (dimension(curves[i]) != dimension(curves[0])) {
       throw InvalidArgument(index_path("curves", i), "is " + std::to_string(dimension(curves[i])) + "-D, curves[0] is " +
                                                          std::to_string(dimension(curves[0])) + "-D");
     }
   }
-  const std::size_t dim = all[0].dim;
+  // dim: the Cartesian dimension (a rational curve's points are followed by their weight).
+  const std::size_t dim = static_cast<std::size_t>(dimension(curves[0]));
   // The corners: c0 and c1 start on d0 and end on d1 (clamped forms: the end points are
   // the end control points), within 1e-12 of the size of the control points' box.
   double size = 0;
   {
     std::vector<double> lo(dim, INFINITY), hi(dim, -INFINITY);
     for (const auto& c : all)
-      for (std::size_t i = 0; i < c.P.size(); ++i) {
-        lo[i % dim] = std::min(lo[i % dim], c.P[i]);
-        hi[i % dim] = std::max(hi[i % dim], c.P[i]);
-      }
+      for (std::size_t i = 0; i < c.P.size(); i += c.dim)
+        for (std::size_t k = 0; k < dim; ++k) {
+          lo[k] = std::min(lo[k], c.P[i + k]);
+          hi[k] = std::max(hi[k], c.P[i + k]);
+        }
     for (std::size_t k = 0; k < dim; ++k) size += (hi[k] - lo[k]) * (hi[k] - lo[k]);
     size = std::sqrt(size);
   }
   const auto first = [&](std::size_t i) { return all[i].P.data(); };
-  const auto last = [&](std::size_t i) { return all[i].P.data() + all[i].P.size() - dim; };
+  const auto last = [&](std::size_t i) { return all[i].P.data() + all[i].P.size() - all[i].dim; };
   const struct {
     std::size_t curve;
     const char* which;
@@ -859,6 +1043,7 @@ AnySurface coons(const Args& a) {
   const int p = std::max(cu[0].p, 1), q = std::max(dv[0].p, 1);
   const double u0 = cu[0].U[static_cast<std::size_t>(cu[0].p)], u1 = cu[0].U[cu[0].U.size() - static_cast<std::size_t>(cu[0].p) - 1];
   const double v0 = dv[0].U[static_cast<std::size_t>(dv[0].p)], v1 = dv[0].U[dv[0].U.size() - static_cast<std::size_t>(dv[0].p) - 1];
+  if (cu[0].rational || dv[0].rational) return coons_rational(cu, dv, all, dim, u0, u1, v0, v1);
   // Ruled in v (between c0 and c1), ruled in u (between d0 and d1), bilinear corners.
   SurfaceForm<double> A = from_columns(cu, 1, {v0, v0, v1, v1});
   SurfaceForm<double> B = casteljau::detail::transposed(from_columns(dv, 1, {u0, u0, u1, u1}));

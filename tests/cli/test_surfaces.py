@@ -330,6 +330,41 @@ class ConstructionTest(CliTest):
         objs[3] = {"type": "bezier", "points": [[2, 0, 0], [2, 2, 0.001]]}
         self.bad("surface", {"construct": "coons", "curves": objs}, where="curves[3]", contains="the corners do not meet")
 
+    def test_ruled_and_coons_of_rational_curves(self):
+        # Exact NURBS forms (the weight function is the product of the curves'): checked
+        # against the blends computed here from the curves (rational de Casteljau of
+        # test_cli.py, the Cox-de Boor quotient for the NURBS curve).
+        def nurbs_point(c, t):
+            U, p, P, W = c["knots"], c["degree"], c["points"], c["weights"]
+            N = [basis(U, p, i, t) * W[i] for i in range(len(P))]
+            return [sum(n * x[k] for n, x in zip(N, P)) / sum(N) for k in range(len(P[0]))]
+
+        a = {"type": "rational_bezier", "points": [[0, 0, 0], [1, 2, 0], [2, 0, 1]], "weights": [1, 3, 0.5]}
+        b = {"type": "nurbs", "degree": 2, "knots": [0, 0, 0, 0.4, 1, 1, 1], "points": [[0, 0, 2], [0.5, 1, 2], [1.5, -1, 3], [2, 0, 2]],
+             "weights": [1, 0.5, 2, 1]}
+        s = self.ok("surface", {"construct": "ruled", "curves": [a, b]})["surface"]
+        self.assertEqual(s["type"], "nurbs_surface")
+        for u in (0, 0.2, 0.4, 0.77, 1):
+            A, B = test_cli.rational_point(a["points"], a["weights"], u), nurbs_point(b, u)
+            for v in (0, 0.3, 1):
+                self.assert_close(evaluate(s, u, v), [(1 - v) * x + v * y for x, y in zip(A, B)], TIGHT)
+        # Coons: a quarter circle and a rational arc of other weights in u, a Bézier and a
+        # rational Bézier in v.
+        c0 = {"type": "rational_bezier", "points": [[1, 0, 0], [1, 1, 0], [0, 1, 0]], "weights": [1, HALF, 1]}
+        c1 = {"type": "rational_bezier", "points": [[1, 0, 2], [1, 1, 2.5], [0, 1, 2]], "weights": [1, 0.3, 1]}
+        d0 = {"type": "bezier", "points": [[1, 0, 0], [1.5, 0, 1], [1, 0, 2]]}
+        d1 = {"type": "rational_bezier", "points": [[0, 1, 0], [0, 1.2, 1], [0, 1, 2]], "weights": [1, 2, 1]}
+        s = self.ok("surface", {"construct": "coons", "curves": [c0, c1, d0, d1]})["surface"]
+        self.assertEqual(s["type"], "nurbs_surface")
+        rp = lambda c, t: test_cli.rational_point(c["points"], c["weights"], t) if "weights" in c else de_casteljau(c["points"], t)
+        P00, P01, P10, P11 = c0["points"][0], c1["points"][0], c0["points"][-1], c1["points"][-1]
+        for u in (0, 0.3, 0.5, 1):
+            for v in (0, 0.4, 0.9, 1):
+                rv = [(1 - v) * x + v * y for x, y in zip(rp(c0, u), rp(c1, u))]
+                ru = [(1 - u) * x + u * y for x, y in zip(rp(d0, v), rp(d1, v))]
+                bl = [(1 - u) * (1 - v) * w + (1 - u) * v * x + u * (1 - v) * y + u * v * z for w, x, y, z in zip(P00, P01, P10, P11)]
+                self.assert_close(evaluate(s, u, v), [x + y - z for x, y, z in zip(rv, ru, bl)], TIGHT)
+
     def test_interpolate_and_fit(self):
         rng = random.Random(7)
         rows, cols = 6, 5
