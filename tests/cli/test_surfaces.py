@@ -149,6 +149,22 @@ class SurfaceEvalTest(CliTest):
                 # relative covers its rounding (mpmath.diff's own error is far below).
                 self.assert_close(r["partials"][name][k], partial_mp(s, u, v, a, b), 1e-11, name)
 
+    def test_grid_and_scattered_pairs_agree(self):
+        # eval evaluates a uv list that is a grid (u outer) row by row; the same pairs in
+        # another order go pair by pair: the same values exactly, and the evaluator's here.
+        rng = random.Random(29)
+        for s in (random_nurbs(rng), dict(random_nurbs(rng, p=2, q=3, rows=6, cols=5), weights=None)):
+            if s["weights"] is None:
+                del s["weights"]
+                s["type"] = "bspline_surface"
+            us, vs = [0, 0.3, 0.5, s["knots"][0][4], 1], [0, 0.25, 0.6, 1]
+            uv = [[u, v] for u in us for v in vs]
+            grid_pts = self.ok("eval", {"surface": s, "uv": uv})["points"]
+            back = self.ok("eval", {"surface": s, "uv": uv[::-1]})["points"][::-1]
+            self.assertEqual(grid_pts, back)
+            for k, (u, v) in enumerate(uv):
+                self.assert_close(grid_pts[k], evaluate(s, u, v), TIGHT)
+
     def test_every_dimension_and_bezier_kinds(self):
         for dim in (1, 2, 4):
             P = [[[i + j + k * 0.5 for k in range(dim)] for j in range(3)] for i in range(2)]
@@ -813,6 +829,10 @@ class SurfaceIntersectTest(CliTest):
         s2 = {"type": "bezier_surface", "points": [[[0, 0], [0, 2]], [[2, 0], [2, 2]]]}
         self.bad("intersect", {"surface": s2, "curve": line([0, 0, 0], [1, 1, 1])}, where="surface", contains="3-D")
         self.bad("intersect", {"surface": SQUARE}, where="curve", contains="missing")
+        # A line 1e-11 above the plane, all along it: within the tolerances at every leaf
+        # without lying on it; refused after 5000 candidate points rather than running on.
+        self.bad("intersect", {"surface": SQUARE, "curve": line([-0.5, 0.5, 1e-11], [2, 0.5, 1e-11])}, where="surface",
+                 contains="did not settle")
         self.bad("intersect", {"surface": SQUARE, "curves": [line([0, 0, 0], [1, 1, 1])]}, where="curves", contains="unknown field")
 
 

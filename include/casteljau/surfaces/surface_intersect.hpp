@@ -169,8 +169,16 @@ CurveSurfaceIntersection<T> intersect_curve_surface(const SurfaceForm<T>& f, con
   std::vector<std::array<T, 2>> over;
   std::vector<std::array<T, 2>> over_uv;  // a surface point of each overlap's start (for the end refinement)
 
-  // Damped Newton on F(t, u, v) = C(t) - S(u, v) inside both domains.
+  // Damped Newton on F(t, u, v) = C(t) - S(u, v) inside both domains. A curve that runs
+  // along the surface within the tolerances without lying on it makes a solve at every
+  // leaf along it: past max_solves the search stops rather than running on for seconds.
+  std::size_t solves = 0;
+  const std::size_t max_solves = 5000;
   const auto solve = [&](T t, T u, T v) {
+    if (++solves > max_solves) {
+      throw NumericalError("the intersection did not settle: more than " + std::to_string(max_solves) +
+                           " candidate points (the curve runs along the surface, within 1e-9 of the size, without lying on it)");
+    }
     const auto residual = [&](T tt, T uu, T vv, std::array<T, 3>& F) {
       const std::vector<T> x = point(c, tt, T(0)), y = point(f, uu, vv);
       for (int k = 0; k < 3; ++k) F[static_cast<std::size_t>(k)] = x[static_cast<std::size_t>(k)] - y[static_cast<std::size_t>(k)];
