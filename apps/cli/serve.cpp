@@ -12,6 +12,7 @@
 #include <fcntl.h>
 #include <poll.h>
 #include <sys/prctl.h>
+#include <sys/resource.h>
 #include <sys/socket.h>
 #include <sys/time.h>
 #include <unistd.h>
@@ -20,6 +21,8 @@
 #include <cerrno>
 #include <chrono>
 #include <condition_variable>
+#include <deque>
+#include <functional>
 #include <mutex>
 #include <vector>
 #include <csignal>
@@ -69,6 +72,10 @@ timeval to_timeval(double seconds) {
 // crash) is told from one that answered.
 
 constexpr char kind_json = 'j', kind_svg = 's', kind_bad = 'b', kind_internal = 'i', kind_not_served = 'n';
+
+/// The name under which the batch (`POST /batch`) travels to a worker: not a command's
+/// name (the API route takes [A-Za-z0-9_] only).
+constexpr std::string_view batch_name = "*batch";
 
 void append_length(std::string& s, std::uint64_t n) { s.append(reinterpret_cast<const char*>(&n), sizeof n); }
 
@@ -123,7 +130,9 @@ void set_timers(double cpu_seconds, double wall_seconds) {
     if (!read_string(fd, name, 64) || !read_string(fd, body, options.max_body)) ::_exit(0);
     set_timers(options.time_limit, 4 * options.time_limit + 1);
     std::string out;
-    if (!command_exists(name)) {
+    if (name == batch_name) {
+      out = frame(kind_json, answer_batch(body, options.font_dir));
+    } else if (!command_exists(name)) {
       out = frame(kind_not_served, "command: unknown command " + quoted_text(name));
     } else {
       const Answer a = answer_named(name, body, options.font_dir);
@@ -320,6 +329,76 @@ class Computer {
   std::vector<Worker> idle_;
 };
 
+/// The connection threads: one per connection for as long as it lasts (httplib serves a
+/// keep-alive connection, or a slow client's request, on one thread), started when every
+/// thread is busy, up to `max_threads`, and ended after 10 s without work. A fixed pool
+/// (httplib's ThreadPool) lets a few hundred idle or slow connections hold every thread
+/// while the others wait in its queue; here they each hold their own thread (a few KiB of
+/// memory, the stack being reserved address space) until their keep-alive or read timeout
+/// closes them, and other clients are served meanwhile.
+class ElasticPool : public httplib::TaskQueue {
+ public:
+  explicit ElasticPool(std::size_t max_threads) : max_threads_(max_threads) {}
+
+  void enqueue(std::function<void()> fn) override {
+    std::unique_lock lock(mutex_);
+    jobs_.push_back(std::move(fn));
+    if (idle_ >= jobs_.size() || threads_ >= max_threads_) {
+      lock.unlock();
+      work_.notify_one();
+      return;
+    }
+    ++threads_;
+    try {
+      std::thread([this] { run(); }).detach();
+    } catch (const std::system_error&) {
+      --threads_;  // no thread now: the job waits for a running one
+    }
+  }
+
+  void shutdown() override {
+    std::unique_lock lock(mutex_);
+    stopping_ = true;
+    work_.notify_all();
+    ended_.wait(lock, [&] { return threads_ == 0; });
+  }
+
+ private:
+  void run() {
+    std::unique_lock lock(mutex_);
+    for (;;) {
+      ++idle_;
+      const bool got = work_.wait_for(lock, std::chrono::seconds(10), [&] { return !jobs_.empty() || stopping_; });
+      --idle_;
+      if (jobs_.empty() && (stopping_ || !got)) break;
+      auto fn = std::move(jobs_.front());
+      jobs_.pop_front();
+      lock.unlock();
+      fn();
+      lock.lock();
+    }
+    --threads_;
+    ended_.notify_all();
+  }
+
+  const std::size_t max_threads_;
+  std::mutex mutex_;
+  std::condition_variable work_, ended_;
+  std::deque<std::function<void()>> jobs_;
+  std::size_t threads_ = 0, idle_ = 0;
+  bool stopping_ = false;
+};
+
+/// As many open files as the system allows this process (each connection is one), so that
+/// a default soft limit of 1024 does not refuse the 1001st client.
+void raise_open_file_limit() {
+  rlimit r{};
+  if (::getrlimit(RLIMIT_NOFILE, &r) == 0 && r.rlim_cur < r.rlim_max) {
+    r.rlim_cur = r.rlim_max;
+    ::setrlimit(RLIMIT_NOFILE, &r);
+  }
+}
+
 void set_error(httplib::Response& res, int status, std::string_view message) {
   res.status = status;
   res.set_content(error_json(message), "application/json");
@@ -344,11 +423,15 @@ int serve(const ServeOptions& options) {
   httplib::Server server;
   const unsigned jobs = Computer::jobs(options);
   // httplib serves a connection on one thread for as long as it lasts (keep-alive, a slow
-  // client), while at most `jobs` requests compute: many more connection threads than
-  // workers, so that idle or slow clients do not keep the others waiting; an idle
-  // connection is closed after 2 s, a client silent for 5 s in mid-request too.
-  server.new_task_queue = [jobs] { return new httplib::ThreadPool(std::max(32u, 8 * jobs)); };
+  // client), while at most `jobs` requests compute: a thread per connection (ElasticPool),
+  // so that idle or slow clients do not keep the others waiting; an idle connection is
+  // closed after 2 s, a client silent for 5 s in mid-request too. A keep-alive connection
+  // serves up to 10,000 requests (httplib's default, 5, made a browser or a benchmark
+  // client open a new connection every fifth request).
+  raise_open_file_limit();
+  server.new_task_queue = [] { return new ElasticPool(4096); };
   server.set_keep_alive_timeout(2);
+  server.set_keep_alive_max_count(10000);
   server.set_payload_max_length(options.max_body);
   // httplib writes the head and the body apart: without TCP_NODELAY, Nagle's algorithm holds
   // the body until the client's delayed ACK, 40 ms per response.
@@ -368,12 +451,13 @@ int serve(const ServeOptions& options) {
   // The body is read here, piece by piece, and refused as soon as it passes the limit:
   // httplib's own limit holds for a Content-Length but not for a chunked body, which it
   // would otherwise gather whole in memory.
-  server.Post(R"(/api/([A-Za-z0-9_]{1,64}))", [&](const httplib::Request& req, httplib::Response& res,
-                                                   const httplib::ContentReader& read_body) {
+  // The body, or false with the error response set (413 past the limit, 400 when it could
+  // not be read).
+  const auto read_request_body = [&options](const httplib::Request& req, httplib::Response& res,
+                                            const httplib::ContentReader& read_body, std::string& body) {
     // Past the limit the rest is read and dropped, up to 1 MiB more, so that a client
     // that sent a little too much gets its 413 on a connection still in step; beyond
     // that the connection is dropped.
-    std::string body;
     bool too_big = false;
     std::size_t dropped = 0;
     const bool read = read_body([&](const char* data, std::size_t n) {
@@ -394,13 +478,23 @@ int serve(const ServeOptions& options) {
     if (too_big) {
       if (!read) res.set_header("Connection", "close");
       set_error(res, 413, "request: the body is larger than the limit of " + std::to_string(options.max_body) + " bytes");
-      return;
+      return false;
     }
     if (!read) {
       res.set_header("Connection", "close");
       set_error(res, 400, "request: the body could not be read (malformed chunks, or the client stopped sending)");
-      return;
+      return false;
     }
+    return true;
+  };
+  const auto time_limit_error = [&options](httplib::Response& res) {
+    set_error(res, 503, "request: computed for more than " + format_seconds(options.time_limit) +
+                            " s (the server's time limit); its work was stopped");
+  };
+  server.Post(R"(/api/([A-Za-z0-9_]{1,64}))", [&](const httplib::Request& req, httplib::Response& res,
+                                                   const httplib::ContentReader& read_body) {
+    std::string body;
+    if (!read_request_body(req, res, read_body, body)) return;
     const std::string name = req.matches[1];
     if (!command_exists(name)) {
       set_error(res, 404, "command: unknown command " + quoted_text(name));
@@ -414,8 +508,7 @@ int serve(const ServeOptions& options) {
     }
     const auto r = computer.compute(name, body);
     if (r.timed_out) {
-      set_error(res, 503, "request: computed for more than " + format_seconds(options.time_limit) +
-                              " s (the server's time limit); its work was stopped");
+      time_limit_error(res);
       return;
     }
     switch (r.kind) {
@@ -434,6 +527,22 @@ int serve(const ServeOptions& options) {
       default:
         set_error(res, 500, r.text);
         break;
+    }
+  });
+  // The batch: several requests in one body, one line each ({"command", "request"}),
+  // computed one after the other by one worker within one time limit, answered by one line
+  // each (docs/cli.md, "casteljau serve"). Outside /api/ so that it names no command. The
+  // explorer sends each update of a view as one batch: one round trip instead of eight.
+  server.Post("/batch", [&](const httplib::Request& req, httplib::Response& res, const httplib::ContentReader& read_body) {
+    std::string body;
+    if (!read_request_body(req, res, read_body, body)) return;
+    const auto r = computer.compute(batch_name, body);
+    if (r.timed_out) {
+      time_limit_error(res);
+    } else if (r.kind == kind_json) {
+      res.set_content(r.text, "application/x-ndjson");
+    } else {
+      set_error(res, 500, r.text);
     }
   });
   // Every error status carries {"error": ...}: the ones httplib answers itself (no such
