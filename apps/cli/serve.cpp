@@ -9,7 +9,9 @@
 // it is, in any loop of the library; the server then starts a new worker in its place.
 #include "serve.hpp"
 
+#include <dirent.h>
 #include <fcntl.h>
+#include <netinet/in.h>
 #include <poll.h>
 #include <sys/prctl.h>
 #include <sys/resource.h>
@@ -28,6 +30,7 @@
 #include <csignal>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <stdexcept>
 #include <string>
@@ -399,6 +402,30 @@ void raise_open_file_limit() {
   }
 }
 
+/// httplib 0.11 listens with a backlog of 5 connections: a burst of clients connecting at
+/// once overflows it and their connections wait for the kernel to retry (1 s, then 3 s...).
+/// Calling listen() again on the listening socket (found among this process's descriptors:
+/// httplib does not expose it) sets the backlog to the system's maximum.
+void widen_backlog(int port) {
+  DIR* dir = ::opendir("/proc/self/fd");
+  if (!dir) return;
+  while (const dirent* entry = ::readdir(dir)) {
+    const int fd = std::atoi(entry->d_name);
+    if (fd <= 2 || fd == ::dirfd(dir)) continue;
+    int listening = 0;
+    socklen_t length = sizeof listening;
+    if (::getsockopt(fd, SOL_SOCKET, SO_ACCEPTCONN, &listening, &length) != 0 || !listening) continue;
+    sockaddr_storage address{};
+    socklen_t address_length = sizeof address;
+    if (::getsockname(fd, reinterpret_cast<sockaddr*>(&address), &address_length) != 0) continue;
+    int bound = -1;
+    if (address.ss_family == AF_INET) bound = ntohs(reinterpret_cast<const sockaddr_in&>(address).sin_port);
+    if (address.ss_family == AF_INET6) bound = ntohs(reinterpret_cast<const sockaddr_in6&>(address).sin6_port);
+    if (bound == port) ::listen(fd, SOMAXCONN);
+  }
+  ::closedir(dir);
+}
+
 void set_error(httplib::Response& res, int status, std::string_view message) {
   res.status = status;
   res.set_content(error_json(message), "application/json");
@@ -569,6 +596,7 @@ int serve(const ServeOptions& options) {
   } else if (!server.bind_to_port(options.host, port)) {
     throw std::runtime_error("cannot listen on " + options.host + ":" + std::to_string(port) + " (in use, or not an address of this machine)");
   }
+  widen_backlog(port);
   const bool v6 = options.host.find(':') != std::string::npos;
   std::printf("casteljau serve: http://%s%s%s:%d/ (%u requests computed at once, %s s each at most)\n", v6 ? "[" : "",
               options.host.c_str(), v6 ? "]" : "", port, jobs, format_seconds(options.time_limit).c_str());
