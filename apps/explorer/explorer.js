@@ -1251,17 +1251,23 @@ const importer = {
     this.text.value = SVG_EXAMPLE;
     this.pending = { svg: SVG_EXAMPLE };
     document.getElementById("im-import").addEventListener("click", () => this.load(this.text.value));
-    document.getElementById("im-file").addEventListener("change", async (e) => {
-      const file = e.target.files[0];
-      if (file) this.load((this.text.value = await file.text()));
-    });
-    // A file dropped on the figure or the text.
+    // A file chosen, or dropped on the figure or the text (read as pending work, so that
+    // explorerIdle waits for it).
+    const readFile = async (file) => {
+      if (!file) return;
+      setPending(1);
+      try {
+        this.load((this.text.value = await file.text()));
+      } finally {
+        setPending(-1);
+      }
+    };
+    document.getElementById("im-file").addEventListener("change", (e) => readFile(e.target.files[0]));
     for (const target of [this.svg, this.text]) {
       target.addEventListener("dragover", (e) => e.preventDefault());
-      target.addEventListener("drop", async (e) => {
+      target.addEventListener("drop", (e) => {
         e.preventDefault();
-        const file = e.dataTransfer.files[0];
-        if (file) this.load((this.text.value = await file.text()));
+        readFile(e.dataTransfer.files[0]);
       });
     }
     document.getElementById("im-export-svg").addEventListener("click", () => this.exportSvg());

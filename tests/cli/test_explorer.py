@@ -69,8 +69,24 @@ class ExplorerTest(unittest.TestCase):
         from selenium.webdriver.common.by import By
         return self.driver.find_elements(By.CSS_SELECTOR, f"#{view}-canvas circle.handle")
 
+    # Reading the page: one WebDriver command each (a command costs 50-200 ms on the loaded
+    # machine; reading attributes element by element made most of the test's time).
+
+    def attrs(self, selector, name):
+        """The attribute `name` of every element that the CSS selector matches."""
+        return self.driver.execute_script(
+            "return Array.from(document.querySelectorAll(arguments[0]), (e) => e.getAttribute(arguments[1]))", selector, name)
+
+    def attr(self, selector, name):
+        values = self.attrs(selector, name)
+        self.assertEqual(len(values), 1, selector)
+        return values[0]
+
+    def element(self, selector):
+        return self.driver.find_element("css selector", selector)
+
     def points(self, view):
-        return [json.loads(h.get_attribute("data-point")) for h in self.handles(view)]
+        return [json.loads(v) for v in self.attrs(f"#{view}-canvas circle.handle", "data-point")]
 
     def drag(self, element, dx, dy, steps=4, step_ms=16):
         """Mouse drag by (dx, dy) CSS pixels in steps (pointerdown, pointermoves, pointerup),
@@ -86,7 +102,7 @@ class ExplorerTest(unittest.TestCase):
         from selenium.webdriver.common.actions import interaction
         from selenium.webdriver.common.actions.action_builder import ActionBuilder
         from selenium.webdriver.common.actions.pointer_input import PointerInput
-        actions = ActionBuilder(self.driver, mouse=PointerInput(interaction.POINTER_TOUCH, "finger"))
+        actions = ActionBuilder(self.driver, mouse=PointerInput(interaction.POINTER_TOUCH, "finger"), duration=16)
         rect = element.rect
         x, y = rect["x"] + rect["width"] / 2, rect["y"] + rect["height"] / 2
         actions.pointer_action.move_to_location(int(x), int(y)).pointer_down()
@@ -98,15 +114,15 @@ class ExplorerTest(unittest.TestCase):
     def data_points(self, view):
         """{index: point} of every control point drawn in a view (handles and dependent
         points)."""
-        from selenium.webdriver.common.by import By
-        return {int(e.get_attribute("data-index")): json.loads(e.get_attribute("data-point"))
-                for e in self.driver.find_elements(By.CSS_SELECTOR, f"#{view}-canvas [data-point]")}
+        return {int(i): json.loads(p) for i, p in self.driver.execute_script(
+            "return Array.from(document.querySelectorAll(arguments[0]), (e) => [e.dataset.index, e.dataset.point])",
+            f"#{view}-canvas [data-point]")}
 
     def curve_points(self, element_id):
-        return json.loads(self.driver.find_element("id", element_id).get_attribute("data-points"))
+        return json.loads(self.attr("#" + element_id, "data-points"))
 
     def text(self, element_id):
-        return self.driver.find_element("id", element_id).text
+        return self.driver.execute_script("return document.getElementById(arguments[0]).innerText.trim()", element_id)
 
     def no_console_errors(self):
         errors = [e for e in self.driver.get_log("browser") if e["level"] == "SEVERE"]
@@ -167,8 +183,8 @@ class ExplorerTest(unittest.TestCase):
         # De Boor's construction at u = 0.5 (a knot of multiplicity 1: levels 0..2), against
         # the construction written here. 1e-12: a few ulps of coordinates of size 5 through
         # two levels of affine combinations, computed in another order by the server.
-        levels = {int(e.get_attribute("data-level")): json.loads(e.get_attribute("data-points"))
-                  for e in self.driver.find_elements("css selector", "#bs-canvas path.level")}
+        levels = {int(k): json.loads(v) for k, v in zip(self.attrs("#bs-canvas path.level", "data-level"),
+                                                          self.attrs("#bs-canvas path.level", "data-points"))}
         expected = de_boor(after, knots, 3, 0.5)
         self.assertEqual(sorted(levels), list(range(len(expected))))
         for r, level in enumerate(expected):
@@ -199,13 +215,14 @@ class ExplorerTest(unittest.TestCase):
 
     def show_view(self, name):
         """Switches to a view by its nav link (a real click) and waits for its drawing."""
-        from selenium.webdriver.support.ui import WebDriverWait
         if not self.driver.current_url.startswith(self.base):
             self.driver.get(self.base)
         self.driver.find_element("css selector", f'nav a[data-view="{name}"]').click()
-        WebDriverWait(self.driver, 10, poll_frequency=0.05).until(
-            lambda d: d.find_element("id", "view-" + name).get_attribute("hidden") is None)
-        self.settle()
+        # In the page: once the view is shown (after the hash change), until it is drawn.
+        self.driver.execute_async_script("""
+            const done = arguments[arguments.length - 1], view = document.getElementById(arguments[0]);
+            const wait = () => (view.hidden ? requestAnimationFrame(wait) : window.explorerIdle().then(() => done(true)));
+            wait();""", "view-" + name)
 
     def test_interpolation_view(self):
         self.show_view("interpolation")
@@ -237,12 +254,12 @@ class ExplorerTest(unittest.TestCase):
         self.assertNotEqual(a[1], [2.2, 4.8])
         A, B = {"type": "bezier", "points": a}, {"type": "bezier", "points": b}
         inter = self.api("intersect", {"curves": [A, B]})["intersections"]
-        marks = json.loads(self.driver.find_element("id", "qr-intersections").get_attribute("data-points"))
+        marks = json.loads(self.attr("#qr-intersections", "data-points"))
         self.assertEqual(marks, [x["point"] for x in inter])
         self.assertGreater(len(marks), 0)  # the example's curves cross
         self.assertEqual(self.text("qr-intersections-text"), "; ".join(
             x["kind"] + " at t = (" + ", ".join(fmt(v) for v in x["t"]) + ")" for x in inter))
-        box = json.loads(self.driver.find_element("id", "qr-bounds-box").get_attribute("data-box"))
+        box = json.loads(self.attr("#qr-bounds-box", "data-box"))
         self.assertEqual(box, self.api("bounds", {"curve": A}))
         self.assertEqual(self.text("qr-length"), fmt(self.api("length", {"curve": A})["length"]))
         # Segment counts at the page's tolerance 10^-1.5 (a count does not hinge on the last
@@ -280,7 +297,7 @@ class ExplorerTest(unittest.TestCase):
         Select(self.driver.find_element("id", "cp-joint-0")).select_by_visible_text("C2")
         Select(self.driver.find_element("id", "cp-joint-1")).select_by_visible_text("G1")
         self.settle()
-        handle = next(h for h in self.handles("cp") if h.get_attribute("data-index") == "1")
+        handle = self.element("#cp-canvas circle.handle[data-index='1']")
         before = self.data_points("cp")
         self.drag(handle, 30, -25)
         self.settle()
@@ -303,8 +320,7 @@ class ExplorerTest(unittest.TestCase):
         ts = [(3 * i) / 240 for i in range(241)]
         answer = self.api("eval", {"curve": path, "t": ts, "derivatives": 1, "curvature": True})
         self.assertEqual(self.curve_points("cp-curve"), answer["points"])
-        comb = self.driver.find_element("id", "cp-comb-envelope")
-        self.assertEqual(json.loads(comb.get_attribute("data-curvature")), answer["curvature"])
+        self.assertEqual(json.loads(self.attr("#cp-comb-envelope", "data-curvature")), answer["curvature"])
         # What each joint reaches, shown; and the curvatures on both sides.
         self.assertEqual(self.text("cp-joint-0-reached"), "C2")
         self.assertEqual(self.text("cp-joint-1-reached"), "G1")
@@ -318,13 +334,11 @@ class ExplorerTest(unittest.TestCase):
     def test_hermite_view(self):
         self.show_view("hermite")
         self.drag(self.handles("hm")[3], 0, -30)
-        tip = next(h for h in self.driver.find_elements("css selector", "#hm-canvas circle.tangent-handle")
-                   if h.get_attribute("data-index") == "2")
+        tip = self.element("#hm-canvas circle.tangent-handle[data-index='2']")
         self.drag(tip, 25, -20)
         self.settle()
         pts = self.points("hm")
-        tangents = [json.loads(h.get_attribute("data-tangent"))
-                    for h in self.driver.find_elements("css selector", "#hm-canvas circle.tangent-handle")]
+        tangents = [json.loads(v) for v in self.attrs("#hm-canvas circle.tangent-handle", "data-tangent")]
         self.assertNotEqual(tangents[2], [1, 1.5])
         params = [p[0] for p in pts]  # the page opens on "the points' x"
         curves = {
@@ -360,9 +374,8 @@ class ExplorerTest(unittest.TestCase):
             self.assertEqual(self.curve_points("cr-curve-" + key), self.api("flatten", {"curve": curve, "tolerance": 0.002})["points"], key)
             inter = self.api("intersect", {"curves": [curve]})["intersections"]
             cusps = self.api("features", {"curve": curve})["cusps"]
-            marks = self.driver.find_element("id", "cr-marks-" + key)
-            self.assertEqual(json.loads(marks.get_attribute("data-intersections")), [x["point"] for x in inter], key)
-            self.assertEqual(len(json.loads(marks.get_attribute("data-cusps"))), len(cusps), key)
+            self.assertEqual(json.loads(self.attr("#cr-marks-" + key, "data-intersections")), [x["point"] for x in inter], key)
+            self.assertEqual(len(json.loads(self.attr("#cr-marks-" + key, "data-cusps"))), len(cusps), key)
             n, m = len(inter), len(cusps)
             self.assertEqual(self.text("cr-count-" + key), f"{n} self-intersection{'' if n == 1 else 's'}, {m} cusp{'' if m == 1 else 's'}")
         self.driver.save_screenshot("explorer-catmull.png")
@@ -374,15 +387,15 @@ class ExplorerTest(unittest.TestCase):
         return [s for p in self.api("import_svg", request)["paths"] for s in p["subpaths"]]
 
     def check_import_drawing(self, subpaths):
-        tolerance = float(self.driver.find_element("id", "im-canvas").get_attribute("data-tolerance"))
+        tolerance = float(self.attr("#im-canvas", "data-tolerance"))
         for k, curve in enumerate(subpaths):
             self.assertEqual(self.curve_points(f"im-curve-{k}"), self.api("flatten", {"curve": curve, "tolerance": tolerance})["points"], k)
-        self.assertEqual(len(self.driver.find_elements("css selector", "#im-canvas path.curve")), len(subpaths))
+        self.assertEqual(len(self.attrs("#im-canvas path.curve", "id")), len(subpaths))
 
     def test_import_view(self):
         self.show_view("import")
         # The opening example, as the server reads it.
-        example = self.driver.find_element("id", "im-text").get_attribute("value")
+        example = self.driver.execute_script("return document.getElementById('im-text').value")
         self.check_import_drawing(self.imported(example))
         self.assertEqual(self.text("im-shapes"), "#heart: 1 subpath, #box: 1 subpath, #wave: 1 subpath")
         # Path data pasted, then imported.
@@ -397,14 +410,12 @@ class ExplorerTest(unittest.TestCase):
         self.assertEqual(self.text("im-pieces"), "0 lines, 1 quadratics, 1 cubics, 2 arc pieces (rational quadratics)")
         # Drag the cubic's first inner control point: the drawn curve is the server's for the
         # moved point.
-        handle = next(h for h in self.driver.find_elements("css selector", "#im-canvas circle.handle")
-                      if (h.get_attribute("data-segment"), h.get_attribute("data-index")) == ("0", "1"))
-        old = json.loads(handle.get_attribute("data-point"))
+        cubic_inner = "#im-canvas circle.handle[data-subpath='0'][data-segment='0'][data-index='1']"
+        handle = self.element(cubic_inner)
+        old = json.loads(self.attr(cubic_inner, "data-point"))
         self.drag(handle, 30, 20)
         self.settle()
-        handle = next(h for h in self.driver.find_elements("css selector", "#im-canvas circle.handle")
-                      if (h.get_attribute("data-segment"), h.get_attribute("data-index")) == ("0", "1"))
-        new = json.loads(handle.get_attribute("data-point"))
+        new = json.loads(self.attr(cubic_inner, "data-point"))
         self.assertGreater(new[0], old[0])
         self.assertGreater(new[1], old[1])  # y down, as in SVG
         subpaths[0]["segments"][0]["points"][1] = new
@@ -435,12 +446,12 @@ class ExplorerTest(unittest.TestCase):
         self.no_console_errors()
 
     def test_update_latency(self):
-        # A long drag in the de Casteljau view (60 moves at 60 Hz): every update's time from
+        # A long drag in the de Casteljau view (30 moves at 60 Hz): every update's time from
         # the input to the drawing of the server's answer, as the page records it.
         self.show_view("bezier")
         self.driver.execute_script("window.explorerLatencies().length = 0")
         start = len(self.driver.execute_script("return window.explorerLatencies()"))
-        self.drag(self.handles("bz")[2], 120, 60, steps=60)
+        self.drag(self.handles("bz")[2], 120, 60, steps=30)
         self.settle()
         latencies = sorted(self.driver.execute_script("return window.explorerLatencies()")[start:])
         self.assertGreater(len(latencies), 3)
