@@ -11,7 +11,7 @@ FUZZ_SECONDS ?= 120
 # cores busy. A tree configured earlier keeps its generator.
 generator = $(if $(wildcard $(1)/CMakeCache.txt),,-G Ninja)
 
-.PHONY: deps configure build demo explorer test test-release test-headers test-asan test-asan-smoke bench fuzz package clean
+.PHONY: deps configure build demo explorer test test-release test-headers test-asan test-asan-smoke bench bench-w10 fuzz package clean
 
 deps:
 	@scripts/install-deps.sh build
@@ -77,6 +77,12 @@ bench:
 	cmake -S . -B $(BENCH_BUILD) -DCMAKE_BUILD_TYPE=Release -DCASTELJAU_BUILD_BENCH=ON -DCASTELJAU_BUILD_TESTS=OFF -DCASTELJAU_BUILD_APPS=OFF
 	cmake --build $(BENCH_BUILD) -j $(JOBS) --target casteljau_bench_w1_native casteljau_bench_w1_generic casteljau_bench_w2 casteljau_bench_w3 casteljau_bench_w4 casteljau_bench_w5 casteljau_bench_w6
 	/usr/bin/python3 bench/run.py $(BENCH_BUILD)
+
+# W10 (docs/performance.md): `casteljau serve` under a bounded load on the loopback address
+# against `--jsonl` in one process; about a minute. Writes $(BENCH_BUILD)/bench-results/W10.json.
+bench-w10: configure
+	cmake --build $(BUILD) -j $(JOBS) --target casteljau_cli
+	/usr/bin/python3 bench/w10.py $(BUILD)/apps/cli/casteljau $(BENCH_BUILD)/bench-results
 
 # libFuzzer (clang) with ASan+UBSan on the fuzz target FUZZ_TARGET (tests/fuzz: `request`,
 # the JSON request reader and the command it names; `svg`, SVG documents, path data and
