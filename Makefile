@@ -86,7 +86,7 @@ bench-w10: configure
 
 # libFuzzer (clang) with ASan+UBSan on the fuzz target FUZZ_TARGET (tests/fuzz: `request`,
 # the JSON request reader and the command it names; `svg`, SVG documents, path data and
-# transform lists), for FUZZ_SECONDS. The whole project is
+# transform lists; `http`, the server's request path from the bytes of a connection), for FUZZ_SECONDS. The whole project is
 # instrumented for coverage (CASTELJAU_FUZZ); -O0 with line tables, as the sanitizer build.
 # New inputs go to $(FUZZ_BUILD)/corpus-$(FUZZ_TARGET), crashes to $(FUZZ_BUILD)/crash-*;
 # libFuzzer's final statistics (edges: cov, inputs: number_of_executed_units) end the run.
