@@ -496,7 +496,7 @@ void add_routes(httplib::Server& server, const ServeOptions& options, const std:
   };
   // The handlers outlive this function: they hold copies (options and listing_text are the
   // caller's, alive while the server runs).
-  server.Post(R"(/api/([A-Za-z0-9_]{1,64}))", [=, &options](const httplib::Request& req, httplib::Response& res,
+  server.Post(R"(/api/([A-Za-z0-9_]{1,64}))", [=](const httplib::Request& req, httplib::Response& res,
                                                    const httplib::ContentReader& read_body) {
     std::string body;
     if (!read_request_body(req, res, read_body, body)) return;
