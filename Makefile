@@ -11,7 +11,7 @@ FUZZ_SECONDS ?= 120
 # cores busy. A tree configured earlier keeps its generator.
 generator = $(if $(wildcard $(1)/CMakeCache.txt),,-G Ninja)
 
-.PHONY: deps configure build demo explorer test test-release test-headers test-asan test-asan-smoke bench fuzz package clean
+.PHONY: deps configure build demo explorer test test-release test-headers test-asan test-asan-smoke bench bench-w10 fuzz package clean
 
 deps:
 	@scripts/install-deps.sh build
@@ -78,9 +78,15 @@ bench:
 	cmake --build $(BENCH_BUILD) -j $(JOBS) --target casteljau_bench_w1_native casteljau_bench_w1_generic casteljau_bench_w2 casteljau_bench_w3 casteljau_bench_w4 casteljau_bench_w5 casteljau_bench_w6 casteljau_bench_w7
 	/usr/bin/python3 bench/run.py $(BENCH_BUILD)
 
+# W10 (docs/performance.md): `casteljau serve` under a bounded load on the loopback address
+# against `--jsonl` in one process; about a minute. Writes $(BENCH_BUILD)/bench-results/W10.json.
+bench-w10: configure
+	cmake --build $(BUILD) -j $(JOBS) --target casteljau_cli
+	/usr/bin/python3 bench/w10.py $(BUILD)/apps/cli/casteljau $(BENCH_BUILD)/bench-results
+
 # libFuzzer (clang) with ASan+UBSan on the fuzz target FUZZ_TARGET (tests/fuzz: `request`,
 # the JSON request reader and the command it names; `svg`, SVG documents, path data and
-# transform lists), for FUZZ_SECONDS. The whole project is
+# transform lists; `http`, the server's request path from the bytes of a connection), for FUZZ_SECONDS. The whole project is
 # instrumented for coverage (CASTELJAU_FUZZ); -O0 with line tables, as the sanitizer build.
 # New inputs go to $(FUZZ_BUILD)/corpus-$(FUZZ_TARGET), crashes to $(FUZZ_BUILD)/crash-*;
 # libFuzzer's final statistics (edges: cov, inputs: number_of_executed_units) end the run.

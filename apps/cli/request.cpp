@@ -135,9 +135,9 @@ bool command_exists(std::string_view name) { return io::find_command(name) != nu
 namespace {
 
 /// glyph's font on a server: a file name inside the font directory, nothing else (no path,
-/// no "..": the request never names a file outside it). Returns the request to run.
-std::string glyph_request(std::string_view body, const std::string& font_dir) {
-  Json request = io::parse_json(body);
+/// no "..": the request never names a file outside it). Rewrites request's `font` to the
+/// file's path.
+void serve_glyph_font(Json& request, const std::string& font_dir) {
   if (request.is_object() && request.contains("font") && request["font"].is_string()) {
     const std::string name = request["font"].get<std::string>();
     const bool plain = !name.empty() && name.front() != '.' && name.find_first_of("/\\") == std::string::npos &&
@@ -148,7 +148,45 @@ std::string glyph_request(std::string_view body, const std::string& font_dir) {
     }
     request["font"] = font_dir + "/" + name;
   }
+}
+
+std::string glyph_request(std::string_view body, const std::string& font_dir) {
+  Json request = io::parse_json(body);
+  serve_glyph_font(request, font_dir);
   return request.dump();
+}
+
+/// One line of a batch: {"command": NAME, "request": {...}} answered as `--jsonl` answers
+/// a line (render's response as JSON).
+Answer answer_batch_line(std::string_view line, const std::string& font_dir) {
+  return guarded([&] {
+    if (line.find_first_not_of(" \t") == std::string_view::npos) {
+      throw InvalidArgument("batch line", "empty line (every line must hold one {\"command\", \"request\"} object)");
+    }
+    Json item = io::parse_json(line);
+    if (!item.is_object()) throw InvalidArgument("batch line", "a batch line must be a JSON object, got " + std::string(io::kind_of(item)));
+    for (const auto& [key, value] : item.items()) {
+      if (key != "command" && key != "request") {
+        throw InvalidArgument(key, "unknown field (a batch line has: command, request)");
+      }
+    }
+    if (!item.contains("command")) throw InvalidArgument("command", "required field is missing");
+    if (!item.contains("request")) throw InvalidArgument("request", "required field is missing");
+    const std::string name = io::string_from_json(item["command"], "command");
+    const Command* command = io::find_command(name);
+    if (!command) throw InvalidArgument("command", "unknown command " + io::quoted(name));
+    Json& request = item["request"];
+    if (name == "glyph") {
+      if (font_dir.empty()) {
+        throw InvalidArgument("command", "glyph is not served: its font is a file on the server (start the server with --font-dir DIR)");
+      }
+      serve_glyph_font(request, font_dir);
+    }
+    const auto response = io::run(*command, request);
+    Answer a;
+    a.text = response.json.dump(-1, ' ', false, OrderedJson::error_handler_t::replace) + "\n";
+    return a;
+  });
 }
 
 }  // namespace
@@ -160,6 +198,21 @@ Answer answer_named(std::string_view name, std::string_view body, const std::str
     if (name == "glyph") return answer(*command, glyph_request(body, font_dir), false);
     return answer(*command, body, false);
   });
+}
+
+std::string answer_batch(std::string_view body, const std::string& font_dir) {
+  std::string out;
+  std::size_t start = 0;
+  while (start < body.size()) {
+    std::size_t end = body.find('\n', start);
+    if (end == std::string_view::npos) end = body.size();
+    std::string_view line = body.substr(start, end - start);
+    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+    const Answer a = answer_batch_line(line, font_dir);
+    out += a.status == exit_ok ? a.text : error_json(a.error);
+    start = end + 1;
+  }
+  return out;
 }
 
 std::string api_listing_text(bool with_glyph) {

@@ -61,6 +61,12 @@ struct Answer {
 /// there. Never throws: every failure is in the Answer.
 [[nodiscard]] Answer answer_named(std::string_view name, std::string_view body, const std::string& font_dir);
 
+/// The server's batch (`POST /batch`): one line {"command": NAME, "request": {...}} per
+/// request, answered by one line each, in order: the response as `casteljau NAME --jsonl`
+/// writes it, or {"error": "<where>: <what>"} (a bad line does not stop the others). glyph
+/// as answer_named serves it (refused when font_dir is empty). Never throws.
+[[nodiscard]] std::string answer_batch(std::string_view body, const std::string& font_dir);
+
 /// The `GET /api` listing as JSON text (and a newline), without glyph unless with_glyph.
 [[nodiscard]] std::string api_listing_text(bool with_glyph);
 

@@ -7,11 +7,14 @@
 // exists. For each request a worker arms two timers on itself (CPU time at the limit, wall
 // time at four times it) whose signals end it, so a request past its budget stops wherever
 // it is, in any loop of the library; the server then starts a new worker in its place.
-#include "serve.hpp"
+#include "serve_routes.hpp"
 
+#include <dirent.h>
 #include <fcntl.h>
+#include <netinet/in.h>
 #include <poll.h>
 #include <sys/prctl.h>
+#include <sys/resource.h>
 #include <sys/socket.h>
 #include <sys/time.h>
 #include <unistd.h>
@@ -20,11 +23,14 @@
 #include <cerrno>
 #include <chrono>
 #include <condition_variable>
+#include <deque>
+#include <functional>
 #include <mutex>
 #include <vector>
 #include <csignal>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <stdexcept>
 #include <string>
@@ -68,7 +74,7 @@ timeval to_timeval(double seconds) {
 // the text's length (8 bytes) then the text, so that a worker ended by its timer (or a
 // crash) is told from one that answered.
 
-constexpr char kind_json = 'j', kind_svg = 's', kind_bad = 'b', kind_internal = 'i', kind_not_served = 'n';
+
 
 void append_length(std::string& s, std::uint64_t n) { s.append(reinterpret_cast<const char*>(&n), sizeof n); }
 
@@ -122,17 +128,8 @@ void set_timers(double cpu_seconds, double wall_seconds) {
   for (;;) {
     if (!read_string(fd, name, 64) || !read_string(fd, body, options.max_body)) ::_exit(0);
     set_timers(options.time_limit, 4 * options.time_limit + 1);
-    std::string out;
-    if (!command_exists(name)) {
-      out = frame(kind_not_served, "command: unknown command " + quoted_text(name));
-    } else {
-      const Answer a = answer_named(name, body, options.font_dir);
-      if (a.status == exit_ok) {
-        out = frame(a.is_svg ? kind_svg : kind_json, a.text);
-      } else {
-        out = frame(a.status == exit_bad_input ? kind_bad : kind_internal, clipped(a.error, max_message));
-      }
-    }
+    const Computed c = compute_in_process(name, body, options);
+    const std::string out = frame(c.kind, c.text);
     set_timers(0, 0);
     if (!write_all(fd, out)) ::_exit(0);
   }
@@ -192,15 +189,9 @@ class Computer {
     return options.jobs > 0 ? options.jobs : std::max(1u, std::thread::hardware_concurrency());
   }
 
-  struct Result {
-    char kind = kind_internal;
-    std::string text;
-    bool timed_out = false;
-  };
-
   /// The request computed by an idle worker (waiting for one); a worker that did not answer
   /// is replaced.
-  Result compute(std::string_view name, std::string_view body) {
+  Computed compute(std::string_view name, std::string_view body) {
     Worker w;
     {
       std::unique_lock lock(mutex_);
@@ -209,7 +200,7 @@ class Computer {
       idle_.pop_back();
     }
     bool alive = false;
-    Result r = exchange(w, name, body, alive);
+    Computed r = exchange(w, name, body, alive);
     if (!alive) {
       if (w.fd >= 0) ::close(w.fd);
       if (w.pid > 0) ::kill(w.pid, SIGKILL);  // if it still runs (the wall backstop)
@@ -260,8 +251,8 @@ class Computer {
     return w;
   }
 
-  Result exchange(const Worker& w, std::string_view name, std::string_view body, bool& alive) {
-    Result r;
+  Computed exchange(const Worker& w, std::string_view name, std::string_view body, bool& alive) {
+    Computed r;
     if (w.fd < 0) {
       r.text = "internal: no compute process could be started";
       return r;
@@ -320,6 +311,100 @@ class Computer {
   std::vector<Worker> idle_;
 };
 
+/// The connection threads: one per connection for as long as it lasts (httplib serves a
+/// keep-alive connection, or a slow client's request, on one thread), started when every
+/// thread is busy, up to `max_threads`, and ended after 10 s without work. A fixed pool
+/// (httplib's ThreadPool) lets a few hundred idle or slow connections hold every thread
+/// while the others wait in its queue; here they each hold their own thread (a few KiB of
+/// memory, the stack being reserved address space) until their keep-alive or read timeout
+/// closes them, and other clients are served meanwhile.
+class ElasticPool : public httplib::TaskQueue {
+ public:
+  explicit ElasticPool(std::size_t max_threads) : max_threads_(max_threads) {}
+
+  void enqueue(std::function<void()> fn) override {
+    std::unique_lock lock(mutex_);
+    jobs_.push_back(std::move(fn));
+    if (idle_ >= jobs_.size() || threads_ >= max_threads_) {
+      lock.unlock();
+      work_.notify_one();
+      return;
+    }
+    ++threads_;
+    try {
+      std::thread([this] { run(); }).detach();
+    } catch (const std::system_error&) {
+      --threads_;  // no thread now: the job waits for a running one
+    }
+  }
+
+  void shutdown() override {
+    std::unique_lock lock(mutex_);
+    stopping_ = true;
+    work_.notify_all();
+    ended_.wait(lock, [&] { return threads_ == 0; });
+  }
+
+ private:
+  void run() {
+    std::unique_lock lock(mutex_);
+    for (;;) {
+      ++idle_;
+      const bool got = work_.wait_for(lock, std::chrono::seconds(10), [&] { return !jobs_.empty() || stopping_; });
+      --idle_;
+      if (jobs_.empty() && (stopping_ || !got)) break;
+      auto fn = std::move(jobs_.front());
+      jobs_.pop_front();
+      lock.unlock();
+      fn();
+      lock.lock();
+    }
+    --threads_;
+    ended_.notify_all();
+  }
+
+  const std::size_t max_threads_;
+  std::mutex mutex_;
+  std::condition_variable work_, ended_;
+  std::deque<std::function<void()>> jobs_;
+  std::size_t threads_ = 0, idle_ = 0;
+  bool stopping_ = false;
+};
+
+/// As many open files as the system allows this process (each connection is one), so that
+/// a default soft limit of 1024 does not refuse the 1001st client.
+void raise_open_file_limit() {
+  rlimit r{};
+  if (::getrlimit(RLIMIT_NOFILE, &r) == 0 && r.rlim_cur < r.rlim_max) {
+    r.rlim_cur = r.rlim_max;
+    ::setrlimit(RLIMIT_NOFILE, &r);
+  }
+}
+
+/// httplib 0.11 listens with a backlog of 5 connections: a burst of clients connecting at
+/// once overflows it and their connections wait for the kernel to retry (1 s, then 3 s...).
+/// Calling listen() again on the listening socket (found among this process's descriptors:
+/// httplib does not expose it) sets the backlog to the system's maximum.
+void widen_backlog(int port) {
+  DIR* dir = ::opendir("/proc/self/fd");
+  if (!dir) return;
+  while (const dirent* entry = ::readdir(dir)) {
+    const int fd = std::atoi(entry->d_name);
+    if (fd <= 2 || fd == ::dirfd(dir)) continue;
+    int listening = 0;
+    socklen_t length = sizeof listening;
+    if (::getsockopt(fd, SOL_SOCKET, SO_ACCEPTCONN, &listening, &length) != 0 || !listening) continue;
+    sockaddr_storage address{};
+    socklen_t address_length = sizeof address;
+    if (::getsockname(fd, reinterpret_cast<sockaddr*>(&address), &address_length) != 0) continue;
+    int bound = -1;
+    if (address.ss_family == AF_INET) bound = ntohs(reinterpret_cast<const sockaddr_in&>(address).sin_port);
+    if (address.ss_family == AF_INET6) bound = ntohs(reinterpret_cast<const sockaddr_in6&>(address).sin6_port);
+    if (bound == port) ::listen(fd, SOMAXCONN);
+  }
+  ::closedir(dir);
+}
+
 void set_error(httplib::Response& res, int status, std::string_view message) {
   res.status = status;
   res.set_content(error_json(message), "application/json");
@@ -333,27 +418,23 @@ std::string format_seconds(double s) {
 
 }  // namespace
 
-int serve(const ServeOptions& options) {
-  // The spawner first, while this process has one thread.
-  Computer computer(options);
-  std::signal(SIGPIPE, SIG_IGN);
+Computed compute_in_process(std::string_view name, std::string_view body, const ServeOptions& options) {
+  if (name == batch_name) return {kind_json, answer_batch(body, options.font_dir)};
+  if (!command_exists(name)) return {kind_not_served, "command: unknown command " + quoted_text(name)};
+  const Answer a = answer_named(name, body, options.font_dir);
+  if (a.status == exit_ok) return {a.is_svg ? kind_svg : kind_json, a.text};
+  return {a.status == exit_bad_input ? kind_bad : kind_internal, clipped(a.error, max_message)};
+}
 
+void add_routes(httplib::Server& server, const ServeOptions& options, const std::string& listing_text, Compute compute) {
   const bool glyph_served = !options.font_dir.empty();
-  const std::string listing_text = api_listing_text(glyph_served);
-
-  httplib::Server server;
-  const unsigned jobs = Computer::jobs(options);
-  // httplib serves a connection on one thread for as long as it lasts (keep-alive, a slow
-  // client), while at most `jobs` requests compute: many more connection threads than
-  // workers, so that idle or slow clients do not keep the others waiting; an idle
-  // connection is closed after 2 s, a client silent for 5 s in mid-request too.
-  server.new_task_queue = [jobs] { return new httplib::ThreadPool(std::max(32u, 8 * jobs)); };
-  server.set_keep_alive_timeout(2);
-  server.set_payload_max_length(options.max_body);
-  // httplib writes the head and the body apart: without TCP_NODELAY, Nagle's algorithm holds
-  // the body until the client's delayed ACK, 40 ms per response.
-  server.set_tcp_nodelay(true);
-
+  // Every response is whole: httplib would cut any of them to a request's Range (an error's
+  // {"error": ...} too, found by the http fuzz target), so ranges are dropped before
+  // routing. The Request is httplib's own non-const object, handed to handlers as const.
+  server.set_pre_routing_handler([](const httplib::Request& req, httplib::Response&) {
+    const_cast<httplib::Request&>(req).ranges.clear();
+    return httplib::Server::HandlerResponse::Unhandled;
+  });
   // The page: the embedded files, by exact path (nothing else is read: no file system).
   for (const auto& asset : explorer_assets()) {
     const std::string path = asset.path == "index.html" ? "/" : "/" + std::string(asset.path);
@@ -368,12 +449,21 @@ int serve(const ServeOptions& options) {
   // The body is read here, piece by piece, and refused as soon as it passes the limit:
   // httplib's own limit holds for a Content-Length but not for a chunked body, which it
   // would otherwise gather whole in memory.
-  server.Post(R"(/api/([A-Za-z0-9_]{1,64}))", [&](const httplib::Request& req, httplib::Response& res,
-                                                   const httplib::ContentReader& read_body) {
+  // The body, or false with the error response set (413 past the limit, 400 when it could
+  // not be read).
+  const auto read_request_body = [&options](const httplib::Request& req, httplib::Response& res,
+                                            const httplib::ContentReader& read_body, std::string& body) {
     // Past the limit the rest is read and dropped, up to 1 MiB more, so that a client
     // that sent a little too much gets its 413 on a connection still in step; beyond
     // that the connection is dropped.
-    std::string body;
+    // A Content-Length past the limit: refused before reading, and the connection closed
+    // (reading first made a client that stopped sending wait for the 5 s read timeout).
+    const std::string declared = req.get_header_value("Content-Length");
+    if (!declared.empty() && (declared.size() > 18 || std::stoull("0" + declared) > options.max_body)) {
+      res.set_header("Connection", "close");
+      set_error(res, 413, "request: the body is larger than the limit of " + std::to_string(options.max_body) + " bytes");
+      return false;
+    }
     bool too_big = false;
     std::size_t dropped = 0;
     const bool read = read_body([&](const char* data, std::size_t n) {
@@ -388,19 +478,28 @@ int serve(const ServeOptions& options) {
       body.append(data, n);
       return true;
     });
-    // A Content-Length past the limit: httplib refuses to read before any byte arrives.
-    const std::string declared = req.get_header_value("Content-Length");
-    if (!declared.empty() && (declared.size() > 18 || std::stoull("0" + declared) > options.max_body)) too_big = true;
     if (too_big) {
       if (!read) res.set_header("Connection", "close");
       set_error(res, 413, "request: the body is larger than the limit of " + std::to_string(options.max_body) + " bytes");
-      return;
+      return false;
     }
     if (!read) {
       res.set_header("Connection", "close");
       set_error(res, 400, "request: the body could not be read (malformed chunks, or the client stopped sending)");
-      return;
+      return false;
     }
+    return true;
+  };
+  const auto time_limit_error = [&options](httplib::Response& res) {
+    set_error(res, 503, "request: computed for more than " + format_seconds(options.time_limit) +
+                            " s (the server's time limit); its work was stopped");
+  };
+  // The handlers outlive this function: they hold copies (options and listing_text are the
+  // caller's, alive while the server runs).
+  server.Post(R"(/api/([A-Za-z0-9_]{1,64}))", [=](const httplib::Request& req, httplib::Response& res,
+                                                   const httplib::ContentReader& read_body) {
+    std::string body;
+    if (!read_request_body(req, res, read_body, body)) return;
     const std::string name = req.matches[1];
     if (!command_exists(name)) {
       set_error(res, 404, "command: unknown command " + quoted_text(name));
@@ -412,10 +511,9 @@ int serve(const ServeOptions& options) {
                 "let it read the fonts in DIR by file name)");
       return;
     }
-    const auto r = computer.compute(name, body);
+    const auto r = compute(name, body);
     if (r.timed_out) {
-      set_error(res, 503, "request: computed for more than " + format_seconds(options.time_limit) +
-                              " s (the server's time limit); its work was stopped");
+      time_limit_error(res);
       return;
     }
     switch (r.kind) {
@@ -436,6 +534,22 @@ int serve(const ServeOptions& options) {
         break;
     }
   });
+  // The batch: several requests in one body, one line each ({"command", "request"}),
+  // computed one after the other by one worker within one time limit, answered by one line
+  // each (docs/cli.md, "casteljau serve"). Outside /api/ so that it names no command. The
+  // explorer sends each update of a view as one batch: one round trip instead of eight.
+  server.Post("/batch", [=](const httplib::Request& req, httplib::Response& res, const httplib::ContentReader& read_body) {
+    std::string body;
+    if (!read_request_body(req, res, read_body, body)) return;
+    const auto r = compute(batch_name, body);
+    if (r.timed_out) {
+      time_limit_error(res);
+    } else if (r.kind == kind_json) {
+      res.set_content(r.text, "application/x-ndjson");
+    } else {
+      set_error(res, 500, r.text);
+    }
+  });
   // Every error status carries {"error": ...}: the ones httplib answers itself (no such
   // path, a body over the limit, a malformed request) get one here.
   server.set_error_handler([&options](const httplib::Request& req, httplib::Response& res) {
@@ -447,11 +561,43 @@ int serve(const ServeOptions& options) {
       case 413:
         set_error(res, 413, "request: the body is larger than the limit of " + std::to_string(options.max_body) + " bytes");
         break;
+      case 416:  // a Range header httplib could not parse (ranges are not served: above)
+        set_error(res, 400, "request: malformed Range header (responses are always whole)");
+        break;
       default:
         set_error(res, res.status, "request: refused with HTTP status " + std::to_string(res.status));
         break;
     }
   });
+
+}
+
+int serve(const ServeOptions& options) {
+  // The spawner first, while this process has one thread.
+  Computer computer(options);
+  std::signal(SIGPIPE, SIG_IGN);
+
+  const bool glyph_served = !options.font_dir.empty();
+  const std::string listing_text = api_listing_text(glyph_served);
+
+  httplib::Server server;
+  const unsigned jobs = Computer::jobs(options);
+  // httplib serves a connection on one thread for as long as it lasts (keep-alive, a slow
+  // client), while at most `jobs` requests compute: a thread per connection (ElasticPool),
+  // so that idle or slow clients do not keep the others waiting; an idle connection is
+  // closed after 2 s, a client silent for 5 s in mid-request too. A keep-alive connection
+  // serves up to 10,000 requests (httplib's default, 5, made a browser or a benchmark
+  // client open a new connection every fifth request).
+  raise_open_file_limit();
+  server.new_task_queue = [] { return new ElasticPool(4096); };
+  server.set_keep_alive_timeout(2);
+  server.set_keep_alive_max_count(10000);
+  server.set_payload_max_length(options.max_body);
+  // httplib writes the head and the body apart: without TCP_NODELAY, Nagle's algorithm holds
+  // the body until the client's delayed ACK, 40 ms per response.
+  server.set_tcp_nodelay(true);
+
+  add_routes(server, options, listing_text, [&computer](std::string_view name, std::string_view body) { return computer.compute(name, body); });
 
   int port = options.port;
   if (port == 0) {
@@ -460,6 +606,7 @@ int serve(const ServeOptions& options) {
   } else if (!server.bind_to_port(options.host, port)) {
     throw std::runtime_error("cannot listen on " + options.host + ":" + std::to_string(port) + " (in use, or not an address of this machine)");
   }
+  widen_backlog(port);
   const bool v6 = options.host.find(':') != std::string::npos;
   std::printf("casteljau serve: http://%s%s%s:%d/ (%u requests computed at once, %s s each at most)\n", v6 ? "[" : "",
               options.host.c_str(), v6 ? "]" : "", port, jobs, format_seconds(options.time_limit).c_str());

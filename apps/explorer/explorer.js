@@ -51,28 +51,65 @@ function setPending(delta) {
 window.explorerIdle = () => new Promise((resolve) => (pendingRequests === 0 ? resolve() : idleWaiters.push(resolve)));
 
 // One command on the server: the response object, or an Error with the server's message.
-async function api(command, request) {
+// The commands asked in one turn of the event loop (a view's update asks for all it needs
+// at once) travel together, as one batch (POST /batch, one line per request, one answer
+// line each): one round trip per update rather than one per command (in Chromium each
+// request costs several milliseconds of its own, far more than the server's computing).
+let batch = null;
+
+function api(command, request) {
+  return new Promise((resolve, reject) => {
+    if (!batch) {
+      batch = [];
+      queueMicrotask(sendBatch);
+    }
+    batch.push({ command, request, resolve, reject });
+  });
+}
+
+async function sendBatch() {
+  const items = batch;
+  batch = null;
   setPending(1);
   try {
-    const res = await fetch("api/" + command, {
-      method: "POST",
-      headers: { "Content-Type": "application/json" },
-      body: JSON.stringify(request),
+    const body = items.map((i) => JSON.stringify({ command: i.command, request: i.request })).join("\n") + "\n";
+    const res = await fetch("batch", { method: "POST", headers: { "Content-Type": "application/x-ndjson" }, body });
+    const text = await res.text();
+    if (!res.ok) {
+      let message = String(res.status);
+      try {
+        message = JSON.parse(text).error;
+      } catch (_) {}
+      for (const i of items) i.reject(new Error(i.command + ": " + message));
+      return;
+    }
+    const lines = text.split("\n");
+    items.forEach((item, k) => {
+      const answer = JSON.parse(lines[k]);
+      if (answer && typeof answer.error === "string" && Object.keys(answer).length === 1) item.reject(new Error(item.command + ": " + answer.error));
+      else item.resolve(answer);
     });
-    const body = await res.json();
-    if (!res.ok) throw new Error(command + ": " + (body.error || res.status));
-    return body;
+  } catch (e) {
+    for (const i of items) i.reject(e);
   } finally {
     setPending(-1);
   }
 }
 
+// The time from an input (a drag's move, a slider) to the drawing of the server's answer
+// for it, in milliseconds, per update (the last 1000): for tests and for the curious.
+const updateLatencies = [];
+window.explorerLatencies = () => updateLatencies.slice();
+
 // Runs `work` (an async function) now, or once more after the running one ends: a drag
-// never queues requests behind each other, and the last state is always drawn.
+// never queues requests behind each other (only the latest state is sent next), and the
+// last state is always drawn.
 function coalesced(work) {
   let running = false;
   let again = false;
+  let since = null;  // when the oldest input not yet sent arrived
   const run = async () => {
+    if (since === null) since = performance.now();
     if (running) {
       again = true;
       return;
@@ -82,15 +119,20 @@ function coalesced(work) {
     try {
       do {
         again = false;
+        const t0 = since;
+        since = null;
         try {
           await work();
           status.textContent = "";
+          updateLatencies.push(performance.now() - t0);
+          if (updateLatencies.length > 1000) updateLatencies.shift();
         } catch (e) {
           status.textContent = e.message;
         }
       } while (again);
     } finally {
       running = false;
+      since = null;
       setPending(-1);
     }
   };
@@ -100,21 +142,23 @@ function coalesced(work) {
 // A figure: world coordinates (y up) mapped to the SVG's viewBox, with one scale for both
 // axes (equal) or one per axis (a plot).
 class Frame {
-  constructor(svg, xmin, xmax, ymin, ymax, margin = 20, equal = true) {
+  // flip: y down, as in SVG documents.
+  constructor(svg, xmin, xmax, ymin, ymax, margin = 20, equal = true, flip = false) {
     this.svg = svg;
     const vb = svg.viewBox.baseVal;
     this.w = vb.width;
     this.h = vb.height;
     this.equal = equal;
+    this.flip = flip;
     this.set(xmin, xmax, ymin, ymax, margin);
   }
   set(xmin, xmax, ymin, ymax, margin = 20) {
     let sx = (this.w - 2 * margin) / (xmax - xmin), sy = (this.h - 2 * margin) / (ymax - ymin);
     if (this.equal) sx = sy = Math.min(sx, sy);
     this.sx = sx;
-    this.sy = sy;
+    this.sy = this.flip ? -sy : sy;
     this.ox = (this.w - sx * (xmax - xmin)) / 2 - sx * xmin;
-    this.oy = (this.h + sy * (ymax - ymin)) / 2 + sy * ymin;
+    this.oy = this.flip ? (this.h - sy * (ymax - ymin)) / 2 - sy * ymin : (this.h + sy * (ymax - ymin)) / 2 + sy * ymin;
   }
   x(p) {
     return this.ox + this.sx * p[0];
@@ -375,6 +419,7 @@ const bspline = {
       this.u = this.domain()[0] + Number(this.uInput.value) * (this.domain()[1] - this.domain()[0]);
       this.update();
     });
+    document.getElementById("bs-deboor").addEventListener("input", () => this.update());
     document.getElementById("bs-degree").addEventListener("change", (e) => {
       const p = Number(e.target.value);
       if (p >= this.points.length) return;
@@ -474,12 +519,33 @@ const bspline = {
     const [a, b] = this.domain();
     this.u = Math.min(b, Math.max(a, this.u));
     const ts = linspace(a, b, 241);
-    const [samples, at, basis] = await Promise.all([
+    const deBoor = this.deBoorRequests(curve);
+    const [samples, at, basis, ...inserted] = await Promise.all([
       api("eval", { curve, t: ts }),
       api("eval", { curve, t: [this.u] }),
       api("basis", { kind: "bspline", degree: this.degree, knots: this.knots, t: ts }),
+      ...deBoor.requests.map((r) => api("insert_knot", r)),
     ]);
-    this.draw({ samples, at, basis, ts });
+    const levels = [this.points.slice(deBoor.k - this.degree, deBoor.k - deBoor.s + 1)];
+    inserted.forEach((r, i) => levels.push(r.curve.points.slice(deBoor.k - this.degree + i + 1, deBoor.k - deBoor.s + 1)));
+    this.draw({ samples, at, basis, ts, levels: deBoor.requests.length ? levels : [] });
+  },
+
+  // De Boor's construction at u: inserting u r times (r = 1 .. p - s, s its multiplicity)
+  // puts the construction's level r among the new control points, at indices k - p + r ..
+  // k - s (k the knot span of u; the NURBS Book, section 5.2): the server's insert_knot
+  // answers every level. None at the domain's ends or where u is a knot of multiplicity p.
+  deBoorRequests(curve) {
+    const p = this.degree, n = this.points.length, U = this.knots, u = this.u;
+    const none = { requests: [], k: p, s: 0 };
+    if (!document.getElementById("bs-deboor").checked || !(u > U[p] && u < U[n])) return none;
+    let k = p;
+    while (k + 1 < n && U[k + 1] <= u) k++;
+    const s = U.filter((x) => x === u).length;
+    if (s >= p) return none;
+    const requests = [];
+    for (let r = 1; r <= p - s; r++) requests.push({ curve, knot: u, times: r });
+    return { requests, k, s };
   },
 
   draw(r) {
@@ -488,6 +554,12 @@ const bspline = {
     el("path", { class: "polygon", d: f.path(this.points) }, svg);
     const curve = el("path", { class: "curve", id: "bs-curve", d: f.path(r.samples.points) }, svg);
     curve.dataset.points = JSON.stringify(r.samples.points);
+    r.levels.forEach((level, k) => {
+      const color = k === 0 ? "#999" : PALETTE[(k - 1) % PALETTE.length];
+      const e = el("path", { class: "level", d: f.path(level), stroke: color, "data-level": k }, svg);
+      e.dataset.points = JSON.stringify(level);
+      for (const q of level) el("circle", { class: "level-point", cx: f.x(q), cy: f.y(q), r: 3.5, fill: color }, svg);
+    });
     const c = r.at.points[0];
     el("circle", { class: "on-curve", id: "bs-on-curve", cx: f.x(c), cy: f.y(c), r: 6 }, svg);
     this.points.forEach((p, i) => {
@@ -807,9 +879,517 @@ const queries = {
 };
 
 // ---------------------------------------------------------------------------------------
-// Views and navigation (#bezier, #bspline, #interpolation, #subdivision, #queries).
+// View 2: composite curves (three cubic Bézier pieces, two joints).
 
-const views = { bezier, bspline, interpolation, subdivision, queries };
+// The continuity asked at a joint and what it moves: the points after the joint follow
+// the points before it (a dependent point is drawn as a square and is not draggable).
+const JOINT_KINDS = ["C0", "G1", "C1", "C2"];
+
+const composite = {
+  // Ten points: piece i is points 3i..3i+3; joints at points 3 and 6.
+  points: [
+    [0.4, 0.8], [1.2, 3.6], [2.6, 4.6], [3.6, 3.0], [4.2, 2.0], [4.6, 0.6],
+    [6.0, 0.9], [7.2, 1.2], [7.8, 4.6], [9.0, 3.6],
+  ],
+  joints: ["C1", "C0"],
+  combScale: 0.6,
+
+  init() {
+    this.svg = document.getElementById("cp-canvas");
+    this.frame = new Frame(this.svg, -0.5, 9.5, -0.5, 5.5);
+    this.update = coalesced(() => this.compute());
+    this.joints.forEach((kind, j) => {
+      const select = document.getElementById("cp-joint-" + j);
+      select.value = kind;
+      select.addEventListener("change", () => {
+        this.joints[j] = select.value;
+        this.enforce();
+        this.update();
+      });
+    });
+    const comb = document.getElementById("cp-comb-scale");
+    comb.addEventListener("input", () => {
+      this.combScale = Number(comb.value);
+      this.update();
+    });
+    document.getElementById("cp-comb").addEventListener("input", () => this.update());
+    this.enforce();
+  },
+
+  // The points set by the joints' continuity (index -> true).
+  dependent() {
+    const out = {};
+    this.joints.forEach((kind, j) => {
+      const m = 3 * (j + 1);
+      if (kind !== "C0") out[m + 1] = true;
+      if (kind === "C2") out[m + 2] = true;
+    });
+    return out;
+  },
+
+  // Moves the dependent points so that each joint has the continuity asked (cubic pieces
+  // on parameter intervals of equal length: the end derivatives 3 (P3 - P2) and 6 (P3 -
+  // 2 P2 + P1) of the left piece equal the right piece's 3 (Q1 - Q0) and 6 (Q2 - 2 Q1 + Q0)).
+  enforce() {
+    const P = this.points;
+    this.joints.forEach((kind, j) => {
+      const m = 3 * (j + 1);
+      const d = [P[m][0] - P[m - 1][0], P[m][1] - P[m - 1][1]];
+      if (kind === "G1") {
+        const len = Math.hypot(P[m + 1][0] - P[m][0], P[m + 1][1] - P[m][1]) || 1;
+        const dl = Math.hypot(d[0], d[1]) || 1;
+        P[m + 1] = [P[m][0] + (len * d[0]) / dl, P[m][1] + (len * d[1]) / dl];
+      } else if (kind === "C1" || kind === "C2") {
+        P[m + 1] = [P[m][0] + d[0], P[m][1] + d[1]];
+        if (kind === "C2") P[m + 2] = [P[m - 2][0] + 4 * d[0], P[m - 2][1] + 4 * d[1]];
+      }
+    });
+  },
+
+  pieces() {
+    return [0, 1, 2].map((i) => ({ type: "bezier", points: this.points.slice(3 * i, 3 * i + 4) }));
+  },
+
+  async compute() {
+    const pieces = this.pieces();
+    const path = { type: "path", segments: pieces };
+    const ts = linspace(0, 3, 241);
+    const ends = [];
+    for (let j = 0; j < 2; j++) {
+      ends.push(api("eval", { curve: pieces[j], t: [1], derivatives: 2, curvature: true }));
+      ends.push(api("eval", { curve: pieces[j + 1], t: [0], derivatives: 2, curvature: true }));
+    }
+    const [samples, ...sides] = await Promise.all([api("eval", { curve: path, t: ts, derivatives: 1, curvature: true }), ...ends]);
+    this.draw({ samples, sides });
+  },
+
+  // The continuity reached at a joint, from the two pieces' end values (the server's):
+  // the highest of C0, G1, C1, G2, C2 that holds to 1e-9 of the derivatives' size.
+  continuity(left, right) {
+    const close = (a, b) => {
+      const scale = Math.max(1, Math.hypot(...a), Math.hypot(...b));
+      return Math.hypot(...a.map((x, i) => x - b[i])) <= 1e-9 * scale;
+    };
+    const unit = (v) => {
+      const n = Math.hypot(...v);
+      return n > 0 ? v.map((x) => x / n) : v;
+    };
+    if (!close(left.points[0], right.points[0])) return "none";
+    const d1l = left.derivatives[0][0], d1r = right.derivatives[0][0];
+    const d2l = left.derivatives[1][0], d2r = right.derivatives[1][0];
+    if (close(d1l, d1r)) {
+      if (close(d2l, d2r)) return "C2";
+      return Math.abs(left.curvature[0] - right.curvature[0]) <= 1e-9 * Math.max(1, Math.abs(left.curvature[0])) ? "G2 (C1)" : "C1";
+    }
+    if (!close(unit(d1l), unit(d1r))) return "C0";
+    return Math.abs(left.curvature[0] - right.curvature[0]) <= 1e-9 * Math.max(1, Math.abs(left.curvature[0])) ? "G2" : "G1";
+  },
+
+  draw(r) {
+    const f = this.frame, svg = this.svg;
+    svg.replaceChildren();
+    for (let i = 0; i < 3; i++) el("path", { class: "polygon", d: f.path(this.points.slice(3 * i, 3 * i + 4)) }, svg);
+    const pts = r.samples.points;
+    // The curvature comb: at each sample a tooth of length scale x curvature along the
+    // normal, away from the centre of curvature (the server's curvature and derivative).
+    if (document.getElementById("cp-comb").checked) {
+      const tips = pts.map((p, i) => {
+        const d = r.samples.derivatives[0][i], k = r.samples.curvature[i];
+        const n = Math.hypot(d[0], d[1]) || 1;
+        const s = -this.combScale * k;
+        return [p[0] + (s * -d[1]) / n, p[1] + (s * d[0]) / n];
+      });
+      const teeth = pts.map((p, i) => "M" + f.x(p).toFixed(2) + " " + f.y(p).toFixed(2) + "L" + f.x(tips[i]).toFixed(2) + " " + f.y(tips[i]).toFixed(2)).join("");
+      el("path", { class: "comb", d: teeth }, svg);
+      const envelope = el("path", { class: "comb-envelope", id: "cp-comb-envelope", d: f.path(tips) }, svg);
+      envelope.dataset.curvature = JSON.stringify(r.samples.curvature);
+    }
+    const curve = el("path", { class: "curve", id: "cp-curve", d: f.path(pts) }, svg);
+    curve.dataset.points = JSON.stringify(pts);
+    const dep = this.dependent();
+    this.points.forEach((p, i) => {
+      if (dep[i]) {
+        el("rect", { class: "dependent", x: f.x(p) - 6, y: f.y(p) - 6, width: 12, height: 12, "data-index": i, "data-point": JSON.stringify(p) }, svg);
+        return;
+      }
+      const h = el("circle", { class: "handle" + (i % 3 === 0 ? " joint" : ""), cx: f.x(p), cy: f.y(p), r: 8, "data-index": i, "data-point": JSON.stringify(p) }, svg);
+      dragHandle(f, h, i, (index, w) => {
+        const P = this.points;
+        // A joint's point carries its two neighbours along.
+        if (index % 3 === 0 && index > 0 && index < 9) {
+          const dx = w[0] - P[index][0], dy = w[1] - P[index][1];
+          for (const k of [index - 1, index + 1]) P[k] = [P[k][0] + dx, P[k][1] + dy];
+        }
+        P[index] = w;
+        this.enforce();
+        this.update();
+      });
+    });
+    for (let j = 0; j < 2; j++) {
+      const left = r.sides[2 * j], right = r.sides[2 * j + 1];
+      const reached = this.continuity(left, right);
+      document.getElementById("cp-joint-" + j + "-reached").textContent = reached;
+      document.getElementById("cp-joint-" + j + "-curvature").textContent = fmt(left.curvature[0]) + " | " + fmt(right.curvature[0]);
+      const m = this.points[3 * (j + 1)];
+      const label = el("text", { class: "label", x: f.x(m) + 10, y: f.y(m) + 22 }, svg);
+      label.textContent = reached;
+    }
+    document.getElementById("cp-comb-scale-out").textContent = this.combScale.toFixed(2);
+  },
+};
+
+// ---------------------------------------------------------------------------------------
+// View 4b: Hermite curves and the tangent rules.
+
+const TANGENT_SCALE = 0.5;  // a tangent m is drawn from P to P + 0.5 m
+
+const TANGENT_RULES = [
+  { key: "explicit", label: "Hermite, your tangents (drag the arrow heads)", color: "#1f5fbf", on: true },
+  { key: "finite_difference", label: "finite differences", color: "#7f7f7f", on: false },
+  { key: "catmull_rom", label: "Catmull-Rom", color: "#ff7f0e", on: true },
+  { key: "cardinal", label: "cardinal (tension below)", color: "#9467bd", on: false },
+  { key: "kochanek_bartels", label: "Kochanek-Bartels (T, C, B below)", color: "#8c564b", on: false },
+  { key: "monotone", label: "PCHIP (monotone, as scipy)", color: "#2ca02c", on: true },
+  { key: "akima", label: "Akima (as scipy)", color: "#d62728", on: true },
+];
+
+const hermite = {
+  // A step: monotone data, where PCHIP keeps to the data's range and the others overshoot.
+  points: [
+    [0.5, 0.8], [2.0, 0.8], [3.4, 0.8], [4.6, 4.2], [6.6, 4.2], [8.6, 4.2],
+  ],
+  tangents: [
+    [1, 0], [1, 0], [1, 1.5], [1, 1.5], [1, 0], [1, 0],
+  ],
+
+  init() {
+    this.svg = document.getElementById("hm-canvas");
+    this.frame = new Frame(this.svg, -0.5, 9.5, -0.5, 5.5);
+    this.update = coalesced(() => this.compute());
+    const box = document.getElementById("hm-choices");
+    for (const c of TANGENT_RULES) {
+      const label = document.createElement("label");
+      const input = Object.assign(document.createElement("input"), { type: "checkbox", checked: c.on, id: "hm-" + c.key });
+      input.addEventListener("input", () => this.update());
+      const swatch = Object.assign(document.createElement("span"), { textContent: "■ " });
+      swatch.style.color = c.color;
+      label.append(input, " ", swatch, c.label);
+      box.appendChild(label);
+    }
+    for (const id of ["hm-param", "hm-tension", "hm-kb-t", "hm-kb-c", "hm-kb-b"]) document.getElementById(id).addEventListener("input", () => this.update());
+  },
+
+  // The parameters: the points' x (the curve is then a function y(x), as scipy's
+  // PchipInterpolator and Akima1DInterpolator see data), or a parametrization's name.
+  parameters() {
+    const mode = document.getElementById("hm-param").value;
+    return mode === "x" ? { params: this.points.map((p) => p[0]) } : { parametrization: mode };
+  },
+
+  curve(key) {
+    const c = { type: "hermite", ...this.parameters(), points: this.points };
+    if (key === "explicit") return { ...c, tangents: this.tangents };
+    c.tangent_rule = key;
+    const v = (id) => Number(document.getElementById(id).value);
+    if (key === "cardinal") c.tension = v("hm-tension");
+    if (key === "kochanek_bartels") Object.assign(c, { tension: v("hm-kb-t"), continuity: v("hm-kb-c"), bias: v("hm-kb-b") });
+    return c;
+  },
+
+  async compute() {
+    const chosen = TANGENT_RULES.filter((c) => document.getElementById("hm-" + c.key).checked);
+    const answers = await Promise.all(
+      chosen.map(async (c) => {
+        const curve = this.curve(c.key);
+        const [flat, box] = await Promise.all([api("flatten", { curve, tolerance: 0.002 }), api("bounds", { curve })]);
+        return { c, points: flat.points, box };
+      }),
+    );
+    this.draw(answers);
+  },
+
+  draw(answers) {
+    const f = this.frame, svg = this.svg;
+    svg.replaceChildren();
+    for (const a of answers) {
+      const e = el("path", { class: "curve", id: "hm-curve-" + a.c.key, d: f.path(a.points), style: "stroke: " + a.c.color + "; stroke-width: 2" }, svg);
+      e.dataset.points = JSON.stringify(a.points);
+    }
+    const explicit = document.getElementById("hm-explicit").checked;
+    const xmode = document.getElementById("hm-param").value === "x";
+    this.points.forEach((p, i) => {
+      if (explicit) {
+        const m = this.tangents[i];
+        const tip = [p[0] + TANGENT_SCALE * m[0], p[1] + TANGENT_SCALE * m[1]];
+        el("line", { class: "tangent", x1: f.x(p), y1: f.y(p), x2: f.x(tip), y2: f.y(tip) }, svg);
+        const t = el("circle", { class: "tangent-handle", cx: f.x(tip), cy: f.y(tip), r: 6, "data-index": i, "data-tangent": JSON.stringify(m) }, svg);
+        dragHandle(f, t, i, (index, w) => {
+          const q = this.points[index];
+          this.tangents[index] = [(w[0] - q[0]) / TANGENT_SCALE, (w[1] - q[1]) / TANGENT_SCALE];
+          this.update();
+        });
+      }
+      const h = el("circle", { class: "handle", cx: f.x(p), cy: f.y(p), r: 8, "data-index": i, "data-point": JSON.stringify(p) }, svg);
+      dragHandle(f, h, i, (index, w) => {
+        // As a function y(x), the x stay increasing: between the neighbours'.
+        if (xmode) {
+          const lo = index > 0 ? this.points[index - 1][0] + 0.05 : -Infinity;
+          const hi = index + 1 < this.points.length ? this.points[index + 1][0] - 0.05 : Infinity;
+          w = [Math.min(hi, Math.max(lo, w[0])), w[1]];
+        }
+        this.points[index] = w;
+        this.update();
+      });
+    });
+    const ys = this.points.map((p) => p[1]);
+    document.getElementById("hm-data-range").textContent = "[" + fmt(Math.min(...ys)) + ", " + fmt(Math.max(...ys)) + "]";
+    const dl = document.getElementById("hm-ranges");
+    dl.replaceChildren();
+    for (const a of answers) {
+      const dt = Object.assign(document.createElement("dt"), { textContent: a.c.label.split(" (")[0] });
+      const dd = Object.assign(document.createElement("dd"), { textContent: "[" + fmt(a.box.min[1]) + ", " + fmt(a.box.max[1]) + "]", id: "hm-range-" + a.c.key });
+      dl.append(dt, dd);
+    }
+    for (const id of ["hm-tension", "hm-kb-t", "hm-kb-c", "hm-kb-b"]) document.getElementById(id + "-out").textContent = Number(document.getElementById(id).value).toFixed(2);
+  },
+};
+
+// ---------------------------------------------------------------------------------------
+// View 4c: Catmull-Rom's alpha: uniform, centripetal, chordal.
+
+const CATMULL_ALPHAS = [
+  { alpha: 0, key: "0", label: "uniform (α 0)", color: "#ff7f0e" },
+  { alpha: 0.5, key: "05", label: "centripetal (α 0.5)", color: "#9467bd" },
+  { alpha: 1, key: "1", label: "chordal (α 1)", color: "#2ca02c" },
+];
+
+const catmull = {
+  // Unevenly spaced points: the uniform curve loops (self-intersections), the centripetal
+  // one does not (Yuksel, Schaefer and Keyser 2011).
+  points: [
+    [0.6, 4.3], [1.7, 1.4], [3.0, 2.3], [3.0, 2.0], [7.1, 2.2], [7.9, 1.5],
+  ],
+
+  init() {
+    this.svg = document.getElementById("cr-canvas");
+    this.frame = new Frame(this.svg, -0.5, 9.5, -0.5, 5.5);
+    this.update = coalesced(() => this.compute());
+    document.getElementById("cr-closed").addEventListener("input", () => this.update());
+  },
+
+  curve(alpha) {
+    const closed = document.getElementById("cr-closed").checked;
+    return closed ? { type: "catmull_rom", alpha, closed: true, points: this.points } : { type: "catmull_rom", alpha, ends: "reflect", points: this.points };
+  },
+
+  async compute() {
+    const answers = await Promise.all(
+      CATMULL_ALPHAS.map(async (c) => {
+        const curve = this.curve(c.alpha);
+        const [flat, self, features] = await Promise.all([
+          api("flatten", { curve, tolerance: 0.002 }),
+          api("intersect", { curves: [curve] }),
+          api("features", { curve }),
+        ]);
+        const cusps = features.cusps.length ? (await api("eval", { curve, t: features.cusps })).points : [];
+        return { c, points: flat.points, self, cusps };
+      }),
+    );
+    this.draw(answers);
+  },
+
+  draw(answers) {
+    const f = this.frame, svg = this.svg;
+    svg.replaceChildren();
+    for (const a of answers) {
+      const e = el("path", { class: "curve", id: "cr-curve-" + a.c.key, d: f.path(a.points), style: "stroke: " + a.c.color + "; stroke-width: 2" }, svg);
+      e.dataset.points = JSON.stringify(a.points);
+    }
+    for (const a of answers) {
+      const marks = el("g", { id: "cr-marks-" + a.c.key }, svg);
+      marks.dataset.intersections = JSON.stringify(a.self.intersections.map((x) => x.point));
+      marks.dataset.cusps = JSON.stringify(a.cusps);
+      for (const x of a.self.intersections) el("circle", { cx: f.x(x.point), cy: f.y(x.point), r: 7, fill: "none", stroke: a.c.color, "stroke-width": 2.5 }, marks);
+      for (const p of a.cusps) el("path", { d: "M" + (f.x(p) - 6) + " " + (f.y(p) - 6) + "l12 12m0 -12l-12 12", stroke: a.c.color, "stroke-width": 2.5 }, marks);
+    }
+    this.points.forEach((p, i) => {
+      const h = el("circle", { class: "handle", cx: f.x(p), cy: f.y(p), r: 8, "data-index": i, "data-point": JSON.stringify(p) }, svg);
+      dragHandle(f, h, i, (index, w) => {
+        this.points[index] = w;
+        this.update();
+      });
+    });
+    const dl = document.getElementById("cr-numbers");
+    dl.replaceChildren();
+    for (const a of answers) {
+      const dt = Object.assign(document.createElement("dt"), { textContent: a.c.label });
+      const n = a.self.intersections.length, m = a.cusps.length;
+      const dd = Object.assign(document.createElement("dd"), { id: "cr-count-" + a.c.key, textContent: n + " self-intersection" + (n === 1 ? "" : "s") + ", " + m + " cusp" + (m === 1 ? "" : "s") });
+      dl.append(dt, dd);
+    }
+  },
+};
+
+// ---------------------------------------------------------------------------------------
+// View 7: SVG import (import_svg), with the pieces' control points, and export.
+
+const SVG_EXAMPLE = '<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 100 100">\n' +
+  '  <path id="heart" d="M 10,30 A 20,20 0,0,1 50,30 A 20,20 0,0,1 90,30 Q 90,60 50,90 Q 10,60 10,30 z"/>\n' +
+  '  <rect id="box" x="105" y="20" width="36" height="24" rx="6"/>\n' +
+  '  <path id="wave" d="M100 80 c10-12 20 12 30 0 s20 12 30 0"/>\n' +
+  '</svg>';
+
+const importer = {
+  doc: null,  // the import_svg response, its control points moved by drags
+  tolerance: 0.01,
+
+  init() {
+    this.svg = document.getElementById("im-canvas");
+    this.frame = new Frame(this.svg, 0, 100, 0, 100, 20, true, true);
+    this.update = coalesced(() => this.compute());
+    this.text = document.getElementById("im-text");
+    this.text.value = SVG_EXAMPLE;
+    this.pending = { svg: SVG_EXAMPLE };
+    document.getElementById("im-import").addEventListener("click", () => this.load(this.text.value));
+    // A file chosen, or dropped on the figure or the text (read as pending work, so that
+    // explorerIdle waits for it).
+    const readFile = async (file) => {
+      if (!file) return;
+      setPending(1);
+      try {
+        this.load((this.text.value = await file.text()));
+      } finally {
+        setPending(-1);
+      }
+    };
+    document.getElementById("im-file").addEventListener("change", (e) => readFile(e.target.files[0]));
+    for (const target of [this.svg, this.text]) {
+      target.addEventListener("dragover", (e) => e.preventDefault());
+      target.addEventListener("drop", (e) => {
+        e.preventDefault();
+        readFile(e.dataTransfer.files[0]);
+      });
+    }
+    document.getElementById("im-export-svg").addEventListener("click", () => this.exportSvg());
+    document.getElementById("im-export-json").addEventListener("click", () => this.exportJson());
+  },
+
+  // Reads an SVG document, or path data alone, through import_svg; fits the figure to it.
+  load(text) {
+    this.pending = text.trim().startsWith("<") ? { svg: text } : { d: text };
+    this.doc = null;
+    this.update();
+  },
+
+  subpaths() {
+    const out = [];
+    if (this.doc) this.doc.paths.forEach((p, i) => p.subpaths.forEach((s, j) => out.push({ shape: i, index: j, curve: s })));
+    return out;
+  },
+
+  async compute() {
+    if (this.pending) {
+      const request = this.pending;
+      this.pending = null;
+      const doc = await api("import_svg", request);
+      const subs = doc.paths.flatMap((p) => p.subpaths);
+      const boxes = await Promise.all(subs.map((curve) => api("bounds", { curve })));
+      if (boxes.length) {
+        const lo = [Math.min(...boxes.map((b) => b.min[0])), Math.min(...boxes.map((b) => b.min[1]))];
+        const hi = [Math.max(...boxes.map((b) => b.max[0])), Math.max(...boxes.map((b) => b.max[1]))];
+        const size = Math.max(hi[0] - lo[0], hi[1] - lo[1]) || 1;
+        this.frame.set(lo[0] - 0.05 * size, hi[0] + 0.05 * size, lo[1] - 0.05 * size, hi[1] + 0.05 * size);
+        this.tolerance = size * 1e-3;
+      }
+      this.doc = doc;
+    }
+    const subs = this.subpaths();
+    const answers = await Promise.all(
+      subs.map(async (s) => {
+        const [flat, length] = await Promise.all([api("flatten", { curve: s.curve, tolerance: this.tolerance }), api("length", { curve: s.curve })]);
+        return { s, points: flat.points, length: length.length };
+      }),
+    );
+    this.draw(answers);
+  },
+
+  draw(answers) {
+    const f = this.frame, svg = this.svg;
+    svg.replaceChildren();
+    svg.dataset.tolerance = String(this.tolerance);
+    const counts = { line: 0, quadratic: 0, cubic: 0, arc: 0 };
+    let total = 0;
+    answers.forEach((a, k) => {
+      const e = el("path", { class: "curve", id: "im-curve-" + k, d: f.path(a.points) }, svg);
+      e.dataset.points = JSON.stringify(a.points);
+      e.dataset.curve = JSON.stringify(a.s.curve);
+      total += a.length;
+      a.s.curve.segments.forEach((seg) => {
+        if (seg.type === "rational_bezier") counts.arc++;
+        else counts[["", "line", "quadratic", "cubic"][seg.points.length - 1]]++;
+        if (seg.points.length > 2) el("path", { class: "polygon", d: f.path(seg.points) }, svg);
+      });
+    });
+    answers.forEach((a, k) => {
+      const segs = a.s.curve.segments;
+      segs.forEach((seg, si) => {
+        seg.points.forEach((p, pi) => {
+          const end = pi === 0 || pi === seg.points.length - 1;
+          const h = el("circle", { class: end ? "handle" : "handle inner", cx: f.x(p), cy: f.y(p), r: end ? 5 : 4, "data-subpath": k, "data-segment": si, "data-index": pi, "data-point": JSON.stringify(p) }, svg);
+          h.addEventListener("pointerdown", () => {
+            // The points at the same place in this subpath (the joints) move together.
+            this.dragged = [];
+            segs.forEach((s2, sj) => s2.points.forEach((q, qi) => {
+              if (q[0] === p[0] && q[1] === p[1]) this.dragged.push([sj, qi]);
+            }));
+          });
+          dragHandle(f, h, pi, (_, w) => {
+            for (const [sj, qi] of this.dragged || [[si, pi]]) segs[sj].points[qi] = w;
+            this.update();
+          });
+        });
+      });
+    });
+    const doc = this.doc;
+    document.getElementById("im-shapes").textContent = doc ? doc.paths.map((p) => (p.id ? "#" + p.id : "(no id)") + ": " + p.subpaths.length + " subpath" + (p.subpaths.length === 1 ? "" : "s")).join(", ") : "";
+    document.getElementById("im-pieces").textContent = counts.line + " lines, " + counts.quadratic + " quadratics, " + counts.cubic + " cubics, " + counts.arc + " arc pieces (rational quadratics)";
+    document.getElementById("im-skipped").textContent = doc && doc.skipped.length ? doc.skipped.map((s) => s.element + (s.id ? "#" + s.id : "")).join(", ") : "none";
+    document.getElementById("im-length").textContent = fmt(total);
+  },
+
+  // What is on screen, as SVG (to_svg_path for each subpath: exact for these pieces) or
+  // JSON (the curves); the text is also kept on the page (#im-export).
+  async exportSvg() {
+    try {
+      const ds = await Promise.all(this.subpaths().map((s) => api("to_svg_path", { curve: s.curve, tolerance: this.tolerance })));
+      const body = ds.map((d) => '  <path d="' + d.d + '" fill="none" stroke="black"/>').join("\n");
+      this.offer("curves.svg", "image/svg+xml", '<svg xmlns="http://www.w3.org/2000/svg">\n' + body + "\n</svg>\n");
+    } catch (e) {
+      status.textContent = e.message;
+    }
+  },
+
+  exportJson() {
+    this.offer("curves.json", "application/json", JSON.stringify({ curves: this.subpaths().map((s) => s.curve) }) + "\n");
+  },
+
+  offer(name, type, text) {
+    const out = document.getElementById("im-export");
+    out.textContent = text;
+    const a = document.getElementById("im-download");
+    if (a.href) URL.revokeObjectURL(a.href);
+    a.href = URL.createObjectURL(new Blob([text], { type }));
+    a.download = name;
+    a.textContent = "download " + name;
+    a.hidden = false;
+  },
+};
+
+// ---------------------------------------------------------------------------------------
+// Views and navigation (#bezier, #composite, #bspline, #interpolation, #hermite, #catmull,
+// #subdivision, #queries, #import).
+
+const views = { bezier, composite, bspline, interpolation, hermite, catmull, subdivision, queries, import: importer };
 
 function show() {
   const name = (location.hash || "#bezier").slice(1);

@@ -69,13 +69,30 @@ class ExplorerTest(unittest.TestCase):
         from selenium.webdriver.common.by import By
         return self.driver.find_elements(By.CSS_SELECTOR, f"#{view}-canvas circle.handle")
 
-    def points(self, view):
-        return [json.loads(h.get_attribute("data-point")) for h in self.handles(view)]
+    # Reading the page: one WebDriver command each (a command costs 50-200 ms on the loaded
+    # machine; reading attributes element by element made most of the test's time).
 
-    def drag(self, element, dx, dy, steps=4):
-        """Mouse drag by (dx, dy) CSS pixels in steps (pointerdown, pointermoves, pointerup)."""
+    def attrs(self, selector, name):
+        """The attribute `name` of every element that the CSS selector matches."""
+        return self.driver.execute_script(
+            "return Array.from(document.querySelectorAll(arguments[0]), (e) => e.getAttribute(arguments[1]))", selector, name)
+
+    def attr(self, selector, name):
+        values = self.attrs(selector, name)
+        self.assertEqual(len(values), 1, selector)
+        return values[0]
+
+    def element(self, selector):
+        return self.driver.find_element("css selector", selector)
+
+    def points(self, view):
+        return [json.loads(v) for v in self.attrs(f"#{view}-canvas circle.handle", "data-point")]
+
+    def drag(self, element, dx, dy, steps=4, step_ms=16):
+        """Mouse drag by (dx, dy) CSS pixels in steps (pointerdown, pointermoves, pointerup),
+        a move every step_ms (16 ms: a 60 Hz pointer)."""
         from selenium.webdriver.common.action_chains import ActionChains
-        chain = ActionChains(self.driver).click_and_hold(element)
+        chain = ActionChains(self.driver, duration=step_ms).click_and_hold(element)
         for _ in range(steps):
             chain = chain.move_by_offset(dx / steps, dy / steps)
         chain.release().perform()
@@ -85,7 +102,7 @@ class ExplorerTest(unittest.TestCase):
         from selenium.webdriver.common.actions import interaction
         from selenium.webdriver.common.actions.action_builder import ActionBuilder
         from selenium.webdriver.common.actions.pointer_input import PointerInput
-        actions = ActionBuilder(self.driver, mouse=PointerInput(interaction.POINTER_TOUCH, "finger"))
+        actions = ActionBuilder(self.driver, mouse=PointerInput(interaction.POINTER_TOUCH, "finger"), duration=16)
         rect = element.rect
         x, y = rect["x"] + rect["width"] / 2, rect["y"] + rect["height"] / 2
         actions.pointer_action.move_to_location(int(x), int(y)).pointer_down()
@@ -94,11 +111,18 @@ class ExplorerTest(unittest.TestCase):
         actions.pointer_action.pointer_up()
         actions.perform()
 
+    def data_points(self, view):
+        """{index: point} of every control point drawn in a view (handles and dependent
+        points)."""
+        return {int(i): json.loads(p) for i, p in self.driver.execute_script(
+            "return Array.from(document.querySelectorAll(arguments[0]), (e) => [e.dataset.index, e.dataset.point])",
+            f"#{view}-canvas [data-point]")}
+
     def curve_points(self, element_id):
-        return json.loads(self.driver.find_element("id", element_id).get_attribute("data-points"))
+        return json.loads(self.attr("#" + element_id, "data-points"))
 
     def text(self, element_id):
-        return self.driver.find_element("id", element_id).text
+        return self.driver.execute_script("return document.getElementById(arguments[0]).innerText.trim()", element_id)
 
     def no_console_errors(self):
         errors = [e for e in self.driver.get_log("browser") if e["level"] == "SEVERE"]
@@ -156,6 +180,19 @@ class ExplorerTest(unittest.TestCase):
         curve = {"type": "bspline", "degree": 3, "knots": knots, "points": after}
         self.assertEqual(self.curve_points("bs-curve"), self.api("eval", {"curve": curve, "t": ts})["points"])
         self.assertEqual(self.text("bs-point"), fmt_point(self.api("eval", {"curve": curve, "t": [0.5]})["points"][0]))
+        # De Boor's construction at u = 0.5 (a knot of multiplicity 1: levels 0..2), against
+        # the construction written here. 1e-12: a few ulps of coordinates of size 5 through
+        # two levels of affine combinations, computed in another order by the server.
+        levels = {int(k): json.loads(v) for k, v in zip(self.attrs("#bs-canvas path.level", "data-level"),
+                                                          self.attrs("#bs-canvas path.level", "data-points"))}
+        expected = de_boor(after, knots, 3, 0.5)
+        self.assertEqual(sorted(levels), list(range(len(expected))))
+        for r, level in enumerate(expected):
+            self.assertEqual(len(levels[r]), len(level), r)
+            for p, q in zip(levels[r], level):
+                for a, b in zip(p, q):
+                    self.assertAlmostEqual(a, b, delta=1e-12)
+        self.assertEqual(len(expected[-1]), 1)  # the last level is C(u)
         # A weight changed by its slider (keyboard: real input events) makes it a NURBS.
         slider = self.driver.find_element("id", "bs-weight-3")
         slider.send_keys(Keys.PAGE_UP)
@@ -178,13 +215,14 @@ class ExplorerTest(unittest.TestCase):
 
     def show_view(self, name):
         """Switches to a view by its nav link (a real click) and waits for its drawing."""
-        from selenium.webdriver.support.ui import WebDriverWait
         if not self.driver.current_url.startswith(self.base):
             self.driver.get(self.base)
         self.driver.find_element("css selector", f'nav a[data-view="{name}"]').click()
-        WebDriverWait(self.driver, 10, poll_frequency=0.05).until(
-            lambda d: d.find_element("id", "view-" + name).get_attribute("hidden") is None)
-        self.settle()
+        # In the page: once the view is shown (after the hash change), until it is drawn.
+        self.driver.execute_async_script("""
+            const done = arguments[arguments.length - 1], view = document.getElementById(arguments[0]);
+            const wait = () => (view.hidden ? requestAnimationFrame(wait) : window.explorerIdle().then(() => done(true)));
+            wait();""", "view-" + name)
 
     def test_interpolation_view(self):
         self.show_view("interpolation")
@@ -216,12 +254,12 @@ class ExplorerTest(unittest.TestCase):
         self.assertNotEqual(a[1], [2.2, 4.8])
         A, B = {"type": "bezier", "points": a}, {"type": "bezier", "points": b}
         inter = self.api("intersect", {"curves": [A, B]})["intersections"]
-        marks = json.loads(self.driver.find_element("id", "qr-intersections").get_attribute("data-points"))
+        marks = json.loads(self.attr("#qr-intersections", "data-points"))
         self.assertEqual(marks, [x["point"] for x in inter])
         self.assertGreater(len(marks), 0)  # the example's curves cross
         self.assertEqual(self.text("qr-intersections-text"), "; ".join(
             x["kind"] + " at t = (" + ", ".join(fmt(v) for v in x["t"]) + ")" for x in inter))
-        box = json.loads(self.driver.find_element("id", "qr-bounds-box").get_attribute("data-box"))
+        box = json.loads(self.attr("#qr-bounds-box", "data-box"))
         self.assertEqual(box, self.api("bounds", {"curve": A}))
         self.assertEqual(self.text("qr-length"), fmt(self.api("length", {"curve": A})["length"]))
         # Segment counts at the page's tolerance 10^-1.5 (a count does not hinge on the last
@@ -252,6 +290,195 @@ class ExplorerTest(unittest.TestCase):
         self.assertEqual(self.text("sd-count"), str(len(self.api("subdivide", request)["points"])))
         self.driver.save_screenshot("explorer-subdivision.png")
         self.no_console_errors()
+
+    def test_composite_view(self):
+        from selenium.webdriver.support.ui import Select
+        self.show_view("composite")
+        Select(self.driver.find_element("id", "cp-joint-0")).select_by_visible_text("C2")
+        Select(self.driver.find_element("id", "cp-joint-1")).select_by_visible_text("G1")
+        self.settle()
+        handle = self.element("#cp-canvas circle.handle[data-index='1']")
+        before = self.data_points("cp")
+        self.drag(handle, 30, -25)
+        self.settle()
+        pts = self.data_points("cp")
+        self.assertEqual(sorted(pts), list(range(10)))
+        self.assertGreater(pts[1][0], before[1][0] + 0.2)
+        P = [pts[i] for i in range(10)]
+        # The continuity asked, from the cubic end derivatives 3 (P3 - P2), 6 (P3 - 2 P2 + P1)
+        # written here: C2 at P3 (C1: P4 = 2 P3 - P2; C2: P5 = P1 + 4 (P3 - P2)), and G1 at
+        # P6 (P7 - P6 along P6 - P5). 1e-12: the same few operations, possibly reordered.
+        for k in range(2):
+            self.assertAlmostEqual(P[4][k], P[3][k] + (P[3][k] - P[2][k]), delta=1e-12)
+            self.assertAlmostEqual(P[5][k], P[1][k] + 4 * (P[3][k] - P[2][k]), delta=1e-12)
+        a = [P[6][k] - P[5][k] for k in range(2)]
+        b = [P[7][k] - P[6][k] for k in range(2)]
+        self.assertAlmostEqual(a[0] * b[1] - a[1] * b[0], 0, delta=1e-12)
+        self.assertGreater(a[0] * b[0] + a[1] * b[1], 0)
+        # The drawn curve and comb: the server's eval of the path for these points.
+        path = {"type": "path", "segments": [{"type": "bezier", "points": P[3 * i:3 * i + 4]} for i in range(3)]}
+        ts = [(3 * i) / 240 for i in range(241)]
+        answer = self.api("eval", {"curve": path, "t": ts, "derivatives": 1, "curvature": True})
+        self.assertEqual(self.curve_points("cp-curve"), answer["points"])
+        self.assertEqual(json.loads(self.attr("#cp-comb-envelope", "data-curvature")), answer["curvature"])
+        # What each joint reaches, shown; and the curvatures on both sides.
+        self.assertEqual(self.text("cp-joint-0-reached"), "C2")
+        self.assertEqual(self.text("cp-joint-1-reached"), "G1")
+        for j in range(2):
+            left = self.api("eval", {"curve": path["segments"][j], "t": [1], "curvature": True})["curvature"][0]
+            right = self.api("eval", {"curve": path["segments"][j + 1], "t": [0], "curvature": True})["curvature"][0]
+            self.assertEqual(self.text(f"cp-joint-{j}-curvature"), fmt(left) + " | " + fmt(right))
+        self.driver.save_screenshot("explorer-composite.png")
+        self.no_console_errors()
+
+    def test_hermite_view(self):
+        self.show_view("hermite")
+        self.drag(self.handles("hm")[3], 0, -30)
+        tip = self.element("#hm-canvas circle.tangent-handle[data-index='2']")
+        self.drag(tip, 25, -20)
+        self.settle()
+        pts = self.points("hm")
+        tangents = [json.loads(v) for v in self.attrs("#hm-canvas circle.tangent-handle", "data-tangent")]
+        self.assertNotEqual(tangents[2], [1, 1.5])
+        params = [p[0] for p in pts]  # the page opens on "the points' x"
+        curves = {
+            "explicit": {"type": "hermite", "params": params, "points": pts, "tangents": tangents},
+            "catmull_rom": {"type": "hermite", "params": params, "points": pts, "tangent_rule": "catmull_rom"},
+            "monotone": {"type": "hermite", "params": params, "points": pts, "tangent_rule": "monotone"},
+            "akima": {"type": "hermite", "params": params, "points": pts, "tangent_rule": "akima"},
+        }
+        for key, curve in curves.items():
+            drawn = self.curve_points("hm-curve-" + key)
+            self.assertEqual(drawn, self.api("flatten", {"curve": curve, "tolerance": 0.002})["points"], key)
+            box = self.api("bounds", {"curve": curve})
+            self.assertEqual(self.text("hm-range-" + key), "[" + fmt(box["min"][1]) + ", " + fmt(box["max"][1]) + "]", key)
+        # PCHIP does not overshoot: its drawn points stay within the data's y range (1e-12:
+        # rounding of the cubic pieces' values).
+        ys = [p[1] for p in pts]
+        for x, y in self.curve_points("hm-curve-monotone"):
+            self.assertGreaterEqual(y, min(ys) - 1e-12)
+            self.assertLessEqual(y, max(ys) + 1e-12)
+        self.driver.save_screenshot("explorer-hermite.png")
+        self.no_console_errors()
+
+    def test_catmull_view(self):
+        self.show_view("catmull")
+        # On the opening example the uniform curve loops and the centripetal one does not.
+        self.assertTrue(self.text("cr-count-0").startswith("3 self-intersections"))
+        self.assertTrue(self.text("cr-count-05").startswith("0 self-intersections"))
+        self.drag(self.handles("cr")[4], -20, 25)
+        self.settle()
+        pts = self.points("cr")
+        for alpha, key in ((0, "0"), (0.5, "05"), (1, "1")):
+            curve = {"type": "catmull_rom", "alpha": alpha, "ends": "reflect", "points": pts}
+            self.assertEqual(self.curve_points("cr-curve-" + key), self.api("flatten", {"curve": curve, "tolerance": 0.002})["points"], key)
+            inter = self.api("intersect", {"curves": [curve]})["intersections"]
+            cusps = self.api("features", {"curve": curve})["cusps"]
+            self.assertEqual(json.loads(self.attr("#cr-marks-" + key, "data-intersections")), [x["point"] for x in inter], key)
+            self.assertEqual(len(json.loads(self.attr("#cr-marks-" + key, "data-cusps"))), len(cusps), key)
+            n, m = len(inter), len(cusps)
+            self.assertEqual(self.text("cr-count-" + key), f"{n} self-intersection{'' if n == 1 else 's'}, {m} cusp{'' if m == 1 else 's'}")
+        self.driver.save_screenshot("explorer-catmull.png")
+        self.no_console_errors()
+
+    def imported(self, text):
+        """import_svg's subpaths for text (an SVG document or path data), asked here."""
+        request = {"svg": text} if text.lstrip().startswith("<") else {"d": text}
+        return [s for p in self.api("import_svg", request)["paths"] for s in p["subpaths"]]
+
+    def check_import_drawing(self, subpaths):
+        tolerance = float(self.attr("#im-canvas", "data-tolerance"))
+        for k, curve in enumerate(subpaths):
+            self.assertEqual(self.curve_points(f"im-curve-{k}"), self.api("flatten", {"curve": curve, "tolerance": tolerance})["points"], k)
+        self.assertEqual(len(self.attrs("#im-canvas path.curve", "id")), len(subpaths))
+
+    def test_import_view(self):
+        self.show_view("import")
+        # The opening example, as the server reads it.
+        example = self.driver.execute_script("return document.getElementById('im-text').value")
+        self.check_import_drawing(self.imported(example))
+        self.assertEqual(self.text("im-shapes"), "#heart: 1 subpath, #box: 1 subpath, #wave: 1 subpath")
+        # Path data pasted, then imported.
+        d = "M 10 10 C 30 60 70 -20 90 30 Q 100 60 60 70 A 25 15 30 0 1 10 10 Z"
+        box = self.driver.find_element("id", "im-text")
+        box.clear()
+        box.send_keys(d)
+        self.driver.find_element("id", "im-import").click()
+        self.settle()
+        subpaths = self.imported(d)
+        self.check_import_drawing(subpaths)
+        self.assertEqual(self.text("im-pieces"), "0 lines, 1 quadratics, 1 cubics, 2 arc pieces (rational quadratics)")
+        # Drag the cubic's first inner control point: the drawn curve is the server's for the
+        # moved point.
+        cubic_inner = "#im-canvas circle.handle[data-subpath='0'][data-segment='0'][data-index='1']"
+        handle = self.element(cubic_inner)
+        old = json.loads(self.attr(cubic_inner, "data-point"))
+        self.drag(handle, 30, 20)
+        self.settle()
+        new = json.loads(self.attr(cubic_inner, "data-point"))
+        self.assertGreater(new[0], old[0])
+        self.assertGreater(new[1], old[1])  # y down, as in SVG
+        subpaths[0]["segments"][0]["points"][1] = new
+        self.check_import_drawing(subpaths)
+        # Exported as SVG (to_svg_path) and read back: the same pieces' end points (1e-9 of
+        # the drawing's size 100: to_svg_path writes round-trip digits; arcs go through
+        # their radii and angles).
+        self.driver.find_element("id", "im-export-svg").click()
+        self.settle()
+        back = self.imported(self.text("im-export"))
+        self.assertEqual(len(back), 1)
+        ends = lambda c: [s["points"][-1] for s in c["segments"]]
+        self.assertEqual(len(ends(back[0])), len(ends(subpaths[0])))
+        for p, q in zip(ends(back[0]), ends(subpaths[0])):
+            self.assertAlmostEqual(p[0], q[0], delta=1e-7)
+            self.assertAlmostEqual(p[1], q[1], delta=1e-7)
+        # A file chosen (as a drop would give it).
+        path = os.path.abspath("explorer-import.svg")
+        document = '<svg xmlns="http://www.w3.org/2000/svg"><g transform="translate(5 5) rotate(30)"><circle id="c" cx="20" cy="0" r="8"/></g><text>x</text></svg>'
+        with open(path, "w") as f:
+            f.write(document)
+        self.driver.find_element("id", "im-file").send_keys(path)
+        self.settle()
+        self.check_import_drawing(self.imported(document))
+        self.assertEqual(self.text("im-shapes"), "#c: 1 subpath")
+        self.assertEqual(self.text("im-skipped"), "text")
+        self.driver.save_screenshot("explorer-import.png")
+        self.no_console_errors()
+
+    def test_update_latency(self):
+        # A long drag in the de Casteljau view (30 moves at 60 Hz): every update's time from
+        # the input to the drawing of the server's answer, as the page records it.
+        self.show_view("bezier")
+        self.driver.execute_script("window.explorerLatencies().length = 0")
+        start = len(self.driver.execute_script("return window.explorerLatencies()"))
+        self.drag(self.handles("bz")[2], 120, 60, steps=30)
+        self.settle()
+        latencies = sorted(self.driver.execute_script("return window.explorerLatencies()")[start:])
+        self.assertGreater(len(latencies), 3)
+        median = latencies[len(latencies) // 2]
+        print(f"\nexplorer update latency (de Casteljau view, degree 4): median {median:.1f} ms over "
+              f"{len(latencies)} updates, max {latencies[-1]:.1f} ms", file=sys.stderr)
+        # 500 ms: generous (a median of 10-30 ms measured on the loaded 2-core machine; the
+        # eight separate requests per update before batching took 130-200 ms): catches a
+        # return to queued or unbatched requests without flaking on a busy machine.
+        self.assertLess(median, 500)
+
+
+def de_boor(points, knots, p, u):
+    """De Boor's construction at u (written here, the NURBS Book's algorithm A3.1 with the
+    multiplicity s of u): the levels 0 .. p - s, level r the points d_i^r, i = k-p+r .. k-s."""
+    n = len(points)
+    k = max(i for i in range(p, n) if knots[i] <= u)
+    s = knots.count(u)
+    levels = [[list(points[i]) for i in range(k - p, k - s + 1)]]
+    for r in range(1, p - s + 1):
+        prev, first = levels[-1], k - p + r - 1
+        level = []
+        for i in range(k - p + r, k - s + 1):
+            a = (u - knots[i]) / (knots[i + p - r + 1] - knots[i])
+            level.append([(1 - a) * x + a * y for x, y in zip(prev[i - 1 - first], prev[i - first])])
+        levels.append(level)
+    return levels
 
 
 if __name__ == "__main__":

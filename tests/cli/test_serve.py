@@ -298,6 +298,144 @@ class ServeTest(unittest.TestCase):
                 self.assertEqual(status, 200, body)
                 self.assertEqual(body, expected[i])
 
+    def test_batch_answers_as_jsonl(self):
+        # POST /batch: one {"command", "request"} line per request; each answer line is the
+        # command line's `--jsonl` line for the same request (bad ones too), in order.
+        requests = [
+            ("eval", {"curve": CUBIC, "t": [0, 0.3, 1], "derivatives": 1}),
+            ("split", {"curve": CUBIC, "t": 0.3}),
+            ("eval", {"curve": CUBIC, "t": "half"}),  # wrong type: its error line
+            ("basis", {"kind": "bernstein", "degree": 3, "t": [0.1, 0.7]}),
+            ("render", {"curve": CUBIC}),  # as --jsonl writes it: {"svg": ...}
+        ]
+        expected = []
+        for command, request in requests:
+            p = subprocess.run([BINARY, command, "--jsonl"], input=json.dumps(request).encode() + b"\n",
+                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, timeout=30)
+            expected.append(p.stdout)
+        body = b"".join(json.dumps({"command": c, "request": r}).encode() + b"\n" for c, r in requests)
+        status, ctype, answer = self.server.request("POST", "/batch", body)
+        self.assertEqual(status, 200, answer)
+        self.assertTrue(ctype.startswith("application/x-ndjson"), ctype)
+        self.assertEqual(answer, b"".join(expected))
+        # Lines that are not requests: an error line each, in place; the others answered.
+        body = (b'[1]\n\n{"command": "nope", "request": {}}\n{"command": "eval"}\n{"command": "eval", "request": {}, "x": 1}\n' +
+                json.dumps({"command": "split", "request": {"curve": CUBIC, "t": 0.3}}).encode())  # no final newline
+        status, _, answer = self.server.request("POST", "/batch", body)
+        self.assertEqual(status, 200, answer)
+        lines = [json.loads(l) for l in answer.decode().splitlines()]
+        self.assertEqual(len(lines), 6)
+        self.assertTrue(lines[0]["error"].startswith("batch line: "), lines[0])
+        self.assertTrue(lines[1]["error"].startswith("batch line: empty line"), lines[1])
+        self.assertEqual(lines[2]["error"], "command: unknown command 'nope'")
+        self.assertEqual(lines[3]["error"], "request: required field is missing")
+        self.assertTrue(lines[4]["error"].startswith("x: unknown field"), lines[4])
+        self.assertEqual(answer.decode().splitlines()[5] + "\n", expected[1].decode())
+        # The contract's routes are unchanged: /api/batch names no command.
+        status, ctype, body = self.server.post("batch", {})
+        self.assert_error(status, ctype, body, 404, "unknown command")
+        # One time limit for the whole batch: 503, and the server still answers.
+        slow = json.dumps({"command": SLOW_REQUEST[0], "request": json.loads(SLOW_REQUEST[1])}).encode()
+        status, ctype, body = self.server.request("POST", "/batch", slow)
+        self.assert_error(status, ctype, body, 503, "time limit")
+        status, _, _ = self.server.request("POST", "/batch", body=b'{"command": "eval", "request": {"curve": {"type": "bezier", "points": [[0]]}, "t": [0]}}')
+        self.assertEqual(status, 200)
+
+    def test_slow_client_does_not_block_others(self):
+        # A client that sends its body a byte at a time (about 0.5 s in all) holds one
+        # connection; 20 requests from other clients meanwhile are answered at once.
+        request = json.dumps({"curve": CUBIC, "t": [0.5]}).encode()
+        expected = cli("eval", request)[1]
+        done = {}
+
+        def slow_client():
+            with socket.create_connection((self.server.host, self.server.port), timeout=30) as s:
+                s.sendall(b"POST /api/eval HTTP/1.1\r\nHost: x\r\nConnection: close\r\nContent-Length: %d\r\n\r\n" % len(request))
+                for i in range(len(request)):
+                    s.sendall(request[i:i + 1])
+                    time.sleep(0.5 / len(request))
+                data = b""
+                while chunk := s.recv(65536):
+                    data += chunk
+            done["slow"] = (time.monotonic(), data)
+
+        t = threading.Thread(target=slow_client)
+        t.start()
+        time.sleep(0.1)  # the slow client is sending
+        for _ in range(20):
+            status, _, body = self.server.post("eval", request)
+            self.assertEqual((status, body), (200, expected))
+        others_done = time.monotonic()
+        t.join()
+        finished, data = done["slow"]
+        self.assertLess(others_done, finished)  # not queued behind it
+        head, _, body = data.partition(b"\r\n\r\n")
+        self.assertTrue(head.startswith(b"HTTP/1.1 200"), head[:40])
+        self.assertEqual(body, expected)
+
+    def test_http_fuzz_seeds(self):
+        # The http fuzz target's seeds (tests/fuzz/corpus/http: raw bytes of a connection,
+        # pipelined requests, chunked and malformed bodies, Range, Expect, HEAD...) sent to
+        # the real server, all at once: every response is HTTP/1.1 with a status of the
+        # contract (or HTTP's 100 and 414), and the server still answers afterwards.
+        import glob
+        import re
+        seeds = sorted(glob.glob(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "fuzz", "corpus", "http", "*")))
+        self.assertGreater(len(seeds), 10)
+        answers = {}
+
+        def send(path):
+            with open(path, "rb") as f:
+                data = f.read()
+            with socket.create_connection((self.server.host, self.server.port), timeout=10) as s:
+                s.sendall(data)
+                s.settimeout(0.4)  # after the last byte, 0.4 s of silence ends the reading
+                out = b""
+                try:
+                    while chunk := s.recv(65536):
+                        out += chunk
+                except (socket.timeout, ConnectionResetError):
+                    pass
+            answers[path] = out
+
+        threads = [threading.Thread(target=send, args=(p,)) for p in seeds]
+        for t in threads:
+            t.start()
+        for t in threads:
+            t.join()
+        for path, out in answers.items():
+            self.assertTrue(out.startswith(b"HTTP/1.1 "), (path, out[:60]))
+            for status in re.findall(rb"HTTP/1\.1 (\d\d\d) ", out):
+                self.assertIn(int(status), (100, 200, 400, 404, 413, 414), (path, out[:200]))
+        status, _, body = self.server.post("eval", {"curve": CUBIC, "t": [0.5]})
+        self.assertEqual(status, 200, body)
+
+    def test_many_idle_connections(self):
+        # 1000 connections opened at once and left idle do not exhaust the server: a request
+        # on a new connection is answered (with a fixed pool of 32 connection threads it
+        # waited for the idle ones' 2 s timeouts, about a minute), then they are closed.
+        import resource
+        soft, hard = resource.getrlimit(resource.RLIMIT_NOFILE)
+        if soft < 1200:
+            resource.setrlimit(resource.RLIMIT_NOFILE, (min(hard, 4096), hard))
+        idle = []
+        try:
+            for _ in range(1000):
+                idle.append(socket.create_connection((self.server.host, self.server.port), timeout=30))
+            start = time.monotonic()
+            status, _, body = self.server.post("eval", {"curve": CUBIC, "t": [0.5]})
+            elapsed = time.monotonic() - start
+            self.assertEqual(status, 200, body)
+            # 5 s: the server accepts the 1000 connections first, starting a thread for
+            # each (about 1.3 ms apiece on this loaded 2-core machine: 1.3 s in all, then
+            # a request takes milliseconds again); far below the minute a fixed pool took.
+            self.assertLess(elapsed, 5)
+        finally:
+            for s in idle:
+                s.close()
+        status, _, body = self.server.post("eval", {"curve": CUBIC, "t": [0.5]})
+        self.assertEqual(status, 200, body)
+
 
 class FontDirTest(unittest.TestCase):
     """glyph with --font-dir: fonts by file name inside the directory, nothing else."""
