@@ -20,10 +20,13 @@ so that the shared machine's drift hits every row alike), keeps the median repet
   * W6: us per pair, intersections, pairs missed and extra against the reference, max distance;
   * W7: ns per point, B-spline and NURBS surfaces on a grid and at random (u, v), for us and
     the peers (OCCT, SISL), max abs difference from the long double reference;
+  * W9 (bench/w9.py, when BUILD_DIR/python holds the Python package): casteljau against
+    scipy.interpolate, ms per case, the ratio and the max relative difference;
   * the goals of the benchmark issue, met or not.
 The raw JSON and the tables in Markdown go to BUILD_DIR/bench-results/.
 """
 import argparse
+import glob
 import json
 import os
 import subprocess
@@ -50,6 +53,9 @@ W7_GOAL_DIFF = 1e-13  # max abs difference from the long double reference
 W7_POINTS = 1e6
 W6_GOAL_VS_LIB2GEOM = 0.5  # our time / the fastest lib2geom method's
 W6_PAIRS = 1e4
+W9_GOAL_VECTORISED = 0.5  # our time / scipy's: spline_build, spline_eval_random, bspline_eval_random
+W9_GOAL_PER_CALL = 1.0  # our time / scipy's: per_call
+W9_GOAL_REL_DIFF = 1e-12  # max relative difference from scipy's values
 
 
 def run(exe, out_json, repetitions, min_time, bench_filter):
@@ -386,6 +392,37 @@ def w6_table(rows):
     return text, md, goals
 
 
+def w9_table(rows):
+    """W9 (bench/w9.py): the Python package against scipy.interpolate, per case; goals: the
+    vectorised rows at most W9_GOAL_VECTORISED of scipy's time, per_call at most
+    W9_GOAL_PER_CALL, values within W9_GOAL_REL_DIFF of scipy's."""
+    cases = []
+    for name in rows:
+        case = name.split("/", 2)[2]
+        if case not in cases:
+            cases.append(case)
+    headers = ["case", "scipy ms", "casteljau ms", "casteljau / scipy", "cpu ms scipy / casteljau", "cpu ratio",
+               "max rel diff"]
+    out, goals = [], []
+    for case in cases:
+        sp, ours = rows.get(f"W9/scipy/{case}"), rows.get(f"W9/casteljau/{case}")
+        ratio = to_ms(ours) / to_ms(sp) if sp and ours else None
+        out.append([case, f"{to_ms(sp):.2f}" if sp else "-", f"{to_ms(ours):.2f}" if ours else "-",
+                    f"{ratio:.2f}x" if ratio is not None else "-",
+                    f"{to_ms(sp, 'cpu_time'):.2f} / {to_ms(ours, 'cpu_time'):.2f}" if sp and ours else "-",
+                    f"{to_ms(ours, 'cpu_time') / to_ms(sp, 'cpu_time'):.2f}x" if sp and ours else "-",
+                    f"{ours.get('max_rel_diff', 0):.1e}" if ours else "-"])
+        if ratio is None or case == "spline_eval_sorted":  # the sorted row is an extra, not a goal
+            continue
+        goal = W9_GOAL_PER_CALL if case == "per_call" else W9_GOAL_VECTORISED
+        diff = ours.get("max_rel_diff", 0)
+        ok = ratio <= goal and diff < W9_GOAL_REL_DIFF
+        goals.append(f"W9 {case}: casteljau / scipy = {ratio:.2f} (goal <= {goal}), max rel diff {diff:.1e} "
+                     f"(goal < {W9_GOAL_REL_DIFF:.0e}): " + ("MET" if ok else "NOT MET"))
+    text, md = table(headers, out)
+    return text, md, goals
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("build_dir")
@@ -481,6 +518,27 @@ def main():
         text_all += f"\n{title}\n{text}"
         md_all += f"\n### {title}\n\n{md}"
         goals += g
+
+    # W9: the Python package (built into BUILD_DIR/python) against scipy, by bench/w9.py.
+    if glob.glob(os.path.join(args.build_dir, "python", "casteljau", "_casteljau*.so")) and not args.filter:
+        w9_json = os.path.join(res_dir, "W9.json")
+        if os.path.exists(w9_json):
+            os.remove(w9_json)
+        print("$ bench/w9.py", file=sys.stderr, flush=True)
+        t0 = time.time()
+        subprocess.run(["/usr/bin/python3", os.path.join(os.path.dirname(os.path.abspath(__file__)), "w9.py"), args.build_dir,
+                        w9_json, "--repetitions", str(max(args.repetitions, 5))], check=False)
+        print(f"  ({time.time() - t0:.0f} s)", file=sys.stderr, flush=True)
+        if os.path.exists(w9_json):
+            with open(w9_json) as f:
+                w9_rows = {b["name"]: b for b in json.load(f)["benchmarks"]}
+            text, md, g = w9_table(w9_rows)
+            title = "W9, the Python package against scipy.interpolate (W4's spline, W5's B-spline, per call), medians of 5"
+            text_all += f"\n{title}\n{text}"
+            md_all += f"\n### {title}\n\n{md}"
+            goals += g
+    else:
+        print("run.py: the Python package is not built (or --filter given): skipping W9", file=sys.stderr)
 
     if context:
         head = (f"{context.get('host_name', '?')}: {context.get('num_cpus', '?')} CPUs at {context.get('mhz_per_cpu', '?')} MHz, "

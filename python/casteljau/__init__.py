@@ -28,11 +28,14 @@ from ._casteljau import Error
 Error.__module__ = "casteljau"
 from ._curves import Curve, Result, curve_classes, functions, run
 from . import _scipy
+from ._surfaces import Surface, surface_classes
 from ._scipy import (PPoly, CubicSpline, BSpline, make_interp_spline, PchipInterpolator, Akima1DInterpolator,
                      BarycentricInterpolator)
 
 globals().update(curve_classes)  # Bezier, RationalBezier, ..., from the registry
-globals().update(functions)  # intersect, distance, fit, subdivide, basis, render, ...
+globals().update(functions)  # intersect, distance, fit, subdivide, basis, render, surface, ...
+globals().update(surface_classes)  # BezierSurface, RationalBezierSurface, BSplineSurface, NurbsSurface
 
-__all__ = (["Curve", "Result", "Error", "run", "PPoly", "make_interp_spline", "PchipInterpolator",
-            "Akima1DInterpolator", "BarycentricInterpolator"] + sorted(curve_classes) + sorted(functions))
+__all__ = (["Curve", "Surface", "Result", "Error", "run", "PPoly", "make_interp_spline", "PchipInterpolator",
+            "Akima1DInterpolator", "BarycentricInterpolator"] + sorted(curve_classes) + sorted(surface_classes)
+           + sorted(functions))

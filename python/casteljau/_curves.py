@@ -11,8 +11,6 @@ top (evaluation, ``derivative``, ``curvature``, ``pieces``, ``project`` over man
 
 from __future__ import annotations
 
-import json
-import math
 from typing import Any
 
 import numpy as np
@@ -24,61 +22,28 @@ __all__ = ["Curve", "Result", "Error", "curve_classes", "run"]
 
 
 # ---------------------------------------------------------------------------------------
-# Python values <-> request JSON
+# Python values <-> request JSON: requests go to the compiled module as Python data (dicts,
+# lists, numbers, numpy arrays, curves), converted to the library's JSON values in C++
+# (a NaN or infinity refused there, naming its path); responses come back as Python data
+# with arrays of numbers as numpy arrays.
 
 
-def _bad(path: str, v: float) -> Error:
-    return Error(f"{path}: must be a finite number, got {v}")
-
-
-def _plain(value: Any, path: str) -> Any:
-    """value as JSON-ready Python data: numpy arrays and scalars as lists and floats, curves
-    as their curve JSON; a NaN or infinity anywhere raises Error naming its path (JSON
-    cannot carry them, and the library refuses them)."""
-    if isinstance(value, Curve):
-        return value.to_json()
-    if isinstance(value, np.ndarray):
-        if value.dtype.kind in "fc":
-            if value.dtype.kind == "c":
-                raise Error(f"{path}: must be real numbers, got a complex array")
-            if not np.isfinite(value).all():
-                idx = tuple(int(i) for i in np.argwhere(~np.isfinite(value))[0])
-                raise _bad(path + "".join(f"[{i}]" for i in idx), value[idx])
-        return value.tolist()
-    if isinstance(value, np.generic):
-        return _plain(value.item(), path)
-    if isinstance(value, float):
-        if not math.isfinite(value):
-            raise _bad(path, value)
-        return value
-    if isinstance(value, (list, tuple)):
-        return [_plain(v, f"{path}[{i}]") for i, v in enumerate(value)]
-    if isinstance(value, dict):
-        return {k: _plain(v, f"{path}.{k}" if path else k) for k, v in value.items()}
-    return value
-
-
-def _dumps(obj: dict) -> str:
-    return json.dumps(_plain(obj, ""), separators=(",", ":"))
+def _dumps(obj: Any) -> str:
+    """obj as JSON text (numpy arrays, curves and surfaces included)."""
+    return _casteljau.to_json_text(obj)
 
 
 def _arrays(value: Any) -> Any:
-    """Response JSON as Python: curve objects as curves, arrays of numbers (or of points)
-    as float64 numpy arrays, objects as Result."""
+    """Response data as Python: curve and surface objects as curves and surfaces, other
+    objects as Result (arrays of numbers already numpy arrays)."""
     if isinstance(value, dict):
-        if "type" in value and value.get("type") in _CLASSES:
+        kind = value.get("type")
+        if kind in _CLASSES:
             return Curve.from_json(value)
+        if kind in _SURFACE_CLASSES:
+            return _SURFACE_CLASSES[kind].from_json(value)
         return Result(**{k: _arrays(v) for k, v in value.items()})
     if isinstance(value, list):
-        if not value:
-            return np.empty(0, dtype=np.float64)  # no roots, no crossings: len 0 either way
-        if all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in value):
-            return np.array(value, dtype=np.float64)
-        if all(isinstance(v, list) for v in value) and all(
-            all(isinstance(x, (int, float)) and not isinstance(x, bool) for x in v) for v in value
-        ):
-            if len({len(v) for v in value}) == 1:
-                return np.array(value, dtype=np.float64)
         return [_arrays(v) for v in value]
     return value
 
@@ -117,13 +82,14 @@ def _simplify(response: dict) -> Any:
 def run(command: str, **request: Any) -> Any:
     """Runs a command of the registry on a request given as keywords (curves, arrays and
     numbers as they come); the response as Python (see Result)."""
-    return _simplify(json.loads(_casteljau.run(command, _dumps(request))))
+    return _simplify(_casteljau.run(command, request))
 
 
 # ---------------------------------------------------------------------------------------
 # The curve classes
 
 _CLASSES: dict[str, type] = {}
+_SURFACE_CLASSES: dict[str, type] = {}  # filled by _surfaces.py
 
 
 class Curve:
@@ -153,7 +119,7 @@ class Curve:
             if k in obj:
                 raise TypeError(f"{type(self).__name__}() got multiple values for argument {k!r}")
             obj[k] = v
-        self._c = _casteljau.Curve(_dumps(obj))
+        self._c = _casteljau.Curve(obj)
         self._json = None
 
     @classmethod
@@ -167,8 +133,7 @@ class Curve:
     def from_json(cls, obj: dict | str) -> "Curve":
         """The curve of a curve-JSON object (a dict or its text); on a subclass, the object
         must be of that type."""
-        text = obj if isinstance(obj, str) else _dumps(obj)
-        c = cls._wrap(_casteljau.Curve(text))
+        c = cls._wrap(_casteljau.Curve(obj))
         if cls is not Curve and not isinstance(c, cls):
             raise Error(f"type: {cls.__name__}.from_json needs a {cls._type!r} curve, got {c._c.type!r}")
         return c
@@ -176,7 +141,7 @@ class Curve:
     def to_json(self) -> dict:
         """The curve JSON as the library writes it (a dict)."""
         if self._json is None:
-            self._json = json.loads(self._c.to_json())
+            self._json = self._c.to_data()
         return self._json
 
     def __reduce__(self) -> tuple:
@@ -220,9 +185,7 @@ class Curve:
 
     def curvature(self, t: Any) -> np.ndarray | float:
         """The curvature at t (signed in 2-D): the shape of t."""
-        t = np.asarray(t, dtype=np.float64)
-        r = json.loads(self._c.run("eval", _dumps({"t": t.reshape(-1), "curvature": True}), "curve"))
-        k = np.array(r["curvature"], dtype=np.float64).reshape(t.shape)
+        k = self._c.curvature(np.asarray(t, dtype=np.float64))
         return float(k) if k.ndim == 0 else k
 
     def pieces(self) -> Result:
@@ -236,19 +199,18 @@ class Curve:
     def project(self, point: Any, farthest: bool = False) -> Result:
         """The nearest (farthest) point of the curve to point (d,), or to each row of points
         (n, d): Result(t, point, distance) with arrays of shape (n,), (n, d), (n,) (one
-        point: a number, (d,), a number). The rows run in C++ without the GIL."""
+        point: a number, (d,), a number). The rows run in C++ without the GIL, each a
+        direct call of the library's project (no JSON)."""
         pts = np.asarray(point, dtype=np.float64)
         if pts.ndim == 1:
-            return _simplify(json.loads(self._c.run("project", _dumps({"point": pts, "farthest": farthest}), "curve")))
+            return _simplify(self._c.run("project", {"point": pts, "farthest": farthest}, "curve"))
         if pts.ndim != 2:
             raise Error(f"points: must be one point (d,) or an array of points (n, d), got shape {pts.shape}")
-        rows = json.loads(self._c.run_each("project", _dumps({"farthest": farthest}), "curve", "point", "points", pts))
-        # t, point and distance per row (all_t and intervals, present on ties only, are left
-        # out here: project one point to see them).
-        d = self.dim
-        return Result(t=np.array([r["t"] for r in rows], dtype=np.float64),
-                      point=np.array([r["point"] for r in rows], dtype=np.float64).reshape(len(rows), d),
-                      distance=np.array([r["distance"] for r in rows], dtype=np.float64))
+        # t, point and distance per row, by the library's project called on each row (all_t
+        # and intervals, present on ties only, are left out here: project one point to see
+        # them).
+        t, p, d = self._c.project_rows(pts, bool(farthest))
+        return Result(t=t, point=p, distance=d)
 
 
 def _hodograph(c: Curve) -> Curve:
@@ -291,7 +253,7 @@ def _command_method(name: str, summary: str, fields: list) -> Any:
             if k not in params:
                 raise TypeError(f"{name}() got an unexpected keyword argument {k!r} (fields: {', '.join(params)})")
             req[k] = v
-        return _simplify(json.loads(self._c.run(name, _dumps(req), "curve")))
+        return _simplify(self._c.run(name, req, "curve"))
 
     method.__name__ = name
     method.__qualname__ = f"Curve.{name}"
@@ -321,7 +283,7 @@ def _command_function(name: str, summary: str, fields: list) -> Any:
             if k not in params:
                 raise TypeError(f"{name}() got an unexpected keyword argument {k!r} (fields: {', '.join(params)})")
             req[k] = v
-        return _simplify(json.loads(_casteljau.run(name, _dumps(req))))
+        return _simplify(_casteljau.run(name, req))
 
     function.__name__ = name
     function.__qualname__ = name

@@ -9,7 +9,6 @@ name the arguments as scipy's callers write them (``x[3]``, ``y[2]``, ``t[3]``, 
 
 from __future__ import annotations
 
-import json
 import math
 import re
 from typing import Any
@@ -18,7 +17,7 @@ import numpy as np
 
 from . import _casteljau
 from ._casteljau import Error
-from ._curves import _CLASSES, Curve, _dumps, curve_classes
+from ._curves import _CLASSES, Curve, curve_classes
 
 __all__ = ["PPoly", "CubicSpline", "BSpline", "make_interp_spline", "PchipInterpolator",
            "Akima1DInterpolator", "BarycentricInterpolator"]
@@ -50,8 +49,9 @@ def _data(y: Any, axis: int, name: str) -> tuple[np.ndarray, tuple]:
     tail = y.shape[1:]
     m = math.prod(tail)
     if m > _casteljau.max_dimension or m == 0:
-        raise Error(f"{name}: values of shape {tail} ({m} numbers per point) are not supported yet: "
-                    f"at most {_casteljau.max_dimension} numbers per point")
+        raise Error(f"{name}: values of shape {tail} ({m} numbers per point) are not supported: the library's "
+                    f"curves have 1 to {_casteljau.max_dimension} coordinates (interpolate the columns in groups of "
+                    f"at most {_casteljau.max_dimension})")
     return y.reshape(len(y), m), tail
 
 
@@ -243,7 +243,7 @@ def _bc(bc_type: Any, m: int) -> dict:
         raise Error(f"bc_type: unknown boundary condition {bc_type!r} (not-a-knot, natural, clamped, periodic, "
                     "or a pair of them or of (order, value))")
     if isinstance(bc_type, (tuple, list)) and len(bc_type) == 2:
-        if bc_type[0] == bc_type[1] and isinstance(bc_type[0], str):
+        if isinstance(bc_type[0], str) and isinstance(bc_type[1], str) and bc_type[0] == bc_type[1]:
             return _bc(bc_type[0], m)
         ends = {}
         for side, b in zip(("start", "end"), bc_type):
@@ -252,7 +252,8 @@ def _bc(bc_type: Any, m: int) -> dict:
             elif b == "clamped":
                 b = (1, 0.0)
             elif isinstance(b, str):
-                raise Error(f"bc_type: {b!r} at one end only is not supported yet (natural, clamped or (order, value))")
+                raise Error(f"bc_type: {b!r} at one end only is not supported (natural, clamped, not-a-knot or "
+                            "(order, value))")
             order, value = b
             v = np.broadcast_to(np.asarray(value, dtype=np.float64).reshape(-1), (m,))
             ends[side] = {"order": order, "value": v}
@@ -291,14 +292,46 @@ def _cubic_init(self: Any, *args: Any, **kw: Any) -> None:
     extrapolate = a.get("extrapolate")
     if extrapolate is None:
         extrapolate = "periodic" if bc == "periodic" else True
+    x = np.asarray(a["x"], dtype=np.float64)
     try:
-        _CUBIC_BASE.__init__(self, params=np.asarray(a["x"], dtype=np.float64), points=pts, **_bc(bc, pts.shape[1]))
+        if isinstance(bc, (tuple, list)) and len(bc) == 2 and sum(isinstance(b, str) and b == "not-a-knot"
+                                                                    for b in bc) == 1:
+            bc = _one_not_a_knot(x, pts, bc)
+        _CUBIC_BASE.__init__(self, params=x, points=pts, **_bc(bc, pts.shape[1]))
     except Error as e:
         raise _renamed(e, {"params": "x", "points": "y", "boundary": "bc_type", "start_derivative": "bc_type",
                            "end_derivative": "bc_type"}, tail == ()) from None
     self._sp = PPoly(Curve._wrap(self._c), tail, extrapolate)
     self.x = np.asarray(a["x"], dtype=np.float64)
     self.axis = a.get("axis", 0)
+
+
+def _one_not_a_knot(x: np.ndarray, pts: np.ndarray, bc: Any) -> tuple:
+    """scipy's bc_type with 'not-a-knot' at one end only, as a pair without it: that end's
+    first derivative s. The spline is affine in s, and so is the jump of its third
+    derivative at the knot next to that end, which not-a-knot sets to 0: two splines (s = 0
+    and s = 1, the other end as given) give the jump's two values, and s the root of the
+    line through them (per coordinate: they do not mix). Two points: the chord's slope
+    (scipy's rule)."""
+    side = 0 if bc[0] == "not-a-knot" else 1
+    other = bc[1 - side]
+    m = pts.shape[1]
+    if len(x) < 2 or len(pts) != len(x):
+        return bc  # the library's own error names the arguments
+    if len(x) == 2:
+        slope = (pts[1] - pts[0]) / (x[1] - x[0])
+        ends = [(1, slope), other] if side == 0 else [other, (1, slope)]
+        return tuple(ends)
+    jumps = []
+    for s in (np.zeros(m), np.ones(m)):
+        ends = [(1, s), other] if side == 0 else [other, (1, s)]
+        trial = _CUBIC_BASE(params=x, points=pts, **_bc(tuple(ends), m))
+        c = PPoly(Curve._wrap(trial._c), (m,)).c  # (4, pieces, m): c[0] the cubic coefficients
+        jumps.append(c[0, 1] - c[0, 0] if side == 0 else c[0, -1] - c[0, -2])
+    j0, j1 = jumps
+    slope = -j0 / (j1 - j0)
+    ends = [(1, slope), other] if side == 0 else [other, (1, slope)]
+    return tuple(ends)
 
 
 def _ppoly_c(self: Any) -> np.ndarray:
@@ -351,7 +384,31 @@ def _bspline_init(self: Any, *args: Any, **kw: Any) -> None:
     ext = a.get("extrapolate", True)
     self._sp = PPoly(Curve._wrap(self._c), tail, ext)
     self.t, self.c, self.k = t, np.asarray(a["c"], dtype=np.float64), int(k)
+    self.axis = a.get("axis", 0)
     self.extrapolate = ext
+
+
+def _bspline_derivative(self: Any, nu: int = 1) -> Any:
+    """scipy's BSpline.derivative: a BSpline of degree k - nu on t[nu:-nu] (made the
+    library's way: the derivative curve). The coefficients by the B-spline derivative
+    formula [PT97, (3.4)]: c'_i = k (c_(i+1) - c_i) / (t_(i+k+1) - t_(i+1)), 0 where the
+    knots coincide (that basis function is 0)."""
+    if self._sp is None:
+        return Curve.derivative(self, nu)
+    if isinstance(nu, bool) or not isinstance(nu, (int, np.integer)) or nu < 0:
+        raise Error(f"nu: must be an integer >= 0, got {nu!r}")
+    if nu > self.k:
+        raise Error(f"nu: the order of the derivative must be <= k = {self.k}, got {nu}")
+    t, k = self.t, self.k
+    n = len(t) - k - 1
+    c = np.moveaxis(np.asarray(self.c, dtype=np.float64), self.axis, 0)[:n]
+    for _ in range(nu):
+        dt = t[k + 1 : k + len(c)] - t[1 : len(c)]
+        dt = dt.reshape((-1,) + (1,) * (c.ndim - 1))
+        safe = np.where(dt > 0, dt, 1.0)
+        c = np.where(dt > 0, k * (c[1:] - c[:-1]) / safe, 0.0)
+        t, k = t[1:-1], k - 1
+    return BSpline(t, c, k, extrapolate=self.extrapolate)
 
 
 BSpline = _subclass("bspline", _ScipyCurve, _bspline_init, """A B-spline.
@@ -363,45 +420,123 @@ library's ``BSpline(degree=, knots=, points=)`` returns points of shape (..., d)
 >>> b = casteljau.BSpline([0, 0, 0, 1, 1, 1], [0.0, 1.0, 0.0], 2)
 >>> float(b(0.5))
 0.5
-""")
+>>> type(b.derivative()).__name__, b.derivative().k  # a BSpline, as scipy's
+('BSpline', 1)
+""", {"derivative": _bspline_derivative})
+
+
+def _end_derivatives(b: Any, m: int, side: str) -> list:
+    """One end of make_interp_spline's bc_type as [(order, value (m,)), ...]."""
+    if b is None:
+        return []
+    if isinstance(b, str):
+        if b == "clamped":
+            return [(1, np.zeros(m))]
+        if b == "natural":
+            return [(2, np.zeros(m))]
+        raise Error(f"bc_type: unknown end condition {b!r} at the {side} ('clamped', 'natural', None or "
+                    "[(order, value), ...])")
+    out = []
+    for item in b:
+        order, value = item
+        if not isinstance(order, (int, np.integer)) or order < 1:
+            raise Error(f"bc_type: the derivative order at the {side} must be an integer >= 1, got {order!r}")
+        v = np.broadcast_to(np.asarray(value, dtype=np.float64).reshape(-1), (m,))
+        if not np.isfinite(v).all():
+            raise Error(f"bc_type: the derivative value at the {side} must be finite, got {value!r}")
+        out.append((int(order), v))
+    return out
 
 
 def make_interp_spline(x: Any, y: Any, k: int = 3, t: Any = None, bc_type: Any = None, axis: int = 0) -> Any:
-    """scipy's interpolating B-spline of degree k (without t: the knots scipy chooses), the
-    collocation matrix from the registry's basis command, solved by numpy."""
-    if bc_type is not None:
-        raise Error("bc_type: only None (scipy's default, not-a-knot) is supported yet")
+    """scipy's interpolating B-spline of degree k (without t: the knots scipy chooses; with
+    bc_type: scipy's (deriv_l, deriv_r) end derivatives, 'clamped' or 'natural'), the
+    collocation matrix (and the end rows) from the registry's basis command, solved by
+    numpy.
+
+    >>> import numpy as np, casteljau
+    >>> b = casteljau.make_interp_spline(np.arange(6.0), np.arange(6.0) ** 2, k=3, bc_type="natural")
+    >>> type(b).__name__, b.k
+    ('BSpline', 3)
+    """
     x = np.asarray(x, dtype=np.float64)
     pts, tail = _data(y, axis, "y")
-    if not isinstance(k, (int, np.integer)) or k < 0:
+    if isinstance(k, bool) or not isinstance(k, (int, np.integer)) or k < 0:
         raise Error(f"k: must be an integer >= 0, got {k!r}")
+    k = int(k)
+    if len(x) != len(pts):
+        raise Error(f"x: {len(x)} values but y has {len(pts)}")
+    m = pts.shape[1]
+    if bc_type is None or bc_type == "not-a-knot":
+        deriv_l, deriv_r = [], []
+    elif isinstance(bc_type, str):
+        if bc_type == "periodic":
+            raise Error("bc_type: 'periodic' is not supported yet")
+        deriv_l = _end_derivatives(bc_type, m, "start")
+        deriv_r = _end_derivatives(bc_type, m, "end")
+    else:
+        if len(bc_type) != 2:
+            raise Error(f"bc_type: must be a string or a pair (start, end), got {bc_type!r}")
+        deriv_l = _end_derivatives(bc_type[0], m, "start")
+        deriv_r = _end_derivatives(bc_type[1], m, "end")
+    if k == 0:
+        # scipy's knots are x and x[-1] again: the value y[i] on [x[i], x[i + 1]) and y[-1]
+        # from x[-1] on. The library refuses an end knot repeated past degree + 1, so the
+        # same function is made on the knots x and one more beyond x[-1] (the domain's end
+        # kept at x[-1] for extrapolate=False), then given scipy's t and c.
+        if t is not None or deriv_l or deriv_r:
+            raise Error("k: 0 takes neither t nor bc_type (scipy's rule)")
+        if len(x) < 2:
+            raise Error("x: needs at least 2 points")
+        last = x[-1] + (x[-1] - x[-2]) if x[-1] > x[-2] else x[-1] + 1.0
+        y0 = np.asarray(y, dtype=np.float64)
+        b = BSpline(np.r_[x, last], np.moveaxis(y0, axis, 0), 0)
+        b._sp._hi = float(x[-1])
+        b.t = np.r_[x, x[-1]]
+        return b
     if t is None:
-        # scipy's choices: k = 2 the midpoints without the first and last, odd k not-a-knot
-        # (the data's sites without (k - 1) / 2 at each end).
-        if k == 0:
-            # scipy's knots x and x[-1] repeat the last knot twice, which the library's
-            # bspline refuses at degree 0 (an end knot at most p + 1 times).
-            raise Error("k: 0 is not supported yet (scipy's knots repeat the last point)")
-        if k == 2:
+        if deriv_l or deriv_r:
+            # scipy's knots with end derivatives: x with k more copies of each end.
+            t = np.r_[(x[0],) * k, x, (x[-1],) * k]
+        elif k == 2:
+            # scipy's choices: k = 2 the midpoints without the first and last, odd k
+            # not-a-knot (the data's sites without (k - 1) / 2 at each end).
             mid = (x[1:] + x[:-1]) / 2
             t = np.r_[(x[0],) * 3, mid[1:-1], (x[-1],) * 3]
         elif k % 2 == 1:
-            m = (k - 1) // 2
-            t = np.r_[(x[0],) * (k + 1), x[m + 1 : len(x) - m - 1], (x[-1],) * (k + 1)]
+            h = (k - 1) // 2
+            t = np.r_[(x[0],) * (k + 1), x[h + 1 : len(x) - h - 1], (x[-1],) * (k + 1)]
         else:
-            raise Error(f"k: even degrees above 2 need t (got {k})")
+            # scipy 1.10 refuses these too (its not-a-knot knots are for odd degrees).
+            raise Error(f"k: even degrees above 2 need t or bc_type (odd degree for not-a-knot knots), got {k}")
+    if len(deriv_l) + len(deriv_r) != len(np.asarray(t)) - k - 1 - len(x):
+        raise Error(f"bc_type: {len(deriv_l)} + {len(deriv_r)} end derivatives given, the knots need "
+                    f"{len(np.asarray(t)) - k - 1 - len(x)}")
     t = np.asarray(t, dtype=np.float64)
-    if len(x) != len(pts):
-        raise Error(f"x: {len(x)} values but y has {len(pts)}")
+    nt = len(t) - k - 1
+    rows, rhs = [], []
+    order = max([0] + [o for o, _ in deriv_l + deriv_r])
     try:
-        A = _casteljau.run("basis", _dumps({"kind": "bspline", "degree": int(k), "knots": t, "t": x}))
+        b = _casteljau.run("basis", {"kind": "bspline", "degree": int(k), "knots": t, "t": np.r_[x[:1], x, x[-1:]],
+                                     "derivatives": order})
     except Error as e:
         raise _renamed(e, {"knots": "t", "t": "x", "degree": "k"}, False) from None
-    A = np.array(json.loads(A)["values"], dtype=np.float64)
-    if A.shape != (len(x), len(x)):
-        raise Error(f"t: {len(t)} knots give {A.shape[1]} basis functions for {len(x)} points")
-    c = np.linalg.solve(A, pts)
-    return BSpline(t, c.reshape((len(c),) + tail), int(k))
+    tables = [np.atleast_2d(b["values"])] + [np.atleast_2d(d) for d in b.get("derivatives", [])]
+    # The rows of scipy's system: derivatives at x[0], the data, derivatives at x[-1].
+    for o, v in deriv_l:
+        rows.append(tables[o][0])
+        rhs.append(v)
+    rows.extend(tables[0][1:-1])
+    rhs.extend(pts)
+    for o, v in deriv_r:
+        rows.append(tables[o][-1])
+        rhs.append(v)
+    A = np.array(rows, dtype=np.float64)
+    if A.shape != (nt, nt):
+        raise Error(f"t: {len(t)} knots give {nt} basis functions for {len(x)} points and "
+                    f"{len(deriv_l) + len(deriv_r)} end conditions")
+    c = np.linalg.solve(A, np.array(rhs, dtype=np.float64).reshape(nt, -1))
+    return BSpline(t, c.reshape((nt,) + tail), int(k), axis=0)
 
 
 def _hermite_interpolator(rule: str, default_extrapolate: bool, name: str) -> type:

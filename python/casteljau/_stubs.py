@@ -78,6 +78,32 @@ def stub_text() -> str:
         if class_name in ("CubicSpline", "BSpline"):
             lines.append("    # Also scipy's positional form: see casteljau._scipy.")
         lines.append("")
+    lines += [
+        "class Surface:",
+        "    @property",
+        "    def dim(self) -> int: ...",
+        "    @property",
+        "    def domain(self) -> tuple[tuple[float, float], tuple[float, float]]: ...",
+        "    @classmethod",
+        "    def from_json(cls, obj: dict | str) -> Surface: ...",
+        "    def to_json(self) -> dict: ...",
+        "    def __call__(self, u: ArrayLike, v: ArrayLike, grid: bool = False) -> np.ndarray: ...",
+    ]
+    seen = set()
+    surface_methods = [(n, f, "surface") for n, _, f in _casteljau.surface_forms()]
+    surface_methods += [(n, f, f[0][0]) for n, _, f in _casteljau.commands() if f and f[0][1] == "surface"]
+    for name, fields, skip in surface_methods:
+        if name in seen:
+            continue
+        seen.add(name)
+        params = _params(fields, skip=skip)
+        lines.append(f"    def {name}(self{', ' if params else ''}{params}) -> Any: ...")
+    lines.append("")
+    from ._surfaces import _class_name  # the same names as the package's classes
+
+    for json_name, fields in _casteljau.surface_types():
+        params = ", ".join(f"{f}: Any = ..." for f in fields if f != "type")
+        lines += [f"class {_class_name(json_name)}(Surface):", f"    def __init__(self, {params}) -> None: ...", ""]
     lines += functions
     lines += [
         "",

@@ -242,3 +242,56 @@ def test_two_threads_evaluate_at_once():
         th.join()
     for r in results:
         np.testing.assert_array_equal(r, expected)
+
+
+def test_batch_evaluation_matches_point_by_point():
+    # The batch path (the library's SpanTable, Hermite and NURBS members) against the same
+    # curve evaluated one parameter at a time and against closed forms; sorted and
+    # shuffled parameters give the same bits.
+    rng = np.random.default_rng(9)
+    t = np.r_[rng.random(997) * 1.4 - 0.2, 0.0, 0.5, 1.0]  # outside the domain too, and at breaks
+    b = casteljau.BSpline(degree=2, knots=[0, 0, 0, 0.5, 1, 1, 1], points=[[0, 0], [0.5, 1], [1.5, 1], [2, 0]])
+    c = casteljau.Bezier(PARABOLA)
+    s = casteljau.CubicSpline(params=np.linspace(0, 1, 40), points=rng.random((40, 3)), boundary="natural")
+    n = casteljau.Curve.from_json({"type": "circle", "center": [0, 0], "radius": 1})
+    for curve in (b, c, s, n):
+        u = np.linspace(*curve.domain, 1000) if curve is n else t
+        many = curve(u)
+        one = np.array([curve(x) for x in u[:50]])
+        np.testing.assert_array_equal(many[:50], one)
+        order = np.argsort(u)
+        np.testing.assert_array_equal(curve(u[order]), many[order])
+    # The parabola in power form (a few roundings of numbers of size 1).
+    np.testing.assert_allclose(c(t), parabola(t), rtol=0, atol=8 * EPS)
+    # The circle's points at distance 1 from its centre.
+    np.testing.assert_allclose(np.linalg.norm(n(np.linspace(*n.domain, 1000)), axis=1), 1, rtol=0, atol=4 * EPS)
+    big = np.full(500, 0.5)
+    big[321] = np.inf
+    with pytest.raises(casteljau.Error, match=r"^t\[321\]: "):
+        s(big)
+
+
+def test_project_rows_are_the_single_point_project():
+    rng = np.random.default_rng(11)
+    c = casteljau.Bezier([[0, 0], [1, 2], [3, -1], [4, 1]])
+    pts = rng.random((40, 2)) * 4
+    r = c.project(pts)
+    for i in (0, 17, 39):
+        one = c.project(pts[i])
+        assert r.t[i] == one.t and r.distance[i] == one.distance
+        np.testing.assert_array_equal(r.point[i], one.point)
+    with pytest.raises(casteljau.Error, match=r"^points: must be an array of shape \(n, 2\)"):
+        c.project(np.zeros((3, 3)))
+
+
+def test_requests_and_responses_are_python_data():
+    import json
+
+    c = casteljau.Bezier(np.array(PARABOLA))
+    assert json.loads(json.dumps(c.to_json())) == c.to_json()  # lists and numbers, JSON-ready
+    poly = c.flatten(0.01)
+    assert isinstance(poly, np.ndarray) and poly.dtype == np.float64 and poly.shape[1] == 2
+    with pytest.raises(TypeError, match=r"^points: a set is not JSON data"):
+        casteljau.Bezier({1, 2})
+    with pytest.raises(casteljau.Error, match=r"^points\[2\]\[0\]: must be a finite number, got -inf"):
+        casteljau.Polyline(np.array([[0, 0], [1, 1], [-np.inf, 2]]))

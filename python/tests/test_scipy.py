@@ -118,3 +118,71 @@ def test_errors_name_scipys_arguments():
         casteljau.CubicSpline(X, Y, bc_type="nonsense")
     with pytest.raises(ValueError):  # the same exception class scipy's callers catch
         casteljau.PchipInterpolator([0, 0, 1], [1, 2, 3])
+
+
+@pytest.mark.parametrize("bc", [("not-a-knot", (1, 0.5)), ((2, -1.0), "not-a-knot"), ("natural", "not-a-knot"),
+                                ("not-a-knot", "clamped")])
+def test_cubic_spline_not_a_knot_at_one_end(bc):
+    ours, theirs = casteljau.CubicSpline(X, Y, bc_type=bc), si.CubicSpline(X, Y, bc_type=bc)
+    for nu in range(3):
+        close(ours(XS, nu), theirs(XS, nu))
+    # Vector data (scipy wants a value per coordinate) and two points (scipy: the chord's
+    # slope at the not-a-knot end).
+    Y2 = RNG.random((9, 3))
+    bc2 = tuple((b[0], np.full(3, b[1])) if isinstance(b, tuple) else b for b in bc)
+    close(casteljau.CubicSpline(X, Y2, bc_type=bc2)(XS), si.CubicSpline(X, Y2, bc_type=bc2)(XS))
+    close(casteljau.CubicSpline(X[:2], Y[:2], bc_type=bc)(XS), si.CubicSpline(X[:2], Y[:2], bc_type=bc)(XS))
+
+
+def test_make_interp_spline_degree_0_and_end_conditions():
+    ours, theirs = casteljau.make_interp_spline(X, Y, k=0), si.make_interp_spline(X, Y, k=0)
+    # Outside, at every data site (the right piece answers) and between them.
+    for xs in (XS, X):
+        close(ours(xs), theirs(xs))
+    close(ours.t, theirs.t, rel=0)
+    close(ours.c, theirs.c, rel=0)
+    for k, bc in ((3, "natural"), (3, "clamped"), (3, ([(1, 2.0)], [(2, -0.5)])), (2, ([(1, 0.3)], None)),
+                  (5, ([(1, 0.0), (2, 1.0)], [(1, -1.0), (2, 0.0)])), (4, ([(1, 0.0), (2, 0.0)], [(1, 0.0)]))):
+        ours, theirs = casteljau.make_interp_spline(X, Y, k=k, bc_type=bc), si.make_interp_spline(X, Y, k=k, bc_type=bc)
+        close(ours(XS), theirs(XS))
+        close(ours.t, theirs.t, rel=0)
+        close(ours.c, theirs.c)
+    Y2 = RNG.random((9, 2))
+    close(casteljau.make_interp_spline(X, Y2, k=3, bc_type="natural")(XS),
+          si.make_interp_spline(X, Y2, k=3, bc_type="natural")(XS))
+    # Even degrees above 2 without knots or end conditions: scipy 1.10 refuses them, so do we.
+    with pytest.raises(ValueError):
+        si.make_interp_spline(X, Y, k=4)
+    with pytest.raises(casteljau.Error, match=r"^k: even degrees above 2"):
+        casteljau.make_interp_spline(X, Y, k=4)
+    with pytest.raises(casteljau.Error, match=r"^bc_type: 1 \+ 1 end derivatives given, the knots need 3"):
+        casteljau.make_interp_spline(X, Y, k=4, bc_type="natural")
+
+
+def test_derivatives_have_scipys_types():
+    t = np.r_[0, 0, 0, 0, 1, 2.5, 3, 4, 4, 4, 4]
+    c = RNG.random((7, 2))
+    ours, theirs = casteljau.BSpline(t, c, 3), si.BSpline(t, c, 3)
+    for nu in (1, 2, 3):
+        d, e = ours.derivative(nu), theirs.derivative(nu)
+        assert isinstance(d, casteljau.BSpline) and isinstance(e, si.BSpline)
+        assert d.k == e.k
+        close(d.t, e.t, rel=0)
+        n = len(e.t) - e.k - 1  # scipy pads c with zeros to len(t); the coefficients in use
+        close(d.c[:n], e.c[:n])
+        xs = np.linspace(-0.5, 4.5, 41)
+        close(d(xs), e(xs))
+    s, u = casteljau.CubicSpline(X, Y), si.CubicSpline(X, Y)
+    d, e = s.derivative(), u.derivative()
+    assert isinstance(d, casteljau.PPoly) and isinstance(e, si.PPoly)  # scipy's PPoly, ours PPoly-like
+    close(d.x, e.x, rel=0)
+    close(d.c, e.c)
+    close(d.derivative()(XS), e.derivative()(XS))
+
+
+def test_more_than_four_values_per_point_are_refused():
+    # The library's curves have dimension 1..4: five values per point raise, naming y.
+    with pytest.raises(casteljau.Error, match=r"^y: values of shape \(5,\) \(5 numbers per point\)"):
+        casteljau.CubicSpline(X, RNG.random((9, 5)))
+    with pytest.raises(casteljau.Error, match=r"^c: values of shape \(2, 3\)"):
+        casteljau.BSpline(np.r_[0, 0, 1, 2, 2], RNG.random((3, 2, 3)), 1)

@@ -16,6 +16,7 @@
 
 #include "casteljau/curves/conics.hpp"
 #include "casteljau/curves/parametrization.hpp"
+#include "casteljau/io/arrays.hpp"
 #include "casteljau/io/json.hpp"
 #include "text.hpp"
 
@@ -765,6 +766,20 @@ OrderedJson Format<Path>::write(const Path<double, D>& c) {
 }  // namespace
 
 AnyCurve curve_from_json(const Json& j) { return read_curve_object(j); }
+
+AnyCurve cubic_spline_from_arrays(std::span<const double> params, const double* points, int d, std::string_view boundary) {
+  if (boundary != "natural" && boundary != "not-a-knot" && boundary != "periodic") {
+    throw InvalidArgument("boundary", "must be natural, not-a-knot or periodic here, got " + io::quoted(std::string(boundary)));
+  }
+  return dispatch_dimension(d, [&]<int D>() {
+    using B = SplineBoundary<double, D>;
+    std::vector<Point<double, D>> P(params.size());
+    for (std::size_t i = 0; i < P.size(); ++i)
+      for (int k = 0; k < D; ++k) P[i][k] = points[i * D + static_cast<std::size_t>(k)];
+    const B bc = boundary == "natural" ? B::natural() : boundary == "periodic" ? B::periodic() : B::not_a_knot();
+    return AnyCurve(CubicSpline<double, D>(std::vector<double>(params.begin(), params.end()), std::move(P), bc));
+  });
+}
 
 std::span<const CurveTypeInfo> curve_types() {
   static const std::vector<CurveTypeInfo> types = [] {

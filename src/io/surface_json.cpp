@@ -1,10 +1,13 @@
 // The surface registry (io/surfaces.hpp): one entry per surface type (its name, whether
 // it is rational, whether it is a Bézier kind), surface JSON read and written, and curves
 // as run-time B-spline forms for the constructions.
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <string>
 #include <vector>
 
+#include "casteljau/io/arrays.hpp"
 #include "casteljau/io/ops.hpp"
 #include "casteljau/io/surfaces.hpp"
 #include "text.hpp"
@@ -30,6 +33,17 @@ constexpr SurfaceEntry entries[] = {
     {SurfaceKind::nurbs, "nurbs_surface", true, false},
 };
 constexpr std::string_view names[] = {"bezier_surface", "rational_bezier_surface", "bspline_surface", "nurbs_surface"};
+// The fields of each type's surface JSON, in the order the reader lists them (type,
+// points, degree, dim, then weights when rational, knots when not Bezier): the reader's
+// allow-list and surface_types() alike.
+constexpr std::string_view bezier_fields[] = {"type", "points", "degree", "dim"};
+constexpr std::string_view rational_bezier_fields[] = {"type", "points", "degree", "dim", "weights"};
+constexpr std::string_view bspline_fields[] = {"type", "points", "degree", "dim", "knots"};
+constexpr std::string_view nurbs_fields[] = {"type", "points", "degree", "dim", "weights", "knots"};
+constexpr SurfaceTypeInfo type_infos[] = {{SurfaceKind::bezier, names[0], bezier_fields},
+                                          {SurfaceKind::rational_bezier, names[1], rational_bezier_fields},
+                                          {SurfaceKind::bspline, names[2], bspline_fields},
+                                          {SurfaceKind::nurbs, names[3], nurbs_fields}};
 
 const SurfaceEntry& entry(SurfaceKind k) {
   for (const auto& e : entries)
@@ -115,6 +129,19 @@ std::array<int, 2> read_pair(const Json& j, const char* name) {
 
 std::string_view type_name(SurfaceKind k) { return entry(k).name; }
 std::span<const std::string_view> surface_type_names() { return names; }
+std::span<const SurfaceTypeInfo> surface_types() { return type_infos; }
+
+void surface_points(const AnySurface& s, const double* u, const double* v, std::size_t n, double* out) {
+  const std::size_t d = s.form.cartesian();
+  for (std::size_t j = 0; j < n; ++j) {
+    if (!std::isfinite(u[j]) || !std::isfinite(v[j])) {
+      throw InvalidArgument("u[" + std::to_string(j) + "]", "the parameter pair (" + casteljau::detail::format_number(u[j]) + ", " +
+                                                                 casteljau::detail::format_number(v[j]) + ") is not finite");
+    }
+    const std::vector<double> x = casteljau::detail::point(s.form, u[j], v[j]);
+    std::copy(x.begin(), x.end(), out + j * d);
+  }
+}
 
 AnySurface make_surface(SurfaceKind kind, casteljau::detail::SurfaceForm<double> f) {
   const SurfaceEntry& e = entry(kind);
@@ -138,10 +165,10 @@ AnySurface surface_from_json(const Json& j) {
   for (const auto& x : entries)
     if (x.name == type) e = &x;
   if (!e) throw InvalidArgument("type", "unknown surface type " + io::quoted(type) + " (" + detail::join(std::span<const std::string_view>(names)) + ")");
-  std::vector<std::string_view> allowed{"type", "points", "degree", "dim"};
-  if (e->rational) allowed.push_back("weights");
-  if (!e->bezier) allowed.push_back("knots");
-  f.allow_only(allowed, "a " + type);
+  std::span<const std::string_view> fields;
+  for (const auto& t : type_infos)
+    if (t.kind == e->kind) fields = t.fields;
+  f.allow_only(fields, "a " + type);
   std::optional<int> dim;
   if (const Json* dj = f.optional("dim")) {
     dim = integer_from_json(*dj, "dim");

@@ -33,6 +33,17 @@ struct AnySurface {
 [[nodiscard]] std::string_view type_name(SurfaceKind k);
 [[nodiscard]] std::span<const std::string_view> surface_type_names();
 
+/// One registered surface type as the bindings see it: its kind, surface-JSON name and the
+/// fields of its object ("type" first, in the order the reader lists them; the Python
+/// constructor's arguments).
+struct SurfaceTypeInfo {
+  SurfaceKind kind;
+  std::string_view name;
+  std::span<const std::string_view> fields;
+};
+/// Every registered surface type (the reader checks surface JSON against the same lists).
+[[nodiscard]] std::span<const SurfaceTypeInfo> surface_types();
+
 /// The surface of a form of the kind (rationality must agree; a Bézier kind's knots are
 /// put on [0, 1]); checked, errors naming the grid.
 [[nodiscard]] AnySurface make_surface(SurfaceKind kind, casteljau::detail::SurfaceForm<double> form);

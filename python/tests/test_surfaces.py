@@ -1,0 +1,134 @@
+"""The surface classes: generated from the registry, evaluation on arrays (scattered and
+grids), JSON and pickling, the commands as methods, the constructions. Expected values are
+closed forms computed here."""
+
+import math
+import pickle
+
+import numpy as np
+import pytest
+
+import casteljau
+from casteljau import _casteljau
+
+# Round-off of a few operations on numbers of size 1.
+EPS = 1e-14
+
+# The bilinear patch S(u, v) = (u, v, u v) (corners (0,0,0), (0,1,0), (1,0,0), (1,1,1)).
+SADDLE = [[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]]
+
+
+def saddle(u, v):
+    u, v = np.broadcast_arrays(np.asarray(u, float), np.asarray(v, float))
+    return np.stack([u, v, u * v], axis=-1)
+
+
+def test_one_class_per_registry_type():
+    names = {name for name, _ in _casteljau.surface_types()}
+    assert names == {"bezier_surface", "rational_bezier_surface", "bspline_surface", "nurbs_surface"}
+    for json_name, fields in _casteljau.surface_types():
+        cls = next(c for c in casteljau.surface_classes.values() if c._type == json_name)
+        assert issubclass(cls, casteljau.Surface)
+        assert cls._fields == tuple(f for f in fields if f != "type")
+    assert {"BezierSurface", "RationalBezierSurface", "BSplineSurface", "NurbsSurface"} == set(casteljau.surface_classes)
+    # The reader refuses a field outside the listed ones, naming them.
+    with pytest.raises(casteljau.Error, match="knots"):
+        casteljau.BezierSurface.from_json({"type": "bezier_surface", "points": SADDLE, "knots": [[0, 1], [0, 1]]})
+
+
+def test_evaluate_scattered_and_grid():
+    s = casteljau.BezierSurface(SADDLE)
+    assert s.dim == 3 and s.domain == ((0.0, 1.0), (0.0, 1.0))
+    np.testing.assert_allclose(s(0.25, 0.5), saddle(0.25, 0.5), rtol=0, atol=EPS)
+    assert s(0.25, 0.5).shape == (3,)
+    u = np.random.default_rng(1).random((4, 5))
+    v = np.random.default_rng(2).random((4, 5))
+    out = s(u, v)
+    assert out.shape == (4, 5, 3) and out.flags.c_contiguous
+    np.testing.assert_allclose(out, saddle(u, v), rtol=0, atol=4 * EPS)
+    np.testing.assert_allclose(s(u, 0.5), saddle(u, 0.5), rtol=0, atol=4 * EPS)  # broadcast
+    gu, gv = np.linspace(0, 1, 3), np.linspace(-0.5, 1.5, 4)  # outside the domain: the patch continues
+    g = s(gu, gv, grid=True)
+    assert g.shape == (3, 4, 3)
+    U, V = np.meshgrid(gu, gv, indexing="ij")
+    np.testing.assert_allclose(g, saddle(U, V), rtol=0, atol=8 * EPS)
+    with pytest.raises(casteljau.Error, match=r"^u\[1\]: must be a finite number, got nan"):
+        s(np.array([0.1, np.nan]), 0.5)
+
+
+def test_json_pickle_and_classes_of_every_type():
+    b = casteljau.BSplineSurface(points=SADDLE, degree=[1, 1], knots=[[0, 0, 1, 1], [0, 0, 1, 1]])
+    assert isinstance(b, casteljau.BSplineSurface)
+    again = casteljau.Surface.from_json(b.to_json())
+    assert again == b and type(again) is casteljau.BSplineSurface
+    p = pickle.loads(pickle.dumps(b))
+    assert p == b
+    np.testing.assert_allclose(p(0.3, 0.6), saddle(0.3, 0.6), rtol=0, atol=EPS)
+    np.testing.assert_array_equal(b.degree, [1, 1])
+    # Weights all 2: the same points as the polynomial patch (w P / w).
+    r = casteljau.RationalBezierSurface(points=SADDLE, weights=[[2, 2], [2, 2]])
+    np.testing.assert_allclose(r(0.3, 0.6), saddle(0.3, 0.6), rtol=0, atol=EPS)
+    n = casteljau.NurbsSurface(points=SADDLE, weights=[[1, 1], [1, 1]], degree=[1, 1],
+                               knots=[[0, 0, 1, 1], [0, 0, 1, 1]])
+    np.testing.assert_allclose(n(0.7, 0.2), saddle(0.7, 0.2), rtol=0, atol=EPS)
+    with pytest.raises(casteljau.Error, match=r"^type: BezierSurface.from_json needs a 'bezier_surface'"):
+        casteljau.BezierSurface.from_json(b.to_json())
+    with pytest.raises(casteljau.Error, match=r"^points\[1\]\[1\]\[2\]: must be a finite number"):
+        casteljau.BezierSurface([[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, np.nan]]])
+
+
+def test_surface_commands():
+    s = casteljau.BezierSurface(SADDLE)
+    uv = np.array([[0.25, 0.5], [1.0, 0.0]])
+    r = s.eval(uv, derivatives=1, normal=True)
+    np.testing.assert_allclose(r.points, saddle(uv[:, 0], uv[:, 1]), rtol=0, atol=EPS)
+    # S_u = (1, 0, v), S_v = (0, 1, u); the unit normal (-v, -u, 1) / sqrt(1 + u^2 + v^2).
+    np.testing.assert_allclose(r.partials.u, [[1, 0, 0.5], [1, 0, 0]], rtol=0, atol=EPS)
+    np.testing.assert_allclose(r.partials.v, [[0, 1, 0.25], [0, 1, 1]], rtol=0, atol=EPS)
+    n = np.array([[-0.5, -0.25, 1], [0, -1, 1]])
+    np.testing.assert_allclose(r.normals, n / np.linalg.norm(n, axis=1, keepdims=True), rtol=0, atol=4 * EPS)
+    # Gaussian curvature of z = u v at the origin: -1 (K = -1 / (1 + u^2 + v^2)^2).
+    k = s.eval([[0.0, 0.0]], curvature=True)
+    assert k.gaussian[0] == pytest.approx(-1, abs=4 * EPS)
+    first, second = s.split("u", 0.5)
+    assert isinstance(first, casteljau.BezierSurface)
+    np.testing.assert_allclose(first(1.0, 0.5), saddle(0.5, 0.5), rtol=0, atol=EPS)
+    e = s.elevate("v", 2)
+    assert np.asarray(e.points).shape == (2, 4, 3)
+    np.testing.assert_allclose(e(0.3, 0.8), saddle(0.3, 0.8), rtol=0, atol=4 * EPS)
+    b = casteljau.BSplineSurface(points=SADDLE, degree=[1, 1], knots=[[0, 0, 1, 1], [0, 0, 1, 1]])
+    k2 = b.insert_knot("u", 0.5)
+    assert len(k2.knots[0]) == 5
+    np.testing.assert_allclose(k2(0.3, 0.8), saddle(0.3, 0.8), rtol=0, atol=4 * EPS)
+    iso = s.isocurve("u", 0.5)  # v -> S(0.5, v) = (0.5, v, v / 2)
+    assert isinstance(iso, casteljau.Bezier)
+    np.testing.assert_allclose(iso(0.4), [0.5, 0.4, 0.2], rtol=0, atol=EPS)
+    patches = k2.to_bezier()
+    assert len(patches.patches) == 2 and isinstance(patches.patches[0][0], casteljau.BezierSurface)
+    box = s.bounds()
+    np.testing.assert_allclose(box.min, [0, 0, 0], atol=1e-9)  # bounds: within 1e-9 of the size
+    np.testing.assert_allclose(box.max, [1, 1, 1], atol=1e-9)
+    # The unit square, flat: area 1 (the command's accuracy is 1e-10 relative).
+    flat = casteljau.BezierSurface([[[0, 0], [0, 1]], [[1, 0], [1, 1]]])
+    assert flat.area() == pytest.approx(1, rel=1e-10)
+
+
+def test_constructions():
+    # The unit sphere: a half circle in the xz plane turned about the z axis.
+    half = casteljau.Nurbs(degree=2, knots=[0, 0, 0, 0.5, 0.5, 1, 1, 1],
+                           points=[[0, 0, -1], [1, 0, -1], [1, 0, 0], [1, 0, 1], [0, 0, 1]],
+                           weights=[1, math.sqrt(0.5), 1, math.sqrt(0.5), 1])
+    sphere = casteljau.surface.revolve(curve=half, axis={"point": [0, 0, 0], "direction": [0, 0, 1]})
+    assert isinstance(sphere, casteljau.NurbsSurface)
+    (u0, u1), (v0, v1) = sphere.domain
+    g = sphere(np.linspace(u0, u1, 7), np.linspace(v0, v1, 9), grid=True)
+    # Every point at distance 1 from the centre (rational arcs: rounding only).
+    np.testing.assert_allclose(np.linalg.norm(g, axis=-1), 1, rtol=0, atol=1e-14)
+    # 4 pi, to the area command's 1e-10 relative.
+    assert sphere.area() == pytest.approx(4 * math.pi, rel=1e-10)
+    line = casteljau.Bezier([[0, 0, 0], [1, 0, 0]])
+    wall = casteljau.surface.extrude(curve=line, vector=[0, 0, 2])
+    np.testing.assert_allclose(wall(0.5, 0.5), [0.5, 0, 1], rtol=0, atol=EPS)
+    assert casteljau.surface("extrude", curve=line, vector=[0, 0, 2]) == wall
+    with pytest.raises(TypeError):
+        casteljau.surface.revolve(half)  # keywords only
