@@ -232,7 +232,7 @@ Response render(const Args& a) {
   const auto grow = [&](const double* p) { box.add(Point2{view.x(p), view.y(p)}); };
   std::vector<SurfaceForm<double>> forms;
   for (const auto& s : surfaces) {
-    const SurfaceForm<double> c = casteljau::detail::weighted(s.form, false);
+    const SurfaceForm<double>& c = s.form;  // Cartesian points (and weights)
     for (std::size_t i = 0; i < c.rows; ++i)
       for (std::size_t j = 0; j < c.cols; ++j) {
         double p[3] = {0, 0, 0};
@@ -257,6 +257,30 @@ Response render(const Args& a) {
     curve_points.push_back(std::move(pts));
   }
   const PageRect page{padding, padding, width - 2 * padding, height - 2 * padding};
+  // The meshes, within half a pixel of the control points' view (or the tolerance asked).
+  const double tol = tolerance > 0 ? tolerance : 0.5 * PageMap::fit(box, page).px_to_model(1.0);
+  std::vector<casteljau::detail::SurfaceMesh<double>> meshes;
+  for (std::size_t si = 0; si < forms.size(); ++si) {
+    try {
+      meshes.push_back(casteljau::detail::tessellate(forms[si], tol));
+    } catch (const InvalidArgument& e) {
+      if (e.where() == "tolerance") throw InvalidArgument("tolerance", e.problem());
+      throw e.within(a.has("surface") ? std::string("surface") : index_path("surfaces", si));
+    }
+  }
+  // The view: the meshes, the curves, and the control nets when drawn (the surfaces'
+  // own extent rather than their nets' box, which may be much larger).
+  if (!net) {
+    box = Box2{};
+    for (const auto& pts : curve_points)
+      for (const auto& p : pts) grow(p.data());
+  }
+  for (const auto& m : meshes)
+    for (std::size_t k = 0; k < m.size(); ++k) {
+      double p[3] = {0, 0, 0};
+      for (std::size_t c = 0; c < m.dim; ++c) p[c] = m.vertices[k * m.dim + c];
+      grow(p);
+    }
   const PageMap map = PageMap::fit(box, page);
   const double px = map.px_to_model(1.0);
   // Light from the upper left, somewhat towards the viewer.
@@ -274,15 +298,7 @@ Response render(const Args& a) {
   };
   for (std::size_t si = 0; si < forms.size(); ++si) {
     const SurfaceForm<double>& f = forms[si];
-    // Half a pixel by default: the facets are then invisible at this size.
-    const double tol = tolerance > 0 ? tolerance : 0.5 * px;
-    casteljau::detail::SurfaceMesh<double> m;
-    try {
-      m = casteljau::detail::tessellate(f, tol);
-    } catch (const InvalidArgument& e) {
-      if (e.where() == "tolerance") throw InvalidArgument("tolerance", e.problem());
-      throw e.within(a.has("surface") ? std::string("surface") : index_path("surfaces", si));
-    }
+    const casteljau::detail::SurfaceMesh<double>& m = meshes[si];
     const auto& base = surface_rgb[si % surface_rgb.size()];
     const auto vtx = [&](std::uint32_t k) {
       std::array<double, 3> p{0, 0, 0};
@@ -308,7 +324,7 @@ Response render(const Args& a) {
     // Isocurves: evenly spaced inside the domain, drawn just in front of the surface.
     if (isocurves > 0) {
       const double u0 = f.U[static_cast<std::size_t>(f.p)], u1 = f.U[f.rows], v0 = f.V[static_cast<std::size_t>(f.q)], v1 = f.V[f.cols];
-      const int samples = 96;
+      const int samples = 64;
       for (int dir = 0; dir < 2; ++dir)
         for (int k = 1; k <= isocurves; ++k) {
           const double c = dir == 0 ? u0 + (u1 - u0) * k / (isocurves + 1) : v0 + (v1 - v0) * k / (isocurves + 1);
@@ -322,7 +338,7 @@ Response render(const Args& a) {
         }
     }
     if (net) {
-      const SurfaceForm<double> c = casteljau::detail::weighted(f, false);
+      const SurfaceForm<double>& c = f;
       const auto cp = [&](std::size_t i, std::size_t j) {
         std::array<double, 3> p{0, 0, 0};
         for (std::size_t k = 0; k < c.cartesian(); ++k) p[k] = c.at(i, j)[k];

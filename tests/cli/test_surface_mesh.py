@@ -470,7 +470,7 @@ class RenderSurfaceTest(CliTest):
         root = self.svg({"surfaces": [s, bez], "curves": [curve], "isocurves": 4, "control_net": True})
         lines = root.findall(f".//{ns}line")
         # Nets: 2 x 4 x 3 segments of the bicubic patch, the torus' net, isocurves, the curve.
-        self.assertGreater(len(lines), 2 * 4 * 3 + 8 * 96)
+        self.assertGreater(len(lines), 2 * 4 * 3 + 8 * 64)
         self.assertGreaterEqual(len(root.findall(f".//{ns}circle")), 16)
         # Painter's order: seen from above (elevation 90), the top of the torus (z = 1)
         # is drawn after its bottom (z = -1).

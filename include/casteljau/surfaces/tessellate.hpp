@@ -55,6 +55,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
 #include <numeric>
 #include <string>
 #include <vector>
@@ -292,7 +293,9 @@ SurfaceMesh<T> tessellate(const SurfaceForm<T>& f, T tol) {
   const auto refuse_if_too_many = [&] {
     const T n = count();
     if (n > max_triangles) {
-      throw InvalidArgument("tolerance", "the tessellation would have about " + format_number(std::round(n)) +
+      char about[32];
+      std::snprintf(about, sizeof about, "%.2g", static_cast<double>(n));
+      throw InvalidArgument("tolerance", "the tessellation would have about " + std::string(about) +
                                              " triangles, more than 10^7: ask for a larger tolerance (got " + format_number(tol) + ")");
     }
   };
