@@ -33,10 +33,12 @@
 //   |S(x) - T(x)| <= (e(P - c w) + r e(w)) / w_min.
 // That one bound covers both directions (each surface point S(x) has T(x) on the mesh
 // within it, each mesh point T(x) has S(x)); a polynomial patch is the case w = 1. The
-// counts start from the patch's Cartesian net (for a polynomial patch already a valid
-// bound: a cell's differences are the patch's scaled by the step squared) and, for a
-// rational surface, every cell's own net (Bézier subdivision of the patch) is checked
-// against the bound above and the strip's count raised until all hold. A relative slack
+// counts start from the patch's Cartesian net (for a polynomial patch a valid bound: a
+// cell's differences are the patch's scaled by the step squared; it starts from 0.6 of
+// those counts, which the cells raise where they need; should they not settle, the patch
+// counts are used), and
+// every cell's own net (Bézier subdivision of the patch) is checked against the bound
+// above and the strip's count raised until all hold. A relative slack
 // of 1e-13 of the surface's size covers the rounding of the evaluation.
 //
 // Degenerate edges. A patch edge whose control points coincide (a sphere's pole, the
@@ -300,7 +302,18 @@ SurfaceMesh<T> tessellate(const SurfaceForm<T>& f, T tol) {
     }
   };
   refuse_if_too_many();
-  if (f.rational) {
+  std::vector<std::size_t> patch_nu, patch_nv;
+  bool verified = false;
+  if (!f.rational) {
+    // The patch bound holds at these counts; a cell's own net is usually well below it
+    // (the strip takes its most curved patch, the patch its most curved corner): start
+    // from 0.6 of the counts and let the cells raise them back where they need to.
+    patch_nu = nu;
+    patch_nv = nv;
+    for (auto& n : nu) n = std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(0.6 * static_cast<double>(n))));
+    for (auto& n : nv) n = std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(0.6 * static_cast<double>(n))));
+  }
+  {
     // Every cell's own net against the bound; raise the strip counts until all hold.
     for (int round = 0; round < 64; ++round) {
       std::vector<std::size_t> want_u = nu, want_v = nv;
@@ -312,7 +325,7 @@ SurfaceMesh<T> tessellate(const SurfaceForm<T>& f, T tol) {
             const Net<T> strip = tess::transpose(tess::sub_u(n, T(i) / T(nu[a]), T(i + 1) / T(nu[a])));
             for (std::size_t j = 0; j < nv[b]; ++j) {
               const Net<T> cell = tess::transpose(tess::sub_u(strip, T(j) / T(nv[b]), T(j + 1) / T(nv[b])));
-              const auto e = tess::cell_bound(cell, true);
+              const auto e = tess::cell_bound(cell, f.rational);
               if (e[0] + e[1] <= budget) continue;
               ok = false;
               // Each part's share is half the budget; raise the parts over it (as the
@@ -330,11 +343,21 @@ SurfaceMesh<T> tessellate(const SurfaceForm<T>& f, T tol) {
           }
         }
       }
-      if (ok) break;
+      if (ok) {
+        verified = true;
+        break;
+      }
       nu = want_u;
       nv = want_v;
       refuse_if_too_many();
     }
+  }
+  if (!verified) {
+    // Not settled in 64 rounds (not met in practice): a polynomial surface falls back on
+    // the patch bound's counts, which hold; a rational one is refused rather than risked.
+    if (f.rational) throw NumericalError("the tessellation's step counts did not settle (tolerance " + format_number(tol) + ")");
+    nu = patch_nu;
+    nv = patch_nv;
   }
   // Continuity across each interior break (the shared edge nets agree).
   const auto close = [&](const T* x, const T* y, std::size_t d, bool rational) {
