@@ -29,16 +29,18 @@ io::Json build(const char* request) { return call("surface", io::Json::parse(req
 std::string picture(const io::Json& surface, double w, double h, const char* extras) {
   io::Json req = io::Json::parse(extras);
   req["surface"] = surface;
+  req["background"] = "none";  // the page's own (and the import_svg read-back's silhouettes)
   req["width"] = w;
   req["height"] = h;
   return call("render", req)["svg"].get<std::string>();
 }
 
-/// Two pictures side by side in one <svg> of the page's width.
+/// Two pictures side by side in one <svg> of the page's width: each picture's content (its
+/// <svg> element's children) in a group moved to its half.
 std::string side_by_side(const std::string& a, const std::string& b, double h) {
-  const auto place = [](std::string s, double x) {
-    const auto at = s.find("<svg ");
-    return s.insert(at + 5, "x=\"" + std::to_string(static_cast<int>(x)) + "\" ");
+  const auto place = [](const std::string& s, double x) {
+    const auto open = s.find('>', s.find("<svg ")) + 1, close = s.rfind("</svg>");
+    return "<g transform=\"translate(" + std::to_string(static_cast<int>(x)) + ",0)\">" + s.substr(open, close - open) + "</g>";
   };
   return "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + std::to_string(static_cast<int>(fig_width)) + "\" height=\"" +
          std::to_string(static_cast<int>(h)) + "\" viewBox=\"0 0 " + std::to_string(static_cast<int>(fig_width)) + " " +
@@ -80,6 +82,7 @@ Figure lofted_hull() {
   io::Json req = io::Json::parse(R"({"isocurves": 6, "tolerance": 0.03, "view": {"azimuth": -55, "elevation": 25}})");
   req["surface"] = s;
   req["curves"] = io::Json::parse("[" + curves + "]");
+  req["background"] = "none";
   req["width"] = fig_width;
   req["height"] = 340;
   f.svg = call("render", req)["svg"].get<std::string>();
@@ -100,6 +103,7 @@ Figure coons_patch() {
   io::Json req = io::Json::parse(R"({"isocurves": 8, "tolerance": 0.02, "view": {"azimuth": -60, "elevation": 35}})");
   req["surface"] = s;
   req["curves"] = io::Json::parse(curves);
+  req["background"] = "none";
   req["width"] = fig_width;
   req["height"] = 340;
   f.svg = call("render", req)["svg"].get<std::string>();
