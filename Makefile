@@ -77,7 +77,7 @@ test: test-release
 bench:
 	@scripts/install-deps.sh build bench
 	cmake -S . -B $(BENCH_BUILD) -DCMAKE_BUILD_TYPE=Release -DCASTELJAU_BUILD_BENCH=ON -DCASTELJAU_BUILD_TESTS=OFF -DCASTELJAU_BUILD_APPS=OFF
-	cmake --build $(BENCH_BUILD) -j $(JOBS) --target casteljau_bench_w1_native casteljau_bench_w1_generic casteljau_bench_w2 casteljau_bench_w3 casteljau_bench_w4 casteljau_bench_w5 casteljau_bench_w6 casteljau_bench_w7
+	cmake --build $(BENCH_BUILD) -j $(JOBS) --target casteljau_bench_w1_native casteljau_bench_w1_generic casteljau_bench_w2 casteljau_bench_w3 casteljau_bench_w4 casteljau_bench_w5 casteljau_bench_w6 casteljau_bench_w7 casteljau_bench_w8
 	-cmake --build $(BENCH_BUILD) -j $(JOBS) --target casteljau_python
 	/usr/bin/python3 bench/run.py $(BENCH_BUILD)
 

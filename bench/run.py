@@ -3,7 +3,7 @@
 
 Usage: bench/run.py BUILD_DIR [--repetitions N] [--min-time SECONDS] [--filter REGEX]
 
-Runs BUILD_DIR/bench/casteljau_bench_{w1_native,w1_generic,w2,w3,w4,w5,w6,w7} (those that were built:
+Runs BUILD_DIR/bench/casteljau_bench_{w1_native,w1_generic,w2,w3,w4,w5,w6,w7,w8} (those that were built:
 a missing peer or MPFR drops rows or executables, see bench/CMakeLists.txt) with
 Google Benchmark's JSON output (repetitions of different benchmarks interleaved at random,
 so that the shared machine's drift hits every row alike), keeps the median repetition
@@ -56,6 +56,8 @@ W6_PAIRS = 1e4
 W9_GOAL_VECTORISED = 0.5  # our time / scipy's: spline_build, spline_eval_random, bspline_eval_random
 W9_GOAL_PER_CALL = 1.0  # our time / scipy's: per_call
 W9_GOAL_REL_DIFF = 1e-12  # max relative difference from scipy's values
+W8_GOAL_TRIANGLES_VS_OCCT = 0.5  # our triangles / OCCT's, where OCCT keeps the tolerance
+W8_GOAL_TIME_VS_OCCT = 1.0  # our time / OCCT's
 
 
 def run(exe, out_json, repetitions, min_time, bench_filter):
@@ -420,6 +422,36 @@ def w9_table(rows):
         goals.append(f"W9 {case}: casteljau / scipy = {ratio:.2f} (goal <= {goal}), max rel diff {diff:.1e} "
                      f"(goal < {W9_GOAL_REL_DIFF:.0e}): " + ("MET" if ok else "NOT MET"))
     text, md = table(headers, out)
+def w8_table(rows):
+    cases = {}
+    for n, b in rows.items():
+        _, lib, _, surface, tol = n.split("/")
+        cases.setdefault((surface, tol), {})[lib] = (n, b)
+    headers = ["surface/tolerance", "library", "ms", "triangles", "max deviation / tol", "over", "cracks", "triangles x occt", "time x occt"]
+    out, goals = [], []
+    over = cracks = 0
+    tri_ok = time_ok = True
+    for (surface, tol), libs in cases.items():
+        occt = libs.get("occt")
+        for lib, (n, b) in sorted(libs.items()):
+            r = [f"{surface}/{tol}", lib, f"{to_ms(b):.2f}", f"{b.get('triangles', 0):.0f}",
+                 f"{b.get('max_deviation', 0) / float(tol):.3f}", f"{b.get('over_tolerance', 0):.0f}", f"{b.get('cracks', 0):.0f}"]
+            if occt and lib != "occt":
+                r += [fmt_ratio(b.get("triangles", 0) / max(occt[1].get("triangles", 1), 1)), fmt_ratio(to_ms(b) / to_ms(occt[1]))]
+            else:
+                r += ["", ""]
+            out.append(r)
+            if lib == "casteljau":
+                over += int(b.get("over_tolerance", 0))
+                cracks += int(b.get("cracks", 0))
+                if occt:
+                    time_ok = time_ok and to_ms(b) <= W8_GOAL_TIME_VS_OCCT * to_ms(occt[1])
+                    if not occt[1].get("over_tolerance", 0):
+                        tri_ok = tri_ok and b.get("triangles", 0) <= W8_GOAL_TRIANGLES_VS_OCCT * occt[1].get("triangles", 0)
+    text, md = table(headers, out)
+    goals.append(f"W8: {over} meshes over tolerance, {cracks} cracks (goal 0 and 0): " + ("MET" if over == 0 and cracks == 0 else "NOT MET"))
+    goals.append(f"W8: triangles <= {W8_GOAL_TRIANGLES_VS_OCCT} x OCCT's where OCCT keeps the tolerance: " + ("MET" if tri_ok else "NOT MET"))
+    goals.append(f"W8: time <= OCCT's: " + ("MET" if time_ok else "NOT MET"))
     return text, md, goals
 
 
@@ -474,6 +506,7 @@ def main():
         ("casteljau_bench_w4", 0.2, w4_table, "W4, natural cubic spline through 10^6 points, 10^6 queries"),
         ("casteljau_bench_w6", 0.2, w6_table, "W6, 10,000 random cubic pairs"),
         ("casteljau_bench_w7", 0.2, w7_table, "W7, bicubic surface of 50 x 50 control points, 10^6 points (1000 x 1000 grid, random)"),
+        ("casteljau_bench_w8", 0.2, w8_table, "W8, tessellation: W7's bicubic (heights x 0.1), a NURBS torus and sphere"),
     )
     for exe_name, min_time, table, title in workloads:
         exe = os.path.join(bench_dir, exe_name)

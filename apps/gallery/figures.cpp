@@ -931,6 +931,7 @@ const std::vector<FigureFunction>& figure_list() {
       runge_phenomenon, catmull_rom_alpha, hermite_basis,
       spline_boundaries, monotone_vs_natural,
       glyph_outlines_figure,
+      surface_of_revolution, lofted_hull, coons_patch, bicubic_patch_with_net, torus_tessellation,
   };
   return list;
 }

@@ -49,6 +49,13 @@ Figure monotone_vs_natural();
 /// A word in a TrueType and a CFF font with its flattening (figures_glyphs.cpp).
 Figure glyph_outlines_figure();
 
+/// Surfaces (figures_surfaces.cpp, issue 19): drawn by the `render` command.
+Figure surface_of_revolution();
+Figure lofted_hull();
+Figure coons_patch();
+Figure bicubic_patch_with_net();
+Figure torus_tessellation();
+
 /// The page: a self-contained HTML document (inline CSS and SVG, no scripts).
 std::string html_page(const std::vector<Figure>& figures);
 

@@ -154,7 +154,8 @@ bool declares(const Command& c, std::string_view field) {
 std::vector<Command> collect() {
   std::vector<Command> all;
   for (const auto family : {detail::curve_commands(), detail::query_commands(), detail::point_commands(), detail::ops_commands(),
-                            detail::svg_import_commands(), detail::outline_commands(), detail::surface_commands()}) {
+                            detail::svg_import_commands(), detail::outline_commands(), detail::surface_commands(),
+                            detail::surface_mesh_commands()}) {
     all.insert(all.end(), family.begin(), family.end());
   }
   return all;
@@ -262,6 +263,9 @@ const Command* surface_form(std::string_view name) {
   for (const auto& c : detail::surface_forms()) {
     if (c.name == name) return &c;
   }
+  for (const auto& c : detail::surface_mesh_forms()) {
+    if (c.name == name) return &c;
+  }
   return nullptr;
 }
 
@@ -278,7 +282,7 @@ std::string request_noun(const Command& command) {
 }
 
 Response run(const Command& command, const Json& request) {
-  if (request.is_object() && request.contains("surface") && !declares(command, "surface")) {
+  if (request.is_object() && (request.contains("surface") || request.contains("surfaces")) && !declares(command, "surface")) {
     if (const Command* s = surface_form(command.name)) return run(*s, request);
   }
   const Args args = read_args(command.fields, request, request_noun(command));

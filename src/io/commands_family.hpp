@@ -29,6 +29,10 @@ std::span<const Command> surface_commands();
 /// src/io/commands_surface.cpp: the surface forms of eval, split, elevate, insert_knot,
 /// to_bezier, bounds, area (io::surface_form).
 std::span<const Command> surface_forms();
+/// src/io/commands_surface_mesh.cpp: tessellate (issue 19).
+std::span<const Command> surface_mesh_commands();
+/// src/io/commands_surface_mesh.cpp: the surface form of render.
+std::span<const Command> surface_mesh_forms();
 
 /// A finite number as JSON writes it (shortest round-trip form), for messages.
 inline std::string number_text(double v) { return Json(v).dump(); }

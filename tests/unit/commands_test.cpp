@@ -63,6 +63,7 @@ const std::map<std::string, std::vector<Expected>> documented = {
      {{"construct", true}, {"curve", false}, {"curves", false}, {"vector", false}, {"axis", false}, {"angle", false}, {"degree", false},
       {"params", false}, {"points", false}, {"control_points", false}, {"parametrization", false}}},
     {"isocurve", {{"surface", true}, {"direction", true}, {"value", true}}},
+    {"tessellate", {{"surface", true}, {"tolerance", true}, {"format", false}}},
 };
 
 const io::OrderedJson& command_entry(const io::OrderedJson& listing, const std::string& name) {
