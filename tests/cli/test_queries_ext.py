@@ -556,6 +556,52 @@ def conic_length(w, t0, t1):
     return mpmath.quad(lambda z: k * speed(z), pts) / k
 
 
+def conic_point_u(w, u):
+    """The conic at u = t / (1 - t) (None: t = 1): offsets u^2 / Q and 1 / Q from the corner."""
+    if u is None:
+        return [mpf(0), mpf(1)]
+    Q = 1 + 2 * mpf(w) * u + u * u
+    return [1 - u * u / Q, 1 - 1 / Q]
+
+
+def conic_extremum(w, q, farthest=False):
+    """(t, 1 - t, distance) of the point of the conic closest to q (farthest), in mpmath at
+    40 digits, in u = t / (1 - t) = e^z: the ends, and the sign changes of the distance's
+    slope, (x - qx) x' + (y - qy) y' with x' = -2 u (1 + w u) / Q^2, y' = 2 (w + u) / Q^2
+    (every term positive: no cancellation, so 40 digits give 30), found on a grid in z of
+    step 2 over the whole scale of the curve (|z| <= ln w + 80; the slope's roots for the
+    points asked are ln w or more apart) and bisected 100 times (to 1e-30 in z)."""
+    with mpmath.workdps(40):
+        w, qx, qy = mpf(w), mpf(q[0]), mpf(q[1])
+
+        def slope(z):
+            u = mpmath.exp(z)
+            Q = 1 + 2 * w * u + u * u
+            return ((1 - qx) - u * u / Q) * (-u * (1 + w * u)) + ((1 - qy) - 1 / Q) * (w + u)
+
+        def dist(u):
+            return mpmath.norm([a - b for a, b in zip(conic_point_u(w, u), (qx, qy))])
+
+        L = int(abs(mpmath.log(w))) + 80
+        zs = [mpf(k) for k in range(-L, L + 1, 2)]
+        gs = [slope(z) for z in zs]
+        found = [(dist(mpf(0)), mpf(0)), (dist(None), None)]
+        for z0, z1, g0, g1 in zip(zs, zs[1:], gs, gs[1:]):
+            if (g0 < 0) != (g1 < 0):
+                for _ in range(100):
+                    zm = (z0 + z1) / 2
+                    if (slope(zm) < 0) == (g0 < 0):
+                        z0 = zm
+                    else:
+                        z1 = zm
+                u = mpmath.exp((z0 + z1) / 2)
+                found.append((dist(u), u))
+        d, u = (max if farthest else min)(found, key=lambda x: x[0])
+        if u is None:
+            return mpf(1), mpf(0), d
+        return u / (1 + u), 1 / (1 + u), d
+
+
 class ExtremeWeightsFormsTest(CliTest):
     WS = (1e16, 1e30, 1e100, 1e200, 1e300, 1e-16, 1e-100, 1e-200)
 
@@ -643,6 +689,38 @@ class ExtremeWeightsFormsTest(CliTest):
                         hi = arc(math.nextafter(t, 1)) if t < 1 else total
                         self.assertTrue(lo <= s <= hi and abs(lo - s) > tol and abs(hi - s) > tol,
                                         (w, c["type"], s, t, float(arc(t)), float(lo), float(hi)))
+
+    def test_project_parameter(self):
+        # The closest (farthest) point's parameter, not only its distance: where the curve
+        # passes the corner within 1/w of it, the distance ties to rounding over most of
+        # [0, 1], and its extremum is where the curve's direction is normal to the way to
+        # q (t = 0.387 for q = (1.5, 1.2) at every huge w; 0.5 or 4e-12 before).
+        # Reference: conic_extremum (60 digits). Parameters within 1/2 of 0 to 1e-12
+        # relative (the bisection ends on neighbouring doubles; 1e-12 allows the rounding
+        # of the slope's sign near its root, where the distance is flat); within 1/2 of 1,
+        # 1 - t to 1e-12 relative plus two ulps of 1 (no double is nearer: t = 1 - 1e-40
+        # answers 1 - 2^-53 or 1). Not asked: q level with the corner, (1.5, 1), whose
+        # extremum moves by 1e-5 relative when q moves by one ulp (the curve's tiny
+        # offset from the leg decides it).
+        cases = [([1.5, 1.2], False), ([1, 1.5], False), ([2, 0.5], False), ([0.3, 0.3], True)]
+        ws = (1e16, 1e30, 1e300)
+        reqs = [{"curve": c, "point": q, "farthest": far} for w in ws for c in self.forms(w) for q, far in cases]
+        got = iter(self.ok_jsonl("project", reqs))
+        for w in ws:
+            for c in self.forms(w):
+                for q, far in cases:
+                    r = next(got)
+                    t, s, d = conic_extremum(w, q, far)
+                    msg = (w, c["type"], q, far, r, float(t))
+                    if t <= 0.5:
+                        self.assertLessEqual(abs(r["t"] - float(t)), 1e-12 * float(t), msg)
+                    else:
+                        self.assertLessEqual(abs((1 - r["t"]) - float(s)), 1e-12 * float(s) + 2 * 2 ** -53, msg)
+                    # The distance to 2 eps of itself (two roundings of a sum of squares),
+                    # the point within 1e-15 of the curve's (the conic's at the true t).
+                    self.assertLessEqual(abs(r["distance"] - float(d)), 4.5e-16 * float(d), msg)
+                    want = conic_point_u(w, t / s if s > 0 else None)
+                    self.assertLessEqual(math.dist(r["point"], [float(x) for x in want]), 1e-15, msg)
 
     def test_scaled_circle(self):
         # The NURBS circle of radius 2 with every weight times 1e300 or 1e-300 (the same
