@@ -618,11 +618,12 @@ class ExtremeWeightsFormsTest(CliTest):
         # itself (1e-14: 16 eps of rounding in the weights' products and the sum). It was
         # lost where the curve hugs its polygon: 0 for 2e-30 at t = 1/2, w = 1e30.
         ts = [0, 0.25, 0.5, 0.75, 1]
+        answers = iter(self.ok_jsonl("eval", [{"curve": c, "t": ts, "derivatives": 1} for w in self.WS for c in self.forms(w)]))
         with mpmath.workdps(40):
             for w in self.WS:
                 wants = [conic_derivative(w, t)[0] for t in ts]
                 for c in self.forms(w):
-                    got = self.ok("eval", {"curve": c, "t": ts, "derivatives": 1})["derivatives"][0]
+                    got = next(answers)["derivatives"][0]
                     for t, g, want in zip(ts, got, wants):
                         for k in range(2):
                             if want[k] == 0:
@@ -636,10 +637,11 @@ class ExtremeWeightsFormsTest(CliTest):
         # part of R'' normal to the chord was rounded away). 1e-13: a few eps of the
         # numerator's and the speed's terms, cubed.
         ts = [0.25, 0.5, 0.75]
+        answers = iter(self.ok_jsonl("eval", [{"curve": c, "t": ts, "curvature": True} for w in self.WS for c in self.forms(w)]))
         with mpmath.workdps(40):
             for w in self.WS:
                 for c in self.forms(w):
-                    got = self.ok("eval", {"curve": c, "t": ts, "curvature": True})["curvature"]
+                    got = next(answers)["curvature"]
                     for t, g in zip(ts, got):
                         self.assert_rel(g, conic_curvature(w, t), 1e-13, (w, t, c["type"]))
             # At the ends the curvature is 1 / (2 w^2): 5e199 for w = 1e-100; 5e399 for
@@ -654,13 +656,15 @@ class ExtremeWeightsFormsTest(CliTest):
         # Over [1/4, 3/4] the curve stays within 1/w of the corner: length 2.1e-30 at
         # w = 1e30 (0 before: the portion's control points round to the corner), and
         # across the legs' ends. 1e-12 relative: the quadrature's target (docs/accuracy.md).
+        cases = [(w, t0, t1) for w in (1e16, 1e30, 1e300, 1e-100, 1e-200) for t0, t1 in ((0.25, 0.75), (0, 0.3), (1e-300, 1))]
+        # One process for every request (each a process start less).
+        answers = iter(self.ok_jsonl("length", [{"curve": c, "from": t0, "to": t1} for w, t0, t1 in cases for c in self.forms(w)]))
         with mpmath.workdps(25):  # the integrand has no cancellation; 1e-12 is asked
-            for w in (1e16, 1e30, 1e300, 1e-100, 1e-200):
-                for t0, t1 in ((0.25, 0.75), (0, 0.3), (1e-300, 1)):
-                    want = conic_length(w, t0, t1)
-                    for c in self.forms(w):
-                        got = self.ok("length", {"curve": c, "from": t0, "to": t1})["length"]
-                        self.assert_rel(got, want, 1e-12, (w, t0, t1, c["type"]))
+            for w, t0, t1 in cases:
+                want = conic_length(w, t0, t1)
+                for c in self.forms(w):
+                    got = next(answers)["length"]
+                    self.assert_rel(got, want, 1e-12, (w, t0, t1, c["type"]))
 
     def test_param_at_length(self):
         # The arc length up to each t returned is the one asked for within 1e-12 of the
