@@ -405,31 +405,41 @@ class ExtremeWeightsTest(CliTest):
 
     def test_queries_that_were_right(self):
         # Regression guard for the queries that answered correctly already: eval, bounds,
-        # length, project, distance, features, split, elevate, to_bezier.
-        for w in self.HUGE + self.TINY:
-            c = conic(w)
-            r = self.ok("eval", {"curve": c, "t": [0, 0.5, 0.25, 1]})
-            for t, p in zip([0, 0.5, 0.25, 1], r["points"]):
+        # length, project, distance, features, split, elevate, to_bezier. Each command's
+        # requests through one --jsonl process (a process per request cost 1.5 s of CPU).
+        ws = self.HUGE + self.TINY
+        curves = [conic(w) for w in ws]
+        each = lambda cmd, extra: self.ok_jsonl(cmd, [dict({"curve": c}, **extra) for c in curves])
+        halves = [r["curves"] for r in each("split", {"t": 0.5})]
+        elevated = [r["curve"] for r in each("elevate", {"times": 1})]
+        # eval: the curve at 0, 1/2, 1/4, 1; each half at 1/2; the elevated curve at 1/4.
+        evals = iter(self.ok_jsonl("eval", [{"curve": c, "t": [0, 0.5, 0.25, 1]} for c in curves] +
+                                   [{"curve": h, "t": [0.5]} for hs in halves for h in hs] +
+                                   [{"curve": e, "t": [0.25]} for e in elevated]))
+        bounds, lengths, features = each("bounds", {}), each("length", {}), each("features", {})
+        for w in ws:
+            for t, p in zip([0, 0.5, 0.25, 1], next(evals)["points"]):
                 self.assert_close(p, [float(v) for v in conic_point(w, t)], 1e-15)
-            self.assertEqual(self.ok("bounds", {"curve": c}), {"min": [0.0, 0.0], "max": [1.0, 1.0]})
+        for k, w in enumerate(ws):
+            self.assertEqual(bounds[k], {"min": [0.0, 0.0], "max": [1.0, 1.0]})
             # Length: within 1/w of 2 (the legs) or of sqrt(2) (the chord), relative 1e-12.
             want = 2.0 if w > 1 else math.sqrt(2)
-            self.assertLessEqual(abs(self.ok("length", {"curve": c})["length"] - want), 1e-12 * want, w)
-            self.assertEqual(self.ok("features", {"curve": c}), {"inflections": [], "cusps": [], "extrema": [[], []]})
-            halves = self.ok("split", {"curve": c, "t": 0.5})["curves"]
-            for h, (lo, hi) in zip(halves, [(0, 0.5), (0.5, 1)]):
-                q = self.ok("eval", {"curve": h, "t": [0.5]})["points"][0]
+            self.assertLessEqual(abs(lengths[k]["length"] - want), 1e-12 * want, w)
+            self.assertEqual(features[k], {"inflections": [], "cusps": [], "extrema": [[], []]})
+        for w in ws:
+            for lo, hi in [(0, 0.5), (0.5, 1)]:
+                q = next(evals)["points"][0]
                 self.assert_close(q, [float(v) for v in conic_point(w, (lo + hi) / 2)], 1e-15)
-            e = self.ok("elevate", {"curve": c, "times": 1})["curve"]
-            q = self.ok("eval", {"curve": e, "t": [0.25]})["points"][0]
+        for w in ws:
+            q = next(evals)["points"][0]
             self.assert_close(q, [float(v) for v in conic_point(w, 0.25)], 1e-15)
-        for w in self.HUGE:
+        projections = self.ok_jsonl("project", [{"curve": conic(w), "point": [2, 0.5]} for w in self.HUGE])
+        distances = self.ok_jsonl("distance", [{"curves": [conic(w), bezier([[2, 0.5], [3, 0.5]])]} for w in self.HUGE])
+        for w, p, d in zip(self.HUGE, projections, distances):
             # The point (2, 1/2) is nearest to the leg x = 1 at y = 1/2: distance 1.
-            p = self.ok("project", {"curve": conic(w), "point": [2, 0.5]})
             self.assertLessEqual(abs(p["distance"] - 1), 1e-15)
             t = conic_t_at_y_half(w)
             self.assertLessEqual(abs(p["t"] - float(t)), 1e-12 * float(t))
-            d = self.ok("distance", {"curves": [conic(w), bezier([[2, 0.5], [3, 0.5]])]})
             self.assertLessEqual(abs(d["distance"] - 1), 1e-15)
 
 
