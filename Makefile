@@ -62,8 +62,10 @@ test-asan: deps
 # test_cli.py's contract checks run on the Release program only: under the sanitizers each
 # of its ~300 processes starts in about 0.13 s (43 s in all). Run this (about 2 minutes)
 # or `make test-asan` (every test under them, about 10 minutes) before merging a change
-# to the library; `make fuzz` runs libFuzzer with the same sanitizers.
-ASAN_SMOKE_TESTS = ^(fuzz_corpus_replay|cli\.hostile|cli_registry)$$
+# to the library; `make fuzz` runs libFuzzer with the same sanitizers. The suites of the
+# newer commands (offset, surfaces, the queries' extensions) run too: the fuzz corpus has
+# one seed per command, they reach their geometry.
+ASAN_SMOKE_TESTS = ^(fuzz_corpus_replay|cli\.hostile|cli_registry|cli_offset|cli_surfaces|cli_queries_ext)$$
 test-asan-smoke: deps
 	$(ASAN_CMAKE)
 	cmake --build $(ASAN_BUILD) -j $(JOBS) --target casteljau_cli casteljau_fuzz_replay

@@ -267,11 +267,12 @@ std::vector<ScriptRun> script_runs(const std::vector<hb_codepoint_t>& text, hb_u
 }
 
 /// HarfBuzz's x advance and x offset of each glyph of the run (font units, by character
-/// index), with the kern feature on or off; false when HarfBuzz did not answer one glyph
-/// per character with FreeType's glyphs (a script shaper that rewrites the text itself:
-/// Thai's SARA AM, Hangul jamo).
+/// index), with the kern feature on or off, shaped as `script` (the run's, or Common with
+/// `language` naming the run's OpenType script tag, see gpos_kerning); false when HarfBuzz
+/// did not answer one glyph per character with FreeType's glyphs (a script shaper that
+/// rewrites the text itself: Thai's SARA AM, Hangul jamo composed into a syllable).
 bool shape_run(hb_font_t* font, hb_unicode_funcs_t* unicode, const std::vector<hb_codepoint_t>& text,
-               const std::vector<FT_UInt>& glyphs, const ScriptRun& run, bool kern,
+               const std::vector<FT_UInt>& glyphs, const ScriptRun& run, hb_script_t script, hb_language_t language, bool kern,
                std::vector<hb_position_t>& advance, std::vector<hb_position_t>& offset) {
   const HbPtr<hb_buffer_t, hb_buffer_destroy> buffer(hb_buffer_create());
   hb_buffer_set_unicode_funcs(buffer.get(), unicode);
@@ -279,9 +280,11 @@ bool shape_run(hb_font_t* font, hb_unicode_funcs_t* unicode, const std::vector<h
                                                                    HB_BUFFER_FLAG_DO_NOT_INSERT_DOTTED_CIRCLE));
   hb_buffer_set_cluster_level(buffer.get(), HB_BUFFER_CLUSTER_LEVEL_CHARACTERS);
   hb_buffer_set_direction(buffer.get(), HB_DIRECTION_LTR);
-  hb_buffer_set_script(buffer.get(), run.script);
+  hb_buffer_set_script(buffer.get(), script);
   // The whole text is the context (clusters are indices into it); the language is left
-  // unset, so the script's default language system applies whatever the process locale.
+  // unset (or holds only a script tag), so the script's default language system applies
+  // whatever the process locale.
+  hb_buffer_set_language(buffer.get(), language);
   hb_buffer_add_codepoints(buffer.get(), text.data(), static_cast<int>(text.size()), static_cast<unsigned>(run.begin),
                            static_cast<int>(run.end - run.begin));
   const auto feature = [](hb_tag_t tag, bool on) {
@@ -347,10 +350,31 @@ std::optional<std::vector<PairAdjustment>> gpos_kerning(const std::string& font_
 
   std::vector<PairAdjustment> adjust(text.size());
   std::vector<hb_position_t> advance_on(text.size()), offset_on(text.size()), advance_off(text.size()), offset_off(text.size());
+  const auto shaped = [&](const ScriptRun& run, hb_script_t script, hb_language_t language) {
+    return shape_run(font.get(), unicode.get(), text, glyphs, run, script, language, true, advance_on, offset_on) &&
+           shape_run(font.get(), unicode.get(), text, glyphs, run, script, language, false, advance_off, offset_off);
+  };
   for (const ScriptRun& run : script_runs(text, unicode.get())) {
-    if (!shape_run(font.get(), unicode.get(), text, glyphs, run, true, advance_on, offset_on) ||
-        !shape_run(font.get(), unicode.get(), text, glyphs, run, false, advance_off, offset_off)) {
-      continue;  // this run is laid out without kerning
+    if (!shaped(run, run.script, HB_LANGUAGE_INVALID)) {
+      // The script's own shaper rewrote the text (Thai decomposes SARA AM into NIKHAHIT
+      // and SARA AA; Hangul composes conjoining jamo into a syllable the text also holds).
+      // Those steps belong to the script's shaper, not to its GPOS lookups: the run is
+      // shaped again by HarfBuzz's default shaper (script Common), with the OpenType
+      // script tag the script's shaper would have used (the first of the script's tags
+      // that the font's GPOS lists) passed as HarfBuzz's private language subtag
+      // "x-hbsc<tag>", so that the same kern lookups of the same language system apply.
+      unsigned count = HB_OT_MAX_TAGS_PER_SCRIPT;
+      hb_tag_t tags[HB_OT_MAX_TAGS_PER_SCRIPT];
+      hb_ot_tags_from_script_and_language(run.script, HB_LANGUAGE_INVALID, &count, tags, nullptr, nullptr);
+      unsigned index = 0;
+      hb_tag_t chosen = HB_OT_TAG_DEFAULT_SCRIPT;
+      hb_ot_layout_table_select_script(face.get(), HB_OT_TAG_GPOS, count, tags, &index, &chosen);
+      char tag[5] = {};
+      hb_tag_to_string(chosen, tag);
+      const std::string private_tag = "x-hbsc" + std::string(tag);
+      if (!shaped(run, HB_SCRIPT_COMMON, hb_language_from_string(private_tag.c_str(), -1))) {
+        continue;  // this run is laid out without kerning
+      }
     }
     for (std::size_t i = run.begin; i < run.end; ++i) {
       adjust[i].after = advance_on[i] - advance_off[i];

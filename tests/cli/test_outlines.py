@@ -873,6 +873,58 @@ class GlyphTest(CliTest):
                     pen += k.advance(gid)
                     prev = gid
 
+    def test_thai_and_hangul_runs_keep_their_kerning(self):
+        # A small TrueType font (fontTools' FontBuilder: one box outline per glyph, its own
+        # advance) with Thai and Hangul characters and a GPOS `kern` feature of glyph pairs
+        # for the thai and hang scripts (fontTools' feature compiler). HarfBuzz's Thai
+        # shaper decomposes SARA AM (U+0E33) and its Hangul shaper composes conjoining jamo
+        # into a syllable the text also holds: not one glyph per character, so these runs
+        # had no kerning at all. They are shaped again by the default shaper with the
+        # script's tag and kern as every other run: pen positions from the GPOS reader
+        # here, pair by pair. (No pair starts at the tone mark U+0E48: HarfBuzz does not
+        # kern after a combining mark, with the Thai shaper or without, which the reader
+        # here does not model.)
+        from fontTools.feaLib.builder import addOpenTypeFeaturesFromString
+        from fontTools.fontBuilder import FontBuilder
+        from fontTools.pens.ttGlyphPen import TTGlyphPen
+
+        chars = {0x0E01: 1401, 0x0E02: 1380, 0x0E33: 1251, 0x0E48: 1024, 0xAC00: 2025, 0xB098: 1255, 0x1100: 1540, 0x1161: 1298}
+        names = [".notdef"] + ["u%04X" % cp for cp in chars]
+        fb = FontBuilder(2048, isTTF=True)
+        fb.setupGlyphOrder(names)
+        fb.setupCharacterMap({cp: "u%04X" % cp for cp in chars})
+        glyphs = {}
+        for name in names:
+            pen = TTGlyphPen(None)
+            for x, y in ((100, 0), (100, 1000), (600, 1000), (600, 0)):
+                (pen.lineTo if (x, y) != (100, 0) else pen.moveTo)((x, y))
+            pen.closePath()
+            glyphs[name] = pen.glyph()
+        fb.setupGlyf(glyphs)
+        fb.setupHorizontalMetrics({n: (chars.get(int(n[1:], 16), 1000) if n != ".notdef" else 1000, 100) for n in names})
+        fb.setupHorizontalHeader(ascent=1900, descent=-500)
+        fb.setupNameTable({"familyName": "Kern test", "styleName": "Regular"})
+        fb.setupOS2()
+        fb.setupPost()
+        addOpenTypeFeaturesFromString(fb.font, """
+            languagesystem DFLT dflt; languagesystem thai dflt; languagesystem hang dflt;
+            feature kern {
+              pos u0E01 u0E02 -100; pos u0E02 u0E01 -50; pos u0E01 u0E33 -20; pos u0E33 u0E01 -70;
+              pos u1100 u1161 -40; pos uAC00 uB098 -120; pos u1161 uAC00 -5;
+            } kern;""")
+        with tempfile.TemporaryDirectory() as tmp:
+            path = os.path.join(tmp, "thai_hangul.ttf")
+            fb.save(path)
+            gp = GposLayout(path)
+            for text, script in (("\u0e01\u0e02\u0e01\u0e33\u0e01", "thai"), ("\u0e01\u0e48\u0e33\u0e01\u0e02", "thai"),
+                                 ("\u1100\u1161\uac00\ub098", "hang"), ("\uac00\ub098\uac00", "hang")):
+                r = self.glyphs(path, text)
+                self.assertIs(r["kerning"], True)
+                origins, advances = gp.layout(text, script=script)
+                self.assert_layout(r, text, origins, advances)
+                # The kerning moved the pen (not the advances alone).
+                self.assertNotEqual(origins[-1], sum(advances[:-1]), text)
+
     def test_cff_and_type1_are_cubic_and_closed(self):
         for font, fmt in ((NIMBUS_OTF, "CFF"), (NIMBUS_T1, "Type 1")):
             r = self.glyphs(font, "Sag")

@@ -405,31 +405,41 @@ class ExtremeWeightsTest(CliTest):
 
     def test_queries_that_were_right(self):
         # Regression guard for the queries that answered correctly already: eval, bounds,
-        # length, project, distance, features, split, elevate, to_bezier.
-        for w in self.HUGE + self.TINY:
-            c = conic(w)
-            r = self.ok("eval", {"curve": c, "t": [0, 0.5, 0.25, 1]})
-            for t, p in zip([0, 0.5, 0.25, 1], r["points"]):
+        # length, project, distance, features, split, elevate, to_bezier. Each command's
+        # requests through one --jsonl process (a process per request cost 1.5 s of CPU).
+        ws = self.HUGE + self.TINY
+        curves = [conic(w) for w in ws]
+        each = lambda cmd, extra: self.ok_jsonl(cmd, [dict({"curve": c}, **extra) for c in curves])
+        halves = [r["curves"] for r in each("split", {"t": 0.5})]
+        elevated = [r["curve"] for r in each("elevate", {"times": 1})]
+        # eval: the curve at 0, 1/2, 1/4, 1; each half at 1/2; the elevated curve at 1/4.
+        evals = iter(self.ok_jsonl("eval", [{"curve": c, "t": [0, 0.5, 0.25, 1]} for c in curves] +
+                                   [{"curve": h, "t": [0.5]} for hs in halves for h in hs] +
+                                   [{"curve": e, "t": [0.25]} for e in elevated]))
+        bounds, lengths, features = each("bounds", {}), each("length", {}), each("features", {})
+        for w in ws:
+            for t, p in zip([0, 0.5, 0.25, 1], next(evals)["points"]):
                 self.assert_close(p, [float(v) for v in conic_point(w, t)], 1e-15)
-            self.assertEqual(self.ok("bounds", {"curve": c}), {"min": [0.0, 0.0], "max": [1.0, 1.0]})
+        for k, w in enumerate(ws):
+            self.assertEqual(bounds[k], {"min": [0.0, 0.0], "max": [1.0, 1.0]})
             # Length: within 1/w of 2 (the legs) or of sqrt(2) (the chord), relative 1e-12.
             want = 2.0 if w > 1 else math.sqrt(2)
-            self.assertLessEqual(abs(self.ok("length", {"curve": c})["length"] - want), 1e-12 * want, w)
-            self.assertEqual(self.ok("features", {"curve": c}), {"inflections": [], "cusps": [], "extrema": [[], []]})
-            halves = self.ok("split", {"curve": c, "t": 0.5})["curves"]
-            for h, (lo, hi) in zip(halves, [(0, 0.5), (0.5, 1)]):
-                q = self.ok("eval", {"curve": h, "t": [0.5]})["points"][0]
+            self.assertLessEqual(abs(lengths[k]["length"] - want), 1e-12 * want, w)
+            self.assertEqual(features[k], {"inflections": [], "cusps": [], "extrema": [[], []]})
+        for w in ws:
+            for lo, hi in [(0, 0.5), (0.5, 1)]:
+                q = next(evals)["points"][0]
                 self.assert_close(q, [float(v) for v in conic_point(w, (lo + hi) / 2)], 1e-15)
-            e = self.ok("elevate", {"curve": c, "times": 1})["curve"]
-            q = self.ok("eval", {"curve": e, "t": [0.25]})["points"][0]
+        for w in ws:
+            q = next(evals)["points"][0]
             self.assert_close(q, [float(v) for v in conic_point(w, 0.25)], 1e-15)
-        for w in self.HUGE:
+        projections = self.ok_jsonl("project", [{"curve": conic(w), "point": [2, 0.5]} for w in self.HUGE])
+        distances = self.ok_jsonl("distance", [{"curves": [conic(w), bezier([[2, 0.5], [3, 0.5]])]} for w in self.HUGE])
+        for w, p, d in zip(self.HUGE, projections, distances):
             # The point (2, 1/2) is nearest to the leg x = 1 at y = 1/2: distance 1.
-            p = self.ok("project", {"curve": conic(w), "point": [2, 0.5]})
             self.assertLessEqual(abs(p["distance"] - 1), 1e-15)
             t = conic_t_at_y_half(w)
             self.assertLessEqual(abs(p["t"] - float(t)), 1e-12 * float(t))
-            d = self.ok("distance", {"curves": [conic(w), bezier([[2, 0.5], [3, 0.5]])]})
             self.assertLessEqual(abs(d["distance"] - 1), 1e-15)
 
 
@@ -556,6 +566,52 @@ def conic_length(w, t0, t1):
     return mpmath.quad(lambda z: k * speed(z), pts) / k
 
 
+def conic_point_u(w, u):
+    """The conic at u = t / (1 - t) (None: t = 1): offsets u^2 / Q and 1 / Q from the corner."""
+    if u is None:
+        return [mpf(0), mpf(1)]
+    Q = 1 + 2 * mpf(w) * u + u * u
+    return [1 - u * u / Q, 1 - 1 / Q]
+
+
+def conic_extremum(w, q, farthest=False):
+    """(t, 1 - t, distance) of the point of the conic closest to q (farthest), in mpmath at
+    40 digits, in u = t / (1 - t) = e^z: the ends, and the sign changes of the distance's
+    slope, (x - qx) x' + (y - qy) y' with x' = -2 u (1 + w u) / Q^2, y' = 2 (w + u) / Q^2
+    (every term positive: no cancellation, so 40 digits give 30), found on a grid in z of
+    step 2 over the whole scale of the curve (|z| <= ln w + 80; the slope's roots for the
+    points asked are ln w or more apart) and bisected 100 times (to 1e-30 in z)."""
+    with mpmath.workdps(40):
+        w, qx, qy = mpf(w), mpf(q[0]), mpf(q[1])
+
+        def slope(z):
+            u = mpmath.exp(z)
+            Q = 1 + 2 * w * u + u * u
+            return ((1 - qx) - u * u / Q) * (-u * (1 + w * u)) + ((1 - qy) - 1 / Q) * (w + u)
+
+        def dist(u):
+            return mpmath.norm([a - b for a, b in zip(conic_point_u(w, u), (qx, qy))])
+
+        L = int(abs(mpmath.log(w))) + 80
+        zs = [mpf(k) for k in range(-L, L + 1, 2)]
+        gs = [slope(z) for z in zs]
+        found = [(dist(mpf(0)), mpf(0)), (dist(None), None)]
+        for z0, z1, g0, g1 in zip(zs, zs[1:], gs, gs[1:]):
+            if (g0 < 0) != (g1 < 0):
+                for _ in range(100):
+                    zm = (z0 + z1) / 2
+                    if (slope(zm) < 0) == (g0 < 0):
+                        z0 = zm
+                    else:
+                        z1 = zm
+                u = mpmath.exp((z0 + z1) / 2)
+                found.append((dist(u), u))
+        d, u = (max if farthest else min)(found, key=lambda x: x[0])
+        if u is None:
+            return mpf(1), mpf(0), d
+        return u / (1 + u), 1 / (1 + u), d
+
+
 class ExtremeWeightsFormsTest(CliTest):
     WS = (1e16, 1e30, 1e100, 1e200, 1e300, 1e-16, 1e-100, 1e-200)
 
@@ -572,11 +628,12 @@ class ExtremeWeightsFormsTest(CliTest):
         # itself (1e-14: 16 eps of rounding in the weights' products and the sum). It was
         # lost where the curve hugs its polygon: 0 for 2e-30 at t = 1/2, w = 1e30.
         ts = [0, 0.25, 0.5, 0.75, 1]
+        answers = iter(self.ok_jsonl("eval", [{"curve": c, "t": ts, "derivatives": 1} for w in self.WS for c in self.forms(w)]))
         with mpmath.workdps(40):
             for w in self.WS:
                 wants = [conic_derivative(w, t)[0] for t in ts]
                 for c in self.forms(w):
-                    got = self.ok("eval", {"curve": c, "t": ts, "derivatives": 1})["derivatives"][0]
+                    got = next(answers)["derivatives"][0]
                     for t, g, want in zip(ts, got, wants):
                         for k in range(2):
                             if want[k] == 0:
@@ -590,10 +647,11 @@ class ExtremeWeightsFormsTest(CliTest):
         # part of R'' normal to the chord was rounded away). 1e-13: a few eps of the
         # numerator's and the speed's terms, cubed.
         ts = [0.25, 0.5, 0.75]
+        answers = iter(self.ok_jsonl("eval", [{"curve": c, "t": ts, "curvature": True} for w in self.WS for c in self.forms(w)]))
         with mpmath.workdps(40):
             for w in self.WS:
                 for c in self.forms(w):
-                    got = self.ok("eval", {"curve": c, "t": ts, "curvature": True})["curvature"]
+                    got = next(answers)["curvature"]
                     for t, g in zip(ts, got):
                         self.assert_rel(g, conic_curvature(w, t), 1e-13, (w, t, c["type"]))
             # At the ends the curvature is 1 / (2 w^2): 5e199 for w = 1e-100; 5e399 for
@@ -608,13 +666,15 @@ class ExtremeWeightsFormsTest(CliTest):
         # Over [1/4, 3/4] the curve stays within 1/w of the corner: length 2.1e-30 at
         # w = 1e30 (0 before: the portion's control points round to the corner), and
         # across the legs' ends. 1e-12 relative: the quadrature's target (docs/accuracy.md).
+        cases = [(w, t0, t1) for w in (1e16, 1e30, 1e300, 1e-100, 1e-200) for t0, t1 in ((0.25, 0.75), (0, 0.3), (1e-300, 1))]
+        # One process for every request (each a process start less).
+        answers = iter(self.ok_jsonl("length", [{"curve": c, "from": t0, "to": t1} for w, t0, t1 in cases for c in self.forms(w)]))
         with mpmath.workdps(25):  # the integrand has no cancellation; 1e-12 is asked
-            for w in (1e16, 1e30, 1e300, 1e-100, 1e-200):
-                for t0, t1 in ((0.25, 0.75), (0, 0.3), (1e-300, 1)):
-                    want = conic_length(w, t0, t1)
-                    for c in self.forms(w):
-                        got = self.ok("length", {"curve": c, "from": t0, "to": t1})["length"]
-                        self.assert_rel(got, want, 1e-12, (w, t0, t1, c["type"]))
+            for w, t0, t1 in cases:
+                want = conic_length(w, t0, t1)
+                for c in self.forms(w):
+                    got = next(answers)["length"]
+                    self.assert_rel(got, want, 1e-12, (w, t0, t1, c["type"]))
 
     def test_param_at_length(self):
         # The arc length up to each t returned is the one asked for within 1e-12 of the
@@ -643,6 +703,38 @@ class ExtremeWeightsFormsTest(CliTest):
                         hi = arc(math.nextafter(t, 1)) if t < 1 else total
                         self.assertTrue(lo <= s <= hi and abs(lo - s) > tol and abs(hi - s) > tol,
                                         (w, c["type"], s, t, float(arc(t)), float(lo), float(hi)))
+
+    def test_project_parameter(self):
+        # The closest (farthest) point's parameter, not only its distance: where the curve
+        # passes the corner within 1/w of it, the distance ties to rounding over most of
+        # [0, 1], and its extremum is where the curve's direction is normal to the way to
+        # q (t = 0.387 for q = (1.5, 1.2) at every huge w; 0.5 or 4e-12 before).
+        # Reference: conic_extremum (60 digits). Parameters within 1/2 of 0 to 1e-12
+        # relative (the bisection ends on neighbouring doubles; 1e-12 allows the rounding
+        # of the slope's sign near its root, where the distance is flat); within 1/2 of 1,
+        # 1 - t to 1e-12 relative plus two ulps of 1 (no double is nearer: t = 1 - 1e-40
+        # answers 1 - 2^-53 or 1). Not asked: q level with the corner, (1.5, 1), whose
+        # extremum moves by 1e-5 relative when q moves by one ulp (the curve's tiny
+        # offset from the leg decides it).
+        cases = [([1.5, 1.2], False), ([1, 1.5], False), ([2, 0.5], False), ([0.3, 0.3], True)]
+        ws = (1e16, 1e30, 1e300)
+        reqs = [{"curve": c, "point": q, "farthest": far} for w in ws for c in self.forms(w) for q, far in cases]
+        got = iter(self.ok_jsonl("project", reqs))
+        for w in ws:
+            for c in self.forms(w):
+                for q, far in cases:
+                    r = next(got)
+                    t, s, d = conic_extremum(w, q, far)
+                    msg = (w, c["type"], q, far, r, float(t))
+                    if t <= 0.5:
+                        self.assertLessEqual(abs(r["t"] - float(t)), 1e-12 * float(t), msg)
+                    else:
+                        self.assertLessEqual(abs((1 - r["t"]) - float(s)), 1e-12 * float(s) + 2 * 2 ** -53, msg)
+                    # The distance to 2 eps of itself (two roundings of a sum of squares),
+                    # the point within 1e-15 of the curve's (the conic's at the true t).
+                    self.assertLessEqual(abs(r["distance"] - float(d)), 4.5e-16 * float(d), msg)
+                    want = conic_point_u(w, t / s if s > 0 else None)
+                    self.assertLessEqual(math.dist(r["point"], [float(x) for x in want]), 1e-15, msg)
 
     def test_scaled_circle(self):
         # The NURBS circle of radius 2 with every weight times 1e300 or 1e-300 (the same

@@ -2,6 +2,7 @@
 // at a time on inputs whose answers are known in closed form: the shared frame, the pairs
 // of arcs, the joining and confirming of overlaps, the merging of points, edge points,
 // classification and the closing point of a closed curve.
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -147,6 +148,98 @@ TEST(IntersectPhases, MergePointsKeepsOnePointPerCrossing) {
   const auto m2 = merge_points(s.A, s.B, false, {e}, {}, lp, s.tol);
   EXPECT_TRUE(m2.kept.empty());
   EXPECT_EQ(m2.edges.size(), 1u);
+}
+
+TEST(IntersectPhases, OrderHitsPutsTaFirstForSelfIntersections) {
+  // (ta, tb) = (0.7, 0.2) on pieces (1, 0) and (0.1, 0.9): ordered by ta; for a
+  // self-intersection the first pair is swapped, its pieces and piece parameters with it.
+  const Hit<double> x{0.7, 0.2, 1, 0, 0.4, 0.2, 0.0}, y{0.1, 0.9, 0, 1, 0.1, 0.8, 0.0};
+  std::vector<Hit<double>> hits{x, y};
+  order_hits(hits, false);
+  EXPECT_EQ(hits[0].ta, 0.1);
+  EXPECT_EQ(hits[1].ta, 0.7);
+  hits = {x, y};
+  order_hits(hits, true);
+  EXPECT_EQ(hits[0].ta, 0.1);
+  EXPECT_EQ((std::array<double, 4>{hits[1].ta, hits[1].tb, hits[1].sa, hits[1].sb}), (std::array<double, 4>{0.2, 0.7, 0.2, 0.4}));
+  EXPECT_EQ((std::array<std::size_t, 2>{hits[1].pa, hits[1].pb}), (std::array<std::size_t, 2>{0, 1}));
+}
+
+TEST(IntersectPhases, TrivialSelfContactsAreJointsClosingPointsAndTinyLoops) {
+  // The segment (0, 0)..(1, 0): in the unit frame (e = 1) it runs to (0.5, 0), tol =
+  // 0.5e-10, and the curve "between" ta and tb is (tb - ta) / 2 long (100 tol: 5e-9).
+  const Both s(pieces(B2{{0, 0}, {1, 0}}), pieces(B2{{0, 0}, {1, 0}}));
+  ASSERT_DOUBLE_EQ(s.tol, 0.5e-10);
+  auto hit = [](double ta, double tb) { return Hit<double>{ta, tb, 0, 0, ta, tb, 0.0}; };
+  EXPECT_TRUE(trivial_self_contact(s.A, hit(0.3, 0.3), s.tol));           // a joint: tb - ta <= 1e-12
+  EXPECT_TRUE(trivial_self_contact(s.A, hit(0, 1), s.tol));               // the closing point
+  EXPECT_TRUE(trivial_self_contact(s.A, hit(0.3, 0.3 + 5e-9), s.tol));    // a "loop" 2.5e-9 long: below 100 tol
+  EXPECT_FALSE(trivial_self_contact(s.A, hit(0.3, 0.3 + 2e-8), s.tol));   // 1e-8 long: a loop
+  EXPECT_FALSE(trivial_self_contact(s.A, hit(0.25, 0.75), s.tol));
+}
+
+/// The parabola y = x^2 - 1e-10 (x = 2t - 1: control points (-1, 1 - d), (0, -1 - d),
+/// (1, 1 - d)) and the line y = 0 from (-1, 0) to (1, 0): they cross at x = -+1e-5
+/// (t = 1/2 -+ 5e-6 on both) and stay within 1e-10 of each other between the crossings,
+/// below the near-miss distance (1e-10 of the box diagonal 2 sqrt(2) in model units).
+struct NearRegion : Both {
+  NearRegion() : Both(pieces(B2{{-1, 1 - 1e-10}, {0, -1 - 1e-10}, {1, 1 - 1e-10}}), pieces(B2{{-1, 0}, {1, 0}})) {}
+  static Hit<double> at(double t) { return Hit<double>{t, t, 0, 0, t, t, 0.0}; }
+};
+
+TEST(IntersectPhases, PointMergeTellsTheSamePointFromOneRegion) {
+  NearRegion s;
+  const auto lp = loops(s.A, s.B, s.tol);
+  PointMerge<double> m{s.A, s.B, lp, s.tol};
+  m.keep(NearRegion::at(0.5 - 5e-6));
+  // 1e-7 apart: within merge_fraction (1e-6 of the pieces' length 1) in both parameters.
+  EXPECT_TRUE(m.same_point(NearRegion::at(0.5 - 5e-6 + 1e-7), 0));
+  // The other crossing, 1e-5 apart: not the same point, but of the same near region (the
+  // curves 1e-10 apart half way); 1e-2 away, beyond 1e3 merge_fraction: neither.
+  EXPECT_FALSE(m.same_point(NearRegion::at(0.5 + 5e-6), 0));
+  EXPECT_TRUE(m.one_region(NearRegion::at(0.5 + 5e-6), 0));
+  EXPECT_FALSE(m.one_region(NearRegion::at(0.51), 0));
+  // Both crossings (tangents 2e-5 apart, beyond crossing_noise; distance 0): crossings.
+  EXPECT_TRUE(m.crossing(m.kept[0]));
+}
+
+TEST(IntersectPhases, PointMergeMakesTwoCrossingsOfOneRegionOneTouchAtThePeak) {
+  NearRegion s;
+  const auto lp = loops(s.A, s.B, s.tol);
+  PointMerge<double> m{s.A, s.B, lp, s.tol};
+  m.keep(NearRegion::at(0.5 - 5e-6));
+  EXPECT_TRUE(m.merge_into(NearRegion::at(0.5 + 5e-6), 0));
+  ASSERT_EQ(m.kept.size(), 1u);
+  // One touch where the separation peaks: x = 0, t = 1/2 on both (touch_in: regula falsi
+  // on the tangents' cross product, to the resolution of the parameters about 1e-12 here).
+  EXPECT_TRUE(m.kept[0].touch);
+  EXPECT_NEAR(m.kept[0].ta, 0.5, 1e-9);
+  EXPECT_NEAR(m.kept[0].tb, 0.5, 1e-9);
+  // Its span: from one crossing to the other.
+  EXPECT_EQ(m.spans[0].ta0, 0.5 - 5e-6);
+  EXPECT_EQ(m.spans[0].ta1, 0.5 + 5e-6);
+}
+
+TEST(IntersectPhases, PointMergeKeepsTheMiddleOfTwinsAndTheCloserOfTwo) {
+  // The diagonals' crossing seen three times, each common to rounding (distance 0): twins,
+  // the middle one in ta kept.
+  Both s(pieces(B2{{0, 0}, {2, 2}}), pieces(B2{{0, 2}, {2, 0}}));
+  const auto lp = loops(s.A, s.B, s.tol);
+  PointMerge<double> m{s.A, s.B, lp, s.tol};
+  auto hit = [](double ta, double distance) { return Hit<double>{ta, 0.5, 0, 0, ta, 0.5, distance}; };
+  m.keep(hit(0.5, 0));
+  m.merge_same(hit(0.5 + 2e-16, 0), 0);
+  m.merge_same(hit(0.5 - 2e-16, 0), 0);
+  EXPECT_EQ(m.twins[0].size(), 2u);
+  m.middle_twins();
+  EXPECT_EQ(m.kept[0].ta, 0.5);
+  // Not common to rounding (distance above 1e-3 tol): the closer one is kept, no twins.
+  PointMerge<double> n{s.A, s.B, lp, s.tol};
+  n.keep(hit(0.5, s.tol / 2));
+  n.merge_same(hit(0.5 + 1e-12, s.tol / 4), 0);
+  n.merge_same(hit(0.5 - 1e-12, s.tol / 3), 0);
+  EXPECT_EQ(n.kept[0].ta, 0.5 + 1e-12);
+  EXPECT_TRUE(n.twins[0].empty());
 }
 
 TEST(IntersectPhases, AdmitEdgesAddsAnEdgePointOnlyWhereNothingStandsForItsRegion) {

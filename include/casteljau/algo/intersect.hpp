@@ -999,24 +999,10 @@ struct MergedPoints {
   std::vector<Hit<T>> edges;
 };
 
-/// Phase 5: the points of the arcs merged into one per near region. For a
-/// self-intersection each pair is ordered ta <= tb. Then, in the order of ta: points inside
-/// an overlap are dropped (in_overlap); for a self-intersection, points where consecutive
-/// arcs join, the closing point and cusps (a "loop" smaller than 100 tol) too; points from
-/// edge seeds are set aside; every other point merges into a kept one of the same near
-/// region (see the comments inside: the same point within merge_fraction of the pieces;
-/// two crossings between which the curves stay within tol are one touch, at the peak of
-/// the separation; a crossing and a touch of one region are the crossing) or is kept.
-/// Linear in the number of points (each is compared with the kept points of a window).
+/// Phase 5, step 1: the points in the order of ta; for a self-intersection each pair first
+/// ordered ta <= tb (its pieces and piece parameters with it).
 template <class T>
-MergedPoints<T> merge_points(const Prepared<T>& A, const Prepared<T>& B, bool self, std::vector<Hit<T>> hits,
-                             const std::vector<CurveOverlap<T>>& overlaps, const Loops<T>& lp, T tol) {
-  const Pieces<T, 2>& ca = *A.curve;
-  const Pieces<T, 2>& cb = *B.curve;
-  const Loop<T>&loop_a = lp.a, &loop_b = lp.b;
-  const bool closed_a = loop_a.closed;
-  const Interval<T> dom_a = loop_a.dom;
-  const T la = ca.domain().length();
+void order_hits(std::vector<Hit<T>>& hits, bool self) {
   if (self) {
     for (auto& h : hits) {
       if (h.ta > h.tb) {
@@ -1027,133 +1013,209 @@ MergedPoints<T> merge_points(const Prepared<T>& A, const Prepared<T>& B, bool se
     }
   }
   std::sort(hits.begin(), hits.end(), [](const auto& x, const auto& y) { return x.ta < y.ta; });
+}
+
+/// Phase 5, step 2 (self-intersections): whether the point (ta <= tb) is the curve
+/// meeting itself where consecutive arcs join, at its closing point, or at a cusp: none is
+/// a self-intersection. A "loop" whose extent (the control boxes of the curve between ta
+/// and tb) is below the near-miss distance times 100 is one of these at the resolution of
+/// double.
+template <class T>
+bool trivial_self_contact(const Prepared<T>& A, const Hit<T>& h, T tol) {
+  const Pieces<T, 2>& ca = *A.curve;
+  if (h.tb - h.ta <= T(1e-12) * ca.domain().length()) return true;
+  const Interval<T> dom = ca.domain();
+  if (h.ta == dom.lo && h.tb == dom.hi) return true;
+  Box<T, 2> loop = Box<T, 2>::empty_box();
+  ca.for_each_piece({h.ta, h.tb}, [&](std::size_t p, const auto&, const Interval<T>& own) {
+    if (own.hi > own.lo) loop.add(std::visit([&](const auto& x) { return part(x, own.lo, own.hi).control_bounds(); }, A.unit[p]));
+    return loop.empty() || diagonal(loop) <= 100 * tol;  // beyond: a loop, no need to see the rest of it
+  });
+  return !loop.empty() && diagonal(loop) <= 100 * tol;
+}
+
+/// Phase 5, step 3: the points kept so far, one per near region, and how a new point
+/// merges into one of them. Each kept point has its twins (points merged into it, all
+/// common to rounding: the middle one in ta is kept at the end, middle_twins) and its
+/// touch span (the extreme points of its touch region).
+template <class T>
+struct PointMerge {
+  const Prepared<T>& A;
+  const Prepared<T>& B;
+  const Loops<T>& lp;
+  T tol;
+  std::vector<Hit<T>> kept{};
+  std::vector<std::vector<Hit<T>>> twins{};
+  std::vector<TouchSpan<T>> spans{};
+
+  /// Common to rounding: within 1e-3 of the near-miss distance.
+  [[nodiscard]] T exact() const { return T(1e-3) * tol; }
+
+  /// A common point at which the curves cross (common to rounding, tangents apart by more
+  /// than crossing_noise), not a touch.
+  [[nodiscard]] bool crossing(const Hit<T>& x) const {
+    return x.distance <= exact() &&
+           std::abs(cross(direction(A.unit[x.pa], x.sa), direction(B.unit[x.pb], x.sb))) > crossing_noise<T>;
+  }
+
+  /// The touch span sp widened by h's parameters (taken next to the span's, round the
+  /// closing point of a closed curve).
+  [[nodiscard]] TouchSpan<T> widen(TouchSpan<T> sp, const Hit<T>& h) const {
+    const T hta = sp.ta0 + lp.a.shortest(h.ta - sp.ta0), htb = sp.tb0 + lp.b.shortest(h.tb - sp.tb0);
+    if (hta < sp.ta0) {
+      sp.ta0 = hta;
+      sp.tb0 = htb;
+    }
+    if (hta > sp.ta1) {
+      sp.ta1 = hta;
+      sp.tb1 = htb;
+    }
+    return sp;
+  }
+
+  /// Whether h is kept point ki seen again: within merge_fraction of their pieces'
+  /// parameter lengths in both parameters and within 1e4 tol in the plane.
+  [[nodiscard]] bool same_point(const Hit<T>& h, std::size_t ki) const {
+    const Hit<T>& k = kept[ki];
+    const T ma = T(merge_fraction) * break_length(*A.curve, h.pa), mb = T(merge_fraction) * break_length(*B.curve, h.pb);
+    return std::abs(lp.a.shortest(h.ta - k.ta)) <= ma && std::abs(lp.b.shortest(h.tb - k.tb)) <= mb &&
+           distance(at(A.unit[k.pa], k.sa), at(A.unit[h.pa], h.sa)) <= 1e4 * tol;
+  }
+
+  /// h merged into kept point ki, the same point: a touch is sought again over its span
+  /// widened by h; two points common to rounding (a crossing at a tiny angle, seen from
+  /// neighbouring parts with roots blurred by eps / angle) are twins; else the closer one.
+  void merge_same(const Hit<T>& h, std::size_t ki) {
+    Hit<T>& k = kept[ki];
+    if (k.touch) {
+      spans[ki] = widen(spans[ki], h);
+      if (auto t = touch_in(*A.curve, A, lp.a, *B.curve, B, lp.b, spans[ki], tol)) k = *t;
+    } else if (h.distance <= exact() && k.distance <= exact()) {
+      twins[ki].push_back(h);
+    } else if (h.distance < k.distance) {
+      k = h;
+      twins[ki].clear();
+    }
+  }
+
+  /// Whether h and kept point ki are two points of one near region: within 1e3
+  /// merge_fraction of their pieces in both parameters, the curves within the near-miss
+  /// distance half way between them.
+  [[nodiscard]] bool one_region(const Hit<T>& h, std::size_t ki) const {
+    const Hit<T>& k = kept[ki];
+    const T ma = T(merge_fraction) * break_length(*A.curve, h.pa), mb = T(merge_fraction) * break_length(*B.curve, h.pb);
+    const T dta = lp.a.shortest(h.ta - k.ta), dtb = lp.b.shortest(h.tb - k.tb);
+    if (!(std::abs(dta) <= T(1e3) * ma && std::abs(dtb) <= T(1e3) * mb)) return false;
+    const T mta = lp.a.wrap(k.ta + dta / 2), mtb = lp.b.wrap(k.tb + dtb / 2);
+    return distance_near(*B.curve, B, unit_at(*A.curve, A, mta), mtb) <= tol;
+  }
+
+  /// h merged into kept point ki of its near region: two crossings between which the
+  /// curves stay within the near-miss distance (the separation peaks between them) are
+  /// one touch at that resolution, reported once, as tangent, where the separation peaks
+  /// (touch_in), or at the middle when that cannot be located; a touch region widened by
+  /// h sought again; a crossing and a touch of one near region (the curves cross, then
+  /// come within the distance again without crossing back) are one point, the crossing;
+  /// two touches, the closer one.
+  void merge_region(const Hit<T>& h, std::size_t ki) {
+    Hit<T>& k = kept[ki];
+    const bool pair = !k.touch && crossing(k) && crossing(h);
+    if (k.touch || pair) {
+      spans[ki] = widen(k.touch ? spans[ki] : TouchSpan<T>{k.ta, k.tb, k.ta, k.tb}, h);
+      if (auto t = touch_in(*A.curve, A, lp.a, *B.curve, B, lp.b, spans[ki], tol)) {
+        k = *t;
+      } else if (pair) {  // not located (no sign change of g): at the middle
+        const T mta = lp.a.wrap(k.ta + lp.a.shortest(h.ta - k.ta) / 2), mtb = lp.b.wrap(k.tb + lp.b.shortest(h.tb - k.tb) / 2);
+        const auto a = A.curve->locate(mta), b = B.curve->locate(mtb);
+        k = Hit<T>{mta, mtb, a.index, b.index, a.t, b.t, k.distance, true};
+      }
+    } else if (crossing(h) || (!crossing(k) && h.distance < k.distance)) {
+      k = h;
+    }
+    twins[ki].clear();
+  }
+
+  /// h merged into kept point ki if it is the same point or of its near region.
+  bool merge_into(const Hit<T>& h, std::size_t ki) {
+    if (same_point(h, ki)) {
+      merge_same(h, ki);
+      return true;
+    }
+    if (one_region(h, ki)) {
+      merge_region(h, ki);
+      return true;
+    }
+    return false;
+  }
+
+  /// h as a new kept point.
+  void keep(const Hit<T>& h) {
+    kept.push_back(h);
+    twins.emplace_back();
+    spans.push_back({h.ta, h.tb, h.ta, h.tb});
+  }
+
+  /// Each kept point with twins replaced by the middle one in ta of it and its twins.
+  void middle_twins() {
+    for (std::size_t ki = 0; ki < kept.size(); ++ki) {
+      if (twins[ki].empty()) continue;
+      twins[ki].push_back(kept[ki]);
+      std::sort(twins[ki].begin(), twins[ki].end(), [](const auto& x, const auto& y) { return x.ta < y.ta; });
+      kept[ki] = twins[ki][(twins[ki].size() - 1) / 2];
+    }
+  }
+};
+
+/// Phase 5: the points of the arcs merged into one per near region. In the order of ta
+/// (order_hits): points inside an overlap are dropped (in_overlap); for a
+/// self-intersection, points where consecutive arcs join, the closing point and cusps
+/// (trivial_self_contact); points from edge seeds are set aside; every other point merges
+/// into a kept one of the same near region (PointMerge: the same point within
+/// merge_fraction of the pieces; two crossings between which the curves stay within tol
+/// are one touch, at the peak of the separation; a crossing and a touch of one region are
+/// the crossing) or is kept. Linear in the number of points (each is compared with the
+/// kept points of a window).
+template <class T>
+MergedPoints<T> merge_points(const Prepared<T>& A, const Prepared<T>& B, bool self, std::vector<Hit<T>> hits,
+                             const std::vector<CurveOverlap<T>>& overlaps, const Loops<T>& lp, T tol) {
+  const Pieces<T, 2>& ca = *A.curve;
+  const Pieces<T, 2>& cb = *B.curve;
+  order_hits(hits, self);
   MergedPoints<T> out;
-  std::vector<Hit<T>>& kept = out.kept;
-  std::vector<Hit<T>>& edges = out.edges;
+  PointMerge<T> m{A, B, lp, tol};
   // Hits merge only with kept points within 1e3 merge_fraction of the longest piece of a in
-  // ta (see below); kept stays sorted by ta to within that window (a merge moves a kept
-  // point towards the later hit), so each hit is compared with the kept points from 4
-  // windows back only: linear in the number of points, not quadratic (a polyline crossing
-  // itself 10^5 times).
+  // ta (see PointMerge::one_region); kept stays sorted by ta to within that window (a merge
+  // moves a kept point towards the later hit), so each hit is compared with the kept points
+  // from 4 windows back only: linear in the number of points, not quadratic (a polyline
+  // crossing itself 10^5 times).
   T longest_a = 0;
   for (std::size_t p = 0; p < ca.size(); ++p) longest_a = std::max(longest_a, break_length(ca, p));
   const T window = T(1e3) * T(merge_fraction) * longest_a;
-  std::vector<std::vector<Hit<T>>> twins;  // per kept point: points merged into it, all common to rounding
-  std::vector<TouchSpan<T>> spans;  // per kept point: the extreme points of its touch region
-  const T exact = T(1e-3) * tol;
-  // A common point at which the curves cross (common to rounding, tangents apart by more
-  // than crossing_noise), not a touch.
-  auto crossing = [&](const Hit<T>& x) {
-    return x.distance <= exact && std::abs(cross(direction(A.unit[x.pa], x.sa), direction(B.unit[x.pb], x.sb))) > crossing_noise<T>;
-  };
   for (const auto& h : hits) {
     // Inside (or at the end of) an overlap: part of it, not an isolated point.
     if (in_overlap(h, overlaps, ca, cb, self)) continue;
-    if (self) {
-      // The curve meets itself where consecutive arcs join, at its closing point, and
-      // at a cusp: none is a self-intersection. A "loop" whose extent is below the
-      // near-miss distance (x 100) is one of these at the resolution of double.
-      if (h.tb - h.ta <= T(1e-12) * la) continue;
-      const Interval<T> dom = ca.domain();
-      if (h.ta == dom.lo && h.tb == dom.hi) continue;
-      Box<T, 2> loop = Box<T, 2>::empty_box();
-      ca.for_each_piece({h.ta, h.tb}, [&](std::size_t p, const auto&, const Interval<T>& own) {
-        if (own.hi > own.lo) loop.add(std::visit([&](const auto& x) { return part(x, own.lo, own.hi).control_bounds(); }, A.unit[p]));
-        return loop.empty() || diagonal(loop) <= 100 * tol;  // beyond: a loop, no need to see the rest of it
-      });
-      if (!loop.empty() && diagonal(loop) <= 100 * tol) continue;
-    }
+    if (self && trivial_self_contact(A, h, tol)) continue;
     if (h.edge) {
-      edges.push_back(h);
+      out.edges.push_back(h);
       continue;
     }
-    // h merges into kept point ki: the same point, or two points of one near region.
-    auto merge_into = [&](std::size_t ki) {
-      auto& k = kept[ki];
-      const T ma = T(merge_fraction) * break_length(ca, h.pa), mb = T(merge_fraction) * break_length(cb, h.pb);
-      const T dta = loop_a.shortest(h.ta - k.ta), dtb = loop_b.shortest(h.tb - k.tb);
-      const T da = std::abs(dta), db = std::abs(dtb);
-      // A point of a touch region already merged (see below): the touch is sought again
-      // over the span widened by it (h's parameters taken next to the span's).
-      auto widen = [&](TouchSpan<T> sp) {
-        const T hta = sp.ta0 + loop_a.shortest(h.ta - sp.ta0), htb = sp.tb0 + loop_b.shortest(h.tb - sp.tb0);
-        if (hta < sp.ta0) {
-          sp.ta0 = hta;
-          sp.tb0 = htb;
-        }
-        if (hta > sp.ta1) {
-          sp.ta1 = hta;
-          sp.tb1 = htb;
-        }
-        return sp;
-      };
-      if (da <= ma && db <= mb && distance(at(A.unit[k.pa], k.sa), at(A.unit[h.pa], h.sa)) <= 1e4 * tol) {
-        if (k.touch) {
-          spans[ki] = widen(spans[ki]);
-          if (auto t = touch_in(ca, A, loop_a, cb, B, loop_b, spans[ki], tol)) k = *t;
-        } else if (h.distance <= exact && k.distance <= exact) {
-          // Both common to rounding (a crossing at a tiny angle, seen from neighbouring parts
-          // with roots blurred by eps / angle): the middle one in ta is kept, below.
-          twins[ki].push_back(h);
-        } else if (h.distance < k.distance) {
-          k = h;
-          twins[ki].clear();
-        }
-        return true;
-      }
-      // Two crossings between which the curves stay within the near-miss distance (the
-      // separation peaks between them) are one touch at that resolution: reported once,
-      // as tangent, where the separation peaks (touch_in), or at the middle when that
-      // cannot be located.
-      if (da <= T(1e3) * ma && db <= T(1e3) * mb) {
-        const T mta = loop_a.wrap(k.ta + dta / 2), mtb = loop_b.wrap(k.tb + dtb / 2);
-        if (distance_near(cb, B, unit_at(ca, A, mta), mtb) <= tol) {
-          const bool pair = !k.touch && crossing(k) && crossing(h);
-          if (k.touch || pair) {
-            spans[ki] = widen(k.touch ? spans[ki] : TouchSpan<T>{k.ta, k.tb, k.ta, k.tb});
-            if (auto t = touch_in(ca, A, loop_a, cb, B, loop_b, spans[ki], tol)) {
-              k = *t;
-            } else if (pair) {  // not located (no sign change of g): at the middle
-              const auto a = ca.locate(mta), b = cb.locate(mtb);
-              k = Hit<T>{mta, mtb, a.index, b.index, a.t, b.t, k.distance, true};
-            }
-          } else if (crossing(h) || (!crossing(k) && h.distance < k.distance)) {
-            // A crossing and a touch of one near region (the curves cross, then come within
-            // the distance again without crossing back): one point, the crossing; two
-            // touches: the closer one.
-            k = h;
-          }
-          twins[ki].clear();
-          return true;
-        }
-      }
-      return false;
-    };
     bool merged = false;
-    std::size_t first = kept.size();
-    while (first > 0 && kept[first - 1].ta >= h.ta - 4 * window) --first;
-    for (std::size_t ki = first; ki < kept.size() && !merged; ++ki) merged = merge_into(ki);
+    std::size_t first = m.kept.size();
+    while (first > 0 && m.kept[first - 1].ta >= h.ta - 4 * window) --first;
+    for (std::size_t ki = first; ki < m.kept.size() && !merged; ++ki) merged = m.merge_into(h, ki);
     // On a closed curve a, the points at the start of its domain are next to h near its
     // end (the closing point: a point there is found at both ends of the domain).
-    if (closed_a && h.ta >= dom_a.hi - 4 * window) {
+    if (lp.a.closed && h.ta >= lp.a.dom.hi - 4 * window) {
       for (std::size_t ki = 0; ki < std::min<std::size_t>(first, 16) && !merged; ++ki)
-        if (std::abs(loop_a.shortest(kept[ki].ta - h.ta)) <= 4 * window) merged = merge_into(ki);
+        if (std::abs(lp.a.shortest(m.kept[ki].ta - h.ta)) <= 4 * window) merged = m.merge_into(h, ki);
     }
-    if (!merged) {
-      kept.push_back(h);
-      twins.emplace_back();
-      spans.push_back({h.ta, h.tb, h.ta, h.tb});
-    }
+    if (!merged) m.keep(h);
   }
-  for (std::size_t ki = 0; ki < kept.size(); ++ki) {
-    if (twins[ki].empty()) continue;
-    twins[ki].push_back(kept[ki]);
-    std::sort(twins[ki].begin(), twins[ki].end(), [](const auto& x, const auto& y) { return x.ta < y.ta; });
-    kept[ki] = twins[ki][(twins[ki].size() - 1) / 2];
-  }
+  m.middle_twins();
+  out.kept = std::move(m.kept);
   // Sorted for the search below: merges move points within the window, and one at the
   // closing point of a closed curve may have moved to the other end of its domain.
-  std::sort(kept.begin(), kept.end(), [](const auto& x, const auto& y) { return x.ta < y.ta; });
+  std::sort(out.kept.begin(), out.kept.end(), [](const auto& x, const auto& y) { return x.ta < y.ta; });
   return out;
 }
 

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -113,6 +115,41 @@ void projection_candidates(const Piece& c, const Point<T, D>& q, std::vector<T>&
     if (r.t > 0 && r.t < 1) ts.push_back(r.t);
 }
 
+/// The sign of the slope of the distance to q of a rational piece with extreme weights at
+/// its own parameter s in [0, 1], found on the piece itself rather than on its regular
+/// parts: a part that passes within 1e-16 of a corner of the control polygon has its
+/// control points rounded to the corner, so that the distance is constant on it to
+/// rounding and its candidates are its ends, which tie, while the extremum is well
+/// defined by the direction of the curve there (weights 1, 1e30, 1 and the point
+/// (1.5, 1.2): the closest point is at t = 0.387, where the curve is within 1e-30 of the
+/// corner (1, 1) and its tangent is normal to the way to q). `rel` is the piece moved so
+/// that q is the origin (and halved); the sign is that of g(s) = rel(s) . R'(s), R'
+/// without cancellation (RationalBezier::jet, its direction only). Cost O(n^2).
+template <class T, int D>
+int distance_slope(const RationalBezier<T, D>& rel, T s) {
+  const auto j = rel.jet(s, false);
+  const T g = dot(rel(s).to_vector(), j.r);
+  return g > 0 ? 1 : (g < 0 ? -1 : 0);
+}
+
+/// The sign change of distance_slope between lo < hi, where it is `before` at lo and
+/// -before at hi, bisected: in s, and geometrically while the bracket spans more than a
+/// factor of two (s ~ 1e-300 .. 1e-30 is resolved in about 70 steps). Returns the two
+/// neighbouring parameters about it (equal where the slope's sign is 0). At most 256
+/// steps.
+template <class T, int D>
+std::pair<T, T> bisect_slope(const RationalBezier<T, D>& rel, T lo, T hi, int before) {
+  for (int step = 0; step < 256; ++step) {
+    T m = lo + (hi - lo) / 2;
+    if (hi > 2 * lo) m = std::sqrt(std::max(lo, std::numeric_limits<T>::denorm_min())) * std::sqrt(hi);
+    if (!(m > lo && m < hi)) break;
+    const int g = distance_slope(rel, m);
+    if (g == 0) return {m, m};
+    (g == before ? lo : hi) = m;
+  }
+  return {lo, hi};
+}
+
 }  // namespace detail
 
 /// The point of the curve nearest to q over its whole domain (the farthest with
@@ -180,8 +217,10 @@ Projection<typename C::Scalar, C::dimension> project(const C& c, const Point<typ
       detail::projection_candidates<T, D>(parts[j].piece, q, ts, constant);
       std::sort(ts.begin(), ts.end());  // in the curve's order: parameters mapped back may round together
       all_constant = all_constant && constant;
-      for (T u : ts)
-        cand.push_back({p.lift(i, parts[j].map.t_of(u)), distance_at(rparts[j].piece, u), false, parts[j].piece(u)});
+      for (T u : ts) {
+        const T own = parts[j].map.t_of(u);
+        cand.push_back({p.lift(i, own), distance_at(rparts[j].piece, u), false, parts[j].piece(u), i, own});
+      }
     }
     if (all_constant) flat.push_back({p.lift(i, own), distance_at(rp, T(0))});
   });
@@ -216,6 +255,54 @@ Projection<typename C::Scalar, C::dimension> project(const C& c, const Point<typ
   const auto inside = [&](T t) {
     return std::any_of(r.intervals.begin(), r.intervals.end(), [&](const Interval<T>& iv) { return t >= iv.lo && t <= iv.hi; });
   };
+  // A run's best candidate from a part of a piece with extreme weights: located again on
+  // the piece, from the sign of the distance's slope there (detail::distance_slope), and
+  // taken if its distance ties (t within 1e-30 of 1 has no double of its own: the part's
+  // rounded image stays). The signs are taken at the piece's own parameters of the run's
+  // candidates and of those either side (the piece's ends where those are on other
+  // pieces); the extremum is the change of sign (from < 0 to > 0 for the closest point)
+  // nearest to the pick, bisected.
+  const auto refine_pick = [&](std::size_t first, std::size_t end, std::size_t pick) {
+    const std::size_t k = cand[pick].piece;
+    std::vector<T> at{T(0), T(1)};
+    for (std::size_t c = first > 0 ? first - 1 : first; c < std::min(end + 1, cand.size()); ++c)
+      if (cand[c].piece == k) at.push_back(cand[c].own);
+    std::sort(at.begin(), at.end());
+    at.erase(std::unique(at.begin(), at.end()), at.end());
+    std::visit(
+        [&](const auto& rp) {
+          if constexpr (requires { rp.jet(T(0), false); }) {
+            if (rp.degree() > detail::rational_jet_max_degree) return;
+            const int before = farthest ? 1 : -1;
+            std::vector<int> sg(at.size());
+            for (std::size_t x = 0; x < at.size(); ++x) sg[x] = detail::distance_slope(rp, at[x]);
+            std::optional<std::pair<T, T>> found;
+            T gap = std::numeric_limits<T>::infinity();
+            for (std::size_t x = 0; x < at.size(); ++x) {
+              std::optional<std::pair<T, T>> here;
+              if (sg[x] == 0) here = std::pair<T, T>{at[x], at[x]};
+              if (x + 1 < at.size() && sg[x] == before && sg[x + 1] == -before) here = std::pair<T, T>{at[x], at[x + 1]};
+              if (!here) continue;
+              const T g = std::max({T(0), here->first - cand[pick].own, cand[pick].own - here->second});
+              if (g < gap) {
+                gap = g;
+                found = here;
+              }
+            }
+            if (!found) return;
+            if (found->first < found->second) found = detail::bisect_slope(rp, found->first, found->second, before);
+            T s = found->first, d = distance_at(rp, s);
+            if (const T d2 = distance_at(rp, found->second); better(d2, d)) {
+              s = found->second;
+              d = d2;
+            }
+            if (!ties(d)) return;
+            const Point<T, D> point = std::visit([&](const auto& piece) { return piece(s); }, p.segments()[k]);
+            cand[pick] = {p.lift(k, s), d, false, point, k, s};
+          }
+        },
+        rel.segments()[k]);
+  };
   for (std::size_t i = 0; i < cand.size();) {
     if (!ties(cand[i].d)) {
       ++i;
@@ -227,6 +314,7 @@ Projection<typename C::Scalar, C::dimension> project(const C& c, const Point<typ
       in_interval = in_interval || inside(cand[j].t);
       if (better(cand[j].d, cand[pick].d)) pick = j;
     }
+    if (!in_interval && !cand[pick].exact) refine_pick(i, j, pick);
     i = j;
     if (in_interval) continue;  // the interval stands for it
     const T t = cand[pick].t;
