@@ -214,7 +214,9 @@ struct Sampled {
   std::vector<T> t;
   std::vector<Point<T, 2>> p;
 
-  /// The distance from q to the curve: the nearest sample, golden section on the squared
+  /// The distance from q to the curve: the nearest sample, then Gauss-Newton steps from it
+  /// (done when they settle inside the two sample intervals about it; most points), else
+  /// golden section on the squared
   /// distance over the two sample intervals about it (8 steps: 2% of their length), then
   /// five Gauss-Newton steps t -= (f - q) . v / |v|^2 (kept in the bracket), which
   /// converge at the rate distance x curvature (1e-5 and less for a point within the
@@ -861,12 +863,15 @@ double offset_segments_estimate(const Pieces<T, 2>& curve, T distance, T toleran
 /// of |1 - d kappa| below 1e-9) [Farouki90]. On each stretch the offset is smooth and runs with the
 /// curve (1 - d kappa > 0) or against it; its tangent is +-T(t), the curve's (its limit
 /// where the speed vanishes). Each stretch is approximated greedily: the longest cubic
-/// from the current parameter that is within the tolerance (halving, then six rounds of
-/// bisection), the cubic interpolating the offset's end points and tangent directions,
-/// with the handle lengths of a least-squares fit to 15 samples or of the Hermite cubic,
-/// whichever measures closer. The error is measured both ways (see detail::offset::
-/// hausdorff: 33 projected samples each way, the worst refined by a local maximisation),
-/// an estimate of the Hausdorff distance, not a bound.
+/// from the current parameter that is within the tolerance, the cubic interpolating the
+/// offset's end points and tangent directions, with the handle lengths of a least-squares
+/// fit to 15 samples or of the Hermite cubic, whichever is closer. The end is chosen by a
+/// cheap estimate, the error along the offset's normals at 32 parameters
+/// (detail::offset::screen, Tiller-Hanson's measure), with a model of its growth and a
+/// bracket (detail::offset::approximate); the chosen cubic is then measured both ways (see
+/// detail::offset::hausdorff: 33 projected samples each way, the worst refined by a local
+/// maximisation), an estimate of the Hausdorff distance, not a bound, and pulled back until
+/// that measure is within the tolerance.
 ///
 /// Joins. At each G0 corner of the input (a joint of pieces, or a cusp inside one, where
 /// the tangents differ by more than 1e-9 rad; at the closing point of a closed curve too)

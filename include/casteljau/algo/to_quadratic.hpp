@@ -577,8 +577,11 @@ void approximate_span(const Piece& piece, T s0, T s1, const Point<T, D>& p_start
 /// The error of each segment is measured as an upper bound of the Hausdorff distance to
 /// the part it replaces (detail::quadratic::error_bound: 33 samples with their nearest
 /// points on the quadratic and a second-derivative margin between samples; a bound for
-/// polynomial pieces, and for rational pieces with an estimated margin). max_error is the
-/// largest. Errors: InvalidArgument "tolerance" (not finite and > 0; more than
+/// polynomial pieces, and for rational pieces with an estimated margin), or for a
+/// polynomial part by the control points of the part minus the quadratic raised to its
+/// degree (Part::elevated_bound, a bound of the parametric distance), the smaller; the
+/// last segment of a span is taken on that cheap bound alone when it is within a tenth
+/// of the tolerance. max_error is the largest. Errors: InvalidArgument "tolerance" (not finite and > 0; more than
 /// max_segments segments needed).
 template <class C>
   requires detail::is_pieces<C>
