@@ -29,9 +29,6 @@ struct QuadraticChain {
 };
 
 namespace detail::quadratic {
-#ifdef OPSPEED_COUNT
-inline long n_attempt = 0, n_full = 0, n_samples = 0, n_newton = 0;
-#endif
 
 /// Samples per part in the error bound (to_quadratic): the margin between samples falls
 /// as 1 / N^2.
@@ -158,9 +155,6 @@ T error_bound(const Eval& c, const std::vector<std::array<Point<T, D>, 3>>& q, c
       if (!(gp > 0)) gp = dd;
       if (!(gp > 0)) break;
       const T nx = std::clamp(x - g / gp, T(0), T(1));
-#ifdef OPSPEED_COUNT
-      ++n_newton;
-#endif
       const bool close = std::abs(nx - x) <= T(1e-5);
       x = nx;
       if (close) break;
@@ -177,9 +171,6 @@ T error_bound(const Eval& c, const std::vector<std::array<Point<T, D>, 3>>& q, c
   };
   const auto foot = [&](int j, T guess) {
     const Point<T, D> p = c(T(j) / T(N));
-#ifdef OPSPEED_COUNT
-    ++n_samples;
-#endif
     T best = std::numeric_limits<T>::infinity(), at = 0;
     for (int i = 0; i < m; ++i) {
       const auto& qf = form[static_cast<std::size_t>(i)];
@@ -490,9 +481,6 @@ void approximate_span(const Piece& piece, T s0, T s1, const Point<T, D>& p_start
     if (last && p <= T(0.1) * tolerance) return Try{std::move(*q), dir1, p, true};
     part.second_derivative_hull(hull);
     const T e = std::min(p, error_bound<T, D>(part, *q, hull, tolerance));
-#ifdef OPSPEED_COUNT
-    ++n_attempt; n_full += e <= tolerance;
-#endif
     return Try{std::move(*q), dir1, e, e <= tolerance};
   };
   const auto accept = [&](const Try& r, T t1) {
