@@ -224,8 +224,12 @@ TEST(Offset, ParabolaLoopTrimmedAtItsSelfIntersection) {
   EXPECT_EQ(cut.loops_cut, 1u);
   EXPECT_LT(cut.segments.size(), raw.segments.size());
   bool meets = false;
-  // The cubics' crossing: each branch within tol, crossing at 120 degrees.
-  for (const auto& B : cut.segments) meets = meets || norm(B.points().back() - P2(0, 1.25)) < tol / std::sin(std::numbers::pi / 3);
+  // The cubics' crossing: each branch within tol of its exact branch, the branches
+  // crossing at 120 degrees (60 between the lines): the points within tol of both lines
+  // form a rhombus about the exact crossing whose farthest corners, on the bisector of the
+  // 60-degree angle, are tol / sin(30 degrees) = 2 tol away (tol / sin(60 degrees) holds
+  // only along the other diagonal).
+  for (const auto& B : cut.segments) meets = meets || norm(B.points().back() - P2(0, 1.25)) < tol / std::sin(std::numbers::pi / 6);
   EXPECT_TRUE(meets);
   // Everything kept is at least d - tol from the parabola (the loop's points are closer).
   const auto to_parabola = [](const P2& p) {

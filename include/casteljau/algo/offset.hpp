@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <numbers>
 #include <optional>
 #include <string>
@@ -70,6 +71,101 @@ Vector<T, 2> unit(const Vector<T, 2>& v) {
   return n > 0 ? v / n : Vector<T, 2>{};
 }
 
+/// The point at t of the Bézier form with control points P (de Casteljau on the stack up
+/// to degree 15, on the heap beyond): no allocation in the inner loops of the fit.
+template <class T>
+Point<T, 2> form_point(const std::vector<Point<T, 2>>& P, T t) {
+  const std::size_t n = P.size();
+  if (n == 0) return Point<T, 2>{};
+  if (n <= 4) {  // cubics and their hodographs, unrolled
+    Point<T, 2> out;
+    for (int k = 0; k < 2; ++k) {
+      if (n == 1) {
+        out[k] = P[0][k];
+      } else if (n == 2) {
+        out[k] = P[0][k] + t * (P[1][k] - P[0][k]);
+      } else if (n == 3) {
+        const T a = P[0][k] + t * (P[1][k] - P[0][k]), b = P[1][k] + t * (P[2][k] - P[1][k]);
+        out[k] = a + t * (b - a);
+      } else {
+        const T a = P[0][k] + t * (P[1][k] - P[0][k]), b = P[1][k] + t * (P[2][k] - P[1][k]), c = P[2][k] + t * (P[3][k] - P[2][k]);
+        const T d = a + t * (b - a), e = b + t * (c - b);
+        out[k] = d + t * (e - d);
+      }
+    }
+    return out;
+  }
+  std::array<T, 32> small;
+  std::vector<T> large;
+  T* w = small.data();
+  if (n > 16) large.resize(2 * n), w = large.data();
+  for (std::size_t i = 0; i < n; ++i) w[2 * i] = P[i][0], w[2 * i + 1] = P[i][1];
+  for (std::size_t k = 1; k < n; ++k)
+    for (std::size_t i = 0; i + k < n; ++i) {
+      w[2 * i] += t * (w[2 * i + 2] - w[2 * i]);
+      w[2 * i + 1] += t * (w[2 * i + 3] - w[2 * i + 1]);
+    }
+  return Point<T, 2>{w[0], w[1]};
+}
+
+/// A cubic Bézier's point and first two derivatives, from its control points (the
+/// candidates' inner loops).
+template <class T>
+struct CubicForm {
+  std::array<Point<T, 2>, 4> P;
+  explicit CubicForm(const Bezier<T, 2>& B) : P{B.points()[0], B.points()[1], B.points()[2], B.points()[3]} {}
+  Point<T, 2> at(T u) const {
+    Point<T, 2> out;
+    for (int k = 0; k < 2; ++k) {
+      const T a = P[0][k] + u * (P[1][k] - P[0][k]), b = P[1][k] + u * (P[2][k] - P[1][k]), c = P[2][k] + u * (P[3][k] - P[2][k]);
+      const T d = a + u * (b - a), e = b + u * (c - b);
+      out[k] = d + u * (e - d);
+    }
+    return out;
+  }
+  Vector<T, 2> d1(T u) const {
+    const T w = 1 - u;
+    Vector<T, 2> v;
+    for (int k = 0; k < 2; ++k) v[k] = 3 * (w * w * (P[1][k] - P[0][k]) + 2 * w * u * (P[2][k] - P[1][k]) + u * u * (P[3][k] - P[2][k]));
+    return v;
+  }
+  Vector<T, 2> d2(T u) const {
+    Vector<T, 2> v;
+    for (int k = 0; k < 2; ++k) v[k] = 6 * ((1 - u) * (P[2][k] - 2 * P[1][k] + P[0][k]) + u * (P[3][k] - 2 * P[2][k] + P[1][k]));
+    return v;
+  }
+};
+
+/// A piece's point and first two derivatives: for a polynomial piece from its control
+/// points and its first two hodographs, computed once (form_point, no allocation); for a
+/// rational piece through the curve's own evaluation.
+template <class T, class Piece>
+struct PieceForm {
+  static constexpr bool polynomial = std::is_same_v<Piece, Bezier<T, 2>>;
+  Piece c;
+  std::vector<Point<T, 2>> P, H1, H2;
+  explicit PieceForm(const Piece& piece) : c(piece) {
+    if constexpr (polynomial) {
+      P = piece.points();
+      const std::size_t n = P.size() - 1;
+      for (std::size_t k = 0; k < n; ++k) H1.push_back(Point<T, 2>::from_vector(T(n) * (P[k + 1] - P[k])));
+      for (std::size_t k = 0; k + 1 < n; ++k) H2.push_back(Point<T, 2>::from_vector(T(n - 1) * (H1[k + 1] - H1[k])));
+    }
+  }
+  Point<T, 2> at(T t) const {
+    if constexpr (polynomial) return form_point(P, t);
+    else return c(t);
+  }
+  Vector<T, 2> d1(T t) const {
+    if constexpr (polynomial) return form_point(H1, t).to_vector();
+    else return c.derivative_at(t, 1);
+  }
+  Vector<T, 2> d2(T t) const {
+    if constexpr (polynomial) return H2.empty() ? Vector<T, 2>{} : form_point(H2, t).to_vector();
+    else return c.derivative_at(t, 2);
+  }
+};
+
 /// One smooth source of the offset, parametrised on [lo, hi]: a stretch of the exact
 /// offset of one piece (between the piece's cusps and the offset's cusps) or a join arc.
 /// point(t), velocity(t) (its derivative) and tangent(t) (the unit direction of travel,
@@ -118,7 +214,9 @@ struct Sampled {
   std::vector<T> t;
   std::vector<Point<T, 2>> p;
 
-  /// The distance from q to the curve: the nearest sample, golden section on the squared
+  /// The distance from q to the curve: the nearest sample, then Gauss-Newton steps from it
+  /// (done when they settle inside the two sample intervals about it; most points), else
+  /// golden section on the squared
   /// distance over the two sample intervals about it (8 steps: 2% of their length), then
   /// five Gauss-Newton steps t -= (f - q) . v / |v|^2 (kept in the bracket), which
   /// converge at the rate distance x curvature (1e-5 and less for a point within the
@@ -132,6 +230,23 @@ struct Sampled {
       if (s < best) best = s, k = j;
     }
     const T lo = t[k > 0 ? k - 1 : 0], hi = t[std::min(k + 1, t.size() - 1)];
+    // First Gauss-Newton from the nearest sample alone: when it settles (a step below
+    // 1e-12 of the bracket) inside the bracket, that is the foot; otherwise (a step out of
+    // the bracket, no convergence) the golden section below starts over.
+    {
+      T x = t[k];
+      for (int it = 0; it < 6; ++it) {
+        const Vector<T, 2> vel = v(x);
+        const T vv = squared_norm(vel);
+        if (!(vv > 0)) break;
+        const T nx = x - dot(f(x) - q, vel) / vv;
+        if (!(nx >= lo && nx <= hi)) break;
+        const T dist = squared_norm(f(nx) - q);
+        best = std::min(best, dist);
+        if (std::abs(nx - x) <= T(1e-12) * (hi - lo)) return std::sqrt(best);
+        x = nx;
+      }
+    }
     auto [u, m] = golden_min([&](T x) { return squared_norm(f(x) - q); }, lo, hi, 8);
     best = std::min(best, m);
     for (int it = 0; it < 5; ++it) {
@@ -162,14 +277,15 @@ struct Sampled {
 template <class T>
 T hausdorff(const Bezier<T, 2>& B, const Source<T>& s, T a, T b, T stop_above) {
   constexpr int m = 32;
-  Sampled<T> exact{s.point, s.velocity, {}, {}}, cubic{[&](T u) { return B(u); }, [&](T u) { return B.derivative_at(u, 1); }, {}, {}};
+  const CubicForm<T> F(B);
+  Sampled<T> exact{s.point, s.velocity, {}, {}}, cubic{[&](T u) { return F.at(u); }, [&](T u) { return F.d1(u); }, {}, {}};
   exact.t.resize(m + 1), exact.p.resize(m + 1), cubic.t.resize(m + 1), cubic.p.resize(m + 1);
   for (int j = 0; j <= m; ++j) {
     const T f = T(j) / m;
     exact.t[j] = j == m ? b : a + (b - a) * f;
     exact.p[j] = s.point(exact.t[j]);
     cubic.t[j] = f;
-    cubic.p[j] = B(f);
+    cubic.p[j] = F.at(f);
   }
   std::array<T, m + 1> d1{}, d2{};
   T e1 = 0, e2 = 0;
@@ -185,14 +301,15 @@ T hausdorff(const Bezier<T, 2>& B, const Source<T>& s, T a, T b, T stop_above) {
   }
   const auto peak = [&](const Sampled<T>& from, const Sampled<T>& to, int j) {
     const T lo = from.t[j > 0 ? j - 1 : 0], hi = from.t[std::min(j + 1, m)];
-    // The top of a bump is flat: 16 steps (5e-4 of the two intervals, a 1/16 of the
-    // segment) find its height to about 1e-5 relative.
+    // The top of a bump is flat: 12 steps (3e-3 of the two intervals, a 1/16 of the
+    // segment: 2e-4 of the segment, a phase of 5e-3 rad on a bump a quarter of the segment
+    // long) find its height to about 1e-5 relative.
     return std::sqrt(-golden_min(
                           [&](T u) {
                             const T dd = to.distance(from.f(u));
                             return -dd * dd;
                           },
-                          lo, hi, 16)
+                          lo, hi, 12)
                           .second);
   };
   T worst = std::max(e1, e2);
@@ -238,18 +355,18 @@ std::vector<Bezier<T, 2>> candidates(const Source<T>& s, T a, T b) {
   T alpha = ha > 0 ? ha : norm(P3 - P0) / 3, beta = hb > 0 ? hb : norm(P3 - P0) / 3;
   bool ok = false;
   for (int round = 0; round < 8; ++round) {
-    const Bezier<T, 2> B({P0, P0 + T0 * alpha, P3 - T3 * beta, P3});
+    const CubicForm<T> B(Bezier<T, 2>({P0, P0 + T0 * alpha, P3 - T3 * beta, P3}));
     T a11 = 0, a12 = 0, a22 = 0, r1 = 0, r2 = 0;
     for (int j = 1; j <= m; ++j) {
       for (int it = 0; it < 3; ++it) {
-        const Vector<T, 2> e = B(u[j]) - q[j], d1 = B.derivative_at(u[j], 1), d2 = B.derivative_at(u[j], 2);
+        const Vector<T, 2> e = B.at(u[j]) - q[j], d1 = B.d1(u[j]), d2 = B.d2(u[j]);
         const T den = dot(d1, d1) + dot(e, d2);
         if (den > 0) u[j] = std::clamp(u[j] - dot(e, d1) / den, T(0), T(1));
       }
       const T v = u[j], w = 1 - v;
       const T b1 = 3 * v * w * w, b2 = 3 * v * v * w;
-      const Vector<T, 2> n = unit(left(B.derivative_at(v, 1)));
-      const T e = dot(n, B(v) - q[j]), ja = dot(n, T0) * b1, jb = -dot(n, T3) * b2;
+      const Vector<T, 2> n = unit(left(B.d1(v)));
+      const T e = dot(n, B.at(v) - q[j]), ja = dot(n, T0) * b1, jb = -dot(n, T3) * b2;
       a11 += ja * ja, a12 += ja * jb, a22 += jb * jb, r1 += ja * e, r2 += jb * e;
     }
     const T det = a11 * a22 - a12 * a12;
@@ -291,6 +408,68 @@ struct Raw {
     reversed.push_back(rev);
   }
 };
+
+/// A quick estimate of the distance between the cubic B and the source over [a, b], to
+/// choose where a cubic ends (the measured hausdorff below decides whether it is kept):
+/// the offset's error measured along its normals [Tiller-Hanson84; Elber-Lee-Kim97], at
+/// m = 32 interior parameters t_i of the source, as the signed distance
+/// lambda = (B(u) - O(t_i)) . N(t_i) where the normal line of the source at O(t_i) meets
+/// the cubic ((B(u) - O) . T(t_i) = 0, Newton from the last u, extrapolated); the largest
+/// |lambda|, its sample's neighbours fitted by a parabola for the top of the bump. Where the
+/// normal line misses the cubic the distance to the last point reached counts (never
+/// below the true distance). Stops above stop_above.
+template <class T>
+T screen(const Bezier<T, 2>& B, const Source<T>& s, T a, T b, T stop_above) {
+  constexpr int m = 32;
+  const CubicForm<T> F(B);
+  std::array<T, m + 2> err{};
+  T u = 0, du = T(1) / (m + 1);
+  T worst = 0;
+  int at = 0;
+  for (int i = 1; i <= m; ++i) {
+    const T t = a + (b - a) * T(i) / (m + 1);
+    const Point<T, 2> O = s.point(t);
+    const Vector<T, 2> Tt = s.tangent(t);
+    T x = std::clamp(u + du, T(0), T(1));
+    bool met = false;
+    for (int it = 0; it < 8; ++it) {
+      const T g = dot(F.at(x) - O, Tt), gp = dot(F.d1(x), Tt);
+      if (!(gp > 0)) break;
+      const T nx = std::clamp(x - g / gp, T(0), T(1));
+      const bool close = std::abs(nx - x) <= T(1e-12);
+      x = nx;
+      if (close) {
+        met = true;
+        break;
+      }
+    }
+    const Vector<T, 2> r = F.at(x) - O;
+    const T e = met ? std::abs(dot(r, left(Tt))) : norm(r);
+    err[static_cast<std::size_t>(i)] = e;
+    if (e > worst) worst = e, at = i;
+    if (worst > stop_above) return worst;
+    du = x - u, u = x;
+  }
+  if (at > 1 && at < m) {  // the parabola through the largest sample and its neighbours
+    const T y0 = err[static_cast<std::size_t>(at - 1)], y1 = err[static_cast<std::size_t>(at)], y2 = err[static_cast<std::size_t>(at + 1)];
+    const T den = y0 - 2 * y1 + y2;
+    if (den < 0) worst = std::max(worst, y1 - (y2 - y0) * (y2 - y0) / (8 * den));
+  }
+  return worst;
+}
+
+/// The candidate over [a, b] that screens best, and its screened error.
+template <class T>
+std::pair<Bezier<T, 2>, T> best_screened(const Source<T>& s, T a, T b, T stop_above) {
+  auto cs = candidates(s, a, b);
+  std::size_t best = 0;
+  T err = std::numeric_limits<T>::infinity();
+  for (std::size_t i = 0; i < cs.size(); ++i) {
+    const T e = screen(cs[i], s, a, b, std::min(stop_above, err));
+    if (e < err) err = e, best = i;
+  }
+  return {std::move(cs[best]), err};
+}
 
 /// The best candidate over [a, b] and its measured error (stop_above as hausdorff's).
 template <class T>
@@ -334,41 +513,74 @@ void approximate(const Source<T>& s, OffsetFit fit, Raw<T>& raw) {
       }
     }
   }
+  // Greedy: the farthest end b whose best candidate screens within the tolerance, found
+  // from a model of the error (growing as about the fifth power of the step on smooth
+  // parts: each next end proposed from the last screened error, the first from the last
+  // step) inside a bracket [lo, hi] (screened within, screened over; bisection where the
+  // model fails), until an end screens at 90% of the tolerance or more, or the bracket is
+  // within 1/64 of the step; then that candidate measured (hausdorff). When the measure
+  // exceeds the tolerance (the screen missed a bump), the other candidates are measured,
+  // then the end is pulled back by 1/8 of the step until one is within it.
   T a = s.lo;
+  T last_step = s.hi - s.lo;
   while (a < s.hi) {
-    auto [B, e] = best_fit(s, a, s.hi, tol, false);
-    T b = s.hi;
-    if (!(e <= tol)) {
-      // The longest step within the tolerance: halve until one fits, then bisect between
-      // it and the failed double (six rounds: the step within 1/64 of the longest).
-      T ok_b = a, bad_b = s.hi;
-      T step = (s.hi - a) / 2;
-      for (;;) {
-        if (step < min_step) {
+    const auto longest = [&](T b_max) {
+      T lo = a, hi = b_max;
+      bool hi_tested = false;
+      std::optional<Bezier<T, 2>> B;
+      T x = std::min(b_max, a + last_step);
+      for (int it = 0; it < 200; ++it) {
+        if (x - a < min_step) {
           throw InvalidArgument("tolerance", "cannot be met by cubics near the offset's parameter " + std::to_string(a) +
                                                  " of a piece (below the rounding of the computation): use a larger tolerance");
         }
-        auto f = best_fit(s, a, a + step, tol, false);
-        if (f.second <= tol) {
-          ok_b = a + step, B = std::move(f.first), e = f.second;
+        auto g = best_screened(s, a, x, tol);
+        const T e = g.second;
+        if (e <= tol) {
+          lo = x, B = std::move(g.first);
+          if (x == b_max || e >= T(0.9) * tol) break;
+        } else {
+          hi = x, hi_tested = true;
+        }
+        if (B && hi_tested && hi - lo <= (lo - a) / 64) break;
+        T next = std::numeric_limits<T>::quiet_NaN();
+        if (std::isfinite(e) && e > 0) next = a + (x - a) * std::pow(T(0.95) * tol / e, T(0.2));
+        if (!(next > lo)) next = lo + (hi - lo) / 2;
+        if (next >= hi) next = hi_tested ? lo + (hi - lo) / 2 : b_max;
+        if (!B && next > a + (x - a) / 2 && !(e <= tol)) next = std::min(next, a + (x - a) / 2 + (x - a) / 4);  // failing: shrink surely
+        if (next == x) break;
+        x = next;
+      }
+      if (!B) {
+        throw InvalidArgument("tolerance", "cannot be met by cubics near the offset's parameter " + std::to_string(a) +
+                                               " of a piece (below the rounding of the computation): use a larger tolerance");
+      }
+      return std::pair<T, Bezier<T, 2>>{lo, std::move(*B)};
+    };
+    auto [b, B] = longest(s.hi);
+    T e = hausdorff(B, s, a, b, tol);
+    while (!(e <= tol)) {
+      for (auto& c : candidates(s, a, b)) {  // the other candidates, measured
+        const T ec = hausdorff(c, s, a, b, tol);
+        if (ec <= tol) {
+          B = std::move(c), e = ec;
           break;
         }
-        bad_b = a + step;
-        step /= 2;
       }
-      for (int k = 0; k < 6; ++k) {
-        const T mid = (ok_b + bad_b) / 2;
-        auto f = best_fit(s, a, mid, tol, false);
-        if (f.second <= tol) {
-          ok_b = mid, B = std::move(f.first), e = f.second;
-        } else {
-          bad_b = mid;
-        }
+      if (e <= tol) break;
+      const T nb = a + (b - a) * T(0.875);
+      if (!(nb - a >= min_step)) {
+        throw InvalidArgument("tolerance", "cannot be met by cubics near the offset's parameter " + std::to_string(a) +
+                                               " of a piece (below the rounding of the computation): use a larger tolerance");
       }
-      b = ok_b;
+      b = nb;
+      auto g = best_screened(s, a, b, std::numeric_limits<T>::infinity());
+      B = std::move(g.first);
+      e = hausdorff(B, s, a, b, tol);
     }
     raw.max_error = std::max(raw.max_error, e);
     raw.push(std::move(B), s.reversed);
+    last_step = b - a;
     a = b;
   }
 }
@@ -460,9 +672,10 @@ template <class T, class Piece>
 std::vector<Stretch<T>> stretches(const Piece& c, T d, T tiny) {
   const int n = c.degree();
   const int M = std::max(64, 16 * (n + 1));
-  const auto speed = [&](T t) { return norm(c.derivative_at(t, 1)); };
+  const PieceForm<T, Piece> form(c);
+  const auto speed = [&](T t) { return norm(form.d1(t)); };
   const auto g = [&](T t) {  // 1 - d kappa
-    const Vector<T, 2> d1 = c.derivative_at(t, 1), d2 = c.derivative_at(t, 2);
+    const Vector<T, 2> d1 = form.d1(t), d2 = form.d2(t);
     const T s = norm(d1);
     return 1 - d * cross(d1, d2) / (s * s * s);
   };
@@ -542,15 +755,16 @@ template <class T, class Piece>
 Source<T> stretch_source(const Piece& c, const Stretch<T>& s, T d) {
   Source<T> src;
   const T sign = s.reversed ? T(-1) : T(1);
+  const auto form = std::make_shared<const PieceForm<T, Piece>>(c);
   const auto tan = [=](T t) -> Vector<T, 2> {
     if (t == s.lo) return s.t_lo;
     if (t == s.hi) return s.t_hi;
-    const Vector<T, 2> v = unit(c.derivative_at(t, 1));
+    const Vector<T, 2> v = unit(form->d1(t));
     return norm(v) > 0 ? v : (t - s.lo < s.hi - t ? s.t_lo : s.t_hi);
   };
-  src.point = [=](T t) { return c(t) + left(tan(t)) * d; };
+  src.point = [=](T t) { return form->at(t) + left(tan(t)) * d; };
   src.velocity = [=](T t) {
-    const Vector<T, 2> d1 = c.derivative_at(t, 1), d2 = c.derivative_at(t, 2);
+    const Vector<T, 2> d1 = form->d1(t), d2 = form->d2(t);
     const T sp = norm(d1);
     if (!(sp > 0)) return Vector<T, 2>{};
     return d1 * (1 - d * cross(d1, d2) / (sp * sp * sp));
@@ -649,12 +863,15 @@ double offset_segments_estimate(const Pieces<T, 2>& curve, T distance, T toleran
 /// of |1 - d kappa| below 1e-9) [Farouki90]. On each stretch the offset is smooth and runs with the
 /// curve (1 - d kappa > 0) or against it; its tangent is +-T(t), the curve's (its limit
 /// where the speed vanishes). Each stretch is approximated greedily: the longest cubic
-/// from the current parameter that is within the tolerance (halving, then six rounds of
-/// bisection), the cubic interpolating the offset's end points and tangent directions,
-/// with the handle lengths of a least-squares fit to 15 samples or of the Hermite cubic,
-/// whichever measures closer. The error is measured both ways (see detail::offset::
-/// hausdorff: 33 projected samples each way, the worst refined by a local maximisation),
-/// an estimate of the Hausdorff distance, not a bound.
+/// from the current parameter that is within the tolerance, the cubic interpolating the
+/// offset's end points and tangent directions, with the handle lengths of a least-squares
+/// fit to 15 samples or of the Hermite cubic, whichever is closer. The end is chosen by a
+/// cheap estimate, the error along the offset's normals at 32 parameters
+/// (detail::offset::screen, Tiller-Hanson's measure), with a model of its growth and a
+/// bracket (detail::offset::approximate); the chosen cubic is then measured both ways (see
+/// detail::offset::hausdorff: 33 projected samples each way, the worst refined by a local
+/// maximisation), an estimate of the Hausdorff distance, not a bound, and pulled back until
+/// that measure is within the tolerance.
 ///
 /// Joins. At each G0 corner of the input (a joint of pieces, or a cusp inside one, where
 /// the tangents differ by more than 1e-9 rad; at the closing point of a closed curve too)

@@ -155,7 +155,7 @@ T error_bound(const Eval& c, const std::vector<std::array<Point<T, D>, 3>>& q, c
       if (!(gp > 0)) gp = dd;
       if (!(gp > 0)) break;
       const T nx = std::clamp(x - g / gp, T(0), T(1));
-      const bool close = std::abs(nx - x) <= T(1e-3) * std::sqrt(std::numeric_limits<T>::epsilon());
+      const bool close = std::abs(nx - x) <= T(1e-5);
       x = nx;
       if (close) break;
     }
@@ -303,6 +303,29 @@ struct Part {
     return 0;
   }
 
+  /// An upper bound of the Fréchet (so the Hausdorff) distance between a polynomial part
+  /// and a single quadratic q, from the parametrisations alone: q degree-elevated to the
+  /// part's degree n, Q_k = sum_i C(2, i) C(n - 2, k - i) / C(n, k) q_i, and c(s) - Q(s) =
+  /// sum_k B_k(s) (c_k - Q_k), at most max_k |c_k - Q_k| (the Bernstein weights sum to 1).
+  /// Infinite for a rational part, a chain of two quadratics or degree above 15. Costs a
+  /// few operations per control point: cu2qu's test, against our G1 quadratic.
+  T elevated_bound(const std::vector<std::array<Point<T, D>, 3>>& q) const {
+    const std::size_t n = points.size() - 1;
+    if (!polynomial || q.size() != 1 || n < 2 || n > 15) return std::numeric_limits<T>::infinity();
+    const auto& a = q.front();
+    const T N = T(n * (n - 1));
+    T worst = 0;
+    for (std::size_t k = 0; k <= n; ++k) {
+      // The weights C(2, i) C(n - 2, k - i) / C(n, k): (n-k)(n-k-1), 2k(n-k), k(k-1) over n(n-1).
+      const T kk = T(k), r = T(n - k);
+      const T w0 = r * (r - 1) / N, w1 = T(2) * kk * r / N, w2 = kk * (kk - 1) / N;
+      Vector<T, D> d;
+      for (int c = 0; c < D; ++c) d[c] = points[k][c] - (w0 * a[0][c] + w1 * a[1][c] + w2 * a[2][c]);
+      worst = std::max(worst, norm(d));
+    }
+    return worst;
+  }
+
   /// Vectors whose convex hull holds c'' on [0, 1], into out (the margin of error_bound
   /// takes max |v - w| over them for |c'' - w|): n (n - 1) times the second differences
   /// for a polynomial (the second hodograph's control points: a bound); for a rational
@@ -345,10 +368,45 @@ std::vector<typename Piece::Scalar> cusps(const Piece& piece) {
   const int n = piece.degree();
   if (n < 2) return out;
   const int M = 16 * (n + 1);
+  // The speed |c'|: for a polynomial piece from its hodograph's control points, computed
+  // once (de Casteljau on the stack, no allocation); a rational piece through derivative_at.
+  constexpr int D = Piece::dimension;
+  std::vector<Point<T, D>> hodograph;
+  if constexpr (std::is_same_v<Piece, Bezier<T, D>>) {
+    const auto& P = piece.points();
+    for (std::size_t k = 0; k + 1 < P.size(); ++k) hodograph.push_back(Point<T, D>::from_vector(T(n) * (P[k + 1] - P[k])));
+    // No cusp when the hodograph's control polygon keeps away from the origin: its convex
+    // hull (which holds c' on [0, 1]) lies beyond a line at distance `low` from the origin,
+    // for the normal u of the line the mean of the control points or the nearest point of
+    // the chord H_0 H_n-1 to the origin; then |c'| >= low everywhere and the largest speed
+    // is at most the largest |H_k|, so when low > 0.06 max |H_k| no sampled minimum below
+    // would reach 0.05 of the largest sample (the margin covers rounding).
+    T big = 0;
+    for (const auto& h : hodograph) big = std::max(big, norm(h.to_vector()));
+    const Vector<T, D> chord = hodograph.back() - hodograph.front();
+    const T cc = squared_norm(chord);
+    Vector<T, D> mean{};
+    for (const auto& h : hodograph) mean = mean + h.to_vector();
+    const T lam = cc > 0 ? std::clamp(-dot(hodograph.front().to_vector(), chord) / cc, T(0), T(1)) : T(0);
+    for (const Vector<T, D>& dir : {mean, hodograph.front().to_vector() + lam * chord}) {
+      const Vector<T, D> u = unit(dir);
+      if (squared_norm(u) == 0) continue;
+      T low = std::numeric_limits<T>::infinity();
+      for (const auto& h : hodograph) low = std::min(low, dot(h.to_vector(), u));
+      if (low > T(0.06) * big) return out;
+    }
+  }
+  const auto sp = [&](T x) {
+    if constexpr (std::is_same_v<Piece, Bezier<T, D>>) {
+      return norm(bezier_point(hodograph, x).to_vector());
+    } else {
+      return norm(piece.derivative_at(x, 1));
+    }
+  };
   std::vector<T> speed(static_cast<std::size_t>(M) + 1);
   T top = 0;
   for (int j = 0; j <= M; ++j) {
-    speed[static_cast<std::size_t>(j)] = norm(piece.derivative_at(T(j) / T(M), 1));
+    speed[static_cast<std::size_t>(j)] = sp(T(j) / T(M));
     top = std::max(top, speed[static_cast<std::size_t>(j)]);
   }
   if (!(top > 0)) return out;
@@ -358,7 +416,6 @@ std::vector<typename Piece::Scalar> cusps(const Piece& piece) {
     T x0 = T(j - 1) / T(M), x3 = T(j + 1) / T(M);
     constexpr T g = T(0.6180339887498949L);
     T x1 = x3 - g * (x3 - x0), x2 = x0 + g * (x3 - x0);
-    const auto sp = [&](T x) { return norm(piece.derivative_at(x, 1)); };
     T f1 = sp(x1), f2 = sp(x2);
     for (int it = 0; it < 200 && x3 - x0 > T(4) * std::numeric_limits<T>::epsilon(); ++it) {
       if (f1 < f2) {
@@ -417,8 +474,13 @@ void approximate_span(const Piece& piece, T s0, T s1, const Point<T, D>& p_start
     if (squared_norm(d0) == 0) d0 = end_direction(part.points, true);
     auto q = tangent_chain(p0, d0, p2, dir1, part.end_speed(true), part.end_speed(false));
     if (!q) return Try{{}, dir1, std::numeric_limits<T>::infinity(), false};
+    // The cheap bound first (polynomial parts, one quadratic): when it meets the tolerance
+    // over the rest of the span with a wide margin (a tenth of it, so that the reported
+    // error stays informative), the part is taken without the sampled bound.
+    const T p = part.elevated_bound(*q);
+    if (last && p <= T(0.1) * tolerance) return Try{std::move(*q), dir1, p, true};
     part.second_derivative_hull(hull);
-    const T e = error_bound<T, D>(part, *q, hull, tolerance);
+    const T e = std::min(p, error_bound<T, D>(part, *q, hull, tolerance));
     return Try{std::move(*q), dir1, e, e <= tolerance};
   };
   const auto accept = [&](const Try& r, T t1) {
@@ -503,8 +565,11 @@ void approximate_span(const Piece& piece, T s0, T s1, const Point<T, D>& p_start
 /// The error of each segment is measured as an upper bound of the Hausdorff distance to
 /// the part it replaces (detail::quadratic::error_bound: 33 samples with their nearest
 /// points on the quadratic and a second-derivative margin between samples; a bound for
-/// polynomial pieces, and for rational pieces with an estimated margin). max_error is the
-/// largest. Errors: InvalidArgument "tolerance" (not finite and > 0; more than
+/// polynomial pieces, and for rational pieces with an estimated margin), or for a
+/// polynomial part by the control points of the part minus the quadratic raised to its
+/// degree (Part::elevated_bound, a bound of the parametric distance), the smaller; the
+/// last segment of a span is taken on that cheap bound alone when it is within a tenth
+/// of the tolerance. max_error is the largest. Errors: InvalidArgument "tolerance" (not finite and > 0; more than
 /// max_segments segments needed).
 template <class C>
   requires detail::is_pieces<C>
