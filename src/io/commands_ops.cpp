@@ -209,7 +209,7 @@ constexpr Command ops_family[] = {
      "curve: a path of quadratic bezier segments (3 points each), breaks at the curve's\n"
      "          parameters of the joints",
      R"(  echo '{"curve": {"type": "bezier", "points": [[0,0],[1,2],[3,2],[4,0]]}, "tolerance": 0.1}' | casteljau to_quadratic
-  {"curve":{"type":"path","segments":[{"type":"bezier","points":[[0.0,0.0],[1.145920186378826,2.291840372757652],[2.924262442471251,1.2367163775457746]]},{"type":"bezier","points":[[2.924262442471251,1.2367163775457746],[3.5745581702817137,0.8508836594365725],[4.0,0.0]]}],"breaks":[0.0,0.7094769766403242,1.0]}}
+  {"curve":{"type":"path","segments":[{"type":"bezier","points":[[0.0,0.0],[1.145920186378826,2.291840372757652],[2.924262442471251,1.2367163775457746]]},{"type":"bezier","points":[[2.924262442471251,1.2367163775457746],[3.5745581702817137,0.8508836594365725],[4.0,0.0]]}],"breaks":[0.0,0.7094769766403242,1.0]}})",
      to_quadratic_fields, to_quadratic},
     {"basis", "Values and derivatives of the basis functions of a kind",
      "The basis functions of `kind` at each t: bernstein B(i, n) (degree n), bspline N(i, p)\n"
