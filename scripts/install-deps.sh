@@ -18,6 +18,7 @@ build_pkgs=(
   libcpp-httplib-dev chromium chromium-driver python3-selenium  # casteljau serve (cpp-httplib) and its browser test (headless chromium)
   # HarfBuzz: the glyph command's GPOS pair kerning (issue 17)
   libharfbuzz-dev
+  adwaita-icon-theme  # real SVG drawings for import_svg's pixel comparison with librsvg (tests/cli/test_import_svg.py)
 )
 fuzz_pkgs=()
 bench_pkgs=(lib2geom-dev libocct-modeling-data-dev libocct-foundation-dev libocct-modeling-algorithms-dev libboost-dev libdouble-conversion-dev libgsl-dev libsisl-dev
