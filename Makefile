@@ -65,7 +65,7 @@ test-asan: deps
 # to the library; `make fuzz` runs libFuzzer with the same sanitizers. The suites of the
 # newer commands (offset, surfaces, the queries' extensions) run too: the fuzz corpus has
 # one seed per command, they reach their geometry.
-ASAN_SMOKE_TESTS = ^(fuzz_corpus_replay|cli\.hostile|cli_registry|cli_offset|cli_surfaces|cli_queries_ext)$$
+ASAN_SMOKE_TESTS = ^(fuzz_corpus_replay|cli\.hostile|cli_registry|cli_offset|cli_surfaces|cli_surface_mesh|cli_queries_ext)$$
 test-asan-smoke: deps
 	$(ASAN_CMAKE)
 	cmake --build $(ASAN_BUILD) -j $(JOBS) --target casteljau_cli casteljau_fuzz_replay
