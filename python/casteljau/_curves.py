@@ -18,7 +18,27 @@ import numpy as np
 from . import _casteljau
 from ._casteljau import Error
 
+
 __all__ = ["Curve", "Result", "Error", "curve_classes", "run"]
+
+
+def _json_object(obj: Any, args: tuple, fields: dict[str, Any]) -> dict[str, Any]:
+    """The JSON object of a generated class's constructor call (curves and surfaces): its
+    `_type`, the positional arguments in the order of its `_fields`, then the keywords;
+    Python's own TypeErrors for too many, unknown or repeated arguments."""
+    name, names = type(obj).__name__, obj._fields
+    if len(args) > len(names):
+        raise TypeError(f"{name}() takes at most {len(names)} positional arguments "
+                        f"({', '.join(names)}), got {len(args)}")
+    out: dict[str, Any] = {"type": obj._type}
+    out.update(zip(names, args))
+    for k, v in fields.items():
+        if k not in names:
+            raise TypeError(f"{name}() got an unexpected keyword argument {k!r} (fields: {', '.join(names)})")
+        if k in out:
+            raise TypeError(f"{name}() got multiple values for argument {k!r}")
+        out[k] = v
+    return out
 
 
 # ---------------------------------------------------------------------------------------
@@ -106,19 +126,7 @@ class Curve:
     def __init__(self, *args: Any, **fields: Any) -> None:
         if type(self) is Curve:
             raise TypeError("Curve is abstract: construct one of its subclasses or use Curve.from_json")
-        names = self._fields
-        if len(args) > len(names):
-            raise TypeError(f"{type(self).__name__}() takes at most {len(names)} positional arguments "
-                            f"({', '.join(names)}), got {len(args)}")
-        obj: dict[str, Any] = {"type": self._type}
-        obj.update(zip(names, args))
-        for k, v in fields.items():
-            if k not in names:
-                raise TypeError(f"{type(self).__name__}() got an unexpected keyword argument {k!r} "
-                                f"(fields: {', '.join(names)})")
-            if k in obj:
-                raise TypeError(f"{type(self).__name__}() got multiple values for argument {k!r}")
-            obj[k] = v
+        obj = _json_object(self, args, fields)
         self._c = _casteljau.Curve(obj)
         self._json = None
 

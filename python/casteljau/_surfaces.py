@@ -21,7 +21,7 @@ import numpy as np
 
 from . import _casteljau
 from ._casteljau import Error
-from ._curves import _CLASSES, _SURFACE_CLASSES, _doc, _simplify, functions
+from ._curves import _CLASSES, _SURFACE_CLASSES, _doc, _json_object, _simplify, functions
 
 __all__ = ["Surface", "surface_classes"]
 
@@ -48,19 +48,7 @@ class Surface:
     def __init__(self, *args: Any, **fields: Any) -> None:
         if type(self) is Surface:
             raise TypeError("Surface is abstract: construct one of its subclasses or use Surface.from_json")
-        names = self._fields
-        if len(args) > len(names):
-            raise TypeError(f"{type(self).__name__}() takes at most {len(names)} positional arguments "
-                            f"({', '.join(names)}), got {len(args)}")
-        obj: dict[str, Any] = {"type": self._type}
-        obj.update(zip(names, args))
-        for k, v in fields.items():
-            if k not in names:
-                raise TypeError(f"{type(self).__name__}() got an unexpected keyword argument {k!r} "
-                                f"(fields: {', '.join(names)})")
-            if k in obj:
-                raise TypeError(f"{type(self).__name__}() got multiple values for argument {k!r}")
-            obj[k] = v
+        obj = _json_object(self, args, fields)
         self._s = _casteljau.Surface(obj)
         self._json = None
 
