@@ -526,7 +526,8 @@ TEST(Fit, SmoothingGcvMinimisesTheDenseCriterion) {
     io::AnyFitRequest q;
     q.parametrization = Parametrization::uniform;
     q.smoothing = lambda;
-    const auto& c = std::get<BSpline<double, 1>>(io::fit(data, q).curve);
+    const io::AnyFit fit = io::fit(data, q);  // kept alive: c refers into it
+    const auto& c = std::get<BSpline<double, 1>>(fit.curve);
     std::vector<double> g;
     for (std::size_t i = 0; i < n; ++i) g.push_back(c(static_cast<double>(i) / static_cast<double>(n - 1))[0]);
     return g;
