@@ -155,9 +155,10 @@ struct Measured {
 
 /// The distance from p to S near (u, v): Gauss-Newton steps on |S - p|^2, clamped to the
 /// domain; the least distance met (each one that of a surface point: an upper bound).
-double newton(const Form& f, const std::array<double, 3>& p, double u, double v, double u0, double u1, double v0, double v1) {
+double newton(const Form& f, const std::array<double, 3>& p, double u, double v, double u0, double u1, double v0, double v1,
+              int steps = 8) {
   double best = 1e300;
-  for (int it = 0; it < 8; ++it) {
+  for (int it = 0; it < steps; ++it) {
     std::array<double, 3> su, sv;
     const auto s = eval(f, u, v, &su, &sv);
     const std::array<double, 3> e{p[0] - s[0], p[1] - s[1], p[2] - s[2]};
@@ -182,34 +183,17 @@ Measured measure(const Form& f, const Mesh& m, double tol_hint) {
       for (int j = 0; i + j <= 4; ++j) {
         const double a = i / 4.0, b = j / 4.0, c = 1 - a - b;
         std::array<double, 3> p{};
-        double u = 0, v = 0;
         for (int k = 0; k < 3; ++k) p[static_cast<std::size_t>(k)] = a * m.x[t[0]][k] + b * m.x[t[1]][k] + c * m.x[t[2]][k];
-        u = a * m.uv[t[0]][0] + b * m.uv[t[1]][0] + c * m.uv[t[2]][0];
-        v = a * m.uv[t[0]][1] + b * m.uv[t[1]][1] + c * m.uv[t[2]][1];
-        double best = 1e300;
-        for (int it = 0; it < 4; ++it) {
-          std::array<double, 3> su, sv;
-          const auto s = eval(f, u, v, &su, &sv);
-          const std::array<double, 3> e{p[0] - s[0], p[1] - s[1], p[2] - s[2]};
-          best = std::min(best, dist(p, s));
-          const double a11 = su[0] * su[0] + su[1] * su[1] + su[2] * su[2], a12 = su[0] * sv[0] + su[1] * sv[1] + su[2] * sv[2],
-                       a22 = sv[0] * sv[0] + sv[1] * sv[1] + sv[2] * sv[2];
-          const double b1 = su[0] * e[0] + su[1] * e[1] + su[2] * e[2], b2 = sv[0] * e[0] + sv[1] * e[1] + sv[2] * e[2];
-          const double det = a11 * a22 - a12 * a12;
-          if (!(std::abs(det) > 1e-300)) break;
-          u = std::clamp(u + (a22 * b1 - a12 * b2) / det, u0, u1);
-          v = std::clamp(v + (a11 * b2 - a12 * b1) / det, v0, v1);
-        }
-        best = std::min(best, dist(p, eval(f, u, v)));
+        const double u = a * m.uv[t[0]][0] + b * m.uv[t[1]][0] + c * m.uv[t[2]][0];
+        const double v = a * m.uv[t[0]][1] + b * m.uv[t[1]][1] + c * m.uv[t[2]][1];
+        double best = newton(f, p, u, v, u0, u1, v0, v1, 4);
         // Global fallback: a start at the interpolated (u, v) can be far from the foot
         // point (a pole vertex carries one (u, v) of the whole degenerate edge): again
         // from each vertex's u or v combined with the interpolated other one.
         if (best > 0.5 * tol_hint) {
-          const double ui = a * m.uv[t[0]][0] + b * m.uv[t[1]][0] + c * m.uv[t[2]][0];
-          const double vi = a * m.uv[t[0]][1] + b * m.uv[t[1]][1] + c * m.uv[t[2]][1];
           for (int s = 0; s < 6; ++s) {
             const auto& q = m.uv[t[s % 3]];
-            best = std::min(best, newton(f, p, s < 3 ? q[0] : ui, s < 3 ? vi : q[1], u0, u1, v0, v1));
+            best = std::min(best, newton(f, p, s < 3 ? q[0] : u, s < 3 ? v : q[1], u0, u1, v0, v1));
           }
         }
         r.max_deviation = std::max(r.max_deviation, best);

@@ -370,6 +370,19 @@ std::vector<double> missing_knots(const std::vector<double>& have, const std::ve
   return X;
 }
 
+/// A polynomial curve's form as a rational one with every weight 1 (its homogeneous
+/// control points: a coordinate 1 appended to each point).
+void make_homogeneous(CurveForm<double>& c) {
+  std::vector<double> P;
+  for (std::size_t i = 0; i < c.P.size(); i += c.dim) {
+    P.insert(P.end(), c.P.begin() + static_cast<std::ptrdiff_t>(i), c.P.begin() + static_cast<std::ptrdiff_t>(i + c.dim));
+    P.push_back(1.0);
+  }
+  c.P = std::move(P);
+  c.dim += 1;
+  c.rational = true;
+}
+
 /// The same degree (elevation), the same knots (insertion), the same rationality, the
 /// parameters mapped affinely onto the first curve's domain [cli.md: "curves are made
 /// compatible exactly"].
@@ -386,16 +399,7 @@ void make_compatible(std::vector<CurveForm<double>>& cs) {
     const std::size_t n = c.U.size() - static_cast<std::size_t>(c.p) - 1;
     const double a = c.U[static_cast<std::size_t>(c.p)], b = c.U[n];
     for (auto& x : c.U) x = x == a ? a0 : x == b ? b0 : a0 + (x - a) * ((b0 - a0) / (b - a));
-    if (rational && !c.rational) {
-      std::vector<double> P;
-      for (std::size_t i = 0; i < c.P.size(); i += c.dim) {
-        P.insert(P.end(), c.P.begin() + static_cast<std::ptrdiff_t>(i), c.P.begin() + static_cast<std::ptrdiff_t>(i + c.dim));
-        P.push_back(1.0);
-      }
-      c.P = std::move(P);
-      c.dim += 1;
-      c.rational = true;
-    }
+    if (rational && !c.rational) make_homogeneous(c);
     if (c.p < p) c = of_column(casteljau::detail::elevate(column(c), Direction::u, p - c.p));
   }
   std::vector<double> all;  // every knot with its largest multiplicity
@@ -929,17 +933,8 @@ AnySurface loft(const Args& a) {
 AnySurface coons_rational(std::vector<CurveForm<double>> cu, std::vector<CurveForm<double>> dv, const std::vector<CurveForm<double>>& all,
                           std::size_t dim, double u0, double u1, double v0, double v1) {
   const auto as_rational = [](std::vector<CurveForm<double>>& cs) {
-    for (auto& c : cs) {
-      if (c.rational) continue;
-      std::vector<double> P;
-      for (std::size_t i = 0; i < c.P.size(); i += c.dim) {
-        P.insert(P.end(), c.P.begin() + static_cast<std::ptrdiff_t>(i), c.P.begin() + static_cast<std::ptrdiff_t>(i + c.dim));
-        P.push_back(1.0);
-      }
-      c.P = std::move(P);
-      c.dim += 1;
-      c.rational = true;
-    }
+    for (auto& c : cs)
+      if (!c.rational) make_homogeneous(c);
   };
   as_rational(cu);
   as_rational(dv);
