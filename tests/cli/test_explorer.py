@@ -96,6 +96,9 @@ class ExplorerTest(unittest.TestCase):
         for _ in range(steps):
             chain = chain.move_by_offset(dx / steps, dy / steps)
         chain.release().perform()
+        # The page redraws its handles when the server answers: an element found before
+        # that is stale (the Hermite view's tangent tip was, in a run at load 8).
+        self.settle()
 
     def touch_drag(self, element, dx, dy):
         """The same with a touch pointer."""
@@ -110,6 +113,7 @@ class ExplorerTest(unittest.TestCase):
             actions.pointer_action.move_to_location(int(x + dx * k / 5), int(y + dy * k / 5))
         actions.pointer_action.pointer_up()
         actions.perform()
+        self.settle()
 
     def data_points(self, view):
         """{index: point} of every control point drawn in a view (handles and dependent
