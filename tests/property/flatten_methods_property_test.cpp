@@ -26,7 +26,8 @@ void check_within(const C& c, double tol, FlattenMethod m) {
   RC_ASSERT(poly.back() == c.points().back());
   // Dense samples (2000, plus 16 per segment) of the curve are within tolerance.
   const int S = 2000 + 16 * static_cast<int>(poly.size());
-  for (int i = 0; i <= S; ++i) RC_ASSERT(test::polyline_distance(c(static_cast<double>(i) / S), poly) <= tol);
+  test::PolylineWalk walk(poly);
+  for (int i = 0; i <= S; ++i) RC_ASSERT(walk.distance(c(static_cast<double>(i) / S), tol) <= tol);
 }
 
 // Random curves of degree 1..7 and random cubics through an affine image of the cusp cubic
