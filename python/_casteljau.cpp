@@ -23,6 +23,7 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <type_traits>
 #include <utility>
 #include <variant>
@@ -323,6 +324,148 @@ class Table final : public BatchEvaluator {
   SpanTable<double, D> table_;
 };
 
+/// Derivatives of order k (k = 0: points) of any curve through its exact Bézier pieces,
+/// polynomial or rational, of any degrees (paths, rational curves, the degrees above the
+/// SpanTable's; every curve's derivatives): the pieces' control points in flat arrays of
+/// run-time dimension (no template per curve type or dimension), each piece's hodographs
+/// of orders 0..k (rational: of its homogeneous form (w P, w)) computed once, the piece
+/// of a parameter found by a binary search (the previous piece tried first), and de
+/// Casteljau's algorithm at the local parameter; rational derivatives by the quotient
+/// rule [PT97, eq. 4.8]. Outside the domain the end pieces continue, as c(t).
+class PieceDerivatives final : public BatchEvaluator {
+ public:
+  /// The table of c's pieces for order k.
+  PieceDerivatives(const io::AnyCurve& c, int k) : k_(k) {
+    std::visit([&](const auto& p) { read(p); }, io::pieces(c));
+  }
+
+  bool evaluate(std::span<const double> t, double* out) const override {
+    if (!all_finite(t.data(), t.size())) return false;
+    const std::size_t m = starts_.size(), w = width(), d = static_cast<std::size_t>(d_), K = static_cast<std::size_t>(k_);
+    const double lo = breaks_.front(), hi = breaks_.back();
+    std::vector<double> scratch((max_degree_ + 1) * w), hd((K + 1) * w), cd((K + 1) * d);
+    std::size_t i = 0;
+    for (std::size_t j = 0; j < t.size(); ++j) {
+      const double u = t[j];
+      // The piece: the right one at an interior break, the last one at the end.
+      if (!(breaks_[i] <= u && (u < breaks_[i + 1] || i + 1 == m))) {
+        i = static_cast<std::size_t>(std::upper_bound(breaks_.begin() + 1, breaks_.end() - 1, u) - breaks_.begin()) - 1;
+      }
+      double s = (u - breaks_[i]) / (breaks_[i + 1] - breaks_[i]);
+      if (u >= lo && u <= hi) s = std::clamp(s, 0.0, 1.0);
+      const int n = degree_[i];
+      // The homogeneous derivatives of orders 0..k (rational), or of order k alone.
+      for (std::size_t r = rational_ ? 0 : K; r <= K; ++r) {
+        const int q = std::max(n - static_cast<int>(r), 0);
+        const double* P = coef_.data() + starts_[i] + offset(n, r) * w;
+        de_casteljau(P, q, s, scratch.data(), hd.data() + r * w);
+      }
+      double* o = out + j * d;
+      if (!rational_) {
+        std::copy_n(hd.data() + K * w, d, o);
+        continue;
+      }
+      // C^(r) = (A^(r) - sum_(i=1..r) C(r, i) w^(i) C^(r-i)) / w.
+      const double wt = hd[d];
+      for (std::size_t r = 0; r <= K; ++r) {
+        for (std::size_t x = 0; x < d; ++x) {
+          double a = hd[r * w + x];
+          double binom = 1;
+          for (std::size_t q = 1; q <= r; ++q) {
+            binom = binom * static_cast<double>(r - q + 1) / static_cast<double>(q);
+            a -= binom * hd[q * w + d] * cd[(r - q) * d + x];
+          }
+          cd[r * d + x] = a / wt;
+        }
+      }
+      std::copy_n(cd.data() + K * d, d, o);
+    }
+    return all_finite(out, t.size() * d);
+  }
+
+ private:
+  [[nodiscard]] std::size_t width() const { return static_cast<std::size_t>(d_) + (rational_ ? 1 : 0); }
+  /// Where order r's points start among a degree-n piece's (in points): orders 0..r-1
+  /// before it (rational), or order k alone.
+  [[nodiscard]] std::size_t offset(int n, std::size_t r) const {
+    if (!rational_) return 0;
+    std::size_t o = 0;
+    for (std::size_t q = 0; q < r; ++q) o += static_cast<std::size_t>(std::max(n - static_cast<int>(q), 0)) + 1;
+    return o;
+  }
+
+  /// The point at s of the degree-q Bézier curve P (q + 1 points of width() numbers).
+  void de_casteljau(const double* P, int q, double s, double* b, double* out) const {
+    const std::size_t w = width(), n1 = static_cast<std::size_t>(q) + 1;
+    std::copy_n(P, n1 * w, b);
+    const double r = 1 - s;
+    for (std::size_t level = 1; level < n1; ++level)
+      for (std::size_t i = 0; i + level < n1; ++i)
+        for (std::size_t x = 0; x < w; ++x) b[i * w + x] = r * b[i * w + x] + s * b[(i + 1) * w + x];
+    std::copy_n(b, w, out);
+  }
+
+  template <int D>
+  void read(const Pieces<double, D>& p) {
+    d_ = D;
+    breaks_ = p.breaks();
+    for (const auto& seg : p.segments())
+      if (std::holds_alternative<casteljau::RationalBezier<double, D>>(seg)) rational_ = true;
+    const std::size_t w = width(), K = static_cast<std::size_t>(k_);
+    for (std::size_t i = 0; i < p.segments().size(); ++i) {
+      // The homogeneous control points (w P, w), the weights scaled by a power of two
+      // (the largest in [0.5, 1): the curve is unchanged and w P cannot overflow).
+      std::vector<double> h;
+      std::visit(
+          [&]<class B>(const B& b) {
+            const auto& P = b.points();
+            double scale = 1;
+            if constexpr (std::is_same_v<B, casteljau::RationalBezier<double, D>>) {
+              int e = 0;
+              std::frexp(*std::max_element(b.weights().begin(), b.weights().end()), &e);
+              scale = std::ldexp(1.0, -e);
+            }
+            for (std::size_t j = 0; j < P.size(); ++j) {
+              double wj = 1;
+              if constexpr (std::is_same_v<B, casteljau::RationalBezier<double, D>>) wj = b.weights()[j] * scale;
+              for (int x = 0; x < D; ++x) h.push_back(rational_ ? wj * P[j][x] : P[j][x]);
+              if (rational_) h.push_back(wj);
+            }
+          },
+          p.segments()[i]);
+      const int n = static_cast<int>(h.size() / w) - 1;
+      max_degree_ = std::max<std::size_t>(max_degree_, static_cast<std::size_t>(n));
+      degree_.push_back(n);
+      starts_.push_back(coef_.size());
+      // Orders 0..k: the hodograph of order r + 1 is (n - r) (Q[j+1] - Q[j]) / h of order r's
+      // points Q (in the curve's parameter: the piece spans h of it); past the degree, one
+      // zero point.
+      const double len = breaks_[i + 1] - breaks_[i];
+      for (std::size_t r = 0; r <= K; ++r) {
+        if (rational_ || r == K) coef_.insert(coef_.end(), h.begin(), h.end());
+        const std::size_t q = h.size() / w - 1;
+        if (q == 0) {
+          std::fill(h.begin(), h.end(), 0.0);
+          continue;
+        }
+        std::vector<double> next(q * w);
+        for (std::size_t j = 0; j < q; ++j)
+          for (std::size_t x = 0; x < w; ++x) next[j * w + x] = static_cast<double>(q) * (h[(j + 1) * w + x] - h[j * w + x]) / len;
+        h = std::move(next);
+      }
+    }
+  }
+
+  int k_;
+  int d_ = 0;
+  bool rational_ = false;
+  std::vector<double> breaks_;
+  std::vector<int> degree_;          ///< per piece
+  std::vector<std::size_t> starts_;  ///< per piece: its first number in coef_
+  std::vector<double> coef_;
+  std::size_t max_degree_ = 0;
+};
+
 template <int D>
 std::unique_ptr<BatchEvaluator> evaluator_of(const io::AnyCurve& c) {
   if (const auto* s = std::get_if<CubicSpline<double, D>>(&c)) return std::make_unique<SortedMembers<CubicSpline<double, D>>>(*s);
@@ -402,13 +545,22 @@ class Curve {
       fast_ = batch_evaluator(*curve_);
       fast_built_ = true;
     }
+    const BatchEvaluator* path = k == 0 ? fast_.get() : nullptr;
+    if (path == nullptr && k <= max_table_order) {
+      // Derivatives, and points of the curves without a batch evaluation (rational ones,
+      // degrees above the SpanTable's): the pieces' table of order k, built once.
+      if (derivatives_.size() <= static_cast<std::size_t>(k)) derivatives_.resize(static_cast<std::size_t>(k) + 1);
+      auto& table = derivatives_[static_cast<std::size_t>(k)];
+      if (!table) table = std::make_unique<PieceDerivatives>(*curve_, k);
+      path = table.get();
+    }
     bool done = false;
     {
       py::gil_scoped_release release;
-      if (k == 0 && fast_) done = fast_->evaluate(ts, out);
+      if (path != nullptr) done = path->evaluate(ts, out);
       if (!done) {
-        // Small batches, derivatives, curves without a batch path, and the error of a
-        // parameter or point that is not finite.
+        // Orders above the tables', and the error of a parameter or a point that is not
+        // finite.
         const io::PointList pts = k == 0 ? io::evaluate(*curve_, ts) : io::derivatives(*curve_, ts, k);
         std::copy(pts.coords.begin(), pts.coords.end(), out);
       }
@@ -522,6 +674,9 @@ class Curve {
   mutable bool has_json_ = false;
   mutable std::unique_ptr<BatchEvaluator> fast_;
   mutable bool fast_built_ = false;
+  /// The order-k tables (PieceDerivatives), built at the first call of that order.
+  static constexpr int max_table_order = 16;
+  mutable std::vector<std::unique_ptr<BatchEvaluator>> derivatives_;
 };
 
 /// A surface read once from surface JSON (text, or a Python object).
@@ -556,6 +711,79 @@ class Surface {
     py::gil_scoped_release release;
     io::surface_points(surface_, u.data(), v.data(), static_cast<std::size_t>(u.size()), out);
     return result;
+  }
+
+  /// The eval command's answer at the rows of uv (n, 2) (finite; n >= 1), computed on the
+  /// arrays (io::surface_partials, the command's values, and its geometry): points,
+  /// partials {u, v, uu, uv, vv, ...} of orders 1..k, normals, gaussian, mean, principal
+  /// as numpy arrays (a list with None where a normal is undefined, as the command's
+  /// null). The command's checks and messages.
+  [[nodiscard]] py::dict eval(const Doubles& uv, int k, bool normal, bool curvature) const {
+    if (k < 0) throw InvalidArgument("derivatives", "derivative count must be >= 0, got " + std::to_string(k));
+    if (k > 64) throw InvalidArgument("derivatives", "derivative count must be <= 64, got " + std::to_string(k));
+    for (const auto& [on, field, what] : {std::tuple{normal, "normal", "normals"}, std::tuple{curvature, "curvature", "curvatures"}}) {
+      if (on && dim() != 3) throw InvalidArgument(field, std::string(what) + " need a 3-D surface, got " + std::to_string(dim()) + "-D");
+    }
+    if (uv.ndim() != 2 || uv.shape(1) != 2) throw InvalidArgument("uv", "must be an array of [u, v] pairs");
+    const int order = std::max(k, curvature ? 2 : normal ? 1 : 0);
+    const std::size_t n = static_cast<std::size_t>(uv.shape(0)), cd = static_cast<std::size_t>(dim()), K = static_cast<std::size_t>(order) + 1;
+    const std::size_t block = K * K * cd;
+    std::vector<double> u(n), v(n), d(n * block);
+    for (std::size_t i = 0; i < n; ++i) {
+      u[i] = uv.data()[2 * i];
+      v[i] = uv.data()[2 * i + 1];
+    }
+    std::vector<casteljau::detail::SurfaceGeometry<double>> g;
+    {
+      py::gil_scoped_release release;
+      io::surface_partials(surface_, u.data(), v.data(), n, order, d.data());
+      if (normal || curvature) {
+        g.resize(n);
+        for (std::size_t i = 0; i < n; ++i) {
+          const auto at = [&](std::size_t a, std::size_t b) { return d.data() + i * block + (a * K + b) * cd; };
+          g[i] = order >= 2 ? casteljau::detail::geometry<double>(at(1, 0), at(0, 1), at(2, 0), at(1, 1), at(0, 2))
+                            : casteljau::detail::geometry<double>(at(1, 0), at(0, 1), at(0, 0), at(0, 0), at(0, 0));
+        }
+      }
+    }
+    const auto rows = [&](std::size_t width, const auto& value) {
+      py::array_t<double> a(std::vector<py::ssize_t>{static_cast<py::ssize_t>(n), static_cast<py::ssize_t>(width)});
+      double* o = a.mutable_data();
+      for (std::size_t i = 0; i < n; ++i) value(i, o + i * width);
+      return a;
+    };
+    py::dict out;
+    out["points"] = rows(cd, [&](std::size_t i, double* o) { std::copy_n(d.data() + i * block, cd, o); });
+    if (k > 0) {
+      py::dict p;
+      for (std::size_t o = 1; o <= static_cast<std::size_t>(k); ++o) {
+        for (std::size_t b = 0; b <= o; ++b) {
+          const std::size_t a = o - b;
+          p[py::str(std::string(a, 'u') + std::string(b, 'v'))] =
+              rows(cd, [&](std::size_t i, double* x) { std::copy_n(d.data() + i * block + (a * K + b) * cd, cd, x); });
+        }
+      }
+      out["partials"] = p;
+    }
+    // A geometric field: an array of every point's value, or, where some normal is
+    // undefined, a list with None there (the command's null).
+    bool all_defined = true;
+    for (const auto& x : g) all_defined &= x.defined;
+    const auto field = [&](std::size_t width, const auto& value) -> py::object {
+      py::array a = rows(width, value);
+      if (width == 1) a = a.reshape(std::vector<py::ssize_t>{static_cast<py::ssize_t>(n)});
+      if (all_defined) return a;
+      py::list l;
+      for (std::size_t i = 0; i < n; ++i) l.append(g[i].defined ? py::object(a[py::int_(i)]) : py::object(py::none()));
+      return l;
+    };
+    if (normal) out["normals"] = field(3, [&](std::size_t i, double* o) { std::copy_n(g[i].normal, 3, o); });
+    if (curvature) {
+      out["gaussian"] = field(1, [&](std::size_t i, double* o) { *o = g[i].gaussian; });
+      out["mean"] = field(1, [&](std::size_t i, double* o) { *o = g[i].mean; });
+      out["principal"] = field(2, [&](std::size_t i, double* o) { o[0] = g[i].k1; o[1] = g[i].k2; });
+    }
+    return out;
   }
 
   [[nodiscard]] py::object run(const std::string& command, const py::dict& request, const std::string& field) const {
@@ -692,5 +920,6 @@ PYBIND11_MODULE(_casteljau, m) {
       .def("to_json", &Surface::to_json)
       .def("to_data", &Surface::to_data)
       .def("evaluate", &Surface::evaluate, py::arg("u"), py::arg("v"))
+      .def("eval", &Surface::eval, py::arg("uv"), py::arg("derivatives"), py::arg("normal"), py::arg("curvature"))
       .def("run", &Surface::run, py::arg("command"), py::arg("request"), py::arg("field") = "surface");
 }

@@ -29,4 +29,11 @@ struct AnySurface;  // io/surfaces.hpp
 /// InvalidArgument naming "u[j]" for a parameter pair that is not finite.
 void surface_points(const AnySurface& s, const double* u, const double* v, std::size_t n, double* out);
 
+/// The partial derivatives of total order 0..k at (u[j], v[j]), j < n, into out: n blocks
+/// of (k + 1)^2 s.dim() numbers in casteljau::detail::partials' layout (block j, entry
+/// (a (k + 1) + b) s.dim() + c: coordinate c of d^(a+b) S / du^a dv^b; zero where a + b >
+/// k), the eval command's values. Throws InvalidArgument naming "uv[j]" (a parameter pair
+/// that is not finite, a pole of a rational surface).
+void surface_partials(const AnySurface& s, const double* u, const double* v, std::size_t n, int k, double* out);
+
 }  // namespace casteljau::io
