@@ -256,3 +256,13 @@ def test_periodic_errors_and_integrals():
     ours, theirs = casteljau.CubicSpline(xp, yp, bc_type="periodic"), si.CubicSpline(xp, yp, bc_type="periodic")
     for a, b in ((-3.0, 12.0), (1.0, 2.0), (5.0, 7.0), (20.0, -9.5)):
         close(ours.integrate(a, b), theirs.integrate(a, b))
+
+
+def test_make_interp_spline_one_sided_conditions_are_refused_as_scipy():
+    # scipy 1.10's knots with end derivatives need both ends' conditions; 'not-a-knot' is
+    # not an end condition of make_interp_spline (CubicSpline has it, tested above).
+    for bc in ((None, [(1, 0.0)]), ("not-a-knot", [(1, 0.0)])):
+        with pytest.raises(ValueError):
+            si.make_interp_spline(X, Y, k=3, bc_type=bc)
+        with pytest.raises(casteljau.Error, match=r"^bc_type: "):
+            casteljau.make_interp_spline(X, Y, k=3, bc_type=bc)
