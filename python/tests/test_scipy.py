@@ -266,3 +266,16 @@ def test_make_interp_spline_one_sided_conditions_are_refused_as_scipy():
             si.make_interp_spline(X, Y, k=3, bc_type=bc)
         with pytest.raises(casteljau.Error, match=r"^bc_type: "):
             casteljau.make_interp_spline(X, Y, k=3, bc_type=bc)
+
+
+@pytest.mark.parametrize("k", [2, 4, 6])
+def test_make_interp_spline_even_degrees_with_knots(k):
+    # Even degrees with the caller's knots (k + 1 copies of each end, the interior from the
+    # data sites), as scipy: coefficients and values.
+    x = np.sort(RNG.random(12)) * 10
+    y = np.sin(x) + RNG.random(12)
+    h = (k + 1) // 2
+    t = np.r_[(x[0],) * (k + 1), x[h : h + len(x) - k - 1], (x[-1],) * (k + 1)]
+    ours, theirs = casteljau.make_interp_spline(x, y, k=k, t=t), si.make_interp_spline(x, y, k=k, t=t)
+    close(ours.c, theirs.c[: len(ours.c)])
+    close(ours(XS), theirs(XS))
