@@ -6,9 +6,11 @@
 //   python/casteljau/_curves.py and _surfaces.py generate the classes and methods;
 // - `Curve`: one io::AnyCurve read once from curve JSON (a cubic_spline of numpy arrays
 //   from the arrays, io/arrays.hpp), evaluated on numpy arrays (values through the
-//   library's batch evaluation, below, and derivatives; the GIL released), projected from the rows of an array by io::project, and the commands run
-//   on it (`run`);
-// - `Surface`: one io::AnySurface, evaluated at (u, v) arrays, and its commands;
+//   library's batch evaluation, below, derivatives and rational curves through the
+//   table of its pieces, PieceDerivatives; the GIL released), projected from the rows of
+//   an array by io::project, and the commands run on it (`run`);
+// - `Surface`: one io::AnySurface, evaluated at (u, v) arrays (points, and the eval
+//   command's fields through io::surface_partials), and its commands;
 // - `run(command, request)`: any command;
 // - `Error` (a ValueError): the library's InvalidArgument as "<where>: <what>", the
 //   command line's message.
@@ -473,12 +475,12 @@ std::unique_ptr<BatchEvaluator> evaluator_of(const io::AnyCurve& c) {
   if (auto table = SpanTable<double, D>::of(std::get<Pieces<double, D>>(io::pieces(c)))) {
     return std::make_unique<Table<D>>(std::move(*table));
   }
-  return nullptr;  // rational curves (NURBS: io::evaluate, whose batch member would instantiate
-                   // BSpline<double, D + 1>::evaluate up to D + 1 = 5 here), degrees above the table's
+  return nullptr;  // rational curves (NURBS' batch member would instantiate BSpline<double, D + 1>::evaluate
+                   // up to D + 1 = 5 here) and degrees above the table's: PieceDerivatives of order 0
 }
 
 /// The evaluator of c (which must outlive it), or nullptr when c has none (the caller uses
-/// io::evaluate). The types are named one by one per dimension rather than through a
+/// PieceDerivatives). The types are named one by one per dimension rather than through a
 /// visit of AnyCurve's 40 alternatives (compile time).
 std::unique_ptr<BatchEvaluator> batch_evaluator(const io::AnyCurve& c) {
   return io::dispatch_dimension(io::dimension(c), [&]<int D>() { return evaluator_of<D>(c); });
