@@ -242,6 +242,22 @@ def test_two_threads_evaluate_at_once():
         th.join()
     for r in results:
         np.testing.assert_array_equal(r, expected)
+    # Derivatives of two orders at once, on a fresh curve: each thread builds its order's
+    # table (with the GIL) while the other may be evaluating.
+    n = casteljau.Nurbs(degree=3, knots=c.knots, points=c.points, weights=np.linspace(1, 2, 52))
+    want = [casteljau.Curve.from_json(n.to_json())(t, nu=k) for k in (1, 2)]
+    got = [None, None]
+
+    def derivative(i):
+        got[i] = n(t, nu=i + 1)
+
+    threads = [threading.Thread(target=derivative, args=(i,)) for i in range(2)]
+    for th in threads:
+        th.start()
+    for th in threads:
+        th.join()
+    for g, w in zip(got, want):
+        np.testing.assert_array_equal(g, w)
 
 
 def test_batch_evaluation_matches_point_by_point():
