@@ -326,146 +326,15 @@ class Table final : public BatchEvaluator {
   SpanTable<double, D> table_;
 };
 
-/// Derivatives of order k (k = 0: points) of any curve through its exact Bézier pieces,
-/// polynomial or rational, of any degrees (paths, rational curves, the degrees above the
-/// SpanTable's; every curve's derivatives): the pieces' control points in flat arrays of
-/// run-time dimension (no template per curve type or dimension), each piece's hodographs
-/// of orders 0..k (rational: of its homogeneous form (w P, w)) computed once, the piece
-/// of a parameter found by a binary search (the previous piece tried first), and de
-/// Casteljau's algorithm at the local parameter; rational derivatives by the quotient
-/// rule [PT97, eq. 4.8]. Outside the domain the end pieces continue, as c(t).
+/// Derivatives of order k (k = 0: points) of any curve, and the points of the curves
+/// without a batch evaluation: the io library's DerivativeTable of the curve's pieces.
 class PieceDerivatives final : public BatchEvaluator {
  public:
-  /// The table of c's pieces for order k.
-  PieceDerivatives(const io::AnyCurve& c, int k) : k_(k) {
-    std::visit([&](const auto& p) { read(p); }, io::pieces(c));
-  }
-
-  bool evaluate(std::span<const double> t, double* out) const override {
-    if (!all_finite(t.data(), t.size())) return false;
-    const std::size_t m = starts_.size(), w = width(), d = static_cast<std::size_t>(d_), K = static_cast<std::size_t>(k_);
-    const double lo = breaks_.front(), hi = breaks_.back();
-    std::vector<double> scratch((max_degree_ + 1) * w), hd((K + 1) * w), cd((K + 1) * d);
-    std::size_t i = 0;
-    for (std::size_t j = 0; j < t.size(); ++j) {
-      const double u = t[j];
-      // The piece: the right one at an interior break, the last one at the end.
-      if (!(breaks_[i] <= u && (u < breaks_[i + 1] || i + 1 == m))) {
-        i = static_cast<std::size_t>(std::upper_bound(breaks_.begin() + 1, breaks_.end() - 1, u) - breaks_.begin()) - 1;
-      }
-      double s = (u - breaks_[i]) / (breaks_[i + 1] - breaks_[i]);
-      if (u >= lo && u <= hi) s = std::clamp(s, 0.0, 1.0);
-      const int n = degree_[i];
-      // The homogeneous derivatives of orders 0..k (rational), or of order k alone.
-      for (std::size_t r = rational_ ? 0 : K; r <= K; ++r) {
-        const int q = std::max(n - static_cast<int>(r), 0);
-        const double* P = coef_.data() + starts_[i] + offset(n, r) * w;
-        de_casteljau(P, q, s, scratch.data(), hd.data() + r * w);
-      }
-      double* o = out + j * d;
-      if (!rational_) {
-        std::copy_n(hd.data() + K * w, d, o);
-        continue;
-      }
-      // C^(r) = (A^(r) - sum_(i=1..r) C(r, i) w^(i) C^(r-i)) / w.
-      const double wt = hd[d];
-      for (std::size_t r = 0; r <= K; ++r) {
-        for (std::size_t x = 0; x < d; ++x) {
-          double a = hd[r * w + x];
-          double binom = 1;
-          for (std::size_t q = 1; q <= r; ++q) {
-            binom = binom * static_cast<double>(r - q + 1) / static_cast<double>(q);
-            a -= binom * hd[q * w + d] * cd[(r - q) * d + x];
-          }
-          cd[r * d + x] = a / wt;
-        }
-      }
-      std::copy_n(cd.data() + K * d, d, o);
-    }
-    return all_finite(out, t.size() * d);
-  }
+  PieceDerivatives(const io::AnyCurve& c, int k) : table_(c, k) {}
+  bool evaluate(std::span<const double> t, double* out) const override { return table_.evaluate(t, out); }
 
  private:
-  [[nodiscard]] std::size_t width() const { return static_cast<std::size_t>(d_) + (rational_ ? 1 : 0); }
-  /// Where order r's points start among a degree-n piece's (in points): orders 0..r-1
-  /// before it (rational), or order k alone.
-  [[nodiscard]] std::size_t offset(int n, std::size_t r) const {
-    if (!rational_) return 0;
-    std::size_t o = 0;
-    for (std::size_t q = 0; q < r; ++q) o += static_cast<std::size_t>(std::max(n - static_cast<int>(q), 0)) + 1;
-    return o;
-  }
-
-  /// The point at s of the degree-q Bézier curve P (q + 1 points of width() numbers).
-  void de_casteljau(const double* P, int q, double s, double* b, double* out) const {
-    const std::size_t w = width(), n1 = static_cast<std::size_t>(q) + 1;
-    std::copy_n(P, n1 * w, b);
-    const double r = 1 - s;
-    for (std::size_t level = 1; level < n1; ++level)
-      for (std::size_t i = 0; i + level < n1; ++i)
-        for (std::size_t x = 0; x < w; ++x) b[i * w + x] = r * b[i * w + x] + s * b[(i + 1) * w + x];
-    std::copy_n(b, w, out);
-  }
-
-  template <int D>
-  void read(const Pieces<double, D>& p) {
-    d_ = D;
-    breaks_ = p.breaks();
-    for (const auto& seg : p.segments())
-      if (std::holds_alternative<casteljau::RationalBezier<double, D>>(seg)) rational_ = true;
-    const std::size_t w = width(), K = static_cast<std::size_t>(k_);
-    for (std::size_t i = 0; i < p.segments().size(); ++i) {
-      // The homogeneous control points (w P, w), the weights scaled by a power of two
-      // (the largest in [0.5, 1): the curve is unchanged and w P cannot overflow).
-      std::vector<double> h;
-      std::visit(
-          [&]<class B>(const B& b) {
-            const auto& P = b.points();
-            double scale = 1;
-            if constexpr (std::is_same_v<B, casteljau::RationalBezier<double, D>>) {
-              int e = 0;
-              std::frexp(*std::max_element(b.weights().begin(), b.weights().end()), &e);
-              scale = std::ldexp(1.0, -e);
-            }
-            for (std::size_t j = 0; j < P.size(); ++j) {
-              double wj = 1;
-              if constexpr (std::is_same_v<B, casteljau::RationalBezier<double, D>>) wj = b.weights()[j] * scale;
-              for (int x = 0; x < D; ++x) h.push_back(rational_ ? wj * P[j][x] : P[j][x]);
-              if (rational_) h.push_back(wj);
-            }
-          },
-          p.segments()[i]);
-      const int n = static_cast<int>(h.size() / w) - 1;
-      max_degree_ = std::max<std::size_t>(max_degree_, static_cast<std::size_t>(n));
-      degree_.push_back(n);
-      starts_.push_back(coef_.size());
-      // Orders 0..k: the hodograph of order r + 1 is (n - r) (Q[j+1] - Q[j]) / h of order r's
-      // points Q (in the curve's parameter: the piece spans h of it); past the degree, one
-      // zero point.
-      const double len = breaks_[i + 1] - breaks_[i];
-      for (std::size_t r = 0; r <= K; ++r) {
-        if (rational_ || r == K) coef_.insert(coef_.end(), h.begin(), h.end());
-        const std::size_t q = h.size() / w - 1;
-        if (q == 0) {
-          std::fill(h.begin(), h.end(), 0.0);
-          continue;
-        }
-        std::vector<double> next(q * w);
-        for (std::size_t j = 0; j < q; ++j)
-          for (std::size_t x = 0; x < w; ++x) next[j * w + x] = static_cast<double>(q) * (h[(j + 1) * w + x] - h[j * w + x]) / len;
-        h = std::move(next);
-      }
-    }
-  }
-
-  int k_;
-  int d_ = 0;
-  bool rational_ = false;
-  std::vector<double> breaks_;
-  std::vector<int> degree_;          ///< per piece
-  std::vector<std::size_t> starts_;  ///< per piece: its first number in coef_
-  std::vector<double> coef_;
-  std::size_t max_degree_ = 0;
+  io::DerivativeTable table_;
 };
 
 template <int D>
