@@ -445,7 +445,15 @@ def _bspline_antiderivative(self: Any, nu: int = 1) -> Any:
         dt = (t[k + 1 : k + 1 + len(c)] - t[: len(c)]).reshape((-1,) + (1,) * (c.ndim - 1))
         c = np.concatenate([np.zeros((1,) + c.shape[1:]), np.cumsum(c * dt, axis=0) / (k + 1)])
         t, k = np.r_[t[0], t, t[-1]], k + 1
-    return BSpline(t, c, k, extrapolate=False if self.extrapolate == "periodic" else self.extrapolate)
+    # An end knot repeated more than k + 1 times (make_interp_spline's k = 0 knots end with
+    # x[-1] twice) spans basis functions that vanish: dropped with their coefficients, the
+    # function on the base interval is the same (from its end on scipy's zero-length last
+    # span gives 0, ours continues the last piece).
+    while len(t) > k + 2 and np.count_nonzero(t == t[-1]) > k + 1:
+        t, c = t[:-1], c[:-1]
+    while len(t) > k + 2 and np.count_nonzero(t == t[0]) > k + 1:
+        t, c = t[1:], c[1:]
+    return BSpline(t, c[: len(t) - k - 1], k, extrapolate=False if self.extrapolate == "periodic" else self.extrapolate)
 
 
 BSpline = _subclass("bspline", _ScipyCurve, _bspline_init, """A B-spline.
