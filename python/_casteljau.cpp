@@ -6,9 +6,11 @@
 //   python/casteljau/_curves.py and _surfaces.py generate the classes and methods;
 // - `Curve`: one io::AnyCurve read once from curve JSON (a cubic_spline of numpy arrays
 //   from the arrays, io/arrays.hpp), evaluated on numpy arrays (values through the
-//   library's batch evaluation, below, and derivatives; the GIL released), projected from the rows of an array by io::project, and the commands run
-//   on it (`run`);
-// - `Surface`: one io::AnySurface, evaluated at (u, v) arrays, and its commands;
+//   library's batch evaluation, below, derivatives and rational curves through the
+//   table of its pieces, PieceDerivatives; the GIL released), projected from the rows of
+//   an array by io::project, and the commands run on it (`run`);
+// - `Surface`: one io::AnySurface, evaluated at (u, v) arrays (points, and the eval
+//   command's fields through io::surface_partials), and its commands;
 // - `run(command, request)`: any command;
 // - `Error` (a ValueError): the library's InvalidArgument as "<where>: <what>", the
 //   command line's message.
@@ -23,6 +25,7 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <type_traits>
 #include <utility>
 #include <variant>
@@ -323,6 +326,17 @@ class Table final : public BatchEvaluator {
   SpanTable<double, D> table_;
 };
 
+/// Derivatives of order k (k = 0: points) of any curve, and the points of the curves
+/// without a batch evaluation: the io library's DerivativeTable of the curve's pieces.
+class PieceDerivatives final : public BatchEvaluator {
+ public:
+  PieceDerivatives(const io::AnyCurve& c, int k) : table_(c, k) {}
+  bool evaluate(std::span<const double> t, double* out) const override { return table_.evaluate(t, out); }
+
+ private:
+  io::DerivativeTable table_;
+};
+
 template <int D>
 std::unique_ptr<BatchEvaluator> evaluator_of(const io::AnyCurve& c) {
   if (const auto* s = std::get_if<CubicSpline<double, D>>(&c)) return std::make_unique<SortedMembers<CubicSpline<double, D>>>(*s);
@@ -330,12 +344,12 @@ std::unique_ptr<BatchEvaluator> evaluator_of(const io::AnyCurve& c) {
   if (auto table = SpanTable<double, D>::of(std::get<Pieces<double, D>>(io::pieces(c)))) {
     return std::make_unique<Table<D>>(std::move(*table));
   }
-  return nullptr;  // rational curves (NURBS: io::evaluate, whose batch member would instantiate
-                   // BSpline<double, D + 1>::evaluate up to D + 1 = 5 here), degrees above the table's
+  return nullptr;  // rational curves (NURBS' batch member would instantiate BSpline<double, D + 1>::evaluate
+                   // up to D + 1 = 5 here) and degrees above the table's: PieceDerivatives of order 0
 }
 
 /// The evaluator of c (which must outlive it), or nullptr when c has none (the caller uses
-/// io::evaluate). The types are named one by one per dimension rather than through a
+/// PieceDerivatives). The types are named one by one per dimension rather than through a
 /// visit of AnyCurve's 40 alternatives (compile time).
 std::unique_ptr<BatchEvaluator> batch_evaluator(const io::AnyCurve& c) {
   return io::dispatch_dimension(io::dimension(c), [&]<int D>() { return evaluator_of<D>(c); });
@@ -402,13 +416,22 @@ class Curve {
       fast_ = batch_evaluator(*curve_);
       fast_built_ = true;
     }
+    const BatchEvaluator* path = k == 0 ? fast_.get() : nullptr;
+    if (path == nullptr && k <= max_table_order) {
+      // Derivatives, and points of the curves without a batch evaluation (rational ones,
+      // degrees above the SpanTable's): the pieces' table of order k, built once.
+      if (derivatives_.size() <= static_cast<std::size_t>(k)) derivatives_.resize(static_cast<std::size_t>(k) + 1);
+      auto& table = derivatives_[static_cast<std::size_t>(k)];
+      if (!table) table = std::make_unique<PieceDerivatives>(*curve_, k);
+      path = table.get();
+    }
     bool done = false;
     {
       py::gil_scoped_release release;
-      if (k == 0 && fast_) done = fast_->evaluate(ts, out);
+      if (path != nullptr) done = path->evaluate(ts, out);
       if (!done) {
-        // Small batches, derivatives, curves without a batch path, and the error of a
-        // parameter or point that is not finite.
+        // Orders above the tables', and the error of a parameter or a point that is not
+        // finite.
         const io::PointList pts = k == 0 ? io::evaluate(*curve_, ts) : io::derivatives(*curve_, ts, k);
         std::copy(pts.coords.begin(), pts.coords.end(), out);
       }
@@ -522,6 +545,9 @@ class Curve {
   mutable bool has_json_ = false;
   mutable std::unique_ptr<BatchEvaluator> fast_;
   mutable bool fast_built_ = false;
+  /// The order-k tables (PieceDerivatives), built at the first call of that order.
+  static constexpr int max_table_order = 16;
+  mutable std::vector<std::unique_ptr<BatchEvaluator>> derivatives_;
 };
 
 /// A surface read once from surface JSON (text, or a Python object).
@@ -556,6 +582,79 @@ class Surface {
     py::gil_scoped_release release;
     io::surface_points(surface_, u.data(), v.data(), static_cast<std::size_t>(u.size()), out);
     return result;
+  }
+
+  /// The eval command's answer at the rows of uv (n, 2) (finite; n >= 1), computed on the
+  /// arrays (io::surface_partials, the command's values, and its geometry): points,
+  /// partials {u, v, uu, uv, vv, ...} of orders 1..k, normals, gaussian, mean, principal
+  /// as numpy arrays (a list with None where a normal is undefined, as the command's
+  /// null). The command's checks and messages.
+  [[nodiscard]] py::dict eval(const Doubles& uv, int k, bool normal, bool curvature) const {
+    if (k < 0) throw InvalidArgument("derivatives", "derivative count must be >= 0, got " + std::to_string(k));
+    if (k > 64) throw InvalidArgument("derivatives", "derivative count must be <= 64, got " + std::to_string(k));
+    for (const auto& [on, field, what] : {std::tuple{normal, "normal", "normals"}, std::tuple{curvature, "curvature", "curvatures"}}) {
+      if (on && dim() != 3) throw InvalidArgument(field, std::string(what) + " need a 3-D surface, got " + std::to_string(dim()) + "-D");
+    }
+    if (uv.ndim() != 2 || uv.shape(1) != 2) throw InvalidArgument("uv", "must be an array of [u, v] pairs");
+    const int order = std::max(k, curvature ? 2 : normal ? 1 : 0);
+    const std::size_t n = static_cast<std::size_t>(uv.shape(0)), cd = static_cast<std::size_t>(dim()), K = static_cast<std::size_t>(order) + 1;
+    const std::size_t block = K * K * cd;
+    std::vector<double> u(n), v(n), d(n * block);
+    for (std::size_t i = 0; i < n; ++i) {
+      u[i] = uv.data()[2 * i];
+      v[i] = uv.data()[2 * i + 1];
+    }
+    std::vector<casteljau::detail::SurfaceGeometry<double>> g;
+    {
+      py::gil_scoped_release release;
+      io::surface_partials(surface_, u.data(), v.data(), n, order, d.data());
+      if (normal || curvature) {
+        g.resize(n);
+        for (std::size_t i = 0; i < n; ++i) {
+          const auto at = [&](std::size_t a, std::size_t b) { return d.data() + i * block + (a * K + b) * cd; };
+          g[i] = order >= 2 ? casteljau::detail::geometry<double>(at(1, 0), at(0, 1), at(2, 0), at(1, 1), at(0, 2))
+                            : casteljau::detail::geometry<double>(at(1, 0), at(0, 1), at(0, 0), at(0, 0), at(0, 0));
+        }
+      }
+    }
+    const auto rows = [&](std::size_t width, const auto& value) {
+      py::array_t<double> a(std::vector<py::ssize_t>{static_cast<py::ssize_t>(n), static_cast<py::ssize_t>(width)});
+      double* o = a.mutable_data();
+      for (std::size_t i = 0; i < n; ++i) value(i, o + i * width);
+      return a;
+    };
+    py::dict out;
+    out["points"] = rows(cd, [&](std::size_t i, double* o) { std::copy_n(d.data() + i * block, cd, o); });
+    if (k > 0) {
+      py::dict p;
+      for (std::size_t o = 1; o <= static_cast<std::size_t>(k); ++o) {
+        for (std::size_t b = 0; b <= o; ++b) {
+          const std::size_t a = o - b;
+          p[py::str(std::string(a, 'u') + std::string(b, 'v'))] =
+              rows(cd, [&](std::size_t i, double* x) { std::copy_n(d.data() + i * block + (a * K + b) * cd, cd, x); });
+        }
+      }
+      out["partials"] = p;
+    }
+    // A geometric field: an array of every point's value, or, where some normal is
+    // undefined, a list with None there (the command's null).
+    bool all_defined = true;
+    for (const auto& x : g) all_defined &= x.defined;
+    const auto field = [&](std::size_t width, const auto& value) -> py::object {
+      py::array a = rows(width, value);
+      if (width == 1) a = a.reshape(std::vector<py::ssize_t>{static_cast<py::ssize_t>(n)});
+      if (all_defined) return a;
+      py::list l;
+      for (std::size_t i = 0; i < n; ++i) l.append(g[i].defined ? py::object(a[py::int_(i)]) : py::object(py::none()));
+      return l;
+    };
+    if (normal) out["normals"] = field(3, [&](std::size_t i, double* o) { std::copy_n(g[i].normal, 3, o); });
+    if (curvature) {
+      out["gaussian"] = field(1, [&](std::size_t i, double* o) { *o = g[i].gaussian; });
+      out["mean"] = field(1, [&](std::size_t i, double* o) { *o = g[i].mean; });
+      out["principal"] = field(2, [&](std::size_t i, double* o) { o[0] = g[i].k1; o[1] = g[i].k2; });
+    }
+    return out;
   }
 
   [[nodiscard]] py::object run(const std::string& command, const py::dict& request, const std::string& field) const {
@@ -692,5 +791,6 @@ PYBIND11_MODULE(_casteljau, m) {
       .def("to_json", &Surface::to_json)
       .def("to_data", &Surface::to_data)
       .def("evaluate", &Surface::evaluate, py::arg("u"), py::arg("v"))
+      .def("eval", &Surface::eval, py::arg("uv"), py::arg("derivatives"), py::arg("normal"), py::arg("curvature"))
       .def("run", &Surface::run, py::arg("command"), py::arg("request"), py::arg("field") = "surface");
 }

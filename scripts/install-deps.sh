@@ -14,7 +14,7 @@ build_pkgs=(
   python3-scipy python3-mpmath python3-fonttools
   libocct-modeling-data-dev libocct-foundation-dev
   libfreetype-dev fonts-dejavu-core fonts-urw-base35
-  python3-dev python3-pybind11 pybind11-dev python3-numpy python3-pytest python3-dask  # the Python package (python/, docs/python.md)
+  python3-dev python3-pybind11 pybind11-dev python3-numpy python3-pytest python3-dask python3-distributed  # the Python package (python/, docs/python.md)
   libcpp-httplib-dev chromium chromium-driver python3-selenium  # casteljau serve (cpp-httplib) and its browser test (headless chromium)
   # HarfBuzz: the glyph command's GPOS pair kerning (issue 17)
   libharfbuzz-dev

@@ -122,9 +122,9 @@ class PPoly:
         ext = self.extrapolate if extrapolate is None else extrapolate
         if ext is False:
             a, b = (min(max(v, self._lo), self._hi) for v in (a, b))
-        if ext == "periodic":
-            raise Error("extrapolate: 'periodic' integration is not supported yet")
         F = _integral(self._curve)
+        if ext == "periodic":
+            return _periodic_integral(F, self._lo, self._hi, a, b).reshape(self._tail)
         return (F(b) - F(a)).reshape(self._tail)
 
     def roots(self, discontinuity: bool = True, extrapolate: Any = None) -> np.ndarray:
@@ -165,6 +165,22 @@ def _integral(c: Curve) -> Curve:
         segs.append({"type": "bezier", "points": A})
         start = A[-1]
     return Curve.from_json({"type": "path", "segments": segs, "breaks": breaks})
+
+
+def _periodic_integral(F: Curve, lo: float, hi: float, a: float, b: float) -> np.ndarray:
+    """The integral from a to b of the function of period hi - lo whose antiderivative on
+    [lo, hi] is F: whole periods, then the rest from a mapped into [lo, hi] (wrapping
+    past hi at most once)."""
+    sign = 1.0
+    if b < a:
+        a, b, sign = b, a, -1.0
+    period = hi - lo
+    periods, rest = divmod(b - a, period)
+    whole = F(hi) - F(lo)
+    a = lo + (a - lo) % period
+    b = a + rest
+    part = F(b) - F(a) if b <= hi else (F(hi) - F(a)) + (F(lo + (b - hi)) - F(lo))
+    return sign * (periods * whole + part)
 
 
 def _end_roots(c: Curve) -> list:
@@ -411,6 +427,35 @@ def _bspline_derivative(self: Any, nu: int = 1) -> Any:
     return BSpline(t, c, k, extrapolate=self.extrapolate)
 
 
+def _bspline_antiderivative(self: Any, nu: int = 1) -> Any:
+    """scipy's BSpline.antiderivative: a BSpline of degree k + nu, each end knot once more
+    per order (made the library's way: a PPoly over the integral's Bezier pieces). The
+    coefficients by the B-spline integral [deBoor78]: the integral of sum c_i
+    B_(i,k) from t_0 is sum d_i B_(i,k+1) on the knots (t_0, t, t_last), d_0 = 0 and
+    d_(i+1) = d_i + c_i (t_(i+k+1) - t_i) / (k + 1). extrapolate='periodic' becomes False
+    (the integral is not periodic), as scipy's."""
+    if self._sp is None:
+        return _ScipyCurve.antiderivative(self, nu)
+    if isinstance(nu, bool) or not isinstance(nu, (int, np.integer)) or nu < 0:
+        raise Error(f"nu: must be an integer >= 0, got {nu!r}")
+    t, k = self.t, self.k
+    n = len(t) - k - 1
+    c = np.moveaxis(np.asarray(self.c, dtype=np.float64), self.axis, 0)[:n]
+    for _ in range(nu):
+        dt = (t[k + 1 : k + 1 + len(c)] - t[: len(c)]).reshape((-1,) + (1,) * (c.ndim - 1))
+        c = np.concatenate([np.zeros((1,) + c.shape[1:]), np.cumsum(c * dt, axis=0) / (k + 1)])
+        t, k = np.r_[t[0], t, t[-1]], k + 1
+    # An end knot repeated more than k + 1 times (make_interp_spline's k = 0 knots end with
+    # x[-1] twice) spans basis functions that vanish: dropped with their coefficients, the
+    # function on the base interval is the same (from its end on scipy's zero-length last
+    # span gives 0, ours continues the last piece).
+    while len(t) > k + 2 and np.count_nonzero(t == t[-1]) > k + 1:
+        t, c = t[:-1], c[:-1]
+    while len(t) > k + 2 and np.count_nonzero(t == t[0]) > k + 1:
+        t, c = t[1:], c[1:]
+    return BSpline(t, c[: len(t) - k - 1], k, extrapolate=False if self.extrapolate == "periodic" else self.extrapolate)
+
+
 BSpline = _subclass("bspline", _ScipyCurve, _bspline_init, """A B-spline.
 
 scipy's form ``BSpline(t, c, k, extrapolate=True, axis=0)`` returns scipy's shapes; the
@@ -422,7 +467,7 @@ library's ``BSpline(degree=, knots=, points=)`` returns points of shape (..., d)
 0.5
 >>> type(b.derivative()).__name__, b.derivative().k  # a BSpline, as scipy's
 ('BSpline', 1)
-""", {"derivative": _bspline_derivative})
+""", {"derivative": _bspline_derivative, "antiderivative": _bspline_antiderivative})
 
 
 def _end_derivatives(b: Any, m: int, side: str) -> list:
@@ -467,11 +512,12 @@ def make_interp_spline(x: Any, y: Any, k: int = 3, t: Any = None, bc_type: Any =
     if len(x) != len(pts):
         raise Error(f"x: {len(x)} values but y has {len(pts)}")
     m = pts.shape[1]
-    if bc_type is None or bc_type == "not-a-knot":
+    periodic = isinstance(bc_type, str) and bc_type == "periodic"
+    if periodic and len(pts) and not np.allclose(pts[0], pts[-1], atol=1e-15):
+        raise Error("y: the first and last values must be equal for bc_type='periodic'")
+    if bc_type is None or bc_type == "not-a-knot" or periodic:
         deriv_l, deriv_r = [], []
     elif isinstance(bc_type, str):
-        if bc_type == "periodic":
-            raise Error("bc_type: 'periodic' is not supported yet")
         deriv_l = _end_derivatives(bc_type, m, "start")
         deriv_r = _end_derivatives(bc_type, m, "end")
     else:
@@ -494,6 +540,10 @@ def make_interp_spline(x: Any, y: Any, k: int = 3, t: Any = None, bc_type: Any =
         b._sp._hi = float(x[-1])
         b.t = np.r_[x, x[-1]]
         return b
+    if periodic and k > 1:
+        if t is not None:
+            raise Error("t: bc_type='periodic' makes its own knots (scipy's rule)")
+        return _periodic_interp_spline(x, pts, tail, k)
     if t is None:
         if deriv_l or deriv_r:
             # scipy's knots with end derivatives: x with k more copies of each end.
@@ -537,6 +587,43 @@ def make_interp_spline(x: Any, y: Any, k: int = 3, t: Any = None, bc_type: Any =
                     f"{len(deriv_l) + len(deriv_r)} end conditions")
     c = np.linalg.solve(A, np.array(rhs, dtype=np.float64).reshape(nt, -1))
     return BSpline(t, c.reshape((nt,) + tail), int(k), axis=0)
+
+
+def _periodic_interp_spline(x: np.ndarray, pts: np.ndarray, tail: tuple, k: int) -> Any:
+    """make_interp_spline(x, y, k, bc_type='periodic'), k >= 2: scipy's knots on a circle
+    (the sites x, for even k the interior ones moved to the midpoints of their left
+    intervals, and k more at each end continuing the intervals of the other end), and the
+    periodic spline through the points: with these knots a spline of period x[-1] - x[0]
+    has coefficients of period n - 1 (c[j] = c[j mod (n - 1)], n points), so the unknowns
+    are n - 1 coefficients and the conditions the values at x[:-1] (the last equals the
+    first); the collocation matrix's columns folded modulo n - 1, solved by numpy."""
+    n = len(x)
+    if n < 2:
+        raise Error("x: needs at least 2 points")
+    bad = np.flatnonzero(~(np.diff(x) > 0))
+    if len(bad):
+        raise Error(f"x[{bad[0] + 1}]: x must be strictly increasing")
+    xc = x.copy()
+    dx = np.diff(x)
+    if k % 2 == 0:
+        xc[1:-1] -= dx[:-1] / 2
+    dx = np.diff(xc)
+    t = np.empty(n + 2 * k)
+    t[k:-k] = xc
+    for i in range(k):
+        t[k - i - 1] = t[k - i] - dx[-(i % (n - 1)) - 1]
+        t[n + k + i] = t[n + k + i - 1] + dx[i % (n - 1)]
+    nt = n + k - 1
+    try:
+        b = _casteljau.run("basis", {"kind": "bspline", "degree": k, "knots": t, "t": x[:-1]})
+    except Error as e:
+        raise _renamed(e, {"t": "x", "degree": "k"}, False) from None
+    B = np.atleast_2d(b["values"])
+    A = np.zeros((n - 1, n - 1))
+    for j in range(nt):
+        A[:, j % (n - 1)] += B[:, j]
+    c = np.linalg.solve(A, pts[:-1])[np.arange(nt) % (n - 1)]
+    return BSpline(t, c.reshape((nt,) + tail), k, extrapolate="periodic")
 
 
 def _hermite_interpolator(rule: str, default_extrapolate: bool, name: str) -> type:

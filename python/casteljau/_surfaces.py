@@ -148,6 +148,30 @@ for _name, _summary, _fields in _casteljau.commands():
         setattr(Surface, _name, _method(_name, _summary, _fields, _fields[0][0]))
 
 
+def _eval_method(command: Any) -> Any:
+    """eval on arrays: pairs uv given as a finite (n, 2) array (or what numpy makes one of)
+    are evaluated by the compiled module without the command's JSON (the same values:
+    the library's partials and geometry); anything else goes to the command (its errors)."""
+
+    def eval(self: Surface, uv: Any, derivatives: int = 0, normal: bool = False, curvature: bool = False) -> Any:
+        try:
+            a = np.asarray(uv, dtype=np.float64)
+        except (TypeError, ValueError):
+            a = None
+        direct = (a is not None and a.ndim == 2 and a.shape[0] > 0 and a.shape[1] == 2 and bool(np.isfinite(a).all())
+                  and type(derivatives) is int and type(normal) is bool and type(curvature) is bool)
+        if not direct:
+            return command(self, uv, derivatives, normal, curvature)
+        return _simplify(self._s.eval(np.ascontiguousarray(a), derivatives, normal, curvature))
+
+    eval.__doc__ = command.__doc__
+    eval.__qualname__ = "Surface.eval"
+    return eval
+
+
+Surface.eval = _eval_method(Surface.eval)  # type: ignore[method-assign]
+
+
 def _make_class(json_name: str, fields: list) -> type:
     names = tuple(f for f in fields if f != "type")
     class_name = _class_name(json_name)

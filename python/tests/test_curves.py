@@ -242,6 +242,22 @@ def test_two_threads_evaluate_at_once():
         th.join()
     for r in results:
         np.testing.assert_array_equal(r, expected)
+    # Derivatives of two orders at once, on a fresh curve: each thread builds its order's
+    # table (with the GIL) while the other may be evaluating.
+    n = casteljau.Nurbs(degree=3, knots=c.knots, points=c.points, weights=np.linspace(1, 2, 52))
+    want = [casteljau.Curve.from_json(n.to_json())(t, nu=k) for k in (1, 2)]
+    got = [None, None]
+
+    def derivative(i):
+        got[i] = n(t, nu=i + 1)
+
+    threads = [threading.Thread(target=derivative, args=(i,)) for i in range(2)]
+    for th in threads:
+        th.start()
+    for th in threads:
+        th.join()
+    for g, w in zip(got, want):
+        np.testing.assert_array_equal(g, w)
 
 
 def test_batch_evaluation_matches_point_by_point():
@@ -295,3 +311,62 @@ def test_requests_and_responses_are_python_data():
         casteljau.Bezier({1, 2})
     with pytest.raises(casteljau.Error, match=r"^points\[2\]\[0\]: must be a finite number, got -inf"):
         casteljau.Polyline(np.array([[0, 0], [1, 1], [-np.inf, 2]]))
+
+
+def _every_type():
+    """A curve of every registry type (2-D; a 3-D NURBS and a path mixing a rational piece)."""
+    rng = np.random.default_rng(9)
+    P = rng.random((6, 2))
+    return [
+        casteljau.Bezier(P[:4]),
+        casteljau.RationalBezier(P[:4], [1.0, 2.5, 0.5, 1.5]),
+        casteljau.BSpline(degree=3, knots=[0, 0, 0, 0, 0.3, 0.7, 1, 1, 1, 1], points=P),
+        casteljau.Nurbs(degree=2, knots=[0, 0, 0, 0.25, 0.5, 0.75, 1, 1, 1], points=rng.random((6, 3)),
+                        weights=[1, 0.5, 2, 1, 3, 1]),
+        casteljau.Polyline(P),
+        casteljau.Curve.from_json({"type": "path", "segments": [
+            {"type": "bezier", "points": P[:3].tolist()},
+            {"type": "rational_bezier", "points": P[2:5].tolist(), "weights": [1, 0.3, 2]}]}),
+        casteljau.Lagrange(params=np.linspace(0, 1, 6), points=P),
+        casteljau.CubicSpline(params=np.linspace(0, 2, 6), points=P),
+        casteljau.Curve.from_json({"type": "hermite", "params": [0, 1, 2], "points": P[:3].tolist(),
+                                   "tangent_rule": "monotone"}),
+        casteljau.Curve.from_json({"type": "catmull_rom", "points": P.tolist()}),
+    ]
+
+
+def test_derivative_tables_against_the_librarys_derivatives():
+    """c(t, nu=k) (the pieces' hodographs, de Casteljau, the quotient rule for rational
+    pieces) against the eval command's derivatives (io::derivatives: each type's own
+    derivative_at), inside the domain, at the breaks and outside it."""
+    for c in _every_type():
+        lo, hi = c.domain
+        t = np.r_[np.linspace(lo - 0.3 * (hi - lo), hi + 0.3 * (hi - lo), 41), lo, hi, (lo + hi) / 2]
+        ref = casteljau.run("eval", curve=c, t=t, derivatives=3)
+        np.testing.assert_allclose(c(t), ref.points, rtol=1e-12, atol=1e-12 * np.abs(ref.points).max(), err_msg=c._c.type)
+        for k in (1, 2, 3):
+            want = np.asarray(ref.derivatives[k - 1])
+            got = c(t, nu=k)
+            assert got.shape == want.shape
+            np.testing.assert_allclose(got, want, rtol=1e-10, atol=1e-10 * np.abs(want).max(),
+                                       err_msg=f"{c._c.type} nu={k}")
+        # One parameter or many: the same table (a point does not depend on its batch).
+        np.testing.assert_array_equal(c(t[5], nu=2), c(t, nu=2)[5])
+
+
+def test_rational_derivatives_on_the_circle():
+    """The quarter circle (weights 1, cos 45 deg, 1): |C| = 1, C . C' = 0 and, differentiated
+    once more, C . C'' + |C'|^2 = 0; beyond orders of the degree the table still answers."""
+    c = casteljau.Nurbs(degree=2, knots=[0, 0, 0, 1, 1, 1], points=[[1, 0], [1, 1], [0, 1]], weights=[1, math.sqrt(0.5), 1])
+    t = np.linspace(0, 1, 33)
+    p, d1, d2 = c(t), c(t, nu=1), c(t, nu=2)
+    np.testing.assert_allclose(np.linalg.norm(p, axis=1), 1, rtol=0, atol=4 * EPS)
+    np.testing.assert_allclose(np.sum(p * d1, axis=1), 0, rtol=0, atol=8 * EPS)
+    np.testing.assert_allclose(np.sum(p * d2, axis=1) + np.sum(d1 * d1, axis=1), 0, rtol=0, atol=32 * EPS)
+    with pytest.raises(casteljau.Error, match=r"^t\[2\]: value must be finite, got nan"):
+        c(np.array([0.1, 0.2, np.nan]), nu=1)
+    with pytest.raises(casteljau.Error, match=r"^nu: must be >= 0"):
+        c(0.5, nu=-1)
+    # Orders above the tables' (16) go point by point through the library.
+    np.testing.assert_allclose(c(t[:3], nu=17), casteljau.run("eval", curve=c, t=t[:3], derivatives=17).derivatives[16],
+                               rtol=1e-9)

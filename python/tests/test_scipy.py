@@ -186,3 +186,101 @@ def test_more_than_four_values_per_point_are_refused():
         casteljau.CubicSpline(X, RNG.random((9, 5)))
     with pytest.raises(casteljau.Error, match=r"^c: values of shape \(2, 3\)"):
         casteljau.BSpline(np.r_[0, 0, 1, 2, 2], RNG.random((3, 2, 3)), 1)
+
+
+def test_bspline_antiderivative_is_a_bspline():
+    for t in (np.r_[0, 0.5, 1, 2, 3.5, 4, 5, 6, 7.5], np.r_[0, 0, 0, 0, 1, 2.5, 3, 4, 4, 4, 4]):
+        for c in (RNG.random(len(t) - 4), RNG.random((len(t) - 4, 2))):
+            ours, theirs = casteljau.BSpline(t, c, 3), si.BSpline(t, c, 3)
+            for nu in (1, 2):
+                a, b = ours.antiderivative(nu), theirs.antiderivative(nu)
+                assert isinstance(a, casteljau.BSpline) and isinstance(b, si.BSpline)
+                assert a.k == b.k == 3 + nu
+                close(a.t, b.t, rel=0)
+                n = len(b.t) - b.k - 1  # scipy pads c with zeros to len(t)
+                close(a.c[:n], b.c[:n])
+                # Inside the base interval; beyond it the end pieces continued (the
+                # rounding of their Bernstein form grows with the distance, as above).
+                lo, hi = t[3], t[-4]
+                inside, outside = np.linspace(lo, hi, 41), np.r_[np.linspace(-0.5, lo, 9), np.linspace(hi, 8.0, 9)]
+                close(a(inside), b(inside))
+                close(a(inside, 1), b(inside, 1))
+                close(a(outside), b(outside), rel=1e-10)
+            close(ours.antiderivative().derivative()(inside), theirs(inside))
+    # make_interp_spline's k = 0 (knots ending with x[-1] twice): the same function on the
+    # base interval (from x[-1] on, scipy's zero-length last span gives 0: left out).
+    a, b = (m.make_interp_spline(X, Y, k=0).antiderivative() for m in (casteljau, si))
+    inside = np.linspace(X[0], X[-1], 41)[:-1]
+    close(a(inside), b(inside))
+    # extrapolate='periodic' gives a non-periodic antiderivative, extrapolate False, as scipy.
+    x = np.linspace(0, 2 * np.pi, 9)
+    y = np.sin(x)
+    y[-1] = y[0]
+    a, b = (m.make_interp_spline(x, y, k=3, bc_type="periodic").antiderivative() for m in (casteljau, si))
+    assert a.extrapolate is False and b.extrapolate is False
+    close(a(XS), b(XS))  # NaN outside, both
+
+
+@pytest.mark.parametrize("k", [1, 2, 3, 4, 5])
+def test_make_interp_spline_periodic(k):
+    # Intervals 0.5 to 1.5 wide: the derivative of order nu scales the coefficients'
+    # rounding (scipy solves by Woodbury's formula, we by LU) by 1 / h^nu.
+    x = np.cumsum(0.5 + RNG.random(8))
+    y = np.cos(x) + RNG.random(8)
+    y[-1] = y[0]
+    ours, theirs = casteljau.make_interp_spline(x, y, k=k, bc_type="periodic"), si.make_interp_spline(x, y, k=k, bc_type="periodic")
+    assert ours.k == theirs.k and ours.extrapolate == theirs.extrapolate
+    close(ours.t, theirs.t)
+    close(ours.c, theirs.c)
+    xs = np.linspace(x[0] - 12, x[-1] + 15, 151)  # periodic continuation, several periods
+    for nu in range(k):
+        close(ours(xs, nu), theirs(xs, nu))
+    close(ours.integrate(x[0] - 12.5, x[-1] + 14.0), theirs.integrate(x[0] - 12.5, x[-1] + 14.0))
+    close(ours.integrate(3.0, -20.0), theirs.integrate(3.0, -20.0))
+    # Vector data, and fewer points than the degree needs (scipy: its full-matrix path).
+    Y2 = RNG.random((8, 2))
+    Y2[-1] = Y2[0]
+    close(casteljau.make_interp_spline(x, Y2, k=k, bc_type="periodic")(xs),
+          si.make_interp_spline(x, Y2, k=k, bc_type="periodic")(xs))
+    if k >= 3:
+        close(casteljau.make_interp_spline(x[:3], Y2[[0, 1, 0]], k=k, bc_type="periodic")(xs),
+              si.make_interp_spline(x[:3], Y2[[0, 1, 0]], k=k, bc_type="periodic")(xs))
+
+
+def test_periodic_errors_and_integrals():
+    with pytest.raises(ValueError):
+        si.make_interp_spline(X, Y, k=3, bc_type="periodic")
+    with pytest.raises(casteljau.Error, match=r"^y: the first and last values must be equal"):
+        casteljau.make_interp_spline(X, Y, k=3, bc_type="periodic")
+    with pytest.raises(casteljau.Error, match=r"^x\[3\]: x must be strictly increasing"):
+        casteljau.make_interp_spline([0, 1, 2, 2, 3], [0, 1, 2, 1, 0], k=3, bc_type="periodic")
+    # CubicSpline's periodic extrapolation integrates over whole periods and the rest.
+    xp = np.linspace(0, 2 * np.pi, 9)
+    yp = np.sin(xp) + 0.3
+    yp[-1] = yp[0]
+    ours, theirs = casteljau.CubicSpline(xp, yp, bc_type="periodic"), si.CubicSpline(xp, yp, bc_type="periodic")
+    for a, b in ((-3.0, 12.0), (1.0, 2.0), (5.0, 7.0), (20.0, -9.5)):
+        close(ours.integrate(a, b), theirs.integrate(a, b))
+
+
+def test_make_interp_spline_one_sided_conditions_are_refused_as_scipy():
+    # scipy 1.10's knots with end derivatives need both ends' conditions; 'not-a-knot' is
+    # not an end condition of make_interp_spline (CubicSpline has it, tested above).
+    for bc in ((None, [(1, 0.0)]), ("not-a-knot", [(1, 0.0)])):
+        with pytest.raises(ValueError):
+            si.make_interp_spline(X, Y, k=3, bc_type=bc)
+        with pytest.raises(casteljau.Error, match=r"^bc_type: "):
+            casteljau.make_interp_spline(X, Y, k=3, bc_type=bc)
+
+
+@pytest.mark.parametrize("k", [2, 4, 6])
+def test_make_interp_spline_even_degrees_with_knots(k):
+    # Even degrees with the caller's knots (k + 1 copies of each end, the interior from the
+    # data sites), as scipy: coefficients and values.
+    x = np.sort(RNG.random(12)) * 10
+    y = np.sin(x) + RNG.random(12)
+    h = (k + 1) // 2
+    t = np.r_[(x[0],) * (k + 1), x[h : h + len(x) - k - 1], (x[-1],) * (k + 1)]
+    ours, theirs = casteljau.make_interp_spline(x, y, k=k, t=t), si.make_interp_spline(x, y, k=k, t=t)
+    close(ours.c, theirs.c[: len(ours.c)])
+    close(ours(XS), theirs(XS))

@@ -132,3 +132,42 @@ def test_constructions():
     assert casteljau.surface("extrude", curve=line, vector=[0, 0, 2]) == wall
     with pytest.raises(TypeError):
         casteljau.surface.revolve(half)  # keywords only
+
+
+def test_eval_on_arrays_equals_the_command():
+    """s.eval on an (n, 2) array (the compiled module's partials and geometry, no JSON)
+    gives the eval command's values exactly; lists, NaN and wrong types go to the command
+    (its errors)."""
+    rng = np.random.default_rng(12)
+    nurbs = casteljau.NurbsSurface(points=rng.random((4, 5, 3)), weights=rng.random((4, 5)) + 0.5, degree=[2, 3],
+                                   knots=[[0, 0, 0, 0.5, 1, 1, 1], [0, 0, 0, 0, 0.5, 1, 1, 1, 1]])
+    uv = np.column_stack([rng.random(20), rng.random(20)])
+    for s in (nurbs, casteljau.BezierSurface(SADDLE)):
+        for k, normal, curvature in ((0, False, False), (2, False, False), (1, True, False), (3, True, True)):
+            ours = s.eval(uv, derivatives=k, normal=normal, curvature=curvature)
+            theirs = casteljau.run("eval", surface=s, uv=uv.tolist(), derivatives=k, normal=normal, curvature=curvature)
+            if isinstance(theirs, np.ndarray):
+                np.testing.assert_array_equal(ours, theirs)
+                continue
+            assert ours._fields() == theirs._fields()
+            for name in theirs._fields():
+                a, b = getattr(ours, name), getattr(theirs, name)
+                if name == "partials":
+                    assert a._fields() == b._fields()
+                    for p in b._fields():
+                        np.testing.assert_array_equal(getattr(a, p), getattr(b, p))
+                else:
+                    np.testing.assert_array_equal(np.asarray(a), np.asarray(b))
+    # A pole-free undefined normal: at a corner of a degenerate patch (a triangle) the
+    # normal is None in both.
+    tri = casteljau.BezierSurface([[[0, 0, 0], [0, 0, 0]], [[1, 0, 0], [0, 1, 0]]])
+    a = tri.eval([[0.0, 0.0], [0.5, 0.5]], normal=True).normals
+    b = casteljau.run("eval", surface=tri, uv=[[0.0, 0.0], [0.5, 0.5]], normal=True).normals
+    assert a[0] is None and b[0] is None
+    np.testing.assert_array_equal(a[1], b[1])
+    with pytest.raises(casteljau.Error, match=r"^uv\[1\]\[0\]: "):
+        nurbs.eval([[0.5, 0.5], [np.nan, 0.5]])
+    with pytest.raises(casteljau.Error, match=r"^derivatives: derivative count must be <= 64"):
+        nurbs.eval(uv, derivatives=65)
+    with pytest.raises(casteljau.Error, match=r"^normal: normals need a 3-D surface"):
+        casteljau.BezierSurface([[[0, 0], [0, 1]], [[1, 0], [1, 1]]]).eval(uv, normal=True)

@@ -827,4 +827,135 @@ std::string_view type_name(const AnyCurve& c) {
       c);
 }
 
+// ---------------------------------------------------------------------------------------
+// DerivativeTable (io/arrays.hpp)
+
+namespace {
+
+/// The point at s of the degree-q Bézier curve P (q + 1 points of w numbers) into out,
+/// by de Casteljau's algorithm in b ((q + 1) w numbers of scratch).
+void de_casteljau_flat(const double* P, std::size_t q, std::size_t w, double s, double* b, double* out) {
+  const std::size_t n1 = q + 1;
+  std::copy_n(P, n1 * w, b);
+  const double r = 1 - s;
+  for (std::size_t level = 1; level < n1; ++level)
+    for (std::size_t i = 0; i + level < n1; ++i)
+      for (std::size_t x = 0; x < w; ++x) b[i * w + x] = r * b[i * w + x] + s * b[(i + 1) * w + x];
+  std::copy_n(b, w, out);
+}
+
+/// The number of points of order r's hodograph of a degree-n piece (one zero point past
+/// the degree).
+std::size_t hodograph_size(int n, std::size_t r) { return static_cast<std::size_t>(std::max(n - static_cast<int>(r), 0)) + 1; }
+
+bool finite_values(const double* v, std::size_t n) {
+  bool ok = true;
+  for (std::size_t i = 0; i < n; ++i) ok &= std::abs(v[i]) <= std::numeric_limits<double>::max();  // NaN fails
+  return ok;
+}
+
+}  // namespace
+
+DerivativeTable::DerivativeTable(const AnyCurve& c, int k) : k_(k) {
+  if (k < 0) throw InvalidArgument("k", "derivative order must be >= 0, got " + std::to_string(k));
+  std::visit([&](const auto& p) { read(p); }, io::pieces(c));
+}
+
+template <class P>
+void DerivativeTable::read(const P& p) {
+  constexpr int D = P::dimension;
+  using Rational = RationalBezier<double, D>;
+  d_ = D;
+  breaks_ = p.breaks();
+  for (const auto& seg : p.segments())
+    if (std::holds_alternative<Rational>(seg)) rational_ = true;
+  const std::size_t w = static_cast<std::size_t>(D) + (rational_ ? 1 : 0), K = static_cast<std::size_t>(k_);
+  for (std::size_t i = 0; i < p.segments().size(); ++i) {
+    // The control points, homogeneous (w P, w) when some piece is rational (a polynomial
+    // piece with weights 1).
+    std::vector<double> h;
+    std::visit(
+        [&]<class B>(const B& b) {
+          const auto& pts = b.points();
+          double scale = 1;
+          if constexpr (std::is_same_v<B, Rational>) {
+            int e = 0;
+            std::frexp(*std::max_element(b.weights().begin(), b.weights().end()), &e);
+            scale = std::ldexp(1.0, -e);
+          }
+          for (std::size_t j = 0; j < pts.size(); ++j) {
+            double wj = 1;
+            if constexpr (std::is_same_v<B, Rational>) wj = b.weights()[j] * scale;
+            for (int x = 0; x < D; ++x) h.push_back(rational_ ? wj * pts[j][x] : pts[j][x]);
+            if (rational_) h.push_back(wj);
+          }
+        },
+        p.segments()[i]);
+    const int n = static_cast<int>(h.size() / w) - 1;
+    max_degree_ = std::max(max_degree_, static_cast<std::size_t>(n));
+    degree_.push_back(n);
+    starts_.push_back(coef_.size());
+    const double len = breaks_[i + 1] - breaks_[i];
+    for (std::size_t r = 0; r <= K; ++r) {
+      if (rational_ || r == K) coef_.insert(coef_.end(), h.begin(), h.end());
+      const std::size_t q = h.size() / w - 1;
+      if (q == 0) {
+        std::fill(h.begin(), h.end(), 0.0);
+        continue;
+      }
+      std::vector<double> next(q * w);
+      for (std::size_t j = 0; j < q; ++j)
+        for (std::size_t x = 0; x < w; ++x) next[j * w + x] = static_cast<double>(q) * (h[(j + 1) * w + x] - h[j * w + x]) / len;
+      h = std::move(next);
+    }
+  }
+}
+
+bool DerivativeTable::evaluate(std::span<const double> t, double* out) const {
+  if (!finite_values(t.data(), t.size())) return false;
+  const std::size_t m = starts_.size(), d = static_cast<std::size_t>(d_), K = static_cast<std::size_t>(k_);
+  const std::size_t w = d + (rational_ ? 1 : 0);
+  const double lo = breaks_.front(), hi = breaks_.back();
+  std::vector<double> scratch((max_degree_ + 1) * w), hd((K + 1) * w), cd((K + 1) * d);
+  std::size_t i = 0;
+  for (std::size_t j = 0; j < t.size(); ++j) {
+    const double u = t[j];
+    if (!(breaks_[i] <= u && (u < breaks_[i + 1] || i + 1 == m))) {
+      i = static_cast<std::size_t>(std::upper_bound(breaks_.begin() + 1, breaks_.end() - 1, u) - breaks_.begin()) - 1;
+    }
+    double s = (u - breaks_[i]) / (breaks_[i + 1] - breaks_[i]);
+    if (u >= lo && u <= hi) s = std::clamp(s, 0.0, 1.0);
+    const int n = degree_[i];
+    // The (homogeneous) derivatives of orders 0..k (rational), or of order k alone; order
+    // r's points follow orders 0..r-1's in coef_.
+    std::size_t at = starts_[i];
+    for (std::size_t r = 0; r <= K; ++r) {
+      const std::size_t size = hodograph_size(n, r);
+      if (rational_ || r == K) {
+        de_casteljau_flat(coef_.data() + at, size - 1, w, s, scratch.data(), hd.data() + r * w);
+        if (rational_) at += size * w;
+      }
+    }
+    double* o = out + j * d;
+    if (!rational_) {
+      std::copy_n(hd.data() + K * w, d, o);
+      continue;
+    }
+    const double wt = hd[d];
+    for (std::size_t r = 0; r <= K; ++r) {
+      for (std::size_t x = 0; x < d; ++x) {
+        double a = hd[r * w + x];
+        double binom = 1;  // C(r, q)
+        for (std::size_t q = 1; q <= r; ++q) {
+          binom = binom * static_cast<double>(r - q + 1) / static_cast<double>(q);
+          a -= binom * hd[q * w + d] * cd[(r - q) * d + x];
+        }
+        cd[r * d + x] = a / wt;
+      }
+    }
+    std::copy_n(cd.data() + K * d, d, o);
+  }
+  return finite_values(out, t.size() * d);
+}
+
 }  // namespace casteljau::io

@@ -143,6 +143,23 @@ void surface_points(const AnySurface& s, const double* u, const double* v, std::
   }
 }
 
+void surface_partials(const AnySurface& s, const double* u, const double* v, std::size_t n, int k, double* out) {
+  const std::size_t block = static_cast<std::size_t>(k + 1) * static_cast<std::size_t>(k + 1) * s.form.cartesian();
+  for (std::size_t j = 0; j < n; ++j) {
+    const std::string where = "uv[" + std::to_string(j) + "]";
+    if (!std::isfinite(u[j]) || !std::isfinite(v[j])) {
+      throw InvalidArgument(where, "the parameter pair (" + casteljau::detail::format_number(u[j]) + ", " +
+                                       casteljau::detail::format_number(v[j]) + ") is not finite");
+    }
+    try {
+      const std::vector<double> d = casteljau::detail::partials(s.form, u[j], v[j], k);
+      std::copy(d.begin(), d.end(), out + j * block);
+    } catch (const InvalidArgument& e) {
+      throw InvalidArgument(where, e.problem());
+    }
+  }
+}
+
 AnySurface make_surface(SurfaceKind kind, casteljau::detail::SurfaceForm<double> f) {
   const SurfaceEntry& e = entry(kind);
   if (f.rational != e.rational) throw std::logic_error("make_surface: the form's rationality is not the kind's");
