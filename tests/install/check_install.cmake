@@ -30,9 +30,16 @@ endfunction()
 run(${CMAKE_COMMAND} --install "${BUILD_DIR}" --prefix "${prefix}")
 check_program("${prefix}/bin/casteljau")
 # No build type (no optimisation): the check is that the package's targets configure, compile
-# and link; -O3 would only add about 8 s of CPU to every make test.
+# and link; -O3 would only add about 8 s of CPU to every make test. With clang (installed for
+# the sanitizer build) when present: 8.4 s of CPU against g++'s 13.4 s (session 12); the
+# headers meet g++ in every other build.
+find_program(clangxx clang++)
+set(compiler)
+if(clangxx)
+  set(compiler -DCMAKE_CXX_COMPILER=${clangxx})
+endif()
 run(${CMAKE_COMMAND} -S "${SOURCE_DIR}/examples/consumer" -B "${consumer_build}"
-    -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_BUILD_TYPE=)
+    -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_BUILD_TYPE= ${compiler})
 run(${CMAKE_COMMAND} --build "${consumer_build}")
 run("${consumer_build}/consumer")
 message(STATUS "${run_output}")
@@ -51,7 +58,10 @@ if(NOT count EQUAL 1)
   message(FATAL_ERROR "expected one casteljau_*.deb in ${deb_dir}, found: ${debs}")
 endif()
 run(dpkg-deb --field "${debs}" Package Depends)
-if(NOT run_output MATCHES "Package: casteljau" OR NOT run_output MATCHES "libeigen3-dev" OR NOT run_output MATCHES "libc6")
+# libc6, libstdc++6 and libharfbuzz0b from dpkg-shlibdeps on the program (it links HarfBuzz
+# for glyph kerning), libeigen3-dev from the package's declared list.
+if(NOT run_output MATCHES "Package: casteljau" OR NOT run_output MATCHES "libeigen3-dev" OR NOT run_output MATCHES "libc6 \\(>="
+   OR NOT run_output MATCHES "libstdc\\+\\+6 \\(>=" OR NOT run_output MATCHES "libharfbuzz0b")
   message(FATAL_ERROR "unexpected package fields:\n${run_output}")
 endif()
 set(root "${WORK_DIR}/deb_root")
