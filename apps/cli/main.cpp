@@ -233,7 +233,7 @@ int main(int argc, char** argv) {
   }
   if (chosen.front() == serve) {
     try {
-      return casteljau::cli::serve(serve_options);
+      return casteljau::cli::serve_through_module(serve_options);
     } catch (const std::exception& e) {
       print_error(std::string("serve: ") + e.what());
       return exit_internal;

@@ -616,3 +616,8 @@ int serve(const ServeOptions& options) {
 }
 
 }  // namespace casteljau::cli
+
+/// The module's entry point (serve_loader.cpp finds it by this unmangled name).
+extern "C" int casteljau_serve_module(const casteljau::cli::ServeOptions& options) {
+  return casteljau::cli::serve(options);
+}

@@ -17,7 +17,14 @@ struct ServeOptions {
 };
 
 /// Serves until the process is stopped (a signal); returns an exit status when the server
-/// cannot start (the address is taken, ...).
+/// cannot start (the address is taken, ...). Defined in serve.cpp, which is built as a
+/// module of its own (casteljau-serve.so, with cpp-httplib and through it OpenSSL, zlib and
+/// Brotli), so that every other command starts without loading those libraries.
 int serve(const ServeOptions& options);
+
+/// serve() through the module: loads casteljau-serve.so from beside the program (the build
+/// tree) or from its installed place relative to the program (CASTELJAU_SERVE_MODULE), then
+/// calls it. Throws std::runtime_error naming the places tried when it cannot be loaded.
+int serve_through_module(const ServeOptions& options);
 
 }  // namespace casteljau::cli

@@ -1,7 +1,7 @@
 # Installs the build tree into a scratch prefix, then configures, builds and runs the
 # consumer example against it with find_package(casteljau): the package config works
-# for a user's project, and the installed `casteljau` program answers a request. Then
-# builds the Debian package (CPack, as `make package`) and checks that it holds exactly
+# for a user's project, and the installed `casteljau` program answers a request and starts
+# the server. Then builds the Debian package (CPack, as `make package`) and checks that it holds exactly
 # the files `cmake --install` lays out, under /usr, and that its program runs.
 # Run as: cmake -DBUILD_DIR=.. -DSOURCE_DIR=.. -DWORK_DIR=.. -P check_install.cmake
 file(REMOVE_RECURSE "${WORK_DIR}")
@@ -27,8 +27,18 @@ function(check_program exe)
   endif()
 endfunction()
 
+# `casteljau serve` loads its module (casteljau-serve.so, under the library folder) by its
+# path relative to the program: the server starts and prints its address (stopped after 3 s).
+function(check_serve exe)
+  execute_process(COMMAND timeout 3 "${exe}" serve --port 0 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 124 OR NOT out MATCHES "^casteljau serve: http://127\\.0\\.0\\.1:[0-9]+/")
+    message(FATAL_ERROR "${exe} serve (${rc}): ${out}\n${err}")
+  endif()
+endfunction()
+
 run(${CMAKE_COMMAND} --install "${BUILD_DIR}" --prefix "${prefix}")
 check_program("${prefix}/bin/casteljau")
+check_serve("${prefix}/bin/casteljau")
 # No build type (no optimisation): the check is that the package's targets configure, compile
 # and link; -O3 would only add about 8 s of CPU to every make test. With clang (installed for
 # the sanitizer build) when present: 8.4 s of CPU against g++'s 13.4 s (session 12); the
@@ -74,3 +84,4 @@ if(NOT installed STREQUAL packaged)
   message(FATAL_ERROR "the package's files under /usr differ from cmake --install's:\ninstall: ${installed}\npackage: ${packaged}")
 endif()
 check_program("${root}/usr/bin/casteljau")
+check_serve("${root}/usr/bin/casteljau")
