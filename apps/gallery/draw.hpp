@@ -97,7 +97,9 @@ inline void label_away(SvgDocument& doc, const P2& p, const P2& from, const std:
 }
 
 /// The width in px of s in a sans or serif font of `size` px, estimated from its
-/// characters (narrow, digits, wide, sub- and superscripts), a little generous; the
+/// characters (narrow, digits, wide, sub- and superscripts), a little generous (DejaVu
+/// Sans, the widest of the page's fallback fonts, sets lowercase and digits at about 0.6
+/// em); the
 /// label-placement check of tests/gallery/label_boxes.py uses the same estimate.
 inline double text_width_px(const std::string& s, double size) {
   double em = 0;
@@ -108,11 +110,11 @@ inline double text_width_px(const std::string& s, double size) {
     i += n;
     if (n == 1) {
       const std::string_view narrow = "ijl.,:;'|!", thin = "frtI()[]-/ ", wide = "mwMW";
-      if (narrow.find(ch[0]) != std::string_view::npos) em += 0.26;
-      else if (thin.find(ch[0]) != std::string_view::npos) em += 0.33;
-      else if (wide.find(ch[0]) != std::string_view::npos) em += 0.86;
-      else if (std::isupper(c)) em += 0.68;
-      else em += 0.56;
+      if (narrow.find(ch[0]) != std::string_view::npos) em += 0.28;
+      else if (thin.find(ch[0]) != std::string_view::npos) em += 0.36;
+      else if (wide.find(ch[0]) != std::string_view::npos) em += 0.9;
+      else if (std::isupper(c)) em += 0.72;
+      else em += 0.62;
     } else {
       // Sub- and superscripts (U+2070..U+209F, ¹ ² ³, ᵢ, ⱼ) are small; other symbols about 0.6 em.
       const auto b = [&](std::size_t k) { return static_cast<unsigned char>(ch[k]); };

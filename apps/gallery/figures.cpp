@@ -670,13 +670,11 @@ Figure rational_circle() {
   dot(doc, {0.0, 0.0}, "#adb5bd", 3);
   const std::array<std::string, 3> wl = {"P\u2080,  w\u2080 = 1", "P\u2081,  w\u2081 = \u221a2/2 \u2248 " + io::tick_label(quarter.weights()[1], 0.0001),
                                          "P\u2082,  w\u2082 = 1"};
-  const std::array<std::array<double, 2>, 3> off = {{{10, 5}, {10, 5}, {-4, -12}}};
-  for (std::size_t i = 0; i < 3; ++i) {
-    auto s = math(13, Anchor::start);
-    s.dx = off[i][0];
-    s.dy = off[i][1];
-    doc.text(quarter.points()[i], wl[i], s);
-  }
+  LabelPlacer labels(doc);
+  labels.avoid(quarter.points());
+  labels.avoid_curve(quarter, 120);
+  const std::array<V2, 3> towards = {V2(1.0, 0.3), V2(1.0, 0.3), V2(0.3, -1.0)};
+  for (std::size_t i = 0; i < 3; ++i) labels.place(quarter.points()[i], wl[i], math(13), towards[i], 8);
   doc.set_map(PageMap{});
   doc.text({30, 22}, "quarter arc: a rational quadratic", heading(12));
 

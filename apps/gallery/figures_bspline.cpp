@@ -54,7 +54,7 @@ Figure knot_insertion() {
                              {P2{{0.0, 0.0}}, P2{{0.8, 2.6}}, P2{{2.4, 3.0}}, P2{{3.6, 0.2}}, P2{{5.2, 0.6}}, P2{{6.0, 2.8}}});
   const BSpline<double, 2> once = c.insert_knot(1.5);
   const BSpline<double, 2> full = c.insert_knot(1.5, 3);
-  SvgDocument doc(width, 360);
+  SvgDocument doc(width, 380);
   doc.title("Knot insertion");
   doc.set_map(PageMap::fit(grown_relative(c.control_bounds(), 0.12), {40, 30, width - 80, 300}));
   doc.polyline(c.points(), stroke(light, 1.3));
@@ -66,10 +66,14 @@ Figure knot_insertion() {
   control_points(doc, full.points(), accent, 3);
   const P2 at = c(1.5);
   doc.circle(at, 5, Paint{.stroke = accent, .stroke_width = 1, .fill = accent});
-  LabelPlacer labels(doc);
-  for (const auto* q : {&c, &once, &full}) labels.avoid(q->points());
-  labels.avoid_curve(c, 300);
-  labels.place(at, "C(1.5) = a control point at multiplicity 3", label(12), V2(1.0, -0.4), 8);
+  // The legend below the picture (a label this long finds no free place among the polygons).
+  doc.set_map(PageMap{});
+  doc.circle({50, 362}, 5, Paint{.stroke = accent, .stroke_width = 1, .fill = accent});
+  doc.text({62, 366}, "C(1.5): a control point once the knot has multiplicity 3", label(12));
+  doc.line({470, 362}, {500, 362}, stroke(grey, 1.4, "5 3"));
+  doc.text({508, 366}, "once", label(12));
+  doc.line({560, 362}, {590, 362}, stroke(accent, 1.4));
+  doc.text({598, 366}, "three times", label(12));
   const double d1 = gap(c, once, 0, 3), d3 = gap(c, full, 0, 3);
   Figure f;
   f.id = "knot-insertion";

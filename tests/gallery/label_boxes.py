@@ -15,10 +15,11 @@ import re
 SVG = "{http://www.w3.org/2000/svg}"
 
 # Advance widths in em (apps/gallery/draw.hpp's text_width_px places labels with the same
-# estimate). Characters not listed take 0.68 (capitals) or 0.6 (symbols, Greek, arrows);
+# estimate, about DejaVu Sans's, the widest fallback font). Characters not listed take 0.72
+# (capitals), 0.62 (other ASCII) or 0.6 (symbols, Greek, arrows);
 # sub- and superscripts (U+2070..U+209F, ¹ ² ³, ᵢ, ⱼ) 0.36.
 _WIDTHS = {}
-for chars, w in (("ijl.,:;'|!", 0.26), ("frtI()[]-/ ", 0.33), ("mwMW", 0.86), ("\u00b9\u00b2\u00b3\u1d62\u2c7c", 0.36)):
+for chars, w in (("ijl.,:;'|!", 0.28), ("frtI()[]-/ ", 0.36), ("mwMW", 0.9), ("\u00b9\u00b2\u00b3\u1d62\u2c7c", 0.36)):
     for ch in chars:
         _WIDTHS[ch] = w
 
@@ -29,7 +30,7 @@ def _char_width(ch):
     if 0x2070 <= ord(ch) <= 0x209F:
         return 0.36
     if ch.isascii():
-        return 0.68 if ch.isupper() else 0.56
+        return 0.72 if ch.isupper() else 0.62
     return 0.6
 
 
