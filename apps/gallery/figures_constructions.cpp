@@ -87,13 +87,13 @@ Figure de_boor_construction() {
   using namespace constructions;
   const int p = 3;
   const std::vector<double> U{0, 0, 0, 0, 1, 2, 4, 5, 5, 5, 5};
-  const std::vector<P2> P{{0.0, 0.2}, {0.7, 2.9}, {2.6, 3.7}, {4.3, 1.1}, {6.1, 0.5}, {7.2, 3.3}, {8.8, 2.6}};
+  const std::vector<P2> P{{0.0, 0.2}, {0.7, 2.9}, {2.6, 3.7}, {4.0, -0.8}, {6.4, -1.0}, {7.2, 3.3}, {8.8, 2.6}};
   const Spline c(p, U, P);
   const double u = 2.6;
   // The span k with U_k <= u < U_{k+1}: the functions N_{k-p..k} are not zero at u.
   const std::size_t k = static_cast<std::size_t>(std::upper_bound(U.begin(), U.end(), u) - U.begin()) - 1;
   // The levels d_i^r, i = k-p+r .. k: d_i^r = (1 - a) d_{i-1}^{r-1} + a d_i^{r-1} with
-  // a = (u - U_i) / (U_{i+p-r+1} - U_i) [PT97, eq. 5.15; de Boor72], written here.
+  // a = (u - U_i) / (U_{i+p-r+1} - U_i) [PT97, eq. 5.15; deBoor78], written here.
   std::vector<std::vector<P2>> level{{P.begin() + static_cast<std::ptrdiff_t>(k - p), P.begin() + static_cast<std::ptrdiff_t>(k + 1)}};
   std::vector<std::vector<double>> alpha;
   for (int r = 1; r <= p; ++r) {
@@ -345,7 +345,7 @@ Figure nurbs_weight_family() {
     at_u0.push_back(c(u0));
     pulled_last = distance(c(u0), P[moved]);
   }
-  // The points C(u0; w) lie on one line through P3 [PT97, sec. 4.3].
+  // The points C(u0; w) lie on one line through P3 [PT97, ch. 4].
   doc.line(at_u0.front(), P[moved], stroke(text_grey, 1, "2 3"));
   for (std::size_t k = 0; k < at_u0.size(); ++k) dot(doc, at_u0[k], ramp(static_cast<double>(k) / (ws.size() - 1)), 3.6);
   control_points(doc, P);
@@ -382,7 +382,7 @@ Figure nurbs_weight_family() {
       "of P<sub>3</sub>, from 0.2 to 20 (<code>nurbs</code> curves drawn from their exact rational pieces). Raising "
       "w<sub>3</sub> pulls the curve towards P<sub>3</sub>, lowering it pushes the curve away, and only on the spans "
       "(1, 4) where N<sub>3,3</sub> is not zero: the ends stay. For a fixed u the points C(u) of the family lie on one "
-      "straight line through P<sub>3</sub> [PT97, sec. 4.3]: the six points at u = 2 are within " + sci(off_line) +
+      "straight line through P<sub>3</sub> [PT97, ch. 4]: the six points at u = 2 are within " + sci(off_line) +
       " of the line through the first and P<sub>3</sub>; at w<sub>3</sub> = 20 the point is " + fixed(pulled_last, 3) +
       " from P<sub>3</sub>.";
   return {"nurbs-weights", "A family of NURBS as one weight changes", doc.str(), cap};
@@ -430,7 +430,7 @@ Figure knot_removal() {
   doc.text({455, 24}, "the knot 2 removed within a tolerance of 1 (red)", heading(12.5));
 
   std::string cap =
-      "<code>remove_knot</code> undoes knot insertion [PT97, A5.8; Tiller92]. Left: the cubic B-spline with knots 0, 0, 0, "
+      "<code>remove_knot</code> undoes knot insertion [PT97, A5.8]. Left: the cubic B-spline with knots 0, 0, 0, "
       "0, 1, 2, 3, 4, 4, 4, 4 (blue, 7 points) after inserting u = 2.5 twice (red, 9 points); removing 2.5 twice (removed: " +
       std::to_string(back["removed"].get<int>()) + ") gives back the original control points to " + sci(restored_gap) +
       ". Right: the original knot 2 cannot go without moving the curve: within a tolerance of 0.3 it is refused (removed: " +
