@@ -956,19 +956,20 @@ namespace {
 
 /// The explorer (`make explorer`, apps/explorer) view that shows a figure's subject live,
 /// by figure id, with the name of its tab; none for the figures the explorer has no view
-/// of (fonts, surfaces, 3-D frames, fitting, degree reduction, the pieces of a path).
+/// of (affine maps, degree reduction, the pieces of a path, fitting, knot removal, fonts,
+/// surfaces, 3-D frames).
 struct ExplorerView {
   std::string_view figure, view, tab;
 };
 constexpr ExplorerView explorer_views[] = {
     {"bernstein", "bezier", "de Casteljau"},           {"de-casteljau", "bezier", "de Casteljau"},
     {"subdivision", "bezier", "de Casteljau"},         {"elevation", "bezier", "de Casteljau"},
-    {"convex-hull", "bezier", "de Casteljau"},         {"affine", "bezier", "de Casteljau"},
+    {"convex-hull", "bezier", "de Casteljau"},
     {"continuity", "composite", "Composite curves"},   {"rational-circle", "bspline", "B-splines and NURBS"},
     {"bounds", "queries", "Queries"},                  {"hodograph", "bezier", "de Casteljau"},
     {"blossom", "bezier", "de Casteljau"},             {"bspline-basis", "bspline", "B-splines and NURBS"},
     {"de-boor", "bspline", "B-splines and NURBS"},     {"local-control", "bspline", "B-splines and NURBS"},
-    {"knot-insertion", "bspline", "B-splines and NURBS"}, {"knot-removal", "bspline", "B-splines and NURBS"},
+    {"knot-insertion", "bspline", "B-splines and NURBS"},
     {"nurbs-circle", "bspline", "B-splines and NURBS"}, {"nurbs-weights", "bspline", "B-splines and NURBS"},
     {"subdivision-schemes", "subdivision", "Subdivision curves"}, {"four-point", "subdivision", "Subdivision curves"},
     {"closest-points", "queries", "Queries"},          {"curvature-comb", "composite", "Composite curves"},

@@ -445,6 +445,18 @@ class ExplorerTest(unittest.TestCase):
         self.driver.save_screenshot("explorer-import.png")
         self.no_console_errors()
 
+    def test_view_from_address(self):
+        # The gallery links to views by address (http://127.0.0.1:8080/#VIEW): a page
+        # opened there shows that view alone; an unknown name shows the first view.
+        for fragment, shown in (("catmull", "catmull"), ("no-such-view", "bezier")):
+            self.driver.get("about:blank")
+            self.driver.get(self.base + "#" + fragment)
+            self.settle()
+            visible = self.driver.execute_script(
+                "return Array.from(document.querySelectorAll('section.view'), (v) => [v.id, v.hidden])")
+            self.assertEqual([v for v, hidden in visible if not hidden], ["view-" + shown])
+        self.no_console_errors()
+
     def drag_latencies(self, handle_index, steps):
         """A drag of `steps` moves at 60 Hz in the de Casteljau view: every update's time
         from its input to the drawing of the server's answer and every batch's round trip
