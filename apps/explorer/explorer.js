@@ -67,14 +67,22 @@ function api(command, request) {
   });
 }
 
+// The round trip of each batch in milliseconds, from the request to its whole answer (the
+// last 1000): the part of an update's latency spent outside the page's own drawing.
+const roundTrips = [];
+window.explorerRoundTrips = () => roundTrips.slice();
+
 async function sendBatch() {
   const items = batch;
   batch = null;
   setPending(1);
   try {
     const body = items.map((i) => JSON.stringify({ command: i.command, request: i.request })).join("\n") + "\n";
+    const sent = performance.now();
     const res = await fetch("batch", { method: "POST", headers: { "Content-Type": "application/x-ndjson" }, body });
     const text = await res.text();
+    roundTrips.push(performance.now() - sent);
+    if (roundTrips.length > 1000) roundTrips.shift();
     if (!res.ok) {
       let message = String(res.status);
       try {

@@ -5,11 +5,15 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 #include <span>
 #include <sstream>
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include "casteljau/core/interval.hpp"
 #include "casteljau/core/point.hpp"
@@ -91,6 +95,145 @@ inline void label_away(SvgDocument& doc, const P2& p, const P2& from, const std:
   style.dy = d[1] * px_away + style.size * 0.35;  // centre the glyphs vertically
   doc.text(p, s, style);
 }
+
+/// The width in px of s in a sans or serif font of `size` px, estimated from its
+/// characters (narrow, digits, wide, sub- and superscripts), a little generous (DejaVu
+/// Sans, the widest of the page's fallback fonts, sets lowercase and digits at about 0.6
+/// em); the
+/// label-placement check of tests/gallery/label_boxes.py uses the same estimate.
+inline double text_width_px(const std::string& s, double size) {
+  double em = 0;
+  for (std::size_t i = 0; i < s.size();) {
+    const unsigned char c = static_cast<unsigned char>(s[i]);
+    const std::size_t n = c < 0x80 ? 1 : (c < 0xe0 ? 2 : (c < 0xf0 ? 3 : 4));
+    const std::string ch = s.substr(i, n);
+    i += n;
+    if (n == 1) {
+      const std::string_view narrow = "ijl.,:;'|!", thin = "frtI()[]-/ ", wide = "mwMW";
+      if (narrow.find(ch[0]) != std::string_view::npos) em += 0.28;
+      else if (thin.find(ch[0]) != std::string_view::npos) em += 0.36;
+      else if (wide.find(ch[0]) != std::string_view::npos) em += 0.9;
+      else if (std::isupper(c)) em += 0.72;
+      else em += 0.62;
+    } else {
+      // Sub- and superscripts (U+2070..U+209F, ¹ ² ³, ᵢ, ⱼ) are small; other symbols about 0.6 em.
+      const auto b = [&](std::size_t k) { return static_cast<unsigned char>(ch[k]); };
+      const bool script = (n == 3 && b(0) == 0xe2 && ((b(1) == 0x81 && b(2) >= 0xb0) || (b(1) == 0x82 && b(2) <= 0x9f))) ||
+                          ch == "\u00b9" || ch == "\u00b2" || ch == "\u00b3" || ch == "\u1d62" || ch == "\u2c7c";
+      em += script ? 0.36 : 0.6;
+    }
+  }
+  return em * size;
+}
+
+/// A label placed px_away pixels from the page point of p in the unit page direction
+/// `dir` (y down), its estimated box (text_width_px) clear of p: the box's nearest side,
+/// not its centre, is px_away from p.
+inline void label_at(SvgDocument& doc, const P2& p, V2 dir, const std::string& s, TextStyle style, double px_away = 6) {
+  const double len = norm(dir);
+  dir = len > 0 ? dir / len : V2(0.0, -1.0);
+  const double w = text_width_px(s, style.size), h = style.size * 0.97;
+  const double reach = px_away + 0.5 * std::abs(dir[0]) * w + 0.5 * std::abs(dir[1]) * h;
+  style.anchor = Anchor::middle;
+  style.dx = dir[0] * reach;
+  style.dy = dir[1] * reach + style.size * (0.75 - 0.97 / 2);  // the box's middle at the offset
+  doc.text(p, s, style);
+}
+
+/// Places labels clear of the lines drawn and of each other, as the label check of
+/// tests/gallery/label_boxes.py wants them (a text box from text_width_px, from 0.75 em
+/// above the baseline to 0.22 em below): the obstacles are polylines in page px, given in
+/// model coordinates through the document's map at the time; each label tries 16
+/// directions about its point, the preferred one first, at three distances.
+class LabelPlacer {
+ public:
+  explicit LabelPlacer(SvgDocument& doc) : doc_(doc) {}
+
+  /// A polyline (model coordinates, the document's current map).
+  void avoid(std::span<const P2> model_points) {
+    std::vector<P2> page;
+    for (const auto& p : model_points) page.push_back(doc_.map()(p));
+    lines_.push_back(std::move(page));
+  }
+  /// A curve, sampled at n + 1 parameters of its domain.
+  template <class C>
+  void avoid_curve(const C& c, int n = 240) {
+    std::vector<P2> pts;
+    const auto dom = c.domain();
+    for (int i = 0; i <= n; ++i) pts.push_back(c(dom.lo + (dom.hi - dom.lo) * i / n));
+    avoid(pts);
+  }
+  /// A disc of radius r px about the model point p (a marked point).
+  void avoid_point(const P2& p, double r) {
+    const P2 q = doc_.map()(p);
+    boxes_.push_back({q[0] - r, q[1] - r, q[0] + r, q[1] + r});
+  }
+
+  /// The label s near the model point p, px_away from it: in the first clear direction
+  /// (the preferred page direction, y down, then the others alternating either side of
+  /// it), else in the preferred one. Returns whether a clear place was found.
+  bool place(const P2& p, const std::string& s, TextStyle style, V2 preferred = V2(0.0, -1.0), double px_away = 5) {
+    const P2 q = doc_.map()(p);
+    const double len = norm(preferred);
+    preferred = len > 0 ? preferred / len : V2(0.0, -1.0);
+    const double w = text_width_px(s, style.size), h = style.size * 0.97;
+    for (const double factor : {1.0, 2.0, 3.2}) {
+      for (int k = 0; k < 16; ++k) {
+        const double a = (k % 2 ? -1 : 1) * ((k + 1) / 2) * std::numbers::pi / 8;
+        const V2 d(preferred[0] * std::cos(a) - preferred[1] * std::sin(a), preferred[0] * std::sin(a) + preferred[1] * std::cos(a));
+        const double reach = px_away * factor + 0.5 * std::abs(d[0]) * w + 0.5 * std::abs(d[1]) * h;
+        const P2 c = q + reach * d;
+        const Rect r{c[0] - w / 2, c[1] - h / 2, c[0] + w / 2, c[1] + h / 2};
+        if (clear(r)) {
+          boxes_.push_back(r);
+          label_at(doc_, p, d, s, style, px_away * factor);
+          return true;
+        }
+      }
+    }
+    label_at(doc_, p, preferred, s, style, px_away);
+    return false;
+  }
+
+ private:
+  struct Rect {
+    double x0, y0, x1, y1;
+  };
+  static bool segment_meets(const P2& a, const P2& b, const Rect& r) {  // Liang-Barsky
+    double t0 = 0, t1 = 1;
+    const double dx = b[0] - a[0], dy = b[1] - a[1];
+    const std::array<std::array<double, 2>, 4> tests = {{{-dx, a[0] - r.x0}, {dx, r.x1 - a[0]}, {-dy, a[1] - r.y0}, {dy, r.y1 - a[1]}}};
+    for (const auto& [den, num] : tests) {
+      if (den == 0) {
+        if (num < 0) return false;
+        continue;
+      }
+      const double v = num / den;
+      if (den < 0) t0 = std::max(t0, v);
+      else t1 = std::min(t1, v);
+      if (t0 > t1) return false;
+    }
+    return true;
+  }
+  bool clear(Rect r) const {
+    constexpr double m = 2;  // px: stricter than the check's margins
+    if (r.x0 < 2 || r.y0 < 2 || r.x1 > doc_.width() - 2 || r.y1 > doc_.height() - 2) return false;
+    r = {r.x0 - m, r.y0 - m, r.x1 + m, r.y1 + m};
+    for (const auto& b : boxes_) {
+      if (r.x0 < b.x1 && b.x0 < r.x1 && r.y0 < b.y1 && b.y0 < r.y1) return false;
+    }
+    for (const auto& line : lines_) {
+      for (std::size_t i = 1; i < line.size(); ++i) {
+        if (segment_meets(line[i - 1], line[i], r)) return false;
+      }
+    }
+    return true;
+  }
+
+  SvgDocument& doc_;
+  std::vector<std::vector<P2>> lines_;
+  std::vector<Rect> boxes_;
+};
 
 /// A colour ramp from deep blue through teal and gold to red, s in [0, 1] (for ordered
 /// families: basis functions, degrees).

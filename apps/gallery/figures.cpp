@@ -11,6 +11,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "casteljau/casteljau.hpp"
@@ -178,12 +179,13 @@ Figure bernstein_basis() {
     // Labels: interior functions above their maximum at t = i/n, the two end functions
     // above the curve near their ends (where it is 1 they would collide with the sum line).
     if (n <= 4) {
+      LabelPlacer labels(doc);
+      labels.avoid(sum_line);
+      for (const auto& g : graphs) labels.avoid(g);
       for (int i = 0; i <= n; ++i) {
         const double t = i == 0 ? 0.1 : (i == n ? 0.9 : static_cast<double>(i) / n);
-        auto s = math(12, i == 0 ? Anchor::start : (i == n ? Anchor::end : Anchor::middle), ramp(static_cast<double>(i) / n));
-        s.dy = -7;
-        s.dx = i == 0 ? 5 : (i == n ? -5 : 0);
-        doc.text({t, bernstein(i, n, t)}, "B" + sub(i) + "," + sub(n), s);
+        labels.place({t, bernstein(i, n, t)}, "B" + sub(i) + "," + sub(n), math(12, Anchor::middle, ramp(static_cast<double>(i) / n)),
+                     V2(i == 0 ? 1.0 : (i == n ? -1.0 : 0.0), -1.0), 4);
       }
     }
     doc.set_map(PageMap{});
@@ -229,23 +231,25 @@ Figure de_casteljau_construction() {
   }
   const P2 mid = centroid(P);
   control_points(doc, P);
-  for (std::size_t i = 0; i < P.size(); ++i) label_away(doc, P[i], mid, "P" + sub(static_cast<int>(i)), math(16));
+  // Labels clear of the curve, the polygons and each other (LabelPlacer): the control
+  // points' away from the polygon's centre, the levels' below their points where free.
+  LabelPlacer labels(doc);
+  labels.avoid_curve(c);
+  for (std::size_t r = 0; r + 1 < level.size(); ++r) labels.avoid(level[r]);
+  for (std::size_t r = 1; r < level.size(); ++r) {
+    for (const auto& q : level[r]) labels.avoid_point(q, r + 1 == level.size() ? 5.5 : 4);
+  }
+  for (std::size_t i = 0; i < P.size(); ++i) labels.place(P[i], "P" + sub(static_cast<int>(i)), math(16), doc.map()(P[i]) - doc.map()(mid), 8);
   for (std::size_t r = 1; r < level.size(); ++r) {
     for (std::size_t i = 0; i < level[r].size(); ++i) {
       const P2& q = level[r][i];
       dot(doc, q, colours[r], r + 1 == level.size() ? 5.5 : 4);
-      // Labels go below the segment they lie on (away from the polygon above them).
-      auto s = math(14, Anchor::middle, colours[r] == polygon_grey ? "#222" : colours[r]);
-      s.dy = r + 1 == level.size() ? 26 : 20;
-      doc.text(q, "P" + sub(static_cast<int>(i)) + sup(static_cast<int>(r)), s);
+      labels.place(q, "P" + sub(static_cast<int>(i)) + sup(static_cast<int>(r)),
+                   math(14, Anchor::middle, colours[r] == polygon_grey ? "#222" : colours[r]), V2(0.0, 1.0), 6);
     }
   }
   // The ratio on the first edge: t : (1 - t).
-  {
-    auto s = small(11, Anchor::end, text_grey);
-    s.dx = -8;
-    doc.text(lerp(P[0], level[1][0], 0.5), "t = 0.4", s);
-  }
+  labels.place(lerp(P[0], level[1][0], 0.5), "t = 0.4", small(11, Anchor::end, text_grey), V2(-1.0, 0.0), 8);
 
   // The scheme on the right: the triangle of points with the coordinates computed.
   doc.set_map(PageMap{});
@@ -257,9 +261,13 @@ Figure de_casteljau_construction() {
     for (std::size_t i = 0; i < level[r].size(); ++i) {
       const P2 at{x0 + r * dx, y0 + (2 * i + r) * dy};
       if (r > 0) {
-        const P2 upper{at[0] - dx + 26, at[1] - dy - 5}, lower{at[0] - dx + 26, at[1] + dy - 5}, end{at[0] - 5, at[1] - 5};
-        doc.line(upper, end, thin("#c3cad2"));
-        doc.line(lower, end, thin("#c3cad2"));
+        // From the right of the upper parent's coordinates and of the lower parent's name,
+        // so that no line crosses a number.
+        const P2& up = level[r - 1][i];
+        const double w_up = text_width_px("(" + io::tick_label(up[0], 0.001) + ", " + io::tick_label(up[1], 0.001) + ")", 9.5);
+        const double w_name = text_width_px("P" + sub(static_cast<int>(i + 1)) + (r > 1 ? sup(static_cast<int>(r - 1)) : ""), 15);
+        doc.line({at[0] - dx + w_up + 4, at[1] - dy + 9}, {at[0] - 5, at[1] - 6}, thin("#c3cad2"));
+        doc.line({at[0] - dx + w_name + 4, at[1] + dy - 6}, {at[0] - 5, at[1] + 1}, thin("#c3cad2"));
       }
       const std::string colour = r == 0 ? "#222" : colours[r];
       doc.text(at, "P" + sub(static_cast<int>(i)) + (r > 0 ? sup(static_cast<int>(r)) : ""), math(15, Anchor::start, colour));
@@ -562,13 +570,18 @@ Figure continuity() {
   for (const auto& s : segs) doc.polyline(s.points(), polygon_paint("#c3cad2", 1));
   for (std::size_t i = 0; i < segs.size(); ++i) doc.curve(segs[i], curve_paint(i % 2 ? "#2f6690" : ink, 2.8));
   for (const auto& s : segs) control_points(doc, s.points(), "#9aa3ad", 2.6);
+  LabelPlacer labels(doc);
+  for (const auto& t : tips) labels.avoid(t);
+  for (const auto& sg : segs) {
+    labels.avoid(sg.points());
+    labels.avoid_curve(sg, 60);
+  }
   for (std::size_t j = 1; j < path.size(); ++j) {
     const P2 at = segs[j](0.0);
     dot(doc, at, "#222", 5);
-    auto s = TextStyle{.size = 15, .colour = "#222", .anchor = Anchor::middle, .bold = true, .dy = 30,
-                       .family = "Georgia, serif"};
+    const auto s = TextStyle{.size = 15, .colour = "#222", .anchor = Anchor::middle, .bold = true, .family = "Georgia, serif"};
     const std::string n = name(joints[j - 1]);
-    doc.text(at, n.substr(0, 1) + sup(n[1] - '0'), s);
+    labels.place(at, n.substr(0, 1) + sup(n[1] - '0'), s, V2(0.0, 1.0), 10);
   }
   // Legend below the plot.
   doc.set_map(PageMap{});
@@ -657,13 +670,11 @@ Figure rational_circle() {
   dot(doc, {0.0, 0.0}, "#adb5bd", 3);
   const std::array<std::string, 3> wl = {"P\u2080,  w\u2080 = 1", "P\u2081,  w\u2081 = \u221a2/2 \u2248 " + io::tick_label(quarter.weights()[1], 0.0001),
                                          "P\u2082,  w\u2082 = 1"};
-  const std::array<std::array<double, 2>, 3> off = {{{10, 5}, {10, 5}, {-4, -12}}};
-  for (std::size_t i = 0; i < 3; ++i) {
-    auto s = math(13, Anchor::start);
-    s.dx = off[i][0];
-    s.dy = off[i][1];
-    doc.text(quarter.points()[i], wl[i], s);
-  }
+  LabelPlacer labels(doc);
+  labels.avoid(quarter.points());
+  labels.avoid_curve(quarter, 120);
+  const std::array<V2, 3> towards = {V2(1.0, 0.3), V2(1.0, 0.3), V2(0.3, -1.0)};
+  for (std::size_t i = 0; i < 3; ++i) labels.place(quarter.points()[i], wl[i], math(13), towards[i], 8);
   doc.set_map(PageMap{});
   doc.text({30, 22}, "quarter arc: a rational quadratic", heading(12));
 
@@ -879,14 +890,15 @@ Figure pieces_of_a_path() {
       doc.curve(piece, curve_paint(colours[i % 2], 2.6));
     }, p.segments()[i]);
   }
+  LabelPlacer labels(doc);
+  labels.avoid_curve(path, 400);
+  for (std::size_t i = 0; i < p.size(); ++i) std::visit([&](const auto& piece) { labels.avoid(piece.points()); }, p.segments()[i]);
   for (std::size_t i = 0; i < p.breaks().size(); ++i) {
     const double u = p.breaks()[i];
     const P2 at = path(u);
     dot(doc, at, "white", 4.2);
     dot(doc, at, point_edge, 2.2);
-    auto st = small(11, Anchor::middle, "#222");
-    st.dy = (i % 2 == 0) ? 17 : -9;
-    doc.text(at, "u=" + detail::format_number(u), st);
+    labels.place(at, "u=" + detail::format_number(u), small(11, Anchor::middle, "#222"), V2(0.0, i % 2 == 0 ? 1.0 : -1.0), 6);
   }
   // The polyline of flatten(), offset below for legibility.
   doc.set_map(PageMap{});
@@ -932,12 +944,45 @@ const std::vector<FigureFunction>& figure_list() {
       spline_boundaries, monotone_vs_natural,
       glyph_outlines_figure,
       surface_of_revolution, lofted_hull, coons_patch, bicubic_patch_with_net, torus_tessellation,
+      de_boor_construction, blossoming, nurbs_weight_family, knot_removal, space_curve_frames,
   };
   return list;
 }
 
 // ---------------------------------------------------------------------------------------
 // The page.
+
+namespace {
+
+/// The explorer (`make explorer`, apps/explorer) view that shows a figure's subject live,
+/// by figure id, with the name of its tab; none for the figures the explorer has no view
+/// of (affine maps, degree reduction, the pieces of a path, fitting, knot removal, fonts,
+/// surfaces, 3-D frames).
+struct ExplorerView {
+  std::string_view figure, view, tab;
+};
+constexpr ExplorerView explorer_views[] = {
+    {"bernstein", "bezier", "de Casteljau"},           {"de-casteljau", "bezier", "de Casteljau"},
+    {"subdivision", "bezier", "de Casteljau"},         {"elevation", "bezier", "de Casteljau"},
+    {"convex-hull", "bezier", "de Casteljau"},
+    {"continuity", "composite", "Composite curves"},   {"rational-circle", "bspline", "B-splines and NURBS"},
+    {"bounds", "queries", "Queries"},                  {"hodograph", "bezier", "de Casteljau"},
+    {"blossom", "bezier", "de Casteljau"},             {"bspline-basis", "bspline", "B-splines and NURBS"},
+    {"de-boor", "bspline", "B-splines and NURBS"},     {"local-control", "bspline", "B-splines and NURBS"},
+    {"knot-insertion", "bspline", "B-splines and NURBS"},
+    {"nurbs-circle", "bspline", "B-splines and NURBS"}, {"nurbs-weights", "bspline", "B-splines and NURBS"},
+    {"subdivision-schemes", "subdivision", "Subdivision curves"}, {"four-point", "subdivision", "Subdivision curves"},
+    {"closest-points", "queries", "Queries"},          {"curvature-comb", "composite", "Composite curves"},
+    {"intersect", "queries", "Queries"},               {"flatten-methods", "queries", "Queries"},
+    {"runge", "interpolation", "Interpolation"},       {"catmull-rom", "catmull", "Catmull-Rom α"},
+    {"hermite-basis", "hermite", "Hermite and tangent rules"}, {"spline-boundaries", "interpolation", "Interpolation"},
+    {"monotone-interpolation", "hermite", "Hermite and tangent rules"},
+};
+
+/// The explorer's address as `make explorer` prints it (its default port).
+constexpr std::string_view explorer_address = "http://127.0.0.1:8080/";
+
+}  // namespace
 
 std::string html_page(const std::vector<Figure>& figures) {
   std::string h;
@@ -964,6 +1009,7 @@ std::string html_page(const std::vector<Figure>& figures) {
   figcaption th, figcaption td { padding: 2px 12px; border-bottom: 1px solid var(--rule); text-align: right; }
   figcaption th { font-weight: 600; color: var(--muted); }
   figcaption .title { display: block; font: 600 15.5px/1.4 system-ui, 'Helvetica Neue', Arial, sans-serif; color: var(--ink); margin-bottom: 3px; }
+  figcaption a.live { display: block; margin-top: 4px; font: 13px/1.5 system-ui, 'Helvetica Neue', Arial, sans-serif; color: var(--ink); }
   code { font: 13px ui-monospace, 'DejaVu Sans Mono', Menlo, monospace; background: #f1f3f5; padding: 0 3px; border-radius: 3px; }
   footer { color: var(--muted); font-size: 13px; padding-bottom: 36px; }
 </style>
@@ -971,20 +1017,30 @@ std::string html_page(const std::vector<Figure>& figures) {
 <body>
 <header>
 <h1>casteljau gallery</h1>
-<p>B&eacute;zier and rational B&eacute;zier curves, B-splines and NURBS, interpolating splines and the geometric queries on
-them: each figure and every number in its caption computed by the casteljau library when this page was generated
-(<code>make demo</code>).</p>
+<p>The casteljau library in pictures: B&eacute;zier, rational B&eacute;zier, B-spline and NURBS curves with their
+constructions (de Casteljau, de Boor, blossoms, knot insertion and removal), composite and interpolating curves,
+subdivision schemes, the geometric queries (bounds, closest points, intersections, flattening, curvature, 3-D frames),
+font outlines and surfaces. Each figure and every number in its caption is computed by the library when this page is
+generated (<code>make demo</code>); most figures link to the view of the explorer that shows them live
+(<code>make explorer</code> serves it at <code>127.0.0.1:8080</code>).</p>
 <nav><ol>
 )";
   for (const auto& f : figures) h += "<li><a href=\"#" + io::xml_escape(f.id) + "\">" + io::xml_escape(f.title) + "</a></li>\n";
   h += "</ol></nav>\n</header>\n<main>\n";
   for (std::size_t i = 0; i < figures.size(); ++i) {
     const auto& f = figures[i];
+    std::string live;
+    for (const auto& v : explorer_views) {
+      if (v.figure != f.id) continue;
+      live = " <a class=\"live\" href=\"" + std::string(explorer_address) + "#" + std::string(v.view) + "\">Live in the explorer: " +
+             io::xml_escape(v.tab) + " &rarr;</a>";
+    }
     h += "<figure id=\"" + io::xml_escape(f.id) + "\">\n" + f.svg + "<figcaption><span class=\"title\">Figure " +
-         std::to_string(i + 1) + ". " + io::xml_escape(f.title) + "</span>" + f.caption + "</figcaption>\n</figure>\n";
+         std::to_string(i + 1) + ". " + io::xml_escape(f.title) + "</span>" + f.caption + live + "</figcaption>\n</figure>\n";
   }
   h += "</main>\n<footer>Generated by casteljau-gallery. Self-contained: inline SVG and CSS, no scripts, no external "
-       "resources.</footer>\n</body>\n</html>\n";
+       "resources; the only links out are those to the explorer on this machine (<code>make explorer</code>).</footer>\n"
+       "</body>\n</html>\n";
   return h;
 }
 

@@ -56,6 +56,15 @@ Figure coons_patch();
 Figure bicubic_patch_with_net();
 Figure torus_tessellation();
 
+/// Constructions and frames (figures_constructions.cpp): de Boor's construction, the
+/// blossom, a NURBS family under one weight, knot removal, Frenet and rotation-minimizing
+/// frames of a space curve.
+Figure de_boor_construction();
+Figure blossoming();
+Figure nurbs_weight_family();
+Figure knot_removal();
+Figure space_curve_frames();
+
 /// The page: a self-contained HTML document (inline CSS and SVG, no scripts).
 std::string html_page(const std::vector<Figure>& figures);
 

@@ -54,7 +54,7 @@ Figure knot_insertion() {
                              {P2{{0.0, 0.0}}, P2{{0.8, 2.6}}, P2{{2.4, 3.0}}, P2{{3.6, 0.2}}, P2{{5.2, 0.6}}, P2{{6.0, 2.8}}});
   const BSpline<double, 2> once = c.insert_knot(1.5);
   const BSpline<double, 2> full = c.insert_knot(1.5, 3);
-  SvgDocument doc(width, 360);
+  SvgDocument doc(width, 380);
   doc.title("Knot insertion");
   doc.set_map(PageMap::fit(grown_relative(c.control_bounds(), 0.12), {40, 30, width - 80, 300}));
   doc.polyline(c.points(), stroke(light, 1.3));
@@ -66,16 +66,20 @@ Figure knot_insertion() {
   control_points(doc, full.points(), accent, 3);
   const P2 at = c(1.5);
   doc.circle(at, 5, Paint{.stroke = accent, .stroke_width = 1, .fill = accent});
-  TextStyle t = label(12);
-  t.dx = 8;
-  t.dy = -8;
-  doc.text(at, "C(1.5) = a control point at multiplicity 3", t);
+  // The legend below the picture (a label this long finds no free place among the polygons).
+  doc.set_map(PageMap{});
+  doc.circle({50, 362}, 5, Paint{.stroke = accent, .stroke_width = 1, .fill = accent});
+  doc.text({62, 366}, "C(1.5): a control point once the knot has multiplicity 3", label(12));
+  doc.line({470, 362}, {500, 362}, stroke(grey, 1.4, "5 3"));
+  doc.text({508, 366}, "once", label(12));
+  doc.line({560, 362}, {590, 362}, stroke(accent, 1.4));
+  doc.text({598, 366}, "three times", label(12));
   const double d1 = gap(c, once, 0, 3), d3 = gap(c, full, 0, 3);
   Figure f;
   f.id = "knot-insertion";
   f.title = "Knot insertion (Boehm)";
   f.svg = doc.str();
-  f.caption = "<span class=\"title\">Knot insertion (Boehm)</span> A cubic B-spline with knots 0, 0, 0, 0, 1, 2, 3, 3, 3, 3 "
+  f.caption = "A cubic B-spline with knots 0, 0, 0, 0, 1, 2, 3, 3, 3, 3 "
               "(light polygon). Inserting u = 1.5 once cuts two corners (dashed grey, " +
               std::to_string(once.points().size()) +
               " points); three times (red) brings the knot to multiplicity p = 3 and the curve through a control point: the "
@@ -117,7 +121,7 @@ Figure nurbs_circle_figure() {
   f.id = "nurbs-circle";
   f.title = "NURBS circle";
   f.svg = doc.str();
-  f.caption = "<span class=\"title\">NURBS circle</span> Left: <code>nurbs_circle</code>, the nine-point circle of [PT97, Ex. 7.2]: "
+  f.caption = "Left: <code>nurbs_circle</code>, the nine-point circle of [PT97, Ex. 7.2]: "
               "degree 2, knots 0, 0, 0, &frac14;, &frac14;, &frac12;, &frac12;, &frac34;, &frac34;, 1, 1, 1, weights 1 at the "
               "edge midpoints and &radic;2/2 at the corners. Its largest radial error over 10<sup>4</sup> parameters is " +
               sci(radial) + ". Right: <code>nurbs_arc</code> of sweep 4 rad in equal pieces of at most a quarter turn [PT97, A7.1].";
@@ -165,7 +169,7 @@ Figure subdivision_schemes() {
   f.id = "subdivision-schemes";
   f.title = "Chaikin and Lane-Riesenfeld subdivision";
   f.svg = doc.str();
-  f.caption = "<span class=\"title\">Chaikin and Lane-Riesenfeld subdivision</span> A closed pentagon (dashed) and its polygons "
+  f.caption = "A closed pentagon (dashed) and its polygons "
               "after 1 to 4 steps (light to dark), with the limit returned by <code>lane_riesenfeld_limit</code>: the periodic "
               "uniform B-spline of the scheme's degree [LR80; Chaikin74]. The largest distance from the Chaikin polygon to its "
               "limit (20001 samples) falls by about 4 per step (O(h<sup>2</sup>)):"
@@ -198,7 +202,7 @@ Figure four_point_scheme() {
   f.id = "four-point";
   f.title = "The interpolating 4-point scheme";
   f.svg = doc.str();
-  f.caption = "<span class=\"title\">The interpolating 4-point scheme</span> Dyn, Levin and Gregory's scheme [DLG87] keeps every "
+  f.caption = "Dyn, Levin and Gregory's scheme [DLG87] keeps every "
               "point and adds (1/2 + w)(P<sub>i</sub> + P<sub>i+1</sub>) &minus; w(P<sub>i&minus;1</sub> + P<sub>i+2</sub>) on "
               "each edge; open ends reflect the end points. After 5 steps (" +
               std::to_string(last_count) + " points) the original points are " + (interpolates ? "still exactly there" : "NOT all there") +

@@ -83,23 +83,37 @@ Figure bspline_basis_functions() {
       {"clamped", {0, 0, 0, 0, 1, 2, 3, 4, 4, 4, 4}},
       {"non-uniform, triple knot", {0, 0, 0, 0, 1, 1.6, 2.5, 2.5, 2.5, 3.4, 4, 4, 4, 4}},
   };
-  SvgDocument doc(width, 270);
+  SvgDocument doc(width, 300);
   doc.title("Cubic B-spline basis functions");
-  const double pw = 270, gap_px = 22, top = 34, ph = 190;
+  const double pw = 256, gap_px = 34, top = 40, ph = 180;
   double partition = 0;  // the largest |sum_i N_i(u) - 1| over the domains
   double jump = 0;       // the first-derivative jump at the triple knot
   std::size_t jump_index = 0;
   for (std::size_t k = 0; k < panels.size(); ++k) {
     const auto& U = panels[k].U;
-    const double x0 = 14 + static_cast<double>(k) * (pw + gap_px);
+    const double x0 = 30 + static_cast<double>(k) * (pw + gap_px);
     const double a = U.front(), b = U.back();
     doc.set_map(PageMap::fit(Box2{{a, -0.08}, {b, 1.08}}, {x0, top, pw, ph}, Aspect::stretch));
     const std::size_t n = U.size() - p - 1;
     const double lo = U[p], hi = U[n];
     // The domain [U_p, U_n], where the functions sum to 1.
     doc.polygon(std::vector<P2>{{lo, 0.0}, {hi, 0.0}, {hi, 1.0}, {lo, 1.0}}, Paint{.fill = "#eef1f4"});
+    // Axes: u along the bottom, the value up the left side (0 and 1 marked).
     doc.line({a, 0.0}, {b, 0.0}, stroke(grey, 1));
+    doc.line({a, 0.0}, {a, 1.08}, stroke(grey, 1));
     doc.line({a, 1.0}, {b, 1.0}, stroke(light, 0.8, "3 3"));
+    for (const double v : {0.0, 1.0}) {
+      TextStyle t = label(10, Anchor::end, text_grey);
+      t.dx = -5;
+      t.dy = 3.5;
+      doc.text({a, v}, plain(v, 0), t);
+    }
+    {
+      TextStyle t = math(13, Anchor::start, text_grey);
+      t.dx = 6;
+      t.dy = 4;
+      doc.text({b, 0.0}, "u", t);
+    }
     // Curves sampled densely (400 parameters a panel).
     std::vector<std::vector<P2>> curves(n);
     std::vector<P2> sum;
@@ -123,9 +137,14 @@ Figure bspline_basis_functions() {
       const bool interior = U[j] > lo && U[j] < hi;
       const bool marked = m > 1 && interior;
       doc.line({U[j], -0.04}, {U[j], 0.04}, stroke(marked ? accent : ink, marked ? 2 : 1.2));
+      {
+        TextStyle t = label(10, Anchor::middle, marked ? accent : "#222");
+        t.dy = 13;
+        doc.text({U[j], -0.04}, knot_text(U[j]), t);
+      }
       if (m > 1) {
-        TextStyle t = label(10, Anchor::middle, marked ? accent : text_grey);
-        t.dy = 14;
+        TextStyle t = label(9.5, Anchor::middle, marked ? accent : text_grey);
+        t.dy = 25;
         doc.text({U[j], -0.04}, "\u00d7" + std::to_string(m), t);
       }
       if (marked) {
@@ -152,16 +171,17 @@ Figure bspline_basis_functions() {
       }
     }
     doc.set_map(PageMap{});
-    doc.text({x0, 20}, panels[k].name, label(12.5));
-    doc.text({x0 + pw / 2, top + ph + 34}, "knots " + std::to_string(U.size()) + ", functions " + std::to_string(n), label(11, Anchor::middle, text_grey));
+    doc.text({x0 - 24, 16}, panels[k].name + ": N\u1d62,\u2083(u)", heading(12.5));
+    doc.text({x0 + pw / 2, top + ph + 48}, std::to_string(U.size()) + " knots (\u00d7m: repeated m times), " + std::to_string(n) + " functions",
+             label(11, Anchor::middle, text_grey));
   }
   Figure f;
   f.id = "bspline-basis";
   f.title = "Cubic B-spline basis functions";
   f.svg = doc.str();
-  f.caption = "<span class=\"title\">Cubic B-spline basis functions</span> N<sub>i,3</sub> by the Cox-de Boor recurrence "
-              "(<code>basis_functions</code>, [PT97, A2.2]) on three knot vectors; ticks mark the knots (&times;m their "
-              "multiplicity), the shaded band the domain [U<sub>p</sub>, U<sub>n</sub>], the dashed line the sum of the "
+  f.caption = "The functions N<sub>i,3</sub>(u) of degree 3, computed by the Cox-de Boor recurrence "
+              "(<code>basis_functions</code>, [PT97, A2.2]) on three knot vectors; ticks mark the knots with their values "
+              "(&times;m: the multiplicity), the shaded band the domain [U<sub>p</sub>, U<sub>n</sub>], the dashed line the sum of the "
               "functions. Uniform knots 0..9: translates of one bell, summing to 1 only on [3, 6]. Clamped: the end knots "
               "repeated p + 1 = 4 times make the first and last function 1 at the ends (the curve starts at P<sub>0</sub>). "
               "Non-uniform with the knot 2.5 repeated 3 times: continuity there drops from C<sup>2</sup> to "
@@ -217,7 +237,7 @@ Figure local_control() {
   f.id = "local-control";
   f.title = "Local control";
   f.svg = doc.str();
-  f.caption = "<span class=\"title\">Local control</span> A clamped cubic B-spline with knots 0, 0, 0, 0, 1, .., 8, 9, 9, 9, 9 "
+  f.caption = "A clamped cubic B-spline with knots 0, 0, 0, 0, 1, .., 8, 9, 9, 9, 9 "
               "(dashed, light) and the same curve with P<sub>5</sub> moved. Only N<sub>5,3</sub> multiplies P<sub>5</sub>, and "
               "it vanishes outside [U<sub>5</sub>, U<sub>9</sub>): comparing the exact Bézier pieces of the two curves span by "
               "span finds " + std::to_string(changed.size()) + " changed spans (red), u &isin; [" + knot_text(u0) + ", " +
@@ -308,10 +328,12 @@ Figure noisy_fit() {
     }
     for (const auto& q : D) doc.circle(q, 2.4, Paint{.stroke = "#3d4a5c", .stroke_width = 1, .fill = "#fff"});
     doc.circle(D[worst], 5, Paint{.stroke = accent, .stroke_width = 1.6});
-    TextStyle tt = label(11, Anchor::start, accent);
-    tt.dx = 9;
-    tt.dy = -7;
-    doc.text(D[worst], "max_error " + plain(err, 3), tt);
+    LabelPlacer labels(doc);
+    labels.avoid(c.points());
+    labels.avoid(true_curve);
+    labels.avoid_curve(c, 300);
+    for (std::size_t k = 0; k < D.size(); ++k) labels.avoid(std::vector<P2>{D[k], c(t[k])});
+    labels.place(D[worst], "max_error " + plain(err, 3), label(11, Anchor::start, accent), V2(1.0, -1.0), 7);
   };
   std::vector<P2> open_truth, closed_truth;
   for (int i = 0; i <= 400; ++i) {
@@ -330,7 +352,7 @@ Figure noisy_fit() {
   f.id = "noisy-fit";
   f.title = "Least-squares fits through noisy data";
   f.svg = doc.str();
-  f.caption = "<span class=\"title\">Least-squares fits through noisy data</span> <code>fit</code> with chord-length parameters "
+  f.caption = "<code>fit</code> with chord-length parameters "
               "[PT97, &sect;9.4.1], control polygons dashed. Left: 45 samples of y = sin x + &frac14; cos 3x with seeded "
               "Gaussian noise (&sigma; = 0.1; RMS of this draw " + fixed(rms_noise, 3) + "), 9 control points, the ends "
               "interpolated: <code>max_error</code> = " + fixed(open_fit.max_error, 3) + ", while the fitted curve is " +

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "casteljau/casteljau.hpp"
@@ -42,12 +44,34 @@ double runge_error(Nodes kind, std::size_t n, std::vector<P2>* graph = nullptr, 
   return e;
 }
 
+/// A framed panel in r: its title above the frame (clear of what is drawn inside), the
+/// model fitted inside the frame with a margin; the document's map is left on the model.
 void frame(SvgDocument& doc, const PageRect& r, const Box<double, 2>& model, const std::string& title,
            io::Aspect aspect = io::Aspect::keep) {
   doc.set_map(PageMap{});
-  doc.rect(r, Paint{.stroke = "#ccc", .stroke_width = 1});
-  doc.text({r.x + 6, r.y + 16}, title, TextStyle{.size = 13, .bold = true});
-  doc.set_map(PageMap::fit(model, r, aspect));
+  const PageRect inner{r.x, r.y + 22, r.width, r.height - 22};
+  doc.rect(inner, Paint{.stroke = "#ccc", .stroke_width = 1});
+  doc.text({r.x + 2, r.y + 14}, title, heading(12.5));
+  doc.set_map(PageMap::fit(model, {inner.x + 6, inner.y + 6, inner.width - 12, inner.height - 12}, aspect));
+}
+
+/// The part of the segment ab inside the box (Liang-Barsky), if any.
+std::optional<std::pair<P2, P2>> clipped(const P2& a, const P2& b, const Box<double, 2>& box) {
+  double t0 = 0, t1 = 1;
+  const V2 d = b - a;
+  for (int i = 0; i < 2; ++i) {
+    for (const auto& [den, num] : {std::pair{-d[i], a[i] - box.lo[i]}, std::pair{d[i], box.hi[i] - a[i]}}) {
+      if (den == 0) {
+        if (num < 0) return std::nullopt;
+        continue;
+      }
+      const double v = num / den;
+      if (den < 0) t0 = std::max(t0, v);
+      else t1 = std::min(t1, v);
+    }
+  }
+  if (t0 >= t1) return std::nullopt;
+  return std::pair{a + t0 * d, a + t1 * d};
 }
 
 }  // namespace
@@ -108,23 +132,46 @@ Figure runge_phenomenon() {
 }
 
 Figure catmull_rom_alpha() {
-  SvgDocument doc(860, 320);
+  SvgDocument doc(860, 560);
   // Two close points between far ones: the uniform spline loops there.
   const std::vector<P2> P{{0, 0}, {1, 3}, {4, 3.2}, {4.3, 3}, {6, 0}, {7, 2}};
   const double alphas[3] = {0, 0.5, 1};
   const char* names[3] = {"uniform (alpha = 0)", "centripetal (alpha = 0.5)", "chordal (alpha = 1)"};
   std::string notes;
+  // The segment from P2 to P3 of each spline, sampled: its box (all three) is the zoom.
+  std::vector<std::vector<P2>> middle(3);
+  Box<double, 2> zoom = box_of<double, 2>(std::vector<P2>{P[2], P[3]});
   for (int k = 0; k < 3; ++k) {
-    const PageRect r{10.0 + 285 * k, 10, 270, 300};
+    const CatmullRom<double, 2> c(P, alphas[k]);
+    for (int i = 0; i <= 400; ++i) middle[k].push_back(c(c.breaks()[1] + (c.breaks()[2] - c.breaks()[1]) * i / 400.0));
+    for (const auto& q : middle[k]) zoom.add(q);
+  }
+  zoom = grown_relative(zoom, 0.25);
+  const std::vector<P2> zoom_outline{zoom.lo, {zoom.hi[0], zoom.lo[1]}, zoom.hi, {zoom.lo[0], zoom.hi[1]}, zoom.lo};
+  double magnification = 0;
+  for (int k = 0; k < 3; ++k) {
+    const std::string colour(io::palette(static_cast<std::size_t>(k)));
+    const PageRect r{10.0 + 285 * k, 8, 270, 280};
     frame(doc, r, Box<double, 2>{{-0.5, -0.5}, {7.5, 4.5}}, names[k]);
+    const double overview_scale = doc.map()({1.0, 0.0})[0] - doc.map()({0.0, 0.0})[0];
     doc.polyline(P, Paint{.stroke = "#bbb", .stroke_width = 1, .dash = "4 3"});
     const CatmullRom<double, 2> c(P, alphas[k]);
-    doc.curve(c.bezier_pieces(), Paint{.stroke = std::string(io::palette(static_cast<std::size_t>(k))), .stroke_width = 2});
+    doc.curve(c.bezier_pieces(), Paint{.stroke = colour, .stroke_width = 2});
     for (const auto& p : P) doc.circle(p, 3, Paint{.stroke = "#222", .fill = "white"});
+    doc.polyline(zoom_outline, Paint{.stroke = "#888", .stroke_width = 0.8});
+    // The zoom: the segment from P2 to P3 and its neighbours' ends.
+    frame(doc, {10.0 + 285 * k, 296, 270, 256}, zoom, "the segment P\u2082P\u2083, enlarged");
+    magnification = (doc.map()({1.0, 0.0})[0] - doc.map()({0.0, 0.0})[0]) / overview_scale;
+    for (std::size_t i = 1; i < P.size(); ++i) {
+      if (const auto e = clipped(P[i - 1], P[i], zoom)) doc.line(e->first, e->second, Paint{.stroke = "#bbb", .stroke_width = 1, .dash = "4 3"});
+    }
+    doc.polyline(middle[k], Paint{.stroke = colour, .stroke_width = 2.4});
+    for (const auto& p : P) {
+      if (zoom.contains(p)) doc.circle(p, 4, Paint{.stroke = "#222", .fill = "white"});
+    }
     // Does the segment from P_2 to P_3 cross itself? 400 samples, proper crossings of
     // non-adjacent chords.
-    std::vector<P2> q;
-    for (int i = 0; i <= 400; ++i) q.push_back(c(c.breaks()[1] + (c.breaks()[2] - c.breaks()[1]) * i / 400.0));
+    const auto& q = middle[k];
     const auto side = [](const P2& o, const P2& a, const P2& b) { return cross(a - o, b - o); };
     int crossings = 0;
     for (std::size_t i = 0; i + 1 < q.size(); ++i)
@@ -133,11 +180,14 @@ Figure catmull_rom_alpha() {
           ++crossings;
     notes += std::string(k ? "; " : "") + names[k] + ": " + std::to_string(crossings);
   }
+  char mag[32];
+  std::snprintf(mag, sizeof mag, "%.0f", magnification);
   std::string cap =
       "Catmull-Rom splines through the same six points with knot intervals |P<sub>i+1</sub> &minus; P<sub>i</sub>|"
       "<sup>alpha</sup> (<code>CatmullRom</code>; tangents of Barry and Goldman). The uniform spline overshoots and "
       "loops between the two close points P<sub>2</sub> and P<sub>3</sub>; the centripetal and chordal ones do not. "
-      "Self-crossings of the segment from P<sub>2</sub> to P<sub>3</sub> (400 samples): " + notes + ".";
+      "The loop is small beside the whole curve: the lower row shows that segment enlarged " + std::string(mag) +
+      " times (the grey box above). Self-crossings of the segment from P<sub>2</sub> to P<sub>3</sub> (400 samples): " + notes + ".";
   return {"catmull-rom", "Catmull-Rom: uniform, centripetal, chordal", doc.str(), cap};
 }
 
@@ -151,6 +201,7 @@ Figure hermite_basis() {
   const RationalMatrix4 B = basis_matrix(CubicForm::hermite);
   const char* names[4] = {"h00", "h01", "h10", "h11"};
   double worst_sum = 0;
+  std::vector<std::vector<P2>> graphs;
   for (int j = 0; j < 4; ++j) {
     std::vector<P2> g;
     for (int i = 0; i <= 200; ++i) {
@@ -164,7 +215,14 @@ Figure hermite_basis() {
       g.push_back({t, h});
     }
     doc.polyline(g, Paint{.stroke = std::string(io::palette(static_cast<std::size_t>(j))), .stroke_width = 2});
-    doc.text(g[j == 1 || j == 3 ? 170 : 30], names[j], TextStyle{.size = 13, .colour = std::string(io::palette(static_cast<std::size_t>(j))), .dy = -6});
+    graphs.push_back(g);
+  }
+  LabelPlacer labels(doc);
+  for (const auto& g : graphs) labels.avoid(g);
+  for (int j = 0; j < 4; ++j) {
+    const auto& g = graphs[static_cast<std::size_t>(j)];
+    labels.place(g[j == 1 || j == 3 ? 170 : 30], names[j], TextStyle{.size = 13, .colour = std::string(io::palette(static_cast<std::size_t>(j)))},
+                 V2(0.0, -1.0), 5);
   }
   std::string cap =
       "The cubic Hermite basis h00 = 1 &minus; 3t<sup>2</sup> + 2t<sup>3</sup>, h01 = 3t<sup>2</sup> &minus; 2t<sup>3</sup>, "
