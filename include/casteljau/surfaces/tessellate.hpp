@@ -36,10 +36,12 @@
 // linear interpolant, L w >= min w >= the least control weight, so
 //   |S(x) - T(x)| <= (e(P - c w) + r e(w)) / w_min;
 // (2) the bound e(S) of S itself, with A, B, C bounds of its Cartesian second partials on
-// the cell: each is N / w^3 for a polynomial N (rational_cartesian_bound), bounded by N's
-// largest Bézier coefficient over w_min^3. (1) sees the weights' variation 2 w' S' in the
-// second differences of P - c w, (2) does not; (2) is tighter on most cells of a sphere.
-// A polynomial patch is the case w = 1.
+// the cell, the sharper form of cartesian_bound: the second partials as centre values plus
+// variations, and the directions of the centre values taken into account (a mixed partial
+// perpendicular to the others, as on a sphere near its pole, adds far less than its
+// length). (1) sees the weights' variation 2 w' S' in the second differences of P - c w,
+// (2) does not; (2) is tighter on most cells of a sphere. A polynomial patch is the case
+// w = 1, and takes the smaller of (2) and the plain e(F) too.
 //
 // The counts. Each patch starts from the counts that its Cartesian net's bound asks (for a
 // polynomial patch a valid bound: a cell's differences are the patch's scaled by the
@@ -303,67 +305,167 @@ T max_norm(const Poly<T>& a) {
   return std::sqrt(best);
 }
 
-/// The Cartesian bound of a rational cell (homogeneous net, weights > 0): with
-/// X = P - c w (c the middle of the box of the cell's Cartesian points), the second
-/// partials of S = c + X / w are N / w^3 with the polynomials
+/// The largest |p^2 a + q^2 c + 2 rho p q b| over p, q in [0, 1/2] and rho = +-1 (a, b, c
+/// vectors of d values), from above: the expression is homogeneous of degree 2 in (p, q),
+/// so the largest value lies on p = 1/2 or q = 1/2; each of those segments is sampled at
+/// 33 points: between two samples h = 1/64 apart the vector (a quadratic in the free
+/// variable, second derivative 2c on p = 1/2, 2a on q = 1/2) is within h^2 |c| / 4 (or
+/// h^2 |a| / 4) of the chord between the samples' values, whose length is at most the
+/// larger of theirs.
+template <class T>
+T largest_form(const T* a, const T* b, const T* c, std::size_t d) {
+  const auto norm = [d](const T* x) {
+    T s = 0;
+    for (std::size_t k = 0; k < d; ++k) s += x[k] * x[k];
+    return std::sqrt(s);
+  };
+  const T na = norm(a), nc = norm(c);
+  T best = 0;
+  for (int side = 0; side < 2; ++side) {
+    T top = 0;
+    for (int rho = -1; rho <= 1; rho += 2)
+      for (int k = 0; k <= 32; ++k) {
+        const T x = T(k) / 64, p = side == 0 ? T(0.5) : x, q = side == 0 ? x : T(0.5);
+        T s = 0;
+        for (std::size_t i = 0; i < d; ++i) {
+          const T v = p * p * a[i] + q * q * c[i] + 2 * T(rho) * p * q * b[i];
+          s += v * v;
+        }
+        top = std::max(top, std::sqrt(s));
+      }
+    best = std::max(best, top + (side == 0 ? nc : na) / (4 * 64 * 64));
+  }
+  return best;
+}
+
+/// The Cartesian bound of a cell (homogeneous net when rational, weights > 0), by the
+/// second partials of S itself on the cell, each written as a centre value plus a
+/// variation: |S_ss - a| <= D_ss, |S_st - b| <= D_st, |S_tt - c| <= D_tt on the cell.
+/// Taylor's theorem about x (header comment) gives S(x) - sum lambda_i S(x_i) = 1/2 (M_ss
+/// a + 2 M_st b + M_tt c) + R with M = sum lambda_i (x_i - x)(x_i - x)^T, a positive
+/// semidefinite matrix whose diagonal entries are variances of numbers in [0, 1] (so at
+/// most 1/4, and M_st^2 <= M_ss M_tt) for any triangle inside the cell, and
+/// |R| <= ((D_ss + D_st) + (D_tt + D_st)) / 8 as in the header comment; so the error is at
+/// most largest_form(a, b, c) / 2 + that. The directions count: a mixed partial
+/// perpendicular to the others (a sphere near its pole) adds far less than its length.
+/// Polynomial cell: the second partials are polynomials (Bézier nets of the second
+/// differences): centre = the middle of their coefficients' box, variation = the largest
+/// distance of a coefficient from it. Rational cell: with X = P - c w (c the middle of the
+/// box of the cell's Cartesian points), the second partials of S = c + X / w are N / w^3,
 ///   N_ss = w^2 X_ss - w w_ss X - 2 w w_s X_s + 2 w_s^2 X,
 ///   N_st = w^2 X_st - w w_t X_s - w w_s X_t - w w_st X + 2 w_s w_t X,
 ///   N_tt = w^2 X_tt - w w_tt X - 2 w w_t X_t + 2 w_t^2 X,
-/// each bounded on the cell by its largest Bézier coefficient over (least weight)^3. The
-/// parts {e_u, e_v} of the bound ((A + B) + (C + B)) / 8 for those bounds A, B, C of
-/// |S_ss|, |S_st|, |S_tt|: the Taylor bound of the header comment applied to S itself
-/// (the mesh point at the barycentric (u, v) of the surface point).
+/// polynomials in Bézier form (products); with N's coefficients within R_N of a centre
+/// N_c and w between its least and largest coefficients w0 <= w1, N / w^3 lies within
+/// R_N / w0^3 + |N_c| (1 / w0^3 - 1 / w1^3) / 2 of N_c (1 / w0^3 + 1 / w1^3) / 2.
+/// Returns the parts {e_u, e_v} (their sum the bound; the split only guides the counts).
 template <class T>
-std::array<T, 2> rational_cartesian_bound(const Net<T>& n) {
-  const std::size_t cd = n.d - 1;
+std::array<T, 2> cartesian_bound(const Net<T>& n, bool rational) {
+  const std::size_t cd = rational ? n.d - 1 : n.d;
   const int P = static_cast<int>(n.rows) - 1, Q = static_cast<int>(n.cols) - 1;
-  std::vector<T> lo(cd, T(INFINITY)), hi(cd, T(-INFINITY));
-  T wmin = T(INFINITY);
-  for (std::size_t i = 0; i < n.rows; ++i)
-    for (std::size_t j = 0; j < n.cols; ++j) {
-      const T* x = n.at(i, j);
-      wmin = std::min(wmin, x[cd]);
-      for (std::size_t k = 0; k < cd; ++k) {
-        lo[k] = std::min(lo[k], x[k] / x[cd]);
-        hi[k] = std::max(hi[k], x[k] / x[cd]);
-      }
-    }
-  Poly<T> w = make_poly<T>(P, Q, 1), X = make_poly<T>(P, Q, cd);
-  for (int i = 0; i <= P; ++i)
-    for (int j = 0; j <= Q; ++j) {
-      const T* x = n.at(static_cast<std::size_t>(i), static_cast<std::size_t>(j));
-      w.at(i, j)[0] = x[cd];
-      for (std::size_t k = 0; k < cd; ++k) X.at(i, j)[k] = x[k] - (lo[k] / 2 + hi[k] / 2) * x[cd];
-    }
-  const Poly<T> ws = derivative(w, 0), wt = derivative(w, 1), wss = derivative(ws, 0), wst = derivative(ws, 1), wtt = derivative(wt, 1);
-  const Poly<T> Xs = derivative(X, 0), Xt = derivative(X, 1), Xss = derivative(Xs, 0), Xst = derivative(Xs, 1), Xtt = derivative(Xt, 1);
-  const Poly<T> ww = product(w, w), wws = product(w, ws), wwt = product(w, wt);
   Poly<T> Nss, Nst, Ntt;
-  accumulate(Nss, product(ww, Xss), T(1));
-  accumulate(Nss, product(product(w, wss), X), T(-1));
-  accumulate(Nss, product(wws, Xs), T(-2));
-  accumulate(Nss, product(product(ws, ws), X), T(2));
-  accumulate(Nst, product(ww, Xst), T(1));
-  accumulate(Nst, product(wwt, Xs), T(-1));
-  accumulate(Nst, product(wws, Xt), T(-1));
-  accumulate(Nst, product(product(w, wst), X), T(-1));
-  accumulate(Nst, product(product(ws, wt), X), T(2));
-  accumulate(Ntt, product(ww, Xtt), T(1));
-  accumulate(Ntt, product(product(w, wtt), X), T(-1));
-  accumulate(Ntt, product(wwt, Xt), T(-2));
-  accumulate(Ntt, product(product(wt, wt), X), T(2));
-  const T w3 = wmin * wmin * wmin;
-  const T A = max_norm(Nss) / w3, B = max_norm(Nst) / w3, C = max_norm(Ntt) / w3;
-  return {(A + B) / 8, (C + B) / 8};
+  T w0 = 1, w1 = 1;
+  if (!rational) {
+    Poly<T> X = make_poly<T>(P, Q, cd);
+    for (int i = 0; i <= P; ++i)
+      for (int j = 0; j <= Q; ++j) {
+        const T* x = n.at(static_cast<std::size_t>(i), static_cast<std::size_t>(j));
+        std::copy(x, x + cd, X.at(i, j));
+      }
+    const Poly<T> Xs = derivative(X, 0);
+    Nss = derivative(Xs, 0);
+    Nst = derivative(Xs, 1);
+    Ntt = derivative(derivative(X, 1), 1);
+  } else {
+    std::vector<T> lo(cd, T(INFINITY)), hi(cd, T(-INFINITY));
+    w0 = T(INFINITY);
+    w1 = 0;
+    for (std::size_t i = 0; i < n.rows; ++i)
+      for (std::size_t j = 0; j < n.cols; ++j) {
+        const T* x = n.at(i, j);
+        w0 = std::min(w0, x[cd]);
+        w1 = std::max(w1, x[cd]);
+        for (std::size_t k = 0; k < cd; ++k) {
+          lo[k] = std::min(lo[k], x[k] / x[cd]);
+          hi[k] = std::max(hi[k], x[k] / x[cd]);
+        }
+      }
+    Poly<T> w = make_poly<T>(P, Q, 1), X = make_poly<T>(P, Q, cd);
+    for (int i = 0; i <= P; ++i)
+      for (int j = 0; j <= Q; ++j) {
+        const T* x = n.at(static_cast<std::size_t>(i), static_cast<std::size_t>(j));
+        w.at(i, j)[0] = x[cd];
+        for (std::size_t k = 0; k < cd; ++k) X.at(i, j)[k] = x[k] - (lo[k] / 2 + hi[k] / 2) * x[cd];
+      }
+    const Poly<T> ws = derivative(w, 0), wt = derivative(w, 1), wss = derivative(ws, 0), wst = derivative(ws, 1), wtt = derivative(wt, 1);
+    const Poly<T> Xs = derivative(X, 0), Xt = derivative(X, 1), Xss = derivative(Xs, 0), Xst = derivative(Xs, 1), Xtt = derivative(Xt, 1);
+    const Poly<T> ww = product(w, w), wws = product(w, ws), wwt = product(w, wt);
+    accumulate(Nss, product(ww, Xss), T(1));
+    accumulate(Nss, product(product(w, wss), X), T(-1));
+    accumulate(Nss, product(wws, Xs), T(-2));
+    accumulate(Nss, product(product(ws, ws), X), T(2));
+    accumulate(Nst, product(ww, Xst), T(1));
+    accumulate(Nst, product(wwt, Xs), T(-1));
+    accumulate(Nst, product(wws, Xt), T(-1));
+    accumulate(Nst, product(product(w, wst), X), T(-1));
+    accumulate(Nst, product(product(ws, wt), X), T(2));
+    accumulate(Ntt, product(ww, Xtt), T(1));
+    accumulate(Ntt, product(product(w, wtt), X), T(-1));
+    accumulate(Ntt, product(wwt, Xt), T(-2));
+    accumulate(Ntt, product(product(wt, wt), X), T(2));
+  }
+  // Centre and variation of each second partial.
+  const T i0 = 1 / (w0 * w0 * w0), i1 = 1 / (w1 * w1 * w1);
+  const auto centre = [&](const Poly<T>& N, T* out) {
+    std::fill(out, out + cd, T(0));
+    if (N.zero()) return T(0);
+    for (std::size_t k = 0; k < cd; ++k) {
+      T l = T(INFINITY), h = T(-INFINITY);
+      for (std::size_t i = k; i < N.c.size(); i += cd) {
+        l = std::min(l, N.c[i]);
+        h = std::max(h, N.c[i]);
+      }
+      out[k] = l / 2 + h / 2;
+    }
+    T r = 0, len = 0;
+    for (std::size_t i = 0; i < N.c.size(); i += cd) {
+      T s = 0;
+      for (std::size_t k = 0; k < cd; ++k) s += (N.c[i + k] - out[k]) * (N.c[i + k] - out[k]);
+      r = std::max(r, s);
+    }
+    for (std::size_t k = 0; k < cd; ++k) len += out[k] * out[k];
+    const T D = std::sqrt(r) * i0 + std::sqrt(len) * (i0 - i1) / 2;
+    for (std::size_t k = 0; k < cd; ++k) out[k] *= (i0 + i1) / 2;
+    return D;
+  };
+  std::vector<T> abc(3 * cd);
+  const T Dss = centre(Nss, abc.data()), Dst = centre(Nst, abc.data() + cd), Dtt = centre(Ntt, abc.data() + 2 * cd);
+  const T main = largest_form(abc.data(), abc.data() + cd, abc.data() + 2 * cd, cd) / 2;
+  // The split of the main term between u and v: its derivative along x of the main term
+  // of counts scaled by 1 / sqrt(x) in u (a x, b sqrt(x), c): the term is homogeneous of
+  // degree 1 in the two scales, so the two derivatives add up to it.
+  const auto scaled = [&](T x) {
+    std::vector<T> t(abc);
+    for (std::size_t k = 0; k < cd; ++k) {
+      t[k] *= x;
+      t[cd + k] *= std::sqrt(x);
+    }
+    return largest_form(t.data(), t.data() + cd, t.data() + 2 * cd, cd) / 2;
+  };
+  const T du = std::clamp((scaled(T(1.01)) - scaled(T(0.99))) / T(0.02), T(0), main);
+  const T rest_u = (Dss + Dst) / 8, rest_v = (Dtt + Dst) / 8;
+  return {du + rest_u, main - du + rest_v};
 }
 
-/// The bound of a cell: for a rational one the smaller of the homogeneous bound
-/// (cell_bound) and the Cartesian one (both hold).
+/// The bound of a cell: the smaller of the bound of its net's differences (cell_bound:
+/// for a rational cell the homogeneous one) and the Cartesian one (both hold).
+/// `enough`: a first bound at most this is taken as it is (the Cartesian one, dearer, is
+/// then not computed).
 template <class T>
-std::array<T, 2> bound(const Net<T>& n, bool rational) {
+std::array<T, 2> bound(const Net<T>& n, bool rational, T enough) {
   const std::array<T, 2> h = cell_bound(n, rational);
-  if (!rational) return h;
-  const std::array<T, 2> c = rational_cartesian_bound(n);
+  if (h[0] + h[1] <= enough) return h;
+  const std::array<T, 2> c = cartesian_bound(n, rational);
   return c[0] + c[1] < h[0] + h[1] ? c : h;
 }
 
@@ -562,31 +664,32 @@ SurfaceMesh<T> tessellate(const SurfaceForm<T>& f, T tol) {
     total += 2 * (T(n) * T(m) - T(patch_nu) * T(patch_nv));
     std::size_t best_n = 0, best_m = 0;
     std::vector<std::pair<std::size_t, std::size_t>> tried;
-    for (int round = 0; round < 64; ++round) {
-      refuse_if_too_many();
+    // Every cell's bound at counts (a, b) into `parts`; true when all hold.
+    const auto check = [&](std::size_t a, std::size_t b) {
       parts.clear();
       bool ok = true;
-      for (std::size_t i = 0; i < n; ++i) {
-        const Net<T> strip = tess::transpose(tess::sub_u(net, T(i) / T(n), T(i + 1) / T(n)));
-        for (std::size_t j = 0; j < m; ++j) {
-          const Net<T> cell = tess::transpose(tess::sub_u(strip, T(j) / T(m), T(j + 1) / T(m)));
-          auto e = tess::cell_bound(cell, f.rational);
-          if (f.rational && e[0] + e[1] > budget) {
-            const auto c = tess::rational_cartesian_bound(cell);
-            if (c[0] + c[1] < e[0] + e[1]) e = c;
-          }
+      for (std::size_t i = 0; i < a; ++i) {
+        const Net<T> strip = tess::transpose(tess::sub_u(net, T(i) / T(a), T(i + 1) / T(a)));
+        for (std::size_t j = 0; j < b; ++j) {
+          const Net<T> cell = tess::transpose(tess::sub_u(strip, T(j) / T(b), T(j + 1) / T(b)));
+          const auto e = tess::bound(cell, f.rational, f.rational ? T(0.6) * budget : T(0));
           if (e[0] + e[1] > budget) ok = false;
           parts.push_back(e);
         }
       }
+      tried.emplace_back(a, b);
+      return ok;
+    };
+    const auto seen = [&](std::size_t a, std::size_t b) { return std::find(tried.begin(), tried.end(), std::pair{a, b}) != tried.end(); };
+    for (int round = 0; round < 64; ++round) {
+      refuse_if_too_many();
+      const bool ok = check(n, m);
       if (ok && (best_n == 0 || n * m < best_n * best_m)) {
         best_n = n;
         best_m = m;
       }
-      tried.emplace_back(n, m);
       auto [n2, m2] = propose(n, m);
       if (ok && n2 * m2 >= n * m) break;
-      const auto seen = [&](std::size_t a, std::size_t b) { return std::find(tried.begin(), tried.end(), std::pair{a, b}) != tried.end(); };
       if (best_n != 0 && (seen(n2, m2) || n2 * m2 >= best_n * best_m)) break;
       while (seen(n2, m2)) {
         // Failed there before: more steps in both directions.
@@ -596,6 +699,23 @@ SurfaceMesh<T> tessellate(const SurfaceForm<T>& f, T tol) {
       total += 2 * (T(n2) * T(m2) - T(n) * T(m));
       n = n2;
       m = m2;
+    }
+    // A few neighbours of the best counts with fewer cells (the parts' split between u and
+    // v only guides the proposals).
+    for (int tries = 0; best_n != 0 && tries < 6; ++tries) {
+      const std::size_t bn = best_n, bm = best_m;
+      const std::pair<std::size_t, std::size_t> near[] = {{bn - 1, bm}, {bn, bm - 1}, {bn - 1, bm + 1}, {bn + 1, bm - 1}};
+      bool better = false;
+      for (const auto& [a, b] : near) {
+        if (a < 1 || b < 1 || a * b >= best_n * best_m || seen(a, b)) continue;
+        if (check(a, b)) {
+          best_n = a;
+          best_m = b;
+          better = true;
+          break;
+        }
+      }
+      if (!better) break;
     }
     if (best_n == 0) {
       // Not settled in 64 rounds (not met in practice): a polynomial patch falls back on
