@@ -72,6 +72,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
+#include <deque>
 #include <numeric>
 #include <string>
 #include <vector>
@@ -254,31 +255,42 @@ Poly<T> derivative(const Poly<T>& a, int dir) {
   return r;
 }
 
+/// Row n of Pascal's triangle (cached per thread; a deque keeps the rows handed out in
+/// place while it grows).
+template <class T>
+const std::vector<T>& binomials(int n) {
+  thread_local std::deque<std::vector<T>> rows;
+  while (rows.size() <= static_cast<std::size_t>(n)) rows.push_back(binomial_row<T>(static_cast<int>(rows.size())));
+  return rows[static_cast<std::size_t>(n)];
+}
+
 /// The product of a scalar polynomial s (d = 1) and a polynomial b, in Bézier form (the
 /// degrees add): through the scaled Bernstein coefficients, whose products convolve.
 template <class T>
 Poly<T> product(const Poly<T>& s, const Poly<T>& b) {
   if (s.zero() || b.zero()) return Poly<T>{};
   Poly<T> r = make_poly<T>(s.m + b.m, s.n + b.n, b.d);
-  const std::vector<T> sm = binomial_row<T>(s.m), sn = binomial_row<T>(s.n), bm = binomial_row<T>(b.m), bn = binomial_row<T>(b.n),
-                       rm = binomial_row<T>(r.m), rn = binomial_row<T>(r.n);
-  for (int k = 0; k <= s.m; ++k)
-    for (int l = 0; l <= s.n; ++l) {
-      const T sk = s.at(k, l)[0] * sm[static_cast<std::size_t>(k)] * sn[static_cast<std::size_t>(l)];
+  const std::vector<T>&sm = binomials<T>(s.m), &sn = binomials<T>(s.n), &bm = binomials<T>(b.m), &bn = binomials<T>(b.n),
+                 &rm = binomials<T>(r.m), &rn = binomials<T>(r.n);
+  const std::size_t d = b.d, bc = static_cast<std::size_t>(b.n + 1), rc = static_cast<std::size_t>(r.n + 1);
+  std::vector<T> sb(b.c.size());
+  for (std::size_t i = 0; i <= static_cast<std::size_t>(b.m); ++i)
+    for (std::size_t j = 0; j < bc; ++j)
+      for (std::size_t c = 0; c < d; ++c) sb[(i * bc + j) * d + c] = b.c[(i * bc + j) * d + c] * bm[i] * bn[j];
+  for (std::size_t k = 0; k <= static_cast<std::size_t>(s.m); ++k)
+    for (std::size_t l = 0; l <= static_cast<std::size_t>(s.n); ++l) {
+      const T sk = s.c[k * static_cast<std::size_t>(s.n + 1) + l] * sm[k] * sn[l];
       if (sk == 0) continue;
-      for (int i = 0; i <= b.m; ++i)
-        for (int j = 0; j <= b.n; ++j) {
-          const T f = sk * bm[static_cast<std::size_t>(i)] * bn[static_cast<std::size_t>(j)];
-          const T* x = b.at(i, j);
-          T* y = r.at(k + i, l + j);
-          for (std::size_t c = 0; c < b.d; ++c) y[c] += f * x[c];
-        }
+      for (std::size_t i = 0; i <= static_cast<std::size_t>(b.m); ++i) {
+        const T* x = sb.data() + i * bc * d;
+        T* y = r.c.data() + ((k + i) * rc + l) * d;
+        for (std::size_t jc = 0; jc < bc * d; ++jc) y[jc] += sk * x[jc];
+      }
     }
-  for (int i = 0; i <= r.m; ++i)
-    for (int j = 0; j <= r.n; ++j) {
-      const T f = rm[static_cast<std::size_t>(i)] * rn[static_cast<std::size_t>(j)];
-      T* y = r.at(i, j);
-      for (std::size_t c = 0; c < r.d; ++c) y[c] /= f;
+  for (std::size_t i = 0; i <= static_cast<std::size_t>(r.m); ++i)
+    for (std::size_t j = 0; j < rc; ++j) {
+      const T f = 1 / (rm[i] * rn[j]);
+      for (std::size_t c = 0; c < d; ++c) r.c[(i * rc + j) * d + c] *= f;
     }
   return r;
 }
@@ -312,18 +324,27 @@ T max_norm(const Poly<T>& a) {
 /// variable, second derivative 2c on p = 1/2, 2a on q = 1/2) is within h^2 |c| / 4 (or
 /// h^2 |a| / 4) of the chord between the samples' values, whose length is at most the
 /// larger of theirs.
+///
+/// `sign` restricts rho (a rho between its values is never larger: the length is convex in
+/// rho): 0, rho = +-1; +1, rho in {0, 1}; -1, rho in {0, -1}.
+///
+/// `du` (when given): the derivative of the largest value along x for the vectors
+/// (x a, sqrt(x) b, c) at x = 1, at the largest sample (the envelope theorem):
+/// v . (p^2 a + rho p q b) / |v|, clamped to [0, the largest value].
 template <class T>
-T largest_form(const T* a, const T* b, const T* c, std::size_t d) {
+T largest_form(const T* a, const T* b, const T* c, std::size_t d, int sign, T* du = nullptr) {
   const auto norm = [d](const T* x) {
     T s = 0;
     for (std::size_t k = 0; k < d; ++k) s += x[k] * x[k];
     return std::sqrt(s);
   };
   const T na = norm(a), nc = norm(c);
-  T best = 0;
+  T best = 0, arg_p = 0, arg_q = 0, arg_len = 0;
+  int arg_rho = 0;
   for (int side = 0; side < 2; ++side) {
     T top = 0;
-    for (int rho = -1; rho <= 1; rho += 2)
+    for (int rho = -1; rho <= 1; ++rho) {
+      if (sign == 0 ? rho == 0 : rho == -sign) continue;
       for (int k = 0; k <= 32; ++k) {
         const T x = T(k) / 64, p = side == 0 ? T(0.5) : x, q = side == 0 ? x : T(0.5);
         T s = 0;
@@ -331,9 +352,29 @@ T largest_form(const T* a, const T* b, const T* c, std::size_t d) {
           const T v = p * p * a[i] + q * q * c[i] + 2 * T(rho) * p * q * b[i];
           s += v * v;
         }
-        top = std::max(top, std::sqrt(s));
+        if (s > top * top) {
+          top = std::sqrt(s);
+          if (top > arg_len) {
+            arg_len = top;
+            arg_p = p;
+            arg_q = q;
+            arg_rho = rho;
+          }
+        }
       }
+    }
     best = std::max(best, top + (side == 0 ? nc : na) / (4 * 64 * 64));
+  }
+  if (du != nullptr) {
+    T g = 0;
+    if (arg_len > 0) {
+      for (std::size_t i = 0; i < d; ++i) {
+        const T v = arg_p * arg_p * a[i] + arg_q * arg_q * c[i] + 2 * T(arg_rho) * arg_p * arg_q * b[i];
+        g += v * (arg_p * arg_p * a[i] + T(arg_rho) * arg_p * arg_q * b[i]);
+      }
+      g /= arg_len;
+    }
+    *du = std::clamp(g, T(0), best);
   }
   return best;
 }
@@ -360,7 +401,15 @@ T largest_form(const T* a, const T* b, const T* c, std::size_t d) {
 /// R_N / w0^3 + |N_c| (1 / w0^3 - 1 / w1^3) / 2 of N_c (1 / w0^3 + 1 / w1^3) / 2.
 /// Returns the parts {e_u, e_v} (their sum the bound; the split only guides the counts).
 template <class T>
-std::array<T, 2> cartesian_bound(const Net<T>& n, bool rational) {
+struct CellBound {
+  std::array<T, 2> e{};  ///< the parts {e_u, e_v}
+  /// The diagonal the bound needs: +1 the cell's (0, 0)-(1, 1), -1 its (1, 0)-(0, 1), 0 any.
+  int diagonal = 0;
+  [[nodiscard]] T total() const { return e[0] + e[1]; }
+};
+
+template <class T>
+CellBound<T> cartesian_bound(const Net<T>& n, bool rational) {
   const std::size_t cd = rational ? n.d - 1 : n.d;
   const int P = static_cast<int>(n.rows) - 1, Q = static_cast<int>(n.cols) - 1;
   Poly<T> Nss, Nst, Ntt;
@@ -400,19 +449,23 @@ std::array<T, 2> cartesian_bound(const Net<T>& n, bool rational) {
     const Poly<T> ws = derivative(w, 0), wt = derivative(w, 1), wss = derivative(ws, 0), wst = derivative(ws, 1), wtt = derivative(wt, 1);
     const Poly<T> Xs = derivative(X, 0), Xt = derivative(X, 1), Xss = derivative(Xs, 0), Xst = derivative(Xs, 1), Xtt = derivative(Xt, 1);
     const Poly<T> ww = product(w, w), wws = product(w, ws), wwt = product(w, wt);
+    // The scalar factors of X gathered first: -w w_ss + 2 w_s^2 and so on.
+    const auto factor = [&](const Poly<T>& w2, const Poly<T>& a, const Poly<T>& b) {
+      Poly<T> g;
+      accumulate(g, product(w, w2), T(-1));
+      accumulate(g, product(a, b), T(2));
+      return g;
+    };
     accumulate(Nss, product(ww, Xss), T(1));
-    accumulate(Nss, product(product(w, wss), X), T(-1));
+    accumulate(Nss, product(factor(wss, ws, ws), X), T(1));
     accumulate(Nss, product(wws, Xs), T(-2));
-    accumulate(Nss, product(product(ws, ws), X), T(2));
     accumulate(Nst, product(ww, Xst), T(1));
     accumulate(Nst, product(wwt, Xs), T(-1));
     accumulate(Nst, product(wws, Xt), T(-1));
-    accumulate(Nst, product(product(w, wst), X), T(-1));
-    accumulate(Nst, product(product(ws, wt), X), T(2));
+    accumulate(Nst, product(factor(wst, ws, wt), X), T(1));
     accumulate(Ntt, product(ww, Xtt), T(1));
-    accumulate(Ntt, product(product(w, wtt), X), T(-1));
+    accumulate(Ntt, product(factor(wtt, wt, wt), X), T(1));
     accumulate(Ntt, product(wwt, Xt), T(-2));
-    accumulate(Ntt, product(product(wt, wt), X), T(2));
   }
   // Centre and variation of each second partial.
   const T i0 = 1 / (w0 * w0 * w0), i1 = 1 / (w1 * w1 * w1);
@@ -440,21 +493,19 @@ std::array<T, 2> cartesian_bound(const Net<T>& n, bool rational) {
   };
   std::vector<T> abc(3 * cd);
   const T Dss = centre(Nss, abc.data()), Dst = centre(Nst, abc.data() + cd), Dtt = centre(Ntt, abc.data() + 2 * cd);
-  const T main = largest_form(abc.data(), abc.data() + cd, abc.data() + 2 * cd, cd) / 2;
   // The split of the main term between u and v: its derivative along x of the main term
   // of counts scaled by 1 / sqrt(x) in u (a x, b sqrt(x), c): the term is homogeneous of
   // degree 1 in the two scales, so the two derivatives add up to it.
-  const auto scaled = [&](T x) {
-    std::vector<T> t(abc);
-    for (std::size_t k = 0; k < cd; ++k) {
-      t[k] *= x;
-      t[cd + k] *= std::sqrt(x);
-    }
-    return largest_form(t.data(), t.data() + cd, t.data() + 2 * cd, cd) / 2;
-  };
-  const T du = std::clamp((scaled(T(1.01)) - scaled(T(0.99))) / T(0.02), T(0), main);
   const T rest_u = (Dss + Dst) / 8, rest_v = (Dtt + Dst) / 8;
-  return {du + rest_u, main - du + rest_v};
+  CellBound<T> out;
+  for (const int sign : {1, -1}) {
+    T du = 0;
+    const T main = largest_form(abc.data(), abc.data() + cd, abc.data() + 2 * cd, cd, sign, &du) / 2;
+    du /= 2;
+    const CellBound<T> c{{du + rest_u, main - du + rest_v}, sign};
+    if (sign == 1 || c.total() < out.total()) out = c;
+  }
+  return out;
 }
 
 /// The bound of a cell: the smaller of the bound of its net's differences (cell_bound:
@@ -462,11 +513,11 @@ std::array<T, 2> cartesian_bound(const Net<T>& n, bool rational) {
 /// `enough`: a first bound at most this is taken as it is (the Cartesian one, dearer, is
 /// then not computed).
 template <class T>
-std::array<T, 2> bound(const Net<T>& n, bool rational, T enough) {
-  const std::array<T, 2> h = cell_bound(n, rational);
-  if (h[0] + h[1] <= enough) return h;
-  const std::array<T, 2> c = cartesian_bound(n, rational);
-  return c[0] + c[1] < h[0] + h[1] ? c : h;
+CellBound<T> bound(const Net<T>& n, bool rational, T enough) {
+  const CellBound<T> h{cell_bound(n, rational), 0};
+  if (h.total() <= enough) return h;
+  const CellBound<T> c = cartesian_bound(n, rational);
+  return c.total() < h.total() ? c : h;
 }
 
 /// A patch as a homogeneous Bézier net.
@@ -613,6 +664,9 @@ SurfaceMesh<T> tessellate(const SurfaceForm<T>& f, T tol) {
   // unimodal along x: golden sections), and are checked cell by cell again; the least
   // n m that held is kept.
   std::vector<std::array<T, 2>> parts;
+  // The diagonal each cell's bound needs (CellBound::diagonal), per patch, cell (i, j) at
+  // i * n_v + j.
+  std::vector<std::vector<signed char>> diagonals(A * B);
   const auto propose = [&](std::size_t n, std::size_t m) {
     const T big = T(1e12);
     T xmax = big;
@@ -665,16 +719,19 @@ SurfaceMesh<T> tessellate(const SurfaceForm<T>& f, T tol) {
     std::size_t best_n = 0, best_m = 0;
     std::vector<std::pair<std::size_t, std::size_t>> tried;
     // Every cell's bound at counts (a, b) into `parts`; true when all hold.
+    std::vector<signed char> cur_diagonal;
     const auto check = [&](std::size_t a, std::size_t b) {
       parts.clear();
+      cur_diagonal.clear();
       bool ok = true;
       for (std::size_t i = 0; i < a; ++i) {
         const Net<T> strip = tess::transpose(tess::sub_u(net, T(i) / T(a), T(i + 1) / T(a)));
         for (std::size_t j = 0; j < b; ++j) {
           const Net<T> cell = tess::transpose(tess::sub_u(strip, T(j) / T(b), T(j + 1) / T(b)));
           const auto e = tess::bound(cell, f.rational, f.rational ? T(0.6) * budget : T(0));
-          if (e[0] + e[1] > budget) ok = false;
-          parts.push_back(e);
+          if (e.total() > budget) ok = false;
+          parts.push_back(e.e);
+          cur_diagonal.push_back(static_cast<signed char>(e.diagonal));
         }
       }
       tried.emplace_back(a, b);
@@ -687,6 +744,7 @@ SurfaceMesh<T> tessellate(const SurfaceForm<T>& f, T tol) {
       if (ok && (best_n == 0 || n * m < best_n * best_m)) {
         best_n = n;
         best_m = m;
+        diagonals[k] = cur_diagonal;
       }
       auto [n2, m2] = propose(n, m);
       if (ok && n2 * m2 >= n * m) break;
@@ -711,6 +769,7 @@ SurfaceMesh<T> tessellate(const SurfaceForm<T>& f, T tol) {
         if (check(a, b)) {
           best_n = a;
           best_m = b;
+          diagonals[k] = cur_diagonal;
           better = true;
           break;
         }
@@ -723,6 +782,7 @@ SurfaceMesh<T> tessellate(const SurfaceForm<T>& f, T tol) {
       if (f.rational) throw NumericalError("the tessellation's step counts did not settle (tolerance " + format_number(tol) + ")");
       best_n = patch_nu;
       best_m = patch_nv;
+      diagonals[k].assign(best_n * best_m, 0);
     }
     total += 2 * (T(best_n) * T(best_m) - T(n) * T(m));
     nu[k] = best_n;
@@ -936,6 +996,25 @@ SurfaceMesh<T> tessellate(const SurfaceForm<T>& f, T tol) {
           if (J + 1 == mm) side_run(su[a * (B + 1) + b + 1], I, I + 1, n, true, 2);
           ring.push_back(c01);
           if (I == 0) side_run(sv[a * B + b], J, J + 1, mm, true, 3);
+          const int diagonal = diagonals[k][I * mm + J];
+          const std::size_t pos[4] = {0, 1 + extra[0], 2 + extra[0] + extra[1], 3 + extra[0] + extra[1] + extra[2]};
+          const std::size_t R = ring.size();
+          if (diagonal != 0) {
+            // The cell's two halves on its diagonal, each a triangle P, Q, R of the ring's
+            // corners (P -> Q and Q -> R sides of the cell, which may carry extra nodes):
+            // a fan from R over the side P -> Q but its last piece, then a fan from the
+            // last node before Q over the side Q -> R. Every node of a half is comonotone
+            // (or countermonotone) in (s, t) with every other, as the bound asks.
+            for (const std::size_t cp : diagonal > 0 ? std::array<std::size_t, 2>{0, 2} : std::array<std::size_t, 2>{3, 1}) {
+              const std::size_t p = pos[cp], q = pos[(cp + 1) % 4], r = pos[(cp + 2) % 4];
+              const std::size_t K = (q + R - p) % R, L = (r + R - q) % R;
+              const auto node = [&](std::size_t from, std::size_t i) { return vid[ring[(from + i) % R]]; };
+              for (std::size_t i = 0; i + 2 <= K; ++i) emit(node(p, i), node(p, i + 1), node(r, 0));
+              const std::uint32_t last = node(p, K - 1);
+              for (std::size_t j = 0; j < L; ++j) emit(last, node(q, j), node(q, j + 1));
+            }
+            continue;
+          }
           if (ring.size() == 4) {
             const std::uint32_t p00 = vid[c00], p10 = vid[c10], p11 = vid[c11], p01 = vid[c01];
             if (dist2(p00, p11) <= dist2(p10, p01)) {
@@ -950,11 +1029,9 @@ SurfaceMesh<T> tessellate(const SurfaceForm<T>& f, T tol) {
           // A fan from a corner whose two sides have no extra nodes (corner c of the ring
           // order: c00 between left and bottom, c10 bottom and right, ...); else from a
           // new vertex at the cell's middle.
-          const std::size_t pos[4] = {0, 1 + extra[0], 2 + extra[0] + extra[1], 3 + extra[0] + extra[1] + extra[2]};
           int apex = -1;
           for (int c = 0; c < 4 && apex < 0; ++c)
             if (extra[c] == 0 && extra[(c + 3) % 4] == 0) apex = c;
-          const std::size_t R = ring.size();
           if (apex >= 0) {
             const std::size_t s = pos[apex];
             for (std::size_t i = 1; i + 1 < R; ++i) emit(vid[ring[s]], vid[ring[(s + i) % R]], vid[ring[(s + i + 1) % R]]);
