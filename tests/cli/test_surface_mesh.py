@@ -497,6 +497,11 @@ class TessellateTest(CliTest):
         self.bad("tessellate", {"surface": s4, "tolerance": 0.1, "format": "stl"}, where="format")
         self.bad("tessellate", {"surface": {"type": "bezier_surface", "points": [[[0, 0, 0]], [[1, 0]]]}, "tolerance": 0.1},
                  where="surface.points[1][0]")
+        # Degree 0 in u or v: a curve (constant along that direction), refused.
+        line = {"type": "bezier_surface", "points": [[[0, 0, 0], [0, 1, 1], [0, 2, 0]]]}
+        self.bad("tessellate", {"surface": line, "tolerance": 0.01}, where="surface", contains="degree 0 in u")
+        seg = {"type": "bezier_surface", "points": [[[0, 0, 0]], [[1, 1, 1]]]}
+        self.bad("tessellate", {"surface": seg, "tolerance": 0.01}, where="surface", contains="degree 0 in v")
         # Other dimensions tessellate in JSON (no normals there).
         r = self.ok("tessellate", {"surface": s4, "tolerance": 0.1})
         self.assertEqual(len(r["vertices"][0]), 4)

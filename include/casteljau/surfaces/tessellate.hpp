@@ -598,7 +598,9 @@ T at_fraction(T lo, T hi, Fraction f) {
 
 /// The tessellation of f (checked) within tol > 0 (InvalidArgument "tolerance" when not a
 /// finite positive number, or when the answer would exceed max_triangles: estimated
-/// before any vertex is evaluated). Throws InvalidArgument("surface", ...) for a surface
+/// before any vertex is evaluated; InvalidArgument "surface" for a degree 0 in u or v: the
+/// surface is then constant along that direction, a curve or a point, and its triangles
+/// would all have zero area). Throws InvalidArgument("surface", ...) for a surface
 /// that is not continuous across a knot line (an interior knot of full multiplicity whose
 /// two sides differ): its mesh would need two edges there.
 template <class T>
@@ -606,6 +608,10 @@ SurfaceMesh<T> tessellate(const SurfaceForm<T>& f, T tol) {
   using tess::Fraction;
   using tess::Net;
   if (!(tol > 0) || !std::isfinite(tol)) throw InvalidArgument("tolerance", "must be a finite number > 0, got " + format_number(tol));
+  if (f.p == 0 || f.q == 0) {
+    throw InvalidArgument("surface", std::string("has degree 0 in ") + (f.p == 0 ? "u" : "v") +
+                                         ": it is a curve (or a point), with no area to mesh into triangles");
+  }
   const SurfacePatches<T> sp = patches(f);
   const std::size_t A = sp.patches.size(), B = sp.patches.front().size(), cd = f.cartesian();
   // The size of the surface (the box of its control points), for the rounding slack and
@@ -720,6 +726,7 @@ SurfaceMesh<T> tessellate(const SurfaceForm<T>& f, T tol) {
     std::vector<std::pair<std::size_t, std::size_t>> tried;
     // Every cell's bound at counts (a, b) into `parts`; true when all hold.
     std::vector<signed char> cur_diagonal;
+    std::vector<std::array<T, 2>> best_parts;
     const auto check = [&](std::size_t a, std::size_t b) {
       parts.clear();
       cur_diagonal.clear();
@@ -745,6 +752,7 @@ SurfaceMesh<T> tessellate(const SurfaceForm<T>& f, T tol) {
         best_n = n;
         best_m = m;
         diagonals[k] = cur_diagonal;
+        best_parts = parts;
       }
       auto [n2, m2] = propose(n, m);
       if (ok && n2 * m2 >= n * m) break;
@@ -766,10 +774,16 @@ SurfaceMesh<T> tessellate(const SurfaceForm<T>& f, T tol) {
       bool better = false;
       for (const auto& [a, b] : near) {
         if (a < 1 || b < 1 || a * b >= best_n * best_m || seen(a, b)) continue;
+        // Only where the scaled parts of the best counts' cells come near the budget.
+        const T x = T(bn) * T(bn) / (T(a) * T(a)), y = T(bm) * T(bm) / (T(b) * T(b));
+        T predicted = 0;
+        for (const auto& e : best_parts) predicted = std::max(predicted, e[0] * x + e[1] * y);
+        if (predicted > T(1.02) * budget) continue;
         if (check(a, b)) {
           best_n = a;
           best_m = b;
           diagonals[k] = cur_diagonal;
+          best_parts = parts;
           better = true;
           break;
         }
