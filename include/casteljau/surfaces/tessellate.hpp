@@ -77,6 +77,7 @@
 #include <string>
 #include <vector>
 
+#include "casteljau/basis/binomial.hpp"
 #include "casteljau/core/error.hpp"
 #include "casteljau/surfaces/surface_form.hpp"
 
