@@ -6,10 +6,12 @@
 // gets its own counts n_u x n_v of equal parameter steps (a grid of cells). A patch side
 // shared by two patches is split at the union of both patches' steps along it (computed
 // once for both, as reduced fractions, so that both see the same nodes): the mesh has no
-// cracks and no T-junctions. A cell is cut into two triangles along its shorter diagonal
-// in space; a cell on a patch side that carries extra nodes of the neighbour is a convex
-// polygon, cut into a fan from a corner whose two sides carry none (else from a vertex
-// added at the cell's middle). Every triangle lies inside its cell, and the triangles are
+// cracks and no T-junctions. A cell is cut along the diagonal its bound asks for (below:
+// the sign of the mixed term), else along its shorter diagonal in space; a cell on a patch
+// side that carries extra nodes of the neighbour is a convex polygon, each half of it cut
+// into fans over those nodes (without a diagonal: a fan from a corner whose two sides carry
+// none, else from a vertex added at the cell's middle). Every triangle lies inside its
+// cell (inside its half when the bound asks for a diagonal), and the triangles are
 // counter-clockwise in (u, v), so counter-clockwise seen from the side S_u x S_v points
 // to. The counts adapt to each patch's curvature: a flat patch gets one step, a curved
 // one as many as its cells' bounds ask.
@@ -39,9 +41,12 @@
 // the cell, the sharper form of cartesian_bound: the second partials as centre values plus
 // variations, and the directions of the centre values taken into account (a mixed partial
 // perpendicular to the others, as on a sphere near its pole, adds far less than its
-// length). (1) sees the weights' variation 2 w' S' in the second differences of P - c w,
-// (2) does not; (2) is tighter on most cells of a sphere. A polynomial patch is the case
-// w = 1, and takes the smaller of (2) and the plain e(F) too.
+// length; with the diagonal (0, 0)-(1, 1) every node of a half of the cell is comonotone
+// with every other in (s, t), so M_st >= 0 for its triangles, with the other diagonal
+// M_st <= 0: the cell takes the diagonal whose sign gives the smaller bound, the mixed term
+// then working against the others). (1) sees the weights' variation 2 w' S' in the second
+// differences of P - c w, (2) does not; (2) is tighter on most cells of a sphere. A
+// polynomial patch is the case w = 1, and takes the smaller of (2) and the plain e(F) too.
 //
 // The counts. Each patch starts from the counts that its Cartesian net's bound asks (for a
 // polynomial patch a valid bound: a cell's differences are the patch's scaled by the
