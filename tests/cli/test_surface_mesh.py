@@ -173,9 +173,49 @@ class MeshCase:
         tri = np.repeat(np.arange(len(self.T)), len(B))
         return pts, tri, uv
 
-    def distance_to_mesh(self, Q, k=4, candidates=12):
+    def containing_triangles(self, q, bins=64):
+        """For each (u, v) of q, a triangle whose (u, v) triangle holds it (-1: none), found
+        through a grid of buckets of the triangles' (u, v) boxes."""
+        UVt = self.UV[self.T]
+        lo, hi = self.UV.min(axis=0), self.UV.max(axis=0)
+        scale = bins / np.maximum(hi - lo, 1e-300)
+
+        def cell(x):
+            return np.clip(((x - lo) * scale).astype(int), 0, bins - 1)
+
+        a, b = cell(UVt.min(axis=1)), cell(UVt.max(axis=1))
+        tri, key = [], []
+        for t in range(len(self.T)):
+            for i in range(a[t, 0], b[t, 0] + 1):
+                for j in range(a[t, 1], b[t, 1] + 1):
+                    tri.append(t)
+                    key.append(i * bins + j)
+        tri, key = np.asarray(tri), np.asarray(key)
+        order = np.argsort(key, kind="stable")
+        tri, key = tri[order], key[order]
+        start = np.searchsorted(key, np.arange(bins * bins))
+        end = np.searchsorted(key, np.arange(bins * bins), side="right")
+        qc = cell(q)
+        qk = qc[:, 0] * bins + qc[:, 1]
+        n = end[qk] - start[qk]
+        qi = np.repeat(np.arange(len(q)), n)
+        ti = tri[np.repeat(start[qk], n) + np.arange(n.sum()) - np.repeat(np.cumsum(n) - n, n)]
+        A, E1, E2 = UVt[ti, 0], UVt[ti, 1] - UVt[ti, 0], UVt[ti, 2] - UVt[ti, 0]
+        det = E1[:, 0] * E2[:, 1] - E1[:, 1] * E2[:, 0]
+        P = q[qi] - A
+        with np.errstate(divide="ignore", invalid="ignore"):
+            l1 = (P[:, 0] * E2[:, 1] - P[:, 1] * E2[:, 0]) / det
+            l2 = (E1[:, 0] * P[:, 1] - E1[:, 1] * P[:, 0]) / det
+        inside = (det != 0) & (l1 >= -1e-9) & (l2 >= -1e-9) & (l1 + l2 <= 1 + 1e-9)
+        out = np.full(len(q), -1)
+        out[qi[inside][::-1]] = ti[inside][::-1]
+        return out
+
+    def distance_to_mesh(self, Q, k=4, candidates=12, uv=None):
         """An upper bound of each point's distance to the mesh (exact distances to the
-        triangles of its nearest mesh samples)."""
+        triangles of its nearest mesh samples; with uv, the points' (u, v), also to the
+        triangle whose (u, v) triangle holds it: long thin triangles of the mesh may have
+        no sample near the point)."""
         pts, tri, _ = self.samples(k)
         _, idx = cKDTree(pts).query(Q, k=candidates)
         best = np.full(len(Q), np.inf)
@@ -183,6 +223,11 @@ class MeshCase:
             t = self.T[tri[idx[:, c]]]
             d = point_triangle_distance(Q, self.X[t[:, 0]], self.X[t[:, 1]], self.X[t[:, 2]])
             best = np.minimum(best, d)
+        if uv is not None:
+            hold = self.containing_triangles(uv)
+            ok = hold >= 0
+            t = self.T[hold[ok]]
+            best[ok] = np.minimum(best[ok], point_triangle_distance(Q[ok], self.X[t[:, 0]], self.X[t[:, 1]], self.X[t[:, 2]]))
         return best
 
 
@@ -358,9 +403,13 @@ class TessellateTest(CliTest):
         self.assertGreater(d.max(), 0.05 * tol)  # a mesh, not a needlessly fine one
         # Surface -> mesh: a dense grid of surface points plus random ones.
         rng = np.random.default_rng(7)
-        G = ev.grid(np.linspace(u0, u1, 90), np.linspace(v0, v1, 90)).reshape(-1, 3)
-        Rn = ev(rng.uniform(u0, u1, 3000), rng.uniform(v0, v1, 3000))
-        self.assertLessEqual(m.distance_to_mesh(np.concatenate([G, Rn])).max(), tol)
+        gu, gv = np.linspace(u0, u1, 90), np.linspace(v0, v1, 90)
+        G = ev.grid(gu, gv).reshape(-1, 3)
+        ru, rv = rng.uniform(u0, u1, 3000), rng.uniform(v0, v1, 3000)
+        Rn = ev(ru, rv)
+        GU, GV = np.meshgrid(gu, gv, indexing="ij")
+        uv = np.concatenate([np.stack([GU.ravel(), GV.ravel()], axis=1), np.stack([ru, rv], axis=1)])
+        self.assertLessEqual(m.distance_to_mesh(np.concatenate([G, Rn]), uv=uv).max(), tol)
         self.check_topology(m, ev.domain)
         # Orientation: S_u x S_v at the triangle's centre in (u, v) (no degenerate edges here).
         self.check_orientation(m, lambda T, c: ev.normal(m.UV[T][:, :, 0].mean(axis=1), m.UV[T][:, :, 1].mean(axis=1)))
@@ -448,6 +497,11 @@ class TessellateTest(CliTest):
         self.bad("tessellate", {"surface": s4, "tolerance": 0.1, "format": "stl"}, where="format")
         self.bad("tessellate", {"surface": {"type": "bezier_surface", "points": [[[0, 0, 0]], [[1, 0]]]}, "tolerance": 0.1},
                  where="surface.points[1][0]")
+        # Degree 0 in u or v: a curve (constant along that direction), refused.
+        line = {"type": "bezier_surface", "points": [[[0, 0, 0], [0, 1, 1], [0, 2, 0]]]}
+        self.bad("tessellate", {"surface": line, "tolerance": 0.01}, where="surface", contains="degree 0 in u")
+        seg = {"type": "bezier_surface", "points": [[[0, 0, 0]], [[1, 1, 1]]]}
+        self.bad("tessellate", {"surface": seg, "tolerance": 0.01}, where="surface", contains="degree 0 in v")
         # Other dimensions tessellate in JSON (no normals there).
         r = self.ok("tessellate", {"surface": s4, "tolerance": 0.1})
         self.assertEqual(len(r["vertices"][0]), 4)

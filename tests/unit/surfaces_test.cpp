@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "casteljau/surfaces/surface.hpp"
@@ -152,6 +153,76 @@ TEST(Surfaces, OperationsKeepTheSurface) {
   const BSplineSurface<double, 3> flat(3, 2, s.knots_u(), s.knots_v(), Grid3(5, std::vector<P3>(4, P3(1, 2, 3))));
   EXPECT_LT(distance(flat(0.37, 0.71), P3(1, 2, 3)), 4 * test::eps);
   EXPECT_LT(norm(flat.derivative(0.37, 0.71, 1, 1)), 1e-13);
+}
+
+// Affine maps (transform): the quarter cylinder of radius 2 (RationalCylinder) scaled by 3
+// in x and 1/2 in y and moved by (1, -2, 5) is a quarter of the elliptic cylinder
+// ((x - 1) / 3)^2 + ((y + 2) / (1/2))^2 = 4, z in [5, 8] (an affine image of a circle is
+// an ellipse, exactly, with the same weights); a rotation by 90 degrees about z turns
+// its start (2, 0, z) to (0, 2, z). A general affine map of the sample NURBS surface
+// commutes with evaluation (affine invariance) and keeps knots and weights; a map to
+// infinity is refused.
+TEST(Surfaces, TransformIsExact) {
+  const double h = std::sqrt(0.5);
+  const RationalBezierSurface<double, 3> s(Grid3{{P3(2, 0, 0), P3(2, 0, 3)}, {P3(2, 2, 0), P3(2, 2, 3)}, {P3(0, 2, 0), P3(0, 2, 3)}},
+                                           {{1, 1}, {h, h}, {1, 1}});
+  Affine<double, 3> m;
+  m.linear = {{{3, 0, 0}, {0, 0.5, 0}, {0, 0, 1}}};
+  m.translation = Vector<double, 3>(1, -2, 5);
+  const auto e = s.transform(m);
+  for (double u : {0.0, 0.1, 0.37, 0.5, 0.9, 1.0})
+    for (double v : {0.0, 0.25, 1.0}) {
+      const P3 x = e(u, v);
+      EXPECT_NEAR(std::hypot((x[0] - 1) / 3, (x[1] + 2) / 0.5), 2, 8 * test::eps);
+      EXPECT_NEAR(x[2], 5 + 3 * v, 8 * test::eps);
+    }
+  EXPECT_EQ(e.weight(1, 0), h);
+  Affine<double, 3> r;
+  r.linear = {{{0, -1, 0}, {1, 0, 0}, {0, 0, 1}}};
+  const P3 start = s.transform(r)(0.0, 0.5);
+  EXPECT_NEAR(start[0], 0, 1e-15);
+  EXPECT_NEAR(start[1], 2, 1e-15);
+  EXPECT_NEAR(start[2], 1.5, 1e-15);
+  const auto n = sample_nurbs();
+  Affine<double, 3> g;
+  g.linear = {{{1.5, -0.3, 0.2}, {0.4, 0.9, -1.1}, {0.0, 0.7, 2.0}}};
+  g.translation = Vector<double, 3>(-3, 0.5, 7);
+  const auto t = n.transform(g);
+  EXPECT_EQ(t.knots_u(), n.knots_u());
+  EXPECT_EQ(t.knots_v(), n.knots_v());
+  for (int i = 0; i <= 6; ++i)
+    for (int j = 0; j <= 6; ++j) EXPECT_LT(distance(t(i / 6.0, j / 6.0), g(n(i / 6.0, j / 6.0))), 1e-13);
+  EXPECT_THROW((void)n.transform(Affine<double, 3>::scale(1e308)), InvalidArgument);
+}
+
+// float and long double: the rational quarter cylinder evaluated, split, elevated and its
+// curvature, each within a few eps of the scalar (the curve version of this is
+// scalar_types_test.cpp).
+template <class T>
+void cylinder_at_scalar() {
+  using PT = Point<T, 3>;
+  const T h = std::sqrt(T(0.5)), eps = std::numeric_limits<T>::epsilon();
+  const RationalBezierSurface<T, 3> s(std::vector<std::vector<PT>>{{PT(2, 0, 0), PT(2, 0, 3)}, {PT(2, 2, 0), PT(2, 2, 3)}, {PT(0, 2, 0), PT(0, 2, 3)}},
+                                      {{1, 1}, {h, h}, {1, 1}});
+  const auto [a, b] = s.split(Direction::u, T(0.3));
+  const auto e = s.elevate(Direction::u, 2);
+  for (const T u : {T(0), T(0.2), T(0.5), T(1)}) {
+    const PT x = s(u, T(0.5));
+    EXPECT_NEAR(std::hypot(x[0], x[1]), T(2), 8 * eps);
+    EXPECT_NEAR(x[2], T(1.5), 8 * eps);
+    EXPECT_LT(distance(e(u, T(0.5)), x), 32 * eps);
+    const PT y = u <= T(0.3) ? a(u / T(0.3), T(0.5)) : b((u - T(0.3)) / (1 - T(0.3)), T(0.5));
+    EXPECT_LT(distance(y, x), 32 * eps);
+    const auto c = s.curvature(u, T(0.5));
+    ASSERT_TRUE(c);
+    EXPECT_NEAR(c->mean, T(-0.25), 1024 * eps);
+    EXPECT_NEAR(c->k2, T(-0.5), 1024 * eps);
+  }
+}
+
+TEST(Surfaces, FloatAndLongDouble) {
+  cylinder_at_scalar<float>();
+  cylinder_at_scalar<long double>();
 }
 
 // float works (the algorithms are templated on the scalar): a bilinear patch at float

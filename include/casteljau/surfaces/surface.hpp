@@ -3,19 +3,21 @@
 // kind. Each validates its data once (errors naming the grid position) and holds it as a
 // detail::SurfaceForm (surfaces/surface_form.hpp), where the algorithms live once per
 // scalar: evaluation and partial derivatives, normals and curvatures, splitting, degree
-// elevation, knot insertion, isocurves and the exact Bézier patches (`patches()`, the
-// common form of every kind).
+// elevation, knot insertion, isocurves, affine maps (`transform`) and the exact Bézier
+// patches (`patches()`, the common form of every kind).
 //
 // The control grid is points[i][j]: i along u (the rows), j along v (the columns).
 // Domains: [0, 1] x [0, 1] for the Bézier kinds, [U_p, U_rows] x [V_q, V_cols] for the
 // B-spline kinds; outside, the end patches extrapolate.
 #pragma once
 
+#include <cmath>
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "casteljau/core/affine.hpp"
 #include "casteljau/core/interval.hpp"
 #include "casteljau/core/point.hpp"
 #include "casteljau/curves/bezier.hpp"
@@ -183,6 +185,28 @@ class Surface {
     else if constexpr (K == SurfaceKind::rational_bezier) return Curve(std::move(P), std::move(w));
     else if constexpr (K == SurfaceKind::bspline) return Curve(c.p, c.U, std::move(P));
     else return Curve(c.p, c.U, std::move(P), std::move(w));
+  }
+  /// The image under an affine map: the control points mapped, the weights and knots kept
+  /// (affine invariance; exact for the rational kinds too, whose points are Cartesian: the
+  /// map commutes with their weighted averages). Error InvalidArgument("m") when a mapped
+  /// point is not finite.
+  [[nodiscard]] Surface transform(const Affine<T, D>& m) const {
+    detail::SurfaceForm<T> f = f_;
+    for (std::size_t i = 0; i < f.rows; ++i)
+      for (std::size_t j = 0; j < f.cols; ++j) {
+        T* x = f.at(i, j);
+        PointType p;
+        for (int k = 0; k < D; ++k) p[k] = x[k];
+        const PointType q = m(p);
+        for (int k = 0; k < D; ++k) {
+          if (!std::isfinite(q[k]) || (is_rational && !std::isfinite(q[k] * x[D]))) {
+            throw InvalidArgument("m", "the transformed surface is not representable: its control point [" + std::to_string(i) + "][" +
+                                           std::to_string(j) + "] is not finite");
+          }
+          x[k] = q[k];
+        }
+      }
+    return Surface(std::move(f));
   }
   /// The exact Bézier patches and their breaks.
   [[nodiscard]] PatchGrid<Patch> patches() const {

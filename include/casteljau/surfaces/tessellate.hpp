@@ -2,16 +2,19 @@
 // into triangles to a tolerance, both ways: every point of every triangle lies within the
 // tolerance of the surface, and every point of the surface within the tolerance of the mesh.
 //
-// The mesh. The surface is cut into its exact Bézier patches (detail::patches). Each u
-// interval between breaks (a strip of patches) gets one count n_u of equal steps, each v
-// interval one count n_v, so the parameter lines form one tensor grid over the whole
-// domain: an edge shared by two patches (a knot line) is split by the same parameters on
-// both sides and its vertices are shared, so there are no cracks and no T-junctions.
-// Each grid cell is cut into two triangles along its shorter diagonal in space; the
-// triangles are counter-clockwise in (u, v), so counter-clockwise seen from the side S_u x
-// S_v points to. The counts adapt to each strip's curvature: a flat strip gets one step,
-// a curved one as many as its bound asks (the strip takes the largest need of its
-// patches).
+// The mesh. The surface is cut into its exact Bézier patches (detail::patches). Each patch
+// gets its own counts n_u x n_v of equal parameter steps (a grid of cells). A patch side
+// shared by two patches is split at the union of both patches' steps along it (computed
+// once for both, as reduced fractions, so that both see the same nodes): the mesh has no
+// cracks and no T-junctions. A cell is cut along the diagonal its bound asks for (below:
+// the sign of the mixed term), else along its shorter diagonal in space; a cell on a patch
+// side that carries extra nodes of the neighbour is a convex polygon, each half of it cut
+// into fans over those nodes (without a diagonal: a fan from a corner whose two sides carry
+// none, else from a vertex added at the cell's middle). Every triangle lies inside its
+// cell (inside its half when the bound asks for a diagonal), and the triangles are
+// counter-clockwise in (u, v), so counter-clockwise seen from the side S_u x S_v points
+// to. The counts adapt to each patch's curvature: a flat patch gets one step, a curved
+// one as many as its cells' bounds ask.
 //
 // The bound (why the tolerance holds). Take a cell of a patch, reparametrised to the unit
 // square (s, t), and one of its triangles, with barycentric coordinates lambda_i of its
@@ -21,25 +24,39 @@
 // t|), Taylor's theorem about x with the integral remainder gives
 //   |F(x) - sum lambda_i F(x_i)| <= 1/2 sum lambda_i Q(x_i - x),
 //   Q(d) = A d_s^2 + 2 B |d_s d_t| + C d_t^2 <= (A + B) d_s^2 + (C + B) d_t^2,
-// and for the right triangles of a unit cell sum lambda_i |x_i - x|^2 in that diagonal
-// metric is at most the squared circumradius (the hypotenuse's half), so the error is at
-// most e(F) = ((A + B) + (C + B)) / 8. For a rational surface S = P / w (homogeneous
-// patch (P, w), weights > 0), pick a centre c and r >= |S - c| on the cell (the radius of
-// the cell's control points about c: the surface lies in their hull). The point
+// and for any triangle inside the unit cell sum lambda_i |x_i - x|^2 in that diagonal
+// metric is at most the squared radius of the triangle's least enclosing circle, at most
+// that of the cell (the half diagonal), so the error is at most e(F) = ((A + B) + (C + B))
+// / 8. The pairing x -> sum lambda_i F(x_i) maps the parameter triangle onto the flat
+// triangle, so the bound holds both ways. For a rational surface S = P / w (homogeneous
+// patch (P, w), weights > 0) two bounds hold and the smaller is taken:
+// (1) pick a centre c and r >= |S - c| on the cell (the radius of the cell's control
+// points about c: the surface lies in their hull). The point
 // T(x) = sum lambda_i P(x_i) / sum lambda_i w(x_i) is a point of the flat triangle (weights
 // lambda_i w(x_i) / sum, >= 0), and x -> T(x) maps the parameter triangle onto the whole
 // flat triangle; S(x) - T(x) = [(P - c w) - L(P - c w) - (S - c)(w - L w)] / L w, L the
 // linear interpolant, L w >= min w >= the least control weight, so
-//   |S(x) - T(x)| <= (e(P - c w) + r e(w)) / w_min.
-// That one bound covers both directions (each surface point S(x) has T(x) on the mesh
-// within it, each mesh point T(x) has S(x)); a polynomial patch is the case w = 1. The
-// counts start from the patch's Cartesian net (for a polynomial patch a valid bound: a
-// cell's differences are the patch's scaled by the step squared; it starts from 0.6 of
-// those counts, which the cells raise where they need; should they not settle, the patch
-// counts are used), and
-// every cell's own net (Bézier subdivision of the patch) is checked against the bound
-// above and the strip's count raised until all hold. A relative slack
-// of 1e-13 of the surface's size covers the rounding of the evaluation.
+//   |S(x) - T(x)| <= (e(P - c w) + r e(w)) / w_min;
+// (2) the bound e(S) of S itself, with A, B, C bounds of its Cartesian second partials on
+// the cell, the sharper form of cartesian_bound: the second partials as centre values plus
+// variations, and the directions of the centre values taken into account (a mixed partial
+// perpendicular to the others, as on a sphere near its pole, adds far less than its
+// length; with the diagonal (0, 0)-(1, 1) every node of a half of the cell is comonotone
+// with every other in (s, t), so M_st >= 0 for its triangles, with the other diagonal
+// M_st <= 0: the cell takes the diagonal whose sign gives the smaller bound, the mixed term
+// then working against the others). (1) sees the weights' variation 2 w' S' in the second
+// differences of P - c w, (2) does not; (2) is tighter on most cells of a sphere. A
+// polynomial patch is the case w = 1, and takes the smaller of (2) and the plain e(F) too.
+//
+// The counts. Each patch starts from the counts that its Cartesian net's bound asks (for a
+// polynomial patch a valid bound: a cell's differences are the patch's scaled by the
+// step squared), 0.6 of them (0.4 for a rational patch); at given counts every cell's own
+// net (Bézier subdivision of the patch) gives its bound's parts (e_u, e_v), which scale
+// about as the step squared: the next counts are those of least n_u n_v that the parts,
+// so scaled, would allow, checked again cell by cell; the least n_u n_v that held is kept
+// (should none hold in 64 rounds: a polynomial patch takes its patch bound's counts, a
+// rational one is refused). A relative slack of 1e-13 of the surface's size covers the
+// rounding of the evaluation.
 //
 // Degenerate edges. A patch edge whose control points coincide (a sphere's pole, the
 // apex of a cone) is one point: its grid vertices are merged into one vertex, the cells
@@ -48,8 +65,10 @@
 // along u = u0, S_u x S_v ~ (u - u0) S_u x S_uv, so n = +-(S_u x S_uv) / |...| (the sign
 // from the side the domain lies on); null when that vanishes too.
 //
-// Cost: the count is estimated from the patches' nets before any vertex is evaluated;
-// beyond max_triangles the request is refused (InvalidArgument "tolerance").
+// Cost: the count is estimated from the patches' nets before any vertex is evaluated, and
+// again at each round of the counts; beyond max_triangles the request is refused
+// (InvalidArgument "tolerance"). The vertices are numbered in the order the triangles
+// first use them.
 #pragma once
 
 #include <algorithm>
@@ -58,10 +77,12 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
+#include <deque>
 #include <numeric>
 #include <string>
 #include <vector>
 
+#include "casteljau/basis/binomial.hpp"
 #include "casteljau/core/error.hpp"
 #include "casteljau/surfaces/surface_form.hpp"
 
@@ -78,8 +99,6 @@ struct SurfaceMesh {
   std::vector<T> normals;   ///< 3-D only: vertex k: normals[3 k + c]
   std::vector<unsigned char> has_normal;
   std::vector<std::array<std::uint32_t, 3>> triangles;
-  /// The parameter lines of the grid (diagnostics, tests).
-  std::vector<T> us, vs;
   [[nodiscard]] std::size_t size() const { return dim == 0 ? 0 : vertices.size() / dim; }
 };
 
@@ -208,6 +227,305 @@ std::array<T, 2> cell_bound(const Net<T>& n, bool rational) {
   return out;
 }
 
+/// A tensor-product Bézier polynomial of degrees (m, n) with `d` values per coefficient,
+/// row-major; m < 0: the zero polynomial.
+template <class T>
+struct Poly {
+  int m = -1, n = -1;
+  std::size_t d = 0;
+  std::vector<T> c;
+  [[nodiscard]] bool zero() const { return m < 0 || n < 0; }
+  [[nodiscard]] const T* at(int i, int j) const { return c.data() + (static_cast<std::size_t>(i) * static_cast<std::size_t>(n + 1) + static_cast<std::size_t>(j)) * d; }
+  [[nodiscard]] T* at(int i, int j) { return c.data() + (static_cast<std::size_t>(i) * static_cast<std::size_t>(n + 1) + static_cast<std::size_t>(j)) * d; }
+};
+
+template <class T>
+Poly<T> make_poly(int m, int n, std::size_t d) {
+  if (m < 0 || n < 0) return Poly<T>{};
+  return Poly<T>{m, n, d, std::vector<T>(static_cast<std::size_t>(m + 1) * static_cast<std::size_t>(n + 1) * d, T(0))};
+}
+
+/// The derivative along s (dir 0, the rows) or t (dir 1), in Bézier form.
+template <class T>
+Poly<T> derivative(const Poly<T>& a, int dir) {
+  if (a.zero()) return a;
+  Poly<T> r = make_poly<T>(dir == 0 ? a.m - 1 : a.m, dir == 0 ? a.n : a.n - 1, a.d);
+  if (r.zero()) return r;
+  const T k = T(dir == 0 ? a.m : a.n);
+  for (int i = 0; i <= r.m; ++i)
+    for (int j = 0; j <= r.n; ++j) {
+      const T *x0 = a.at(i, j), *x1 = dir == 0 ? a.at(i + 1, j) : a.at(i, j + 1);
+      T* y = r.at(i, j);
+      for (std::size_t c = 0; c < a.d; ++c) y[c] = k * (x1[c] - x0[c]);
+    }
+  return r;
+}
+
+/// Row n of Pascal's triangle (cached per thread; a deque keeps the rows handed out in
+/// place while it grows).
+template <class T>
+const std::vector<T>& binomials(int n) {
+  thread_local std::deque<std::vector<T>> rows;
+  while (rows.size() <= static_cast<std::size_t>(n)) rows.push_back(binomial_row<T>(static_cast<int>(rows.size())));
+  return rows[static_cast<std::size_t>(n)];
+}
+
+/// The product of a scalar polynomial s (d = 1) and a polynomial b, in Bézier form (the
+/// degrees add): through the scaled Bernstein coefficients, whose products convolve.
+template <class T>
+Poly<T> product(const Poly<T>& s, const Poly<T>& b) {
+  if (s.zero() || b.zero()) return Poly<T>{};
+  Poly<T> r = make_poly<T>(s.m + b.m, s.n + b.n, b.d);
+  const std::vector<T>&sm = binomials<T>(s.m), &sn = binomials<T>(s.n), &bm = binomials<T>(b.m), &bn = binomials<T>(b.n),
+                 &rm = binomials<T>(r.m), &rn = binomials<T>(r.n);
+  const std::size_t d = b.d, bc = static_cast<std::size_t>(b.n + 1), rc = static_cast<std::size_t>(r.n + 1);
+  std::vector<T> sb(b.c.size());
+  for (std::size_t i = 0; i <= static_cast<std::size_t>(b.m); ++i)
+    for (std::size_t j = 0; j < bc; ++j)
+      for (std::size_t c = 0; c < d; ++c) sb[(i * bc + j) * d + c] = b.c[(i * bc + j) * d + c] * bm[i] * bn[j];
+  for (std::size_t k = 0; k <= static_cast<std::size_t>(s.m); ++k)
+    for (std::size_t l = 0; l <= static_cast<std::size_t>(s.n); ++l) {
+      const T sk = s.c[k * static_cast<std::size_t>(s.n + 1) + l] * sm[k] * sn[l];
+      if (sk == 0) continue;
+      for (std::size_t i = 0; i <= static_cast<std::size_t>(b.m); ++i) {
+        const T* x = sb.data() + i * bc * d;
+        T* y = r.c.data() + ((k + i) * rc + l) * d;
+        for (std::size_t jc = 0; jc < bc * d; ++jc) y[jc] += sk * x[jc];
+      }
+    }
+  for (std::size_t i = 0; i <= static_cast<std::size_t>(r.m); ++i)
+    for (std::size_t j = 0; j < rc; ++j) {
+      const T f = 1 / (rm[i] * rn[j]);
+      for (std::size_t c = 0; c < d; ++c) r.c[(i * rc + j) * d + c] *= f;
+    }
+  return r;
+}
+
+/// acc += k * a (a zero or of acc's degrees; a zero acc takes a's).
+template <class T>
+void accumulate(Poly<T>& acc, const Poly<T>& a, T k) {
+  if (a.zero()) return;
+  if (acc.zero()) acc = make_poly<T>(a.m, a.n, a.d);
+  for (std::size_t i = 0; i < a.c.size(); ++i) acc.c[i] += k * a.c[i];
+}
+
+/// The largest Euclidean norm of a coefficient (a bound of the polynomial's norm on the
+/// unit square: the convex hull property).
+template <class T>
+T max_norm(const Poly<T>& a) {
+  if (a.zero()) return T(0);
+  T best = 0;
+  for (std::size_t i = 0; i < a.c.size(); i += a.d) {
+    T s = 0;
+    for (std::size_t c = 0; c < a.d; ++c) s += a.c[i + c] * a.c[i + c];
+    best = std::max(best, s);
+  }
+  return std::sqrt(best);
+}
+
+/// The largest |p^2 a + q^2 c + 2 rho p q b| over p, q in [0, 1/2] and rho = +-1 (a, b, c
+/// vectors of d values), from above: the expression is homogeneous of degree 2 in (p, q),
+/// so the largest value lies on p = 1/2 or q = 1/2; each of those segments is sampled at
+/// 33 points: between two samples h = 1/64 apart the vector (a quadratic in the free
+/// variable, second derivative 2c on p = 1/2, 2a on q = 1/2) is within h^2 |c| / 4 (or
+/// h^2 |a| / 4) of the chord between the samples' values, whose length is at most the
+/// larger of theirs.
+///
+/// `sign` restricts rho (a rho between its values is never larger: the length is convex in
+/// rho): 0, rho = +-1; +1, rho in {0, 1}; -1, rho in {0, -1}.
+///
+/// `du` (when given): the derivative of the largest value along x for the vectors
+/// (x a, sqrt(x) b, c) at x = 1, at the largest sample (the envelope theorem):
+/// v . (p^2 a + rho p q b) / |v|, clamped to [0, the largest value].
+template <class T>
+T largest_form(const T* a, const T* b, const T* c, std::size_t d, int sign, T* du = nullptr) {
+  const auto norm = [d](const T* x) {
+    T s = 0;
+    for (std::size_t k = 0; k < d; ++k) s += x[k] * x[k];
+    return std::sqrt(s);
+  };
+  const T na = norm(a), nc = norm(c);
+  T best = 0, arg_p = 0, arg_q = 0, arg_len = 0;
+  int arg_rho = 0;
+  for (int side = 0; side < 2; ++side) {
+    T top = 0;
+    for (int rho = -1; rho <= 1; ++rho) {
+      if (sign == 0 ? rho == 0 : rho == -sign) continue;
+      for (int k = 0; k <= 32; ++k) {
+        const T x = T(k) / 64, p = side == 0 ? T(0.5) : x, q = side == 0 ? x : T(0.5);
+        T s = 0;
+        for (std::size_t i = 0; i < d; ++i) {
+          const T v = p * p * a[i] + q * q * c[i] + 2 * T(rho) * p * q * b[i];
+          s += v * v;
+        }
+        if (s > top * top) {
+          top = std::sqrt(s);
+          if (top > arg_len) {
+            arg_len = top;
+            arg_p = p;
+            arg_q = q;
+            arg_rho = rho;
+          }
+        }
+      }
+    }
+    best = std::max(best, top + (side == 0 ? nc : na) / (4 * 64 * 64));
+  }
+  if (du != nullptr) {
+    T g = 0;
+    if (arg_len > 0) {
+      for (std::size_t i = 0; i < d; ++i) {
+        const T v = arg_p * arg_p * a[i] + arg_q * arg_q * c[i] + 2 * T(arg_rho) * arg_p * arg_q * b[i];
+        g += v * (arg_p * arg_p * a[i] + T(arg_rho) * arg_p * arg_q * b[i]);
+      }
+      g /= arg_len;
+    }
+    *du = std::clamp(g, T(0), best);
+  }
+  return best;
+}
+
+/// The Cartesian bound of a cell (homogeneous net when rational, weights > 0), by the
+/// second partials of S itself on the cell, each written as a centre value plus a
+/// variation: |S_ss - a| <= D_ss, |S_st - b| <= D_st, |S_tt - c| <= D_tt on the cell.
+/// Taylor's theorem about x (header comment) gives S(x) - sum lambda_i S(x_i) = 1/2 (M_ss
+/// a + 2 M_st b + M_tt c) + R with M = sum lambda_i (x_i - x)(x_i - x)^T, a positive
+/// semidefinite matrix whose diagonal entries are variances of numbers in [0, 1] (so at
+/// most 1/4, and M_st^2 <= M_ss M_tt) for any triangle inside the cell, and
+/// |R| <= ((D_ss + D_st) + (D_tt + D_st)) / 8 as in the header comment; so the error is at
+/// most largest_form(a, b, c) / 2 + that. The directions count: a mixed partial
+/// perpendicular to the others (a sphere near its pole) adds far less than its length.
+/// Polynomial cell: the second partials are polynomials (Bézier nets of the second
+/// differences): centre = the middle of their coefficients' box, variation = the largest
+/// distance of a coefficient from it. Rational cell: with X = P - c w (c the middle of the
+/// box of the cell's Cartesian points), the second partials of S = c + X / w are N / w^3,
+///   N_ss = w^2 X_ss - w w_ss X - 2 w w_s X_s + 2 w_s^2 X,
+///   N_st = w^2 X_st - w w_t X_s - w w_s X_t - w w_st X + 2 w_s w_t X,
+///   N_tt = w^2 X_tt - w w_tt X - 2 w w_t X_t + 2 w_t^2 X,
+/// polynomials in Bézier form (products); with N's coefficients within R_N of a centre
+/// N_c and w between its least and largest coefficients w0 <= w1, N / w^3 lies within
+/// R_N / w0^3 + |N_c| (1 / w0^3 - 1 / w1^3) / 2 of N_c (1 / w0^3 + 1 / w1^3) / 2.
+/// Returns the parts {e_u, e_v} (their sum the bound; the split only guides the counts).
+template <class T>
+struct CellBound {
+  std::array<T, 2> e{};  ///< the parts {e_u, e_v}
+  /// The diagonal the bound needs: +1 the cell's (0, 0)-(1, 1), -1 its (1, 0)-(0, 1), 0 any.
+  int diagonal = 0;
+  [[nodiscard]] T total() const { return e[0] + e[1]; }
+};
+
+template <class T>
+CellBound<T> cartesian_bound(const Net<T>& n, bool rational) {
+  const std::size_t cd = rational ? n.d - 1 : n.d;
+  const int P = static_cast<int>(n.rows) - 1, Q = static_cast<int>(n.cols) - 1;
+  Poly<T> Nss, Nst, Ntt;
+  T w0 = 1, w1 = 1;
+  if (!rational) {
+    Poly<T> X = make_poly<T>(P, Q, cd);
+    for (int i = 0; i <= P; ++i)
+      for (int j = 0; j <= Q; ++j) {
+        const T* x = n.at(static_cast<std::size_t>(i), static_cast<std::size_t>(j));
+        std::copy(x, x + cd, X.at(i, j));
+      }
+    const Poly<T> Xs = derivative(X, 0);
+    Nss = derivative(Xs, 0);
+    Nst = derivative(Xs, 1);
+    Ntt = derivative(derivative(X, 1), 1);
+  } else {
+    std::vector<T> lo(cd, T(INFINITY)), hi(cd, T(-INFINITY));
+    w0 = T(INFINITY);
+    w1 = 0;
+    for (std::size_t i = 0; i < n.rows; ++i)
+      for (std::size_t j = 0; j < n.cols; ++j) {
+        const T* x = n.at(i, j);
+        w0 = std::min(w0, x[cd]);
+        w1 = std::max(w1, x[cd]);
+        for (std::size_t k = 0; k < cd; ++k) {
+          lo[k] = std::min(lo[k], x[k] / x[cd]);
+          hi[k] = std::max(hi[k], x[k] / x[cd]);
+        }
+      }
+    Poly<T> w = make_poly<T>(P, Q, 1), X = make_poly<T>(P, Q, cd);
+    for (int i = 0; i <= P; ++i)
+      for (int j = 0; j <= Q; ++j) {
+        const T* x = n.at(static_cast<std::size_t>(i), static_cast<std::size_t>(j));
+        w.at(i, j)[0] = x[cd];
+        for (std::size_t k = 0; k < cd; ++k) X.at(i, j)[k] = x[k] - (lo[k] / 2 + hi[k] / 2) * x[cd];
+      }
+    const Poly<T> ws = derivative(w, 0), wt = derivative(w, 1), wss = derivative(ws, 0), wst = derivative(ws, 1), wtt = derivative(wt, 1);
+    const Poly<T> Xs = derivative(X, 0), Xt = derivative(X, 1), Xss = derivative(Xs, 0), Xst = derivative(Xs, 1), Xtt = derivative(Xt, 1);
+    const Poly<T> ww = product(w, w), wws = product(w, ws), wwt = product(w, wt);
+    // The scalar factors of X gathered first: -w w_ss + 2 w_s^2 and so on.
+    const auto factor = [&](const Poly<T>& w2, const Poly<T>& a, const Poly<T>& b) {
+      Poly<T> g;
+      accumulate(g, product(w, w2), T(-1));
+      accumulate(g, product(a, b), T(2));
+      return g;
+    };
+    accumulate(Nss, product(ww, Xss), T(1));
+    accumulate(Nss, product(factor(wss, ws, ws), X), T(1));
+    accumulate(Nss, product(wws, Xs), T(-2));
+    accumulate(Nst, product(ww, Xst), T(1));
+    accumulate(Nst, product(wwt, Xs), T(-1));
+    accumulate(Nst, product(wws, Xt), T(-1));
+    accumulate(Nst, product(factor(wst, ws, wt), X), T(1));
+    accumulate(Ntt, product(ww, Xtt), T(1));
+    accumulate(Ntt, product(factor(wtt, wt, wt), X), T(1));
+    accumulate(Ntt, product(wwt, Xt), T(-2));
+  }
+  // Centre and variation of each second partial.
+  const T i0 = 1 / (w0 * w0 * w0), i1 = 1 / (w1 * w1 * w1);
+  const auto centre = [&](const Poly<T>& N, T* out) {
+    std::fill(out, out + cd, T(0));
+    if (N.zero()) return T(0);
+    for (std::size_t k = 0; k < cd; ++k) {
+      T l = T(INFINITY), h = T(-INFINITY);
+      for (std::size_t i = k; i < N.c.size(); i += cd) {
+        l = std::min(l, N.c[i]);
+        h = std::max(h, N.c[i]);
+      }
+      out[k] = l / 2 + h / 2;
+    }
+    T r = 0, len = 0;
+    for (std::size_t i = 0; i < N.c.size(); i += cd) {
+      T s = 0;
+      for (std::size_t k = 0; k < cd; ++k) s += (N.c[i + k] - out[k]) * (N.c[i + k] - out[k]);
+      r = std::max(r, s);
+    }
+    for (std::size_t k = 0; k < cd; ++k) len += out[k] * out[k];
+    const T D = std::sqrt(r) * i0 + std::sqrt(len) * (i0 - i1) / 2;
+    for (std::size_t k = 0; k < cd; ++k) out[k] *= (i0 + i1) / 2;
+    return D;
+  };
+  std::vector<T> abc(3 * cd);
+  const T Dss = centre(Nss, abc.data()), Dst = centre(Nst, abc.data() + cd), Dtt = centre(Ntt, abc.data() + 2 * cd);
+  // The split of the main term between u and v: its derivative along x of the main term
+  // of counts scaled by 1 / sqrt(x) in u (a x, b sqrt(x), c): the term is homogeneous of
+  // degree 1 in the two scales, so the two derivatives add up to it.
+  const T rest_u = (Dss + Dst) / 8, rest_v = (Dtt + Dst) / 8;
+  CellBound<T> out;
+  for (const int sign : {1, -1}) {
+    T du = 0;
+    const T main = largest_form(abc.data(), abc.data() + cd, abc.data() + 2 * cd, cd, sign, &du) / 2;
+    du /= 2;
+    const CellBound<T> c{{du + rest_u, main - du + rest_v}, sign};
+    if (sign == 1 || c.total() < out.total()) out = c;
+  }
+  return out;
+}
+
+/// The bound of a cell: the smaller of the bound of its net's differences (cell_bound:
+/// for a rational cell the homogeneous one) and the Cartesian one (both hold).
+/// `enough`: a first bound at most this is taken as it is (the Cartesian one, dearer, is
+/// then not computed).
+template <class T>
+CellBound<T> bound(const Net<T>& n, bool rational, T enough) {
+  const CellBound<T> h{cell_bound(n, rational), 0};
+  if (h.total() <= enough) return h;
+  const CellBound<T> c = cartesian_bound(n, rational);
+  return c.total() < h.total() ? c : h;
+}
+
 /// A patch as a homogeneous Bézier net.
 template <class T>
 Net<T> net_of(const SurfaceForm<T>& patch) {
@@ -236,17 +554,70 @@ std::size_t steps_for(T part, T tol) {
   return n < 1 ? 1 : n > T(1e9) ? std::size_t(1000000000) : static_cast<std::size_t>(n);
 }
 
+/// A fraction num / den of a patch side, reduced (so that equal fractions give equal
+/// parameters).
+struct Fraction {
+  std::size_t num = 0, den = 1;
+};
+
+inline Fraction reduced(std::size_t num, std::size_t den) {
+  const std::size_t g = std::gcd(num, den);
+  return g == 0 ? Fraction{0, 1} : Fraction{num / g, den / g};
+}
+
+/// The nodes strictly inside a patch side shared by patches with n1 and n2 steps along it
+/// (n2 = 0: a side on the domain's boundary): the union of both sides' steps, sorted.
+inline std::vector<Fraction> side_nodes(std::size_t n1, std::size_t n2) {
+  std::vector<Fraction> out;
+  std::size_t i = 1, k = 1;
+  while (i < n1 || (n2 > 0 && k < n2)) {
+    const bool has_i = i < n1, has_k = n2 > 0 && k < n2;
+    // Compare i / n1 with k / n2.
+    if (has_i && has_k && i * n2 == k * n1) {
+      out.push_back(reduced(i, n1));
+      ++i;
+      ++k;
+    } else if (has_i && (!has_k || i * n2 < k * n1)) {
+      out.push_back(reduced(i, n1));
+      ++i;
+    } else {
+      out.push_back(reduced(k, n2));
+      ++k;
+    }
+  }
+  return out;
+}
+
+/// The index in `nodes` of the fraction a / b (present).
+inline std::size_t find_fraction(const std::vector<Fraction>& nodes, std::size_t a, std::size_t b) {
+  const auto it = std::lower_bound(nodes.begin(), nodes.end(), a, [&](const Fraction& f, std::size_t) { return f.num * b < a * f.den; });
+  return static_cast<std::size_t>(it - nodes.begin());
+}
+
+/// The parameter at the fraction f of [lo, hi].
+template <class T>
+T at_fraction(T lo, T hi, Fraction f) {
+  return f.num == 0 ? lo : f.num == f.den ? hi : lo + (hi - lo) * T(f.num) / T(f.den);
+}
+
 }  // namespace tess
 
 /// The tessellation of f (checked) within tol > 0 (InvalidArgument "tolerance" when not a
 /// finite positive number, or when the answer would exceed max_triangles: estimated
-/// before any vertex is evaluated). Throws InvalidArgument("surface", ...) for a surface
+/// before any vertex is evaluated; InvalidArgument "surface" for a degree 0 in u or v: the
+/// surface is then constant along that direction, a curve or a point, and its triangles
+/// would all have zero area). Throws InvalidArgument("surface", ...) for a surface
 /// that is not continuous across a knot line (an interior knot of full multiplicity whose
 /// two sides differ): its mesh would need two edges there.
 template <class T>
 SurfaceMesh<T> tessellate(const SurfaceForm<T>& f, T tol) {
+  using tess::Fraction;
   using tess::Net;
   if (!(tol > 0) || !std::isfinite(tol)) throw InvalidArgument("tolerance", "must be a finite number > 0, got " + format_number(tol));
+  if (f.p == 0 || f.q == 0) {
+    throw InvalidArgument("surface", std::string("has degree 0 in ") + (f.p == 0 ? "u" : "v") +
+                                         ": it is a curve (or a point), with no area to mesh into triangles");
+  }
   const SurfacePatches<T> sp = patches(f);
   const std::size_t A = sp.patches.size(), B = sp.patches.front().size(), cd = f.cartesian();
   // The size of the surface (the box of its control points), for the rounding slack and
@@ -273,91 +644,169 @@ SurfaceMesh<T> tessellate(const SurfaceForm<T>& f, T tol) {
   for (const auto& row : sp.patches)
     for (const auto& patch : row) nets.push_back(tess::net_of(patch));
   // Start: the Cartesian net of each patch (valid for polynomial patches).
-  std::vector<std::size_t> nu(A, 1), nv(B, 1);
-  for (std::size_t a = 0; a < A; ++a)
-    for (std::size_t b = 0; b < B; ++b) {
-      Net<T> c = nets[a * B + b];
-      if (f.rational) {
-        Net<T> cart{c.rows, c.cols, cd, std::vector<T>(c.rows * c.cols * cd)};
-        for (std::size_t i = 0; i < c.rows; ++i)
-          for (std::size_t j = 0; j < c.cols; ++j)
-            for (std::size_t k = 0; k < cd; ++k) cart.at(i, j)[k] = c.at(i, j)[k] / c.at(i, j)[cd];
-        c = std::move(cart);
-      }
-      const auto e = tess::cell_bound(c, false);
-      nu[a] = std::max(nu[a], tess::steps_for(e[0], budget));
-      nv[b] = std::max(nv[b], tess::steps_for(e[1], budget));
+  std::vector<std::size_t> nu(A * B, 1), nv(A * B, 1);
+  for (std::size_t k = 0; k < A * B; ++k) {
+    Net<T> c = nets[k];
+    if (f.rational) {
+      Net<T> cart{c.rows, c.cols, cd, std::vector<T>(c.rows * c.cols * cd)};
+      for (std::size_t i = 0; i < c.rows; ++i)
+        for (std::size_t j = 0; j < c.cols; ++j)
+          for (std::size_t q = 0; q < cd; ++q) cart.at(i, j)[q] = c.at(i, j)[q] / c.at(i, j)[cd];
+      c = std::move(cart);
     }
-  const auto count = [&] {
-    const T su = std::accumulate(nu.begin(), nu.end(), T(0)), sv = std::accumulate(nv.begin(), nv.end(), T(0));
-    return 2 * su * sv;
-  };
+    const auto e = tess::cell_bound(c, false);
+    nu[k] = tess::steps_for(e[0], budget);
+    nv[k] = tess::steps_for(e[1], budget);
+  }
+  T total = 0;
+  for (std::size_t k = 0; k < A * B; ++k) total += 2 * T(nu[k]) * T(nv[k]);
   const auto refuse_if_too_many = [&] {
-    const T n = count();
-    if (n > max_triangles) {
+    if (total > max_triangles) {
       char about[32];
-      std::snprintf(about, sizeof about, "%.2g", static_cast<double>(n));
+      std::snprintf(about, sizeof about, "%.2g", static_cast<double>(total));
       throw InvalidArgument("tolerance", "the tessellation would have about " + std::string(about) +
                                              " triangles, more than 10^7: ask for a larger tolerance (got " + format_number(tol) + ")");
     }
   };
   refuse_if_too_many();
-  std::vector<std::size_t> patch_nu, patch_nv;
-  bool verified = false;
-  if (!f.rational) {
-    // The patch bound holds at these counts; a cell's own net is usually well below it
-    // (the strip takes its most curved patch, the patch its most curved corner): start
-    // from 0.6 of the counts and let the cells raise them back where they need to.
-    patch_nu = nu;
-    patch_nv = nv;
-    for (auto& n : nu) n = std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(0.6 * static_cast<double>(n))));
-    for (auto& n : nv) n = std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(0.6 * static_cast<double>(n))));
-  }
-  {
-    // Every cell's own net against the bound; raise the strip counts until all hold.
-    for (int round = 0; round < 64; ++round) {
-      std::vector<std::size_t> want_u = nu, want_v = nv;
+  // Each patch's own counts (n, m). At given counts every cell's own net gives the parts
+  // (e_u, e_v) of its bound; as they scale about as the step squared, counts (n', m')
+  // would hold where e_u x + e_v y <= budget for every cell, x = (n / n')^2 and
+  // y = (m / m')^2. The next counts maximise x y under those constraints (x y is
+  // unimodal along x: golden sections), and are checked cell by cell again; the least
+  // n m that held is kept.
+  std::vector<std::array<T, 2>> parts;
+  // The diagonal each cell's bound needs (CellBound::diagonal), per patch, cell (i, j) at
+  // i * n_v + j.
+  std::vector<std::vector<signed char>> diagonals(A * B);
+  const auto propose = [&](std::size_t n, std::size_t m) {
+    const T big = T(1e12);
+    T xmax = big;
+    for (const auto& e : parts)
+      if (e[0] > 0) xmax = std::min(xmax, budget / e[0]);
+    const auto y_of = [&](T x) {
+      T y = big;
+      for (const auto& e : parts) {
+        if (e[1] > 0) y = std::min(y, (budget - e[0] * x) / e[1]);
+        else if (e[0] * x > budget) y = 0;
+      }
+      return std::max(y, T(0));
+    };
+    T lo = 0, hi = xmax;
+    const T g = T(0.6180339887498949);
+    T x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo), f1 = x1 * y_of(x1), f2 = x2 * y_of(x2);
+    for (int it = 0; it < 80; ++it) {
+      if (f1 < f2) {
+        lo = x1;
+        x1 = x2;
+        f1 = f2;
+        x2 = lo + g * (hi - lo);
+        f2 = x2 * y_of(x2);
+      } else {
+        hi = x2;
+        x2 = x1;
+        f2 = f1;
+        x1 = hi - g * (hi - lo);
+        f1 = x1 * y_of(x1);
+      }
+    }
+    const T x = (lo + hi) / 2, y = y_of(x);
+    const auto count = [](std::size_t c, T r) {
+      if (!(r > 0)) return c + 1;
+      const T want = std::ceil(T(c) / std::sqrt(r) - T(1e-9));
+      return want < 1 ? std::size_t(1) : want > T(1e9) ? std::size_t(1000000000) : static_cast<std::size_t>(want);
+    };
+    return std::pair<std::size_t, std::size_t>{count(n, x), count(m, y)};
+  };
+  for (std::size_t k = 0; k < A * B; ++k) {
+    const Net<T>& net = nets[k];
+    const std::size_t patch_nu = nu[k], patch_nv = nv[k];
+    // For a polynomial patch the patch bound holds at the patch counts; a cell's own net
+    // is usually well below it (the patch takes its most curved corner): start from 0.6
+    // of them. For a rational patch (the counts of its Cartesian net, no bound) from 0.4.
+    const double start = f.rational ? 0.4 : 0.6;
+    std::size_t n = std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(start * static_cast<double>(patch_nu))));
+    std::size_t m = std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(start * static_cast<double>(patch_nv))));
+    total += 2 * (T(n) * T(m) - T(patch_nu) * T(patch_nv));
+    std::size_t best_n = 0, best_m = 0;
+    std::vector<std::pair<std::size_t, std::size_t>> tried;
+    // Every cell's bound at counts (a, b) into `parts`; true when all hold.
+    std::vector<signed char> cur_diagonal;
+    std::vector<std::array<T, 2>> best_parts;
+    const auto check = [&](std::size_t a, std::size_t b) {
+      parts.clear();
+      cur_diagonal.clear();
       bool ok = true;
-      for (std::size_t a = 0; a < A; ++a) {
-        for (std::size_t b = 0; b < B; ++b) {
-          const Net<T>& n = nets[a * B + b];
-          for (std::size_t i = 0; i < nu[a]; ++i) {
-            const Net<T> strip = tess::transpose(tess::sub_u(n, T(i) / T(nu[a]), T(i + 1) / T(nu[a])));
-            for (std::size_t j = 0; j < nv[b]; ++j) {
-              const Net<T> cell = tess::transpose(tess::sub_u(strip, T(j) / T(nv[b]), T(j + 1) / T(nv[b])));
-              const auto e = tess::cell_bound(cell, f.rational);
-              if (e[0] + e[1] <= budget) continue;
-              ok = false;
-              // Each part's share is half the budget; raise the parts over it (as the
-              // bound scales with the step squared), at least by one step.
-              const bool raise_u = e[0] > budget / 2 || e[0] >= e[1], raise_v = e[1] > budget / 2 || e[1] >= e[0];
-              if (raise_u) {
-                const T k = std::sqrt(std::max(e[0], budget / 4) / (budget / 2)) * T(1.05);
-                want_u[a] = std::max(want_u[a], std::max(nu[a] + 1, static_cast<std::size_t>(std::ceil(T(nu[a]) * k))));
-              }
-              if (raise_v) {
-                const T k = std::sqrt(std::max(e[1], budget / 4) / (budget / 2)) * T(1.05);
-                want_v[b] = std::max(want_v[b], std::max(nv[b] + 1, static_cast<std::size_t>(std::ceil(T(nv[b]) * k))));
-              }
-            }
-          }
+      for (std::size_t i = 0; i < a; ++i) {
+        const Net<T> strip = tess::transpose(tess::sub_u(net, T(i) / T(a), T(i + 1) / T(a)));
+        for (std::size_t j = 0; j < b; ++j) {
+          const Net<T> cell = tess::transpose(tess::sub_u(strip, T(j) / T(b), T(j + 1) / T(b)));
+          const auto e = tess::bound(cell, f.rational, f.rational ? T(0.6) * budget : T(0));
+          if (e.total() > budget) ok = false;
+          parts.push_back(e.e);
+          cur_diagonal.push_back(static_cast<signed char>(e.diagonal));
         }
       }
-      if (ok) {
-        verified = true;
-        break;
-      }
-      nu = want_u;
-      nv = want_v;
+      tried.emplace_back(a, b);
+      return ok;
+    };
+    const auto seen = [&](std::size_t a, std::size_t b) { return std::find(tried.begin(), tried.end(), std::pair{a, b}) != tried.end(); };
+    for (int round = 0; round < 64; ++round) {
       refuse_if_too_many();
+      const bool ok = check(n, m);
+      if (ok && (best_n == 0 || n * m < best_n * best_m)) {
+        best_n = n;
+        best_m = m;
+        diagonals[k] = cur_diagonal;
+        best_parts = parts;
+      }
+      auto [n2, m2] = propose(n, m);
+      if (ok && n2 * m2 >= n * m) break;
+      if (best_n != 0 && (seen(n2, m2) || n2 * m2 >= best_n * best_m)) break;
+      while (seen(n2, m2)) {
+        // Failed there before: more steps in both directions.
+        n2 += 1 + n2 / 16;
+        m2 += 1 + m2 / 16;
+      }
+      total += 2 * (T(n2) * T(m2) - T(n) * T(m));
+      n = n2;
+      m = m2;
     }
-  }
-  if (!verified) {
-    // Not settled in 64 rounds (not met in practice): a polynomial surface falls back on
-    // the patch bound's counts, which hold; a rational one is refused rather than risked.
-    if (f.rational) throw NumericalError("the tessellation's step counts did not settle (tolerance " + format_number(tol) + ")");
-    nu = patch_nu;
-    nv = patch_nv;
+    // A few neighbours of the best counts with fewer cells (the parts' split between u and
+    // v only guides the proposals).
+    for (int tries = 0; best_n != 0 && tries < 6; ++tries) {
+      const std::size_t bn = best_n, bm = best_m;
+      const std::pair<std::size_t, std::size_t> near[] = {{bn - 1, bm}, {bn, bm - 1}, {bn - 1, bm + 1}, {bn + 1, bm - 1}};
+      bool better = false;
+      for (const auto& [a, b] : near) {
+        if (a < 1 || b < 1 || a * b >= best_n * best_m || seen(a, b)) continue;
+        // Only where the scaled parts of the best counts' cells come near the budget.
+        const T x = T(bn) * T(bn) / (T(a) * T(a)), y = T(bm) * T(bm) / (T(b) * T(b));
+        T predicted = 0;
+        for (const auto& e : best_parts) predicted = std::max(predicted, e[0] * x + e[1] * y);
+        if (predicted > T(1.02) * budget) continue;
+        if (check(a, b)) {
+          best_n = a;
+          best_m = b;
+          diagonals[k] = cur_diagonal;
+          best_parts = parts;
+          better = true;
+          break;
+        }
+      }
+      if (!better) break;
+    }
+    if (best_n == 0) {
+      // Not settled in 64 rounds (not met in practice): a polynomial patch falls back on
+      // the patch bound's counts, which hold; a rational one is refused rather than risked.
+      if (f.rational) throw NumericalError("the tessellation's step counts did not settle (tolerance " + format_number(tol) + ")");
+      best_n = patch_nu;
+      best_m = patch_nv;
+      diagonals[k].assign(best_n * best_m, 0);
+    }
+    total += 2 * (T(best_n) * T(best_m) - T(n) * T(m));
+    nu[k] = best_n;
+    nv[k] = best_m;
   }
   // Continuity across each interior break (the shared edge nets agree).
   const auto close = [&](const T* x, const T* y, std::size_t d, bool rational) {
@@ -387,27 +836,68 @@ SurfaceMesh<T> tessellate(const SurfaceForm<T>& f, T tol) {
         }
     }
 
-  SurfaceMesh<T> m;
-  m.dim = cd;
-  // The grid lines, with index ranges per strip.
-  std::vector<std::size_t> I0(A + 1, 0), J0(B + 1, 0);
-  for (std::size_t a = 0; a < A; ++a) {
-    const T u0 = sp.ubreaks[a], u1 = sp.ubreaks[a + 1];
-    for (std::size_t k = 0; k < nu[a]; ++k) m.us.push_back(u0 + (u1 - u0) * T(k) / T(nu[a]));
-    I0[a + 1] = I0[a] + nu[a];
-  }
-  m.us.push_back(sp.ubreaks.back());
-  for (std::size_t b = 0; b < B; ++b) {
-    const T v0 = sp.vbreaks[b], v1 = sp.vbreaks[b + 1];
-    for (std::size_t k = 0; k < nv[b]; ++k) m.vs.push_back(v0 + (v1 - v0) * T(k) / T(nv[b]));
-    J0[b + 1] = J0[b] + nv[b];
-  }
-  m.vs.push_back(sp.vbreaks.back());
-  const std::size_t NU = m.us.size(), NV = m.vs.size();
-  const auto node = [&](std::size_t I, std::size_t J) { return static_cast<std::uint32_t>(I * NV + J); };
-  tess::Merge merge{std::vector<std::uint32_t>(NU * NV)};
+  // The nodes. Corners of the patches; the nodes inside each patch side, the union of the
+  // steps of the two patches that share it (so a side is split the same way for both);
+  // the inner nodes of each patch's grid.
+  std::vector<T> node_u, node_v;
+  const auto new_node = [&](T u, T v) {
+    node_u.push_back(u);
+    node_v.push_back(v);
+    return static_cast<std::uint32_t>(node_u.size() - 1);
+  };
+  const auto corner = [&](std::size_t a, std::size_t b) { return static_cast<std::uint32_t>(a * (B + 1) + b); };
+  for (std::size_t a = 0; a <= A; ++a)
+    for (std::size_t b = 0; b <= B; ++b) new_node(sp.ubreaks[a], sp.vbreaks[b]);
+  struct Side {
+    std::vector<Fraction> at;
+    std::uint32_t first = 0;  ///< the node id of at[0] (the others follow)
+  };
+  // Sides along u at v = vbreaks[b] over [ubreaks[a], ubreaks[a + 1]]: su[a * (B + 1) + b];
+  // sides along v at u = ubreaks[a] over [vbreaks[b], vbreaks[b + 1]]: sv[a * B + b].
+  std::vector<Side> su(A * (B + 1)), sv((A + 1) * B);
+  for (std::size_t a = 0; a < A; ++a)
+    for (std::size_t b = 0; b <= B; ++b) {
+      Side& s = su[a * (B + 1) + b];
+      s.at = tess::side_nodes(b < B ? nu[a * B + b] : nu[a * B + b - 1], b > 0 && b < B ? nu[a * B + b - 1] : 0);
+      s.first = static_cast<std::uint32_t>(node_u.size());
+      for (const Fraction x : s.at) new_node(tess::at_fraction(sp.ubreaks[a], sp.ubreaks[a + 1], x), sp.vbreaks[b]);
+    }
+  for (std::size_t a = 0; a <= A; ++a)
+    for (std::size_t b = 0; b < B; ++b) {
+      Side& s = sv[a * B + b];
+      s.at = tess::side_nodes(a < A ? nv[a * B + b] : nv[(a - 1) * B + b], a > 0 && a < A ? nv[(a - 1) * B + b] : 0);
+      s.first = static_cast<std::uint32_t>(node_u.size());
+      for (const Fraction x : s.at) new_node(sp.ubreaks[a], tess::at_fraction(sp.vbreaks[b], sp.vbreaks[b + 1], x));
+    }
+  std::vector<std::uint32_t> inner_first(A * B);
+  for (std::size_t a = 0; a < A; ++a)
+    for (std::size_t b = 0; b < B; ++b) {
+      const std::size_t k = a * B + b;
+      inner_first[k] = static_cast<std::uint32_t>(node_u.size());
+      for (std::size_t I = 1; I < nu[k]; ++I)
+        for (std::size_t J = 1; J < nv[k]; ++J)
+          new_node(tess::at_fraction(sp.ubreaks[a], sp.ubreaks[a + 1], tess::reduced(I, nu[k])),
+                   tess::at_fraction(sp.vbreaks[b], sp.vbreaks[b + 1], tess::reduced(J, nv[k])));
+    }
+  // The node of patch (a, b) at grid index (I, J).
+  const auto grid_node = [&](std::size_t a, std::size_t b, std::size_t I, std::size_t J) -> std::uint32_t {
+    const std::size_t k = a * B + b, n = nu[k], m = nv[k];
+    const bool u_end = I == 0 || I == n, v_end = J == 0 || J == m;
+    if (u_end && v_end) return corner(I == 0 ? a : a + 1, J == 0 ? b : b + 1);
+    if (u_end) {
+      const Side& s = sv[(I == 0 ? a : a + 1) * B + b];
+      return s.first + static_cast<std::uint32_t>(tess::find_fraction(s.at, J, m));
+    }
+    if (v_end) {
+      const Side& s = su[a * (B + 1) + (J == 0 ? b : b + 1)];
+      return s.first + static_cast<std::uint32_t>(tess::find_fraction(s.at, I, n));
+    }
+    return inner_first[k] + static_cast<std::uint32_t>((I - 1) * (m - 1) + (J - 1));
+  };
+  tess::Merge merge{std::vector<std::uint32_t>(node_u.size())};
   std::iota(merge.up.begin(), merge.up.end(), 0u);
-  // Degenerate patch edges: all control points of the edge within 1e-12 of the size.
+  // Degenerate patch edges: all control points of the edge within 1e-12 of the size; the
+  // side's nodes and its two corners become one.
   const auto point_edge = [&](const Net<T>& n, bool along_v, std::size_t fixed) {
     const std::size_t count_pts = along_v ? n.cols : n.rows;
     const T* x0 = along_v ? n.at(fixed, 0) : n.at(0, fixed);
@@ -422,34 +912,38 @@ SurfaceMesh<T> tessellate(const SurfaceForm<T>& f, T tol) {
     }
     return true;
   };
+  const auto join_side = [&](const Side& s, std::uint32_t c0, std::uint32_t c1) {
+    merge.join(c0, c1);
+    for (std::size_t k = 0; k < s.at.size(); ++k) merge.join(c0, s.first + static_cast<std::uint32_t>(k));
+  };
   for (std::size_t a = 0; a < A; ++a)
     for (std::size_t b = 0; b < B; ++b) {
       const Net<T>& n = nets[a * B + b];
       for (const std::size_t side : {std::size_t(0), std::size_t(1)}) {
         if (point_edge(n, true, side ? n.rows - 1 : 0)) {  // u fixed, along v
-          const std::size_t I = side ? I0[a + 1] : I0[a];
-          for (std::size_t J = J0[b]; J < J0[b + 1]; ++J) merge.join(node(I, J), node(I, J + 1));
+          const std::size_t aa = side ? a + 1 : a;
+          join_side(sv[aa * B + b], corner(aa, b), corner(aa, b + 1));
         }
         if (point_edge(n, false, side ? n.cols - 1 : 0)) {  // v fixed, along u
-          const std::size_t J = side ? J0[b + 1] : J0[b];
-          for (std::size_t I = I0[a]; I < I0[a + 1]; ++I) merge.join(node(I, J), node(I + 1, J));
+          const std::size_t bb = side ? b + 1 : b;
+          join_side(su[a * (B + 1) + bb], corner(a, bb), corner(a + 1, bb));
         }
       }
     }
-  // Vertices: one per merged node, evaluated at its representative (the first node).
-  std::vector<std::uint32_t> vid(NU * NV, UINT32_MAX);
+  // Vertices: one per merged node, evaluated at its representative (the least node).
+  SurfaceMesh<T> m;
+  m.dim = cd;
   const bool normals = cd == 3;
   const T umin = sp.ubreaks.front(), umax = sp.ubreaks.back(), vmin = sp.vbreaks.front(), vmax = sp.vbreaks.back();
-  const auto add_vertex = [&](std::size_t I, std::size_t J) {
-    const T u = m.us[I], v = m.vs[J];
+  const auto add_vertex = [&](T u, T v) {
     const std::vector<T> d = partials(f, u, v, normals ? 2 : 0);
     m.vertices.insert(m.vertices.end(), d.begin(), d.begin() + static_cast<std::ptrdiff_t>(cd));
     m.uv.push_back(u);
     m.uv.push_back(v);
-    if (!normals) return;
+    if (!normals) return static_cast<std::uint32_t>(m.uv.size() / 2 - 1);
     const auto at = [&](std::size_t a, std::size_t b) { return d.data() + (a * 3 + b) * 3; };
     const SurfaceGeometry<T> g = geometry<T>(at(1, 0), at(0, 1), at(2, 0), at(1, 1), at(0, 2));
-    T n[3] = {g.normal[0], g.normal[1], g.normal[2]};
+    T nrm[3] = {g.normal[0], g.normal[1], g.normal[2]};
     bool ok = g.defined;
     if (!ok) {
       // The limit normal at a degenerate edge: S_v = 0 along u = u0 gives S_u x S_v ~
@@ -463,22 +957,20 @@ SurfaceMesh<T> tessellate(const SurfaceForm<T>& f, T tol) {
       const T sign = v_vanishes ? (u == umax && u != umin ? T(-1) : T(1)) : (v == vmax && v != vmin ? T(-1) : T(1));
       const T len = std::sqrt(norm2(c));
       if (len > T(1e-12) * std::sqrt(norm2(a)) * std::sqrt(norm2(b)) && len > 0) {
-        for (int k = 0; k < 3; ++k) n[k] = sign * c[k] / len;
+        for (int k = 0; k < 3; ++k) nrm[k] = sign * c[k] / len;
         ok = true;
       }
     }
-    m.normals.insert(m.normals.end(), n, n + 3);
+    m.normals.insert(m.normals.end(), nrm, nrm + 3);
     m.has_normal.push_back(ok ? 1 : 0);
+    return static_cast<std::uint32_t>(m.uv.size() / 2 - 1);
   };
-  const auto vertex = [&](std::size_t I, std::size_t J) {
-    const std::uint32_t r = merge.find(node(I, J));
-    if (vid[r] == UINT32_MAX) {
-      vid[r] = static_cast<std::uint32_t>(m.uv.size() / 2);
-      add_vertex(r / NV, r % NV);
-    }
-    return vid[r];
-  };
-  m.triangles.reserve(2 * (NU - 1) * (NV - 1));
+  std::vector<std::uint32_t> vid(node_u.size(), UINT32_MAX);
+  for (std::uint32_t k = 0; k < node_u.size(); ++k) {
+    const std::uint32_t r = merge.find(k);
+    if (vid[r] == UINT32_MAX) vid[r] = add_vertex(node_u[r], node_v[r]);
+    vid[k] = vid[r];
+  }
   const auto dist2 = [&](std::uint32_t a, std::uint32_t b) {
     T s = 0;
     for (std::size_t c = 0; c < cd; ++c) {
@@ -491,18 +983,111 @@ SurfaceMesh<T> tessellate(const SurfaceForm<T>& f, T tol) {
     if (a == b || b == c || a == c) return;  // two corners on a degenerate edge
     m.triangles.push_back({a, b, c});
   };
-  for (std::size_t I = 0; I + 1 < NU; ++I)
-    for (std::size_t J = 0; J + 1 < NV; ++J) {
-      const std::uint32_t p00 = vertex(I, J), p10 = vertex(I + 1, J), p11 = vertex(I + 1, J + 1), p01 = vertex(I, J + 1);
-      if (dist2(p00, p11) <= dist2(p10, p01)) {
-        emit(p00, p10, p11);
-        emit(p00, p11, p01);
-      } else {
-        emit(p00, p10, p01);
-        emit(p10, p11, p01);
-      }
+  // The cells. A cell is a rectangle of its patch's grid; a cell along a patch side also
+  // has the side's nodes from the neighbouring patch on that side. Every triangle lies in
+  // its cell, so the cell's bound holds for it (the bound of the header comment holds for
+  // any triangle inside the cell). Counter-clockwise in (u, v).
+  std::vector<std::uint32_t> ring;
+  for (std::size_t a = 0; a < A; ++a)
+    for (std::size_t b = 0; b < B; ++b) {
+      const std::size_t k = a * B + b, n = nu[k], mm = nv[k];
+      for (std::size_t I = 0; I < n; ++I)
+        for (std::size_t J = 0; J < mm; ++J) {
+          const std::uint32_t c00 = grid_node(a, b, I, J), c10 = grid_node(a, b, I + 1, J), c11 = grid_node(a, b, I + 1, J + 1),
+                              c01 = grid_node(a, b, I, J + 1);
+          // The extra nodes of each side: bottom (v = v_J, u rising), right, top (u
+          // falling), left (v falling); only on the patch's border.
+          ring.clear();
+          std::size_t extra[4] = {0, 0, 0, 0};
+          const auto side_run = [&](const Side& s, std::size_t lo, std::size_t hi, std::size_t den, bool reverse, int which) {
+            const std::size_t i0 = tess::find_fraction(s.at, lo, den) + (lo == 0 ? 0 : 1);
+            const std::size_t i1 = hi == den ? s.at.size() : tess::find_fraction(s.at, hi, den);
+            extra[which] = i1 > i0 ? i1 - i0 : 0;
+            if (!reverse)
+              for (std::size_t i = i0; i < i1; ++i) ring.push_back(s.first + static_cast<std::uint32_t>(i));
+            else
+              for (std::size_t i = i1; i-- > i0;) ring.push_back(s.first + static_cast<std::uint32_t>(i));
+          };
+          ring.push_back(c00);
+          if (J == 0) side_run(su[a * (B + 1) + b], I, I + 1, n, false, 0);
+          ring.push_back(c10);
+          if (I + 1 == n) side_run(sv[(a + 1) * B + b], J, J + 1, mm, false, 1);
+          ring.push_back(c11);
+          if (J + 1 == mm) side_run(su[a * (B + 1) + b + 1], I, I + 1, n, true, 2);
+          ring.push_back(c01);
+          if (I == 0) side_run(sv[a * B + b], J, J + 1, mm, true, 3);
+          const int diagonal = diagonals[k][I * mm + J];
+          const std::size_t pos[4] = {0, 1 + extra[0], 2 + extra[0] + extra[1], 3 + extra[0] + extra[1] + extra[2]};
+          const std::size_t R = ring.size();
+          if (diagonal != 0) {
+            // The cell's two halves on its diagonal, each a triangle P, Q, R of the ring's
+            // corners (P -> Q and Q -> R sides of the cell, which may carry extra nodes):
+            // a fan from R over the side P -> Q but its last piece, then a fan from the
+            // last node before Q over the side Q -> R. Every node of a half is comonotone
+            // (or countermonotone) in (s, t) with every other, as the bound asks.
+            for (const std::size_t cp : diagonal > 0 ? std::array<std::size_t, 2>{0, 2} : std::array<std::size_t, 2>{3, 1}) {
+              const std::size_t p = pos[cp], q = pos[(cp + 1) % 4], r = pos[(cp + 2) % 4];
+              const std::size_t K = (q + R - p) % R, L = (r + R - q) % R;
+              const auto node = [&](std::size_t from, std::size_t i) { return vid[ring[(from + i) % R]]; };
+              for (std::size_t i = 0; i + 2 <= K; ++i) emit(node(p, i), node(p, i + 1), node(r, 0));
+              const std::uint32_t last = node(p, K - 1);
+              for (std::size_t j = 0; j < L; ++j) emit(last, node(q, j), node(q, j + 1));
+            }
+            continue;
+          }
+          if (ring.size() == 4) {
+            const std::uint32_t p00 = vid[c00], p10 = vid[c10], p11 = vid[c11], p01 = vid[c01];
+            if (dist2(p00, p11) <= dist2(p10, p01)) {
+              emit(p00, p10, p11);
+              emit(p00, p11, p01);
+            } else {
+              emit(p00, p10, p01);
+              emit(p10, p11, p01);
+            }
+            continue;
+          }
+          // A fan from a corner whose two sides have no extra nodes (corner c of the ring
+          // order: c00 between left and bottom, c10 bottom and right, ...); else from a
+          // new vertex at the cell's middle.
+          int apex = -1;
+          for (int c = 0; c < 4 && apex < 0; ++c)
+            if (extra[c] == 0 && extra[(c + 3) % 4] == 0) apex = c;
+          if (apex >= 0) {
+            const std::size_t s = pos[apex];
+            for (std::size_t i = 1; i + 1 < R; ++i) emit(vid[ring[s]], vid[ring[(s + i) % R]], vid[ring[(s + i + 1) % R]]);
+          } else {
+            const T um = (node_u[c00] + node_u[c10]) / 2, vm = (node_v[c00] + node_v[c01]) / 2;
+            const std::uint32_t mid = add_vertex(um, vm);
+            for (std::size_t i = 0; i < R; ++i) emit(mid, vid[ring[i]], vid[ring[(i + 1) % R]]);
+          }
+        }
     }
-  return m;
+  // The vertices numbered in the order the triangles first use them.
+  const std::size_t V = m.size();
+  std::vector<std::uint32_t> order(V, UINT32_MAX);
+  std::vector<std::uint32_t> old_of;
+  old_of.reserve(V);
+  for (auto& t : m.triangles)
+    for (auto& x : t) {
+      if (order[x] == UINT32_MAX) {
+        order[x] = static_cast<std::uint32_t>(old_of.size());
+        old_of.push_back(x);
+      }
+      x = order[x];
+    }
+  SurfaceMesh<T> r;
+  r.dim = m.dim;
+  r.triangles = std::move(m.triangles);
+  for (const std::uint32_t k : old_of) {
+    r.vertices.insert(r.vertices.end(), m.vertices.begin() + static_cast<std::ptrdiff_t>(k * cd), m.vertices.begin() + static_cast<std::ptrdiff_t>((k + 1) * cd));
+    r.uv.push_back(m.uv[2 * k]);
+    r.uv.push_back(m.uv[2 * k + 1]);
+    if (normals) {
+      r.normals.insert(r.normals.end(), m.normals.begin() + static_cast<std::ptrdiff_t>(3 * k), m.normals.begin() + static_cast<std::ptrdiff_t>(3 * k + 3));
+      r.has_normal.push_back(m.has_normal[k]);
+    }
+  }
+  return r;
 }
 
 }  // namespace casteljau::detail
