@@ -262,7 +262,15 @@ class ChainDistance {
       T f2 = 0;  // squared
       for (std::size_t i = std::min(i0, i1); i <= std::max(i0, i1); ++i) {
         const Vector<T, D> w = (T(2) * slope * slope) * form_[i].a;
-        for (const auto& v : hull) f2 = std::max(f2, squared_norm(v - w));
+        if (hull.size() == 2) {
+          // Two vectors: a cubic part's c'' at s = 0 and 1, linear between, so on this
+          // interval c'' lies between its values at the interval's ends.
+          const T s0 = T(j) / T(N), s1 = T(j + step_) / T(N);
+          f2 = std::max(f2, squared_norm(hull[0] + s0 * (hull[1] - hull[0]) - w));
+          f2 = std::max(f2, squared_norm(hull[0] + s1 * (hull[1] - hull[0]) - w));
+        } else {
+          for (const auto& v : hull) f2 = std::max(f2, squared_norm(v - w));
+        }
       }
       b = std::max(b, std::max(f_[j0], f_[j1]) + h * h / T(8) * std::sqrt(f2));
     }
@@ -402,10 +410,11 @@ struct Part {
     return worst;
   }
 
-  /// Vectors whose convex hull holds c'' on [0, 1], into out (the margin of error_bound
-  /// takes max |v - w| over them for |c'' - w|): n (n - 1) times the second differences
-  /// for a polynomial (the second hodograph's control points: a bound); for a rational
-  /// piece c'' at the N + 1 sample parameters (an estimate, not a bound).
+  /// Vectors whose convex hull holds c'' on [0, 1], into out (the margin of
+  /// ChainDistance::bound takes max |v - w| over them for |c'' - w|): n (n - 1) times the
+  /// second differences for a polynomial (the second hodograph's control points: a bound;
+  /// for a cubic, c''(0) and c''(1), between which c'' is linear); for a rational piece
+  /// c'' at the N + 1 sample parameters (an estimate, not a bound).
   void second_derivative_hull(std::vector<Vector<T, D>>& out) const {
     out.clear();
     const auto& C = points;
