@@ -597,7 +597,7 @@ void approximate_span(const Piece& piece, T s0, T s1, const Point<T, D>& p_start
     if (last && p <= T(0.1) * tolerance) return Try{*q, dir1, p, true};
     part.second_derivative_hull(hull);
     // The sampled bound, coarse to fine: refined while above half the tolerance (the
-    // search below extends a part whose error is under 90% of the tolerance, and aims
+    // search below extends a part whose error is under 80% of the tolerance, and aims
     // from the error it is given: an error well under the tolerance need not be tight).
     ChainDistance<T, D> dist(*q);
     const T e = std::min(p, dist.bound(part, hull, tolerance, T(0.5) * tolerance));
@@ -621,7 +621,7 @@ void approximate_span(const Piece& piece, T s0, T s1, const Point<T, D>& p_start
     // The farthest end: a model of the error (growing as the fourth power of the step on
     // smooth parts) proposes each next end from the last error; a bracket [lo, hi]
     // (feasible, infeasible) keeps the search safe where the model fails (bisection).
-    // Accepted once an end is feasible with an error of at least 90% of the tolerance,
+    // Accepted once an end is feasible with an error of at least 80% of the tolerance,
     // or the bracket is within 2% of the step.
     T lo = t0, hi = s1;
     bool hi_tested = false;
@@ -632,7 +632,7 @@ void approximate_span(const Piece& piece, T s0, T s1, const Point<T, D>& p_start
       const T e = r.error;  // the bound, or a lower bound above the tolerance, or infinite
       if (r.ok) {
         lo = x;
-        const bool enough = x == s1 || r.error >= T(0.9) * tolerance;
+        const bool enough = x == s1 || r.error >= T(0.8) * tolerance;
         best = std::move(r);
         if (enough) break;
       } else {
