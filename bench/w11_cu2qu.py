@@ -4,7 +4,9 @@ datasets, read from the raw float64 files the W3 program writes with CASTELJAU_W
 (x0 y0 ... x3 y3 per cubic), at tolerance 1e-3 and 1e-1 of the unit (random: the box, 100;
 glyphs: the em, 2048). Writes Google Benchmark's JSON shape (`benchmarks`: [{name,
 real_time, time_unit, counters...}]) with names W11/cu2qu/quadratic/<dataset>/<1e-3|1e-1>
-and counters segments, over_tolerance (curves whose deviation exceeds 1.0001 x tol),
+(real_time: wall, cpu_time: time.process_time, medians of the repetitions; the cubics passed
+as lists of (x, y) tuples, cu2qu's own interface) and counters segments, over_tolerance
+(curves whose deviation exceeds 1.0001 x tol),
 max_deviation: the same two-sided measure as bench/w3.cpp's quad_deviation (the cubic at
 S = 64 + 16 k parameters to the chain, each quadratic at 65 parameters to the cubic, each
 distance from every local minimum of the sampled distances refined by Newton's method).
@@ -21,8 +23,9 @@ import numpy as np
 
 try:
     from fontTools.cu2qu import curve_to_quadratic
+    from fontTools.cu2qu.cu2qu import COMPILED  # True where the Cython module is in use (Debian's build ships it)
 except ImportError:
-    curve_to_quadratic = None
+    curve_to_quadratic, COMPILED = None, None
 
 UNIT = {"random": 100.0, "glyphs": 2048.0}
 
@@ -111,7 +114,8 @@ def main():
     ap.add_argument("out_json")
     ap.add_argument("--repetitions", type=int, default=3)
     args = ap.parse_args()
-    doc = {"context": {"library": "fonttools cu2qu"}, "benchmarks": []}
+    doc = {"context": {"library": "fonttools cu2qu", "compiled": COMPILED}, "benchmarks": []}
+    print(f"W11: cu2qu {'compiled (Cython)' if COMPILED else 'pure Python'}", file=sys.stderr)
     if curve_to_quadratic is None:
         print("W11: fontTools not importable (python3-fonttools): no cu2qu rows", file=sys.stderr)
     else:
@@ -124,11 +128,12 @@ def main():
             curves = [[tuple(p) for p in c] for c in cubics.tolist()]
             for rel, label in ((1e-3, "1e-3"), (1e-1, "1e-1")):
                 tol = rel * UNIT[dataset]
-                times = []
+                times, cpu = [], []
                 for _ in range(args.repetitions):
-                    t0 = time.perf_counter()
+                    t0, c0 = time.perf_counter(), time.process_time()
                     out = [curve_to_quadratic(c, tol) for c in curves]
                     times.append(time.perf_counter() - t0)
+                    cpu.append(time.process_time() - c0)
                 segments, over, worst = 0, 0, 0.0
                 for c, spl in zip(cubics, out):
                     qs = chain(spl)
@@ -139,10 +144,11 @@ def main():
                 doc["benchmarks"].append({
                     "name": f"W11/cu2qu/quadratic/{dataset}/{label}", "run_name": f"W11/cu2qu/quadratic/{dataset}/{label}",
                     "run_type": "iteration", "iterations": 1, "real_time": sorted(times)[len(times) // 2] * 1e3,
-                    "cpu_time": sorted(times)[len(times) // 2] * 1e3, "time_unit": "ms", "curves": len(curves),
+                    "cpu_time": sorted(cpu)[len(cpu) // 2] * 1e3, "time_unit": "ms", "curves": len(curves),
                     "segments": segments, "over_tolerance": over, "max_deviation": worst})
                 print(f"W11/cu2qu/quadratic/{dataset}/{label}: {segments} segments, {over} over, "
-                      f"max deviation {worst:.6g}, {sorted(times)[len(times) // 2] * 1e3:.1f} ms", file=sys.stderr)
+                      f"max deviation {worst:.6g}, {sorted(times)[len(times) // 2] * 1e3:.1f} ms wall, "
+                      f"{sorted(cpu)[len(cpu) // 2] * 1e3:.1f} ms CPU", file=sys.stderr)
     with open(args.out_json, "w") as f:
         json.dump(doc, f, indent=1)
 

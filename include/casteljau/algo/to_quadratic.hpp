@@ -30,8 +30,8 @@ struct QuadraticChain {
 
 namespace detail::quadratic {
 
-/// Samples per part in the error bound (to_quadratic): the margin between samples falls
-/// as 1 / N^2.
+/// Sample intervals per part in the error bound at its finest (to_quadratic): the margin
+/// between samples falls as 1 / N^2.
 inline constexpr int bound_samples = 32;
 
 /// Input joints whose tangent directions differ by less than this angle (radians) are
@@ -67,6 +67,18 @@ Vector<T, D> end_direction(const std::vector<Point<T, D>>& C, bool at_start) {
   return {};
 }
 
+/// One quadratic, or two joined (tangent_chain), on the stack.
+template <class T, int D>
+struct Chain {
+  using Quad = std::array<Point<T, D>, 3>;
+  std::array<Quad, 2> q;
+  int size;
+  explicit Chain(const Quad& a) : q{a, a}, size(1) {}
+  Chain(const Quad& a, const Quad& b) : q{a, b}, size(2) {}
+  const Quad& front() const { return q[0]; }
+  const Quad& back() const { return q[static_cast<std::size_t>(size - 1)]; }
+};
+
 /// The quadratics from p0 (direction t0) to p2 (direction t1) whose end tangents are t0
 /// and t1: one quadratic whose middle point is where the tangent lines meet, ahead of p0
 /// and behind p2 (alpha, beta > 0 in p0 + alpha t0 = p2 - beta t1). When the lines are
@@ -79,18 +91,18 @@ Vector<T, D> end_direction(const std::vector<Point<T, D>>& C, bool at_start) {
 /// lines apart). The intersection is computed in the orthonormal frame u1 = t0,
 /// u2 = (t1 - (t0 . t1) t0) normalised, which stays accurate for nearly parallel lines.
 template <class T, int D>
-std::optional<std::vector<std::array<Point<T, D>, 3>>> tangent_chain(const Point<T, D>& p0, const Vector<T, D>& t0, const Point<T, D>& p2,
-                                                                     const Vector<T, D>& t1, T v0, T v1) {
-  using Chain = std::vector<std::array<Point<T, D>, 3>>;
+std::optional<Chain<T, D>> tangent_chain(const Point<T, D>& p0, const Vector<T, D>& t0, const Point<T, D>& p2, const Vector<T, D>& t1, T v0,
+                                         T v1) {
+  using C = Chain<T, D>;
   const Vector<T, D> d = p2 - p0;
   const T chord = norm(d);
-  if (!(chord > 0)) return Chain{{p0, p0, p2}};  // a part that is one point (or closed: measured)
+  if (!(chord > 0)) return C({p0, p0, p2});  // a part that is one point (or closed: measured)
   const T c = dot(t0, t1);
   const Vector<T, D> w = t1 - c * t0;
   const T s = norm(w);
   if (!(s > T(16) * std::numeric_limits<T>::epsilon())) {
     const T a = dot(d, t0), b = dot(d, t1);
-    if (a > 0 && b > 0 && norm(d - a * t0) <= T(1e-9) * chord) return Chain{{p0, p0 + T(0.5) * d, p2}};
+    if (a > 0 && b > 0 && norm(d - a * t0) <= T(1e-9) * chord) return C({p0, p0 + T(0.5) * d, p2});
     return std::nullopt;
   }
   const Vector<T, D> u2 = w / s;
@@ -100,12 +112,12 @@ std::optional<std::vector<std::array<Point<T, D>, 3>>> tangent_chain(const Point
     if (!(v0 > 0 && v1 > 0)) return std::nullopt;
     const Point<T, D> a = p0 + (v0 / T(4)) * t0, b = p2 - (v1 / T(4)) * t1;
     const Point<T, D> m = a + T(0.5) * (b - a);
-    return Chain{{p0, a, m}, {m, b, p2}};
+    return C({p0, a, m}, {m, b, p2});
   }
   // alpha t0 + beta t1 = (d1, d2) in the frame: t1 = (c, s).
   const T beta = d2 / s, alpha = d1 - beta * c;
   if (!(alpha > 0 && beta > 0) || !std::isfinite(alpha) || !std::isfinite(beta)) return std::nullopt;
-  return Chain{{p0, p0 + alpha * t0, p2}};
+  return C({p0, p0 + alpha * t0, p2});
 }
 
 /// The point of the quadratic q at s and its first two derivatives.
@@ -118,29 +130,78 @@ struct QuadraticForm {
   Vector<T, D> d1(T s) const { return T(2) * b + (T(2) * s) * a; }
 };
 
-/// An upper bound of the Hausdorff (indeed the Fréchet) distance between a part c of the
-/// curve on [0, 1] and a chain q of one or two quadratics (joined with equal speeds, as
-/// tangent_chain makes them) with the same end points, on the chain's parameter
-/// sigma in [0, m] (quadratic i on [i, i + 1]). Method: c is sampled at s_j = j / N
-/// (N = bound_samples); each sample's nearest point on each quadratic is found by
-/// Newton's method on (q(x) - c(s)) . q'(x) = 0 from the neighbours' feet, clamped to
+/// The distance between a part c of the curve on [0, 1] and a chain q of one or two
+/// quadratics (joined with equal speeds, as tangent_chain makes them) with the same end
+/// points, on the chain's parameter sigma in [0, m] (quadratic i on [i, i + 1]), from
+/// samples of c at s_j = j / N (N = bound_samples) taken coarse to fine: 1/2 first, then
+/// the quarters, the eighths, ... Each sample's nearest point on each quadratic is found
+/// by Newton's method on (q(x) - c(s)) . q'(x) = 0 from the neighbours' feet, clamped to
 /// the quadratic, and the nearer kept; the ends are pinned to the ends (sigma_0 = 0,
-/// sigma_N = m). The piecewise linear map sigma(s) through those feet is continuous and
-/// onto [0, m], so every point of either curve is within max_s |c(s) - q(sigma(s))| of
-/// the other. Between samples, f = c - q o sigma (C^1: the chain is C^1 in sigma)
-/// differs from its linear interpolant by at most h^2 / 8 max |c'' - q'' sigma'^2|
-/// (h = 1 / N, sigma' the slope there, c'' within the convex hull of the caller's `hull`
-/// vectors, so the max is taken over them), which is added to the larger end value. Stops early (returning a value above `stop`)
-/// once a sample exceeds it; samples are taken middle-first so that a part far out of
-/// tolerance is refused after a few.
-template <class T, int D, class Eval>
-T error_bound(const Eval& c, const std::vector<std::array<Point<T, D>, 3>>& q, const std::vector<Vector<T, D>>& hull, T stop) {
-  constexpr int N = bound_samples;
-  const int m = static_cast<int>(q.size());
-  std::array<QuadraticForm<T, D>, 2> form{QuadraticForm<T, D>(q[0]), QuadraticForm<T, D>(q[m - 1])};
-  std::array<T, N + 1> sigma{}, f{};
-  // The foot of p on quadratic i from the guess x (its own parameter): Newton, clamped.
-  const auto foot_on = [&](const QuadraticForm<T, D>& qf, const Point<T, D>& p, T x) {
+/// sigma_N = m). The samples taken stay: bound() after estimate() continues from them.
+template <class T, int D>
+class ChainDistance {
+ public:
+  static constexpr int N = bound_samples;
+
+  explicit ChainDistance(const Chain<T, D>& q) : q_(q), form_{QuadraticForm<T, D>(q.q[0]), QuadraticForm<T, D>(q.back())} {}
+
+  /// The largest distance from the ends and the samples at spacing 1 / intervals (a power
+  /// of two up to N) to the chain: a lower estimate of the distance (each sample's
+  /// distance is at most the Hausdorff distance, up to the feet's accuracy), exact to
+  /// within the sampling. Stops early, returning a value above `stop`, once one exceeds it.
+  template <class Eval>
+  T estimate(const Eval& c, int intervals, T stop) {
+    if (step_ == 0) {
+      sigma_[0] = 0;
+      sigma_[N] = T(q_.size);
+      f_[0] = norm(c(T(0)) - q_.front()[0]);
+      f_[N] = norm(c(T(1)) - q_.back()[2]);
+      largest_ = std::max(f_[0], f_[N]);
+      step_ = N;
+      if (largest_ > stop) return largest_;
+    }
+    while (N / step_ < intervals) {
+      const int half = step_ / 2;
+      for (int j = half; j < N; j += step_) {
+        const T d = foot(c, j, T(0.5) * (sigma_[static_cast<std::size_t>(j - half)] + sigma_[static_cast<std::size_t>(j + half)]));
+        largest_ = std::max(largest_, d);
+        if (d > stop) {  // the level is incomplete: sampled again from its start next time
+          return d;
+        }
+      }
+      step_ = half;
+    }
+    return largest_;
+  }
+
+  /// An upper bound of the Hausdorff (indeed the Fréchet) distance. The piecewise linear
+  /// map sigma(s) through the samples' feet is continuous and onto [0, m], so every point
+  /// of either curve is within max_s |c(s) - q(sigma(s))| of the other. Between samples,
+  /// f = c - q o sigma (C^1: the chain is C^1 in sigma) differs from its linear
+  /// interpolant by at most h^2 / 8 max |c'' - q'' sigma'^2| (h the spacing, sigma' the
+  /// slope there, c'' within the convex hull of the caller's `hull` vectors, so the max is
+  /// taken over them), which is added to the larger end value. From 4 intervals on, the
+  /// bound of each level (the margin falls as 1 / N^2, so a loose tolerance is met with a
+  /// few samples); returns the first at most `sure`, else the finest. Stops early
+  /// (returning a value above `stop`) once a sample exceeds it.
+  template <class Eval>
+  T bound(const Eval& c, const std::vector<Vector<T, D>>& hull, T stop, T sure) {
+    constexpr int coarsest = 4;  // intervals of the first bound: the samples 1/4, 1/2, 3/4
+    T b = 0;
+    for (int intervals = coarsest; intervals <= N; intervals *= 2) {
+      const T e = estimate(c, intervals, stop);
+      if (e > stop) return e;
+      b = margin_bound(hull);
+      if (b <= sure) return b;
+    }
+    return b;
+  }
+
+ private:
+  // The foot of p on quadratic qf from the guess x (its own parameter): Newton, clamped,
+  // stopped at a step of 1e-5 (the bound holds for any foot; the distance at the foot is
+  // only overestimated, by about the square of that).
+  static T foot_on(const QuadraticForm<T, D>& qf, const Point<T, D>& p, T x) {
     for (int it = 0; it < 12; ++it) {
       // r = q(x) - p, d = q'(x); g = r . d, g' = d . d + r . q''
       T g = 0, dd = 0, ra = 0;
@@ -160,20 +221,21 @@ T error_bound(const Eval& c, const std::vector<std::array<Point<T, D>, 3>>& q, c
       if (close) break;
     }
     return x;
-  };
-  const auto distance_at = [&](const QuadraticForm<T, D>& qf, const Point<T, D>& p, T x) {
+  }
+  static T distance_at(const QuadraticForm<T, D>& qf, const Point<T, D>& p, T x) {
     T s2 = 0;
     for (int k = 0; k < D; ++k) {
       const T r = qf.p0[k] + x * (T(2) * qf.b[k] + x * qf.a[k]) - p[k];
       s2 += r * r;
     }
     return std::sqrt(s2);  // points near the curve: no overflow
-  };
-  const auto foot = [&](int j, T guess) {
+  }
+  template <class Eval>
+  T foot(const Eval& c, int j, T guess) {
     const Point<T, D> p = c(T(j) / T(N));
     T best = std::numeric_limits<T>::infinity(), at = 0;
-    for (int i = 0; i < m; ++i) {
-      const auto& qf = form[static_cast<std::size_t>(i)];
+    for (int i = 0; i < q_.size; ++i) {
+      const auto& qf = form_[static_cast<std::size_t>(i)];
       const T x = foot_on(qf, p, std::clamp(guess - T(i), T(0), T(1)));
       const T dist = distance_at(qf, p, x);
       if (dist < best) {
@@ -181,41 +243,46 @@ T error_bound(const Eval& c, const std::vector<std::array<Point<T, D>, 3>>& q, c
         at = T(i) + x;
       }
     }
-    sigma[static_cast<std::size_t>(j)] = at;
-    f[static_cast<std::size_t>(j)] = best;
+    sigma_[static_cast<std::size_t>(j)] = at;
+    f_[static_cast<std::size_t>(j)] = best;
     return best;
-  };
-  sigma[0] = 0;
-  sigma[N] = T(m);
-  f[0] = norm(c(T(0)) - q.front()[0]);
-  f[N] = norm(c(T(1)) - q.back()[2]);
-  if (std::max(f[0], f[N]) > stop) return std::max(f[0], f[N]);
-  // Middle first (N a power of two): 1/2, 1/4, 3/4, 1/8, ...; each guess between the
-  // neighbours' feet.
-  for (int step = N / 2; step >= 1; step /= 2) {
-    for (int j = step; j < N; j += 2 * step) {
-      if (foot(j, T(0.5) * (sigma[static_cast<std::size_t>(j - step)] + sigma[static_cast<std::size_t>(j + step)])) > stop) {
-        return f[static_cast<std::size_t>(j)];
+  }
+  // The bound on the intervals of the samples taken (spacing step_).
+  T margin_bound(const std::vector<Vector<T, D>>& hull) const {
+    const int m = q_.size;
+    const T h = T(step_) / T(N);
+    T b = 0;
+    for (int j = 0; j < N; j += step_) {
+      const std::size_t j0 = static_cast<std::size_t>(j), j1 = static_cast<std::size_t>(j + step_);
+      const T slope = (sigma_[j1] - sigma_[j0]) / h;
+      // f'' = c'' - q'' slope^2 on the interval (q'' of the quadratic the interval's feet
+      // lie on; an interval across the pair's joint takes the larger of the two).
+      const std::size_t i0 = std::min<std::size_t>(static_cast<std::size_t>(sigma_[j0]), static_cast<std::size_t>(m - 1));
+      const std::size_t i1 = std::min<std::size_t>(static_cast<std::size_t>(sigma_[j1]), static_cast<std::size_t>(m - 1));
+      T f2 = 0;  // squared
+      for (std::size_t i = std::min(i0, i1); i <= std::max(i0, i1); ++i) {
+        const Vector<T, D> w = (T(2) * slope * slope) * form_[i].a;
+        if (hull.size() == 2) {
+          // Two vectors: a cubic part's c'' at s = 0 and 1, linear between, so on this
+          // interval c'' lies between its values at the interval's ends.
+          const T s0 = T(j) / T(N), s1 = T(j + step_) / T(N);
+          f2 = std::max(f2, squared_norm(hull[0] + s0 * (hull[1] - hull[0]) - w));
+          f2 = std::max(f2, squared_norm(hull[0] + s1 * (hull[1] - hull[0]) - w));
+        } else {
+          for (const auto& v : hull) f2 = std::max(f2, squared_norm(v - w));
+        }
       }
+      b = std::max(b, std::max(f_[j0], f_[j1]) + h * h / T(8) * std::sqrt(f2));
     }
+    return b;
   }
-  T bound = 0;
-  const T h = T(1) / T(N);
-  for (std::size_t j = 0; j < N; ++j) {
-    const T slope = (sigma[j + 1] - sigma[j]) / h;
-    // f'' = c'' - q'' slope^2 on the interval (q'' of the quadratic the interval's feet
-    // lie on; an interval across the pair's joint takes the larger of the two).
-    const std::size_t i0 = std::min<std::size_t>(static_cast<std::size_t>(sigma[j]), static_cast<std::size_t>(m - 1));
-    const std::size_t i1 = std::min<std::size_t>(static_cast<std::size_t>(sigma[j + 1]), static_cast<std::size_t>(m - 1));
-    T f2 = 0;
-    for (std::size_t i = std::min(i0, i1); i <= std::max(i0, i1); ++i) {
-      const Vector<T, D> w = (T(2) * slope * slope) * form[i].a;
-      for (const auto& v : hull) f2 = std::max(f2, norm(v - w));
-    }
-    bound = std::max(bound, std::max(f[j], f[j + 1]) + h * h / T(8) * f2);
-  }
-  return bound;
-}
+
+  Chain<T, D> q_;
+  std::array<QuadraticForm<T, D>, 2> form_;
+  std::array<T, N + 1> sigma_{}, f_{};
+  int step_ = 0;  // the spacing (in 1 / N) of the samples taken; 0: none yet
+  T largest_ = 0;
+};
 
 /// The point at s of the Bézier form with control points P (de Casteljau, on the stack
 /// up to degree 15).
@@ -228,6 +295,14 @@ Point<T, D> bezier_point(const std::vector<Point<T, D>>& P, T s) {
       const T a = P[0][k] + s * (P[1][k] - P[0][k]), b = P[1][k] + s * (P[2][k] - P[1][k]), c = P[2][k] + s * (P[3][k] - P[2][k]);
       const T d = a + s * (b - a), e = b + s * (c - b);
       out[k] = d + s * (e - d);
+    }
+    return out;
+  }
+  if (n == 3) {  // a cubic's hodograph
+    Point<T, D> out;
+    for (int k = 0; k < D; ++k) {
+      const T a = P[0][k] + s * (P[1][k] - P[0][k]), b = P[1][k] + s * (P[2][k] - P[1][k]);
+      out[k] = a + s * (b - a);
     }
     return out;
   }
@@ -272,9 +347,17 @@ struct Part {
   std::vector<Point<T, D>> points;  // polynomial parts
   std::optional<Piece> form;        // rational parts
 
+  std::array<Vector<T, D>, 4> power{};  // a cubic part: c(s) = P_0 + s (power[1] + s (power[2] + s power[3]))
+
   void make(const Piece& piece, T a, T b) {
     if constexpr (polynomial) {
       polynomial_portion(piece.points(), a, b, points);
+      if (points.size() == 4) {
+        const auto& P = points;
+        power[1] = T(3) * (P[1] - P[0]);
+        power[2] = T(3) * ((P[2] - P[1]) - (P[1] - P[0]));
+        power[3] = (P[3] - P[0]) - T(3) * (P[2] - P[1]);
+      }
     } else {
       form.emplace(piece.portion(a, b));
       points = form->points();
@@ -282,6 +365,7 @@ struct Part {
   }
   Point<T, D> operator()(T s) const {
     if constexpr (polynomial) {
+      if (points.size() == 4) return points[0] + s * (power[1] + s * (power[2] + s * power[3]));  // Horner
       return bezier_point(points, s);
     } else {
       return (*form)(s);
@@ -309,9 +393,9 @@ struct Part {
   /// sum_k B_k(s) (c_k - Q_k), at most max_k |c_k - Q_k| (the Bernstein weights sum to 1).
   /// Infinite for a rational part, a chain of two quadratics or degree above 15. Costs a
   /// few operations per control point: cu2qu's test, against our G1 quadratic.
-  T elevated_bound(const std::vector<std::array<Point<T, D>, 3>>& q) const {
+  T elevated_bound(const Chain<T, D>& q) const {
     const std::size_t n = points.size() - 1;
-    if (!polynomial || q.size() != 1 || n < 2 || n > 15) return std::numeric_limits<T>::infinity();
+    if (!polynomial || q.size != 1 || n < 2 || n > 15) return std::numeric_limits<T>::infinity();
     const auto& a = q.front();
     const T N = T(n * (n - 1));
     T worst = 0;
@@ -326,10 +410,11 @@ struct Part {
     return worst;
   }
 
-  /// Vectors whose convex hull holds c'' on [0, 1], into out (the margin of error_bound
-  /// takes max |v - w| over them for |c'' - w|): n (n - 1) times the second differences
-  /// for a polynomial (the second hodograph's control points: a bound); for a rational
-  /// piece c'' at the N + 1 sample parameters (an estimate, not a bound).
+  /// Vectors whose convex hull holds c'' on [0, 1], into out (the margin of
+  /// ChainDistance::bound takes max |v - w| over them for |c'' - w|): n (n - 1) times the
+  /// second differences for a polynomial (the second hodograph's control points: a bound;
+  /// for a cubic, c''(0) and c''(1), between which c'' is linear); for a rational piece
+  /// c'' at the N + 1 sample parameters (an estimate, not a bound).
   void second_derivative_hull(std::vector<Vector<T, D>>& out) const {
     out.clear();
     const auto& C = points;
@@ -383,17 +468,45 @@ std::vector<typename Piece::Scalar> cusps(const Piece& piece) {
     // would reach 0.05 of the largest sample (the margin covers rounding).
     T big = 0;
     for (const auto& h : hodograph) big = std::max(big, norm(h.to_vector()));
-    const Vector<T, D> chord = hodograph.back() - hodograph.front();
-    const T cc = squared_norm(chord);
-    Vector<T, D> mean{};
-    for (const auto& h : hodograph) mean = mean + h.to_vector();
-    const T lam = cc > 0 ? std::clamp(-dot(hodograph.front().to_vector(), chord) / cc, T(0), T(1)) : T(0);
-    for (const Vector<T, D>& dir : {mean, hodograph.front().to_vector() + lam * chord}) {
-      const Vector<T, D> u = unit(dir);
-      if (squared_norm(u) == 0) continue;
-      T low = std::numeric_limits<T>::infinity();
-      for (const auto& h : hodograph) low = std::min(low, dot(h.to_vector(), u));
-      if (low > T(0.06) * big) return out;
+    // The test on a control polygon H[0..k): true when it keeps away from the origin.
+    const auto clear = [&](const Point<T, D>* H, std::size_t k) {
+      const Vector<T, D> chord = H[k - 1] - H[0];
+      const T cc = squared_norm(chord);
+      Vector<T, D> mean{};
+      for (std::size_t i = 0; i < k; ++i) mean = mean + H[i].to_vector();
+      const T lam = cc > 0 ? std::clamp(-dot(H[0].to_vector(), chord) / cc, T(0), T(1)) : T(0);
+      for (const Vector<T, D>& dir : {mean, H[0].to_vector() + lam * chord}) {
+        const Vector<T, D> u = unit(dir);
+        if (squared_norm(u) == 0) continue;
+        T low = std::numeric_limits<T>::infinity();
+        for (std::size_t i = 0; i < k; ++i) low = std::min(low, dot(H[i].to_vector(), u));
+        if (low > T(0.06) * big) return true;
+      }
+      return false;
+    };
+    if (clear(hodograph.data(), hodograph.size())) return out;
+    // Else the same test on the hodograph's halves and quarters (de Casteljau at their
+    // middles): a hodograph that turns about the origin without nearing it passes on the
+    // parts, each holding its part of c' in its hull, with the same margin to `big`.
+    const std::size_t k = hodograph.size();
+    if (k <= 16) {
+      std::array<std::array<Point<T, D>, 16>, 4> part{};
+      std::copy(hodograph.begin(), hodograph.end(), part[0].begin());
+      const auto split = [&](std::array<Point<T, D>, 16>& left, std::array<Point<T, D>, 16>& right) {
+        // left holds the polygon; afterwards its first half, right its second.
+        std::array<Point<T, D>, 16> w = left;
+        for (std::size_t lvl = 0; lvl < k; ++lvl) {
+          left[lvl] = w[0];
+          right[k - 1 - lvl] = w[k - 1 - lvl];
+          for (std::size_t i = 0; i + lvl + 1 < k; ++i) w[i] = w[i] + T(0.5) * (w[i + 1] - w[i]);
+        }
+      };
+      split(part[0], part[2]);  // halves in 0 and 2
+      split(part[0], part[1]);  // quarters 0, 1 of the first half
+      split(part[2], part[3]);  // quarters 2, 3
+      bool all = true;
+      for (const auto& h : part) all = all && clear(h.data(), k);
+      if (all) return out;
     }
   }
   const auto sp = [&](T x) {
@@ -403,7 +516,10 @@ std::vector<typename Piece::Scalar> cusps(const Piece& piece) {
       return norm(piece.derivative_at(x, 1));
     }
   };
-  std::vector<T> speed(static_cast<std::size_t>(M) + 1);
+  std::array<T, 16 * 16 + 1> small_speed;  // up to degree 15 on the stack
+  std::vector<T> large_speed;
+  if (static_cast<std::size_t>(M) + 1 > small_speed.size()) large_speed.resize(static_cast<std::size_t>(M) + 1);
+  T* speed = large_speed.empty() ? small_speed.data() : large_speed.data();
   T top = 0;
   for (int j = 0; j <= M; ++j) {
     speed[static_cast<std::size_t>(j)] = sp(T(j) / T(M));
@@ -456,7 +572,7 @@ void approximate_span(const Piece& piece, T s0, T s1, const Point<T, D>& p_start
   T step = s1 - s0;
   const T min_step = T(1e-9) * (s1 - s0);
   struct Try {
-    std::vector<std::array<Point<T, D>, 3>> q;
+    Chain<T, D> q;
     Vector<T, D> dir1;
     T error;  // infinite when the tangent lines do not meet ahead
     bool ok;  // within the tolerance
@@ -472,24 +588,28 @@ void approximate_span(const Piece& piece, T s0, T s1, const Point<T, D>& p_start
     const Vector<T, D> dir1 = last ? t_end : end_direction(part.points, false);
     Vector<T, D> d0 = dir0;
     if (squared_norm(d0) == 0) d0 = end_direction(part.points, true);
-    auto q = tangent_chain(p0, d0, p2, dir1, part.end_speed(true), part.end_speed(false));
-    if (!q) return Try{{}, dir1, std::numeric_limits<T>::infinity(), false};
+    const auto q = tangent_chain(p0, d0, p2, dir1, part.end_speed(true), part.end_speed(false));
+    if (!q) return Try{Chain<T, D>({p0, p0, p2}), dir1, std::numeric_limits<T>::infinity(), false};
     // The cheap bound first (polynomial parts, one quadratic): when it meets the tolerance
     // over the rest of the span with a wide margin (a tenth of it, so that the reported
     // error stays informative), the part is taken without the sampled bound.
     const T p = part.elevated_bound(*q);
-    if (last && p <= T(0.1) * tolerance) return Try{std::move(*q), dir1, p, true};
+    if (last && p <= T(0.1) * tolerance) return Try{*q, dir1, p, true};
     part.second_derivative_hull(hull);
-    const T e = std::min(p, error_bound<T, D>(part, *q, hull, tolerance));
-    return Try{std::move(*q), dir1, e, e <= tolerance};
+    // The sampled bound, coarse to fine: refined while above half the tolerance (the
+    // search below extends a part whose error is under 80% of the tolerance, and aims
+    // from the error it is given: an error well under the tolerance need not be tight).
+    ChainDistance<T, D> dist(*q);
+    const T e = std::min(p, dist.bound(part, hull, tolerance, T(0.5) * tolerance));
+    return Try{*q, dir1, e, e <= tolerance};
   };
   const auto accept = [&](const Try& r, T t1) {
-    if (out.size() + r.q.size() > max_segments) {
+    if (out.size() + static_cast<std::size_t>(r.q.size) > max_segments) {
       throw InvalidArgument("tolerance", "the approximation needs more than " + std::to_string(max_segments) +
                                              " quadratic segments: use a larger tolerance");
     }
-    for (const auto& x : r.q) out.push_back(x);
-    if (r.q.size() == 2) ends.push_back(t0 + T(0.5) * (t1 - t0));
+    for (int i = 0; i < r.q.size; ++i) out.push_back(r.q.q[static_cast<std::size_t>(i)]);
+    if (r.q.size == 2) ends.push_back(t0 + T(0.5) * (t1 - t0));
     ends.push_back(t1);
     max_error = std::max(max_error, r.error);
     step = t1 - t0;
@@ -501,7 +621,7 @@ void approximate_span(const Piece& piece, T s0, T s1, const Point<T, D>& p_start
     // The farthest end: a model of the error (growing as the fourth power of the step on
     // smooth parts) proposes each next end from the last error; a bracket [lo, hi]
     // (feasible, infeasible) keeps the search safe where the model fails (bisection).
-    // Accepted once an end is feasible with an error of at least 90% of the tolerance,
+    // Accepted once an end is feasible with an error of at least 80% of the tolerance,
     // or the bracket is within 2% of the step.
     T lo = t0, hi = s1;
     bool hi_tested = false;
@@ -512,7 +632,7 @@ void approximate_span(const Piece& piece, T s0, T s1, const Point<T, D>& p_start
       const T e = r.error;  // the bound, or a lower bound above the tolerance, or infinite
       if (r.ok) {
         lo = x;
-        const bool enough = x == s1 || r.error >= T(0.9) * tolerance;
+        const bool enough = x == s1 || r.error >= T(0.8) * tolerance;
         best = std::move(r);
         if (enough) break;
       } else {
@@ -534,9 +654,10 @@ void approximate_span(const Piece& piece, T s0, T s1, const Point<T, D>& p_start
       const T t1 = std::min(s1, t0 + min_step);
       part.make(piece, t0, t1);
       const Point<T, D> p2 = t1 == s1 ? p_end : part.points.back();
-      const std::vector<std::array<Point<T, D>, 3>> q{{p0, p0 + T(0.5) * (p2 - p0), p2}};
+      const Chain<T, D> q({p0, p0 + T(0.5) * (p2 - p0), p2});
       part.second_derivative_hull(hull);
-      const T e = error_bound<T, D>(part, q, hull, std::numeric_limits<T>::max());
+      ChainDistance<T, D> dist(q);
+      const T e = dist.bound(part, hull, std::numeric_limits<T>::max(), T(0));
       accept(Try{q, t1 == s1 ? t_end : end_direction(part.points, false), e, true}, t1);
       continue;
     }
@@ -563,9 +684,11 @@ void approximate_span(const Piece& piece, T s0, T s1, const Point<T, D>& p_start
 /// corners.
 ///
 /// The error of each segment is measured as an upper bound of the Hausdorff distance to
-/// the part it replaces (detail::quadratic::error_bound: 33 samples with their nearest
-/// points on the quadratic and a second-derivative margin between samples; a bound for
-/// polynomial pieces, and for rational pieces with an estimated margin), or for a
+/// the part it replaces (detail::quadratic::ChainDistance::bound: samples with their
+/// nearest points on the quadratic and a second-derivative margin between samples, 5 to
+/// 33 samples, refined until the bound is under half the tolerance or the samples are
+/// 33; a bound for polynomial pieces, and for rational pieces with an estimated margin),
+/// or for a
 /// polynomial part by the control points of the part minus the quadratic raised to its
 /// degree (Part::elevated_bound, a bound of the parametric distance), the smaller; the
 /// last segment of a span is taken on that cheap bound alone when it is within a tenth
@@ -624,13 +747,20 @@ QuadraticChain<typename C::Scalar, C::dimension> to_quadratic(const C& p, typena
           std::vector<T> cut{T(0)};
           for (const T c : detail::quadratic::cusps(s)) cut.push_back(c);
           cut.push_back(T(1));
+          std::vector<Point<T, D>> span_points;  // the span's control points (Cartesian), where it is cut
           for (std::size_t j = 0; j + 1 < cut.size(); ++j) {
             const T a = cut[j], b = cut[j + 1];
-            const auto span = s.portion(a, b);
-            const Point<T, D> pa = j == 0 ? P.front() : span.points().front();
-            const Point<T, D> pb = j + 2 == cut.size() ? P.back() : span.points().back();
-            const Vector<T, D> da = j == 0 ? start_dir[i] : end_direction(span.points(), true);
-            const Vector<T, D> db = j + 2 == cut.size() ? end_dir[i] : end_direction(span.points(), false);
+            if (cut.size() > 2) {
+              if constexpr (std::is_same_v<S, Bezier<T, D>>) {
+                polynomial_portion(P, a, b, span_points);
+              } else {
+                span_points = s.portion(a, b).points();
+              }
+            }
+            const Point<T, D> pa = j == 0 ? P.front() : span_points.front();
+            const Point<T, D> pb = j + 2 == cut.size() ? P.back() : span_points.back();
+            const Vector<T, D> da = j == 0 ? start_dir[i] : end_direction(span_points, true);
+            const Vector<T, D> db = j + 2 == cut.size() ? end_dir[i] : end_direction(span_points, false);
             approximate_span(s, a, b, pa, pb, da, db, tolerance, max_segments - std::min(max_segments, r.segments.size()), quads, ends,
                              r.max_error);
             if (r.segments.size() + quads.size() > max_segments) {
