@@ -640,6 +640,35 @@ class ExtremeWeightsFormsTest(CliTest):
                             else:
                                 self.assert_rel(g[k], want[k], 1e-14, (w, t, k, c["type"]))
 
+    def test_second_derivative(self):
+        # R'' over pairs of control points (differences only): (-8, -8) / w at t = 1/2 for
+        # w = 1e30 (0 before: the quotient rule subtracts terms of size 1) and -8 w for w =
+        # 1e-100 (0 before). Oracle: the quotient rule itself in mpmath with 3 |log10 w| +
+        # 60 digits, where its cancellation costs nothing. 1e-13 of the largest coordinate:
+        # a few eps of the pairs' terms. At the ends for w = 1e200 and 1e300 R'' ~ w^2
+        # is beyond double (refused, naming t).
+        def want(w, t):
+            with mpmath.workdps(int(3 * abs(math.log10(w))) + 60):
+                w, t = mpf(w), mpf(t)
+                s = 1 - t
+                B, B1, B2 = [s * s, 2 * w * t * s, t * t], [-2 * s, 2 * w * (1 - 2 * t), 2 * t], [mpf(2), -4 * w, mpf(2)]
+                W, W1, W2 = sum(B), sum(B1), sum(B2)
+                A, A1, A2 = ([sum(b[i] * CONIC_P[i][k] for i in range(3)) for k in range(2)] for b in (B, B1, B2))
+                return [(A2[k] * W - A[k] * W2) / W ** 2 - 2 * W1 * (A1[k] * W - A[k] * W1) / W ** 3 for k in range(2)]
+        ts = lambda w: [0.25, 0.5, 0.75] if w > 1e100 else [0, 0.25, 0.5, 0.75, 1]
+        answers = iter(self.ok_jsonl("eval", [{"curve": c, "t": ts(w), "derivatives": 2} for w in self.WS for c in self.forms(w)]))
+        for w in self.WS:
+            for c in self.forms(w):
+                got = next(answers)["derivatives"][1]
+                for t, g in zip(ts(w), got):
+                    v = want(w, t)
+                    scale = max(abs(x) for x in v)
+                    for k in range(2):
+                        self.assertLessEqual(abs(g[k] - v[k]), 1e-13 * scale, (w, t, k, c["type"], g, v))
+        for w in (1e200, 1e300):
+            for c in self.forms(w):
+                self.bad("eval", {"curve": c, "t": [0.5, 0], "derivatives": 2}, "t[1]", contains="not representable")
+
     def test_curvature(self):
         # The curvature, 4 w W^3 / |v|^3: 1.4e30 at the corner for w = 1e30 (refused as a
         # zero velocity before), 1.4e-100 at t = 1/2 for w = 1e-100 (-0.0 before: the
