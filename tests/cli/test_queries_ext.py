@@ -905,6 +905,16 @@ class ExtremeWeightsIntersectTest(CliTest):
                     a_at, b_at = b_at, a_at
                 self.check(w, r["intersections"], want, a_at, b_at, (w, name, swapped))
 
+    def test_work_limit_counts_the_parts(self):
+        # A NURBS of 2001 quadratic spans with weights 1, 1e300, 1 each: about 5e7 units
+        # of work on its pieces, but each span is intersected through a few hundred tame
+        # parts, so its self-intersections would take hours: refused with the figure.
+        n = 2001
+        pts = [[k, k % 2] for k in range(2 * n + 1)]
+        knots = [0, 0, 0] + [j for j in range(1, n) for _ in (0, 1)] + [n, n, n]
+        c = {"type": "nurbs", "degree": 2, "knots": knots, "points": pts, "weights": [1 if k % 2 == 0 else 1e300 for k in range(2 * n + 1)]}
+        self.bad("intersect", {"curves": [c]}, "curves[0]", contains="units of work")
+
     def test_self_and_identical(self):
         # A path: the conic, then a segment back across its leg x = 1 (one self-crossing
         # at y = 3/4 on the segment, t within 1 / w of 0 on the conic); the conic against
