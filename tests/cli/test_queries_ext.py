@@ -393,8 +393,7 @@ class ExtremeWeightsTest(CliTest):
 
     def test_intersect_with_lines(self):
         # Weights tiny: within w of the chord x + y = 1, which the diagonal meets at
-        # (1/2, 1/2), t = 1/2 on both. (Huge weights are a known gap of the engine: a
-        # crossing of the leg x = 1 within 1e-100 of t = 0 is missed.)
+        # (1/2, 1/2), t = 1/2 on both. (Huge weights: ExtremeWeightsIntersectTest.)
         for w in self.TINY:
             r = self.ok("intersect", {"curves": [conic(w), bezier([[0, 0], [2, 2]])]})
             self.assertEqual(len(r["intersections"]), 1, (w, r))
@@ -641,6 +640,35 @@ class ExtremeWeightsFormsTest(CliTest):
                             else:
                                 self.assert_rel(g[k], want[k], 1e-14, (w, t, k, c["type"]))
 
+    def test_second_derivative(self):
+        # R'' over pairs of control points (differences only): (-8, -8) / w at t = 1/2 for
+        # w = 1e30 (0 before: the quotient rule subtracts terms of size 1) and -8 w for w =
+        # 1e-100 (0 before). Oracle: the quotient rule itself in mpmath with 3 |log10 w| +
+        # 60 digits, where its cancellation costs nothing. 1e-13 of the largest coordinate:
+        # a few eps of the pairs' terms. At the ends for w = 1e200 and 1e300 R'' ~ w^2
+        # is beyond double (refused, naming t).
+        def want(w, t):
+            with mpmath.workdps(int(3 * abs(math.log10(w))) + 60):
+                w, t = mpf(w), mpf(t)
+                s = 1 - t
+                B, B1, B2 = [s * s, 2 * w * t * s, t * t], [-2 * s, 2 * w * (1 - 2 * t), 2 * t], [mpf(2), -4 * w, mpf(2)]
+                W, W1, W2 = sum(B), sum(B1), sum(B2)
+                A, A1, A2 = ([sum(b[i] * CONIC_P[i][k] for i in range(3)) for k in range(2)] for b in (B, B1, B2))
+                return [(A2[k] * W - A[k] * W2) / W ** 2 - 2 * W1 * (A1[k] * W - A[k] * W1) / W ** 3 for k in range(2)]
+        ts = lambda w: [0.25, 0.5, 0.75] if w > 1e100 else [0, 0.25, 0.5, 0.75, 1]
+        answers = iter(self.ok_jsonl("eval", [{"curve": c, "t": ts(w), "derivatives": 2} for w in self.WS for c in self.forms(w)]))
+        for w in self.WS:
+            for c in self.forms(w):
+                got = next(answers)["derivatives"][1]
+                for t, g in zip(ts(w), got):
+                    v = want(w, t)
+                    scale = max(abs(x) for x in v)
+                    for k in range(2):
+                        self.assertLessEqual(abs(g[k] - v[k]), 1e-13 * scale, (w, t, k, c["type"], g, v))
+        for w in (1e200, 1e300):
+            for c in self.forms(w):
+                self.bad("eval", {"curve": c, "t": [0.5, 0], "derivatives": 2}, "t[1]", contains="not representable")
+
     def test_curvature(self):
         # The curvature, 4 w W^3 / |v|^3: 1.4e30 at the corner for w = 1e30 (refused as a
         # zero velocity before), 1.4e-100 at t = 1/2 for w = 1e-100 (-0.0 before: the
@@ -748,6 +776,163 @@ class ExtremeWeightsFormsTest(CliTest):
             self.assert_close(got, [0.5] * 4, 1e-15)
             # 1e-12 relative: the quadrature's target.
             self.assert_rel(self.ok("length", {"curve": c, "from": 0, "to": 0.25})["length"], math.pi, 1e-12, f)
+
+
+def power_form(P, weights=None):
+    """The homogeneous coordinates (X, Y, W) of a (rational) Bézier curve as power-basis
+    polynomials in s (lowest degree first), exact in mpf."""
+    n = len(P) - 1
+    w = weights or [1] * (n + 1)
+    out = [[mpf(0)] * (n + 1) for _ in range(3)]
+    for i in range(n + 1):
+        for j in range(n - i + 1):  # C(n, i) s^i (1 - s)^(n - i), expanded
+            c = math.comb(n, i) * math.comb(n - i, j) * (-1) ** j * mpf(w[i])
+            for k, v in enumerate((P[i][0], P[i][1], 1)):
+                out[k][i + j] += c * mpf(v)
+    return out
+
+
+def poly_mul(a, b):
+    r = [mpf(0)] * (len(a) + len(b) - 1)
+    for i, x in enumerate(a):
+        for j, y in enumerate(b):
+            r[i + j] += x * y
+    return r
+
+
+def poly_sum(*ps):
+    r = [mpf(0)] * max(len(p) for p in ps)
+    for p in ps:
+        for i, x in enumerate(p):
+            r[i] += x
+    return r
+
+
+def poly_at(p, s):
+    return sum(x * s ** i for i, x in enumerate(p))
+
+
+def conic_crossings(w, P, weights=None):
+    """Where the conic [1, w, 1] meets the (rational) Bézier curve with points P: sorted
+    (t, s, point), at 2 log10(w) + 80 digits. The conic is the branch tau1 >= 0 of its
+    implicit equation in the barycentric coordinates of its control triangle, tau0 = 1 -
+    y, tau1 = x + y - 1, tau2 = 1 - x: tau1^2 = 4 w^2 tau0 tau2; substituted with the
+    other curve's homogeneous coordinates, a polynomial in s; each real root in [0, 1] on
+    the branch gives the point, and the conic's t from t / (1 - t) = sqrt(tau2 / tau0)."""
+    with mpmath.workdps(int(2 * math.log10(w)) + 80):
+        X, Y, W = power_form(P, weights)
+        w = mpf(w)
+        t1 = poly_sum(X, Y, [-c for c in W])
+        f = poly_sum(poly_mul(t1, t1), [-4 * w * w * c for c in poly_mul(poly_sum(W, [-c for c in X]), poly_sum(W, [-c for c in Y]))])
+        while f[-1] == 0:
+            f.pop()
+        out = []
+        for r in mpmath.polyroots(f[::-1], maxsteps=400, extraprec=1000):
+            if abs(mpmath.im(r)) > mpf(10) ** -40:
+                continue
+            s = mpmath.re(r)
+            if not 0 <= s <= 1:
+                continue
+            x, y = poly_at(X, s) / poly_at(W, s), poly_at(Y, s) / poly_at(W, s)
+            if x + y < 1 or x > 1 or y > 1:
+                continue  # the other branch
+            u = mpmath.sqrt((1 - x) / (1 - y)) if y < 1 else mpmath.inf
+            out.append((mpf(1) if u == mpmath.inf else u / (1 + u), s, (x, y)))
+        return sorted(out)
+
+
+class ExtremeWeightsIntersectTest(CliTest):
+    """intersect with the conic at weights 1e8 .. 1e100 (and its NURBS form), against
+    lines, a cubic, a rational quadratic and another extreme conic: every crossing found
+    (none was at 1e16: a leg is passed within 1e-16 of a parameter end), where it is.
+    Oracle: the conic's implicit equation (conic_crossings). A parameter is right when it
+    is within 1e-13 of the true one relative, or within 2 ulp of 1 (a leg passed within
+    1e-30 of t = 1 has no double of its own: t = 1 is the nearest), or when the curve at it
+    is within 2e-15 of the true point (a crossing within 1e-9 of the corner, where t moves
+    the point by 1 / (w t^2): the parameter is known to what the coordinates resolve);
+    the point within 2e-15."""
+
+    WS = (1e8, 1e16, 1e30, 1e100)
+    OTHERS = {
+        "y = 1/2": ([[-1, 0.5], [2, 0.5]], None),
+        "x = 1/2": ([[0.5, -1], [0.5, 2]], None),
+        "y = x (through the corner)": ([[0, 0], [2, 2]], None),
+        "x + y = 2 - 1e-3 (both legs)": ([[3 - 1e-3, -1], [-1, 3 - 1e-3]], None),
+        "y = 1 - 1e-5 (near the corner)": ([[-1, 1 - 1e-5], [2, 1 - 1e-5]], None),
+        "cubic": ([[0.3, -0.2], [1.6, 2.0], [-0.4, 0.4], [1.2, 1.3]], None),
+        "rational": ([[1.4, 0], [0, 0.6], [1.4, 1.2]], [1, 0.5, 1]),
+    }
+
+    def check(self, w, got, want, a_at, b_at, msg):
+        self.assertEqual(len(got), len(want), (msg, got, want))
+        for g, (t, s, p) in zip(got, want):
+            self.assertEqual(g["kind"], "crossing", msg)
+            for k in range(2):
+                self.assertLessEqual(abs(g["point"][k] - p[k]), 2e-15, (msg, g, p))
+            for x, x_true, at in ((g["t"][0], t, a_at), (g["t"][1], s, b_at)):
+                err = abs(mpf(x) - x_true)
+                back = max(abs(v - q) for v, q in zip(at(x), p))
+                self.assertTrue(err <= 1e-13 * x_true or err <= 4.5e-16 or back <= 2e-15, (msg, g, float(x_true), float(err)))
+
+    def test_against_curves(self):
+        forms = lambda w: [conic(w), {"type": "nurbs", "degree": 2, "knots": [0, 0, 0, 1, 1, 1], "points": CONIC_P, "weights": [1, w, 1]}]
+        other = lambda P, wt: bezier(P) if wt is None else {"type": "rational_bezier", "points": P, "weights": wt}
+        reqs, cases = [], []
+        for w in self.WS:
+            for name, (P, wt) in self.OTHERS.items():
+                for c in forms(w):
+                    reqs.append({"curves": [c, other(P, wt)]})
+                    cases.append((w, name, P, wt, False))
+                reqs.append({"curves": [other(P, wt), conic(w)]})  # the other way round
+                cases.append((w, name, P, wt, True))
+            # Another extreme conic: its leg x = 1/2 crosses the first one's leg y = 1.
+            Q = [[0.5, 0.3], [0.5, 1.5], [-0.5, 1.5]]
+            reqs.append({"curves": [conic(w), {"type": "rational_bezier", "points": Q, "weights": [1, w, 1]}]})
+            cases.append((w, "extreme conic", Q, [1, w, 1], False))
+        answers = self.ok_jsonl("intersect", reqs)
+        oracle = {}
+        for (w, name, P, wt, swapped), r in zip(cases, answers):
+            self.assertEqual(r["overlaps"], [], (w, name))
+            if (w, name) not in oracle:
+                oracle[w, name] = conic_crossings(w, P, wt)
+            with mpmath.workdps(int(2 * math.log10(w)) + 80):
+                want = oracle[w, name]
+                X, Y, W = power_form(P, wt)
+                a_at = lambda t: conic_point(w, t)
+                b_at = lambda s: [poly_at(X, mpf(s)) / poly_at(W, mpf(s)), poly_at(Y, mpf(s)) / poly_at(W, mpf(s))]
+                if swapped:  # sorted by the other curve's parameter, its point
+                    want = sorted((s, t, p) for t, s, p in want)
+                    a_at, b_at = b_at, a_at
+                self.check(w, r["intersections"], want, a_at, b_at, (w, name, swapped))
+
+    def test_work_limit_counts_the_parts(self):
+        # A NURBS of 2001 quadratic spans with weights 1, 1e300, 1 each: about 5e7 units
+        # of work on its pieces, but each span is intersected through a few hundred tame
+        # parts, so its self-intersections would take hours: refused with the figure.
+        n = 2001
+        pts = [[k, k % 2] for k in range(2 * n + 1)]
+        knots = [0, 0, 0] + [j for j in range(1, n) for _ in (0, 1)] + [n, n, n]
+        c = {"type": "nurbs", "degree": 2, "knots": knots, "points": pts, "weights": [1 if k % 2 == 0 else 1e300 for k in range(2 * n + 1)]}
+        self.bad("intersect", {"curves": [c]}, "curves[0]", contains="units of work")
+
+    def test_self_and_identical(self):
+        # A path: the conic, then a segment back across its leg x = 1 (one self-crossing
+        # at y = 3/4 on the segment, t within 1 / w of 0 on the conic); the conic against
+        # itself: one overlap, the whole curve.
+        reqs = []
+        for w in self.WS:
+            seg = [[0, 1], [2, 0.5]]
+            reqs.append({"curves": [{"type": "path", "segments": [conic(w), bezier(seg)]}]})
+            reqs.append({"curves": [conic(w), conic(w)]})
+        answers = iter(self.ok_jsonl("intersect", reqs))
+        for w in self.WS:
+            r = next(answers)
+            with mpmath.workdps(int(2 * math.log10(w)) + 80):
+                (t, s, p), = [x for x in conic_crossings(w, [[0, 1], [2, 0.5]]) if x[1] > 0]
+                want = [(t, 1 + s, p)]
+                self.check(w, r["intersections"], want, lambda x: conic_point(w, x),
+                           lambda x: [2 * (mpf(x) - 1), 1 - (mpf(x) - 1) / 2], ("path", w))
+            self.assertEqual(next(answers), {"intersections": [], "overlaps": [{"a": [0.0, 1.0], "b": [0.0, 1.0]}]}, w)
 
 
 if __name__ == "__main__":

@@ -20,6 +20,7 @@
 #include "casteljau/algo/intersect_band.hpp"
 #include "casteljau/algo/intersect_common.hpp"
 #include "casteljau/algo/intersect_low_degree.hpp"
+#include "casteljau/algo/intersect_tame.hpp"
 #include "casteljau/basis/bernstein_poly.hpp"
 #include "casteljau/core/segment.hpp"
 #include "casteljau/core/unit_frame.hpp"
@@ -1343,10 +1344,63 @@ std::vector<CurveIntersection<T>> once_at_closing_point(const Pieces<T, 2>& ca, 
   return once;
 }
 
-/// The common points and overlaps of curves a and b (b = nullptr: the self-intersections
-/// of a): the phases above in turn (see intersect()).
+/// Phase 9 (curves taken through their tame parts only, see solve_extreme): consecutive
+/// points (in ta) between which the curves stay within tol (at 15 points between them,
+/// as admit_edges) are one near region and become one point: the middle one of its
+/// crossings common to rounding (within 1e-3 tol), else its closest crossing, else its
+/// closest point. On the tame parts of a
+/// curve hugging its control polygon the engine sees one near region from several
+/// pieces, whose parameters (one unit per part) are far apart where the points are not:
+/// a line through the corner meets the chord of the parts within 1e-30 of it and the
+/// ends of the parts next to it, each within rounding. Points are in order of ta.
 template <class T>
-Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
+std::vector<CurveIntersection<T>> merge_regions(const Prepared<T>& A, const Prepared<T>& B, const Loops<T>& lp,
+                                                const std::vector<CurveIntersection<T>>& points, T tol) {
+  const Pieces<T, 2>& ca = *A.curve;
+  const Pieces<T, 2>& cb = *B.curve;
+  auto separation = [&](const CurveIntersection<T>& x) { return distance(unit_at(ca, A, x.ta), unit_at(cb, B, x.tb)); };
+  auto one_region = [&](const CurveIntersection<T>& x, const CurveIntersection<T>& y) {
+    const T da = lp.a.shortest(y.ta - x.ta), db = lp.b.shortest(y.tb - x.tb);
+    for (int j = 1; j < 16; ++j) {
+      const T f = static_cast<T>(j) / 16;
+      if (!(distance_near(cb, B, unit_at(ca, A, lp.a.wrap(x.ta + f * da)), lp.b.wrap(x.tb + f * db)) <= tol)) return false;
+    }
+    return true;
+  };
+  std::vector<CurveIntersection<T>> out;
+  for (std::size_t i = 0; i < points.size();) {
+    std::size_t j = i + 1;
+    while (j < points.size() && one_region(points[j - 1], points[j])) ++j;
+    // The crossings common to rounding (within 1e-3 tol, as PointMerge::exact), else
+    // the crossings, else every point; the middle one of the first, the closest otherwise.
+    std::vector<std::size_t> exact, crossings;
+    for (std::size_t k = i; k < j; ++k) {
+      if (points[k].kind != IntersectionKind::crossing) continue;
+      crossings.push_back(k);
+      if (separation(points[k]) <= T(1e-3) * tol) exact.push_back(k);
+    }
+    std::size_t pick = i;
+    if (!exact.empty()) {
+      pick = exact[(exact.size() - 1) / 2];
+    } else {
+      if (crossings.empty())
+        for (std::size_t k = i; k < j; ++k) crossings.push_back(k);
+      pick = crossings.front();
+      for (std::size_t k : crossings)
+        if (separation(points[k]) < separation(points[pick])) pick = k;
+    }
+    out.push_back(points[pick]);
+    i = j;
+  }
+  return out;
+}
+
+/// The common points and overlaps of curves a and b (b = nullptr: the self-intersections
+/// of a): the phases above in turn (see intersect()). `tame`: the curves are tame parts
+/// (solve_extreme), and the points of one near region seen from several parts are merged
+/// (merge_regions).
+template <class T>
+Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb, bool tame = false) {
   const bool self = cb == nullptr;
   if (self) cb = &ca;
   const SharedFrame<T> frame = shared_frame(ca, *cb);
@@ -1364,9 +1418,46 @@ Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
   Intersections<T> out;
   out.points = classify(A, PB, merged.kept, tol);
   if (self && lp.a.closed) out.points = once_at_closing_point(ca, out.points);
+  if (tame) out.points = merge_regions(A, PB, lp, out.points, tol);
   out.overlaps = std::move(overlaps);
   if (out.points.size() + out.overlaps.size() > max_points) too_many_points(out.points.size() + out.overlaps.size());
   return out;
+}
+
+/// solve() for curves that may have pieces with extreme weights (has_extreme_weights):
+/// such curves are taken through their tame parts (tame(), runs below 1e-3 of the
+/// near-miss distance as chords), solved with merge_regions, and the answer mapped back to
+/// the curves' own parameters. Parameters so mapped are rounded to the doubles of the
+/// domain, which may not resolve a part (a crossing of the leg that the weights 1, 1e30, 1
+/// pass within 1e-30 of t = 1 is at t = 1); the points are the parts' own, so they are
+/// where the curves meet, not the curve at the rounded parameter. Other curves: solve().
+template <class T>
+Intersections<T> solve_extreme(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
+  const bool self = cb == nullptr;
+  if (!has_extreme_weights(ca) && (self || !has_extreme_weights(*cb))) return solve(ca, cb);
+  T size = 0;
+  for (const auto* c : {&ca, cb}) {
+    if (!c) continue;
+    Box<T, 2> box = Box<T, 2>::empty_box();
+    for (const auto& s : c->segments()) box.add(std::visit([](const auto& x) { return x.control_bounds(); }, s));
+    size = std::max(size, diagonal(box));
+  }
+  const T run = T(1e-13) * size;
+  const Tamed<T> ta = tame(ca, run);
+  const std::optional<Tamed<T>> tb = self ? std::nullopt : std::optional<Tamed<T>>(tame(*cb, run));
+  Intersections<T> r = solve(ta.curve, self ? nullptr : &tb->curve, true);
+  const Tamed<T>& mb = self ? ta : *tb;
+  const Pieces<T, 2>& ob = self ? ca : *cb;
+  for (auto& x : r.points) {
+    x.ta = ta.original(ca, x.ta);
+    x.tb = mb.original(ob, x.tb);
+  }
+  for (auto& o : r.overlaps) {
+    o.a = Interval<T>(ta.original(ca, o.a.lo), ta.original(ca, o.a.hi));
+    o.b_start = mb.original(ob, o.b_start);
+    o.b_end = mb.original(ob, o.b_end);
+  }
+  return r;
 }
 
 /// The fast path (algo/intersect_low_degree.hpp) for two polynomial Bézier curves of
@@ -1531,7 +1622,7 @@ Intersections<typename CA::Scalar> intersect(const CA& a, const CB& b) {
     // Polynomial pieces of degree <= 3 on both sides (polylines, paths, cubic splines...).
     if (auto r = detail::isect::low_degree_pieces(pa, pb)) return std::move(*r);
   }
-  return detail::isect::solve(pa, &pb);
+  return detail::isect::solve_extreme(pa, &pb);
 }
 
 /// The self-intersections of a plane curve: pairs ta < tb with c(ta) = c(tb), and the
@@ -1543,7 +1634,7 @@ template <class C>
   requires PiecewiseBezierCurve<C> && (C::dimension == 2)
 Intersections<typename C::Scalar> self_intersect(const C& c) {
   const auto& p = pieces(c);
-  return detail::isect::solve(p, static_cast<decltype(&p)>(nullptr));
+  return detail::isect::solve_extreme(p, static_cast<decltype(&p)>(nullptr));
 }
 
 }  // namespace casteljau

@@ -77,6 +77,9 @@ class Nurbs {
     require_finite(u, "t");
     if (k < 0) throw InvalidArgument("k", "derivative order must be >= 0, got " + std::to_string(k));
     if (k == 1 && u >= domain().lo && u <= domain().hi) return first_derivative(u);
+    if (k == 2 && u >= domain().lo && u <= domain().hi) {
+      if (const auto v = second_derivative(u)) return *v;
+    }
     std::vector<Point<T, D + 1>> hd(static_cast<std::size_t>(k) + 1);
     for (int j = 0; j <= k; ++j) hd[static_cast<std::size_t>(j)] = Point<T, D + 1>::from_vector(h_.derivative_at(u, j));
     project(hd[0].to_vector(), u);  // the pole check
@@ -120,6 +123,40 @@ class Nurbs {
       }
     v = T(2) * v;
     detail::require_representable(v, static_cast<double>(u), "the derivative");
+    return v;
+  }
+
+  /// C''(u) for u in the domain over pairs of control points (detail::pair_second_derivative
+  /// on the span's p + 1 weighted basis functions and their derivatives, each divided by W
+  /// first) where the span's weights spread by more than 2^20
+  /// (detail::extreme_weight_spread: the quotient rule loses C'' where the curve hugs its
+  /// control polygon); nothing elsewhere, or where the result is not finite. Cost O(p^2 D).
+  [[nodiscard]] std::optional<VectorType> second_derivative(T u) const {
+    const auto& kv = h_.knot_vector();
+    const int p = kv.degree();
+    const std::size_t s = kv.find_span(u), first = s - static_cast<std::size_t>(p);
+    const auto np0 = static_cast<std::size_t>(p) + 1;
+    std::vector<T> ws(np0);
+    for (std::size_t j = 0; j < np0; ++j) ws[j] = h_.points()[first + j][D];
+    if (!detail::extreme_weight_spread(std::span<const T>(ws))) return std::nullopt;
+    const auto ders = basis_function_derivatives<T>(kv.knots(), p, s, u, 2);
+    const auto np = static_cast<std::size_t>(p) + 1;
+    std::vector<T> a(np), b(np), c(np, T(0));
+    T W = 0;
+    for (std::size_t j = 0; j < np; ++j) {
+      const T wj = h_.points()[first + j][D];
+      a[j] = wj * ders[0][j];
+      b[j] = wj * ders[1][j];
+      if (p >= 2) c[j] = wj * ders[2][j];
+      W += a[j];
+    }
+    for (std::size_t j = 0; j < np; ++j) {
+      a[j] /= W;
+      b[j] /= W;
+      c[j] /= W;
+    }
+    const VectorType v = detail::pair_second_derivative<T, D>(std::span<const PointType>(P_.data() + first, np), a, b, c);
+    if (!detail::all_finite(v)) return std::nullopt;
     return v;
   }
 

@@ -1,5 +1,6 @@
 // The first derivative of a rational Bézier curve and the bivector R' ^ R'' (its
-// curvature's numerator) on [0, 1] in forms that do not cancel, for weights of any spread.
+// curvature's numerator) on [0, 1] in forms that do not cancel, for weights of any spread;
+// the second derivative over pairs of control points (differences only).
 #pragma once
 
 #include <algorithm>
@@ -172,6 +173,72 @@ RationalJet<T, D> rational_jet(std::span<const Point<T, D>> P, std::span<const T
   for (T& v : out.b) v /= What * What * What;
   out.eb = M == none ? 0 : M - 3 * E + 2 * e0;
   return out;
+}
+
+/// R'' of a rational curve R = sum_i w_i N_i P_i / W from its weighted basis at a
+/// parameter: a_i = w_i N_i / W, b_i = w_i N_i' / W, c_i = w_i N_i'' / W (W = sum_i w_i N_i)
+/// and the control points P_i, as
+///   R'' = sum_(i<j) [(a_i c_j - c_i a_j) - 2 (a_i b_j - b_i a_j) beta] (P_j - P_i),
+/// beta = sum_i b_i = W' / W: the quotient rule's (A'' W - A W'') / W^2 - 2 W' (A' W - A W')
+/// / W^3 antisymmetrised over pairs of control points, so that only their differences
+/// appear (as the first derivative's pair sum). Where the curve hugs its control polygon
+/// (weights 1, 1e30, 1) R''(1/2) is (-8, -8) / w from terms of that size, where the
+/// quotient rule subtracts terms of size 1 (it gave 0). The points are halved before
+/// their differences (no overflow). Cost O(n^2 D) for n + 1 basis functions.
+template <class T, int D>
+Vector<T, D> pair_second_derivative(std::span<const Point<T, D>> P, std::span<const T> a, std::span<const T> b, std::span<const T> c) {
+  T beta = 0;
+  for (T x : b) beta += x;
+  Vector<T, D> v{};
+  for (std::size_t i = 0; i < P.size(); ++i)
+    for (std::size_t j = i + 1; j < P.size(); ++j) {
+      const T f = (a[i] * c[j] - c[i] * a[j]) - 2 * (a[i] * b[j] - b[i] * a[j]) * beta;
+      if (f == 0) continue;
+      Vector<T, D> d;
+      for (int k = 0; k < D; ++k) d[k] = P[j][k] / 2 - P[i][k] / 2;
+      v += f * d;
+    }
+  return T(2) * v;
+}
+
+/// Whether positive weights spread by more than 2^20 (largest over smallest): where the
+/// quotient rule starts to lose the second derivative of a curve hugging its control
+/// polygon. Below it the quotient rule is kept, so that ordinary rational curves (circles,
+/// conics) give the values they always gave.
+template <class T>
+bool extreme_weight_spread(std::span<const T> w) {
+  if (w.empty()) return false;
+  const auto [lo, hi] = std::minmax_element(w.begin(), w.end());
+  return *hi > T(1048576) * *lo;
+}
+
+/// R''(t) of the rational Bézier curve with points P and weights w > 0 at t in [0, 1]
+/// (pair_second_derivative on the Bernstein basis: B_i, B_i' = n (B^(n-1)_(i-1) -
+/// B^(n-1)_i), B_i'' = n (n - 1) (B^(n-2)_(i-2) - 2 B^(n-2)_(i-1) + B^(n-2)_i)).
+/// Weights as normalised (the largest in [0.5, 1)). Cost O(n^2 D).
+template <class T, int D>
+Vector<T, D> rational_second_derivative(std::span<const Point<T, D>> P, std::span<const T> w, T t) {
+  const int n = static_cast<int>(P.size()) - 1;
+  const T s = 1 - t;
+  auto bern = [&](int m, int i) -> T {
+    if (i < 0 || i > m) return 0;
+    return binomial<T>(m, i) * std::pow(t, i) * std::pow(s, m - i);
+  };
+  std::vector<T> a(P.size()), b(P.size()), c(P.size());
+  T W = 0;
+  for (int i = 0; i <= n; ++i) {
+    const auto u = static_cast<std::size_t>(i);
+    a[u] = w[u] * bern(n, i);
+    b[u] = w[u] * static_cast<T>(n) * (bern(n - 1, i - 1) - bern(n - 1, i));
+    c[u] = n >= 2 ? w[u] * static_cast<T>(n * (n - 1)) * (bern(n - 2, i - 2) - 2 * bern(n - 2, i - 1) + bern(n - 2, i)) : T(0);
+    W += a[u];
+  }
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    a[i] /= W;
+    b[i] /= W;
+    c[i] /= W;
+  }
+  return pair_second_derivative<T, D>(P, a, b, c);
 }
 
 /// Curvature from a jet: (x'y'' - y'x'') / |R'|^3 in the plane (signed), |R' ^ R''| /
