@@ -443,7 +443,8 @@ struct Raw {
 /// of a unit curve).
 ///
 /// Sampling: m = 33 equal parts of [a, b], and every part whose feet are more than 1.5 / m
-/// apart on the cubic halved (three times at most), so that both curves are sampled at
+/// apart on the cubic halved (three times at most; a part still that long fails the scan:
+/// the feet jump, over an excursion of the cubic that no normal line meets first), so that both curves are sampled at
 /// least as densely as 33 parts of either parameter (where the offset runs fast, near a
 /// sharp turn of the curve on its convex side, equal parts of t are long on it). The
 /// error of a fit is a smooth function with a few bumps (at most about four between the
@@ -567,10 +568,23 @@ NormalScan<T> normal_scan(const CubicForm<T>& F, const Source<T>& s, T a, T b, T
         self(self, tl, ul, tm, um, depth + 1);
         push(tm, um, em);
         self(self, tm, um, tr, ur, depth + 1);
+      } else if (ur - ul > gap) {
+        // Still long on the cubic after three halvings: the feet jump (the cubic makes an
+        // excursion that no normal line meets first, as a fit with a runaway handle can).
+        r.ok = false;
       }
     };
     fill(fill, t0[i], u0[i], t0[i + 1], u0[i + 1], 0);
     push(t0[i + 1], u0[i + 1], e0[i + 1]);
+  }
+  // A cubic whose control polygon is more than 2.5 times the length through its feet
+  // (a smooth cubic's is at most about 1.5 times its length: a half circle) may hide an
+  // excursion between two feet: measured by projections instead.
+  if (r.ok) {
+    T through = 0;
+    for (int k = 1; k < r.n; ++k) through += length(F.at(r.u[k]) - F.at(r.u[k - 1]));
+    const T polygon = length(F.P[1] - F.P[0]) + length(F.P[2] - F.P[1]) + length(F.P[3] - F.P[2]);
+    if (polygon > T(2.5) * through) r.ok = false;
   }
   return r;
 }
