@@ -391,6 +391,8 @@ def _bspline_init(self: Any, *args: Any, **kw: Any) -> None:
         raise Error(f"k: must be an integer, got {k!r}")
     pts, tail = _data(a["c"], a.get("axis", 0), "c")
     n = len(t) - int(k) - 1
+    if k >= 0 and len(pts) < int(k) + 1:
+        raise Error(f"c: needs at least k + 1 = {int(k) + 1} coefficients, got {len(pts)}")
     if n >= 1 and len(pts) > n:
         pts = pts[:n]  # scipy ignores the coefficients beyond len(t) - k - 1
     try:
@@ -511,6 +513,17 @@ def make_interp_spline(x: Any, y: Any, k: int = 3, t: Any = None, bc_type: Any =
     k = int(k)
     if len(x) != len(pts):
         raise Error(f"x: {len(x)} values but y has {len(pts)}")
+    # scipy: "Expect x to be a 1D strictly increasing sequence." (and finite data).
+    if x.ndim != 1:
+        raise Error(f"x: must be a 1-D array, got shape {x.shape}")
+    for i in range(len(x)):
+        if not np.isfinite(x[i]):
+            raise Error(f"x[{i}]: must be a finite number, got {x[i]}")
+        if i and not x[i] > x[i - 1]:
+            raise Error(f"x[{i}]: x must be strictly increasing, got x[{i - 1}] = {x[i - 1]:g} then {x[i]:g}")
+    bad, m_tail = np.flatnonzero(~np.isfinite(pts).all(axis=1)), tail != ()
+    if len(bad):
+        raise Error(f"y[{bad[0]}]: must be a finite number, got {pts[bad[0]] if m_tail else pts[bad[0]][0]}")
     m = pts.shape[1]
     periodic = isinstance(bc_type, str) and bc_type == "periodic"
     if periodic and len(pts) and not np.allclose(pts[0], pts[-1], atol=1e-15):

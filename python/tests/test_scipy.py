@@ -284,3 +284,27 @@ def test_make_interp_spline_even_degrees_with_knots(k):
     ours, theirs = casteljau.make_interp_spline(x, y, k=k, t=t), si.make_interp_spline(x, y, k=k, t=t)
     close(ours.c, theirs.c[: len(ours.c)])
     close(ours(XS), theirs(XS))
+
+
+def test_make_interp_spline_refuses_what_scipy_refuses():
+    # scipy 1.10: ValueError "Expect x to be a 1D strictly increasing sequence." for
+    # unsorted x and "Expect x to not have duplicates" for a repeated one; we accepted
+    # the unsorted x silently (a wrong spline) and reported a NaN in y as c[0].
+    for x in ([0, 2, 1, 3], [0, 1, 1, 3]):
+        with pytest.raises(ValueError):
+            si.make_interp_spline(x, [0, 1, 2, 3])
+        with pytest.raises(casteljau.Error, match=r"^x\[2\]: x must be strictly increasing"):
+            casteljau.make_interp_spline(x, [0, 1, 2, 3])
+    with pytest.raises(ValueError):  # scipy: "Array must not contain infs or nans."
+        si.make_interp_spline([0, 1, 2, 3], [0, 1, np.nan, 3])
+    with pytest.raises(casteljau.Error, match=r"^y\[2\]: must be a finite number"):
+        casteljau.make_interp_spline([0, 1, 2, 3], [0, 1, np.nan, 3])
+    with pytest.raises(casteljau.Error, match=r"^x\[1\]: must be a finite number"):
+        casteljau.make_interp_spline([0, np.nan, 2, 3], [0, 1, 2, 3])
+
+
+def test_bspline_with_too_few_coefficients_names_c():
+    with pytest.raises(ValueError):  # scipy: "Knots, coefficients and degree are inconsistent."
+        si.BSpline([0, 0, 0, 1, 1, 1], [1.0], 2)
+    with pytest.raises(casteljau.Error, match=r"^c: needs at least k \+ 1 = 3 coefficients, got 1$"):
+        casteljau.BSpline([0, 0, 0, 1, 1, 1], [1.0], 2)
