@@ -66,6 +66,7 @@ class PPoly:
         self.extrapolate = extrapolate
         lo, hi = curve.domain
         self._lo, self._hi = lo, hi
+        self._clip_integral = False  # True under a BSpline (scipy's BSpline.integrate clips)
 
     @property
     def curve(self) -> Curve:
@@ -121,7 +122,10 @@ class PPoly:
     def integrate(self, a: float, b: float, extrapolate: Any = None) -> np.ndarray:
         ext = self.extrapolate if extrapolate is None else extrapolate
         if ext is False:
-            a, b = (min(max(v, self._lo), self._hi) for v in (a, b))
+            if self._clip_integral:  # scipy's BSpline: the integral over [a, b] clipped to the base interval
+                a, b = (min(max(v, self._lo), self._hi) for v in (a, b))
+            elif not (self._lo <= a <= self._hi and self._lo <= b <= self._hi):
+                return np.full(self._tail, np.nan)  # scipy's PPoly: NaN once a or b leaves [x[0], x[-1]]
         F = _integral(self._curve)
         if ext == "periodic":
             return _periodic_integral(F, self._lo, self._hi, a, b).reshape(self._tail)
@@ -401,6 +405,7 @@ def _bspline_init(self: Any, *args: Any, **kw: Any) -> None:
         raise _renamed(e, {"knots": "t", "points": "c", "degree": "k"}, tail == ()) from None
     ext = a.get("extrapolate", True)
     self._sp = PPoly(Curve._wrap(self._c), tail, ext)
+    self._sp._clip_integral = True
     self.t, self.c, self.k = t, np.asarray(a["c"], dtype=np.float64), int(k)
     self.axis = a.get("axis", 0)
     self.extrapolate = ext

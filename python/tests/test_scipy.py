@@ -308,3 +308,24 @@ def test_bspline_with_too_few_coefficients_names_c():
         si.BSpline([0, 0, 0, 1, 1, 1], [1.0], 2)
     with pytest.raises(casteljau.Error, match=r"^c: needs at least k \+ 1 = 3 coefficients, got 1$"):
         casteljau.BSpline([0, 0, 0, 1, 1, 1], [1.0], 2)
+
+
+@pytest.mark.parametrize("name", ["CubicSpline", "PchipInterpolator", "Akima1DInterpolator", "BSpline"])
+def test_integrate_without_extrapolation_as_scipy(name):
+    # scipy 1.10's PPoly (CubicSpline, Pchip, Akima): NaN once a or b leaves [x[0], x[-1]]
+    # with extrapolate=False; its BSpline clips [a, b] to the base interval. We clipped
+    # for all four.
+    x, y = [0.0, 1.0, 2.0, 3.0], [0.0, 1.0, 4.0, 2.0]
+    if name == "BSpline":
+        theirs, ours = (mod.make_interp_spline(x, y, k=3) for mod in (si, casteljau))
+    else:
+        theirs, ours = getattr(si, name)(x, y), getattr(casteljau, name)(x, y)
+    ranges = [(0, 3), (-1, 2), (1, 4), (-1, 4), (3, 0), (4, 1), (0.5, 2.5), (3, 3), (-2, -1)]
+    for a, b in ranges:
+        want = theirs.integrate(a, b, extrapolate=False)
+        got = ours.integrate(a, b, extrapolate=False)
+        assert np.shape(got) == np.shape(want)
+        if name != "BSpline" and not (0 <= a <= 3 and 0 <= b <= 3):
+            assert np.isnan(want) and np.isnan(got)
+        else:
+            close(got, want, rel=1e-12)
