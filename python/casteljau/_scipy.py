@@ -198,7 +198,11 @@ def _end_roots(c: Curve) -> list:
         for k in range(n + 1):
             for i in range(k + 1):
                 coef[k] += math.comb(n, k) * math.comb(k, i) * (-1) ** (k - i) * P[i, 0]
-        nz = np.flatnonzero(coef)
+        # A leading coefficient of rounding size (linear data through a cubic spline leaves
+        # about 1e-15 on s^3 and s^2) is no degree: kept, it adds a root of size 1 / it
+        # (CubicSpline([0, 1, 2, 3], [0, 1, 2, 3]).roots() had one at 3.4e7). In s, every
+        # term is at most |coef| on the piece, so one below 1e-13 of the largest is noise.
+        nz = np.flatnonzero(np.abs(coef) > 1e-13 * np.max(np.abs(coef)))
         if len(nz) == 0 or nz[-1] == 0:
             continue
         for s in np.roots(coef[: nz[-1] + 1][::-1]):

@@ -329,3 +329,18 @@ def test_integrate_without_extrapolation_as_scipy(name):
             assert np.isnan(want) and np.isnan(got)
         else:
             close(got, want, rel=1e-12)
+
+
+def test_roots_of_lower_degree_data_have_no_rounding_roots():
+    # Linear data through a cubic spline leaves rounding-size s^3 and s^2 coefficients on
+    # the end pieces; kept, they gave a root near 1 / eps: [0, 3.36e7] where scipy 1.10
+    # says [0.]. On a finer grid scipy's own coefficients do the same (4.5e15 beside 1.5),
+    # so there the exact roots are the oracle.
+    close(casteljau.CubicSpline([0, 1, 2, 3], [0, 1, 2, 3]).roots(), si.CubicSpline([0, 1, 2, 3], [0, 1, 2, 3]).roots())
+    for x in ([0.0, 1.0, 2.0, 3.0], [0.0, 0.5, 2.0, 3.0, 7.0], np.linspace(-3, 5, 9)):
+        x = np.asarray(x)
+        for y, exact in ((x, [0.0]), (x - 1.5, [1.5]), (2.5 - x, [2.5]), (1e-3 * (x + 0.25), [-0.25]),
+                         ((x - 1) * (x - 2), [1.0, 2.0])):
+            for extrapolate in (True, False):
+                want = [r for r in exact if extrapolate or x[0] <= r <= x[-1]]
+                close(casteljau.CubicSpline(x, y).roots(extrapolate=extrapolate), want, rel=1e-9)
