@@ -132,20 +132,25 @@ class PPoly:
         return (F(b) - F(a)).reshape(self._tail)
 
     def roots(self, discontinuity: bool = True, extrapolate: Any = None) -> np.ndarray:
-        """The zeros of 1-D data, ascending (the registry's solve command on the domain; with
-        extrapolate, also those of the end pieces continued)."""
-        if self._tail not in ((), (1,)):
-            raise Error("roots: needs 1-D data (y of shape (n,)), got values of shape " + str(self._tail))
-        ext = self.extrapolate if extrapolate is None else extrapolate
-        r = self._curve.solve(0.0, 0)
-        roots = list(np.asarray(getattr(r, "t"), dtype=np.float64))
-        if ext is True:
-            roots += _end_roots(self._curve)
-        return np.array(sorted(roots), dtype=np.float64)
+        """The zeros of 1-D data, ascending: solve(0)."""
+        return self.solve(0.0, discontinuity, extrapolate)
 
     def solve(self, y: float = 0.0, discontinuity: bool = True, extrapolate: Any = None) -> np.ndarray:
-        r = self._curve.solve(float(y), 0)
-        return np.asarray(getattr(r, "t"), dtype=np.float64)
+        """scipy's PPoly.solve for 1-D data: the x where the function equals y, ascending
+        (the registry's solve command on the domain; with extrapolate=True, also those of
+        the end pieces continued beyond it)."""
+        if self._tail not in ((), (1,)):
+            raise Error("y: solve and roots need 1-D data (values of shape (n,)), got values of shape "
+                        + str(self._tail))
+        y = float(y)
+        if not math.isfinite(y):
+            raise Error(f"y: must be a finite number, got {y}")
+        ext = self.extrapolate if extrapolate is None else extrapolate
+        r = self._curve.solve(y, 0)
+        roots = list(np.asarray(getattr(r, "t"), dtype=np.float64))
+        if ext is True:
+            roots += _end_roots(self._curve, y)
+        return np.array(sorted(roots), dtype=np.float64)
 
 
 def _bezier_pieces(c: Curve) -> tuple[list, list]:
@@ -187,7 +192,7 @@ def _periodic_integral(F: Curve, lo: float, hi: float, a: float, b: float) -> np
     return sign * (periods * whole + part)
 
 
-def _end_roots(c: Curve) -> list:
+def _end_roots(c: Curve, y: float = 0.0) -> list:
     """The real zeros of the first piece continued below the domain and of the last above
     it (scipy's extrapolated roots), from the pieces' power forms."""
     breaks, pieces = _bezier_pieces(c)
@@ -198,6 +203,7 @@ def _end_roots(c: Curve) -> list:
         for k in range(n + 1):
             for i in range(k + 1):
                 coef[k] += math.comb(n, k) * math.comb(k, i) * (-1) ** (k - i) * P[i, 0]
+        coef[0] -= y
         # A leading coefficient of rounding size (linear data through a cubic spline leaves
         # about 1e-15 on s^3 and s^2) is no degree: kept, it adds a root of size 1 / it
         # (CubicSpline([0, 1, 2, 3], [0, 1, 2, 3]).roots() had one at 3.4e7). In s, every
@@ -249,6 +255,13 @@ class _ScipyCurve:
 
     def roots(self, discontinuity: bool = True, extrapolate: Any = None) -> np.ndarray:
         return (self._sp or PPoly(self, (self.dim,))).roots(discontinuity, extrapolate)
+
+    def solve(self, *args: Any, **kw: Any) -> Any:
+        """Made scipy's way: scipy's PPoly.solve(y, discontinuity=True, extrapolate=None);
+        otherwise the registry's solve(value, axis)."""
+        if self._sp is None:
+            return super().solve(*args, **kw)
+        return self._sp.solve(*args, **kw)
 
 
 def _restore(text: str, state: dict) -> Curve:

@@ -344,3 +344,25 @@ def test_roots_of_lower_degree_data_have_no_rounding_roots():
             for extrapolate in (True, False):
                 want = [r for r in exact if extrapolate or x[0] <= r <= x[-1]]
                 close(casteljau.CubicSpline(x, y).roots(extrapolate=extrapolate), want, rel=1e-9)
+
+
+def test_solve_as_scipys_ppoly_solve():
+    # scipy's PPoly.solve(y, discontinuity=True, extrapolate=None): the x where the 1-D
+    # function equals y (with extrapolate, on the end pieces continued too). Made scipy's
+    # way, CubicSpline(x, y).solve(y) used to reach the registry's solve(value, axis) and
+    # fail for want of an axis.
+    x = np.linspace(0.0, 4.0, 9)
+    y = np.cos(x)
+    for name in ("CubicSpline", "PchipInterpolator", "Akima1DInterpolator"):
+        ours, theirs = getattr(casteljau, name)(x, y), getattr(si, name)(x, y)
+        for level in (0.5, -0.25, 0.0):
+            for extrapolate in (None, True, False):
+                # scipy lists an end piece's extrapolated roots unsorted; ours ascend.
+                want = np.sort(theirs.solve(level, extrapolate=extrapolate))
+                close(ours.solve(level, extrapolate=extrapolate), want, rel=1e-10)
+            close(ours.derivative().solve(level), np.sort(theirs.derivative().solve(level)), rel=1e-10)
+    sq = np.arange(5.0)
+    close(casteljau.CubicSpline(sq, sq**2).solve(2.0), [-np.sqrt(2), np.sqrt(2)])  # scipy: [-1.414, 1.414]
+    # The library's own form keeps the registry's solve(value, axis).
+    c = casteljau.CubicSpline(params=sq, points=np.c_[sq, sq**2])
+    close(c.solve(value=2.0, axis=0).t, [2.0], rel=1e-12)  # x(t) = t: linear data
