@@ -150,7 +150,13 @@ class PPoly:
         roots = list(np.asarray(getattr(r, "t"), dtype=np.float64))
         if ext is True:
             roots += _end_roots(self._curve, y)
-        return np.array(sorted(roots), dtype=np.float64)
+        # A stretch where the function is identically y: scipy's "start point followed by
+        # nan" (the registry's solve reports it as an interval, not in t).
+        starts = [float(a) for a, _ in np.asarray(getattr(r, "intervals", np.zeros((0, 2))), dtype=np.float64).reshape(-1, 2)]
+        out = []
+        for v, stretch in sorted([(v, False) for v in roots] + [(a, True) for a in starts]):
+            out += [v, math.nan] if stretch else [v]
+        return np.array(out, dtype=np.float64)
 
 
 def _bezier_pieces(c: Curve) -> tuple[list, list]:
@@ -215,7 +221,9 @@ def _end_roots(c: Curve, y: float = 0.0) -> list:
             # A real root comes out of the companion matrix with an imaginary part of
             # rounding size (1e-12 relative: far above it, far below a true complex pair's).
             real = abs(s.imag) <= 1e-12 * max(1.0, abs(s.real))
-            if real and ((side < 0 and s.real < 0) or (side > 0 and s.real > 1)):
+            # Beyond the end by more than rounding: a root at the end itself comes from the
+            # domain's solve (kept here too, it was reported twice: 1 + 2e-16).
+            if real and ((side < 0 and s.real < -1e-12) or (side > 0 and s.real > 1 + 1e-12)):
                 out.append(a + s.real * (b - a))
     return out
 

@@ -366,3 +366,28 @@ def test_solve_as_scipys_ppoly_solve():
     # The library's own form keeps the registry's solve(value, axis).
     c = casteljau.CubicSpline(params=sq, points=np.c_[sq, sq**2])
     close(c.solve(value=2.0, axis=0).t, [2.0], rel=1e-12)  # x(t) = t: linear data
+
+
+def test_roots_of_an_identically_zero_piece_as_scipy():
+    # scipy's PPoly.roots: "If sections are identically zero, root list contains the start
+    # point of the interval followed by nan" (scipy 1.10: [0.99999999, 1, nan, 2] for
+    # this Pchip, the first and last from the neighbouring pieces). We reported nothing.
+    x, y = [0.0, 1.0, 2.0, 3.0], [2.0, 0.0, 0.0, 2.0]
+    theirs = si.PchipInterpolator(x, y).roots(extrapolate=False)
+    ours = casteljau.PchipInterpolator(x, y).roots(extrapolate=False)
+    assert np.isnan(ours).sum() == np.isnan(theirs).sum() == 1
+    i = int(np.flatnonzero(np.isnan(ours))[0])
+    assert ours[i - 1] == 1.0 and theirs[int(np.flatnonzero(np.isnan(theirs))[0]) - 1] == 1.0
+    assert np.all(np.abs(ours[np.isfinite(ours)] - 1.5) <= 0.5 + 1e-12)  # within [1, 2]
+
+
+def test_a_root_at_the_end_is_reported_once():
+    # The last piece's power form gave the root at x[-1] again as an extrapolated root
+    # (s = 1 + rounding): Pchip [2, 0, 0, 2] solve(2) had 3 twice; scipy 1.10 once.
+    x, y = [0.0, 1.0, 2.0, 3.0], [2.0, 0.0, 0.0, 2.0]
+    close(casteljau.PchipInterpolator(x, y).solve(2.0), si.PchipInterpolator(x, y).solve(2.0), rel=1e-10)
+    for ys in ([0.0, 1.0, 3.0, 2.0], [3.0, 1.0, -1.0, 0.0]):
+        for cls in ("CubicSpline", "PchipInterpolator"):
+            r = getattr(casteljau, cls)(x, ys).roots()
+            assert len(r) == len(np.unique(np.round(r, 9))), r
+            close(r, np.sort(getattr(si, cls)(x, ys).roots()), rel=1e-10)
