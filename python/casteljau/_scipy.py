@@ -66,6 +66,7 @@ class PPoly:
         self.extrapolate = extrapolate
         lo, hi = curve.domain
         self._lo, self._hi = lo, hi
+        self._clip_integral = False  # True under a BSpline (scipy's BSpline.integrate clips)
 
     @property
     def curve(self) -> Curve:
@@ -121,27 +122,41 @@ class PPoly:
     def integrate(self, a: float, b: float, extrapolate: Any = None) -> np.ndarray:
         ext = self.extrapolate if extrapolate is None else extrapolate
         if ext is False:
-            a, b = (min(max(v, self._lo), self._hi) for v in (a, b))
+            if self._clip_integral:  # scipy's BSpline: the integral over [a, b] clipped to the base interval
+                a, b = (min(max(v, self._lo), self._hi) for v in (a, b))
+            elif not (self._lo <= a <= self._hi and self._lo <= b <= self._hi):
+                return np.full(self._tail, np.nan)  # scipy's PPoly: NaN once a or b leaves [x[0], x[-1]]
         F = _integral(self._curve)
         if ext == "periodic":
             return _periodic_integral(F, self._lo, self._hi, a, b).reshape(self._tail)
         return (F(b) - F(a)).reshape(self._tail)
 
     def roots(self, discontinuity: bool = True, extrapolate: Any = None) -> np.ndarray:
-        """The zeros of 1-D data, ascending (the registry's solve command on the domain; with
-        extrapolate, also those of the end pieces continued)."""
-        if self._tail not in ((), (1,)):
-            raise Error("roots: needs 1-D data (y of shape (n,)), got values of shape " + str(self._tail))
-        ext = self.extrapolate if extrapolate is None else extrapolate
-        r = self._curve.solve(0.0, 0)
-        roots = list(np.asarray(getattr(r, "t"), dtype=np.float64))
-        if ext is True:
-            roots += _end_roots(self._curve)
-        return np.array(sorted(roots), dtype=np.float64)
+        """The zeros of 1-D data, ascending: solve(0)."""
+        return self.solve(0.0, discontinuity, extrapolate)
 
     def solve(self, y: float = 0.0, discontinuity: bool = True, extrapolate: Any = None) -> np.ndarray:
-        r = self._curve.solve(float(y), 0)
-        return np.asarray(getattr(r, "t"), dtype=np.float64)
+        """scipy's PPoly.solve for 1-D data: the x where the function equals y, ascending
+        (the registry's solve command on the domain; with extrapolate=True, also those of
+        the end pieces continued beyond it)."""
+        if self._tail not in ((), (1,)):
+            raise Error("y: solve and roots need 1-D data (values of shape (n,)), got values of shape "
+                        + str(self._tail))
+        y = float(y)
+        if not math.isfinite(y):
+            raise Error(f"y: must be a finite number, got {y}")
+        ext = self.extrapolate if extrapolate is None else extrapolate
+        r = self._curve.solve(y, 0)
+        roots = list(np.asarray(getattr(r, "t"), dtype=np.float64))
+        if ext is True:
+            roots += _end_roots(self._curve, y)
+        # A stretch where the function is identically y: scipy's "start point followed by
+        # nan" (the registry's solve reports it as an interval, not in t).
+        starts = [float(a) for a, _ in np.asarray(getattr(r, "intervals", np.zeros((0, 2))), dtype=np.float64).reshape(-1, 2)]
+        out = []
+        for v, stretch in sorted([(v, False) for v in roots] + [(a, True) for a in starts]):
+            out += [v, math.nan] if stretch else [v]
+        return np.array(out, dtype=np.float64)
 
 
 def _bezier_pieces(c: Curve) -> tuple[list, list]:
@@ -183,7 +198,7 @@ def _periodic_integral(F: Curve, lo: float, hi: float, a: float, b: float) -> np
     return sign * (periods * whole + part)
 
 
-def _end_roots(c: Curve) -> list:
+def _end_roots(c: Curve, y: float = 0.0) -> list:
     """The real zeros of the first piece continued below the domain and of the last above
     it (scipy's extrapolated roots), from the pieces' power forms."""
     breaks, pieces = _bezier_pieces(c)
@@ -194,14 +209,21 @@ def _end_roots(c: Curve) -> list:
         for k in range(n + 1):
             for i in range(k + 1):
                 coef[k] += math.comb(n, k) * math.comb(k, i) * (-1) ** (k - i) * P[i, 0]
-        nz = np.flatnonzero(coef)
+        coef[0] -= y
+        # A leading coefficient of rounding size (linear data through a cubic spline leaves
+        # about 1e-15 on s^3 and s^2) is no degree: kept, it adds a root of size 1 / it
+        # (CubicSpline([0, 1, 2, 3], [0, 1, 2, 3]).roots() had one at 3.4e7). In s, every
+        # term is at most |coef| on the piece, so one below 1e-13 of the largest is noise.
+        nz = np.flatnonzero(np.abs(coef) > 1e-13 * np.max(np.abs(coef)))
         if len(nz) == 0 or nz[-1] == 0:
             continue
         for s in np.roots(coef[: nz[-1] + 1][::-1]):
             # A real root comes out of the companion matrix with an imaginary part of
             # rounding size (1e-12 relative: far above it, far below a true complex pair's).
             real = abs(s.imag) <= 1e-12 * max(1.0, abs(s.real))
-            if real and ((side < 0 and s.real < 0) or (side > 0 and s.real > 1)):
+            # Beyond the end by more than rounding: a root at the end itself comes from the
+            # domain's solve (kept here too, it was reported twice: 1 + 2e-16).
+            if real and ((side < 0 and s.real < -1e-12) or (side > 0 and s.real > 1 + 1e-12)):
                 out.append(a + s.real * (b - a))
     return out
 
@@ -241,6 +263,13 @@ class _ScipyCurve:
 
     def roots(self, discontinuity: bool = True, extrapolate: Any = None) -> np.ndarray:
         return (self._sp or PPoly(self, (self.dim,))).roots(discontinuity, extrapolate)
+
+    def solve(self, *args: Any, **kw: Any) -> Any:
+        """Made scipy's way: scipy's PPoly.solve(y, discontinuity=True, extrapolate=None);
+        otherwise the registry's solve(value, axis)."""
+        if self._sp is None:
+            return super().solve(*args, **kw)
+        return self._sp.solve(*args, **kw)
 
 
 def _restore(text: str, state: dict) -> Curve:
@@ -391,6 +420,8 @@ def _bspline_init(self: Any, *args: Any, **kw: Any) -> None:
         raise Error(f"k: must be an integer, got {k!r}")
     pts, tail = _data(a["c"], a.get("axis", 0), "c")
     n = len(t) - int(k) - 1
+    if k >= 0 and len(pts) < int(k) + 1:
+        raise Error(f"c: needs at least k + 1 = {int(k) + 1} coefficients, got {len(pts)}")
     if n >= 1 and len(pts) > n:
         pts = pts[:n]  # scipy ignores the coefficients beyond len(t) - k - 1
     try:
@@ -399,6 +430,7 @@ def _bspline_init(self: Any, *args: Any, **kw: Any) -> None:
         raise _renamed(e, {"knots": "t", "points": "c", "degree": "k"}, tail == ()) from None
     ext = a.get("extrapolate", True)
     self._sp = PPoly(Curve._wrap(self._c), tail, ext)
+    self._sp._clip_integral = True
     self.t, self.c, self.k = t, np.asarray(a["c"], dtype=np.float64), int(k)
     self.axis = a.get("axis", 0)
     self.extrapolate = ext
@@ -511,6 +543,17 @@ def make_interp_spline(x: Any, y: Any, k: int = 3, t: Any = None, bc_type: Any =
     k = int(k)
     if len(x) != len(pts):
         raise Error(f"x: {len(x)} values but y has {len(pts)}")
+    # scipy: "Expect x to be a 1D strictly increasing sequence." (and finite data).
+    if x.ndim != 1:
+        raise Error(f"x: must be a 1-D array, got shape {x.shape}")
+    for i in range(len(x)):
+        if not np.isfinite(x[i]):
+            raise Error(f"x[{i}]: must be a finite number, got {x[i]}")
+        if i and not x[i] > x[i - 1]:
+            raise Error(f"x[{i}]: x must be strictly increasing, got x[{i - 1}] = {x[i - 1]:g} then {x[i]:g}")
+    bad, m_tail = np.flatnonzero(~np.isfinite(pts).all(axis=1)), tail != ()
+    if len(bad):
+        raise Error(f"y[{bad[0]}]: must be a finite number, got {pts[bad[0]] if m_tail else pts[bad[0]][0]}")
     m = pts.shape[1]
     periodic = isinstance(bc_type, str) and bc_type == "periodic"
     if periodic and len(pts) and not np.allclose(pts[0], pts[-1], atol=1e-15):

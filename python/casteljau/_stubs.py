@@ -69,8 +69,13 @@ def stub_text() -> str:
             lines.append(f"    def {name}(self{', ' if params else ''}{params}) -> Any: ...")
         else:
             params = _params(fields)
-            functions.append(f"def {name}(*curves: Curve, {params}) -> Any: ..."
-                             if fields and fields[0][1] == "curve[]" else f"def {name}({params}) -> Any: ...")
+            if fields and fields[0][1] == "curve[]":
+                # distance(a, b) or distance(curves=[a, b]): the leading curves gathered.
+                rest = _params(fields[1:])
+                functions.append(f"def {name}(*args: Any, {fields[0][0]}: Sequence[Curve] = ..."
+                                 f"{', ' if rest else ''}{rest}) -> Any: ...")
+            else:
+                functions.append(f"def {name}({params}) -> Any: ...")
     lines.append("")
     for json_name, class_name, fields in _casteljau.curve_types():
         params = ", ".join(f"{f}: Any = ..." for f in fields if f != "type")

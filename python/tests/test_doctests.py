@@ -27,6 +27,7 @@ def test_type_stubs_are_current():
     stub = pathlib.Path(casteljau.__file__).with_name("__init__.pyi")
     text = stub.read_text()
     assert text == _stubs.stub_text()  # written by the build from this registry
+    compile(text, str(stub), "exec")  # valid Python (once: "duplicate argument 'curves'")
     names = {n.name for n in ast.parse(text).body if isinstance(n, (ast.ClassDef, ast.FunctionDef))}
     assert {cls for _, cls, _ in _casteljau.curve_types()} <= names
     assert {"intersect", "distance", "fit", "subdivide", "make_interp_spline"} <= names

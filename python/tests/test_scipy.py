@@ -284,3 +284,110 @@ def test_make_interp_spline_even_degrees_with_knots(k):
     ours, theirs = casteljau.make_interp_spline(x, y, k=k, t=t), si.make_interp_spline(x, y, k=k, t=t)
     close(ours.c, theirs.c[: len(ours.c)])
     close(ours(XS), theirs(XS))
+
+
+def test_make_interp_spline_refuses_what_scipy_refuses():
+    # scipy 1.10: ValueError "Expect x to be a 1D strictly increasing sequence." for
+    # unsorted x and "Expect x to not have duplicates" for a repeated one; we accepted
+    # the unsorted x silently (a wrong spline) and reported a NaN in y as c[0].
+    for x in ([0, 2, 1, 3], [0, 1, 1, 3]):
+        with pytest.raises(ValueError):
+            si.make_interp_spline(x, [0, 1, 2, 3])
+        with pytest.raises(casteljau.Error, match=r"^x\[2\]: x must be strictly increasing"):
+            casteljau.make_interp_spline(x, [0, 1, 2, 3])
+    with pytest.raises(ValueError):  # scipy: "Array must not contain infs or nans."
+        si.make_interp_spline([0, 1, 2, 3], [0, 1, np.nan, 3])
+    with pytest.raises(casteljau.Error, match=r"^y\[2\]: must be a finite number"):
+        casteljau.make_interp_spline([0, 1, 2, 3], [0, 1, np.nan, 3])
+    with pytest.raises(casteljau.Error, match=r"^x\[1\]: must be a finite number"):
+        casteljau.make_interp_spline([0, np.nan, 2, 3], [0, 1, 2, 3])
+
+
+def test_bspline_with_too_few_coefficients_names_c():
+    with pytest.raises(ValueError):  # scipy: "Knots, coefficients and degree are inconsistent."
+        si.BSpline([0, 0, 0, 1, 1, 1], [1.0], 2)
+    with pytest.raises(casteljau.Error, match=r"^c: needs at least k \+ 1 = 3 coefficients, got 1$"):
+        casteljau.BSpline([0, 0, 0, 1, 1, 1], [1.0], 2)
+
+
+@pytest.mark.parametrize("name", ["CubicSpline", "PchipInterpolator", "Akima1DInterpolator", "BSpline"])
+def test_integrate_without_extrapolation_as_scipy(name):
+    # scipy 1.10's PPoly (CubicSpline, Pchip, Akima): NaN once a or b leaves [x[0], x[-1]]
+    # with extrapolate=False; its BSpline clips [a, b] to the base interval. We clipped
+    # for all four.
+    x, y = [0.0, 1.0, 2.0, 3.0], [0.0, 1.0, 4.0, 2.0]
+    if name == "BSpline":
+        theirs, ours = (mod.make_interp_spline(x, y, k=3) for mod in (si, casteljau))
+    else:
+        theirs, ours = getattr(si, name)(x, y), getattr(casteljau, name)(x, y)
+    ranges = [(0, 3), (-1, 2), (1, 4), (-1, 4), (3, 0), (4, 1), (0.5, 2.5), (3, 3), (-2, -1)]
+    for a, b in ranges:
+        want = theirs.integrate(a, b, extrapolate=False)
+        got = ours.integrate(a, b, extrapolate=False)
+        assert np.shape(got) == np.shape(want)
+        if name != "BSpline" and not (0 <= a <= 3 and 0 <= b <= 3):
+            assert np.isnan(want) and np.isnan(got)
+        else:
+            close(got, want, rel=1e-12)
+
+
+def test_roots_of_lower_degree_data_have_no_rounding_roots():
+    # Linear data through a cubic spline leaves rounding-size s^3 and s^2 coefficients on
+    # the end pieces; kept, they gave a root near 1 / eps: [0, 3.36e7] where scipy 1.10
+    # says [0.]. On a finer grid scipy's own coefficients do the same (4.5e15 beside 1.5),
+    # so there the exact roots are the oracle.
+    close(casteljau.CubicSpline([0, 1, 2, 3], [0, 1, 2, 3]).roots(), si.CubicSpline([0, 1, 2, 3], [0, 1, 2, 3]).roots())
+    for x in ([0.0, 1.0, 2.0, 3.0], [0.0, 0.5, 2.0, 3.0, 7.0], np.linspace(-3, 5, 9)):
+        x = np.asarray(x)
+        for y, exact in ((x, [0.0]), (x - 1.5, [1.5]), (2.5 - x, [2.5]), (1e-3 * (x + 0.25), [-0.25]),
+                         ((x - 1) * (x - 2), [1.0, 2.0])):
+            for extrapolate in (True, False):
+                want = [r for r in exact if extrapolate or x[0] <= r <= x[-1]]
+                close(casteljau.CubicSpline(x, y).roots(extrapolate=extrapolate), want, rel=1e-9)
+
+
+def test_solve_as_scipys_ppoly_solve():
+    # scipy's PPoly.solve(y, discontinuity=True, extrapolate=None): the x where the 1-D
+    # function equals y (with extrapolate, on the end pieces continued too). Made scipy's
+    # way, CubicSpline(x, y).solve(y) used to reach the registry's solve(value, axis) and
+    # fail for want of an axis.
+    x = np.linspace(0.0, 4.0, 9)
+    y = np.cos(x)
+    for name in ("CubicSpline", "PchipInterpolator", "Akima1DInterpolator"):
+        ours, theirs = getattr(casteljau, name)(x, y), getattr(si, name)(x, y)
+        for level in (0.5, -0.25, 0.0):
+            for extrapolate in (None, True, False):
+                # scipy lists an end piece's extrapolated roots unsorted; ours ascend.
+                want = np.sort(theirs.solve(level, extrapolate=extrapolate))
+                close(ours.solve(level, extrapolate=extrapolate), want, rel=1e-10)
+            close(ours.derivative().solve(level), np.sort(theirs.derivative().solve(level)), rel=1e-10)
+    sq = np.arange(5.0)
+    close(casteljau.CubicSpline(sq, sq**2).solve(2.0), [-np.sqrt(2), np.sqrt(2)])  # scipy: [-1.414, 1.414]
+    # The library's own form keeps the registry's solve(value, axis).
+    c = casteljau.CubicSpline(params=sq, points=np.c_[sq, sq**2])
+    close(c.solve(value=2.0, axis=0).t, [2.0], rel=1e-12)  # x(t) = t: linear data
+
+
+def test_roots_of_an_identically_zero_piece_as_scipy():
+    # scipy's PPoly.roots: "If sections are identically zero, root list contains the start
+    # point of the interval followed by nan" (scipy 1.10: [0.99999999, 1, nan, 2] for
+    # this Pchip, the first and last from the neighbouring pieces). We reported nothing.
+    x, y = [0.0, 1.0, 2.0, 3.0], [2.0, 0.0, 0.0, 2.0]
+    theirs = si.PchipInterpolator(x, y).roots(extrapolate=False)
+    ours = casteljau.PchipInterpolator(x, y).roots(extrapolate=False)
+    assert np.isnan(ours).sum() == np.isnan(theirs).sum() == 1
+    i = int(np.flatnonzero(np.isnan(ours))[0])
+    assert ours[i - 1] == 1.0 and theirs[int(np.flatnonzero(np.isnan(theirs))[0]) - 1] == 1.0
+    assert np.all(np.abs(ours[np.isfinite(ours)] - 1.5) <= 0.5 + 1e-12)  # within [1, 2]
+
+
+def test_a_root_at_the_end_is_reported_once():
+    # The last piece's power form gave the root at x[-1] again as an extrapolated root
+    # (s = 1 + rounding): Pchip [2, 0, 0, 2] solve(2) had 3 twice; scipy 1.10 once.
+    x, y = [0.0, 1.0, 2.0, 3.0], [2.0, 0.0, 0.0, 2.0]
+    close(casteljau.PchipInterpolator(x, y).solve(2.0), si.PchipInterpolator(x, y).solve(2.0), rel=1e-10)
+    for ys in ([0.0, 1.0, 3.0, 2.0], [3.0, 1.0, -1.0, 0.0]):
+        for cls in ("CubicSpline", "PchipInterpolator"):
+            r = getattr(casteljau, cls)(x, ys).roots()
+            assert len(r) == len(np.unique(np.round(r, 9))), r
+            close(r, np.sort(getattr(si, cls)(x, ys).roots()), rel=1e-10)
