@@ -204,12 +204,13 @@ constexpr Command ops_family[] = {
      "where the two tangent lines meet; two quadratics joined smoothly where the lines of a\n"
      "space curve are skew). Joints are tangent-continuous wherever the curve is (input\n"
      "joints within 1e-6 rad get one shared direction); corners stay corners. Each segment's\n"
-     "distance to the part it replaces is bounded (33 samples with their nearest points on\n"
-     "the quadratic, plus a second-derivative margin between samples) within the tolerance.",
+     "distance to the part it replaces is bounded (5, 9, 17 or 33 samples, coarse to fine,\n"
+     "with their nearest points on the quadratic, plus a second-derivative margin between\n"
+     "samples) within the tolerance.",
      "curve: a path of quadratic bezier segments (3 points each), breaks at the curve's\n"
      "          parameters of the joints",
      R"(  echo '{"curve": {"type": "bezier", "points": [[0,0],[1,2],[3,2],[4,0]]}, "tolerance": 0.1}' | casteljau to_quadratic
-  {"curve":{"type":"path","segments":[{"type":"bezier","points":[[0.0,0.0],[1.145920186378826,2.291840372757652],[2.924262442471251,1.2367163775457746]]},{"type":"bezier","points":[[2.924262442471251,1.2367163775457746],[3.5745581702817137,0.8508836594365725],[4.0,0.0]]}],"breaks":[0.0,0.7094769766403242,1.0]}})",
+  {"curve":{"type":"path","segments":[{"type":"bezier","points":[[0.0,0.0],[1.1457793131793075,2.291558626358615],[2.9239891040175268,1.2368785263278665]]},{"type":"bezier","points":[[2.9239891040175268,1.2368785263278665],[3.5744631949108916,0.8510736101782175],[4.0,0.0]]}],"breaks":[0.0,0.709412461294345,1.0]}})",
      to_quadratic_fields, to_quadratic},
     {"basis", "Values and derivatives of the basis functions of a kind",
      "The basis functions of `kind` at each t: bernstein B(i, n) (degree n), bspline N(i, p)\n"
@@ -240,7 +241,8 @@ constexpr Command ops_family[] = {
      "The curve moved by `distance` d along its unit normal (positive: to the left of the\n"
      "direction of travel), C(t) + d N(t), as a path of cubic bezier segments within\n"
      "`tolerance` of it, measured both ways (each cubic against its stretch of the exact\n"
-     "offset, by projected samples). The curve's exact pieces are cut at their cusps and\n"
+     "offset along the curve's normal lines, or by projected samples where those miss the\n"
+     "cubic). The curve's exact pieces are cut at their cusps and\n"
      "where the offset has cusps (1 - d kappa = 0, kappa > 0 turning left); each stretch gets the longest cubics\n"
      "the tolerance allows. Corners of the input get `join` on their outer side (round:\n"
      "an arc of radius |d|; miter, a bevel beyond miter_limit; bevel); the inner side a\n"
