@@ -354,6 +354,33 @@ def test_derivative_tables_against_the_librarys_derivatives():
         np.testing.assert_array_equal(c(t[5], nu=2), c(t, nu=2)[5])
 
 
+def test_second_derivative_at_extreme_weights():
+    # The conic (1, 0), (1, 1), (0, 1) with weights [1, w, 1] at t = 1/2, against the
+    # quotient rule in exact rational arithmetic (the plain quotient rule in double gave 0
+    # from w = 1e16 on): the array path answers as the library's extreme-weight forms do.
+    from fractions import Fraction as F
+
+    def exact(w):
+        t = F(1, 2)
+        B = [(1 - t) ** 2, 2 * t * (1 - t), t * t]
+        B1 = [-2 * (1 - t), 2 - 4 * t, 2 * t]
+        B2 = [F(2), F(-4), F(2)]
+        W = [F(1), F(w), F(1)]
+        out = []
+        for P in ([1, 1, 0], [0, 1, 1]):
+            a, a1, a2 = (sum(b[i] * W[i] * P[i] for i in range(3)) for b in (B, B1, B2))
+            d, d1, d2 = (sum(b[i] * W[i] for i in range(3)) for b in (B, B1, B2))
+            # R = a / d: R'' = (a2 - 2 d1 R' - d2 R) / d, R' = (a1 - d1 R) / d
+            r = a / d
+            r1 = (a1 - d1 * r) / d
+            out.append(float((a2 - 2 * d1 * r1 - d2 * r) / d))
+        return out
+
+    for w in (10**8, 10**16, 10**30, 10**100):
+        c = casteljau.RationalBezier([[1, 0], [1, 1], [0, 1]], [1, float(w), 1])
+        np.testing.assert_allclose(c(np.array([0.5]), nu=2)[0], exact(w), rtol=1e-14)
+
+
 def test_rational_derivatives_on_the_circle():
     """The quarter circle (weights 1, cos 45 deg, 1): |C| = 1, C . C' = 0 and, differentiated
     once more, C . C'' + |C'|^2 = 0; beyond orders of the degree the table still answers."""

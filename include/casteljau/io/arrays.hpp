@@ -50,7 +50,10 @@ class DerivativeTable {
 
   /// The order-k derivatives at t into out (t.size() rows of the curve's dimension):
   /// false, with out unspecified, when a parameter or a value is not finite (the caller
-  /// then reports the error, e.g. through io::derivatives, which names the parameter).
+  /// then reports the error, e.g. through io::derivatives, which names the parameter), and
+  /// for derivatives (k >= 1) of a curve with a rational piece whose weights spread beyond
+  /// 2^20 (the table's quotient rule would lose them: io::derivatives uses the library's
+  /// forms for such weights).
   /// Const, allocates only its scratch: threads may share a table.
   [[nodiscard]] bool evaluate(std::span<const double> t, double* out) const;
 
@@ -61,6 +64,7 @@ class DerivativeTable {
   int k_;
   int d_ = 0;
   bool rational_ = false;
+  bool declined_ = false;  ///< extreme weights and k >= 1: evaluate() always returns false
   std::vector<double> breaks_;
   std::vector<int> degree_;          ///< per piece
   std::vector<std::size_t> starts_;  ///< per piece: its first number in coef_
