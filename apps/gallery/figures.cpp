@@ -46,18 +46,13 @@ P2 nearest(const P2& p, std::span<const P2> pts) {
   return *std::min_element(pts.begin(), pts.end(), [&](const P2& a, const P2& b) { return distance(p, a) < distance(p, b); });
 }
 
-double distance_to_polyline(const P2& p, std::span<const P2> poly) {
-  double d = distance(p, poly.front());
-  for (std::size_t i = 1; i < poly.size(); ++i) d = std::min(d, distance_to_segment(p, poly[i - 1], poly[i]));
-  return d;
-}
-
 /// One-sided distance from a control polygon to the curve: the farthest of 40 samples per
 /// polygon edge from a flattening of the curve within 1e-7 (accurate to about that).
 double polygon_to_curve(std::span<const P2> polygon, const std::vector<P2>& curve_polyline) {
+  const NearestOn curve(curve_polyline, true);
   double d = 0;
   for (std::size_t i = 1; i < polygon.size(); ++i) {
-    for (int k = 0; k <= 40; ++k) d = std::max(d, distance_to_polyline(lerp(polygon[i - 1], polygon[i], k / 40.0), curve_polyline));
+    for (int k = 0; k <= 40; ++k) d = std::max(d, curve.distance(lerp(polygon[i - 1], polygon[i], k / 40.0)));
   }
   return d;
 }
@@ -913,11 +908,12 @@ Figure pieces_of_a_path() {
   // Measured claims: the pieces trace the path (points at 4001 parameters), the flattened
   // polyline is within the tolerance of 4001 samples, the box holds every sample.
   double trace = 0, flat = 0, outside = 0;
+  const NearestOn flattened(poly, true);
   for (int k = 0; k <= 4000; ++k) {
     const double u = path.domain().at(k / 4000.0);
     const P2 a = path(u);
     trace = std::max(trace, distance(a, p(u)));
-    flat = std::max(flat, distance_to_polyline(a, poly));
+    flat = std::max(flat, flattened.distance(a));
     for (int d = 0; d < 2; ++d) outside = std::max({outside, tb.lo[d] - a[d], a[d] - tb.hi[d]});
   }
   std::string br;

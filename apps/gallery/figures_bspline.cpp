@@ -38,12 +38,9 @@ double polygon_distance(const std::vector<P2>& Q, const BSpline<double, 2>& c) {
   std::vector<P2> S;
   const auto [lo, hi] = c.domain();
   for (int i = 0; i <= 20000; ++i) S.push_back(c(lo + (hi - lo) * i / 20000));
+  const NearestOn samples(S, false);
   double worst = 0;
-  for (const auto& q : Q) {
-    double best = INFINITY;
-    for (const auto& s : S) best = std::min(best, distance(q, s));
-    worst = std::max(worst, best);
-  }
+  for (const auto& q : Q) worst = std::max(worst, samples.distance(q));
   return worst;
 }
 

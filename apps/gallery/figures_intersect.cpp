@@ -24,13 +24,9 @@ const std::string second = "#2a9d8f";
 
 template <class C>
 double deviation(const C& c, const std::vector<P2>& poly) {
+  const NearestOn polyline(poly, true);
   double worst = 0;
-  for (int k = 0; k <= 4000; ++k) {
-    const P2 q = c(k / 4000.0);
-    double d = 1e300;
-    for (std::size_t i = 0; i + 1 < poly.size(); ++i) d = std::min(d, distance_to_segment(q, poly[i], poly[i + 1]));
-    worst = std::max(worst, d);
-  }
+  for (int k = 0; k <= 4000; ++k) worst = std::max(worst, polyline.distance(c(k / 4000.0)));
   return worst;
 }
 

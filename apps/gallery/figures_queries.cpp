@@ -32,13 +32,15 @@ Figure closest_points() {
   // nearest points: it lies on the medial axis) in the accent colour with every segment.
   double worst = 0;  // how much nearer than project's answer the best of 2001 samples is
   int ties = 0, total = 0;
+  std::vector<P2> dense;
+  for (int k = 0; k <= 2000; ++k) dense.push_back(c(k / 2000.0));
   for (int i = 0; i <= 22; ++i) {
     for (int j = 0; j <= 12; ++j) {
       const P2 q(box.lo[0] - 0.3 + i * (box.hi[0] - box.lo[0] + 0.6) / 22, box.lo[1] - 0.5 + j * (box.hi[1] - box.lo[1] + 1.0) / 12);
       const auto r = project(c, q);
       ++total;
       double best = r.distance;
-      for (int k = 0; k <= 2000; ++k) best = std::min(best, distance(c(k / 2000.0), q));
+      for (const P2& s : dense) best = std::min(best, distance(s, q));
       worst = std::max(worst, r.distance - best);
       const bool tie = !r.all_t.empty();
       ties += tie;

@@ -36,9 +36,21 @@ function(check_serve exe)
   endif()
 endfunction()
 
+# `casteljau glyph` loads the fonts module (casteljau-fonts.so, beside the server's): the
+# outline of a space in DejaVu Sans is empty, its advance 651 font units.
+set(glyph_request "${WORK_DIR}/glyph.json")
+file(WRITE "${glyph_request}" [=[{"font": "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf", "text": " "}]=])
+function(check_glyph exe)
+  run("${exe}" glyph "${glyph_request}")
+  if(NOT run_output MATCHES [=["advance":651\.0,"curve":null]=])
+    message(FATAL_ERROR "${exe} glyph answered: ${run_output}")
+  endif()
+endfunction()
+
 run(${CMAKE_COMMAND} --install "${BUILD_DIR}" --prefix "${prefix}")
 check_program("${prefix}/bin/casteljau")
 check_serve("${prefix}/bin/casteljau")
+check_glyph("${prefix}/bin/casteljau")
 # No build type (no optimisation): the check is that the package's targets configure, compile
 # and link; -O3 would only add about 8 s of CPU to every make test. With clang (installed for
 # the sanitizer build) when present: 8.4 s of CPU against g++'s 13.4 s (session 12); the
@@ -68,8 +80,8 @@ if(NOT count EQUAL 1)
   message(FATAL_ERROR "expected one casteljau_*.deb in ${deb_dir}, found: ${debs}")
 endif()
 run(dpkg-deb --field "${debs}" Package Depends)
-# libc6, libstdc++6 and libharfbuzz0b from dpkg-shlibdeps on the program (it links HarfBuzz
-# for glyph kerning), libeigen3-dev from the package's declared list.
+# libc6, libstdc++6 and libharfbuzz0b from dpkg-shlibdeps on the program and its modules (the
+# fonts module links HarfBuzz for glyph kerning), libeigen3-dev from the package's declared list.
 if(NOT run_output MATCHES "Package: casteljau" OR NOT run_output MATCHES "libeigen3-dev" OR NOT run_output MATCHES "libc6 \\(>="
    OR NOT run_output MATCHES "libstdc\\+\\+6 \\(>=" OR NOT run_output MATCHES "libharfbuzz0b")
   message(FATAL_ERROR "unexpected package fields:\n${run_output}")
@@ -85,3 +97,4 @@ if(NOT installed STREQUAL packaged)
 endif()
 check_program("${root}/usr/bin/casteljau")
 check_serve("${root}/usr/bin/casteljau")
+check_glyph("${root}/usr/bin/casteljau")
