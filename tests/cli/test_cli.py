@@ -6,12 +6,15 @@ Usage: test_cli.py PATH_TO_CASTELJAU [unittest options]
 Expected values come from closed forms and a small de Casteljau written here, never from
 the program under test. Standard library only.
 """
+import atexit
 import json
 import math
 import os
+import select
 import subprocess
 import sys
 import tempfile
+import time
 import unittest
 
 BINARY = None  # set from argv in __main__
@@ -41,6 +44,69 @@ def run_jsonl(command, requests):
     text = "".join(json.dumps(r) + "\n" for r in requests)
     rc, out, err = run(command, args=["--jsonl"], text=text)
     return rc, [json.loads(line) for line in out.splitlines()], err
+
+class Session:
+    """One `casteljau COMMAND --jsonl` process kept open for many requests: a request line
+    in, its response line out (the program flushes each). The feature scripts send their
+    valid requests through sessions (CliTest.ok): a process start is about 11 ms of CPU and
+    the scripts make thousands of requests. The answers are the same bytes as a process per
+    request gives (both print apps/cli/request.cpp's answer()); the contract of a single
+    request (exit status, stderr) is tested by test_cli.py and by every `bad` call, which
+    keep a process each."""
+
+    def __init__(self, command):
+        self.command = command
+        self.errors = tempfile.TemporaryFile()
+        self.process = subprocess.Popen([BINARY, command, "--jsonl"], stdin=subprocess.PIPE, stdout=subprocess.PIPE,
+                                        stderr=self.errors)
+        self.pending = b""
+
+    def ask(self, request, timeout=30):
+        """The response line to one request (a dict), or raises AssertionError with what
+        went wrong (the process ended, wrote to stderr, or took longer than timeout s)."""
+        self.process.stdin.write(json.dumps(request).encode() + b"\n")
+        self.process.stdin.flush()
+        deadline = time.monotonic() + timeout
+        fd = self.process.stdout.fileno()
+        while b"\n" not in self.pending:
+            left = deadline - time.monotonic()
+            if left <= 0 or not select.select([fd], [], [], left)[0]:
+                raise AssertionError(f"{self.command} --jsonl: no response within {timeout} s")
+            chunk = os.read(fd, 1 << 16)
+            if not chunk:
+                raise AssertionError(f"{self.command} --jsonl ended (status {self.process.wait()})")
+            self.pending += chunk
+        line, self.pending = self.pending.split(b"\n", 1)
+        if os.fstat(self.errors.fileno()).st_size:
+            self.errors.seek(0)
+            raise AssertionError(f"{self.command} --jsonl wrote to stderr: {self.errors.read().decode()!r}")
+        return line.decode() + "\n"
+
+    def close(self):
+        self.process.stdin.close()
+        self.process.wait()
+        self.process.stdout.close()
+        self.errors.close()
+
+
+SESSIONS = {}  # command -> Session, for CliTest.ok; test_cli.py's own tests start a process each
+USE_SESSIONS = True
+NO_SESSION = ("render", "surface_mesh")  # responses that are not JSON outside --jsonl
+
+
+@atexit.register
+def _close_sessions():
+    for s in SESSIONS.values():
+        s.close()
+
+
+def answer(command, request):
+    """The response line of a valid request through the command's session."""
+    s = SESSIONS.get(command)
+    if s is None:
+        s = SESSIONS[command] = Session(command)
+    return s.ask(request)
+
 
 # ---------------------------------------------------------------------------------------
 # Reference geometry, written independently of the library.
@@ -110,6 +176,14 @@ def bezier(points, **extra):
 
 class CliTest(unittest.TestCase):
     def ok(self, command, request, args=()):
+        if USE_SESSIONS and not args and command not in NO_SESSION:
+            out = answer(command, request)
+            response = json.loads(out)
+            if isinstance(response, dict) and list(response) == ["error"]:
+                # --jsonl's error line: the request's own process gives the message.
+                rc, _, err = run(command, request)
+                self.fail(f"{command}: status {rc}: {err or response['error']}")
+            return response
         rc, out, err = run(command, request, args)
         self.assertEqual(rc, 0, err)
         self.assertEqual(err, "")
@@ -641,4 +715,5 @@ class BadInputTest(CliTest):
 
 if __name__ == "__main__":
     BINARY = os.path.abspath(sys.argv.pop(1))
+    USE_SESSIONS = False  # the contract of one request: a process each
     unittest.main(verbosity=1)
