@@ -9,6 +9,7 @@ Usage: test_explorer.py PATH_TO_CASTELJAU [unittest options]
 Skips (exit status 77) only when chromium or chromedriver is not installed.
 """
 import json
+import math
 import os
 import shutil
 import sys
@@ -20,6 +21,7 @@ import test_serve  # noqa: E402  (the server fixture)
 CHROMIUM = shutil.which("chromium") or "/usr/bin/chromium"
 CHROMEDRIVER = shutil.which("chromedriver") or "/usr/bin/chromedriver"
 SKIP = 77  # ctest's SKIP_RETURN_CODE for this test
+FONTS = "/usr/share/fonts/truetype/dejavu"
 
 
 def fmt(x):
@@ -37,7 +39,9 @@ class ExplorerTest(unittest.TestCase):
         from selenium import webdriver
         from selenium.webdriver.chrome.service import Service
 
-        cls.server = test_serve.Server()
+        # The fonts the import view's text outlines read (glyph is served with --font-dir).
+        cls.fonts = FONTS if os.path.exists(os.path.join(FONTS, "DejaVuSans.ttf")) else None
+        cls.server = test_serve.Server(*(["--font-dir", cls.fonts] if cls.fonts else []))
         options = webdriver.ChromeOptions()
         options.binary_location = CHROMIUM
         for arg in ("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage", "--window-size=1000,800",
@@ -447,6 +451,146 @@ class ExplorerTest(unittest.TestCase):
         self.assertEqual(self.text("im-shapes"), "#c: 1 subpath")
         self.assertEqual(self.text("im-skipped"), "text")
         self.driver.save_screenshot("explorer-import.png")
+        self.no_console_errors()
+
+    # Session 13's views: one drag each, the drawing against the server's answers asked here.
+
+    def test_affine_view(self):
+        self.show_view("affine")
+        self.drag(self.handles("af")[1], 30, 40)
+        pts = self.points("af")
+        self.assertNotEqual(pts[1], [1.6, 4.6])
+        # The map from the sliders' values, written here (rotation of scale and shear, then
+        # moved by (5.6, 0.4)); the page's mapped control points are its image (1e-12).
+        v = {k: float(self.attr("#af-" + k, "value")) for k in ("angle", "sx", "sy", "shear")}
+        a = math.radians(v["angle"])
+        c, s = math.cos(a), math.sin(a)
+        M = [[c * v["sx"], c * v["shear"] * v["sy"] - s * v["sy"]], [s * v["sx"], s * v["shear"] * v["sy"] + c * v["sy"]]]
+        mapped = [json.loads(x) for x in self.attrs("#af-canvas rect[data-mapped]", "data-point")]
+        for p, q in zip(pts, mapped):
+            for k in range(2):
+                self.assertAlmostEqual(M[k][0] * p[0] + M[k][1] * p[1] + (5.6, 0.4)[k], q[k], delta=1e-12)
+        ts = [i / 160 for i in range(161)]
+        image = self.api("eval", {"curve": {"type": "bezier", "points": mapped}, "t": ts})["points"]
+        self.assertEqual(self.curve_points("af-image"), image)
+        # Affine invariance, as the page shows it: the mapped samples on the image curve.
+        self.assertLess(float(self.text("af-error")), 1e-12)
+        self.no_console_errors()
+
+    def test_reduce_view(self):
+        self.show_view("reduce")
+        self.drag(self.handles("rd")[3], -20, -30)
+        pts = self.points("rd")
+        curve = {"type": "bezier", "points": pts}
+        ts = [i / 160 for i in range(161)]
+        self.assertEqual(self.curve_points("rd-curve"), self.api("eval", {"curve": curve, "t": ts})["points"])
+        reduced = self.api("reduce", {"curve": curve, "times": 3, "tolerance": 1e6})  # degree 7 to 4, the page's default
+        self.assertEqual(self.curve_points("rd-polygon"), reduced["curve"]["points"])
+        self.assertEqual(self.curve_points("rd-reduced"), self.api("eval", {"curve": reduced["curve"], "t": ts})["points"])
+        self.assertEqual(self.text("rd-error"), fmt(reduced["max_error"]))
+        self.no_console_errors()
+
+    def test_pieces_view(self):
+        self.show_view("pieces")
+        joint = self.element("#pc-canvas circle.handle[data-segment='0'][data-index='3']")
+        self.drag(joint, 20, -20)
+        drawn = {(int(s), int(i)): json.loads(p) for s, i, p in self.driver.execute_script(
+            "return Array.from(document.querySelectorAll('#pc-canvas circle.handle'), (e) => [e.dataset.segment, e.dataset.index, e.dataset.point])")}
+        self.assertEqual(drawn[(0, 3)], drawn[(1, 0)])  # the joint moved both segments
+        self.assertNotEqual(drawn[(0, 3)], [4.0, 2.8])
+        segs = [{"type": "polyline", "points": [drawn[(0, i)] for i in range(4)]},
+                {"type": "bezier", "points": [drawn[(1, i)] for i in range(4)]},
+                {"type": "rational_bezier", "points": [drawn[(2, i)] for i in range(3)], "weights": [1, 0.5 ** 0.5, 1]}]
+        path = {"type": "path", "segments": segs, "breaks": [0, 1.5, 3, 4]}
+        bz = self.api("to_bezier", {"curve": path})["curve"]
+        self.assertEqual(len(self.attrs("#pc-canvas path[data-piece]", "data-piece")), len(bz["segments"]))
+        self.assertEqual(self.text("pc-breaks"), ", ".join(fmt(b) for b in bz["breaks"]))
+        ts = [i / 40 for i in range(41)]
+        for i, seg in enumerate(bz["segments"]):
+            self.assertEqual(json.loads(self.attr(f"#pc-canvas path[data-piece='{i}']", "data-points")),
+                             self.api("eval", {"curve": seg, "t": ts})["points"], i)
+        self.assertEqual(json.loads(self.attr("#pc-bounds", "data-box")), self.api("bounds", {"curve": path}))
+        self.no_console_errors()
+
+    def test_fit_view(self):
+        self.show_view("fit")
+        self.drag(self.handles("ft")[5], 0, -40)
+        pts = self.points("ft")
+        fit = self.api("fit", {"points": pts, "degree": 3, "control_points": 7})  # the page's defaults
+        self.assertEqual(json.loads(self.attr("#ft-curve", "data-curve")), fit["curve"])
+        ts = [i / 240 for i in range(241)]
+        self.assertEqual(self.curve_points("ft-curve"), self.api("eval", {"curve": fit["curve"], "t": ts})["points"])
+        self.assertEqual(self.text("ft-error"), fmt(fit["max_error"]))
+        self.no_console_errors()
+
+    def test_frames_view(self):
+        self.show_view("frames")
+        self.drag(self.handles("fr")[1], 25, 20)
+        pts = self.points("fr")
+        self.assertNotEqual(pts[1], [3.2, 3.4, 1.2])
+        self.assertEqual(len(pts[1]), 3)
+        curve = {"type": "bezier", "points": pts}
+        at = [i / 24 for i in range(25)]
+        for key, method in (("frenet", "frenet"), ("rmf", "rotation_minimizing")):
+            normals = self.api("frames", {"curve": curve, "t": at, "method": method})["normals"]
+            self.assertEqual(json.loads(self.attr("#fr-normals-" + key, "data-normals")), normals, key)
+        self.driver.save_screenshot("explorer-frames.png")
+        self.no_console_errors()
+
+    def test_surface_view(self):
+        from selenium.webdriver.support.ui import Select
+        self.show_view("surface")
+        self.drag(self.element("#sf-canvas circle.handle[data-curve='1'][data-index='1']"), 15, -25)
+        grid = {(int(c), int(i)): json.loads(p) for c, i, p in self.driver.execute_script(
+            "return Array.from(document.querySelectorAll('#sf-canvas circle.handle'), (e) => [e.dataset.curve, e.dataset.index, e.dataset.point])")}
+        patch = {"type": "bezier_surface", "points": [[grid[(i, j)] for j in range(4)] for i in range(4)]}
+        self.assertNotEqual(grid[(1, 1)], [1, 1, 1.6])
+        uv = json.loads(self.attr("#sf-isocurves", "data-uv"))
+        self.assertEqual(json.loads(self.attr("#sf-isocurves", "data-points")), self.api("eval", {"surface": patch, "uv": uv})["points"])
+        self.assertEqual(self.text("sf-area"), fmt(self.api("area", {"surface": patch})["area"]))
+        # The surface of revolution, meshed: the server's construction and tessellation.
+        Select(self.driver.find_element("id", "sf-mode")).select_by_value("revolve")
+        self.driver.find_element("id", "sf-mesh").click()
+        self.settle()
+        profile = [json.loads(p) for p in self.attrs("#sf-canvas circle.handle", "data-point")]
+        s = self.api("surface", {"construct": "revolve", "curve": {"type": "bezier", "points": profile},
+                                 "axis": {"point": [0, 0, 0], "direction": [0, 0, 1]}})["surface"]
+        uv = json.loads(self.attr("#sf-isocurves", "data-uv"))
+        self.assertEqual(json.loads(self.attr("#sf-isocurves", "data-points")), self.api("eval", {"surface": s, "uv": uv})["points"])
+        tess = self.api("tessellate", {"surface": s, "tolerance": 10 ** -1.5})
+        self.assertTrue(self.text("sf-triangles").startswith(f"{len(tess['triangles'])} within"))
+        self.driver.save_screenshot("explorer-surface.png")
+        self.no_console_errors()
+
+    def test_knot_removal_and_glyphs(self):
+        # Knot removal in the B-spline view: u = 0.5 inserted once more (multiplicity 2),
+        # then the knot nearest u removed twice within 1e-9 (the page's default): the curve
+        # drawn is the server's answer for that request, asked here.
+        self.show_view("bspline")
+        self.driver.find_element("id", "bs-reset").click()
+        self.settle()
+        self.driver.find_element("id", "bs-insert").click()
+        self.settle()
+        self.driver.find_element("id", "bs-remove").click()
+        self.settle()
+        knots = [0, 0, 0, 0, 0.25, 0.5, 0.75, 1, 1, 1, 1]
+        start = {"type": "bspline", "degree": 3, "knots": knots, "points": [[0.3, 0.6], [1.2, 4.0], [3.2, 4.8], [4.6, 1.0], [6.3, 0.8], [7.4, 4.5], [9.0, 3.0]]}
+        inserted = self.api("insert_knot", {"curve": start, "knot": 0.5})["curve"]
+        self.assertEqual(json.loads(self.attr("#bs-removed", "data-request")), {"knot": 0.5, "times": 2, "tolerance": 1e-9})
+        removed = self.api("remove_knot", {"curve": inserted, "knot": 0.5, "times": 2, "tolerance": 1e-9})
+        self.assertEqual(removed["removed"], 1)  # the copy inserted; the original knot stays
+        ts = [i / 240 for i in range(241)]
+        self.assertEqual(self.curve_points("bs-curve"), self.api("eval", {"curve": removed["curve"], "t": ts})["points"])
+        self.assertTrue(self.text("bs-removed").startswith("u = 0.5000: 1 of 2 copies removed"))
+        # Text outlines in the import view (glyph, from the server's font folder).
+        if self.fonts:
+            self.show_view("import")
+            self.driver.find_element("id", "im-glyph").click()
+            self.settle()
+            answer = self.api("glyph", {"font": "DejaVuSans.ttf", "text": "Curves", "size": 100})
+            contours = [c for g in answer["glyphs"] if g["curve"] for c in g["curve"]["segments"]]
+            self.check_import_drawing(contours)
+            self.assertTrue(self.text("im-shapes").startswith("#C: 1 subpath, #u: 1 subpath"))
         self.no_console_errors()
 
     def test_view_from_address(self):
