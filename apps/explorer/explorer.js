@@ -977,7 +977,16 @@ const queries = {
     this.svg = document.getElementById("qr-canvas");
     this.frame = new Frame(this.svg, -0.5, 9.5, -0.5, 5.5);
     this.update = coalesced(() => this.compute());
-    for (const id of ["qr-tol", "qr-method", "qr-bounds", "qr-flat"]) document.getElementById(id).addEventListener("input", () => this.update());
+    for (const id of ["qr-tol", "qr-method", "qr-bounds", "qr-flat", "qr-features"]) document.getElementById(id).addEventListener("input", () => this.update());
+    document.getElementById("qr-piece").addEventListener("click", async () => {
+      try {
+        const right = (await api("split", { curve: { type: "bezier", points: this.a }, t: 0.25 })).curves[1];
+        this.b.splice(0, 4, ...(await api("split", { curve: right, t: 0.5 })).curves[0].points);
+        this.update();
+      } catch (e) {
+        status.textContent = e.message;
+      }
+    });
     this.svg.addEventListener("pointermove", (e) => {
       if (e.buttons) return;  // a drag: the handles' business
       this.mouse = this.frame.world(e);
@@ -1005,7 +1014,22 @@ const queries = {
     ]);
     const flat = {};
     methods.forEach((m, i) => (flat[m] = flats[i].points));
-    this.draw({ sa, sb, inter, box, length, closest, flat });
+    // The features of A (inflections, cusps, the extrema of x and y) and the stretches where
+    // A and B overlap, as points of A: one more batch, when shown.
+    let features = null, marks = null, overlaps = [];
+    if (document.getElementById("qr-features").checked) {
+      features = await api("features", { curve: A });
+      const kinds = [["inflection", features.inflections], ["cusp", features.cusps], ["extremum of x", features.extrema[0]], ["extremum of y", features.extrema[1]]];
+      const ts = kinds.flatMap(([, t]) => t);
+      const [at, ...spans] = await Promise.all([
+        ts.length ? api("eval", { curve: A, t: ts }) : { points: [] },
+        ...inter.overlaps.map((o) => api("eval", { curve: A, t: linspace(o.a[0], o.a[1], 33) })),
+      ]);
+      let k = 0;
+      marks = kinds.flatMap(([kind, t]) => t.map((u) => ({ kind, t: u, point: at.points[k++] })));
+      overlaps = spans.map((x) => x.points);
+    }
+    this.draw({ sa, sb, inter, box, length, closest, flat, marks, overlaps });
   },
 
   draw(r) {
@@ -1025,6 +1049,17 @@ const queries = {
       const pts = r.flat[method];
       el("path", { class: "level", stroke: "#d35400", d: f.path(pts) }, svg);
       for (const p of pts) el("circle", { class: "level-point", cx: f.x(p), cy: f.y(p), r: 2.5, fill: "#d35400" }, svg);
+    }
+    for (const [i, pts] of r.overlaps.entries()) el("path", { class: "overlap", "data-overlap": i, d: f.path(pts), stroke: "#e67e22", "stroke-width": 7, "stroke-opacity": 0.6, fill: "none" }, svg);
+    if (r.marks) {
+      const g = el("g", { id: "qr-features-marks" }, svg);
+      g.dataset.marks = JSON.stringify(r.marks);
+      const shapes = { inflection: "#8e44ad", cusp: "#c0392b", "extremum of x": "#2a9d5c", "extremum of y": "#2a9d5c" };
+      for (const m of r.marks) {
+        const [x, y] = [f.x(m.point), f.y(m.point)];
+        if (m.kind === "inflection") el("path", { d: `M${x} ${y - 7}l6 11h-12z`, fill: shapes[m.kind] }, g);
+        else el("path", { d: m.kind === "extremum of x" ? `M${x} ${y - 8}v16` : `M${x - 8} ${y}h16`, stroke: shapes[m.kind], "stroke-width": 3 }, g);
+      }
     }
     const marks = el("g", { id: "qr-intersections" }, svg);
     marks.dataset.points = JSON.stringify(r.inter.intersections.map((x) => x.point));
@@ -1054,6 +1089,10 @@ const queries = {
     document.getElementById("qr-intersections-text").textContent = r.inter.intersections.length
       ? r.inter.intersections.map((x) => x.kind + " at t = (" + x.t.map(fmt).join(", ") + ")").join("; ")
       : "none";
+    document.getElementById("qr-features-text").textContent = r.marks
+      ? ["inflection", "cusp", "extremum of x", "extremum of y"].map((k) => r.marks.filter((m) => m.kind === k).length + " " + k.replace("extremum", "extrema").replace(/^(inflection|cusp)$/, "$1s")).join(", ")
+      : "—";
+    document.getElementById("qr-overlaps").textContent = r.inter.overlaps.length ? r.inter.overlaps.map((o) => "A on [" + o.a.map(fmt).join(", ") + "]").join("; ") : "none";
     document.getElementById("qr-closest").textContent = r.closest ? "t = " + fmt(r.closest.t) + ", distance " + fmt(r.closest.distance) : "move the pointer over the figure";
   },
 };

@@ -275,6 +275,20 @@ class ExplorerTest(unittest.TestCase):
         for method in ("optimal", "subdivision", "uniform"):
             n = len(self.api("flatten", {"curve": A, "tolerance": 10 ** -1.5, "method": method})["points"]) - 1
             self.assertEqual(self.text("qr-count-" + method), str(n), method)
+        # The features of A marked where the server's features and eval put them.
+        features = self.api("features", {"curve": A})
+        ts = features["inflections"] + features["cusps"] + features["extrema"][0] + features["extrema"][1]
+        marks = json.loads(self.attr("#qr-features-marks", "data-marks"))
+        self.assertEqual([m["t"] for m in marks], ts)
+        self.assertEqual([m["point"] for m in marks], self.api("eval", {"curve": A, "t": ts})["points"] if ts else [])
+        # B made a piece of A (split twice by the server): the overlap drawn and stated.
+        self.driver.find_element("id", "qr-piece").click()
+        self.settle()
+        b = self.points("qr")[4:]
+        inter = self.api("intersect", {"curves": [A, {"type": "bezier", "points": b}]})
+        self.assertEqual(len(inter["overlaps"]), 1)
+        self.assertEqual(len(self.attrs("#qr-canvas path.overlap", "data-overlap")), 1)
+        self.assertEqual(self.text("qr-overlaps"), "A on [" + ", ".join(fmt(x) for x in inter["overlaps"][0]["a"]) + "]")
         self.driver.save_screenshot("explorer-queries.png")
         self.no_console_errors()
 
@@ -475,6 +489,7 @@ class ExplorerTest(unittest.TestCase):
         self.assertEqual(self.curve_points("af-image"), image)
         # Affine invariance, as the page shows it: the mapped samples on the image curve.
         self.assertLess(float(self.text("af-error")), 1e-12)
+        self.driver.save_screenshot("explorer-affine.png")
         self.no_console_errors()
 
     def test_reduce_view(self):
@@ -488,6 +503,7 @@ class ExplorerTest(unittest.TestCase):
         self.assertEqual(self.curve_points("rd-polygon"), reduced["curve"]["points"])
         self.assertEqual(self.curve_points("rd-reduced"), self.api("eval", {"curve": reduced["curve"], "t": ts})["points"])
         self.assertEqual(self.text("rd-error"), fmt(reduced["max_error"]))
+        self.driver.save_screenshot("explorer-reduce.png")
         self.no_console_errors()
 
     def test_pieces_view(self):
@@ -510,6 +526,7 @@ class ExplorerTest(unittest.TestCase):
             self.assertEqual(json.loads(self.attr(f"#pc-canvas path[data-piece='{i}']", "data-points")),
                              self.api("eval", {"curve": seg, "t": ts})["points"], i)
         self.assertEqual(json.loads(self.attr("#pc-bounds", "data-box")), self.api("bounds", {"curve": path}))
+        self.driver.save_screenshot("explorer-pieces.png")
         self.no_console_errors()
 
     def test_fit_view(self):
@@ -521,6 +538,7 @@ class ExplorerTest(unittest.TestCase):
         ts = [i / 240 for i in range(241)]
         self.assertEqual(self.curve_points("ft-curve"), self.api("eval", {"curve": fit["curve"], "t": ts})["points"])
         self.assertEqual(self.text("ft-error"), fmt(fit["max_error"]))
+        self.driver.save_screenshot("explorer-fit.png")
         self.no_console_errors()
 
     def test_frames_view(self):
@@ -591,6 +609,7 @@ class ExplorerTest(unittest.TestCase):
             contours = [c for g in answer["glyphs"] if g["curve"] for c in g["curve"]["segments"]]
             self.check_import_drawing(contours)
             self.assertTrue(self.text("im-shapes").startswith("#C: 1 subpath, #u: 1 subpath"))
+            self.driver.save_screenshot("explorer-glyphs.png")
         self.no_console_errors()
 
     def test_view_from_address(self):
