@@ -249,6 +249,14 @@ class ExplorerTest(unittest.TestCase):
         for key, curve in curves.items():
             self.assertEqual(self.curve_points("ip-curve-" + key), self.api("flatten", {"curve": curve, "tolerance": 0.002})["points"], key)
             self.assertEqual(self.text("ip-length-" + key), fmt(self.api("length", {"curve": curve})["length"]), key)
+        # The other end conditions, side by side (their boxes ticked by the page's own inputs).
+        self.driver.execute_script("for (const k of ['not_a_knot', 'clamped', 'periodic']) document.getElementById('ip-spline_' + k).click()")
+        self.settle()
+        spline = {"type": "cubic_spline", "parametrization": "chord"}
+        for key, curve in (("spline_not_a_knot", dict(spline, boundary="not-a-knot", points=after)),
+                           ("spline_clamped", dict(spline, boundary="clamped", start_derivative=[1, 0], end_derivative=[1, 0], points=after)),
+                           ("spline_periodic", dict(spline, boundary="periodic", points=after + [after[0]]))):
+            self.assertEqual(self.curve_points("ip-curve-" + key), self.api("flatten", {"curve": curve, "tolerance": 0.002})["points"], key)
         self.driver.save_screenshot("explorer-interpolation.png")
         self.no_console_errors()
 
