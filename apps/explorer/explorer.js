@@ -392,6 +392,8 @@ function drawBasis(svg, ts, values, cursor, extra) {
 // ---------------------------------------------------------------------------------------
 // View 1: de Casteljau's construction.
 
+const HODOGRAPH_ORIGIN = [4.5, 2.2];  // where the de Casteljau view draws the hodograph from
+
 const bezier = {
   points: [
     [0.5, 0.5],
@@ -413,7 +415,7 @@ const bezier = {
       this.t = Number(this.tInput.value);
       this.update();
     });
-    for (const id of ["bz-construction", "bz-hull", "bz-split", "bz-elevate"]) {
+    for (const id of ["bz-construction", "bz-hull", "bz-split", "bz-elevate", "bz-hodograph"]) {
       document.getElementById(id).addEventListener("input", () => this.update());
     }
     document.getElementById("bz-add").addEventListener("click", () => {
@@ -467,9 +469,10 @@ const bezier = {
       apiKept("basis", { kind: "bernstein", degree: n, t: ts }),
       apiKept("basis", { kind: "bernstein", degree: n, t: [this.t] }),
       api("length", { curve }),
+      document.getElementById("bz-hodograph").checked ? api("eval", { curve, t: ts, derivatives: 1 }) : null,
     ];
-    const [samples, at, levels, halves, elevated, basis, basisAt, length] = await Promise.all(jobs);
-    this.draw({ samples, at, levels, construction, halves, elevated, basis, basisAt, length, ts });
+    const [samples, at, levels, halves, elevated, basis, basisAt, length, hodograph] = await Promise.all(jobs);
+    this.draw({ samples, at, levels, construction, halves, elevated, basis, basisAt, length, hodograph, ts });
   },
 
   draw(r) {
@@ -503,6 +506,19 @@ const bezier = {
       for (const p of pts) el("circle", { class: "elevated-point", cx: f.x(p), cy: f.y(p), r: 3 }, svg);
     }
     const c = r.at.points[0];
+    if (r.hodograph) {
+      // The hodograph C'(s) / n (a Bézier curve on the differences of the points), drawn
+      // from the origin mark, and C'(t) / n both there and at C(t) (the server's eval).
+      const n = this.points.length - 1, o = HODOGRAPH_ORIGIN;
+      const at = (v) => [o[0] + v[0] / n, o[1] + v[1] / n];
+      const hodo = r.hodograph.derivatives[0].map(at);
+      const e = el("path", { class: "elevated", id: "bz-hodograph-curve", d: f.path(hodo) }, svg);
+      e.dataset.points = JSON.stringify(r.hodograph.derivatives[0]);
+      el("path", { d: `M${f.x(o) - 6} ${f.y(o)}h12M${f.x(o)} ${f.y(o) - 6}v12`, stroke: "#555", "stroke-width": 1.5 }, svg);
+      const d = r.at.derivatives[0][0], tip = at(d), onCurve = [c[0] + d[0] / n, c[1] + d[1] / n];
+      el("line", { class: "cursor", x1: f.x(o), y1: f.y(o), x2: f.x(tip), y2: f.y(tip), style: "stroke: #d35400; stroke-width: 2" }, svg);
+      el("line", { class: "cursor", x1: f.x(c), y1: f.y(c), x2: f.x(onCurve), y2: f.y(onCurve), style: "stroke: #d35400; stroke-width: 2" }, svg);
+    }
     el("circle", { class: "on-curve", id: "bz-on-curve", cx: f.x(c), cy: f.y(c), r: 6 }, svg);
     this.points.forEach((p, i) => {
       const h = el("circle", { class: "handle", cx: f.x(p), cy: f.y(p), r: 9, "data-index": i, "data-point": JSON.stringify(p) }, svg);
@@ -1041,6 +1057,11 @@ const queries = {
     const f = this.frame, svg = this.svg;
     redraw(svg);
     if (document.getElementById("qr-bounds").checked) {
+      // The control points' box (a drawing aid, as the convex hull: the cheap bound that
+      // the tight one improves on), then the server's tight box.
+      const xs = this.a.map((p) => p[0]), ys = this.a.map((p) => p[1]);
+      const lo = [Math.min(...xs), Math.min(...ys)], hi = [Math.max(...xs), Math.max(...ys)];
+      el("rect", { class: "hull", id: "qr-control-box", x: f.x(lo), y: f.y(hi), width: f.x(hi) - f.x(lo), height: f.y(lo) - f.y(hi), style: "fill: none; stroke-dasharray: 2 4" }, svg);
       const [x0, y0] = r.box.min, [x1, y1] = r.box.max;
       const rect = el("rect", { class: "polygon", id: "qr-bounds-box", x: f.x([x0, 0]), y: f.y([0, y1]), width: f.x([x1, 0]) - f.x([x0, 0]), height: f.y([0, y0]) - f.y([0, y1]) }, svg);
       rect.dataset.box = JSON.stringify(r.box);
@@ -1095,7 +1116,10 @@ const queries = {
       ? r.inter.intersections.map((x) => x.kind + " at t = (" + x.t.map(fmt).join(", ") + ")").join("; ")
       : "none";
     document.getElementById("qr-features-text").textContent = r.marks
-      ? ["inflection", "cusp", "extremum of x", "extremum of y"].map((k) => r.marks.filter((m) => m.kind === k).length + " " + k.replace("extremum", "extrema").replace(/^(inflection|cusp)$/, "$1s")).join(", ")
+      ? [["inflection", "inflections"], ["cusp", "cusps"], ["extremum of x", "extrema of x"], ["extremum of y", "extrema of y"]].map(([one, many]) => {
+          const n = r.marks.filter((m) => m.kind === one).length;
+          return n + " " + (n === 1 ? one : many);
+        }).join(", ")
       : "—";
     document.getElementById("qr-overlaps").textContent = r.inter.overlaps.length ? r.inter.overlaps.map((o) => "A on [" + o.a.map(fmt).join(", ") + "]").join("; ") : "none";
     document.getElementById("qr-closest").textContent = r.closest ? "t = " + fmt(r.closest.t) + ", distance " + fmt(r.closest.distance) : "move the pointer over the figure";

@@ -171,7 +171,13 @@ class ExplorerTest(unittest.TestCase):
         self.assertLess(touched[3][0], after[3][0] - 0.2)
         curve = {"type": "bezier", "points": touched}
         self.assertEqual(self.curve_points("bz-curve"), self.api("eval", {"curve": curve, "t": ts})["points"])
+        # The hodograph: the server's first derivatives at the same parameters.
+        self.driver.find_element("id", "bz-hodograph").click()
+        self.settle()
+        self.assertEqual(self.curve_points("bz-hodograph-curve"), self.api("eval", {"curve": curve, "t": ts, "derivatives": 1})["derivatives"][0])
         self.driver.save_screenshot("explorer-bezier.png")
+        self.driver.find_element("id", "bz-hodograph").click()
+        self.settle()
         self.no_console_errors()
 
     def test_bspline_view(self):
