@@ -415,7 +415,7 @@ const bezier = {
       this.t = Number(this.tInput.value);
       this.update();
     });
-    for (const id of ["bz-construction", "bz-hull", "bz-split", "bz-elevate", "bz-hodograph"]) {
+    for (const id of ["bz-construction", "bz-hull", "bz-split", "bz-elevate", "bz-hodograph", "bz-portion", "bz-s"]) {
       document.getElementById(id).addEventListener("input", () => this.update());
     }
     document.getElementById("bz-add").addEventListener("click", () => {
@@ -472,7 +472,17 @@ const bezier = {
       document.getElementById("bz-hodograph").checked ? api("eval", { curve, t: ts, derivatives: 1 }) : null,
     ];
     const [samples, at, levels, halves, elevated, basis, basisAt, length, hodograph] = await Promise.all(jobs);
-    this.draw({ samples, at, levels, construction, halves, elevated, basis, basisAt, length, hodograph, ts });
+    // The portion over [s, t] (or [t, s]): split at the larger, then its left part at the
+    // smaller's place in it. Its control points are the blossom's values b(a..a b..b).
+    let portion = null;
+    const sv = Number(document.getElementById("bz-s").value);
+    const a = Math.min(sv, this.t), b = Math.max(sv, this.t);
+    if (document.getElementById("bz-portion").checked && b > 0 && a < b) {
+      const left = b < 1 ? halves.curves[0] : curve;
+      const first = this.t === b ? left : (await api("split", { curve, t: b })).curves[0];
+      portion = a > 0 ? (await api("split", { curve: first, t: a / b })).curves[1] : first;
+    }
+    this.draw({ samples, at, levels, construction, halves, elevated, basis, basisAt, length, hodograph, portion, a, b, ts });
   },
 
   draw(r) {
@@ -506,6 +516,17 @@ const bezier = {
       for (const p of pts) el("circle", { class: "elevated-point", cx: f.x(p), cy: f.y(p), r: 3 }, svg);
     }
     const c = r.at.points[0];
+    if (r.portion) {
+      const pts = r.portion.points, n = pts.length - 1;
+      const e = el("path", { class: "half-right", id: "bz-portion-polygon", d: f.path(pts) }, svg);
+      e.dataset.points = JSON.stringify(pts);
+      pts.forEach((p, i) => {
+        el("circle", { class: "elevated-point", cx: f.x(p), cy: f.y(p), r: 3.5 }, svg);
+        const args = Array(n - i).fill("a").concat(Array(i).fill("b")).join("");
+        const label = el("text", { class: "label", x: f.x(p) + 6, y: f.y(p) + 16 }, svg);
+        label.textContent = "b(" + args + ")";
+      });
+    }
     if (r.hodograph) {
       // The hodograph C'(s) / n (a Bézier curve on the differences of the points), drawn
       // from the origin mark, and C'(t) / n both there and at C(t) (the server's eval).
@@ -531,6 +552,7 @@ const bezier = {
     });
     // Numbers.
     document.getElementById("bz-t-out").textContent = fmt(this.t);
+    document.getElementById("bz-s-out").textContent = "a = " + fmt(r.a) + ", b = " + fmt(r.b);
     document.getElementById("bz-degree").textContent = String(this.points.length - 1);
     document.getElementById("bz-point").textContent = fmtPoint(c);
     document.getElementById("bz-point").dataset.value = JSON.stringify(c);

@@ -175,8 +175,20 @@ class ExplorerTest(unittest.TestCase):
         self.driver.find_element("id", "bz-hodograph").click()
         self.settle()
         self.assertEqual(self.curve_points("bz-hodograph-curve"), self.api("eval", {"curve": curve, "t": ts, "derivatives": 1})["derivatives"][0])
+        # The portion over [0.4, 0.8] (t and s), whose control points are the blossom's values
+        # b(a..a b..b): against the blossom written here (1e-12: the server's two splits
+        # round differently from the blossom's n levels of affine combinations).
+        self.driver.find_element("id", "bz-portion").click()
+        self.settle()
+        portion = self.curve_points("bz-portion-polygon")
+        n = len(touched) - 1
+        for i, p in enumerate(portion):
+            q = blossom(touched, [0.4] * (n - i) + [0.8] * i)
+            for k in range(2):
+                self.assertAlmostEqual(p[k], q[k], delta=1e-12)
         self.driver.save_screenshot("explorer-bezier.png")
         self.driver.find_element("id", "bz-hodograph").click()
+        self.driver.find_element("id", "bz-portion").click()
         self.settle()
         self.no_console_errors()
 
@@ -702,6 +714,15 @@ class ExplorerTest(unittest.TestCase):
         # Back to the example, for the tests after this one.
         self.driver.execute_script("for (let i = 0; i < 6; i++) document.getElementById('bz-remove').click()")
         self.settle()
+
+
+def blossom(points, args):
+    """The blossom of the Bézier curve on points at args (one per degree): de Casteljau's
+    construction with level k at args[k] (written here)."""
+    level = [list(p) for p in points]
+    for u in args:
+        level = [[(1 - u) * a + u * b for a, b in zip(level[i], level[i + 1])] for i in range(len(level) - 1)]
+    return level[0]
 
 
 def de_boor(points, knots, p, u):
