@@ -225,3 +225,14 @@ def _self_test():
     # The cubic's midpoint is (5, 7.5).
     assert any(math.dist(p, (5, 7.5)) < 1e-9 for p in line)
     assert path_polylines("M0 0L1 0 1 1Z")[0] == [(0, 0), (1, 0), (1, 1), (0, 0)]
+    # A filled box's outline and a polygon's closing edge count as drawn lines; the box's
+    # inside does not (a label may sit on a shaded area).
+    import xml.etree.ElementTree as ET
+    svg = ('<svg xmlns="http://www.w3.org/2000/svg">'
+           '<rect x="10" y="10" width="100" height="50" fill="#eee" stroke="#000" stroke-width="1.4"/>'
+           '<polygon points="200,0 300,0 300,100" fill="none" stroke="#000" stroke-width="1.5"/>'
+           '<text x="60" y="14" font-size="11">u=1</text>'
+           '<text x="60" y="40" font-size="11">u=2</text>'
+           '<text x="245" y="52" font-size="11">P</text></svg>')
+    found = label_collisions(ET.fromstring(svg))
+    assert found == ["label 'u=1' crosses a curve <rect stroke=#000>", "label 'P' crosses a curve <polygon stroke=#000>"], found
