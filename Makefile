@@ -29,11 +29,13 @@ demo: configure
 	@echo "gallery: $(abspath $(BUILD)/gallery/index.html)"
 
 # The explorer: builds the program and serves the page (prints its address; Ctrl-C stops it).
-# PORT=0 takes any free port.
+# PORT=0 takes any free port. FONT_DIR: the fonts the explorer's text outlines may use
+# (the `glyph` command; DejaVu's by default, when installed).
 PORT ?= 8080
+FONT_DIR ?= /usr/share/fonts/truetype/dejavu
 explorer: configure
 	cmake --build $(BUILD) -j $(JOBS) --target casteljau_cli
-	$(BUILD)/apps/cli/casteljau serve --port $(PORT)
+	$(BUILD)/apps/cli/casteljau serve --port $(PORT) $(if $(wildcard $(FONT_DIR)),--font-dir $(FONT_DIR))
 
 # The header check (ctest label `headers`, tests/headers) costs about 280 s of CPU (every
 # header alone, and every header with a user's file at -O0 and -O2 with g++ and clang):

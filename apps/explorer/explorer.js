@@ -11,9 +11,65 @@ const SVG_NS = "http://www.w3.org/2000/svg";
 // Helpers.
 
 function el(tag, attrs, parent) {
+  if (parent && parent.reuse) return reused(parent, tag, attrs || {});
   const e = document.createElementNS(SVG_NS, tag);
   for (const [k, v] of Object.entries(attrs || {})) e.setAttribute(k, v);
   if (parent) parent.appendChild(e);
+  return e;
+}
+
+// A figure drawn again from scratch without rebuilding its elements: after redraw(svg),
+// el(tag, attrs, svg) hands back the element the last drawing made for the same tag,
+// class and id in the same order (its attributes updated, those no longer given removed; a
+// group emptied), and the drawing's end (a microtask: drawings are synchronous) puts the
+// elements in the order drawn and removes the ones not drawn again. During a drag the
+// browser then restyles and lays out a few changed attributes instead of a hundred new
+// elements.
+function redraw(svg) {
+  if (svg.reuse) return;
+  svg.reuse = { used: new Map(), order: [] };
+  if (!svg.pool) svg.pool = new Map();
+  queueMicrotask(() => {
+    const r = svg.reuse;
+    svg.reuse = null;
+    let next = svg.firstChild;
+    for (const e of r.order) {
+      if (e === next) next = next.nextSibling;
+      else svg.insertBefore(e, next);
+    }
+    while (next) {
+      const after = next.nextSibling;
+      next.remove();
+      next = after;
+    }
+    for (const [key, list] of svg.pool) list.length = r.used.get(key) || 0;
+  });
+}
+
+function reused(svg, tag, attrs) {
+  const r = svg.reuse;
+  const key = tag + "." + (attrs.class || "") + "#" + (attrs.id || "");
+  const n = r.used.get(key) || 0;
+  r.used.set(key, n + 1);
+  let list = svg.pool.get(key);
+  if (!list) svg.pool.set(key, (list = []));
+  let e = list[n];
+  if (!e) {
+    e = document.createElementNS(SVG_NS, tag);
+    e.given = {};
+    list.push(e);
+  } else if (tag === "g") {
+    e.replaceChildren();
+  }
+  for (const k of Object.keys(e.given)) if (!(k in attrs)) e.removeAttribute(k);
+  const given = {};
+  for (const [k, v] of Object.entries(attrs)) {
+    const text = String(v);
+    if (e.given[k] !== text) e.setAttribute(k, text);
+    given[k] = text;
+  }
+  e.given = given;
+  r.order.push(e);
   return e;
 }
 
@@ -67,41 +123,78 @@ function api(command, request) {
   });
 }
 
+// A request whose answer does not change while a control point is dragged (the basis
+// functions over the same parameters): the server's answer kept, by the request's text,
+// for the next updates (the last 32). A failed request is not kept.
+const kept = new Map();
+
+function apiKept(command, request) {
+  const key = command + " " + JSON.stringify(request);
+  let answer = kept.get(key);
+  if (!answer) {
+    answer = api(command, request);
+    answer.catch(() => kept.delete(key));
+    kept.set(key, answer);
+    if (kept.size > 32) kept.delete(kept.keys().next().value);
+  }
+  return answer;
+}
+
 // The round trip of each batch in milliseconds, from the request to its whole answer (the
 // last 1000): the part of an update's latency spent outside the page's own drawing.
 const roundTrips = [];
 window.explorerRoundTrips = () => roundTrips.slice();
 
+// Batches are answered to the page in the order they were sent (several may be in flight:
+// see coalesced(), and a click's request beside a drag's), so that an older answer is
+// never drawn over a newer one.
+let delivered = Promise.resolve();
+
 async function sendBatch() {
   const items = batch;
   batch = null;
   setPending(1);
-  try {
+  // The batch's times (performance.now()), read by coalesced(): sent, answered (the whole
+  // body received), parsed; bytes, the answer's length.
+  const timing = (items.timing = {});
+  const transport = (async () => {
     const body = items.map((i) => JSON.stringify({ command: i.command, request: i.request })).join("\n") + "\n";
-    const sent = performance.now();
+    timing.sent = performance.now();
     const res = await fetch("batch", { method: "POST", headers: { "Content-Type": "application/x-ndjson" }, body });
     const text = await res.text();
-    roundTrips.push(performance.now() - sent);
+    timing.answered = performance.now();
+    timing.bytes = text.length;
+    roundTrips.push(timing.answered - timing.sent);
     if (roundTrips.length > 1000) roundTrips.shift();
-    if (!res.ok) {
-      let message = String(res.status);
-      try {
-        message = JSON.parse(text).error;
-      } catch (_) {}
-      for (const i of items) i.reject(new Error(i.command + ": " + message));
-      return;
+    return { res, text };
+  })();
+  const previous = delivered;
+  delivered = (async () => {
+    try {
+      const { res, text } = await transport;
+      await previous;
+      if (!res.ok) {
+        let message = String(res.status);
+        try {
+          message = JSON.parse(text).error;
+        } catch (_) {}
+        for (const i of items) i.reject(new Error(i.command + ": " + message));
+        return;
+      }
+      const lines = text.split("\n");
+      const answers = lines.slice(0, items.length).map((line) => JSON.parse(line));
+      timing.parsed = performance.now();
+      items.forEach((item, k) => {
+        const answer = answers[k];
+        if (answer && typeof answer.error === "string" && Object.keys(answer).length === 1) item.reject(new Error(item.command + ": " + answer.error));
+        else item.resolve(answer);
+      });
+    } catch (e) {
+      for (const i of items) i.reject(e);
+    } finally {
+      setPending(-1);
     }
-    const lines = text.split("\n");
-    items.forEach((item, k) => {
-      const answer = JSON.parse(lines[k]);
-      if (answer && typeof answer.error === "string" && Object.keys(answer).length === 1) item.reject(new Error(item.command + ": " + answer.error));
-      else item.resolve(answer);
-    });
-  } catch (e) {
-    for (const i of items) i.reject(e);
-  } finally {
-    setPending(-1);
-  }
+  })();
 }
 
 // The time from an input (a drag's move, a slider) to the drawing of the server's answer
@@ -109,42 +202,82 @@ async function sendBatch() {
 const updateLatencies = [];
 window.explorerLatencies = () => updateLatencies.slice();
 
-// Runs `work` (an async function) now, or once more after the running one ends: a drag
-// never queues requests behind each other (only the latest state is sent next), and the
-// last state is always drawn.
-function coalesced(work) {
-  let running = false;
+// Where each update's time went (the last 1000), in milliseconds: wait (from the input to
+// the start of its work: two updates already in flight), build (the requests written),
+// server (its first batch's round trip: the browser's network stack, HTTP, the server's
+// computing), parse (JSON, after the batch before it was drawn), draw (the page's SVG
+// elements, and any later requests of the update), frame (the next frame's style, layout
+// and paint: from its animation callbacks to the task after it; not part of the
+// latency); bytes, the answer's size.
+const updatePhases = [];
+window.explorerPhases = () => updatePhases.slice();
+
+function recordPhases(input, start, end, timing) {
+  const b = timing && timing.parsed ? timing : null;
+  const phase = {
+    wait: start - input,
+    build: b ? b.sent - start : 0,
+    server: b ? b.answered - b.sent : 0,
+    parse: b ? b.parsed - b.answered : 0,
+    draw: b ? end - b.parsed : end - start,
+    frame: 0,
+    bytes: b ? b.bytes : 0,
+  };
+  updatePhases.push(phase);
+  if (updatePhases.length > 1000) updatePhases.shift();
+  requestAnimationFrame(() => {
+    const f = performance.now();
+    setTimeout(() => (phase.frame = performance.now() - f), 0);
+  });
+}
+
+// Runs `work` (an async function that asks the server and draws) for the newest state:
+// at once while fewer than `depth` runs are in flight, else once more when one ends, for
+// the state then (inputs in between are merged: requests never queue behind each other,
+// and the last state is always drawn). Answers are drawn in the order they were asked
+// (sendBatch). One run at a time is the default: two in flight (the server computing
+// them in its two workers) redrew no more often in a drag of a move per frame at degree
+// 10 on the loaded 2-core machine (4 alternating runs of 120 frames at load 12: a median
+// of 72 redraws with one, 76 with two), since the browser's network stack and the
+// machine, not the server, set the round trip.
+function coalesced(work, depth = 1) {
+  let inFlight = 0;
   let again = false;
   let since = null;  // when the oldest input not yet sent arrived
-  const run = async () => {
+  const start = () => {
+    inFlight++;
+    setPending(1);
+    again = false;
+    const t0 = since;
+    since = null;
+    const begun = performance.now();
+    const running = work();
+    const items = batch;  // the batch this run's first requests joined (sent at the next microtask)
+    running.then(
+      () => {
+        status.textContent = "";
+        const end = performance.now();
+        recordPhases(t0, begun, end, items && items.timing);
+        updateLatencies.push(end - t0);
+        if (updateLatencies.length > 1000) updateLatencies.shift();
+      },
+      (e) => {
+        status.textContent = e.message;
+      },
+    ).finally(() => {
+      inFlight--;
+      if (again) start();
+      setPending(-1);
+    });
+  };
+  return () => {
     if (since === null) since = performance.now();
-    if (running) {
+    if (inFlight >= depth) {
       again = true;
       return;
     }
-    running = true;
-    setPending(1);
-    try {
-      do {
-        again = false;
-        const t0 = since;
-        since = null;
-        try {
-          await work();
-          status.textContent = "";
-          updateLatencies.push(performance.now() - t0);
-          if (updateLatencies.length > 1000) updateLatencies.shift();
-        } catch (e) {
-          status.textContent = e.message;
-        }
-      } while (again);
-    } finally {
-      running = false;
-      since = null;
-      setPending(-1);
-    }
+    start();
   };
-  return run;
 }
 
 // A figure: world coordinates (y up) mapped to the SVG's viewBox, with one scale for both
@@ -177,9 +310,12 @@ class Frame {
   path(points) {
     return points.map((p, i) => (i ? "L" : "M") + this.x(p).toFixed(2) + " " + this.y(p).toFixed(2)).join("");
   }
-  // The world point under a pointer event.
-  world(ev) {
-    const m = this.svg.getScreenCTM().inverse();
+  // The world point under a pointer event; screen, the inverse of the figure's screen
+  // matrix when the caller keeps it (a drag takes it once: asking for it after a redraw
+  // makes the browser lay the figure out there and then, 5.6 ms per move measured at
+  // degree 10 under load, on top of the frame's own layout).
+  world(ev, screen) {
+    const m = screen || this.svg.getScreenCTM().inverse();
     const pt = new DOMPoint(ev.clientX, ev.clientY).matrixTransform(m);
     return [(pt.x - this.ox) / this.sx, (this.oy - pt.y) / this.sy];
   }
@@ -189,12 +325,17 @@ class Frame {
 // pointer is captured by the figure's SVG element, which outlives the redraws that
 // replace the circle during the drag.
 function dragHandle(frame, circle, index, onMove) {
+  // A reused circle keeps its one listener; the newest drawing's frame, index and action.
+  circle.drag = { frame, index, onMove };
+  if (circle.dragBound) return;
+  circle.dragBound = true;
   circle.addEventListener("pointerdown", (ev) => {
     ev.preventDefault();
-    const svg = frame.svg, id = ev.pointerId;
+    const svg = circle.drag.frame.svg, id = ev.pointerId;
     svg.setPointerCapture(id);
+    const screen = svg.getScreenCTM().inverse();  // the figure does not move during a drag
     const move = (e) => {
-      if (e.pointerId === id) onMove(index, frame.world(e));
+      if (e.pointerId === id) circle.drag.onMove(circle.drag.index, circle.drag.frame.world(e, screen));
     };
     const up = (e) => {
       if (e.pointerId !== id) return;
@@ -229,8 +370,10 @@ function convexHull(points) {
 
 const PALETTE = ["#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22", "#17becf"];
 
-// A plot of basis functions: values[j][i] = function i at ts[j]; marks at the knots.
-function drawBasis(svg, ts, values, cursor, knots) {
+// A plot of basis functions: values[j][i] = function i at ts[j]; then extra(frame) draws
+// more (the knots). Drawn again only when the values (a kept answer) or the cursor change.
+function drawBasis(svg, ts, values, cursor, extra) {
+  if (svg.drawn && svg.drawn.values === values && svg.drawn.cursor === cursor) return svg.drawn.frame;
   svg.replaceChildren();
   const frame = new Frame(svg, ts[0], ts[ts.length - 1], 0, 1, 24, false);
   el("line", { class: "axis", x1: frame.x([ts[0], 0]), y1: frame.y([0, 0]), x2: frame.x([ts[ts.length - 1], 0]), y2: frame.y([0, 0]) }, svg);
@@ -245,11 +388,15 @@ function drawBasis(svg, ts, values, cursor, knots) {
   if (cursor !== undefined) {
     el("line", { class: "cursor", x1: frame.x([cursor, 0]), y1: frame.y([0, 0]), x2: frame.x([cursor, 0]), y2: frame.y([0, 1]) }, svg);
   }
+  if (extra) extra(frame);
+  svg.drawn = { values, cursor, frame };
   return frame;
 }
 
 // ---------------------------------------------------------------------------------------
 // View 1: de Casteljau's construction.
+
+const HODOGRAPH_ORIGIN = [4.5, 2.2];  // where the de Casteljau view draws the hodograph from
 
 const bezier = {
   points: [
@@ -272,7 +419,7 @@ const bezier = {
       this.t = Number(this.tInput.value);
       this.update();
     });
-    for (const id of ["bz-construction", "bz-hull", "bz-split", "bz-elevate"]) {
+    for (const id of ["bz-construction", "bz-hull", "bz-split", "bz-elevate", "bz-hodograph", "bz-portion", "bz-s"]) {
       document.getElementById(id).addEventListener("input", () => this.update());
     }
     document.getElementById("bz-add").addEventListener("click", () => {
@@ -323,17 +470,28 @@ const bezier = {
       api("eval", construction.request),
       api("split", { curve, t: this.t }),
       elevateTimes > 0 ? api("elevate", { curve, times: elevateTimes }) : null,
-      api("basis", { kind: "bernstein", degree: n, t: ts }),
-      api("basis", { kind: "bernstein", degree: n, t: [this.t] }),
+      apiKept("basis", { kind: "bernstein", degree: n, t: ts }),
+      apiKept("basis", { kind: "bernstein", degree: n, t: [this.t] }),
       api("length", { curve }),
+      document.getElementById("bz-hodograph").checked ? api("eval", { curve, t: ts, derivatives: 1 }) : null,
     ];
-    const [samples, at, levels, halves, elevated, basis, basisAt, length] = await Promise.all(jobs);
-    this.draw({ samples, at, levels, construction, halves, elevated, basis, basisAt, length, ts });
+    const [samples, at, levels, halves, elevated, basis, basisAt, length, hodograph] = await Promise.all(jobs);
+    // The portion over [s, t] (or [t, s]): split at the larger, then its left part at the
+    // smaller's place in it. Its control points are the blossom's values b(a..a b..b).
+    let portion = null;
+    const sv = Number(document.getElementById("bz-s").value);
+    const a = Math.min(sv, this.t), b = Math.max(sv, this.t);
+    if (document.getElementById("bz-portion").checked && b > 0 && a < b) {
+      const left = b < 1 ? halves.curves[0] : curve;
+      const first = this.t === b ? left : (await api("split", { curve, t: b })).curves[0];
+      portion = a > 0 ? (await api("split", { curve: first, t: a / b })).curves[1] : first;
+    }
+    this.draw({ samples, at, levels, construction, halves, elevated, basis, basisAt, length, hodograph, portion, a, b, ts });
   },
 
   draw(r) {
     const f = this.frame, svg = this.svg;
-    svg.replaceChildren();
+    redraw(svg);
     const show = (id) => document.getElementById(id).checked;
     if (show("bz-hull")) el("polygon", { class: "hull", id: "bz-hull-shape", points: convexHull(this.points).map((p) => f.x(p) + "," + f.y(p)).join(" ") }, svg);
     el("path", { class: "polygon", d: f.path(this.points) }, svg);
@@ -362,6 +520,30 @@ const bezier = {
       for (const p of pts) el("circle", { class: "elevated-point", cx: f.x(p), cy: f.y(p), r: 3 }, svg);
     }
     const c = r.at.points[0];
+    if (r.portion) {
+      const pts = r.portion.points, n = pts.length - 1;
+      const e = el("path", { class: "half-right", id: "bz-portion-polygon", d: f.path(pts) }, svg);
+      e.dataset.points = JSON.stringify(pts);
+      pts.forEach((p, i) => {
+        el("circle", { class: "elevated-point", cx: f.x(p), cy: f.y(p), r: 3.5 }, svg);
+        const args = Array(n - i).fill("a").concat(Array(i).fill("b")).join("");
+        const label = el("text", { class: "label", x: f.x(p) + 6, y: f.y(p) + 16 }, svg);
+        label.textContent = "b(" + args + ")";
+      });
+    }
+    if (r.hodograph) {
+      // The hodograph C'(s) / n (a Bézier curve on the differences of the points), drawn
+      // from the origin mark, and C'(t) / n both there and at C(t) (the server's eval).
+      const n = this.points.length - 1, o = HODOGRAPH_ORIGIN;
+      const at = (v) => [o[0] + v[0] / n, o[1] + v[1] / n];
+      const hodo = r.hodograph.derivatives[0].map(at);
+      const e = el("path", { class: "elevated", id: "bz-hodograph-curve", d: f.path(hodo) }, svg);
+      e.dataset.points = JSON.stringify(r.hodograph.derivatives[0]);
+      el("path", { d: `M${f.x(o) - 6} ${f.y(o)}h12M${f.x(o)} ${f.y(o) - 6}v12`, stroke: "#555", "stroke-width": 1.5 }, svg);
+      const d = r.at.derivatives[0][0], tip = at(d), onCurve = [c[0] + d[0] / n, c[1] + d[1] / n];
+      el("line", { class: "cursor", x1: f.x(o), y1: f.y(o), x2: f.x(tip), y2: f.y(tip), style: "stroke: #d35400; stroke-width: 2" }, svg);
+      el("line", { class: "cursor", x1: f.x(c), y1: f.y(c), x2: f.x(onCurve), y2: f.y(onCurve), style: "stroke: #d35400; stroke-width: 2" }, svg);
+    }
     el("circle", { class: "on-curve", id: "bz-on-curve", cx: f.x(c), cy: f.y(c), r: 6 }, svg);
     this.points.forEach((p, i) => {
       const h = el("circle", { class: "handle", cx: f.x(p), cy: f.y(p), r: 9, "data-index": i, "data-point": JSON.stringify(p) }, svg);
@@ -374,6 +556,7 @@ const bezier = {
     });
     // Numbers.
     document.getElementById("bz-t-out").textContent = fmt(this.t);
+    document.getElementById("bz-s-out").textContent = "a = " + fmt(r.a) + ", b = " + fmt(r.b);
     document.getElementById("bz-degree").textContent = String(this.points.length - 1);
     document.getElementById("bz-point").textContent = fmtPoint(c);
     document.getElementById("bz-point").dataset.value = JSON.stringify(c);
@@ -452,6 +635,8 @@ const bspline = {
       this.update();
     });
     document.getElementById("bs-insert").addEventListener("click", () => this.insertKnot());
+    document.getElementById("bs-remove").addEventListener("click", () => this.removeKnot());
+    document.getElementById("bs-tol").addEventListener("input", () => this.update());
     document.getElementById("bs-circle").addEventListener("click", () => this.circle());
     this.renderPointList();
   },
@@ -487,6 +672,34 @@ const bspline = {
     } catch (e) {
       status.textContent = e.message;
     }
+  },
+
+  // Removes the interior knot nearest u, all its copies if the tolerance allows
+  // (remove_knot keeps each removal only while the curve moves by at most the tolerance).
+  async removeKnot() {
+    const p = this.degree, n = this.points.length;
+    const interior = this.knots.slice(p + 1, n);
+    const out = document.getElementById("bs-removed");
+    if (!interior.length) {
+      out.textContent = "no interior knot";
+      return;
+    }
+    const knot = interior.reduce((a, b) => (Math.abs(b - this.u) < Math.abs(a - this.u) ? b : a));
+    const times = interior.filter((k) => k === knot).length;
+    const tolerance = this.tolerance();
+    try {
+      const r = await api("remove_knot", { curve: this.curve(), knot, times, tolerance });
+      out.textContent = "u = " + fmt(knot) + ": " + r.removed + " of " + times + (times === 1 ? " copy" : " copies") + " removed within " + tolerance.toExponential(1);
+      out.dataset.request = JSON.stringify({ knot, times, tolerance });
+      this.load(r.curve);
+      this.update();
+    } catch (e) {
+      status.textContent = e.message;
+    }
+  },
+
+  tolerance() {
+    return Math.pow(10, Number(document.getElementById("bs-tol").value));
   },
 
   // The exact circle: the server's NURBS for the circle shorthand (to_bspline answers it).
@@ -531,7 +744,7 @@ const bspline = {
     const [samples, at, basis, ...inserted] = await Promise.all([
       api("eval", { curve, t: ts }),
       api("eval", { curve, t: [this.u] }),
-      api("basis", { kind: "bspline", degree: this.degree, knots: this.knots, t: ts }),
+      apiKept("basis", { kind: "bspline", degree: this.degree, knots: this.knots, t: ts }),
       ...deBoor.requests.map((r) => api("insert_knot", r)),
     ]);
     const levels = [this.points.slice(deBoor.k - this.degree, deBoor.k - deBoor.s + 1)];
@@ -558,7 +771,7 @@ const bspline = {
 
   draw(r) {
     const f = this.frame, svg = this.svg;
-    svg.replaceChildren();
+    redraw(svg);
     el("path", { class: "polygon", d: f.path(this.points) }, svg);
     const curve = el("path", { class: "curve", id: "bs-curve", d: f.path(r.samples.points) }, svg);
     curve.dataset.points = JSON.stringify(r.samples.points);
@@ -582,22 +795,24 @@ const bspline = {
     });
     // The basis functions over the knot vector, the knots draggable on its axis.
     const [a, b] = this.domain();
-    const bf = drawBasis(this.basisSvg, r.ts, r.basis.values, this.u);
     const p = this.degree, n = this.points.length;
-    this.knots.forEach((k, i) => {
-      if (k < a || k > b) return;
-      const interior = i > p && i < n;
-      const mark = el("circle", { class: "knot" + (interior ? "" : " fixed"), cx: bf.x([k, 0]), cy: bf.y([0, 0]), r: interior ? 7 : 5, "data-knot": i }, this.basisSvg);
-      if (interior) {
-        dragHandle(bf, mark, i, (index, w) => {
-          // Knots stay non-decreasing: between their neighbours.
-          this.knots[index] = Math.min(this.knots[index + 1], Math.max(this.knots[index - 1], w[0]));
-          this.update();
-        });
-      }
+    drawBasis(this.basisSvg, r.ts, r.basis.values, this.u, (bf) => {
+      this.knots.forEach((k, i) => {
+        if (k < a || k > b) return;
+        const interior = i > p && i < n;
+        const mark = el("circle", { class: "knot" + (interior ? "" : " fixed"), cx: bf.x([k, 0]), cy: bf.y([0, 0]), r: interior ? 7 : 5, "data-knot": i }, this.basisSvg);
+        if (interior) {
+          dragHandle(bf, mark, i, (index, w) => {
+            // Knots stay non-decreasing: between their neighbours.
+            this.knots[index] = Math.min(this.knots[index + 1], Math.max(this.knots[index - 1], w[0]));
+            this.update();
+          });
+        }
+      });
     });
     // Numbers.
     document.getElementById("bs-u-out").textContent = fmt(this.u);
+    document.getElementById("bs-tol-out").textContent = this.tolerance().toExponential(1);
     document.getElementById("bs-type").textContent = (this.rational() ? "NURBS" : "B-spline") + ", degree " + p + ", " + n + " points";
     document.getElementById("bs-point").textContent = fmtPoint(c);
     document.getElementById("bs-point").dataset.value = JSON.stringify(c);
@@ -637,6 +852,10 @@ const INTERPOLANTS = [
     curve: (p) => ({ type: "cubic_spline", parametrization: "chord", boundary: "natural", points: p }) },
   { key: "spline_not_a_knot", label: "cubic spline, not-a-knot (chord)", color: "#17becf", on: false,
     curve: (p) => ({ type: "cubic_spline", parametrization: "chord", boundary: "not-a-knot", points: p }) },
+  { key: "spline_clamped", label: "cubic spline, clamped (end tangents (1, 0), chord)", color: "#e377c2", on: false,
+    curve: (p) => ({ type: "cubic_spline", parametrization: "chord", boundary: "clamped", start_derivative: [1, 0], end_derivative: [1, 0], points: p }) },
+  { key: "spline_periodic", label: "cubic spline, periodic (closed through the first point, chord)", color: "#bcbd22", on: false,
+    curve: (p) => ({ type: "cubic_spline", parametrization: "chord", boundary: "periodic", points: [...p, p[0]] }) },
   { key: "catmull_rom_0", label: "Catmull-Rom, uniform (α 0)", color: "#ff7f0e", on: false,
     curve: (p) => ({ type: "catmull_rom", alpha: 0, ends: "reflect", points: p }) },
   { key: "catmull_rom_05", label: "Catmull-Rom, centripetal (α 0.5)", color: "#9467bd", on: false,
@@ -682,7 +901,7 @@ const interpolation = {
 
   draw(answers) {
     const f = this.frame, svg = this.svg;
-    svg.replaceChildren();
+    redraw(svg);
     for (const a of answers) {
       const e = el("path", { class: "curve", id: "ip-curve-" + a.c.key, d: f.path(a.points), style: "stroke: " + a.c.color + "; stroke-width: 2" }, svg);
       e.dataset.points = JSON.stringify(a.points);
@@ -752,7 +971,7 @@ const subdivision = {
 
   draw(r) {
     const f = this.frame, svg = this.svg;
-    svg.replaceChildren();
+    redraw(svg);
     const closed = document.getElementById("sd-closed").checked;
     const ring = (pts) => (closed && pts.length ? pts.concat([pts[0]]) : pts);
     el("path", { class: "polygon", d: f.path(ring(this.points)) }, svg);
@@ -805,10 +1024,25 @@ const queries = {
     this.svg = document.getElementById("qr-canvas");
     this.frame = new Frame(this.svg, -0.5, 9.5, -0.5, 5.5);
     this.update = coalesced(() => this.compute());
-    for (const id of ["qr-tol", "qr-method", "qr-bounds", "qr-flat"]) document.getElementById(id).addEventListener("input", () => this.update());
+    for (const id of ["qr-tol", "qr-method", "qr-bounds", "qr-flat", "qr-features"]) document.getElementById(id).addEventListener("input", () => this.update());
+    document.getElementById("qr-piece").addEventListener("click", async () => {
+      try {
+        const right = (await api("split", { curve: { type: "bezier", points: this.a }, t: 0.25 })).curves[1];
+        this.b.splice(0, 4, ...(await api("split", { curve: right, t: 0.5 })).curves[0].points);
+        this.update();
+      } catch (e) {
+        status.textContent = e.message;
+      }
+    });
     this.svg.addEventListener("pointermove", (e) => {
       if (e.buttons) return;  // a drag: the handles' business
-      this.mouse = this.frame.world(e);
+      // The figure's screen matrix kept until the page scrolls or resizes (see world()).
+      if (!this.screen) {
+        this.screen = this.svg.getScreenCTM().inverse();
+        const forget = () => (this.screen = null);
+        for (const type of ["scroll", "resize"]) window.addEventListener(type, forget, { once: true, capture: true });
+      }
+      this.mouse = this.frame.world(e, this.screen);
       this.update();
     });
   },
@@ -833,13 +1067,33 @@ const queries = {
     ]);
     const flat = {};
     methods.forEach((m, i) => (flat[m] = flats[i].points));
-    this.draw({ sa, sb, inter, box, length, closest, flat });
+    // The features of A (inflections, cusps, the extrema of x and y) and the stretches where
+    // A and B overlap, as points of A: one more batch, when shown.
+    let features = null, marks = null, overlaps = [];
+    if (document.getElementById("qr-features").checked) {
+      features = await api("features", { curve: A });
+      const kinds = [["inflection", features.inflections], ["cusp", features.cusps], ["extremum of x", features.extrema[0]], ["extremum of y", features.extrema[1]]];
+      const ts = kinds.flatMap(([, t]) => t);
+      const [at, ...spans] = await Promise.all([
+        ts.length ? api("eval", { curve: A, t: ts }) : { points: [] },
+        ...inter.overlaps.map((o) => api("eval", { curve: A, t: linspace(o.a[0], o.a[1], 33) })),
+      ]);
+      let k = 0;
+      marks = kinds.flatMap(([kind, t]) => t.map((u) => ({ kind, t: u, point: at.points[k++] })));
+      overlaps = spans.map((x) => x.points);
+    }
+    this.draw({ sa, sb, inter, box, length, closest, flat, marks, overlaps });
   },
 
   draw(r) {
     const f = this.frame, svg = this.svg;
-    svg.replaceChildren();
+    redraw(svg);
     if (document.getElementById("qr-bounds").checked) {
+      // The control points' box (a drawing aid, as the convex hull: the cheap bound that
+      // the tight one improves on), then the server's tight box.
+      const xs = this.a.map((p) => p[0]), ys = this.a.map((p) => p[1]);
+      const lo = [Math.min(...xs), Math.min(...ys)], hi = [Math.max(...xs), Math.max(...ys)];
+      el("rect", { class: "hull", id: "qr-control-box", x: f.x(lo), y: f.y(hi), width: f.x(hi) - f.x(lo), height: f.y(lo) - f.y(hi), style: "fill: none; stroke-dasharray: 2 4" }, svg);
       const [x0, y0] = r.box.min, [x1, y1] = r.box.max;
       const rect = el("rect", { class: "polygon", id: "qr-bounds-box", x: f.x([x0, 0]), y: f.y([0, y1]), width: f.x([x1, 0]) - f.x([x0, 0]), height: f.y([0, y0]) - f.y([0, y1]) }, svg);
       rect.dataset.box = JSON.stringify(r.box);
@@ -853,6 +1107,17 @@ const queries = {
       const pts = r.flat[method];
       el("path", { class: "level", stroke: "#d35400", d: f.path(pts) }, svg);
       for (const p of pts) el("circle", { class: "level-point", cx: f.x(p), cy: f.y(p), r: 2.5, fill: "#d35400" }, svg);
+    }
+    for (const [i, pts] of r.overlaps.entries()) el("path", { class: "overlap", "data-overlap": i, d: f.path(pts), stroke: "#e67e22", "stroke-width": 7, "stroke-opacity": 0.6, fill: "none" }, svg);
+    if (r.marks) {
+      const g = el("g", { id: "qr-features-marks" }, svg);
+      g.dataset.marks = JSON.stringify(r.marks);
+      const shapes = { inflection: "#8e44ad", cusp: "#c0392b", "extremum of x": "#2a9d5c", "extremum of y": "#2a9d5c" };
+      for (const m of r.marks) {
+        const [x, y] = [f.x(m.point), f.y(m.point)];
+        if (m.kind === "inflection") el("path", { d: `M${x} ${y - 7}l6 11h-12z`, fill: shapes[m.kind] }, g);
+        else el("path", { d: m.kind === "extremum of x" ? `M${x} ${y - 8}v16` : `M${x - 8} ${y}h16`, stroke: shapes[m.kind], "stroke-width": 3 }, g);
+      }
     }
     const marks = el("g", { id: "qr-intersections" }, svg);
     marks.dataset.points = JSON.stringify(r.inter.intersections.map((x) => x.point));
@@ -882,6 +1147,13 @@ const queries = {
     document.getElementById("qr-intersections-text").textContent = r.inter.intersections.length
       ? r.inter.intersections.map((x) => x.kind + " at t = (" + x.t.map(fmt).join(", ") + ")").join("; ")
       : "none";
+    document.getElementById("qr-features-text").textContent = r.marks
+      ? [["inflection", "inflections"], ["cusp", "cusps"], ["extremum of x", "extrema of x"], ["extremum of y", "extrema of y"]].map(([one, many]) => {
+          const n = r.marks.filter((m) => m.kind === one).length;
+          return n + " " + (n === 1 ? one : many);
+        }).join(", ")
+      : "—";
+    document.getElementById("qr-overlaps").textContent = r.inter.overlaps.length ? r.inter.overlaps.map((o) => "A on [" + o.a.map(fmt).join(", ") + "]").join("; ") : "none";
     document.getElementById("qr-closest").textContent = r.closest ? "t = " + fmt(r.closest.t) + ", distance " + fmt(r.closest.distance) : "move the pointer over the figure";
   },
 };
@@ -995,7 +1267,7 @@ const composite = {
 
   draw(r) {
     const f = this.frame, svg = this.svg;
-    svg.replaceChildren();
+    redraw(svg);
     for (let i = 0; i < 3; i++) el("path", { class: "polygon", d: f.path(this.points.slice(3 * i, 3 * i + 4)) }, svg);
     const pts = r.samples.points;
     // The curvature comb: at each sample a tooth of length scale x curvature along the
@@ -1118,7 +1390,7 @@ const hermite = {
 
   draw(answers) {
     const f = this.frame, svg = this.svg;
-    svg.replaceChildren();
+    redraw(svg);
     for (const a of answers) {
       const e = el("path", { class: "curve", id: "hm-curve-" + a.c.key, d: f.path(a.points), style: "stroke: " + a.c.color + "; stroke-width: 2" }, svg);
       e.dataset.points = JSON.stringify(a.points);
@@ -1208,7 +1480,7 @@ const catmull = {
 
   draw(answers) {
     const f = this.frame, svg = this.svg;
-    svg.replaceChildren();
+    redraw(svg);
     for (const a of answers) {
       const e = el("path", { class: "curve", id: "cr-curve-" + a.c.key, d: f.path(a.points), style: "stroke: " + a.c.color + "; stroke-width: 2" }, svg);
       e.dataset.points = JSON.stringify(a.points);
@@ -1247,6 +1519,11 @@ const SVG_EXAMPLE = '<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 100 10
   '  <path id="wave" d="M100 80 c10-12 20 12 30 0 s20 12 30 0"/>\n' +
   '</svg>';
 
+function glyphDocument(answer) {
+  const paths = answer.glyphs.filter((g) => g.curve).map((g) => ({ id: g.char, subpaths: g.curve.segments }));
+  return { paths, skipped: answer.glyphs.filter((g) => !g.curve).map((g) => ({ element: "blank " + JSON.stringify(g.char) })) };
+}
+
 const importer = {
   doc: null,  // the import_svg response, its control points moved by drags
   tolerance: 0.01,
@@ -1259,6 +1536,11 @@ const importer = {
     this.text.value = SVG_EXAMPLE;
     this.pending = { svg: SVG_EXAMPLE };
     document.getElementById("im-import").addEventListener("click", () => this.load(this.text.value));
+    document.getElementById("im-glyph").addEventListener("click", () => {
+      this.pending = { glyph: { font: document.getElementById("im-font").value, text: document.getElementById("im-glyph-text").value, size: 100 } };
+      this.doc = null;
+      this.update();
+    });
     // A file chosen, or dropped on the figure or the text (read as pending work, so that
     // explorerIdle waits for it).
     const readFile = async (file) => {
@@ -1299,7 +1581,10 @@ const importer = {
     if (this.pending) {
       const request = this.pending;
       this.pending = null;
-      const doc = await api("import_svg", request);
+      // A text's glyphs (y up) read as a document of one shape per glyph, each contour a
+      // subpath; an SVG document (y down) as import_svg reads it.
+      const doc = request.glyph ? glyphDocument(await api("glyph", request.glyph)) : await api("import_svg", request);
+      this.frame.flip = !request.glyph;
       const subs = doc.paths.flatMap((p) => p.subpaths);
       const boxes = await Promise.all(subs.map((curve) => api("bounds", { curve })));
       if (boxes.length) {
@@ -1323,7 +1608,7 @@ const importer = {
 
   draw(answers) {
     const f = this.frame, svg = this.svg;
-    svg.replaceChildren();
+    redraw(svg);
     svg.dataset.tolerance = String(this.tolerance);
     const counts = { line: 0, quadratic: 0, cubic: 0, arc: 0 };
     let total = 0;
@@ -1344,13 +1629,13 @@ const importer = {
         seg.points.forEach((p, pi) => {
           const end = pi === 0 || pi === seg.points.length - 1;
           const h = el("circle", { class: end ? "handle" : "handle inner", cx: f.x(p), cy: f.y(p), r: end ? 5 : 4, "data-subpath": k, "data-segment": si, "data-index": pi, "data-point": JSON.stringify(p) }, svg);
-          h.addEventListener("pointerdown", () => {
+          h.onpointerdown = () => {
             // The points at the same place in this subpath (the joints) move together.
             this.dragged = [];
             segs.forEach((s2, sj) => s2.points.forEach((q, qi) => {
               if (q[0] === p[0] && q[1] === p[1]) this.dragged.push([sj, qi]);
             }));
-          });
+          };
           dragHandle(f, h, pi, (_, w) => {
             for (const [sj, qi] of this.dragged || [[si, pi]]) segs[sj].points[qi] = w;
             this.update();
@@ -1394,10 +1679,521 @@ const importer = {
 };
 
 // ---------------------------------------------------------------------------------------
-// Views and navigation (#bezier, #composite, #bspline, #interpolation, #hermite, #catmull,
-// #subdivision, #queries, #import).
+// View 8: affine maps (affine invariance).
 
-const views = { bezier, composite, bspline, interpolation, hermite, catmull, subdivision, queries, import: importer };
+const affine = {
+  points: [[0.6, 1.0], [1.6, 4.6], [4.2, 0.6], [5.4, 4.2]],
+
+  init() {
+    this.svg = document.getElementById("af-canvas");
+    this.frame = new Frame(this.svg, -0.5, 9.5, -0.5, 5.5);
+    this.update = coalesced(() => this.compute());
+    for (const id of ["af-angle", "af-sx", "af-sy", "af-shear"]) document.getElementById(id).addEventListener("input", () => this.update());
+  },
+
+  // The map A p = M p + b: a rotation of (scale x shear), about the origin, then moved right.
+  map() {
+    const v = (id) => Number(document.getElementById(id).value);
+    const a = (v("af-angle") * Math.PI) / 180, c = Math.cos(a), s = Math.sin(a);
+    const sx = v("af-sx"), sy = v("af-sy"), h = v("af-shear");
+    // [c -s; s c] [sx h sy; 0 sy]
+    const M = [[c * sx, c * h * sy - s * sy], [s * sx, s * h * sy + c * sy]];
+    return { M, b: [5.6, 0.4] };
+  },
+
+  apply(A, p) {
+    return [A.M[0][0] * p[0] + A.M[0][1] * p[1] + A.b[0], A.M[1][0] * p[0] + A.M[1][1] * p[1] + A.b[1]];
+  },
+
+  async compute() {
+    const A = this.map();
+    const mapped = this.points.map((p) => this.apply(A, p));
+    const ts = linspace(0, 1, 161);
+    const [orig, image] = await Promise.all([
+      api("eval", { curve: { type: "bezier", points: this.points }, t: ts }),
+      api("eval", { curve: { type: "bezier", points: mapped }, t: ts }),
+    ]);
+    this.draw({ A, mapped, orig, image, ts });
+  },
+
+  draw(r) {
+    const f = this.frame, svg = this.svg;
+    redraw(svg);
+    el("path", { class: "polygon", d: f.path(this.points) }, svg);
+    el("path", { class: "curve", id: "af-curve", d: f.path(r.orig.points), style: "stroke: #888" }, svg);
+    el("path", { class: "polygon", d: f.path(r.mapped) }, svg);
+    const image = el("path", { class: "curve", id: "af-image", d: f.path(r.image.points) }, svg);
+    image.dataset.points = JSON.stringify(r.image.points);
+    // The original's samples mapped by A, against the image curve at the same t.
+    let err = 0;
+    r.orig.points.forEach((p, i) => {
+      const q = this.apply(r.A, p), c = r.image.points[i];
+      err = Math.max(err, Math.hypot(q[0] - c[0], q[1] - c[1]));
+      if (i % 8 === 0) el("circle", { class: "level-point", cx: f.x(q), cy: f.y(q), r: 3.5, fill: "#d35400" }, svg);
+    });
+    r.mapped.forEach((p, i) => el("rect", { class: "dependent", x: f.x(p) - 5, y: f.y(p) - 5, width: 10, height: 10, "data-mapped": i, "data-point": JSON.stringify(p) }, svg));
+    this.points.forEach((p, i) => {
+      const h = el("circle", { class: "handle", cx: f.x(p), cy: f.y(p), r: 8, "data-index": i, "data-point": JSON.stringify(p) }, svg);
+      dragHandle(f, h, i, (index, w) => {
+        this.points[index] = w;
+        this.update();
+      });
+    });
+    const M = r.A.M;
+    document.getElementById("af-matrix").textContent = "[[" + fmt(M[0][0]) + ", " + fmt(M[0][1]) + "], [" + fmt(M[1][0]) + ", " + fmt(M[1][1]) + "]] + " + fmtPoint(r.A.b);
+    document.getElementById("af-error").textContent = err.toExponential(1);
+    for (const id of ["af-angle", "af-sx", "af-sy", "af-shear"]) document.getElementById(id + "-out").textContent = document.getElementById(id).value;
+  },
+};
+
+// ---------------------------------------------------------------------------------------
+// View 9: degree reduction.
+
+const reduce = {
+  points: [[0.4, 0.8], [1.0, 4.6], [2.6, 5.0], [3.6, 1.2], [5.0, 0.4], [6.4, 3.4], [8.0, 5.0], [9.0, 1.4]],
+
+  init() {
+    this.svg = document.getElementById("rd-canvas");
+    this.frame = new Frame(this.svg, -0.5, 9.5, -0.5, 5.5);
+    this.update = coalesced(() => this.compute());
+    const select = document.getElementById("rd-degree");
+    for (let m = 1; m < this.points.length - 1; m++) select.appendChild(Object.assign(document.createElement("option"), { textContent: String(m), selected: m === 4 }));
+    select.addEventListener("input", () => this.update());
+  },
+
+  async compute() {
+    const curve = { type: "bezier", points: this.points };
+    const n = this.points.length - 1, m = Number(document.getElementById("rd-degree").value);
+    const ts = linspace(0, 1, 161);
+    // A tolerance no curve on this figure reaches: the answer is always the reduction, with
+    // its measured distance.
+    const [samples, reduced] = await Promise.all([api("eval", { curve, t: ts }), api("reduce", { curve, times: n - m, tolerance: 1e6 })]);
+    const low = await api("eval", { curve: reduced.curve, t: ts });
+    this.draw({ samples, reduced, low, n, m });
+  },
+
+  draw(r) {
+    const f = this.frame, svg = this.svg;
+    redraw(svg);
+    el("path", { class: "polygon", d: f.path(this.points) }, svg);
+    const lowPoly = r.reduced.curve.points;
+    const poly = el("path", { class: "elevated", id: "rd-polygon", d: f.path(lowPoly) }, svg);
+    poly.dataset.points = JSON.stringify(lowPoly);
+    for (const p of lowPoly) el("circle", { class: "elevated-point", cx: f.x(p), cy: f.y(p), r: 3.5 }, svg);
+    const c = el("path", { class: "curve", id: "rd-curve", d: f.path(r.samples.points) }, svg);
+    c.dataset.points = JSON.stringify(r.samples.points);
+    const low = el("path", { class: "curve", id: "rd-reduced", d: f.path(r.low.points), style: "stroke: #e67e22" }, svg);
+    low.dataset.points = JSON.stringify(r.low.points);
+    this.points.forEach((p, i) => {
+      const h = el("circle", { class: "handle", cx: f.x(p), cy: f.y(p), r: 8, "data-index": i, "data-point": JSON.stringify(p) }, svg);
+      dragHandle(f, h, i, (index, w) => {
+        this.points[index] = w;
+        this.update();
+      });
+    });
+    document.getElementById("rd-from").textContent = r.n + " → " + r.m;
+    document.getElementById("rd-error").textContent = fmt(r.reduced.max_error);
+  },
+};
+
+// ---------------------------------------------------------------------------------------
+// View 10: one form for every curve: a path's exact Bézier pieces.
+
+const pieces = {
+  // A polyline (own domain [0, 3]), a cubic, and a rational quarter circle (weights 1, √2/2, 1).
+  segments: [
+    { type: "polyline", points: [[0.4, 0.6], [1.8, 3.4], [3.0, 1.0], [4.0, 2.8]] },
+    { type: "bezier", points: [[4.0, 2.8], [5.4, 5.2], [6.6, -0.4], [7.6, 1.2]] },
+    { type: "rational_bezier", points: [[7.6, 1.2], [9.2, 1.2], [9.2, 2.8]], weights: [1, Math.SQRT1_2, 1] },
+  ],
+
+  init() {
+    this.svg = document.getElementById("pc-canvas");
+    this.frame = new Frame(this.svg, -0.5, 9.5, -0.5, 5.5);
+    this.update = coalesced(() => this.compute());
+    document.getElementById("pc-tol").addEventListener("input", () => this.update());
+  },
+
+  curve() {
+    return { type: "path", segments: this.segments, breaks: [0, 1.5, 3, 4] };
+  },
+
+  tolerance() {
+    return Math.pow(10, Number(document.getElementById("pc-tol").value));
+  },
+
+  async compute() {
+    const curve = this.curve();
+    const [bz, box, flat, length] = await Promise.all([
+      api("to_bezier", { curve }),
+      api("bounds", { curve }),
+      api("flatten", { curve, tolerance: this.tolerance() }),
+      api("length", { curve }),
+    ]);
+    const ts = linspace(0, 1, 41);
+    const [samples, ends] = await Promise.all([
+      Promise.all(bz.curve.segments.map((seg) => api("eval", { curve: seg, t: ts }))),
+      api("eval", { curve, t: bz.curve.breaks }),
+    ]);
+    this.draw({ bz, box, flat, length, samples, ends });
+  },
+
+  draw(r) {
+    const f = this.frame, svg = this.svg;
+    redraw(svg);
+    const [x0, y0] = r.box.min, [x1, y1] = r.box.max;
+    const rect = el("rect", { class: "polygon", id: "pc-bounds", x: f.x([x0, 0]), y: f.y([0, y1]), width: f.x([x1, 0]) - f.x([x0, 0]), height: f.y([0, y0]) - f.y([0, y1]) }, svg);
+    rect.dataset.box = JSON.stringify(r.box);
+    r.bz.curve.segments.forEach((seg, i) => {
+      el("path", { class: "polygon", d: f.path(seg.points) }, svg);
+      const e = el("path", { class: "curve", "data-piece": i, d: f.path(r.samples[i].points), style: "stroke: " + (i % 2 ? "#e67e22" : "#1f5fbf") }, svg);
+      e.dataset.points = JSON.stringify(r.samples[i].points);
+    });
+    const flat = el("path", { class: "level", id: "pc-flat-line", stroke: "#2a9d5c", d: f.path(r.flat.points) }, svg);
+    flat.dataset.points = JSON.stringify(r.flat.points);
+    for (const p of r.ends.points) el("circle", { class: "on-curve", cx: f.x(p), cy: f.y(p), r: 4 }, svg);
+    this.segments.forEach((seg, si) => {
+      seg.points.forEach((p, pi) => {
+        const h = el("circle", { class: "handle", cx: f.x(p), cy: f.y(p), r: 7, "data-segment": si, "data-index": pi, "data-point": JSON.stringify(p) }, svg);
+        h.onpointerdown = () => {
+          // The points at the same place (the joints) move together.
+          this.dragged = [];
+          this.segments.forEach((s2, sj) => s2.points.forEach((q, qi) => {
+            if (q[0] === p[0] && q[1] === p[1]) this.dragged.push([sj, qi]);
+          }));
+        };
+        dragHandle(f, h, pi, (_, w) => {
+          for (const [sj, qi] of this.dragged || [[si, pi]]) this.segments[sj].points[qi] = w;
+          this.update();
+        });
+      });
+    });
+    const counts = {};
+    for (const seg of r.bz.curve.segments) {
+      const name = seg.type === "rational_bezier" ? "rational" : ["", "", "line", "quadratic", "cubic"][seg.points.length] || "degree " + (seg.points.length - 1);
+      counts[name] = (counts[name] || 0) + 1;
+    }
+    document.getElementById("pc-count").textContent = r.bz.curve.segments.length + " (" + Object.entries(counts).map(([k, v]) => v + " " + k).join(", ") + ")";
+    document.getElementById("pc-breaks").textContent = r.bz.curve.breaks.map(fmt).join(", ");
+    document.getElementById("pc-box").textContent = fmtPoint(r.box.min) + " – " + fmtPoint(r.box.max);
+    document.getElementById("pc-flat").textContent = r.flat.points.length + " vertices within " + this.tolerance().toExponential(2);
+    document.getElementById("pc-length").textContent = fmt(r.length.length);
+    document.getElementById("pc-tol-out").textContent = this.tolerance().toExponential(2);
+  },
+};
+
+// ---------------------------------------------------------------------------------------
+// View 11: fitting a B-spline to points.
+
+const fitting = {
+  // y = sin x + cos(3x) / 4 on [0, 2 pi], with a fixed "noise".
+  points: [0.31, -0.12, 0.22, 0.05, -0.27, 0.18, -0.08, 0.14, -0.2, 0.09, 0.26, -0.16, 0.03, -0.1].map((e, i, a) => {
+    const x = (2 * Math.PI * i) / (a.length - 1);
+    return [0.5 + (8.5 * i) / (a.length - 1), 2.6 + 1.6 * (Math.sin(x) + Math.cos(3 * x) / 4) + 0.5 * e];
+  }),
+
+  init() {
+    this.svg = document.getElementById("ft-canvas");
+    this.frame = new Frame(this.svg, -0.5, 9.5, -0.5, 5.5);
+    this.update = coalesced(() => this.compute());
+    const count = document.getElementById("ft-count");
+    count.max = String(this.points.length);
+    for (const id of ["ft-degree", "ft-count"]) document.getElementById(id).addEventListener("input", () => this.update());
+  },
+
+  request() {
+    const degree = Number(document.getElementById("ft-degree").value);
+    const count = Math.max(degree + 1, Number(document.getElementById("ft-count").value));
+    return { points: this.points, degree, control_points: count };
+  },
+
+  async compute() {
+    const request = this.request();
+    const fit = await api("fit", request);
+    const samples = await api("eval", { curve: fit.curve, t: linspace(0, 1, 241) });
+    this.draw({ request, fit, samples });
+  },
+
+  draw(r) {
+    const f = this.frame, svg = this.svg;
+    redraw(svg);
+    const ctrl = r.fit.curve.points;
+    const poly = el("path", { class: "elevated", id: "ft-polygon", d: f.path(ctrl) }, svg);
+    poly.dataset.points = JSON.stringify(ctrl);
+    for (const p of ctrl) el("circle", { class: "elevated-point", cx: f.x(p), cy: f.y(p), r: 3.5 }, svg);
+    const c = el("path", { class: "curve", id: "ft-curve", d: f.path(r.samples.points) }, svg);
+    c.dataset.points = JSON.stringify(r.samples.points);
+    c.dataset.curve = JSON.stringify(r.fit.curve);
+    this.points.forEach((p, i) => {
+      const h = el("circle", { class: "handle", cx: f.x(p), cy: f.y(p), r: 6, "data-index": i, "data-point": JSON.stringify(p) }, svg);
+      dragHandle(f, h, i, (index, w) => {
+        this.points[index] = w;
+        this.update();
+      });
+    });
+    const n = r.request.control_points;
+    document.getElementById("ft-count-out").textContent = String(n);
+    document.getElementById("ft-kind").textContent = (n === this.points.length ? "interpolation" : "least squares") + ", degree " + r.request.degree + ", " + n + " control points, " + this.points.length + " data points";
+    document.getElementById("ft-error").textContent = fmt(r.fit.max_error);
+  },
+};
+
+// ---------------------------------------------------------------------------------------
+// 3-D views: an orthographic view from azimuth a and elevation e (degrees); world points
+// on the screen as (p . right, p . up); a drag moves a point in the plane of the screen,
+// or in a given plane (two axes).
+
+class View3 {
+  constructor(azimuth, elevation) {
+    const a = (azimuth * Math.PI) / 180, e = (elevation * Math.PI) / 180;
+    this.right = [-Math.sin(a), Math.cos(a), 0];
+    this.up = [-Math.sin(e) * Math.cos(a), -Math.sin(e) * Math.sin(a), Math.cos(e)];
+  }
+  p(q) {
+    const r = this.right, u = this.up;
+    return [r[0] * q[0] + r[1] * q[1] + r[2] * q[2], u[0] * q[0] + u[1] * q[1] + u[2] * q[2]];
+  }
+  // q moved so that its projection lands on w: in the screen plane, or along axes i and j.
+  moved(q, w, axes) {
+    const s = this.p(q), dx = w[0] - s[0], dy = w[1] - s[1];
+    if (!axes) return q.map((c, k) => c + dx * this.right[k] + dy * this.up[k]);
+    const [i, j] = axes;
+    const a = [this.right[i], this.up[i]], b = [this.right[j], this.up[j]];
+    const det = a[0] * b[1] - a[1] * b[0];
+    if (Math.abs(det) < 1e-6) return q;
+    const out = q.slice();
+    out[i] += (dx * b[1] - dy * b[0]) / det;
+    out[j] += (a[0] * dy - a[1] * dx) / det;
+    return out;
+  }
+}
+
+// ---------------------------------------------------------------------------------------
+// View 12: frames along a space curve.
+
+const frames = {
+  points: [[0, 0, 0], [3.2, 3.4, 1.2], [2.6, -3.0, 1.4], [6.0, 0, 2.4]],
+
+  init() {
+    this.svg = document.getElementById("fr-canvas");
+    this.frame = new Frame(this.svg, -1.5, 7.5, -3.2, 3.2);
+    this.update = coalesced(() => this.compute());
+    for (const id of ["fr-frenet", "fr-rmf", "fr-az"]) document.getElementById(id).addEventListener("input", () => this.update());
+  },
+
+  view() {
+    return new View3(Number(document.getElementById("fr-az").value), 55);
+  },
+
+  async compute() {
+    const curve = { type: "bezier", points: this.points };
+    const ts = linspace(0, 1, 241), at = linspace(0, 1, 25);
+    const [samples, where, frenet, rmf] = await Promise.all([
+      api("eval", { curve, t: ts }),
+      api("eval", { curve, t: at }),
+      api("frames", { curve, t: at, method: "frenet" }),
+      api("frames", { curve, t: at, method: "rotation_minimizing" }),
+    ]);
+    this.draw({ samples, where, frenet, rmf });
+  },
+
+  // The normal's total twist about the tangent, in degrees: at each step the previous
+  // normal is projected onto the plane normal to the new tangent, and the angle from it to
+  // the new normal is added (null normals, where Frenet has none, skipped).
+  twist(answer) {
+    const dot = (a, b) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+    const cross = (a, b) => [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
+    let sum = 0;
+    for (let i = 1; i < answer.normals.length; i++) {
+      const a = answer.normals[i - 1], b = answer.normals[i], t = answer.tangents[i];
+      if (!a || !b) continue;
+      const k = dot(a, t), p = [a[0] - k * t[0], a[1] - k * t[1], a[2] - k * t[2]];
+      sum += Math.abs(Math.atan2(dot(cross(p, b), t), dot(p, b)));
+    }
+    return (sum * 180) / Math.PI;
+  },
+
+  // Fits the figure to the projected control points (on opening and when the view turns).
+  fit(v) {
+    const q = this.points.map((p) => v.p(p));
+    const xs = q.map((p) => p[0]), ys = q.map((p) => p[1]);
+    const lo = [Math.min(...xs), Math.min(...ys)], hi = [Math.max(...xs), Math.max(...ys)];
+    const m = 0.15 * Math.max(hi[0] - lo[0], hi[1] - lo[1]) + 0.8;
+    this.frame.set(lo[0] - m, hi[0] + m, lo[1] - m, hi[1] + m);
+  },
+
+  draw(r) {
+    const svg = this.svg, v = this.view();
+    const az = document.getElementById("fr-az").value;
+    if (this.fitted !== az) {
+      this.fit(v);
+      this.fitted = az;
+    }
+    const f = this.frame;
+    redraw(svg);
+    el("path", { class: "polygon", d: f.path(this.points.map((q) => v.p(q))) }, svg);
+    const c = el("path", { class: "curve", id: "fr-curve", d: f.path(r.samples.points.map((q) => v.p(q))) }, svg);
+    c.dataset.points = JSON.stringify(r.samples.points);
+    const L = 0.8;
+    for (const [key, answer, color] of [["frenet", r.frenet, "#c0392b"], ["rmf", r.rmf, "#2a9d5c"]]) {
+      const g = el("g", { id: "fr-normals-" + key }, svg);
+      g.dataset.normals = JSON.stringify(answer.normals);
+      if (!document.getElementById("fr-" + key).checked) continue;
+      const d = answer.normals.map((n, i) => {
+        if (!n) return "";
+        const p = r.where.points[i], q = v.p(p), e = v.p(p.map((x, k) => x + L * n[k]));
+        return "M" + f.x(q).toFixed(2) + " " + f.y(q).toFixed(2) + "L" + f.x(e).toFixed(2) + " " + f.y(e).toFixed(2);
+      }).join("");
+      el("path", { d, stroke: color, "stroke-width": 2, fill: "none" }, g);
+    }
+    this.points.forEach((p, i) => {
+      const q = v.p(p);
+      const h = el("circle", { class: "handle", cx: f.x(q), cy: f.y(q), r: 8, "data-index": i, "data-point": JSON.stringify(p) }, svg);
+      dragHandle(f, h, i, (index, w) => {
+        this.points[index] = this.view().moved(this.points[index], w);
+        this.update();
+      });
+    });
+    document.getElementById("fr-turn-frenet").textContent = this.twist(r.frenet).toFixed(1) + "°";
+    document.getElementById("fr-turn-rmf").textContent = this.twist(r.rmf).toFixed(1) + "°";
+    document.getElementById("fr-az-out").textContent = document.getElementById("fr-az").value;
+  },
+};
+
+// ---------------------------------------------------------------------------------------
+// View 13: surfaces (a patch's net, or the curves of a construction, dragged in 3-D).
+
+const SURFACE_EXAMPLES = {
+  // Rows of the 4 x 4 net of a bicubic Bézier patch.
+  patch: [0, 1, 2, 3].map((i) => [0, 1, 2, 3].map((j) => [i, j, [[0, 0.4, 0.3, 0], [0.5, 1.6, 1.2, 0.4], [0.3, 1.0, 1.8, 0.6], [0, 0.2, 0.7, 0.2]][i][j]])),
+  // A vase profile in the xz plane, turned about z.
+  revolve: [[[1.0, 0, 0], [2.2, 0, 0.6], [0.4, 0, 1.8], [1.4, 0, 3.0]]],
+  // Three cross-sections across y.
+  loft: [0, 1.5, 3].map((y, k) => [[0, y, 0.6 * k], [1, y, 1.6 - 0.4 * k], [2, y, -0.3 + 0.5 * k], [3, y, 0.4]]),
+  // c0, c1 (at v = 0, 1, running in u), d0, d1 (at u = 0, 1, running in v).
+  coons: [
+    [[0, 0, 0], [1, 0, 0.8], [2, 0, -0.4], [3, 0, 0]],
+    [[0, 3, 0.5], [1.5, 3, 1.5], [3, 3, 0.5]],
+    [[0, 0, 0], [0, 1.5, 1.2], [0, 3, 0.5]],
+    [[3, 0, 0], [3, 1, -0.8], [3, 2, 0.8], [3, 3, 0.5]],
+  ],
+};
+
+const surface = {
+  data: JSON.parse(JSON.stringify(SURFACE_EXAMPLES)),
+
+  init() {
+    this.svg = document.getElementById("sf-canvas");
+    this.frame = new Frame(this.svg, -3, 3, -2.2, 2.6);
+    this.update = coalesced(() => this.compute());
+    for (const id of ["sf-mode", "sf-az", "sf-el", "sf-mesh", "sf-tol"]) document.getElementById(id).addEventListener("input", () => this.update());
+  },
+
+  mode() {
+    return document.getElementById("sf-mode").value;
+  },
+
+  view() {
+    return new View3(Number(document.getElementById("sf-az").value), Number(document.getElementById("sf-el").value));
+  },
+
+  // The model's centre, subtracted before projecting (the views turn about it).
+  centre() {
+    return { patch: [1.5, 1.5, 0.6], revolve: [0, 0, 1.5], loft: [1.5, 1.5, 0.5], coons: [1.5, 1.5, 0.3] }[this.mode()];
+  },
+
+  // The surface object: the patch's net itself, or the construction's answer.
+  async build() {
+    const mode = this.mode(), d = this.data[mode];
+    const bez = (points) => ({ type: "bezier", points });
+    if (mode === "patch") return { type: "bezier_surface", points: d };
+    const request = mode === "revolve"
+      ? { construct: "revolve", curve: bez(d[0]), axis: { point: [0, 0, 0], direction: [0, 0, 1] } }
+      : { construct: mode, curves: d.map(bez) };
+    return (await api("surface", request)).surface;
+  },
+
+  domain(s) {
+    if (!s.knots) return [[0, 1], [0, 1]];
+    const rows = s.points.length, cols = s.points[0].length, [p, q] = s.degree, [U, V] = s.knots;
+    return [[U[p], U[rows]], [V[q], V[cols]]];
+  },
+
+  async compute() {
+    const s = await this.build();
+    const [[u0, u1], [v0, v1]] = this.domain(s);
+    const lines = 9, steps = 40, uv = [];
+    for (let k = 0; k < lines; k++) {
+      const a = k / (lines - 1);
+      for (let j = 0; j <= steps; j++) uv.push([u0 + a * (u1 - u0), v0 + (j / steps) * (v1 - v0)]);
+      for (let j = 0; j <= steps; j++) uv.push([u0 + (j / steps) * (u1 - u0), v0 + a * (v1 - v0)]);
+    }
+    const mesh = document.getElementById("sf-mesh").checked;
+    const tolerance = Math.pow(10, Number(document.getElementById("sf-tol").value));
+    const [grid, area, tess] = await Promise.all([
+      api("eval", { surface: s, uv }),
+      api("area", { surface: s }),
+      mesh ? api("tessellate", { surface: s, tolerance }) : null,
+    ]);
+    this.draw({ s, uv, grid, area, tess, lines, steps, tolerance });
+  },
+
+  draw(r) {
+    const f = this.frame, svg = this.svg, v = this.view(), c = this.centre();
+    const P = (q) => v.p([q[0] - c[0], q[1] - c[1], q[2] - c[2]]);
+    redraw(svg);
+    if (r.tess) {
+      const V = r.tess.vertices.map(P);
+      const d = r.tess.triangles.map(([a, b, k]) => "M" + [a, b, k, a].map((i) => f.x(V[i]).toFixed(1) + " " + f.y(V[i]).toFixed(1)).join("L")).join("");
+      el("path", { d, stroke: "#9ab", "stroke-width": 0.6, fill: "none", id: "sf-mesh-lines" }, svg);
+    }
+    const n = r.steps + 1, pts = r.grid.points;
+    const iso = el("g", { id: "sf-isocurves" }, svg);
+    iso.dataset.points = JSON.stringify(pts);
+    iso.dataset.uv = JSON.stringify(r.uv);
+    for (let k = 0; k < 2 * r.lines; k++) el("path", { class: "curve", d: f.path(pts.slice(k * n, (k + 1) * n).map(P)), style: "stroke-width: 1.6; stroke: " + (k % 2 ? "#1f5fbf" : "#e67e22") }, iso);
+    const mode = this.mode(), d = this.data[mode];
+    // The net (patch) or the curves' polygons, and their points to drag.
+    if (mode === "patch") {
+      for (let i = 0; i < 4; i++) {
+        el("path", { class: "polygon", d: f.path(d[i].map(P)) }, svg);
+        el("path", { class: "polygon", d: f.path(d.map((row) => row[i]).map(P)) }, svg);
+      }
+    } else {
+      for (const curve of d) el("path", { class: "polygon", d: f.path(curve.map(P)) }, svg);
+    }
+    d.forEach((curve, ci) => curve.forEach((p, pi) => {
+      const q = P(p);
+      const h = el("circle", { class: "handle", cx: f.x(q), cy: f.y(q), r: 6, "data-curve": ci, "data-index": pi, "data-point": JSON.stringify(p) }, svg);
+      h.onpointerdown = () => {
+        // Points at the same place (the Coons corners) move together.
+        this.dragged = [];
+        d.forEach((c2, cj) => c2.forEach((q2, qj) => {
+          if (q2.every((x, k) => x === p[k])) this.dragged.push([cj, qj]);
+        }));
+      };
+      dragHandle(f, h, pi, (_, w) => {
+        const cur = d[ci][pi], moved = this.view().moved([cur[0] - c[0], cur[1] - c[1], cur[2] - c[2]], w, mode === "revolve" ? [0, 2] : null);
+        const to = [moved[0] + c[0], moved[1] + c[1], moved[2] + c[2]];
+        for (const [cj, qj] of this.dragged || [[ci, pi]]) d[cj][qj] = to.slice();
+        this.update();
+      });
+    }));
+    const s = r.s;
+    document.getElementById("sf-type").textContent = s.type + ", degree " + (s.degree || [s.points.length - 1, s.points[0].length - 1]).join(" × ") + ", " + s.points.length + " × " + s.points[0].length + " control points";
+    document.getElementById("sf-area").textContent = fmt(r.area.area);
+    document.getElementById("sf-triangles").textContent = r.tess ? r.tess.triangles.length + " within " + r.tolerance.toExponential(2) : "—";
+    document.getElementById("sf-az-out").textContent = document.getElementById("sf-az").value;
+    document.getElementById("sf-el-out").textContent = document.getElementById("sf-el").value;
+    document.getElementById("sf-tol-out").textContent = r.tolerance.toExponential(2);
+  },
+};
+
+// ---------------------------------------------------------------------------------------
+// Views and navigation (#bezier, #composite, #bspline, #interpolation, #hermite, #catmull,
+// #subdivision, #queries, #import, #affine, #reduce, #pieces, #fit, #frames, #surface).
+
+const views = { bezier, composite, bspline, interpolation, hermite, catmull, subdivision, queries, import: importer, affine, reduce, pieces, fit: fitting, frames, surface };
 
 function show() {
   const name = (location.hash || "#bezier").slice(1);

@@ -409,7 +409,15 @@ Figure convex_hull_property() {
   control_points(doc, c.points());
   for (const auto& h : hull) doc.circle(h, 6.5, Paint{.stroke = "#d4a017", .stroke_width = 1.6});
   const P2 mid = centroid(c.points());
-  for (std::size_t i = 0; i < c.points().size(); ++i) label_away(doc, c.points()[i], mid, "P" + sub(static_cast<int>(i)), math(15), 18);
+  // Labels clear of the hull's edge (closed), the polygon and the curve.
+  LabelPlacer labels(doc);
+  auto closed = hull;
+  closed.push_back(hull.front());
+  labels.avoid(closed);
+  labels.avoid(c.points());
+  labels.avoid_curve(c);
+  for (std::size_t i = 0; i < c.points().size(); ++i)
+    labels.place(c.points()[i], "P" + sub(static_cast<int>(i)), math(15), doc.map()(c.points()[i]) - doc.map()(mid), 12);
   {
     auto s = small(12, Anchor::middle, "#9c7a0c");
     doc.text({3.2, 1.2}, "conv{P\u2080, \u2026, P\u2086}", s);
@@ -887,6 +895,9 @@ Figure pieces_of_a_path() {
   }
   LabelPlacer labels(doc);
   labels.avoid_curve(path, 400);
+  auto box_edge = rect_pts(tb);
+  box_edge.push_back(tb.lo);
+  labels.avoid(box_edge);  // the bounds' edge (a filled box: the label check counts its outline)
   for (std::size_t i = 0; i < p.size(); ++i) std::visit([&](const auto& piece) { labels.avoid(piece.points()); }, p.segments()[i]);
   for (std::size_t i = 0; i < p.breaks().size(); ++i) {
     const double u = p.breaks()[i];
@@ -973,6 +984,12 @@ constexpr ExplorerView explorer_views[] = {
     {"runge", "interpolation", "Interpolation"},       {"catmull-rom", "catmull", "Catmull-Rom α"},
     {"hermite-basis", "hermite", "Hermite and tangent rules"}, {"spline-boundaries", "interpolation", "Interpolation"},
     {"monotone-interpolation", "hermite", "Hermite and tangent rules"},
+    {"affine", "affine", "Affine maps"},               {"reduction", "reduce", "Degree reduction"},
+    {"pieces", "pieces", "Path pieces"},               {"noisy-fit", "fit", "Fitting"},
+    {"knot-removal", "bspline", "B-splines and NURBS"}, {"glyphs", "import", "SVG import and fonts"},
+    {"surface-of-revolution", "surface", "Surfaces"},  {"lofted-hull", "surface", "Surfaces"},
+    {"coons-patch", "surface", "Surfaces"},            {"bicubic-patch", "surface", "Surfaces"},
+    {"torus-tessellation", "surface", "Surfaces"},     {"frames", "frames", "3-D frames"},
 };
 
 /// The explorer's address as `make explorer` prints it (its default port).
@@ -1017,7 +1034,7 @@ std::string html_page(const std::vector<Figure>& figures) {
 constructions (de Casteljau, de Boor, blossoms, knot insertion and removal), composite and interpolating curves,
 subdivision schemes, the geometric queries (bounds, closest points, intersections, flattening, curvature, 3-D frames),
 font outlines and surfaces. Each figure and every number in its caption is computed by the library when this page is
-generated (<code>make demo</code>); most figures link to the view of the explorer that shows them live
+generated (<code>make demo</code>); every figure links to the view of the explorer that shows it live
 (<code>make explorer</code> serves it at <code>127.0.0.1:8080</code>).</p>
 <nav><ol>
 )";

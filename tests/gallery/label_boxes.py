@@ -5,7 +5,7 @@ A text's box is estimated from its font size and its characters (advance widths 
 Helvetica-like sans in em, a little generous, so that the check errs towards finding a
 collision), its anchor (start, middle, end) and its baseline: from 0.75 em above the
 baseline to 0.22 em below. A drawn curve is a stroked <path> or <polyline> at least 1 px
-wide, dashed or not (curves, graphs, control polygons, construction lines; axes, ticks,
+wide, dashed or not, and the outline of a stroked <polygon> or <rect> (curves, graphs, control polygons, construction lines, boxes; axes, ticks,
 grid lines, arrows and legend swatches are <line> elements, and hairlines below 1 px are
 faint guides a label may cross), flattened into short segments. Boxes are shrunk by a small margin before the tests (text edges touching a
 curve's antialiased edge are not collisions a reader sees)."""
@@ -137,16 +137,22 @@ def curve_polylines(root):
     out = []
     for el, (ox, oy) in walk(root):
         tag = el.tag.replace(SVG, "")
-        if tag not in ("path", "polyline"):
+        if tag not in ("path", "polyline", "polygon", "rect"):
             continue
         stroke = el.get("stroke", "none")
         if stroke == "none" or float(el.get("stroke-width", "1")) < 1:
             continue
         if tag == "path":
             lines = path_polylines(el.get("d", ""))
+        elif tag == "rect":  # its outline (a filled box's edge is drawn as a curve is)
+            x, y = float(el.get("x", "0")), float(el.get("y", "0"))
+            w, h = float(el.get("width", "0")), float(el.get("height", "0"))
+            lines = [[(x, y), (x + w, y), (x + w, y + h), (x, y + h), (x, y)]]
         else:
             v = _numbers(el.get("points", ""))
             lines = [list(zip(v[0::2], v[1::2]))]
+            if tag == "polygon" and lines[0]:
+                lines[0].append(lines[0][0])  # closed
         for line in lines:
             out.append((f"<{tag} stroke={stroke}>", [(x + ox, y + oy) for x, y in line]))
     return out
@@ -219,3 +225,14 @@ def _self_test():
     # The cubic's midpoint is (5, 7.5).
     assert any(math.dist(p, (5, 7.5)) < 1e-9 for p in line)
     assert path_polylines("M0 0L1 0 1 1Z")[0] == [(0, 0), (1, 0), (1, 1), (0, 0)]
+    # A filled box's outline and a polygon's closing edge count as drawn lines; the box's
+    # inside does not (a label may sit on a shaded area).
+    import xml.etree.ElementTree as ET
+    svg = ('<svg xmlns="http://www.w3.org/2000/svg">'
+           '<rect x="10" y="10" width="100" height="50" fill="#eee" stroke="#000" stroke-width="1.4"/>'
+           '<polygon points="200,0 300,0 300,100" fill="none" stroke="#000" stroke-width="1.5"/>'
+           '<text x="60" y="14" font-size="11">u=1</text>'
+           '<text x="60" y="40" font-size="11">u=2</text>'
+           '<text x="245" y="52" font-size="11">P</text></svg>')
+    found = label_collisions(ET.fromstring(svg))
+    assert found == ["label 'u=1' crosses a curve <rect stroke=#000>", "label 'P' crosses a curve <polygon stroke=#000>"], found
