@@ -1,6 +1,6 @@
 # Included by cpack through CPACK_PROJECT_CONFIG_FILE (written by CMakeLists.txt, which sets
-# CASTELJAU_ELF_FILES: the build tree's `casteljau` program and, when built, the Python
-# module, the package's only ELF files). Runs dpkg-shlibdeps on those and prepends their
+# CASTELJAU_ELF_FILES: the build tree's `casteljau` program, the two modules it carries inside
+# it (apps/cli/module_images.cpp) and, when built, the Python module). Runs dpkg-shlibdeps on those and prepends their
 # shared-library dependencies to CPACK_DEBIAN_PACKAGE_DEPENDS. CPack's own
 # CPACK_DEBIAN_PACKAGE_SHLIBDEPS runs `file` on every packaged file first (about 120,
 # mostly headers: about 11 s of CPU of the 13 s a package took, measured in session 12);

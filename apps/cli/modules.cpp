@@ -7,12 +7,14 @@
 //   libpng, Brotli, glib and graphite2: about 8 ms of CPU of a 15 ms start, session 13),
 //   for `casteljau glyph`. This file defines io::glyph_outlines for the program, so the
 //   linker never takes the library's own definition (and FreeType) from casteljau_io.
-// Each is looked for beside the program (the build tree), then at its installed place
-// relative to the program (CASTELJAU_MODULE_DIR).
+// Both are inside the program (module_images.cpp): a module is copied to an anonymous
+// memory file (memfd_create) and loaded from there, so the program is one file to run.
 #include <dlfcn.h>
+#include <sys/mman.h>
 #include <unistd.h>
 
-#include <climits>
+#include <cerrno>
+#include <cstring>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -20,47 +22,46 @@
 #include "casteljau/io/glyph.hpp"
 #include "serve.hpp"
 
-#ifndef CASTELJAU_MODULE_DIR
-#error "CASTELJAU_MODULE_DIR: the modules' installed folder relative to the program's folder (apps/cli/CMakeLists.txt)"
-#endif
+extern "C" {
+extern const unsigned char casteljau_serve_image_begin[], casteljau_serve_image_end[];
+extern const unsigned char casteljau_fonts_image_begin[], casteljau_fonts_image_end[];
+}
 
 namespace casteljau::cli {
 
 namespace {
 
-/// The folder of the running program (/proc/self/exe), with a trailing '/'.
-std::string program_folder() {
-  char buf[PATH_MAX];
-  const ssize_t n = readlink("/proc/self/exe", buf, sizeof buf - 1);
-  if (n <= 0) throw std::runtime_error("cannot find the program's own path (/proc/self/exe)");
-  std::string path(buf, static_cast<std::size_t>(n));
-  return path.substr(0, path.rfind('/') + 1);
-}
-
-/// The entry point `entry` of the module `file` (loaded once; dlopen counts references).
-/// Throws std::runtime_error naming the places tried, or the loader's message.
-void* module_entry(const std::string& file, const char* entry, const char* what) {
-  const std::string folder = program_folder();
-  std::string tried;
-  for (const std::string candidate : {folder + file, folder + CASTELJAU_MODULE_DIR + file}) {
-    if (access(candidate.c_str(), F_OK) != 0) {
-      tried += (tried.empty() ? "" : ", ") + candidate;
-      continue;
+/// The entry point `entry` of the module whose image is [begin, end), loaded once per
+/// call site (the callers keep the pointer). Throws std::runtime_error with the system's or
+/// the loader's message.
+void* module_entry(const char* name, const unsigned char* begin, const unsigned char* end, const char* entry) {
+  const int fd = memfd_create(name, MFD_CLOEXEC);
+  if (fd < 0) throw std::runtime_error(std::string("cannot create a memory file for ") + name + ": " + std::strerror(errno));
+  for (const unsigned char* p = begin; p < end;) {
+    const ssize_t n = write(fd, p, static_cast<std::size_t>(end - p));
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      const std::string why = std::strerror(errno);
+      close(fd);
+      throw std::runtime_error(std::string("cannot write ") + name + " to a memory file: " + why);
     }
-    void* module = dlopen(candidate.c_str(), RTLD_NOW | RTLD_LOCAL);
-    if (!module) throw std::runtime_error(std::string("cannot load the ") + what + " module " + candidate + ": " + dlerror());
-    void* function = dlsym(module, entry);
-    if (!function) throw std::runtime_error(std::string("the ") + what + " module " + candidate + " has no entry point " + entry);
-    return function;
+    p += n;
   }
-  throw std::runtime_error(std::string("the ") + what + " module " + file + " is missing (looked for " + tried + ")");
+  const std::string path = "/proc/self/fd/" + std::to_string(fd);
+  void* module = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+  close(fd);  // the loader keeps its own mapping
+  if (!module) throw std::runtime_error(std::string("cannot load ") + name + ": " + dlerror());
+  void* function = dlsym(module, entry);
+  if (!function) throw std::runtime_error(std::string(name) + " has no entry point " + entry);
+  return function;
 }
 
 }  // namespace
 
 int serve_through_module(const ServeOptions& options) {
   using Entry = int (*)(const ServeOptions&);
-  return reinterpret_cast<Entry>(module_entry("casteljau-serve.so", "casteljau_serve_module", "server"))(options);
+  return reinterpret_cast<Entry>(module_entry("casteljau-serve.so", casteljau_serve_image_begin, casteljau_serve_image_end,
+                                              "casteljau_serve_module"))(options);
 }
 
 }  // namespace casteljau::cli
@@ -70,7 +71,8 @@ namespace casteljau::io {
 GlyphRun glyph_outlines(const std::string& font_path, const std::string& text, std::optional<double> size) {
   using Entry = void (*)(const std::string&, const std::string&, std::optional<double>, GlyphRun&);
   static const Entry entry =
-      reinterpret_cast<Entry>(cli::module_entry("casteljau-fonts.so", "casteljau_fonts_module", "fonts"));
+      reinterpret_cast<Entry>(cli::module_entry("casteljau-fonts.so", casteljau_fonts_image_begin, casteljau_fonts_image_end,
+                                                "casteljau_fonts_module"));
   GlyphRun run;
   entry(font_path, text, size, run);
   return run;

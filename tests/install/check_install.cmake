@@ -27,8 +27,8 @@ function(check_program exe)
   endif()
 endfunction()
 
-# `casteljau serve` loads its module (casteljau-serve.so, under the library folder) by its
-# path relative to the program: the server starts and prints its address (stopped after 3 s).
+# `casteljau serve` loads its module (casteljau-serve.so, carried inside the program: one file
+# installed): the server starts and prints its address (stopped after 3 s).
 function(check_serve exe)
   execute_process(COMMAND timeout 3 "${exe}" serve --port 0 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
   if(NOT rc EQUAL 124 OR NOT out MATCHES "^casteljau serve: http://127\\.0\\.0\\.1:[0-9]+/")
@@ -36,7 +36,7 @@ function(check_serve exe)
   endif()
 endfunction()
 
-# `casteljau glyph` loads the fonts module (casteljau-fonts.so, beside the server's): the
+# `casteljau glyph` loads the fonts module (casteljau-fonts.so, inside the program too): the
 # outline of a space in DejaVu Sans is empty, its advance 651 font units.
 set(glyph_request "${WORK_DIR}/glyph.json")
 file(WRITE "${glyph_request}" [=[{"font": "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf", "text": " "}]=])
