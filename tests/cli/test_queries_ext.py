@@ -1014,6 +1014,34 @@ class ExtremeWeightsIntersectTest(CliTest):
                            lambda x: [2 * (mpf(x) - 1), 1 - (mpf(x) - 1) / 2], ("path", w))
             self.assertEqual(next(answers), {"intersections": [], "overlaps": [{"a": [0.0, 1.0], "b": [0.0, 1.0]}]}, w)
 
+    def test_against_its_control_polygon(self):
+        # The conic against its own control polygon (a polyline, and the same as a path of
+        # two segments). The conic meets the polygon only at its ends (x = 1 - t^2 / W:
+        # on the leg x = 1 at t = 0 alone) but runs along it: its farthest point from the
+        # polygon is at t = 1/2, 1 / (2 (1 + w)) from both legs (computed here in mpmath),
+        # under the meeting distance 1e-10 of the size (sqrt 2) from w = 1e10 up: within
+        # that distance the whole conic traces the whole polygon, one overlap (docs/cli.md:
+        # curves within 1e-10 of their size meet; overlaps joined across pieces and
+        # segments). From w = 1e10 it was one "crossing" near the corner: the overlaps
+        # along the two legs ended at the corner, several tame parts apart on the conic.
+        # (3.5e9 < w < 1e10 still gives a crossing: docs/accuracy.md, known limits.)
+        polygon = {"type": "polyline", "points": CONIC_P}
+        path = {"type": "path", "segments": [bezier(CONIC_P[:2]), bezier(CONIC_P[1:])]}
+        ws = (1e10, 1e12, 1e16, 1e30, 1e100, 1e300)
+        reqs = [{"curves": [c, p]} for w in ws for c in ExtremeWeightsFormsTest.forms(w) for p in (polygon, path)]
+        reqs += [{"curves": [polygon, conic(w)]} for w in ws]
+        answers = iter(self.ok_jsonl("intersect", reqs))
+        with mpmath.workdps(int(2 * math.log10(max(ws))) + 40):
+            for w in ws:
+                # The largest distance of the conic from the polygon, at t = 1/2 by symmetry
+                # (1 - x = t^2 / W grows with t on [0, 1/2]).
+                far = 1 - conic_point(w, mpf(1) / 2)[0]
+                self.assertLess(far, mpf("1e-10") * mpmath.sqrt(2), w)
+                for _ in range(4):
+                    self.assertEqual(next(answers), {"intersections": [], "overlaps": [{"a": [0.0, 1.0], "b": [0.0, 2.0]}]}, w)
+            for w in ws:
+                self.assertEqual(next(answers), {"intersections": [], "overlaps": [{"a": [0.0, 2.0], "b": [0.0, 1.0]}]}, w)
+
 
 if __name__ == "__main__":
     test_cli.BINARY = sys.argv.pop(1)

@@ -181,12 +181,12 @@ class Nurbs {
   [[nodiscard]] Nurbs elevate(int r = 1) const {
     if (r < 0) throw InvalidArgument("r", "degree elevation count must be >= 0, got " + std::to_string(r));
     if (r == 0) return *this;
-    KnotForm<T, Point<T, D + 1>> g = detail::elevate<T, D + 1>(h_.form(), r);
+    KnotForm<T, Point<T, D + 1>> g = detail::elevate(h_.form(), r);
     for (const auto& q : g.P) {
       // The outer points of an unclamped end can need a weight <= 0, which a Nurbs cannot
       // hold: then the ends are clamped (the same curve on the domain, and the same end
       // pieces beyond it).
-      if (!(q[D] > 0)) return from_homogeneous(detail::elevate<T, D + 1>(h_.form(), r, false));
+      if (!(q[D] > 0)) return from_homogeneous(detail::elevate(h_.form(), r, false));
     }
     return from_homogeneous(std::move(g));
   }
