@@ -1041,6 +1041,31 @@ class ExtremeWeightsIntersectTest(CliTest):
                     self.assertEqual(next(answers), {"intersections": [], "overlaps": [{"a": [0.0, 1.0], "b": [0.0, 2.0]}]}, w)
             for w in ws:
                 self.assertEqual(next(answers), {"intersections": [], "overlaps": [{"a": [0.0, 2.0], "b": [0.0, 1.0]}]}, w)
+    def test_square_and_its_diagonal(self):
+        # A NURBS square of four quadratic spans with weights 1, w, 1 at its corners (each
+        # span the conic, turned) against its diagonal from (-2, -2) to (2, 2): two
+        # crossings, at t = 1/2 of the first and third spans by symmetry, the points
+        # +-conic(w, 1/2) (mpmath), within 1 / (2 (1 + w)) of the corners. At w = 1e20 the
+        # first was 1.03e-13 from the corner (the chord of the tame parts near the corner
+        # cut it); the point within 2e-15 now, the parameter to what the coordinates
+        # resolve (the curve at it within 2e-15 of the point), the diagonal's to 1e-15.
+        corners = [[1, 0], [1, 1], [0, 1], [-1, 1], [-1, 0], [-1, -1], [0, -1], [1, -1], [1, 0]]
+        ws = (1e8, 1e16, 1e20, 1e30, 1e100)
+        square = lambda w: {"type": "nurbs", "degree": 2, "knots": [0, 0, 0, 1, 1, 2, 2, 3, 3, 4, 4, 4], "points": corners,
+                            "weights": [1, w] * 4 + [1]}
+        answers = self.ok_jsonl("intersect", [{"curves": [square(w), bezier([[-2, -2], [2, 2]])]} for w in ws])
+        for w, r in zip(ws, answers):
+            self.assertEqual(r["overlaps"], [], w)
+            self.assertEqual(len(r["intersections"]), 2, (w, r))
+            with mpmath.workdps(int(2 * math.log10(w)) + 40):
+                for g, span, sign in zip(r["intersections"], (0, 2), (1, -1)):
+                    p = [sign * x for x in conic_point(w, mpf(1) / 2)]
+                    self.assertEqual(g["kind"], "crossing", w)
+                    for k in range(2):
+                        self.assertLessEqual(abs(g["point"][k] - p[k]), 2e-15, (w, g, p))
+                    back = [sign * x for x in conic_point(w, mpf(g["t"][0]) - span)]
+                    self.assertLessEqual(max(abs(b - q) for b, q in zip(back, p)), 2e-15, (w, g))
+                    self.assertLessEqual(abs(g["t"][1] - (p[0] + 2) / 4), 1e-15, (w, g))
 
 
 if __name__ == "__main__":

@@ -1510,6 +1510,23 @@ Intersections<T> solve_extreme(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
   Intersections<T> r = solve(ta.curve, self ? nullptr : &tb->curve, true);
   const Tamed<T>& mb = self ? ta : *tb;
   const Pieces<T, 2>& ob = self ? ca : *cb;
+  if (!self) {
+    for (auto& x : r.points) {
+      // A crossing on a chord of one curve, the other taken as it is there: onto the run.
+      const TamePart<T>& pa = ta.parts[ta.curve.locate(x.ta).index];
+      const TamePart<T>& pb = mb.parts[mb.curve.locate(x.tb).index];
+      if (x.kind != IntersectionKind::crossing || pa.chord == pb.chord) continue;
+      if (pa.chord) {
+        onto_run(pa, mb.curve, x.tb, x.point);
+      } else {
+        T t = x.ta;
+        Point<T, 2> p = x.point;
+        onto_run(pb, ta.curve, t, p);
+        x.ta = t;
+        x.point = p;
+      }
+    }
+  }
   for (auto& x : r.points) {
     x.ta = ta.original(ca, x.ta);
     x.tb = mb.original(ob, x.tb);
