@@ -5,6 +5,8 @@
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
+#include <chrono>
+#include <ctime>
 #include <cmath>
 #include <cstring>
 #include <span>
@@ -236,33 +238,38 @@ void plain_horner_aos(benchmark::State& state) {
 /// window: write every curve into the same 1000-point L1-resident window (compute limit;
 /// the output is not kept, so no correctness figure).
 template <bool Stream, bool Window>
-void ceiling_avx512(benchmark::State& state) {
-  W1& w = W1::get();
+void ceiling_avx512_pass(W1& w) {
   const double* ts = w.data.ts.data();
   constexpr std::size_t window = 1000;  // 16 KB of x and y together, well inside L1
-  for (auto _ : state) {
-    for (std::size_t i = 0; i < w.data.curves; ++i) {
-      const Power3 p(w.data.P[i]);
-      __m512d ax[4], ay[4];
-      for (int k = 0; k < 4; ++k) {
-        ax[k] = _mm512_set1_pd(p.a[k][0]);
-        ay[k] = _mm512_set1_pd(p.a[k][1]);
-      }
-      for (std::size_t j = 0; j < M; j += 8) {  // M is a multiple of 8, rows 64-byte aligned
-        const __m512d t = _mm512_loadu_pd(ts + j);
-        const __m512d vx = _mm512_fmadd_pd(_mm512_fmadd_pd(_mm512_fmadd_pd(ax[3], t, ax[2]), t, ax[1]), t, ax[0]);
-        const __m512d vy = _mm512_fmadd_pd(_mm512_fmadd_pd(_mm512_fmadd_pd(ay[3], t, ay[2]), t, ay[1]), t, ay[0]);
-        const std::size_t k = Window ? (j % window) : i * M + j;
-        if constexpr (Stream) {
-          _mm512_stream_pd(w.x.data() + k, vx);
-          _mm512_stream_pd(w.y.data() + k, vy);
-        } else {
-          _mm512_storeu_pd(w.x.data() + k, vx);
-          _mm512_storeu_pd(w.y.data() + k, vy);
-        }
+  for (std::size_t i = 0; i < w.data.curves; ++i) {
+    const Power3 p(w.data.P[i]);
+    __m512d ax[4], ay[4];
+    for (int k = 0; k < 4; ++k) {
+      ax[k] = _mm512_set1_pd(p.a[k][0]);
+      ay[k] = _mm512_set1_pd(p.a[k][1]);
+    }
+    for (std::size_t j = 0; j < M; j += 8) {  // M is a multiple of 8, rows 64-byte aligned
+      const __m512d t = _mm512_loadu_pd(ts + j);
+      const __m512d vx = _mm512_fmadd_pd(_mm512_fmadd_pd(_mm512_fmadd_pd(ax[3], t, ax[2]), t, ax[1]), t, ax[0]);
+      const __m512d vy = _mm512_fmadd_pd(_mm512_fmadd_pd(_mm512_fmadd_pd(ay[3], t, ay[2]), t, ay[1]), t, ay[0]);
+      const std::size_t k = Window ? (j % window) : i * M + j;
+      if constexpr (Stream) {
+        _mm512_stream_pd(w.x.data() + k, vx);
+        _mm512_stream_pd(w.y.data() + k, vy);
+      } else {
+        _mm512_storeu_pd(w.x.data() + k, vx);
+        _mm512_storeu_pd(w.y.data() + k, vy);
       }
     }
-    if constexpr (Stream) _mm_sfence();
+  }
+  if constexpr (Stream) _mm_sfence();
+}
+
+template <bool Stream, bool Window>
+void ceiling_avx512(benchmark::State& state) {
+  W1& w = W1::get();
+  for (auto _ : state) {
+    ceiling_avx512_pass<Stream, Window>(w);
     benchmark::ClobberMemory();
   }
   finish(state, Window ? 0.0 : w.diff_soa());
@@ -428,6 +435,93 @@ void occt_plib_polynomial(benchmark::State& state) {
 }
 #endif
 
+// ---- paired rounds: batch_soa against its reference, pass by pass ----
+
+/// Each iteration times one pass of batch_soa (Store::automatic) and one of the
+/// reference, back to back, their order alternating, and the counters give the median of
+/// the rounds' ratios (batch_soa over reference) with their quartiles, in wall time and in
+/// the thread's CPU time, and the median of each pass's times (ms). This host's write bandwidth moves by up to 1.7x between runs a
+/// minute apart (and within a run): separate rows, even interleaved, compare passes that
+/// saw different bandwidth; two passes 10 ms apart see the same. The row's own time is
+/// that of both passes. Reference: the non-temporal AVX-512 ceiling where it is compiled
+/// (the native build), memset of the output's 160 MB in both builds.
+template <bool Ceiling>
+void paired(benchmark::State& state) {
+  W1& w = W1::get();
+  const std::span<const Curve> curves(w.curves);
+  const std::span<const double> ts(w.data.ts);
+  auto batch = [&] {
+    casteljau::evaluate(curves, ts, std::array<std::span<double>, 2>{std::span(w.x.data(), N), std::span(w.y.data(), N)},
+                        casteljau::Store::automatic);
+  };
+  int v = 0;
+  auto reference = [&] {
+#if defined(__AVX512F__)
+    if constexpr (Ceiling) {
+      ceiling_avx512_pass<true, false>(w);
+      return;
+    }
+#endif
+    std::memset(w.aos.data(), ++v & 0xff, 2 * N * sizeof(double));
+  };
+  // Wall time, and this thread's CPU time (clock_gettime): on a loaded machine a pass
+  // preempted by other processes gains wall time but not CPU time, while the stalls of
+  // a memory-bound pass count in both.
+  struct Times {
+    double wall, cpu;
+  };
+  auto cpu_now = [] {
+    timespec ts{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return static_cast<double>(ts.tv_sec) * 1e3 + static_cast<double>(ts.tv_nsec) * 1e-6;
+  };
+  auto timed = [&](auto&& f) {
+    const double c0 = cpu_now();
+    const auto t0 = std::chrono::steady_clock::now();
+    f();
+    benchmark::ClobberMemory();
+    const double wall = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    return Times{wall, cpu_now() - c0};
+  };
+  std::vector<double> ratio, ratio_cpu, tb, tr, cb, cr;
+  bool first = true;
+  for (auto _ : state) {
+    Times b{}, r{};
+    if (first) {
+      b = timed(batch);
+      r = timed(reference);
+    } else {
+      r = timed(reference);
+      b = timed(batch);
+    }
+    first = !first;
+    ratio.push_back(b.wall / r.wall);
+    ratio_cpu.push_back(b.cpu / r.cpu);
+    tb.push_back(b.wall);
+    tr.push_back(r.wall);
+    cb.push_back(b.cpu);
+    cr.push_back(r.cpu);
+  }
+  auto quantile = [](std::vector<double> x, double q) {
+    if (x.empty()) return 0.0;
+    const auto k = static_cast<std::ptrdiff_t>(q * static_cast<double>(x.size() - 1) + 0.5);
+    std::nth_element(x.begin(), x.begin() + k, x.end());
+    return x[static_cast<std::size_t>(k)];
+  };
+  state.counters["ratio"] = quantile(ratio, 0.5);
+  state.counters["ratio_q1"] = quantile(ratio, 0.25);
+  state.counters["ratio_q3"] = quantile(ratio, 0.75);
+  state.counters["ratio_cpu"] = quantile(ratio_cpu, 0.5);
+  state.counters["ratio_cpu_q1"] = quantile(ratio_cpu, 0.25);
+  state.counters["ratio_cpu_q3"] = quantile(ratio_cpu, 0.75);
+  state.counters["batch_ms"] = quantile(tb, 0.5);
+  state.counters["reference_ms"] = quantile(tr, 0.5);
+  state.counters["batch_cpu_ms"] = quantile(cb, 0.5);
+  state.counters["reference_cpu_ms"] = quantile(cr, 0.5);
+  state.counters["rounds"] = static_cast<double>(ratio.size());
+  finish(state, w.diff_soa());
+}
+
 void reg(const char* name, void (*f)(benchmark::State&)) {
   benchmark::RegisterBenchmark(name, f)->Unit(benchmark::kMillisecond)->UseRealTime();
 }
@@ -468,6 +562,10 @@ int register_all() {
   reg("W1/ceiling/avx512_fma_soa", ceiling_avx512<false, false>);
   reg("W1/ceiling/avx512_fma_soa_nt", ceiling_avx512<true, false>);
   reg("W1/ceiling/avx512_fma_l1_window", ceiling_avx512<false, true>);
+#endif
+  reg("W1/paired/batch_soa_over_memset", paired<false>);
+#if defined(__AVX512F__)
+  reg("W1/paired/batch_soa_over_ceiling_nt", paired<true>);
 #endif
 #if CASTELJAU_BENCH_HAVE_2GEOM
   reg("W1/lib2geom/pointAt", geom_point_at);

@@ -507,7 +507,7 @@ class TessellateTest(CliTest):
         self.assertEqual(len(r["vertices"][0]), 4)
         self.assertTrue(all(n is None for n in r["normals"]))
 
-    def test_help_example(self):
+    def test_help_example_matches_program_output_self_consistency(self):
         rc, out, err = test_cli.run("tessellate", args=["--help"])
         self.assertEqual((rc, err), (0, ""))
         lines = out.splitlines()

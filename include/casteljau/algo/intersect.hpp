@@ -898,6 +898,67 @@ std::vector<RawOverlap<T>> join_overlaps(std::vector<RawOverlap<T>> overlaps, T 
   return joined;
 }
 
+/// Whether curve X over [x0, x1] stays within tol of curve Y over [y0, y1], Y taken there
+/// as the polyline through 17 points of each of its pieces in the range (its ends, and a
+/// corner between pieces, among them), X checked at 17 points of each of its pieces in
+/// the range (unit frame).
+template <class T>
+bool stays_near(const Prepared<T>& X, T x0, T x1, const Prepared<T>& Y, T y0, T y1, T tol) {
+  auto samples = [](const Prepared<T>& C, T c0, T c1) {
+    std::vector<Point<T, 2>> q;
+    C.curve->for_each_piece(Interval<T>(std::min(c0, c1), std::max(c0, c1)), [&](std::size_t i, const auto&, const Interval<T>& own) {
+      for (int j = 0; j <= 16; ++j) q.push_back(at(C.unit[i], own.lo + (own.hi - own.lo) * static_cast<T>(j) / 16));
+    });
+    if (q.empty()) q.push_back(unit_at(*C.curve, C, c0));
+    return q;
+  };
+  const std::vector<Point<T, 2>> q = samples(Y, y0, y1);
+  for (const auto& p : samples(X, x0, x1)) {
+    T d = distance(p, q.front());
+    for (std::size_t k = 1; k < q.size() && d > tol; ++k) d = std::min(d, distance_to_segment(p, q[k - 1], q[k]));
+    if (!(d <= tol)) return false;
+  }
+  return true;
+}
+
+/// Phase 3, tame parts only (solve_extreme): consecutive joined overlaps also join across
+/// a gap (b running on the same way) over which each curve stays within tol of the other
+/// (stays_near, both ways).
+/// A curve hugging its control polygon turns the corner within rounding of it: the
+/// conic on (1, 0), (1, 1), (0, 1) with weights 1, 1e16, 1 passes 5e-17 from (1, 1), and
+/// the tame parts that turn it map to one point of the polygon, so the overlaps along the
+/// two legs end and start there, several parts apart on the conic. Joined, they are the
+/// one overlap the curves have (the whole conic within 5e-17 of its polygon, mpmath),
+/// which the corner's parts alone would not be (no length on the polygon), leaving two
+/// stretches that each continue near the other curve (confirm_overlaps: their points,
+/// merged into one "crossing" at the corner).
+template <class T>
+void bridge_overlaps(const Prepared<T>& A, const Prepared<T>& B, std::vector<RawOverlap<T>>& overlaps, T tol) {
+  const T la = A.curve->domain().length(), lb = B.curve->domain().length();
+  std::vector<RawOverlap<T>> joined;
+  for (auto& r : overlaps) {
+    if (!joined.empty()) {
+      auto& p = joined.back();
+      const auto& o = r.o;
+      const bool up = p.o.b_end > p.o.b_start;
+      const T da = o.a.lo - p.o.a.hi, db = up ? o.b_start - p.o.b_end : p.o.b_end - o.b_start;
+      const bool same_way = (o.b_end > o.b_start) == up;
+      const bool bridged = same_way && da >= -T(1e-9) * la && db >= -T(1e-9) * lb &&
+                           stays_near(A, p.o.a.hi, o.a.lo, B, p.o.b_end, o.b_start, tol) &&
+                           stays_near(B, p.o.b_end, o.b_start, A, p.o.a.hi, o.a.lo, tol);
+      if (bridged) {
+        p.o.a.hi = o.a.hi;
+        p.o.b_end = o.b_end;
+        p.found.insert(p.found.end(), r.found.begin(), r.found.end());
+        p.deferred.insert(p.deferred.end(), r.deferred.begin(), r.deferred.end());
+        continue;
+      }
+    }
+    joined.push_back(std::move(r));
+  }
+  overlaps = std::move(joined);
+}
+
 /// Phase 4: the joined overlaps that are overlaps. An overlap is a stretch within the
 /// near-miss distance that ends where the curves part or a curve ends. One that the curves
 /// continue beyond, still within the near-miss distance as far again past one of its ends
@@ -1411,6 +1472,7 @@ Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb, bool tame
   Context<T> ctx = make_context(tol);
   ArcPairs<T> pairs = meet_arcs(A, PB, self, ctx);
   std::vector<RawOverlap<T>> candidates = join_overlaps(std::move(pairs.overlaps), ca.domain().length(), cb->domain().length());
+  if (tame) bridge_overlaps(A, PB, candidates, tol);
   std::vector<CurveOverlap<T>> overlaps = confirm_overlaps(A, PB, candidates, ctx, pairs.hits);
   const Loops<T> lp = loops(A, PB, tol);
   MergedPoints<T> merged = merge_points(A, PB, self, std::move(pairs.hits), overlaps, lp, tol);
@@ -1448,6 +1510,23 @@ Intersections<T> solve_extreme(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
   Intersections<T> r = solve(ta.curve, self ? nullptr : &tb->curve, true);
   const Tamed<T>& mb = self ? ta : *tb;
   const Pieces<T, 2>& ob = self ? ca : *cb;
+  if (!self) {
+    for (auto& x : r.points) {
+      // A crossing on a chord of one curve, the other taken as it is there: onto the run.
+      const TamePart<T>& pa = ta.parts[ta.curve.locate(x.ta).index];
+      const TamePart<T>& pb = mb.parts[mb.curve.locate(x.tb).index];
+      if (x.kind != IntersectionKind::crossing || pa.chord == pb.chord) continue;
+      if (pa.chord) {
+        onto_run(pa, mb.curve, x.tb, x.point);
+      } else {
+        T t = x.ta;
+        Point<T, 2> p = x.point;
+        onto_run(pb, ta.curve, t, p);
+        x.ta = t;
+        x.point = p;
+      }
+    }
+  }
   for (auto& x : r.points) {
     x.ta = ta.original(ca, x.ta);
     x.tb = mb.original(ob, x.tb);

@@ -1,6 +1,7 @@
 // Bernstein polynomials B(i,n)(t) = C(n,i) t^i (1-t)^(n-i): single values, all values of one
 // degree in O(n), derivatives of any order, and the same on an arbitrary interval [a, b].
-// Plain functions over spans, callable without a curve object.
+// Plain functions over spans, callable without a curve object; degree elevation of
+// Bézier points of any point type (detail::elevate_bezier_points).
 #pragma once
 
 #include <algorithm>
@@ -161,5 +162,35 @@ void bernstein_all(int n, T x, Interval<T> ab, std::span<T> out) {
   detail::require_interval(ab);
   bernstein_all<T>(n, ab.fraction(x), out);
 }
+
+namespace detail {
+
+/// The Bézier points of degree n + r (r >= 1) of the Bézier points P of degree n, for
+/// any point type V (a Point, a homogeneous point, a surface's row of points: V - V, a
+/// scalar times that, += and V + that), by Forrest's equations [Forrest72; Farin02, 5.1]:
+/// Q_i = sum_j h_ij P_j with the hypergeometric weights h_ij = C(r, i-j) C(n, j) /
+/// C(n+r, i) (a convex combination), computed by their ratio recurrence and normalised to
+/// sum 1 (hypergeometric_row), so no binomial overflows at any degree. Written as
+/// P_lo + sum h_ij (P_j - P_lo): exact for a constant curve. Error about
+/// (2 min(n, r) + 4) eps of the control polygon's extent. The one elevation of Bézier
+/// points: Bezier::elevate, the B-spline and NURBS elevation (knot_form.hpp) and the
+/// surfaces' (per row). Cost O((n + r) min(n, r)).
+template <class T, class V>
+std::vector<V> elevate_bezier_points(std::span<const V> P, int r) {
+  const int n = static_cast<int>(P.size()) - 1;
+  std::vector<V> Q(P.size() + static_cast<std::size_t>(r));
+  std::vector<T> h(static_cast<std::size_t>(std::min(n, r)) + 1);
+  for (int i = 0; i <= n + r; ++i) {
+    const int lo = std::max(0, i - r), hi = std::min(n, i);
+    hypergeometric_row<T>(n + r, n, i, std::span<T>(h.data(), static_cast<std::size_t>(hi - lo + 1)));
+    const V& base = P[static_cast<std::size_t>(lo)];
+    auto s = T(0) * (base - base);  // a zero of the difference type (and of its size)
+    for (int j = lo + 1; j <= hi; ++j) s += h[static_cast<std::size_t>(j - lo)] * (P[static_cast<std::size_t>(j)] - base);
+    Q[static_cast<std::size_t>(i)] = base + s;
+  }
+  return Q;
+}
+
+}  // namespace detail
 
 }  // namespace casteljau

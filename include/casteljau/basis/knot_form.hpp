@@ -3,8 +3,8 @@
 // points of a span by blossoming, insertion checks, refinement, splitting, re-knotting of
 // the ends, knot removal on a sliding window, the outer knots for unclamping, and degree
 // reduction [PT97, chapter 5; Ramshaw87]. BSpline and Nurbs (curves/bspline.hpp,
-// curves/nurbs.hpp) wrap them with validation; degree elevation, which elevates Bézier
-// pieces, is in curves/bspline.hpp.
+// curves/nurbs.hpp) and the surfaces (per row) wrap them with validation; and degree
+// elevation (the spans' Bézier points elevated, joined, knots removed back).
 #pragma once
 
 #include <algorithm>
@@ -15,6 +15,7 @@
 #include <utility>
 #include <vector>
 
+#include "casteljau/basis/bernstein.hpp"
 #include "casteljau/basis/bspline_basis.hpp"
 #include "casteljau/basis/knot_ops.hpp"
 #include "casteljau/basis/knot_vector.hpp"
@@ -425,6 +426,77 @@ FormReduction<T, V> reduce_degree_form(const KnotForm<T, V>& f, T tolerance, T s
     win.settle(x);
   }
   return {win.finish(), *std::max_element(err.begin(), err.end()) * scale, kept};
+}
+
+/// Degree elevation by r >= 1 of a B-spline of any point type (the curves' points, the
+/// NURBS' homogeneous points, a surface's rows), by decomposition, elevation and recomposition [PT97, §5.5
+/// and A5.9, which interleaves the same three steps]: the exact Bézier pieces of the
+/// domain's spans are elevated (elevate_bezier_points, Forrest's equations), joined into the
+/// C^0 B-spline of degree q = p + r (every interior knot q times), and each interior knot
+/// of multiplicity m in U is removed q - (m + r) = p - m times (remove_knot_once: exact,
+/// since the elevated curve is still C^(p-m) there; a break of multiplicity p + 1, where
+/// the curve may jump, keeps both pieces' end points and q + 1 copies, as [PT97, A5.9]
+/// raises every multiplicity by r). Ends: a clamped end stays clamped;
+/// an unclamped one gets the outer knots U_0 (r + 1 times), U_1, .., U_{p-1} and its end
+/// points by blossoming (with_outer_knots), unless keep_unclamped_ends is false, the new
+/// degree is above 100 or a blossom value overflows (then both ends are clamped). Cost O(spans (p + r) p + p^3) plus, for an
+/// unclamped end, O((p + r)^3).
+template <class T, class V>
+KnotForm<T, V> elevate(const KnotForm<T, V>& f, int r, bool keep_unclamped_ends = true) {
+  const int p = f.p, q = p + r;
+  const std::span<const T> U(f.U);
+  const std::size_t n = f.P.size(), m = f.U.size() - 1;
+  const T a = U[static_cast<std::size_t>(p)], b = U[n];
+  const std::vector<std::size_t> spans = nonempty_spans(U, p);
+  // The C^0 form: every piece elevated, joined at the breaks (q copies of each).
+  std::vector<T> U0(static_cast<std::size_t>(q) + 1, a);
+  std::vector<V> P0;
+  for (std::size_t k = 0; k < spans.size(); ++k) {
+    const std::vector<V> B = span_bezier_points<V, T>(U, p, spans[k], f.P);
+    const std::vector<V> Q = elevate_bezier_points<T, V>(std::span<const V>(B), r);
+    if (k == 0) {
+      P0.insert(P0.end(), Q.begin(), Q.end());
+    } else if (knot_multiplicity<T>(U, U[spans[k]]) == static_cast<std::size_t>(p) + 1) {
+      P0.insert(P0.end(), Q.begin(), Q.end());  // a break where the curve may jump: both limits
+      U0.insert(U0.end(), static_cast<std::size_t>(q) + 1, U[spans[k]]);
+    } else {
+      P0.back() = lerp(P0.back(), Q.front(), T(0.5));  // the same point from both sides, up to rounding
+      P0.insert(P0.end(), Q.begin() + 1, Q.end());
+      U0.insert(U0.end(), static_cast<std::size_t>(q), U[spans[k]]);
+    }
+  }
+  U0.insert(U0.end(), static_cast<std::size_t>(q) + 1, b);
+  // Knot removal down to the original continuity, on a sliding window (SlidingWindow).
+  SlidingWindow<T, V> win(U0, P0, q);
+  for (std::size_t k = 1; k < spans.size(); ++k) {
+    const T x = U[spans[k]];
+    const int mult = static_cast<int>(knot_multiplicity<T>(U, x));
+    win.reach(x);
+    for (int j = 0; j < p - mult; ++j) win.W = remove_knot_once(win.W, x);
+    win.settle(x);
+  }
+  KnotForm<T, V> g = win.finish();
+  // Re-blossoming an unclamped end evaluates the end piece beyond the domain: O(q^3), and
+  // at high degree the blossom values overflow. Above degree max_unclamped_elevation, or
+  // when a value is not finite, the ends are clamped instead (the same curve on the
+  // domain, the same end pieces beyond it).
+  constexpr int max_unclamped_elevation = 100;
+  const bool keep = keep_unclamped_ends && q <= max_unclamped_elevation;
+  const bool clamped_left = U[0] == a || !keep, clamped_right = U[m] == b || !keep;
+  if (clamped_left && clamped_right) return g;
+  std::vector<T> L(static_cast<std::size_t>(q), a), R(static_cast<std::size_t>(q), b);
+  if (!clamped_left) {
+    for (int j = 0; j < r; ++j) L[static_cast<std::size_t>(j)] = U[0];
+    for (int j = 0; j < p; ++j) L[static_cast<std::size_t>(r + j)] = U[static_cast<std::size_t>(j)];
+  }
+  if (!clamped_right) {
+    for (int j = 0; j < p; ++j) R[static_cast<std::size_t>(j)] = U[n + 1 + static_cast<std::size_t>(j)];
+    for (int j = 0; j < r; ++j) R[static_cast<std::size_t>(p + j)] = U[m];
+  }
+  KnotForm<T, V> h = with_outer_knots<T, V>(g, L, R);
+  for (const auto& pt : h.P)
+    if (!all_finite_point(pt)) return g;
+  return h;
 }
 
 }  // namespace casteljau::detail

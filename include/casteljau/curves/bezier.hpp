@@ -166,27 +166,14 @@ class Bezier {
     return checked(std::move(Q), "m", "the transformed curve");
   }
 
-  /// The same curve at degree n + r (r >= 0), by Forrest's equations [Forrest72;
-  /// Farin02, 5.1]: Q_i = sum_j h_ij P_j with the hypergeometric weights h_ij = C(r, i-j)
-  /// C(n, j) / C(n+r, i) (a convex combination), computed by their ratio recurrence and
-  /// normalised to sum 1 (detail::hypergeometric_row), so no binomial overflows at any
-  /// degree. Written as P_lo + sum h_ij (P_j - P_lo): exact for a constant curve. Error
-  /// about (2 min(n, r) + 4) eps of the control polygon's extent. Cost O((n + r) min(n, r)).
+  /// The same curve at degree n + r (r >= 0), by Forrest's equations with normalised
+  /// hypergeometric weights (detail::elevate_bezier_points: no binomial overflows at any
+  /// degree; exact for a constant curve). Error about (2 min(n, r) + 4) eps of the control
+  /// polygon's extent. Cost O((n + r) min(n, r)).
   [[nodiscard]] Bezier elevate(int r = 1) const {
     if (r < 0) throw InvalidArgument("r", "degree elevation count must be >= 0, got " + std::to_string(r));
     if (r == 0) return *this;
-    const int n = degree();
-    std::vector<PointType> Q(P_.size() + static_cast<std::size_t>(r));
-    std::vector<T> h(static_cast<std::size_t>(std::min(n, r)) + 1);
-    for (int i = 0; i <= n + r; ++i) {
-      const int lo = std::max(0, i - r), hi = std::min(n, i);
-      detail::hypergeometric_row<T>(n + r, n, i, std::span<T>(h.data(), static_cast<std::size_t>(hi - lo + 1)));
-      const PointType& base = P_[static_cast<std::size_t>(lo)];
-      VectorType s{};
-      for (int j = lo + 1; j <= hi; ++j) s += h[static_cast<std::size_t>(j - lo)] * (P_[static_cast<std::size_t>(j)] - base);
-      Q[static_cast<std::size_t>(i)] = base + s;
-    }
-    return checked(std::move(Q), "r", "the elevated curve");
+    return checked(detail::elevate_bezier_points<T, PointType>(std::span<const PointType>(P_), r), "r", "the elevated curve");
   }
 
   /// Power-basis coefficients a_0..a_n with P(t) = sum_j a_j t^j: a = M P. Exact

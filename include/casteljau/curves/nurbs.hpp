@@ -72,13 +72,14 @@ class Nurbs {
 
   /// The k-th derivative (k >= 0) by the quotient rule on the homogeneous derivatives
   /// A^(j), w^(j): C^(k) = (A^(k) - sum_{i=1..k} C(k,i) w^(i) C^(k-i)) / w [PT97, A4.2];
-  /// k = 1 inside the domain over pairs of control points (first_derivative).
+  /// k = 1 inside the domain over pairs of control points (first_derivative), k >= 2 there
+  /// too where the span's weights spread beyond 2^20 (pair_derivative).
   [[nodiscard]] VectorType derivative_at(T u, int k = 1) const {
     require_finite(u, "t");
     if (k < 0) throw InvalidArgument("k", "derivative order must be >= 0, got " + std::to_string(k));
     if (k == 1 && u >= domain().lo && u <= domain().hi) return first_derivative(u);
-    if (k == 2 && u >= domain().lo && u <= domain().hi) {
-      if (const auto v = second_derivative(u)) return *v;
+    if (k >= 2 && u >= domain().lo && u <= domain().hi) {
+      if (const auto v = pair_derivative(u, k)) return *v;
     }
     std::vector<Point<T, D + 1>> hd(static_cast<std::size_t>(k) + 1);
     for (int j = 0; j <= k; ++j) hd[static_cast<std::size_t>(j)] = Point<T, D + 1>::from_vector(h_.derivative_at(u, j));
@@ -126,36 +127,26 @@ class Nurbs {
     return v;
   }
 
-  /// C''(u) for u in the domain over pairs of control points (detail::pair_second_derivative
-  /// on the span's p + 1 weighted basis functions and their derivatives, each divided by W
-  /// first) where the span's weights spread by more than 2^20
-  /// (detail::extreme_weight_spread: the quotient rule loses C'' where the curve hugs its
-  /// control polygon); nothing elsewhere, or where the result is not finite. Cost O(p^2 D).
-  [[nodiscard]] std::optional<VectorType> second_derivative(T u) const {
+  /// C^(k)(u), k >= 2, for u in the domain over pairs of control points
+  /// (detail::pair_derivative on the span's p + 1 weighted basis functions and their
+  /// derivatives, each divided by W first) where the span's weights spread by more than
+  /// 2^20 (detail::extreme_weight_spread: the quotient rule loses C^(k) where the curve
+  /// hugs its control polygon); nothing elsewhere, or where the result is not finite.
+  /// Cost O(k^2 p^2 + p^2 D).
+  [[nodiscard]] std::optional<VectorType> pair_derivative(T u, int k) const {
     const auto& kv = h_.knot_vector();
     const int p = kv.degree();
     const std::size_t s = kv.find_span(u), first = s - static_cast<std::size_t>(p);
-    const auto np0 = static_cast<std::size_t>(p) + 1;
-    std::vector<T> ws(np0);
-    for (std::size_t j = 0; j < np0; ++j) ws[j] = h_.points()[first + j][D];
-    if (!detail::extreme_weight_spread(std::span<const T>(ws))) return std::nullopt;
-    const auto ders = basis_function_derivatives<T>(kv.knots(), p, s, u, 2);
     const auto np = static_cast<std::size_t>(p) + 1;
-    std::vector<T> a(np), b(np), c(np, T(0));
+    std::vector<T> ws(np);
+    for (std::size_t j = 0; j < np; ++j) ws[j] = h_.points()[first + j][D];
+    if (!detail::extreme_weight_spread(std::span<const T>(ws))) return std::nullopt;
+    auto rows = basis_function_derivatives<T>(kv.knots(), p, s, u, k);  // rows beyond p are zero
     T W = 0;
-    for (std::size_t j = 0; j < np; ++j) {
-      const T wj = h_.points()[first + j][D];
-      a[j] = wj * ders[0][j];
-      b[j] = wj * ders[1][j];
-      if (p >= 2) c[j] = wj * ders[2][j];
-      W += a[j];
-    }
-    for (std::size_t j = 0; j < np; ++j) {
-      a[j] /= W;
-      b[j] /= W;
-      c[j] /= W;
-    }
-    const VectorType v = detail::pair_second_derivative<T, D>(std::span<const PointType>(P_.data() + first, np), a, b, c);
+    for (std::size_t j = 0; j < np; ++j) W += ws[j] * rows[0][j];
+    for (auto& r : rows)
+      for (std::size_t j = 0; j < np; ++j) r[j] = ws[j] * r[j] / W;
+    const VectorType v = detail::pair_derivative<T, D>(std::span<const PointType>(P_.data() + first, np), std::span<const std::vector<T>>(rows), k);
     if (!detail::all_finite(v)) return std::nullopt;
     return v;
   }
@@ -190,12 +181,12 @@ class Nurbs {
   [[nodiscard]] Nurbs elevate(int r = 1) const {
     if (r < 0) throw InvalidArgument("r", "degree elevation count must be >= 0, got " + std::to_string(r));
     if (r == 0) return *this;
-    KnotForm<T, Point<T, D + 1>> g = detail::elevate<T, D + 1>(h_.form(), r);
+    KnotForm<T, Point<T, D + 1>> g = detail::elevate(h_.form(), r);
     for (const auto& q : g.P) {
       // The outer points of an unclamped end can need a weight <= 0, which a Nurbs cannot
       // hold: then the ends are clamped (the same curve on the domain, and the same end
       // pieces beyond it).
-      if (!(q[D] > 0)) return from_homogeneous(detail::elevate<T, D + 1>(h_.form(), r, false));
+      if (!(q[D] > 0)) return from_homogeneous(detail::elevate(h_.form(), r, false));
     }
     return from_homogeneous(std::move(g));
   }

@@ -165,9 +165,10 @@ class RationalBezier {
 
   /// The k-th derivative at t (k >= 0; k = 0 gives the point as a vector from the
   /// origin). k = 1 on [0, 1] (degree <= 24): by detail::rational_jet, a sum over pairs
-  /// of control points with positive coefficients (no cancellation at any weights); k = 2
-  /// there by detail::rational_second_derivative, over pairs of control points too (their
-  /// differences only: right where the curve hugs its control polygon).
+  /// of control points with positive coefficients (no cancellation at any weights); k >= 2
+  /// there, when the weights spread beyond 2^20, by detail::rational_pair_derivative, over
+  /// pairs of control points too (their differences only: right where the curve hugs its
+  /// control polygon).
   /// Otherwise from the homogeneous derivatives A^(j), w^(j) by R^(k) = (A^(k) -
   /// sum_{i=1..k} C(k,i) w^(i) R^(k-i)) / w [PT97, eq. 4.8], all computed with the
   /// normalised weights and power-of-two-scaled points; far outside [0, 1] in the reversed
@@ -187,11 +188,11 @@ class RationalBezier {
       if (!detail::all_finite(v)) detail::throw_not_representable("the derivative of order 1", detail::format_number(t));
       return v;
     }
-    if (k == 2 && t >= 0 && t <= 1 && degree() <= detail::rational_jet_max_degree &&
+    if (k >= 2 && t >= 0 && t <= 1 && degree() <= detail::rational_jet_max_degree &&
         detail::extreme_weight_spread(std::span<const T>(wn_))) {
-      // Over pairs of control points (detail::rational_second_derivative): the quotient
+      // Over pairs of control points (detail::rational_pair_derivative): the quotient
       // rule below gives 0 for R''(1/2) = (-8, -8) / w at weights 1, w = 1e30, 1.
-      const VectorType v = detail::rational_second_derivative<T, D>(std::span<const PointType>(P_), std::span<const T>(wn_), t);
+      const VectorType v = detail::rational_pair_derivative<T, D>(std::span<const PointType>(P_), std::span<const T>(wn_), t, k);
       if (detail::all_finite(v)) return v;
     }
     std::vector<VectorType> r(static_cast<std::size_t>(k) + 1);

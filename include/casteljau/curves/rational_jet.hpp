@@ -1,6 +1,6 @@
 // The first derivative of a rational Bézier curve and the bivector R' ^ R'' (its
 // curvature's numerator) on [0, 1] in forms that do not cancel, for weights of any spread;
-// the second derivative over pairs of control points (differences only).
+// the derivatives of order >= 2 over pairs of control points (differences only).
 #pragma once
 
 #include <algorithm>
@@ -175,27 +175,50 @@ RationalJet<T, D> rational_jet(std::span<const Point<T, D>> P, std::span<const T
   return out;
 }
 
-/// R'' of a rational curve R = sum_i w_i N_i P_i / W from its weighted basis at a
-/// parameter: a_i = w_i N_i / W, b_i = w_i N_i' / W, c_i = w_i N_i'' / W (W = sum_i w_i N_i)
-/// and the control points P_i, as
-///   R'' = sum_(i<j) [(a_i c_j - c_i a_j) - 2 (a_i b_j - b_i a_j) beta] (P_j - P_i),
-/// beta = sum_i b_i = W' / W: the quotient rule's (A'' W - A W'') / W^2 - 2 W' (A' W - A W')
-/// / W^3 antisymmetrised over pairs of control points, so that only their differences
-/// appear (as the first derivative's pair sum). Where the curve hugs its control polygon
-/// (weights 1, 1e30, 1) R''(1/2) is (-8, -8) / w from terms of that size, where the
-/// quotient rule subtracts terms of size 1 (it gave 0). The points are halved before
-/// their differences (no overflow). Cost O(n^2 D) for n + 1 basis functions.
+/// R^(k) (k >= 1) of a rational curve R = sum_i w_i N_i P_i / W from its weighted basis
+/// at a parameter: rows[m][i] = w_i N_i^(m) / W for m = 0..k (W = sum_i w_i N_i; rows[0]
+/// is rho_i = w_i N_i / W, which sums to 1), and the control points P_i, as
+///   R^(k) = sum_(i<j) g_ij^(k) (P_j - P_i),   g_ij^(k) = rho_i rho_j^(k) - rho_j rho_i^(k)
+/// (sum_i rho_i = 1 and sum_i rho_i^(k) = 0 antisymmetrise sum_i rho_i^(k) P_i over pairs,
+/// so that only the points' differences appear). Leibniz on rho_i W = w_i N_i gives
+/// rho^(k) = rows[k] - sum_(m=1..k) C(k,m) omega_m rho^(k-m), omega_m = W^(m) / W =
+/// sum_i rows[m][i]; in the pairs' combinations the m = k term cancels exactly, leaving
+///   g^(k) = (rho_i rows[k]_j - rho_j rows[k]_i) - sum_(m=1..k-1) C(k,m) omega_m g^(k-m),
+/// a recursion on the pairs' scalars alone: g^(1) = rho_i rows[1]_j - rho_j rows[1]_i,
+/// g^(2) = (rho_i rows[2]_j - rho_j rows[2]_i) - 2 omega_1 g^(1) (the quotient rule's
+/// (A'' W - A W'') / W^2 - 2 W' (A' W - A W') / W^3 over pairs). Where the curve hugs its
+/// control polygon (weights 1, 1e30, 1) R^(k)(1/2) is of size 1/w and so are these
+/// terms, where the quotient rule subtracts terms of size 1 (it gave 0 for R'' and R''').
+/// The points are halved before their differences (no overflow). Cost O(k^2 n^2 + n^2 D)
+/// for n + 1 basis functions.
 template <class T, int D>
-Vector<T, D> pair_second_derivative(std::span<const Point<T, D>> P, std::span<const T> a, std::span<const T> b, std::span<const T> c) {
-  T beta = 0;
-  for (T x : b) beta += x;
+Vector<T, D> pair_derivative(std::span<const Point<T, D>> P, std::span<const std::vector<T>> rows, int k) {
+  const std::size_t n = P.size(), K = static_cast<std::size_t>(k);
+  const std::size_t pairs = n * (n - 1) / 2;
+  std::vector<T> omega(K + 1, T(0));
+  for (std::size_t m = 1; m <= K; ++m)
+    for (T x : rows[m]) omega[m] += x;
+  // g[l * pairs + q]: g^(l) of the q-th pair (i < j, lexicographic).
+  std::vector<T> g((K + 1) * pairs, T(0));
+  const std::vector<T>& a = rows[0];
+  for (std::size_t l = 1; l <= K; ++l) {
+    const std::vector<T>& r = rows[l];
+    std::size_t q = 0;
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = i + 1; j < n; ++j, ++q) {
+        T f = a[i] * r[j] - r[i] * a[j];
+        for (std::size_t m = 1; m < l; ++m) f -= binomial<T>(static_cast<int>(l), static_cast<int>(m)) * omega[m] * g[(l - m) * pairs + q];
+        g[l * pairs + q] = f;
+      }
+  }
   Vector<T, D> v{};
-  for (std::size_t i = 0; i < P.size(); ++i)
-    for (std::size_t j = i + 1; j < P.size(); ++j) {
-      const T f = (a[i] * c[j] - c[i] * a[j]) - 2 * (a[i] * b[j] - b[i] * a[j]) * beta;
+  std::size_t q = 0;
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n; ++j, ++q) {
+      const T f = g[K * pairs + q];
       if (f == 0) continue;
       Vector<T, D> d;
-      for (int k = 0; k < D; ++k) d[k] = P[j][k] / 2 - P[i][k] / 2;
+      for (int c = 0; c < D; ++c) d[c] = P[j][c] / 2 - P[i][c] / 2;
       v += f * d;
     }
   return T(2) * v;
@@ -212,33 +235,40 @@ bool extreme_weight_spread(std::span<const T> w) {
   return *hi > T(1048576) * *lo;
 }
 
-/// R''(t) of the rational Bézier curve with points P and weights w > 0 at t in [0, 1]
-/// (pair_second_derivative on the Bernstein basis: B_i, B_i' = n (B^(n-1)_(i-1) -
-/// B^(n-1)_i), B_i'' = n (n - 1) (B^(n-2)_(i-2) - 2 B^(n-2)_(i-1) + B^(n-2)_i)).
-/// Weights as normalised (the largest in [0.5, 1)). Cost O(n^2 D).
+/// R^(k)(t) (k >= 1) of the rational Bézier curve with points P and weights w > 0 at t in
+/// [0, 1] (pair_derivative on the Bernstein basis: B_i^(m) = n! / (n - m)!
+/// sum_(l=0..m) (-1)^l C(m, l) B^(n-m)_(i-m+l), zero for m > n). Weights as normalised
+/// (the largest in [0.5, 1)). Cost O(k^2 n^2 + k n^2).
 template <class T, int D>
-Vector<T, D> rational_second_derivative(std::span<const Point<T, D>> P, std::span<const T> w, T t) {
+Vector<T, D> rational_pair_derivative(std::span<const Point<T, D>> P, std::span<const T> w, T t, int k) {
   const int n = static_cast<int>(P.size()) - 1;
   const T s = 1 - t;
   auto bern = [&](int m, int i) -> T {
     if (i < 0 || i > m) return 0;
     return binomial<T>(m, i) * std::pow(t, i) * std::pow(s, m - i);
   };
-  std::vector<T> a(P.size()), b(P.size()), c(P.size());
+  std::vector<std::vector<T>> rows(static_cast<std::size_t>(k) + 1, std::vector<T>(P.size(), T(0)));
   T W = 0;
   for (int i = 0; i <= n; ++i) {
     const auto u = static_cast<std::size_t>(i);
-    a[u] = w[u] * bern(n, i);
-    b[u] = w[u] * static_cast<T>(n) * (bern(n - 1, i - 1) - bern(n - 1, i));
-    c[u] = n >= 2 ? w[u] * static_cast<T>(n * (n - 1)) * (bern(n - 2, i - 2) - 2 * bern(n - 2, i - 1) + bern(n - 2, i)) : T(0);
-    W += a[u];
+    rows[0][u] = w[u] * bern(n, i);
+    W += rows[0][u];
   }
-  for (std::size_t i = 0; i < P.size(); ++i) {
-    a[i] /= W;
-    b[i] /= W;
-    c[i] /= W;
+  T fall = 1;  // n! / (n - m)!
+  for (int m = 1; m <= std::min(k, n); ++m) {
+    fall *= static_cast<T>(n - m + 1);
+    for (int i = 0; i <= n; ++i) {
+      T sum = bern(n - m, i - m);
+      for (int l = 1; l <= m; ++l) {
+        const T c = binomial<T>(m, l);
+        sum += (l % 2 ? -c : c) * bern(n - m, i - m + l);
+      }
+      rows[static_cast<std::size_t>(m)][static_cast<std::size_t>(i)] = w[static_cast<std::size_t>(i)] * (fall * sum);
+    }
   }
-  return pair_second_derivative<T, D>(P, a, b, c);
+  for (auto& r : rows)
+    for (T& x : r) x /= W;
+  return pair_derivative<T, D>(P, std::span<const std::vector<T>>(rows), k);
 }
 
 /// Curvature from a jet: (x'y'' - y'x'') / |R'|^3 in the plane (signed), |R' ^ R''| /

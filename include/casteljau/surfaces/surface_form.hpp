@@ -60,6 +60,21 @@ Row<T> operator-(const Row<T>& a, const Row<T>& b) {
   return r;
 }
 template <class T>
+Row<T> operator*(T s, const Row<T>& a) {
+  Row<T> r = a;
+  for (auto& c : r.x) c *= s;
+  return r;
+}
+template <class T>
+Row<T>& operator+=(Row<T>& a, const Row<T>& b) {
+  for (std::size_t i = 0; i < a.x.size(); ++i) a.x[i] += b.x[i];
+  return a;
+}
+template <class T>
+bool all_finite_point(const Row<T>& a) {
+  return std::all_of(a.x.begin(), a.x.end(), [](T c) { return std::isfinite(c); });
+}
+template <class T>
 Row<T> operator/(const Row<T>& a, T s) {
   Row<T> r = a;
   for (auto& c : r.x) c /= s;
@@ -151,75 +166,6 @@ SurfaceForm<T> along(const SurfaceForm<T>& f, Direction dir, Op&& op) {
   return weighted(along_homogeneous(weighted(f, true), dir, op), false);
 }
 
-/// The Bézier points of degree p + r of the Bézier points B of degree p (Forrest's
-/// equations [PT97, eq. 5.36]): Q_i = sum_j C(p, j) C(r, i - j) / C(p + r, i) B_j.
-template <class T>
-std::vector<Row<T>> elevate_bezier_rows(const std::vector<Row<T>>& B, int r) {
-  const int p = static_cast<int>(B.size()) - 1, n = p + r;
-  std::vector<Row<T>> Q(static_cast<std::size_t>(n) + 1, Row<T>{std::vector<T>(B.front().x.size(), T(0))});
-  for (int i = 0; i <= n; ++i) {
-    const T c = binomial<T>(n, i);
-    for (int j = std::max(0, i - r); j <= std::min(p, i); ++j) {
-      const T a = binomial<T>(p, j) * binomial<T>(r, i - j) / c;
-      auto& q = Q[static_cast<std::size_t>(i)].x;
-      const auto& b = B[static_cast<std::size_t>(j)].x;
-      for (std::size_t k = 0; k < q.size(); ++k) q[k] += a * b[k];
-    }
-  }
-  return Q;
-}
-
-/// Degree elevation by r >= 1 of a curve of rows, as the curves do it (detail::elevate in
-/// curves/bspline.hpp: pieces elevated, joined C^0, each interior knot removed back to
-/// its continuity; an unclamped end re-blossomed to the outer knots U_0 (r + 1 times),
-/// U_1, .., U_(p-1)).
-template <class T>
-KnotForm<T, Row<T>> elevate_rows(const KnotForm<T, Row<T>>& f, int r) {
-  using V = Row<T>;
-  const int p = f.p, q = p + r;
-  const std::span<const T> U(f.U);
-  const std::size_t n = f.P.size(), m = f.U.size() - 1;
-  const T a = U[static_cast<std::size_t>(p)], b = U[n];
-  const std::vector<std::size_t> spans = nonempty_spans(U, p);
-  std::vector<T> U0(static_cast<std::size_t>(q) + 1, a);
-  std::vector<V> P0;
-  for (std::size_t k = 0; k < spans.size(); ++k) {
-    const std::vector<V> Q = elevate_bezier_rows(span_bezier_points<V, T>(U, p, spans[k], f.P), r);
-    if (k == 0) {
-      P0.insert(P0.end(), Q.begin(), Q.end());
-    } else if (knot_multiplicity<T>(U, U[spans[k]]) == static_cast<std::size_t>(p) + 1) {
-      P0.insert(P0.end(), Q.begin(), Q.end());
-      U0.insert(U0.end(), static_cast<std::size_t>(q) + 1, U[spans[k]]);
-    } else {
-      P0.back() = lerp(P0.back(), Q.front(), T(0.5));
-      P0.insert(P0.end(), Q.begin() + 1, Q.end());
-      U0.insert(U0.end(), static_cast<std::size_t>(q), U[spans[k]]);
-    }
-  }
-  U0.insert(U0.end(), static_cast<std::size_t>(q) + 1, b);
-  SlidingWindow<T, V> win(U0, P0, q);
-  for (std::size_t k = 1; k < spans.size(); ++k) {
-    const T x = U[spans[k]];
-    const int mult = static_cast<int>(knot_multiplicity<T>(U, x));
-    win.reach(x);
-    for (int j = 0; j < p - mult; ++j) win.W = remove_knot_once(win.W, x);
-    win.settle(x);
-  }
-  KnotForm<T, V> g = win.finish();
-  const bool clamped_left = U[0] == a, clamped_right = U[m] == b;
-  if (clamped_left && clamped_right) return g;
-  std::vector<T> L(static_cast<std::size_t>(q), a), R(static_cast<std::size_t>(q), b);
-  if (!clamped_left) {
-    for (int j = 0; j < r; ++j) L[static_cast<std::size_t>(j)] = U[0];
-    for (int j = 0; j < p; ++j) L[static_cast<std::size_t>(r + j)] = U[static_cast<std::size_t>(j)];
-  }
-  if (!clamped_right) {
-    for (int j = 0; j < p; ++j) R[static_cast<std::size_t>(j)] = U[n + 1 + static_cast<std::size_t>(j)];
-    for (int j = 0; j < r; ++j) R[static_cast<std::size_t>(p + j)] = U[m];
-  }
-  return with_outer_knots<T, V>(g, L, R);
-}
-
 /// Checks the data of a surface (the typed surfaces' constructors call it): degrees >= 0
 /// ("degree[0]", "degree[1]"), at least p + 1 rows and q + 1 columns ("points"), the knot
 /// rules of check_knots in each direction ("knots[0][i]", "knots[1][j]"), finite points
@@ -286,7 +232,7 @@ SurfaceForm<T> refine(const SurfaceForm<T>& f, Direction dir, std::span<const T>
 template <class T>
 SurfaceForm<T> elevate(const SurfaceForm<T>& f, Direction dir, int r) {
   if (r < 1) throw InvalidArgument("times", "elevation count must be >= 1, got " + std::to_string(r));
-  return along(f, dir, [&](const KnotForm<T, Row<T>>& c) { return elevate_rows<T>(c, r); });
+  return along(f, dir, [&](const KnotForm<T, Row<T>>& c) { return elevate(c, r); });
 }
 
 /// The halves of f at t strictly inside the domain of direction dir (error "t"); both keep
