@@ -733,7 +733,32 @@ SurfaceMesh<T> tessellate(const SurfaceForm<T>& f, T tol) {
     // Every cell's bound at counts (a, b) into `parts`; true when all hold.
     std::vector<signed char> cur_diagonal;
     std::vector<std::array<T, 2>> best_parts;
-    const auto check = [&](std::size_t a, std::size_t b) {
+    const auto cell_bound_at = [&](std::size_t i, std::size_t j, std::size_t a, std::size_t b) {
+      const Net<T> strip = tess::transpose(tess::sub_u(net, T(i) / T(a), T(i + 1) / T(a)));
+      const Net<T> cell = tess::transpose(tess::sub_u(strip, T(j) / T(b), T(j + 1) / T(b)));
+      return tess::bound(cell, f.rational, f.rational ? T(0.6) * budget : T(0));
+    };
+    // `early`: the counts are a guess near the best counts (bn, bm) held so far, whose cells'
+    // parts are best_parts: the cells whose parts, scaled to (a, b), come nearest the budget
+    // are checked first, and the first that fails ends the check (no parts then).
+    const auto check = [&](std::size_t a, std::size_t b, bool early = false, std::size_t bn = 0, std::size_t bm = 0) {
+      tried.emplace_back(a, b);
+      if (early) {
+        const T x = T(bn) * T(bn) / (T(a) * T(a)), y = T(bm) * T(bm) / (T(b) * T(b));
+        std::vector<std::pair<T, std::size_t>> worst;
+        for (std::size_t i = 0; i < a; ++i)
+          for (std::size_t j = 0; j < b; ++j) {
+            const std::size_t bi = std::min(bn - 1, static_cast<std::size_t>((T(i) + T(0.5)) * T(bn) / T(a)));
+            const std::size_t bj = std::min(bm - 1, static_cast<std::size_t>((T(j) + T(0.5)) * T(bm) / T(b)));
+            const auto& e = best_parts[bi * bm + bj];
+            worst.emplace_back(e[0] * x + e[1] * y, i * b + j);
+          }
+        const std::size_t first = std::min<std::size_t>(worst.size(), 32);
+        std::partial_sort(worst.begin(), worst.begin() + static_cast<std::ptrdiff_t>(first), worst.end(),
+                          [](const auto& l, const auto& r) { return l.first > r.first; });
+        for (std::size_t q = 0; q < first; ++q)
+          if (cell_bound_at(worst[q].second / b, worst[q].second % b, a, b).total() > budget) return false;
+      }
       parts.clear();
       cur_diagonal.clear();
       bool ok = true;
@@ -742,12 +767,14 @@ SurfaceMesh<T> tessellate(const SurfaceForm<T>& f, T tol) {
         for (std::size_t j = 0; j < b; ++j) {
           const Net<T> cell = tess::transpose(tess::sub_u(strip, T(j) / T(b), T(j + 1) / T(b)));
           const auto e = tess::bound(cell, f.rational, f.rational ? T(0.6) * budget : T(0));
-          if (e.total() > budget) ok = false;
+          if (e.total() > budget) {
+            ok = false;
+            if (early) return false;
+          }
           parts.push_back(e.e);
           cur_diagonal.push_back(static_cast<signed char>(e.diagonal));
         }
       }
-      tried.emplace_back(a, b);
       return ok;
     };
     const auto seen = [&](std::size_t a, std::size_t b) { return std::find(tried.begin(), tried.end(), std::pair{a, b}) != tried.end(); };
@@ -772,22 +799,32 @@ SurfaceMesh<T> tessellate(const SurfaceForm<T>& f, T tol) {
       n = n2;
       m = m2;
     }
-    // A few neighbours of the best counts with fewer cells (the parts' split between u and
-    // v only guides the proposals).
-    for (int tries = 0; best_n != 0 && tries < 6; ++tries) {
-      const std::size_t bn = best_n, bm = best_m;
-      const std::pair<std::size_t, std::size_t> near[] = {{bn - 1, bm}, {bn, bm - 1}, {bn - 1, bm + 1}, {bn + 1, bm - 1}};
+    // Counts near the best with fewer cells: the best counts' cell parts, scaled by the
+    // step squared, predict for each n' near best_n the least m' that holds (the parts'
+    // split between u and v only guides this); the predicted counts are tried by fewest
+    // cells, each check ending at its first failing cell (the cells predicted worst
+    // first), and the first that holds is taken; then once more from there.
+    for (int tries = 0; best_n != 0 && tries < 2; ++tries) {
+      const std::size_t bn = best_n, bm = best_m, span = 2 + bn / 8;
+      std::vector<std::pair<std::size_t, std::size_t>> near;
+      for (std::size_t a = bn > span ? bn - span : 1; a <= bn + span; ++a) {
+        const T x = T(bn) * T(bn) / (T(a) * T(a));
+        T y = T(1e12);
+        for (const auto& e : best_parts) {
+          if (e[1] > 0) y = std::min(y, (T(1.02) * budget - e[0] * x) / e[1]);
+          else if (e[0] * x > T(1.02) * budget) y = 0;
+        }
+        if (!(y > 0)) continue;
+        const T want = std::ceil(T(bm) / std::sqrt(y) - T(1e-9));
+        const std::size_t b = want < 1 ? 1 : static_cast<std::size_t>(std::min(want, T(1e9)));
+        if (a * b < bn * bm && !seen(a, b)) near.emplace_back(a, b);
+      }
+      std::sort(near.begin(), near.end(), [](const auto& l, const auto& r) { return l.first * l.second < r.first * r.second; });
       bool better = false;
-      for (const auto& [a, b] : near) {
-        if (a < 1 || b < 1 || a * b >= best_n * best_m || seen(a, b)) continue;
-        // Only where the scaled parts of the best counts' cells come near the budget.
-        const T x = T(bn) * T(bn) / (T(a) * T(a)), y = T(bm) * T(bm) / (T(b) * T(b));
-        T predicted = 0;
-        for (const auto& e : best_parts) predicted = std::max(predicted, e[0] * x + e[1] * y);
-        if (predicted > T(1.02) * budget) continue;
-        if (check(a, b)) {
-          best_n = a;
-          best_m = b;
+      for (std::size_t q = 0; q < near.size() && q < 4; ++q) {
+        if (check(near[q].first, near[q].second, true, bn, bm)) {
+          best_n = near[q].first;
+          best_m = near[q].second;
           diagonals[k] = cur_diagonal;
           best_parts = parts;
           better = true;
