@@ -63,7 +63,16 @@
 // along it lose the triangle that would have two corners there (no zero-area triangles),
 // and the rest fan about the point. The normal there is the limit normal: with S_v = 0
 // along u = u0, S_u x S_v ~ (u - u0) S_u x S_uv, so n = +-(S_u x S_uv) / |...| (the sign
-// from the side the domain lies on); null when that vanishes too.
+// from the side the domain lies on); null when that vanishes too. Bands (slivers): the
+// steps along such an edge that the tolerance asks fall toward it (about as the square
+// root of the distance on a sphere), so one count per patch leaves long thin cells and a
+// fan of needles at the point. A patch row (column) with such an edge is cut into bands at
+// 1/2, 1/4, ..., 2^-K of its interval from the edge (exact subdivision); each band's counts
+// are searched as a patch's, then, from the outer band in, the count along the edge is
+// nested (a divisor of the outer neighbour's, at most 4 times smaller, never below the
+// band's own search: no union nodes close together) and the count across raised to cells
+// at most 3 times as long across as along (control polygons); the new counts are checked
+// cell by cell, a band whose check fails keeps its searched counts.
 //
 // Cost: the count is estimated from the patches' nets before any vertex is evaluated, and
 // again at each round of the counts; beyond max_triangles the request is refused
@@ -1000,16 +1009,19 @@ SurfaceMesh<T> tessellate(const SurfaceForm<T>& f, T tol) {
           if (out != nullptr) out->push_back({want_across, want});
           prev = want;
         }
-        return cells;
+        // The band on the edge: its count is the fan's at the point (the fan's angles there
+        // are the edge's total turn over it): an N that leaves it above twice its search's
+        // comes after every N that does not.
+        return std::pair<bool, T>{prev > 2 * along[ks[L - 1]], cells};
       };
       const std::size_t need0 = along[ks[0]];
       std::size_t bestN = 0;
-      T best_cells = 0;
+      std::pair<bool, T> best{};
       for (std::size_t N = need0; N <= 2 * need0; ++N) {
-        const T cells = chain(N, nullptr);
-        if (bestN == 0 || cells < best_cells) {
+        const std::pair<bool, T> cost = chain(N, nullptr);
+        if (bestN == 0 || cost < best) {
           bestN = N;
-          best_cells = cells;
+          best = cost;
         }
       }
       std::vector<std::array<std::size_t, 2>> plan;
