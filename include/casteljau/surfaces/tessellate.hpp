@@ -913,9 +913,13 @@ SurfaceMesh<T> tessellate(const SurfaceForm<T>& f, T tol) {
         const std::size_t b = want < 1 ? 1 : static_cast<std::size_t>(std::min(want, T(1e9)));
         if (a * b < bn * bm && !seen(a, b)) near.emplace_back(a, b);
       }
+      // The next counts with one step fewer in u or in v as well (the prediction is not exact).
+      for (const auto& [a, b] : {std::pair<std::size_t, std::size_t>{bn - 1, bm}, {bn, bm - 1}, {bn - 1, bm + 1}, {bn + 1, bm - 1}})
+        if (a >= 1 && b >= 1 && a * b < bn * bm && !seen(a, b) && std::find(near.begin(), near.end(), std::pair{a, b}) == near.end())
+          near.emplace_back(a, b);
       std::sort(near.begin(), near.end(), [](const auto& l, const auto& r) { return l.first * l.second < r.first * r.second; });
       bool better = false;
-      for (std::size_t q = 0; q < near.size() && q < 4; ++q) {
+      for (std::size_t q = 0; q < near.size() && q < 6; ++q) {
         if (check(near[q].first, near[q].second, true, bn, bm)) {
           best_n = near[q].first;
           best_m = near[q].second;
