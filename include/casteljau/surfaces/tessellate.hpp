@@ -718,7 +718,7 @@ SurfaceMesh<T> tessellate(const SurfaceForm<T>& f, T tol) {
         hi = hi || point_edge(n, true, n.rows - 1);
         most = std::max(most, estimate(n)[1]);
       }
-      const int K = (lo || hi) && most > 4 ? std::min(16, 2 * static_cast<int>(std::floor(std::log2(T(most) / 4)))) : 0;
+      const int K = (lo || hi) && most >= 16 ? std::min(16, 2 * static_cast<int>(std::floor(std::log2(T(most) / 4)))) : 0;
       std::vector<T> fr{T(0)};
       if (K > 0 && lo)
         for (int q = K; q >= 1; --q) fr.push_back(std::ldexp(T(1), -q));
@@ -834,10 +834,11 @@ SurfaceMesh<T> tessellate(const SurfaceForm<T>& f, T tol) {
     };
     // `early`: the counts are a guess near the best counts (bn, bm) held so far, whose cells'
     // parts are best_parts: the cells whose parts, scaled to (a, b), come nearest the budget
-    // are checked first, and the first that fails ends the check (no parts then).
+    // are checked first (on grids of more than 64 cells), and the first that fails ends the
+    // check (no parts then).
     const auto check = [&](std::size_t a, std::size_t b, bool early = false, std::size_t bn = 0, std::size_t bm = 0) {
       tried.emplace_back(a, b);
-      if (early) {
+      if (early && a * b > 64) {
         const T x = T(bn) * T(bn) / (T(a) * T(a)), y = T(bm) * T(bm) / (T(b) * T(b));
         std::vector<std::pair<T, std::size_t>> worst;
         for (std::size_t i = 0; i < a; ++i)
