@@ -836,25 +836,31 @@ SurfaceMesh<T> tessellate(const SurfaceForm<T>& f, T tol) {
     };
     // `early`: the counts are a guess near the best counts (bn, bm) held so far, whose cells'
     // parts are best_parts: the cells whose parts, scaled to (a, b), come nearest the budget
-    // are checked first (on grids of more than 64 cells), and the first that fails ends the
-    // check (no parts then).
+    // are checked first, and the first that fails ends the check (no parts then).
     const auto check = [&](std::size_t a, std::size_t b, bool early = false, std::size_t bn = 0, std::size_t bm = 0) {
       tried.emplace_back(a, b);
-      if (early && a * b > 64) {
+      if (early) {
+        // Every cell, in the order of its predicted bound, largest first.
         const T x = T(bn) * T(bn) / (T(a) * T(a)), y = T(bm) * T(bm) / (T(b) * T(b));
-        std::vector<std::pair<T, std::size_t>> worst;
+        std::vector<std::pair<T, std::size_t>> order;
+        order.reserve(a * b);
         for (std::size_t i = 0; i < a; ++i)
           for (std::size_t j = 0; j < b; ++j) {
             const std::size_t bi = std::min(bn - 1, static_cast<std::size_t>((T(i) + T(0.5)) * T(bn) / T(a)));
             const std::size_t bj = std::min(bm - 1, static_cast<std::size_t>((T(j) + T(0.5)) * T(bm) / T(b)));
             const auto& e = best_parts[bi * bm + bj];
-            worst.emplace_back(e[0] * x + e[1] * y, i * b + j);
+            order.emplace_back(e[0] * x + e[1] * y, i * b + j);
           }
-        const std::size_t first = std::min<std::size_t>(worst.size(), 32);
-        std::partial_sort(worst.begin(), worst.begin() + static_cast<std::ptrdiff_t>(first), worst.end(),
-                          [](const auto& l, const auto& r) { return l.first > r.first; });
-        for (std::size_t q = 0; q < first; ++q)
-          if (cell_bound_at(worst[q].second / b, worst[q].second % b, a, b).total() > budget) return false;
+        std::sort(order.begin(), order.end(), [](const auto& l, const auto& r) { return l.first > r.first; });
+        parts.assign(a * b, std::array<T, 2>{});
+        cur_diagonal.assign(a * b, 0);
+        for (const auto& [predicted, at] : order) {
+          const auto e = cell_bound_at(at / b, at % b, a, b);
+          if (e.total() > budget) return false;
+          parts[at] = e.e;
+          cur_diagonal[at] = static_cast<signed char>(e.diagonal);
+        }
+        return true;
       }
       parts.clear();
       cur_diagonal.clear();
