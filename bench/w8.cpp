@@ -8,7 +8,8 @@
 // points, the distance to the surface by Gauss-Newton from the interpolated (u, v), and
 // (b) the surface on a 200 x 200 (u, v) grid against the triangles whose (u, v) boxes
 // hold the point; over_tolerance (1 when max_deviation > 1.0001 x tolerance); cracks
-// (edges used by one triangle whose ends are not both on the domain's boundary).
+// (edges used by one triangle whose ends are not both on the domain's boundary);
+// min_angle_deg (the smallest angle of any triangle, in space).
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -330,6 +331,17 @@ void set_counters(benchmark::State& state, const std::string& key, const Form& f
   state.counters["max_deviation"] = q.max_deviation;
   state.counters["over_tolerance"] = q.max_deviation > 1.0001 * tol ? 1 : 0;
   state.counters["cracks"] = q.cracks;
+  // The smallest angle of a triangle (degrees): slivers (issue 19: none at a sphere's poles).
+  double smallest = 180;
+  for (const auto& t : m.t)
+    for (int k = 0; k < 3; ++k) {
+      const auto &a = m.x[static_cast<std::size_t>(t[k])], &b = m.x[static_cast<std::size_t>(t[(k + 1) % 3])],
+                 &c = m.x[static_cast<std::size_t>(t[(k + 2) % 3])];
+      const double ab = dist(a, b), ac = dist(a, c);
+      const double cosine = ((b[0] - a[0]) * (c[0] - a[0]) + (b[1] - a[1]) * (c[1] - a[1]) + (b[2] - a[2]) * (c[2] - a[2])) / (ab * ac);
+      smallest = std::min(smallest, std::acos(std::clamp(cosine, -1.0, 1.0)) * 180 / 3.141592653589793);
+    }
+  state.counters["min_angle_deg"] = smallest;
 }
 
 struct Case {

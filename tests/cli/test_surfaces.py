@@ -178,6 +178,51 @@ class SurfaceEvalTest(CliTest):
         r = self.ok("eval", {"surface": s, "uv": [[0.25, 0.5]]})
         self.assert_close(r["points"][0], evaluate(s, 0.25, 0.5), TIGHT)
 
+    def test_small_nurbs_surface_in_exact_rational_arithmetic(self):
+        # A NURBS surface with dyadic data, degree (2, 1), an interior knot in u, evaluated
+        # at dyadic (u, v) in fractions.Fraction: Cox-de Boor and its derivative formula, the
+        # quotient rule, all exact; the program's points and first partials to a few ulps.
+        from fractions import Fraction as Q
+
+        U, V, p, q = [0, 0, 0, Q(1, 2), 1, 1, 1], [0, 0, 1, 1], 2, 1
+        P = [[[0, 0, 0], [0, 1, Q(1, 4)]], [[Q(1, 2), 0, 1], [Q(1, 2), 1, Q(3, 2)]], [[1, 0, Q(1, 2)], [1, 1, 0]],
+             [[Q(3, 2), 0, Q(-1, 4)], [Q(3, 2), 1, 1]]]
+        W = [[1, 2], [Q(1, 2), 1], [3, Q(3, 4)], [1, Q(5, 4)]]
+
+        def basis(T, deg, t):
+            """N_{i,deg}(t) and their derivatives, exactly (t inside the domain, right-continuous)."""
+            n = len(T) - deg - 1
+            N = [[Q(1) if T[i] <= t < T[i + 1] or (t == T[-1] and T[i] < T[i + 1] == T[-1]) else Q(0)
+                  for i in range(len(T) - 1)]]
+            for d in range(1, deg + 1):
+                prev = N[-1]
+                N.append([(Q(t - T[i]) / (T[i + d] - T[i]) * prev[i] if T[i + d] != T[i] else 0) +
+                          (Q(T[i + d + 1] - t) / (T[i + d + 1] - T[i + 1]) * prev[i + 1] if T[i + d + 1] != T[i + 1] else 0)
+                          for i in range(len(T) - d - 1)])
+            low = N[deg - 1]
+            dN = [(deg * low[i] / (T[i + deg] - T[i]) if T[i + deg] != T[i] else 0) -
+                  (deg * low[i + 1] / (T[i + deg + 1] - T[i + 1]) if T[i + deg + 1] != T[i + 1] else 0) for i in range(n)]
+            return N[deg][:n], dN
+
+        s = {"type": "nurbs_surface", "degree": [p, q], "knots": [[float(x) for x in U], [float(x) for x in V]],
+             "points": [[[float(c) for c in x] for x in row] for row in P], "weights": [[float(w) for w in row] for row in W]}
+        uv = [(Q(1, 8), Q(3, 4)), (Q(1, 2), Q(1, 2)), (Q(13, 16), Q(1, 16)), (Q(1), Q(1))]
+        r = self.ok("eval", {"surface": s, "uv": [[float(u), float(v)] for u, v in uv], "derivatives": 1})
+        for k, (u, v) in enumerate(uv):
+            (Nu, dNu), (Nv, dNv) = basis(U, p, u), basis(V, q, v)
+            def blend(a, b):
+                A = [sum(a[i] * b[j] * W[i][j] * P[i][j][c] for i in range(len(P)) for j in range(2)) for c in range(3)]
+                w = sum(a[i] * b[j] * W[i][j] for i in range(len(P)) for j in range(2))
+                return A, w
+            (A, w), (Au, wu), (Av, wv) = blend(Nu, Nv), blend(dNu, Nv), blend(Nu, dNv)
+            S = [x / w for x in A]
+            want = {"points": S, "u": [(Au[c] - wu * S[c]) / w for c in range(3)], "v": [(Av[c] - wv * S[c]) / w for c in range(3)]}
+            got = {"points": r["points"][k], "u": r["partials"]["u"][k], "v": r["partials"]["v"][k]}
+            for key in want:
+                for c in range(3):
+                    self.assertAlmostEqual(got[key][c], float(want[key][c]), delta=1e-14 * (1 + abs(float(want[key][c]))),
+                                           msg=f"{key} at {(u, v)}")
+
     def test_hyperbolic_paraboloid_curvature(self):
         # (u, v, uv): K = -1 / (1 + u^2 + v^2)^2, H = -uv / (1 + u^2 + v^2)^(3/2), n ~ (-v, -u, 1).
         s = {"type": "bezier_surface", "points": [[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]]}

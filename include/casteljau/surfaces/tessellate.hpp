@@ -63,7 +63,16 @@
 // along it lose the triangle that would have two corners there (no zero-area triangles),
 // and the rest fan about the point. The normal there is the limit normal: with S_v = 0
 // along u = u0, S_u x S_v ~ (u - u0) S_u x S_uv, so n = +-(S_u x S_uv) / |...| (the sign
-// from the side the domain lies on); null when that vanishes too.
+// from the side the domain lies on); null when that vanishes too. Bands (slivers): the
+// steps along such an edge that the tolerance asks fall toward it (about as the square
+// root of the distance on a sphere), so one count per patch leaves long thin cells and a
+// fan of needles at the point. A patch row (column) with such an edge is cut into bands at
+// 1/2, 1/4, ..., 2^-K of its interval from the edge (exact subdivision); each band's counts
+// are searched as a patch's, then, from the outer band in, the count along the edge is
+// nested (a divisor of the outer neighbour's, at most 4 times smaller, never below the
+// band's own search: no union nodes close together) and the count across raised to cells
+// at most 3 times as long across as along (control polygons); the new counts are checked
+// cell by cell, a band whose check fails keeps its searched counts.
 //
 // Cost: the count is estimated from the patches' nets before any vertex is evaluated, and
 // again at each round of the counts; beyond max_triangles the request is refused
@@ -619,7 +628,8 @@ SurfaceMesh<T> tessellate(const SurfaceForm<T>& f, T tol) {
                                          ": it is a curve (or a point), with no area to mesh into triangles");
   }
   const SurfacePatches<T> sp = patches(f);
-  const std::size_t A = sp.patches.size(), B = sp.patches.front().size(), cd = f.cartesian();
+  std::size_t A = sp.patches.size(), B = sp.patches.front().size();
+  const std::size_t cd = f.cartesian();
   // The size of the surface (the box of its control points), for the rounding slack and
   // the coincidence tests.
   T size = 0;
@@ -643,10 +653,26 @@ SurfaceMesh<T> tessellate(const SurfaceForm<T>& f, T tol) {
   nets.reserve(A * B);
   for (const auto& row : sp.patches)
     for (const auto& patch : row) nets.push_back(tess::net_of(patch));
-  // Start: the Cartesian net of each patch (valid for polynomial patches).
-  std::vector<std::size_t> nu(A * B, 1), nv(A * B, 1);
-  for (std::size_t k = 0; k < A * B; ++k) {
-    Net<T> c = nets[k];
+  std::vector<T> ub = sp.ubreaks, vb = sp.vbreaks;
+  // A degenerate patch edge: all its control points within 1e-12 of the size of the first.
+  const auto point_edge = [&](const Net<T>& n, bool along_v, std::size_t fixed) {
+    const std::size_t count_pts = along_v ? n.cols : n.rows;
+    const T* x0 = along_v ? n.at(fixed, 0) : n.at(0, fixed);
+    for (std::size_t k = 1; k < count_pts; ++k) {
+      const T* x = along_v ? n.at(fixed, k) : n.at(k, fixed);
+      T s = 0;
+      for (std::size_t c = 0; c < cd; ++c) {
+        const T e = f.rational ? x[c] / x[cd] - x0[c] / x0[cd] : x[c] - x0[c];
+        s += e * e;
+      }
+      if (!(std::sqrt(s) <= T(1e-12) * size)) return false;
+    }
+    return true;
+  };
+  // The counts that a patch's Cartesian net asks, {along u, along v} (a valid bound for a
+  // polynomial patch; a start for a rational one).
+  const auto estimate = [&](const Net<T>& net) {
+    Net<T> c = net;
     if (f.rational) {
       Net<T> cart{c.rows, c.cols, cd, std::vector<T>(c.rows * c.cols * cd)};
       for (std::size_t i = 0; i < c.rows; ++i)
@@ -655,8 +681,78 @@ SurfaceMesh<T> tessellate(const SurfaceForm<T>& f, T tol) {
       c = std::move(cart);
     }
     const auto e = tess::cell_bound(c, false);
-    nu[k] = tess::steps_for(e[0], budget);
-    nv[k] = tess::steps_for(e[1], budget);
+    return std::array<std::size_t, 2>{tess::steps_for(e[0], budget), tess::steps_for(e[1], budget)};
+  };
+  // Bands toward degenerate edges (a sphere's poles, a cone's apex). Along such an edge the
+  // circles shrink to a point: the steps along the edge that the tolerance asks fall about
+  // as the square root of the distance from it, and one count for the whole patch would
+  // leave its cells near the edge long and thin (slivers). A patch row with a degenerate
+  // edge (u fixed) is cut at the fractions 1/2, 1/4, ..., 2^-K of its u interval from the
+  // edge, exactly (Bézier subdivision): K = 2 floor(log2(s / 4)) for s steps along it by
+  // the Cartesian net, so that the band on the edge asks about 4; no bands below s = 16
+  // (the sphere at 1e-2: the same 1472 triangles without them, 8 patches to search instead
+  // of 24); each band takes its own counts, and after the search the counts along the edge
+  // are nested from the outer band in (below). Columns likewise (the grid transposed).
+  // `runs`: each edge's bands from the outer one to the one on the edge.
+  struct Run {
+    bool along_u = true;  ///< the bands are rows (u intervals); else columns
+    std::vector<std::size_t> lines;
+  };
+  std::vector<Run> runs;
+  const auto transpose_grid = [&] {
+    std::vector<Net<T>> t(A * B);
+    for (std::size_t a = 0; a < A; ++a)
+      for (std::size_t b = 0; b < B; ++b) t[b * A + a] = tess::transpose(nets[a * B + b]);
+    nets = std::move(t);
+    std::swap(A, B);
+    std::swap(ub, vb);
+  };
+  for (const bool along_u : {true, false}) {
+    if (!along_u) transpose_grid();
+    std::vector<Net<T>> out;
+    std::vector<T> nb{ub.front()};
+    for (std::size_t a = 0; a < A; ++a) {
+      bool lo = false, hi = false;
+      std::size_t most = 1;
+      for (std::size_t b = 0; b < B; ++b) {
+        const Net<T>& n = nets[a * B + b];
+        lo = lo || point_edge(n, true, 0);
+        hi = hi || point_edge(n, true, n.rows - 1);
+        most = std::max(most, estimate(n)[1]);
+      }
+      const int K = (lo || hi) && most >= 16 ? std::min(16, 2 * static_cast<int>(std::floor(std::log2(T(most) / 4)))) : 0;
+      std::vector<T> fr{T(0)};
+      if (K > 0 && lo)
+        for (int q = K; q >= 1; --q) fr.push_back(std::ldexp(T(1), -q));
+      if (K > 0 && hi)
+        for (int q = lo ? 2 : 1; q <= K; ++q) fr.push_back(1 - std::ldexp(T(1), -q));
+      fr.push_back(T(1));
+      const std::size_t first = nb.size() - 1, pieces = fr.size() - 1;
+      for (std::size_t q = 0; q < pieces; ++q) {
+        for (std::size_t b = 0; b < B; ++b)
+          out.push_back(pieces == 1 ? nets[a * B + b] : tess::sub_u(nets[a * B + b], fr[q], fr[q + 1]));
+        nb.push_back(q + 1 == pieces ? ub[a + 1] : ub[a] + (ub[a + 1] - ub[a]) * fr[q + 1]);
+      }
+      if (K == 0) continue;
+      Run lower{along_u, {}}, upper{along_u, {}};
+      for (std::size_t q = pieces; q-- > 0;)
+        if (lo && (fr[q + 1] <= T(0.5) || !hi)) lower.lines.push_back(first + q);
+      for (std::size_t q = 0; q < pieces; ++q)
+        if (hi && (fr[q] >= T(0.5) || !lo)) upper.lines.push_back(first + q);
+      if (lo) runs.push_back(std::move(lower));
+      if (hi) runs.push_back(std::move(upper));
+    }
+    nets = std::move(out);
+    ub = std::move(nb);
+    A = ub.size() - 1;
+    if (!along_u) transpose_grid();
+  }
+  // Start: the Cartesian net of each patch (valid for polynomial patches).
+  std::vector<std::size_t> nu(A * B, 1), nv(A * B, 1);
+  for (std::size_t k = 0; k < A * B; ++k) {
+    const auto e = estimate(nets[k]);
+    nu[k] = e[0];
+    nv[k] = e[1];
   }
   T total = 0;
   for (std::size_t k = 0; k < A * B; ++k) total += 2 * T(nu[k]) * T(nv[k]);
@@ -733,7 +829,39 @@ SurfaceMesh<T> tessellate(const SurfaceForm<T>& f, T tol) {
     // Every cell's bound at counts (a, b) into `parts`; true when all hold.
     std::vector<signed char> cur_diagonal;
     std::vector<std::array<T, 2>> best_parts;
-    const auto check = [&](std::size_t a, std::size_t b) {
+    const auto cell_bound_at = [&](std::size_t i, std::size_t j, std::size_t a, std::size_t b) {
+      const Net<T> strip = tess::transpose(tess::sub_u(net, T(i) / T(a), T(i + 1) / T(a)));
+      const Net<T> cell = tess::transpose(tess::sub_u(strip, T(j) / T(b), T(j + 1) / T(b)));
+      return tess::bound(cell, f.rational, f.rational ? T(0.6) * budget : T(0));
+    };
+    // `early`: the counts are a guess near the best counts (bn, bm) held so far, whose cells'
+    // parts are best_parts: the cells whose parts, scaled to (a, b), come nearest the budget
+    // are checked first, and the first that fails ends the check (no parts then).
+    const auto check = [&](std::size_t a, std::size_t b, bool early = false, std::size_t bn = 0, std::size_t bm = 0) {
+      tried.emplace_back(a, b);
+      if (early) {
+        // Every cell, in the order of its predicted bound, largest first.
+        const T x = T(bn) * T(bn) / (T(a) * T(a)), y = T(bm) * T(bm) / (T(b) * T(b));
+        std::vector<std::pair<T, std::size_t>> order;
+        order.reserve(a * b);
+        for (std::size_t i = 0; i < a; ++i)
+          for (std::size_t j = 0; j < b; ++j) {
+            const std::size_t bi = std::min(bn - 1, static_cast<std::size_t>((T(i) + T(0.5)) * T(bn) / T(a)));
+            const std::size_t bj = std::min(bm - 1, static_cast<std::size_t>((T(j) + T(0.5)) * T(bm) / T(b)));
+            const auto& e = best_parts[bi * bm + bj];
+            order.emplace_back(e[0] * x + e[1] * y, i * b + j);
+          }
+        std::sort(order.begin(), order.end(), [](const auto& l, const auto& r) { return l.first > r.first; });
+        parts.assign(a * b, std::array<T, 2>{});
+        cur_diagonal.assign(a * b, 0);
+        for (const auto& [predicted, at] : order) {
+          const auto e = cell_bound_at(at / b, at % b, a, b);
+          if (e.total() > budget) return false;
+          parts[at] = e.e;
+          cur_diagonal[at] = static_cast<signed char>(e.diagonal);
+        }
+        return true;
+      }
       parts.clear();
       cur_diagonal.clear();
       bool ok = true;
@@ -742,12 +870,14 @@ SurfaceMesh<T> tessellate(const SurfaceForm<T>& f, T tol) {
         for (std::size_t j = 0; j < b; ++j) {
           const Net<T> cell = tess::transpose(tess::sub_u(strip, T(j) / T(b), T(j + 1) / T(b)));
           const auto e = tess::bound(cell, f.rational, f.rational ? T(0.6) * budget : T(0));
-          if (e.total() > budget) ok = false;
+          if (e.total() > budget) {
+            ok = false;
+            if (early) return false;
+          }
           parts.push_back(e.e);
           cur_diagonal.push_back(static_cast<signed char>(e.diagonal));
         }
       }
-      tried.emplace_back(a, b);
       return ok;
     };
     const auto seen = [&](std::size_t a, std::size_t b) { return std::find(tried.begin(), tried.end(), std::pair{a, b}) != tried.end(); };
@@ -772,22 +902,36 @@ SurfaceMesh<T> tessellate(const SurfaceForm<T>& f, T tol) {
       n = n2;
       m = m2;
     }
-    // A few neighbours of the best counts with fewer cells (the parts' split between u and
-    // v only guides the proposals).
-    for (int tries = 0; best_n != 0 && tries < 6; ++tries) {
-      const std::size_t bn = best_n, bm = best_m;
-      const std::pair<std::size_t, std::size_t> near[] = {{bn - 1, bm}, {bn, bm - 1}, {bn - 1, bm + 1}, {bn + 1, bm - 1}};
+    // Counts near the best with fewer cells: the best counts' cell parts, scaled by the
+    // step squared, predict for each n' near best_n the least m' that holds (the parts'
+    // split between u and v only guides this); the predicted counts are tried by fewest
+    // cells, each check ending at its first failing cell (the cells predicted worst
+    // first), and the first that holds is taken; then once more from there.
+    for (int tries = 0; best_n != 0 && tries < 2; ++tries) {
+      const std::size_t bn = best_n, bm = best_m, span = 2 + bn / 8;
+      std::vector<std::pair<std::size_t, std::size_t>> near;
+      for (std::size_t a = bn > span ? bn - span : 1; a <= bn + span; ++a) {
+        const T x = T(bn) * T(bn) / (T(a) * T(a));
+        T y = T(1e12);
+        for (const auto& e : best_parts) {
+          if (e[1] > 0) y = std::min(y, (T(1.02) * budget - e[0] * x) / e[1]);
+          else if (e[0] * x > T(1.02) * budget) y = 0;
+        }
+        if (!(y > 0)) continue;
+        const T want = std::ceil(T(bm) / std::sqrt(y) - T(1e-9));
+        const std::size_t b = want < 1 ? 1 : static_cast<std::size_t>(std::min(want, T(1e9)));
+        if (a * b < bn * bm && !seen(a, b)) near.emplace_back(a, b);
+      }
+      // The next counts with one step fewer in u or in v as well (the prediction is not exact).
+      for (const auto& [a, b] : {std::pair<std::size_t, std::size_t>{bn - 1, bm}, {bn, bm - 1}, {bn - 1, bm + 1}, {bn + 1, bm - 1}})
+        if (a >= 1 && b >= 1 && a * b < bn * bm && !seen(a, b) && std::find(near.begin(), near.end(), std::pair{a, b}) == near.end())
+          near.emplace_back(a, b);
+      std::sort(near.begin(), near.end(), [](const auto& l, const auto& r) { return l.first * l.second < r.first * r.second; });
       bool better = false;
-      for (const auto& [a, b] : near) {
-        if (a < 1 || b < 1 || a * b >= best_n * best_m || seen(a, b)) continue;
-        // Only where the scaled parts of the best counts' cells come near the budget.
-        const T x = T(bn) * T(bn) / (T(a) * T(a)), y = T(bm) * T(bm) / (T(b) * T(b));
-        T predicted = 0;
-        for (const auto& e : best_parts) predicted = std::max(predicted, e[0] * x + e[1] * y);
-        if (predicted > T(1.02) * budget) continue;
-        if (check(a, b)) {
-          best_n = a;
-          best_m = b;
+      for (std::size_t q = 0; q < near.size() && q < 6; ++q) {
+        if (check(near[q].first, near[q].second, true, bn, bm)) {
+          best_n = near[q].first;
+          best_m = near[q].second;
           diagonals[k] = cur_diagonal;
           best_parts = parts;
           better = true;
@@ -808,6 +952,105 @@ SurfaceMesh<T> tessellate(const SurfaceForm<T>& f, T tol) {
     nu[k] = best_n;
     nv[k] = best_m;
   }
+  // The bands' counts (runs, above), from the outer band in: along the edge, the outer
+  // band's count rounded up to 8..15 x a power of 2 (at most 1/8 more), then each band
+  // takes its outer neighbour's count halved as often as its own search allows (nested: the
+  // band's side has no extra nodes close to others); across, enough steps for cells at most
+  // twice as long across as along (by the net's polygons), so that the cells near the edge
+  // and the fans at it are not slivers. New counts are checked cell by cell as in the
+  // search; where they fail the band keeps the searched ones.
+  const auto verify = [&](std::size_t k, std::size_t a, std::size_t b) {
+    std::vector<signed char> diag;
+    diag.reserve(a * b);
+    for (std::size_t i = 0; i < a; ++i) {
+      const Net<T> strip = tess::transpose(tess::sub_u(nets[k], T(i) / T(a), T(i + 1) / T(a)));
+      for (std::size_t j = 0; j < b; ++j) {
+        const Net<T> cell = tess::transpose(tess::sub_u(strip, T(j) / T(b), T(j + 1) / T(b)));
+        const auto e = tess::bound(cell, f.rational, f.rational ? T(0.6) * budget : T(0));
+        if (e.total() > budget) return false;
+        diag.push_back(static_cast<signed char>(e.diagonal));
+      }
+    }
+    diagonals[k] = std::move(diag);
+    return true;
+  };
+  // The longest polygon of a net's Cartesian points along u (dir 0) or v (dir 1).
+  const auto polygon = [&](const Net<T>& n, int dir) {
+    T best = 0;
+    const std::size_t lines = dir == 0 ? n.cols : n.rows, len = dir == 0 ? n.rows : n.cols;
+    for (std::size_t l = 0; l < lines; ++l) {
+      T sum = 0;
+      for (std::size_t q = 0; q + 1 < len; ++q) {
+        const T *x = dir == 0 ? n.at(q, l) : n.at(l, q), *y = dir == 0 ? n.at(q + 1, l) : n.at(l, q + 1);
+        T s2 = 0;
+        for (std::size_t c = 0; c < cd; ++c) {
+          const T e = f.rational ? y[c] / y[cd] - x[c] / x[cd] : y[c] - x[c];
+          s2 += e * e;
+        }
+        sum += std::sqrt(s2);
+      }
+      best = std::max(best, sum);
+    }
+    return best;
+  };
+  for (const Run& r : runs) {
+    std::vector<std::size_t>&along = r.along_u ? nv : nu, &across = r.along_u ? nu : nv;
+    for (std::size_t c = 0; c < (r.along_u ? B : A); ++c) {
+      const std::size_t L = r.lines.size();
+      std::vector<std::size_t> ks(L);
+      std::vector<T> la(L), lx(L);
+      for (std::size_t t = 0; t < L; ++t) {
+        ks[t] = r.along_u ? r.lines[t] * B + c : c * B + r.lines[t];
+        la[t] = polygon(nets[ks[t]], r.along_u ? 1 : 0);
+        lx[t] = polygon(nets[ks[t]], r.along_u ? 0 : 1);
+      }
+      // The counts of the bands for an outer count N (need0..2 need0): each band the least
+      // divisor of its outer neighbour's count, at most 4 times smaller, that its search allows;
+      // across, the searched count or enough for the shape. The N of fewest cells is taken.
+      const auto chain = [&](std::size_t N, std::vector<std::array<std::size_t, 2>>* out) {
+        T cells = 0;
+        std::size_t prev = N;
+        for (std::size_t t = 0; t < L; ++t) {
+          const std::size_t need = along[ks[t]];
+          std::size_t want = prev;
+          for (std::size_t d = 2; d <= 4; ++d)
+            if (prev % d == 0 && prev / d >= need) want = std::min(want, prev / d);
+          if (want < need) want = need;  // not nested (not met on the bands' searches)
+          std::size_t want_across = across[ks[t]];
+          if (la[t] > 0) want_across = std::max(want_across, static_cast<std::size_t>(std::min(T(1e6), std::ceil(lx[t] * T(want) / (3 * la[t])))));
+          cells += T(want) * T(want_across);
+          if (out != nullptr) out->push_back({want_across, want});
+          prev = want;
+        }
+        // The band on the edge: its count is the fan's at the point (the fan's angles there
+        // are the edge's total turn over it): an N that leaves it above twice its search's
+        // comes after every N that does not.
+        return std::pair<bool, T>{prev > 2 * along[ks[L - 1]], cells};
+      };
+      const std::size_t need0 = along[ks[0]];
+      std::size_t bestN = 0;
+      std::pair<bool, T> best{};
+      for (std::size_t N = need0; N <= 2 * need0; ++N) {
+        const std::pair<bool, T> cost = chain(N, nullptr);
+        if (bestN == 0 || cost < best) {
+          bestN = N;
+          best = cost;
+        }
+      }
+      std::vector<std::array<std::size_t, 2>> plan;
+      chain(bestN, &plan);
+      for (std::size_t t = 0; t < L; ++t) {
+        const std::size_t k = ks[t];
+        const std::size_t a = r.along_u ? plan[t][0] : plan[t][1], b = r.along_u ? plan[t][1] : plan[t][0];
+        if ((a != nu[k] || b != nv[k]) && T(2) * T(a) * T(b) <= max_triangles && verify(k, a, b)) {
+          total += 2 * (T(a) * T(b) - T(nu[k]) * T(nv[k]));
+          nu[k] = a;
+          nv[k] = b;
+        }
+      }
+    }
+  }
+  refuse_if_too_many();
   // Continuity across each interior break (the shared edge nets agree).
   const auto close = [&](const T* x, const T* y, std::size_t d, bool rational) {
     T s = 0;
@@ -822,7 +1065,7 @@ SurfaceMesh<T> tessellate(const SurfaceForm<T>& f, T tol) {
       const Net<T>&lo = nets[a * B + b], &hi = nets[(a + 1) * B + b];
       for (std::size_t j = 0; j < lo.cols; ++j)
         if (!close(lo.at(lo.rows - 1, j), hi.at(0, j), lo.d, f.rational)) {
-          throw InvalidArgument("surface", "is not continuous across u = " + format_number(sp.ubreaks[a + 1]) +
+          throw InvalidArgument("surface", "is not continuous across u = " + format_number(ub[a + 1]) +
                                                " (a knot of full multiplicity): a mesh without cracks cannot follow it");
         }
     }
@@ -831,7 +1074,7 @@ SurfaceMesh<T> tessellate(const SurfaceForm<T>& f, T tol) {
       const Net<T>&lo = nets[a * B + b], &hi = nets[a * B + b + 1];
       for (std::size_t i = 0; i < lo.rows; ++i)
         if (!close(lo.at(i, lo.cols - 1), hi.at(i, 0), lo.d, f.rational)) {
-          throw InvalidArgument("surface", "is not continuous across v = " + format_number(sp.vbreaks[b + 1]) +
+          throw InvalidArgument("surface", "is not continuous across v = " + format_number(vb[b + 1]) +
                                                " (a knot of full multiplicity): a mesh without cracks cannot follow it");
         }
     }
@@ -847,7 +1090,7 @@ SurfaceMesh<T> tessellate(const SurfaceForm<T>& f, T tol) {
   };
   const auto corner = [&](std::size_t a, std::size_t b) { return static_cast<std::uint32_t>(a * (B + 1) + b); };
   for (std::size_t a = 0; a <= A; ++a)
-    for (std::size_t b = 0; b <= B; ++b) new_node(sp.ubreaks[a], sp.vbreaks[b]);
+    for (std::size_t b = 0; b <= B; ++b) new_node(ub[a], vb[b]);
   struct Side {
     std::vector<Fraction> at;
     std::uint32_t first = 0;  ///< the node id of at[0] (the others follow)
@@ -860,14 +1103,14 @@ SurfaceMesh<T> tessellate(const SurfaceForm<T>& f, T tol) {
       Side& s = su[a * (B + 1) + b];
       s.at = tess::side_nodes(b < B ? nu[a * B + b] : nu[a * B + b - 1], b > 0 && b < B ? nu[a * B + b - 1] : 0);
       s.first = static_cast<std::uint32_t>(node_u.size());
-      for (const Fraction x : s.at) new_node(tess::at_fraction(sp.ubreaks[a], sp.ubreaks[a + 1], x), sp.vbreaks[b]);
+      for (const Fraction x : s.at) new_node(tess::at_fraction(ub[a], ub[a + 1], x), vb[b]);
     }
   for (std::size_t a = 0; a <= A; ++a)
     for (std::size_t b = 0; b < B; ++b) {
       Side& s = sv[a * B + b];
       s.at = tess::side_nodes(a < A ? nv[a * B + b] : nv[(a - 1) * B + b], a > 0 && a < A ? nv[(a - 1) * B + b] : 0);
       s.first = static_cast<std::uint32_t>(node_u.size());
-      for (const Fraction x : s.at) new_node(sp.ubreaks[a], tess::at_fraction(sp.vbreaks[b], sp.vbreaks[b + 1], x));
+      for (const Fraction x : s.at) new_node(ub[a], tess::at_fraction(vb[b], vb[b + 1], x));
     }
   std::vector<std::uint32_t> inner_first(A * B);
   for (std::size_t a = 0; a < A; ++a)
@@ -876,8 +1119,8 @@ SurfaceMesh<T> tessellate(const SurfaceForm<T>& f, T tol) {
       inner_first[k] = static_cast<std::uint32_t>(node_u.size());
       for (std::size_t I = 1; I < nu[k]; ++I)
         for (std::size_t J = 1; J < nv[k]; ++J)
-          new_node(tess::at_fraction(sp.ubreaks[a], sp.ubreaks[a + 1], tess::reduced(I, nu[k])),
-                   tess::at_fraction(sp.vbreaks[b], sp.vbreaks[b + 1], tess::reduced(J, nv[k])));
+          new_node(tess::at_fraction(ub[a], ub[a + 1], tess::reduced(I, nu[k])),
+                   tess::at_fraction(vb[b], vb[b + 1], tess::reduced(J, nv[k])));
     }
   // The node of patch (a, b) at grid index (I, J).
   const auto grid_node = [&](std::size_t a, std::size_t b, std::size_t I, std::size_t J) -> std::uint32_t {
@@ -896,22 +1139,8 @@ SurfaceMesh<T> tessellate(const SurfaceForm<T>& f, T tol) {
   };
   tess::Merge merge{std::vector<std::uint32_t>(node_u.size())};
   std::iota(merge.up.begin(), merge.up.end(), 0u);
-  // Degenerate patch edges: all control points of the edge within 1e-12 of the size; the
-  // side's nodes and its two corners become one.
-  const auto point_edge = [&](const Net<T>& n, bool along_v, std::size_t fixed) {
-    const std::size_t count_pts = along_v ? n.cols : n.rows;
-    const T* x0 = along_v ? n.at(fixed, 0) : n.at(0, fixed);
-    for (std::size_t k = 1; k < count_pts; ++k) {
-      const T* x = along_v ? n.at(fixed, k) : n.at(k, fixed);
-      T s = 0;
-      for (std::size_t c = 0; c < cd; ++c) {
-        const T e = f.rational ? x[c] / x[cd] - x0[c] / x0[cd] : x[c] - x0[c];
-        s += e * e;
-      }
-      if (!(std::sqrt(s) <= T(1e-12) * size)) return false;
-    }
-    return true;
-  };
+  // Degenerate patch edges (point_edge, above): the side's nodes and its two corners
+  // become one.
   const auto join_side = [&](const Side& s, std::uint32_t c0, std::uint32_t c1) {
     merge.join(c0, c1);
     for (std::size_t k = 0; k < s.at.size(); ++k) merge.join(c0, s.first + static_cast<std::uint32_t>(k));
@@ -934,7 +1163,7 @@ SurfaceMesh<T> tessellate(const SurfaceForm<T>& f, T tol) {
   SurfaceMesh<T> m;
   m.dim = cd;
   const bool normals = cd == 3;
-  const T umin = sp.ubreaks.front(), umax = sp.ubreaks.back(), vmin = sp.vbreaks.front(), vmax = sp.vbreaks.back();
+  const T umin = ub.front(), umax = ub.back(), vmin = vb.front(), vmax = vb.back();
   const auto add_vertex = [&](T u, T v) {
     const std::vector<T> d = partials(f, u, v, normals ? 2 : 0);
     m.vertices.insert(m.vertices.end(), d.begin(), d.begin() + static_cast<std::ptrdiff_t>(cd));
