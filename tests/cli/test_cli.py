@@ -18,6 +18,9 @@ import time
 import unittest
 
 BINARY = None  # set from argv in __main__
+# Seconds one program run may take, times CASTELJAU_TIMEOUT_SCALE (the sanitizer build at -O0
+# sets 5: tests/cli/CMakeLists.txt).
+TIMEOUT = 30 * float(os.environ.get("CASTELJAU_TIMEOUT_SCALE", "1"))
 
 # Tolerances. EXACT: dyadic inputs whose de Casteljau steps (halving, sums of small
 # integers) are exact in double. TIGHT: a few ulps of O(1) coordinates after a handful of
@@ -32,7 +35,7 @@ def run(command, request=None, args=(), text=None):
     data = text if text is not None else (json.dumps(request) if request is not None else "")
     if isinstance(data, str):
         data = data.encode()
-    p = subprocess.run(argv, input=data, stdout=subprocess.PIPE, stderr=subprocess.PIPE, timeout=30)
+    p = subprocess.run(argv, input=data, stdout=subprocess.PIPE, stderr=subprocess.PIPE, timeout=TIMEOUT)
     return p.returncode, p.stdout.decode(), p.stderr.decode()
 
 
@@ -61,9 +64,10 @@ class Session:
                                         stderr=self.errors)
         self.pending = b""
 
-    def ask(self, request, timeout=30):
+    def ask(self, request):
         """The response line to one request (a dict), or raises AssertionError with what
-        went wrong (the process ended, wrote to stderr, or took longer than timeout s)."""
+        went wrong (the process ended, wrote to stderr, or took longer than TIMEOUT s)."""
+        timeout = TIMEOUT
         self.process.stdin.write(json.dumps(request).encode() + b"\n")
         self.process.stdin.flush()
         deadline = time.monotonic() + timeout
