@@ -8,7 +8,7 @@
 //   from the arrays, io/arrays.hpp), evaluated on numpy arrays (values through the
 //   library's batch evaluation, below, derivatives and rational curves through the
 //   table of its pieces, PieceDerivatives; the GIL released), projected from the rows of
-//   an array by io::project, and the commands run on it (`run`);
+//   an array by io::project_rows, and the commands run on it (`run`);
 // - `Surface`: one io::AnySurface, evaluated at (u, v) arrays (points, and the eval
 //   command's fields through io::surface_partials), and its commands;
 // - `run(command, request)`: any command;
@@ -412,12 +412,16 @@ class Curve {
     shape.push_back(dim());
     py::array_t<double> result(shape);
     double* out = result.mutable_data();
-    if (k == 0 && !fast_built_) {
+    // Lagrange curves: their own barycentric formulas at any degree (the tables go through
+    // the Bézier form, which the library refuses above degree 15 and which is less
+    // accurate than the barycentric evaluation below it).
+    const bool direct = io::type_name(*curve_) == "lagrange";
+    if (k == 0 && !fast_built_ && !direct) {
       fast_ = batch_evaluator(*curve_);
       fast_built_ = true;
     }
     const BatchEvaluator* path = k == 0 ? fast_.get() : nullptr;
-    if (path == nullptr && k <= max_table_order) {
+    if (path == nullptr && k <= max_table_order && !direct) {
       // Derivatives, and points of the curves without a batch evaluation (rational ones,
       // degrees above the SpanTable's): the pieces' table of order k, built once.
       if (derivatives_.size() <= static_cast<std::size_t>(k)) derivatives_.resize(static_cast<std::size_t>(k) + 1);
@@ -453,7 +457,7 @@ class Curve {
     return result;
   }
 
-  /// io::project at each row of points (n, d): (t (n,), point (n, d), distance (n,)).
+  /// io::project_rows at each row of points (n, d): (t (n,), point (n, d), distance (n,)).
   /// Errors name "points[i][k]"; rows run without the GIL.
   [[nodiscard]] py::tuple project_rows(const Doubles& points, bool farthest) const {
     const int d = dim();
@@ -472,16 +476,8 @@ class Curve {
     double *to = t.mutable_data(), *po = pts.mutable_data(), *dout = dist.mutable_data();
     {
       py::gil_scoped_release release;
-      for (std::size_t i = 0; i < n; ++i) {
-        const io::AnyProjection r = io::project(*curve_, std::span<const double>(x + i * m, m), farthest);
-        std::visit(
-            [&](const auto& p) {
-              to[i] = p.t;
-              for (std::size_t k = 0; k < m; ++k) po[i * m + k] = p.point[static_cast<int>(k)];
-              dout[i] = p.distance;
-            },
-            r);
-      }
+      io::project_rows(*curve_, std::span<const double>(x, n * m), farthest, std::span<double>(to, n),
+                       std::span<double>(po, n * m), std::span<double>(dout, n));
     }
     return py::make_tuple(t, pts, dist);
   }

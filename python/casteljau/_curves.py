@@ -11,6 +11,7 @@ top (evaluation, ``derivative``, ``curvature``, ``pieces``, ``project`` over man
 
 from __future__ import annotations
 
+import math
 from typing import Any
 
 import numpy as np
@@ -181,9 +182,10 @@ class Curve:
         return self._c.evaluate(np.asarray(t, dtype=np.float64), int(nu))
 
     def derivative(self, k: int = 1) -> "Curve":
-        """The order-k derivative curve (the hodograph) as a Path of Bezier segments with the
-        curve's parametrisation: c.derivative(k)(t) == c(t, nu=k). Polynomial curves only
-        (the derivative of a rational curve is not a curve of the registry's types)."""
+        """The order-k derivative curve as a Path with the curve's parametrisation:
+        c.derivative(k)(t) == c(t, nu=k) (to rounding). A polynomial piece's derivative is
+        its hodograph (a Bezier segment); a rational piece's R = N / W is the rational
+        segment (N' W - N W') / W^2, of twice the degree (each order doubles it again)."""
         if k < 0:
             raise Error(f"k: must be >= 0, got {k}")
         c: Curve = self
@@ -229,15 +231,46 @@ def _hodograph(c: Curve) -> Curve:
     breaks = j["breaks"]
     segs = []
     for i, s in enumerate(j["segments"]):
-        if s["type"] != "bezier":
-            raise Error(f"curve: derivative() needs a polynomial curve, this one has a {s['type']} piece "
-                        "(evaluate its derivatives with c(t, nu=k))")
         P = np.array(s["points"], dtype=np.float64)
         n = len(P) - 1
         h = breaks[i + 1] - breaks[i]
+        if s["type"] == "rational_bezier":
+            segs.append(_rational_derivative(P, np.array(s["weights"], dtype=np.float64), h))
+            continue
         D = n * np.diff(P, axis=0) / h if n > 0 else np.zeros_like(P)
         segs.append({"type": "bezier", "points": D})
     return Curve.from_json({"type": "path", "segments": segs, "breaks": breaks})
+
+
+def _bernstein_product(f: np.ndarray, g: np.ndarray) -> np.ndarray:
+    """The Bernstein coefficients of f g (degrees m and n, rows of coefficients, columns of
+    coordinates): (f g)_k = sum over i + j = k of C(m, i) C(n, j) / C(m + n, k) f_i g_j."""
+    m, n = len(f) - 1, len(g) - 1
+    out = np.zeros((m + n + 1,) + np.broadcast_shapes(f.shape[1:], g.shape[1:]))
+    for i in range(m + 1):
+        for j in range(n + 1):
+            out[i + j] += (math.comb(m, i) * math.comb(n, j) / math.comb(m + n, i + j)) * f[i] * g[j]
+    return out
+
+
+def _rational_derivative(P: np.ndarray, w: np.ndarray, h: float) -> dict:
+    """The derivative, over a break interval of width h, of the rational Bezier piece with
+    points P (n + 1, d) and weights w, as a rational_bezier segment of degree 2n: with
+    N = sum w_i P_i B_i and W = sum w_i B_i, R' = (N' W - N W') / (h W^2), the numerator
+    (degree 2n - 1) raised once to 2n, the weights the coefficients of W^2 (positive where
+    w is) and the points the numerator's homogeneous coefficients over them."""
+    n = len(P) - 1
+    w = w / np.max(np.abs(w))  # the same curve; keeps W^2 in range
+    N = P * w[:, None]
+    if n == 0:
+        return {"type": "bezier", "points": np.zeros_like(P)}
+    dN, dW = n * np.diff(N, axis=0), n * np.diff(w)[:, None]
+    A = _bernstein_product(dN, w[:, None]) - _bernstein_product(N, dW)  # degree 2n - 1
+    m = len(A) - 1
+    k = np.arange(m + 2)[:, None] / (m + 1)
+    A = k * np.vstack([np.zeros_like(A[:1]), A]) + (1 - k) * np.vstack([A, np.zeros_like(A[:1])])  # degree 2n
+    W2 = _bernstein_product(w[:, None], w[:, None])[:, 0]
+    return {"type": "rational_bezier", "points": A / (W2[:, None] * h), "weights": W2}
 
 
 # ---------------------------------------------------------------------------------------

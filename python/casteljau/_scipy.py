@@ -40,11 +40,18 @@ def _renamed(e: Error, names: dict[str, str], drop_column: bool) -> Error:
     return e
 
 
+def _axis(y: Any, axis: Any) -> int:
+    """scipy's axis, normalised to [0, ndim) (checked by _data)."""
+    return int(axis) % max(np.ndim(y), 1)
+
+
 def _data(y: Any, axis: int, name: str) -> tuple[np.ndarray, tuple]:
     """y as (n, m) points along axis, and the trailing shape of one value."""
     y = np.asarray(y, dtype=np.float64)
     if y.ndim == 0:
         raise Error(f"{name}: must be an array of at least one dimension, got a scalar")
+    if isinstance(axis, bool) or not isinstance(axis, (int, np.integer)) or not -y.ndim <= axis < y.ndim:
+        raise Error(f"axis: must be an integer in [{-y.ndim}, {y.ndim - 1}] for {name} of shape {y.shape}, got {axis!r}")
     y = np.moveaxis(y, axis, 0)
     tail = y.shape[1:]
     m = math.prod(tail)
@@ -60,13 +67,26 @@ class PPoly:
     antiderivative() return, in place of scipy's PPoly or BSpline): callable with scipy's
     shapes, with derivative, antiderivative, integrate and roots."""
 
-    def __init__(self, curve: Curve, tail: tuple, extrapolate: Any = True) -> None:
+    def __init__(self, curve: Curve, tail: tuple, extrapolate: Any = True, axis: int = 0,
+                 ends: tuple | None = None) -> None:
         self._curve = curve
         self._tail = tail
         self.extrapolate = extrapolate
+        self.axis = axis  # scipy's: the interpolation axis of y, where x's axes go in the answer
         lo, hi = curve.domain
         self._lo, self._hi = lo, hi
         self._clip_integral = False  # True under a BSpline (scipy's BSpline.integrate clips)
+        # How scipy continues the function outside [lo, hi] (see _outside): ("power",
+        # (x0, c0), (x1, c1)) the end pieces' power coefficients (highest first, shape
+        # (k + 1, m)) about their left breaks, or ("bspline", t, c, k); None: the curve's own.
+        # A callable gives them at the first call outside (a spline's slopes come from the
+        # eval command, which writes the curve's JSON).
+        self._ends = ends
+
+    def _ends_now(self) -> tuple | None:
+        if callable(self._ends):
+            self._ends = self._ends()
+        return self._ends
 
     @property
     def curve(self) -> Curve:
@@ -83,11 +103,27 @@ class PPoly:
             out = self._curve(xe, nu=nu)
         except Error as e:
             raise _renamed(e, {"t": "x"}, False) from None
+        if ext is True and self._ends is not None and x.size:
+            # Outside the domain scipy's own continuation of the end pieces (the curve's
+            # extrapolation is exact too, but far out the two round differently).
+            xf = x.reshape(-1)
+            if x.size == 1:
+                beyond = not self._lo <= float(xf[0]) <= self._hi  # the per-call path: no array masks
+            else:
+                beyond = bool(xf.min() < self._lo or xf.max() > self._hi)
+            if beyond and self._ends_now() is not None:
+                flat = out.reshape(-1, out.shape[-1])
+                outside = (xf < self._lo) | (xf > self._hi)
+                flat[outside] = _outside(self._ends_now(), xf[outside], self._lo, int(nu))
         out = out.reshape(x.shape + self._tail)
         if ext is False or ext is None:
             outside = (x < self._lo) | (x > self._hi)
             if outside.any():
                 out[outside] = np.nan
+        if self.axis and out.ndim > x.ndim:
+            # scipy's order: y's axes before the interpolation axis, then x's, then the rest.
+            ax = list(range(out.ndim))
+            out = out.transpose(ax[x.ndim:x.ndim + self.axis] + ax[:x.ndim] + ax[x.ndim + self.axis:])
         return out
 
     @property
@@ -111,13 +147,26 @@ class PPoly:
         return out.reshape((k + 1, len(pieces)) + self._tail)
 
     def derivative(self, nu: int = 1) -> "PPoly":
-        return PPoly(self._curve.derivative(nu), self._tail, self.extrapolate)
+        ends = None
+        own = self._ends
+        if own is not None and nu >= 0:
+            # scipy's PPoly.derivative: the coefficients of the powers >= nu times the
+            # falling factorials.
+            ends = _LazyEnds("derivative", own, nu)
+        return PPoly(self._curve.derivative(nu), self._tail, self.extrapolate, self.axis, ends)
 
     def antiderivative(self, nu: int = 1) -> "PPoly":
         c = self._curve
         for _ in range(nu):
             c = _integral(c)
-        return PPoly(c, self._tail, self.extrapolate)
+        ends = None
+        own = self._ends
+        if own is not None and nu >= 1:
+            # scipy's PPoly.antiderivative: the coefficients over the rising factorials, the
+            # powers below nu 0 on the first piece and, on the last, the Taylor
+            # coefficients of the antiderivative at its left break (continuity).
+            ends = _LazyEnds("antiderivative", own, nu, c)
+        return PPoly(c, self._tail, self.extrapolate, self.axis, ends)
 
     def integrate(self, a: float, b: float, extrapolate: Any = None) -> np.ndarray:
         ext = self.extrapolate if extrapolate is None else extrapolate
@@ -157,6 +206,126 @@ class PPoly:
         for v, stretch in sorted([(v, False) for v in roots] + [(a, True) for a in starts]):
             out += [v, math.nan] if stretch else [v]
         return np.array(out, dtype=np.float64)
+
+
+class _LazyEnds:
+    """The ends of a PPoly (see PPoly._ends) made at the first call outside the domain,
+    picklable: "hermite" from a C^1 cubic's slopes (_hermite_ends), "derivative" and
+    "antiderivative" from another PPoly's ends (scipy's PPoly.derivative and
+    antiderivative on the power coefficients)."""
+
+    def __init__(self, kind: str, *args: Any) -> None:
+        self.kind, self.args = kind, args
+
+    def __call__(self) -> tuple | None:
+        if self.kind == "hermite":
+            return _hermite_ends(*self.args)
+        own, nu = self.args[:2]
+        e = own() if callable(own) else own
+        if e is None or e[0] != "power":
+            return None
+        if self.kind == "derivative":
+            return ("power",) + tuple((x0, _power_derivative(c, nu)) for x0, c in e[1:])
+        curve = self.args[2]
+        (x0, c0), (x1, c1) = e[1:]
+        low = np.array([curve(x1, nu=j).reshape(-1) / math.factorial(j) for j in range(nu - 1, -1, -1)])
+        return ("power", (x0, np.vstack([_power_integral(c0, nu), np.zeros((nu, c0.shape[1]))])),
+                (x1, np.vstack([_power_integral(c1, nu), low])))
+
+
+def _power_derivative(c: np.ndarray, nu: int) -> np.ndarray:
+    """scipy's PPoly.derivative on one piece's power coefficients (highest first)."""
+    k = c.shape[0] - 1
+    if nu > k:
+        return np.zeros((1, c.shape[1]))
+    out = c[: k + 1 - nu].copy()
+    for i in range(len(out)):
+        out[i] *= float(math.prod(range(k - i - nu + 1, k - i + 1)))
+    return out
+
+
+def _power_integral(c: np.ndarray, nu: int) -> np.ndarray:
+    """scipy's PPoly.antiderivative on one piece's power coefficients (highest first),
+    without the nu new lowest ones."""
+    k = c.shape[0] - 1
+    out = c.copy()
+    for i in range(len(out)):
+        out[i] /= float(math.prod(range(k - i + 1, k - i + nu + 1)))
+    return out
+
+
+def _outside(ends: tuple, x: np.ndarray, lo: float, nu: int) -> np.ndarray:
+    """The values (order nu) at x, outside the domain [lo, ...], as scipy continues the end
+    pieces: a PPoly's power form about the piece's left break, summed from the lowest
+    power up with the powers of s = x - x0 accumulated by products (scipy's
+    evaluate_poly1), or a BSpline's basis functions of the end span by the Cox-de Boor
+    recursion (derivatives by differentiating its last nu steps), times the coefficients."""
+    left = x < lo
+    if ends[0] == "power":
+        (x0, c0), (x1, c1) = ends[1:]
+        out = np.empty((len(x), c0.shape[1]))
+        for sel, xa, c in ((left, x0, c0), (~left, x1, c1)):
+            if sel.any():
+                s = (x[sel] - xa)[:, None]
+                k = c.shape[0] - 1
+                res = np.zeros((len(s), c.shape[1]))
+                z = np.ones_like(s)
+                for p in range(nu, k + 1):
+                    res = res + c[k - p] * z * float(math.prod(range(p - nu + 1, p + 1)))
+                    if p < k:
+                        z = z * s
+                out[sel] = res
+        return out
+    _, t, c, k = ends
+    n = len(t) - k - 1
+    out = np.zeros((len(x), c.shape[1]))
+    if nu > k:
+        return out
+    for sel, ell in ((left, k), (~left, n - 1)):
+        if not sel.any():
+            continue
+        xs = x[sel]
+        h = [np.ones_like(xs)] + [np.zeros_like(xs) for _ in range(k)]
+        for j in range(1, k + 1):
+            hh = h[:j]
+            h = [np.zeros_like(xs)] + h[1:]
+            for m in range(1, j + 1):
+                xb, xa = t[ell + m], t[ell + m - j]
+                if xb == xa:
+                    h[m] = np.zeros_like(xs)
+                    continue
+                if j <= k - nu:
+                    w = hh[m - 1] / (xb - xa)
+                    h[m - 1] = h[m - 1] + w * (xb - xs)
+                    h[m] = w * (xs - xa)
+                else:
+                    w = j * hh[m - 1] / (xb - xa)
+                    h[m - 1] = h[m - 1] - w
+                    h[m] = w
+        res = np.zeros((len(xs), c.shape[1]))
+        for a in range(k + 1):
+            res = res + c[ell - k + a] * h[a][:, None]
+        out[sel] = res
+    return out
+
+
+def _hermite_ends(curve: Curve, x: np.ndarray, y: np.ndarray) -> tuple:
+    """scipy's CubicHermiteSpline coefficients of the first and last pieces of a C^1
+    piecewise cubic (cubic_spline or hermite curve) through y (n, m) at x: from the values
+    and the first derivatives at their ends (the eval command's derivatives, the curve's
+    own slopes at the params), as scipy computes them."""
+    n = len(x)
+    idx = [0, 1, n - 2, n - 1]
+    d = np.asarray(_casteljau.run("eval", {"curve": curve, "t": x[idx], "derivatives": 1})["derivatives"],
+                   dtype=np.float64).reshape(4, -1)
+
+    def coef(i: int, d0: np.ndarray, d1: np.ndarray) -> tuple:
+        dx = x[i + 1] - x[i]
+        slope = (y[i + 1] - y[i]) / dx
+        t = (d0 + d1 - 2 * slope) / dx
+        return float(x[i]), np.array([t / dx, (slope - d0) / dx - t, d0, y[i]])
+
+    return ("power", coef(0, d[0], d[1]), coef(n - 2, d[2], d[3]))
 
 
 def _bezier_pieces(c: Curve) -> tuple[list, list]:
@@ -346,9 +515,10 @@ def _cubic_init(self: Any, *args: Any, **kw: Any) -> None:
     except Error as e:
         raise _renamed(e, {"params": "x", "points": "y", "boundary": "bc_type", "start_derivative": "bc_type",
                            "end_derivative": "bc_type"}, tail == ()) from None
-    self._sp = PPoly(Curve._wrap(self._c), tail, extrapolate)
+    curve = Curve._wrap(self._c)
+    self.axis = _axis(a["y"], a.get("axis", 0))
+    self._sp = PPoly(curve, tail, extrapolate, self.axis, _LazyEnds("hermite", curve, x, pts))
     self.x = np.asarray(a["x"], dtype=np.float64)
-    self.axis = a.get("axis", 0)
 
 
 def _one_not_a_knot(x: np.ndarray, pts: np.ndarray, bc: Any) -> tuple:
@@ -429,10 +599,11 @@ def _bspline_init(self: Any, *args: Any, **kw: Any) -> None:
     except Error as e:
         raise _renamed(e, {"knots": "t", "points": "c", "degree": "k"}, tail == ()) from None
     ext = a.get("extrapolate", True)
-    self._sp = PPoly(Curve._wrap(self._c), tail, ext)
+    self.axis = _axis(a["c"], a.get("axis", 0))
+    self._sp = PPoly(Curve._wrap(self._c), tail, ext, self.axis, ("bspline", t, pts, int(k)))
     self._sp._clip_integral = True
-    self.t, self.c, self.k = t, np.asarray(a["c"], dtype=np.float64), int(k)
-    self.axis = a.get("axis", 0)
+    # scipy's attributes: c with the interpolation axis first.
+    self.t, self.c, self.k = t, np.moveaxis(np.asarray(a["c"], dtype=np.float64), self.axis, 0), int(k)
     self.extrapolate = ext
 
 
@@ -449,14 +620,14 @@ def _bspline_derivative(self: Any, nu: int = 1) -> Any:
         raise Error(f"nu: the order of the derivative must be <= k = {self.k}, got {nu}")
     t, k = self.t, self.k
     n = len(t) - k - 1
-    c = np.moveaxis(np.asarray(self.c, dtype=np.float64), self.axis, 0)[:n]
+    c = self.c[:n]
     for _ in range(nu):
         dt = t[k + 1 : k + len(c)] - t[1 : len(c)]
         dt = dt.reshape((-1,) + (1,) * (c.ndim - 1))
         safe = np.where(dt > 0, dt, 1.0)
         c = np.where(dt > 0, k * (c[1:] - c[:-1]) / safe, 0.0)
         t, k = t[1:-1], k - 1
-    return BSpline(t, c, k, extrapolate=self.extrapolate)
+    return BSpline(t, np.moveaxis(c, 0, self.axis), k, extrapolate=self.extrapolate, axis=self.axis)
 
 
 def _bspline_antiderivative(self: Any, nu: int = 1) -> Any:
@@ -472,7 +643,7 @@ def _bspline_antiderivative(self: Any, nu: int = 1) -> Any:
         raise Error(f"nu: must be an integer >= 0, got {nu!r}")
     t, k = self.t, self.k
     n = len(t) - k - 1
-    c = np.moveaxis(np.asarray(self.c, dtype=np.float64), self.axis, 0)[:n]
+    c = self.c[:n]
     for _ in range(nu):
         dt = (t[k + 1 : k + 1 + len(c)] - t[: len(c)]).reshape((-1,) + (1,) * (c.ndim - 1))
         c = np.concatenate([np.zeros((1,) + c.shape[1:]), np.cumsum(c * dt, axis=0) / (k + 1)])
@@ -485,7 +656,8 @@ def _bspline_antiderivative(self: Any, nu: int = 1) -> Any:
         t, c = t[:-1], c[:-1]
     while len(t) > k + 2 and np.count_nonzero(t == t[0]) > k + 1:
         t, c = t[1:], c[1:]
-    return BSpline(t, c[: len(t) - k - 1], k, extrapolate=False if self.extrapolate == "periodic" else self.extrapolate)
+    return BSpline(t, np.moveaxis(c[: len(t) - k - 1], 0, self.axis), k,
+                   extrapolate=False if self.extrapolate == "periodic" else self.extrapolate, axis=self.axis)
 
 
 BSpline = _subclass("bspline", _ScipyCurve, _bspline_init, """A B-spline.
@@ -579,14 +751,15 @@ def make_interp_spline(x: Any, y: Any, k: int = 3, t: Any = None, bc_type: Any =
             raise Error("x: needs at least 2 points")
         last = x[-1] + (x[-1] - x[-2]) if x[-1] > x[-2] else x[-1] + 1.0
         y0 = np.asarray(y, dtype=np.float64)
-        b = BSpline(np.r_[x, last], np.moveaxis(y0, axis, 0), 0)
+        b = BSpline(np.r_[x, last], y0, 0, axis=axis)
         b._sp._hi = float(x[-1])
         b.t = np.r_[x, x[-1]]
+        b._sp._ends = ("bspline", b.t, pts, 0)
         return b
     if periodic and k > 1:
         if t is not None:
             raise Error("t: bc_type='periodic' makes its own knots (scipy's rule)")
-        return _periodic_interp_spline(x, pts, tail, k)
+        return _periodic_interp_spline(x, pts, tail, k, _axis(y, axis))
     if t is None:
         if deriv_l or deriv_r:
             # scipy's knots with end derivatives: x with k more copies of each end.
@@ -629,10 +802,11 @@ def make_interp_spline(x: Any, y: Any, k: int = 3, t: Any = None, bc_type: Any =
         raise Error(f"t: {len(t)} knots give {nt} basis functions for {len(x)} points and "
                     f"{len(deriv_l) + len(deriv_r)} end conditions")
     c = np.linalg.solve(A, np.array(rhs, dtype=np.float64).reshape(nt, -1))
-    return BSpline(t, c.reshape((nt,) + tail), int(k), axis=0)
+    ax = _axis(y, axis)
+    return BSpline(t, np.moveaxis(c.reshape((nt,) + tail), 0, ax), int(k), axis=ax)
 
 
-def _periodic_interp_spline(x: np.ndarray, pts: np.ndarray, tail: tuple, k: int) -> Any:
+def _periodic_interp_spline(x: np.ndarray, pts: np.ndarray, tail: tuple, k: int, axis: int = 0) -> Any:
     """make_interp_spline(x, y, k, bc_type='periodic'), k >= 2: scipy's knots on a circle
     (the sites x, for even k the interior ones moved to the midpoints of their left
     intervals, and k more at each end continuing the intervals of the other end), and the
@@ -666,18 +840,19 @@ def _periodic_interp_spline(x: np.ndarray, pts: np.ndarray, tail: tuple, k: int)
     for j in range(nt):
         A[:, j % (n - 1)] += B[:, j]
     c = np.linalg.solve(A, pts[:-1])[np.arange(nt) % (n - 1)]
-    return BSpline(t, c.reshape((nt,) + tail), k, extrapolate="periodic")
+    return BSpline(t, np.moveaxis(c.reshape((nt,) + tail), 0, axis), k, extrapolate="periodic", axis=axis)
 
 
 def _hermite_interpolator(rule: str, default_extrapolate: bool, name: str) -> type:
     def __init__(self: Any, x: Any, y: Any, axis: int = 0, extrapolate: Any = None) -> None:
         pts, tail = _data(y, axis, "y")
+        xa = np.asarray(x, dtype=np.float64)
         try:
-            curve = _CLASSES["hermite"](params=np.asarray(x, dtype=np.float64), points=pts, tangent_rule=rule)
+            curve = _CLASSES["hermite"](params=xa, points=pts, tangent_rule=rule)
         except Error as e:
             raise _renamed(e, {"params": "x", "points": "y"}, tail == ()) from None
-        PPoly.__init__(self, curve, tail, default_extrapolate if extrapolate is None else extrapolate)
-        self.axis = axis
+        PPoly.__init__(self, curve, tail, default_extrapolate if extrapolate is None else extrapolate, _axis(y, axis),
+                       _LazyEnds("hermite", curve, xa, pts))
 
     return type(name, (PPoly,), {"__init__": __init__, "__module__": "casteljau",
                                  "__doc__": f"scipy's {name}: the library's hermite curve with tangent_rule {rule!r}."})
@@ -688,8 +863,17 @@ Akima1DInterpolator = _hermite_interpolator("akima", False, "Akima1DInterpolator
 
 
 class BarycentricInterpolator(PPoly):
-    """scipy's BarycentricInterpolator(xi, yi, axis=0): the library's lagrange curve (the
-    polynomial through the points; at most 16 points)."""
+    """scipy's BarycentricInterpolator(xi, yi, axis=0): the library's lagrange curve, the
+    polynomial through the points at any number of them, evaluated by the second
+    barycentric formula with weights computed once (as scipy's; stable on well-spread
+    nodes such as Chebyshev points, where the equispaced interpolant itself is not).
+
+    >>> import numpy as np, casteljau
+    >>> x = np.cos(np.linspace(0, np.pi, 40))  # 40 Chebyshev points
+    >>> p = casteljau.BarycentricInterpolator(x, np.exp(x))
+    >>> bool(abs(p(0.3) - np.exp(0.3)) < 1e-13)
+    True
+    """
 
     def __init__(self, xi: Any, yi: Any = None, axis: int = 0) -> None:
         if yi is None:
@@ -699,7 +883,7 @@ class BarycentricInterpolator(PPoly):
             curve = _CLASSES["lagrange"](params=np.asarray(xi, dtype=np.float64), points=pts)
         except Error as e:
             raise _renamed(e, {"params": "xi", "points": "yi"}, tail == ()) from None
-        super().__init__(curve, tail, True)
+        super().__init__(curve, tail, True, _axis(yi, axis))
         self.xi = np.asarray(xi, dtype=np.float64)
 
     def __call__(self, x: Any) -> np.ndarray:  # type: ignore[override]

@@ -225,39 +225,105 @@ def test_errors_carry_the_command_line_message():
         c.derivative(-1)
 
 
+def _overlapping_calls(calls, tries=8):
+    """Runs each call in its own thread and returns (their results, whether every call was
+    still running when the main thread next ran Python). With a switch interval of an
+    hour no thread gives up the GIL on a timer: the main thread, blocked until the last
+    thread has started its call, gets the GIL back only when a thread releases it. The
+    threads' only release point between their start and their `done` flag is the GIL
+    release inside the compiled call, so when the main thread runs, each thread has started
+    its call, has released the GIL in it, and has not finished it (its flag is still down):
+    the calls overlap in time. Without the release the main thread would run only after
+    the threads' flags were up, so an overlap is never seen then. With it, a thread whose
+    call ends before the main thread is scheduled again (a loaded machine) can hide it:
+    the experiment is repeated (up to `tries` times) until seen. No clock is read."""
+    import sys
+
+    results = [None] * len(calls)
+    started, done = [], []
+
+    def work(i):
+        started[i].set()
+        results[i] = calls[i]()
+        done[i] = True
+
+    old = sys.getswitchinterval()
+    for _ in range(tries):
+        started = [threading.Event() for _ in calls]
+        done = [False] * len(calls)
+        sys.setswitchinterval(3600.0)
+        try:
+            threads = [threading.Thread(target=work, args=(i,)) for i in range(len(calls))]
+            for th in threads:
+                th.start()
+            for e in started:
+                e.wait()
+            overlapped = not any(done)  # the main thread's first Python after the last start
+        finally:
+            sys.setswitchinterval(old)
+        for th in threads:
+            th.join()
+        if overlapped:
+            break
+    return results, overlapped
+
+
 def test_two_threads_evaluate_at_once():
     c = casteljau.BSpline(degree=3, knots=np.r_[[0] * 3, np.linspace(0, 1, 50), [1] * 3],
                           points=np.random.default_rng(1).random((52, 3)))
-    t = np.random.default_rng(2).random(50_000)
+    t = np.random.default_rng(2).random(200_000)
     expected = c(t)
-    results = [None, None]
-
-    def work(i):
-        results[i] = c(t)
-
-    threads = [threading.Thread(target=work, args=(i,)) for i in range(2)]
-    for th in threads:
-        th.start()
-    for th in threads:
-        th.join()
+    results, overlapped = _overlapping_calls([lambda: c(t), lambda: c(t)])
+    assert overlapped  # both evaluations were in the library at once (the GIL released)
     for r in results:
         np.testing.assert_array_equal(r, expected)
     # Derivatives of two orders at once, on a fresh curve: each thread builds its order's
     # table (with the GIL) while the other may be evaluating.
     n = casteljau.Nurbs(degree=3, knots=c.knots, points=c.points, weights=np.linspace(1, 2, 52))
     want = [casteljau.Curve.from_json(n.to_json())(t, nu=k) for k in (1, 2)]
-    got = [None, None]
-
-    def derivative(i):
-        got[i] = n(t, nu=i + 1)
-
-    threads = [threading.Thread(target=derivative, args=(i,)) for i in range(2)]
-    for th in threads:
-        th.start()
-    for th in threads:
-        th.join()
+    got, overlapped = _overlapping_calls([lambda: n(t, nu=1), lambda: n(t, nu=2)])
+    assert overlapped
     for g, w in zip(got, want):
         np.testing.assert_array_equal(g, w)
+    # Projections of many points release it too.
+    pts = np.random.default_rng(3).random((400, 3))
+    (p1, p2), overlapped = _overlapping_calls([lambda: c.project(pts), lambda: c.project(pts[::-1])])
+    assert overlapped
+    np.testing.assert_array_equal(p1.t, p2.t[::-1])
+
+
+def test_the_overlap_check_sees_a_call_that_holds_the_gil():
+    # The check itself: a call that never releases the GIL (pure Python) is seen finished.
+    _, overlapped = _overlapping_calls([lambda: sum(range(100_000)), lambda: sum(range(100_000))])
+    assert not overlapped
+
+
+def test_derivative_of_rational_curves():
+    # The quarter circle with weights 1, 1, 2 is ((1 - t^2), 2t) / (1 + t^2) (closed forms
+    # of its derivatives below); derivative(k) is a curve (a path of rational pieces).
+    q = casteljau.RationalBezier([[1, 0], [1, 1], [0, 1]], [1, 1, 2])
+    t = np.linspace(-0.5, 1.5, 41)  # outside the domain too
+    s = 1 + t * t
+    d1 = np.stack([-4 * t / s**2, 2 * (1 - t * t) / s**2], axis=-1)
+    d2 = np.stack([(12 * t * t - 4) / s**3, 4 * t * (t * t - 3) / s**3], axis=-1)
+    r1, r2 = q.derivative(), q.derivative(2)
+    assert isinstance(r1, casteljau.Curve) and r1.domain == q.domain
+    np.testing.assert_allclose(r1(t), d1, rtol=0, atol=1e-14)
+    np.testing.assert_allclose(r2(t), d2, rtol=0, atol=5e-14)
+    # A NURBS of several spans (the registry's circle): C . C' = 0 and C . C'' + |C'|^2 = 0
+    # about its centre, and the derivative curves agree with c(t, nu=k).
+    circle = casteljau.Curve.from_json({"type": "circle", "center": [0, 0], "radius": 2})
+    lo, hi = circle.domain
+    u = np.linspace(lo, hi, 57)
+    C, D1, D2 = circle(u), circle.derivative()(u), circle.derivative(2)(u)
+    scale = np.max(np.abs(D1)) ** 2
+    np.testing.assert_allclose(np.sum(C * D1, axis=-1), 0, atol=1e-13 * scale)
+    np.testing.assert_allclose(np.sum(C * D2, axis=-1) + np.sum(D1 * D1, axis=-1), 0, atol=1e-13 * scale)
+    np.testing.assert_allclose(D1, circle(u, nu=1), rtol=0, atol=1e-13 * np.max(np.abs(D1)))
+    np.testing.assert_allclose(D2, circle(u, nu=2), rtol=0, atol=1e-12 * np.max(np.abs(D2)))
+    # The weights' scale does not matter (extreme weights stay in range).
+    big = casteljau.RationalBezier([[1, 0], [1, 1], [0, 1]], [1e150, 1e150, 2e150])
+    np.testing.assert_allclose(big.derivative()(t), d1, rtol=0, atol=1e-14)
 
 
 def test_batch_evaluation_matches_point_by_point():
@@ -397,3 +463,28 @@ def test_rational_derivatives_on_the_circle():
     # Orders above the tables' (16) go point by point through the library.
     np.testing.assert_allclose(c(t[:3], nu=17), casteljau.run("eval", curve=c, t=t[:3], derivatives=17).derivatives[16],
                                rtol=1e-9)
+
+
+def test_project_on_a_curve_of_many_pieces_is_global():
+    # The projection prunes pieces by their control boxes (algo/project.hpp): on a curve of
+    # 1000 wiggling pieces every answer is still the global extremum, checked against a
+    # dense sampling (no sample nearer than the nearest point, none farther than the
+    # farthest) and the answer's point on the curve at its parameter.
+    rng = np.random.default_rng(13)
+    n = 1000
+    c = casteljau.BSpline(degree=3, knots=np.r_[[0] * 3, np.linspace(0, 1, n + 1), [1] * 3], points=rng.random((n + 3, 2)))
+    q = np.r_[rng.random((12, 2)), [[0.5, 0.5], [3.0, -2.0]]]
+    samples = c(np.linspace(0, 1, 200_001))
+    dist = np.sqrt(((q[:, None, :] - samples[None, :, :]) ** 2).sum(axis=-1))
+    for farthest in (False, True):
+        r = c.project(q, farthest=farthest)
+        np.testing.assert_allclose(r.point, c(r.t), rtol=0, atol=1e-14)
+        np.testing.assert_allclose(r.distance, np.linalg.norm(r.point - q, axis=1), rtol=1e-13, atol=1e-15)
+        if farthest:
+            assert np.all(r.distance >= dist.max(axis=1) - 1e-14)
+        else:
+            assert np.all(r.distance <= dist.min(axis=1) + 1e-14)
+            assert np.all(r.distance >= dist.min(axis=1) - 1e-3)  # the sampling's own resolution
+        for i in (0, 12):
+            one = c.project(q[i], farthest=farthest)  # the one-point path (the project command)
+            assert one.t == r.t[i] and one.distance == r.distance[i]

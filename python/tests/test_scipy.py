@@ -391,3 +391,113 @@ def test_a_root_at_the_end_is_reported_once():
             r = getattr(casteljau, cls)(x, ys).roots()
             assert len(r) == len(np.unique(np.round(r, 9))), r
             close(r, np.sort(getattr(si, cls)(x, ys).roots()), rel=1e-10)
+
+
+# Session 13: extrapolation far outside the domain, scipy's axis, BarycentricInterpolator
+# at any number of nodes.
+
+FAR_X = np.sort(RNG.random(30)) * 10 + 1000  # an offset domain: the pieces' local powers matter
+FAR_Y = np.cos(FAR_X) + np.linspace(0, 3, 30)
+FAR_L = FAR_X[-1] - FAR_X[0]
+FAR_XS = np.r_[FAR_X[0] - FAR_L * np.array([10, 3, 1, 0.1, 1e-3]), FAR_X[-1] + FAR_L * np.array([1e-3, 0.1, 1, 3, 10])]
+
+
+def far_close(ours, theirs, nus=range(4), rel=1e-12):
+    """ours and scipy's object agree outside the domain, pointwise relative (the values
+    there grow like |x|^k: the size of the data is no scale for them)."""
+    for nu in nus:
+        a, b = ours(FAR_XS, nu), theirs(FAR_XS, nu)
+        np.testing.assert_allclose(a, b, rtol=rel, atol=0, err_msg=f"nu={nu}")
+
+
+@pytest.mark.parametrize("bc", ["natural", "clamped", ((1, 0.5), (2, -1.0)), "not-a-knot"])
+def test_cubic_spline_extrapolates_as_scipy(bc):
+    # scipy continues the end pieces' power forms about their left breaks; ours did the
+    # Hermite form about the nearer end (1e-13 .. 1e-11 apart at 10 domain lengths).
+    ours, theirs = casteljau.CubicSpline(FAR_X, FAR_Y, bc_type=bc), si.CubicSpline(FAR_X, FAR_Y, bc_type=bc)
+    # not-a-knot: the library's slopes carry about 1e-14 relative more error than scipy's
+    # pivoted solve (measured against the exact solve in rationals: 2e-14 and 4e-16); far
+    # out that is all that remains.
+    far_close(ours, theirs, rel=1e-10 if bc == "not-a-knot" else 1e-12)
+    far_close(ours.derivative(), theirs.derivative(), nus=[0, 1], rel=1e-10 if bc == "not-a-knot" else 1e-12)
+    far_close(ours.antiderivative(), theirs.antiderivative(), nus=[0, 1], rel=1e-10 if bc == "not-a-knot" else 1e-12)
+
+
+def test_hermite_interpolators_and_bsplines_extrapolate_as_scipy():
+    far_close(casteljau.PchipInterpolator(FAR_X, FAR_Y), si.PchipInterpolator(FAR_X, FAR_Y))
+    ours, theirs = casteljau.Akima1DInterpolator(FAR_X, FAR_Y), si.Akima1DInterpolator(FAR_X, FAR_Y)
+    for nu in range(3):
+        np.testing.assert_allclose(ours(FAR_XS, nu, extrapolate=True), theirs(FAR_XS, nu, extrapolate=True), rtol=1e-12)
+    for k in (1, 2, 3, 5):
+        t = np.r_[FAR_X[0] - 2.0, FAR_X[0] - 1.0, FAR_X[::2], FAR_X[-1] + 1.0, FAR_X[-1] + 3.0]  # unclamped ends
+        c = RNG.normal(size=(len(t) - k - 1, 2))
+        far_close(casteljau.BSpline(t, c, k), si.BSpline(t, c, k), nus=range(k + 1))
+        far_close(casteljau.make_interp_spline(FAR_X, FAR_Y, k), si.make_interp_spline(FAR_X, FAR_Y, k),
+                  nus=range(k + 1))
+
+
+AXIS_CASES = [
+    ("CubicSpline", lambda m, x, y, a: m.CubicSpline(x, y, axis=a)),
+    ("CubicSpline natural", lambda m, x, y, a: m.CubicSpline(x, y, axis=a, bc_type="natural")),
+    ("PchipInterpolator", lambda m, x, y, a: m.PchipInterpolator(x, y, axis=a)),
+    ("Akima1DInterpolator", lambda m, x, y, a: m.Akima1DInterpolator(x, y, axis=a)),
+    ("BarycentricInterpolator", lambda m, x, y, a: m.BarycentricInterpolator(x, y, axis=a)),
+    ("make_interp_spline", lambda m, x, y, a: m.make_interp_spline(x, y, k=3, axis=a)),
+    ("make_interp_spline k=0", lambda m, x, y, a: m.make_interp_spline(x, y, k=0, axis=a)),
+]
+
+
+@pytest.mark.parametrize("name,make", AXIS_CASES, ids=[c[0] for c in AXIS_CASES])
+@pytest.mark.parametrize("axis", [0, 1, 2, -1])
+def test_axis_gives_scipys_shapes_and_values(name, make, axis):
+    x = np.array([0.0, 0.4, 1.1, 1.9, 2.5, 3.2, 4.0])
+    y = RNG.normal(size=(7, 2, 2))
+    y = np.moveaxis(y, 0, axis)  # the data along `axis`; 4 numbers per point
+    ours, theirs = make(casteljau, x, y, axis), make(si, x, y, axis)
+    for xq in (1.5, np.linspace(0.5, 3.5, 5), np.linspace(0.5, 3.5, 6).reshape(2, 3)):
+        a, b = ours(xq), theirs(xq)
+        assert a.shape == b.shape, (name, axis, np.shape(xq), a.shape, b.shape)
+        close(a, b)
+    if name not in ("BarycentricInterpolator", "make_interp_spline k=0"):  # neither has a derivative in scipy
+        xq = np.linspace(0.5, 3.5, 5)
+        for d, e in ((ours.derivative(), theirs.derivative()), (ours.antiderivative(), theirs.antiderivative())):
+            assert d(xq).shape == e(xq).shape
+        close(ours.derivative()(xq), theirs.derivative()(xq))
+        close(ours.antiderivative()(xq), theirs.antiderivative()(xq))
+        close(ours.integrate(0.5, 3.0), theirs.integrate(0.5, 3.0))
+
+
+def test_bspline_axis_and_coefficients_as_scipy():
+    t = np.r_[[0.0] * 3, 0.3, 0.6, [1.0] * 3]
+    c = RNG.normal(size=(2, 5, 2))  # the coefficients along axis 1
+    ours, theirs = casteljau.BSpline(t, c, 2, axis=1), si.BSpline(t, c, 2, axis=1)
+    assert ours.c.shape == theirs.c.shape and ours.axis == theirs.axis
+    xq = np.linspace(-0.2, 1.2, 8).reshape(2, 4)
+    for nu in range(3):
+        a, b = ours(xq, nu), theirs(xq, nu)
+        assert a.shape == b.shape == (2, 2, 4, 2)
+        close(a, b)
+    for d, e in ((ours.derivative(), theirs.derivative()), (ours.antiderivative(), theirs.antiderivative())):
+        assert d.c.shape[1:] == e.c.shape[1:] and d(xq).shape == e(xq).shape  # scipy pads c with zeros
+        close(d(xq), e(xq))
+    with pytest.raises(ValueError, match=r"^axis: "):
+        casteljau.BSpline(t, c, 2, axis=3)
+
+
+@pytest.mark.parametrize("n", [17, 40, 120])
+def test_barycentric_interpolator_at_many_nodes(n):
+    # The library's lagrange curve by its barycentric formulas (the Bezier form, refused
+    # above 16 nodes, is not on the way); Chebyshev points keep the interpolant itself well
+    # conditioned, as scipy's documentation advises.
+    xi = 3 * np.cos(np.linspace(0, np.pi, n)) + 1
+    yi = np.stack([np.exp(xi / 3), np.sin(2 * xi)], axis=-1)
+    ours, theirs = casteljau.BarycentricInterpolator(xi, yi), si.BarycentricInterpolator(xi, yi)
+    xq = np.r_[np.linspace(-2, 4, 97), xi[::7]]  # between the nodes and at nodes (exact there)
+    close(ours(xq), theirs(xq))
+    np.testing.assert_array_equal(ours(xi[::7]), yi[::7])
+    if n >= 40:  # the interpolant converges to the functions (closed forms)
+        np.testing.assert_allclose(ours(xq)[:, 0], np.exp(xq / 3), rtol=1e-13)
+    # Equispaced nodes: both follow the same (ill-conditioned) polynomial near the middle.
+    xe = np.linspace(0, 1, 25)
+    ours, theirs = casteljau.BarycentricInterpolator(xe, np.sin(xe)), si.BarycentricInterpolator(xe, np.sin(xe))
+    close(ours(np.linspace(0.3, 0.7, 9)), theirs(np.linspace(0.3, 0.7, 9)))

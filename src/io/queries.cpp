@@ -59,6 +59,31 @@ AnyProjection project(const AnyCurve& c, std::span<const double> point, bool far
       pieces(c));
 }
 
+void project_rows(const AnyCurve& c, std::span<const double> points, bool farthest, std::span<double> t,
+                  std::span<double> point, std::span<double> distance) {
+  check_curve_work(c, "curve");
+  const Interval<double> dom = domain(c);
+  std::visit(
+      [&]<class P>(const P& p) {
+        constexpr int D = P::dimension;
+        check_work(p, "curve");
+        for (std::size_t i = 0; i < t.size(); ++i) {
+          Point<double, D> q;
+          for (int k = 0; k < D; ++k) {
+            const double v = points[i * D + static_cast<std::size_t>(k)];
+            if (!std::isfinite(v)) require_finite(v, "points[" + std::to_string(i) + "][" + std::to_string(k) + "]");
+            q[k] = v;
+          }
+          const auto r = casteljau::project(p, q, farthest);
+          // A curve on a single parameter answers that parameter (as project).
+          t[i] = dom.lo == dom.hi ? dom.lo : r.t;
+          for (int k = 0; k < D; ++k) point[i * D + static_cast<std::size_t>(k)] = r.point[k];
+          distance[i] = r.distance;
+        }
+      },
+      pieces(c));
+}
+
 double length(const AnyCurve& c, std::optional<double> from, std::optional<double> to) {
   check_curve_work(c, "curve");
   return std::visit(

@@ -189,18 +189,84 @@ Projection<typename C::Scalar, C::dimension> project(const C& c, const Point<typ
   // Distances are measured on the curve moved so that q is the origin, and halved (so
   // that nothing overflows): their rounding is then a few eps of |c(t) - q|, not of the
   // coordinates (a unit curve at 1e12 from the origin keeps its digits).
-  const auto rel = p.transform(detail::halved_about(q));
+  // Each piece is moved when first needed (a pruned piece never is: moving them all was a
+  // copy of the whole curve per query).
+  const Affine<T, D> to_rel = detail::halved_about(q);
+  using Segment = typename std::decay_t<decltype(p)>::SegmentType;
+  std::vector<std::optional<Segment>> moved(p.size());
+  const auto rel_segment = [&](std::size_t i) -> const Segment& {
+    if (!moved[i]) moved[i] = std::visit([&](const auto& c) { return Segment(c.transform(to_rel)); }, p.segments()[i]);
+    return *moved[i];
+  };
   const auto distance_at = [&](const auto& rel_piece, T t) { return 2 * norm(rel_piece(t).to_vector()); };
   std::vector<Candidate> cand;
   std::vector<std::pair<Interval<T>, T>> flat;  // constant-distance pieces and their distance
   T reach = 0;
   std::vector<T> ts;
+  // Pruning (bounding boxes), for curves of many pieces: the box of a piece's control
+  // points contains the piece (convex hull: Bézier pieces, rational ones with positive
+  // weights), so its distance from q bounds the piece's distances below (nearest; its
+  // farthest corner bounds them above, farthest). The pieces go in the order of that bound,
+  // the best distance so far starting from the pieces' end points; once a piece's bound is
+  // worse than the best so far by more than the tie tolerance and the rounding, it and
+  // every piece after it hold no candidate that can win or tie, and their root isolation
+  // is skipped (a 1000-piece cubic B-spline: tens of pieces isolated, not 1000). A run of
+  // skipped pieces (in the curve's order) leaves one candidate, its first piece's start:
+  // it does not tie, so tied candidates on either side stay in separate runs below.
+  for (const auto& seg : p.segments())
+    std::visit([&](const auto& piece) { for (const auto& P : piece.points()) reach = std::max(reach, detail::safe_distance(P, q)); }, seg);
+  const auto better_d = [&](T a, T b) { return farthest ? a > b : a < b; };
+  T so_far = farthest ? T(0) : std::numeric_limits<T>::infinity();
+  const std::size_t n_pieces = p.size();
+  std::vector<T> bound(n_pieces);
+  std::vector<char> prunable(n_pieces, 0);
+  for (std::size_t i = 0; i < n_pieces; ++i) {
+    std::visit(
+        [&](const auto& piece) {
+          for (const auto* P : {&piece.points().front(), &piece.points().back()}) {
+            const T d = 2 * norm(to_rel(*P).to_vector());
+            if (better_d(d, so_far)) so_far = d;
+          }
+          if constexpr (requires { piece.weights(); }) {
+            for (const T w : piece.weights())
+              if (!(w > 0)) return;
+          }
+          // The box of the moved (halved) control points: its nearest and farthest
+          // distance from the origin, doubled.
+          Vector<T, D> nearv, farv;
+          for (int k = 0; k < D; ++k) {
+            T lo = std::numeric_limits<T>::infinity(), hi = -lo;
+            for (const auto& P : piece.points()) {
+              const T x = to_rel(P)[k];
+              lo = std::min(lo, x);
+              hi = std::max(hi, x);
+            }
+            nearv[k] = std::max({T(0), lo, -hi});
+            farv[k] = std::max(std::abs(lo), std::abs(hi));
+          }
+          bound[i] = 2 * norm(farthest ? farv : nearv);
+          prunable[i] = n_pieces > 1;
+        },
+        p.segments()[i]);
+  }
+  const T eps = std::numeric_limits<T>::epsilon();
+  // More than the final tie tolerance (projection_tie best + 64 eps reach; best <= reach).
+  const T margin = 4 * projection_tie<T> * reach + 256 * eps * reach;
+  // Unprunable pieces first, then by their bound, best first; a piece whose bound is
+  // already worse than the end points' best is never visited (the best only improves).
+  std::vector<std::size_t> order;
+  for (std::size_t i = 0; i < n_pieces; ++i)
+    if (!prunable[i] || (farthest ? bound[i] >= so_far - margin : bound[i] <= so_far + margin)) order.push_back(i);
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    if (prunable[a] != prunable[b]) return prunable[a] < prunable[b];
+    return better_d(bound[a], bound[b]) || (bound[a] == bound[b] && a < b);
+  });
+  std::vector<char> visited(n_pieces, 0);
   // Candidates at a break come from both pieces (the end of one, the start of the next):
   // both kept, as they carry each piece's own distance (a path may have a gap there).
-  p.for_each_piece([&](std::size_t i, const auto& piece, const Interval<T>& own) {
+  const auto process = [&](std::size_t i, const auto& piece, const Interval<T>& own) {
     bool constant = false;
-    const auto& rp = std::get<std::decay_t<decltype(piece)>>(rel.segments()[i]);
-    for (const auto& P : piece.points()) reach = std::max(reach, detail::safe_distance(P, q));
+    const auto& rp = std::get<std::decay_t<decltype(piece)>>(rel_segment(i));
     const auto parts = detail::regular_parts(piece);
     if (parts.front().map.identity) {
       detail::projection_candidates<T, D>(piece, q, ts, constant);
@@ -223,7 +289,21 @@ Projection<typename C::Scalar, C::dimension> project(const C& c, const Point<typ
       }
     }
     if (all_constant) flat.push_back({p.lift(i, own), distance_at(rp, T(0))});
-  });
+  };
+  for (const std::size_t i : order) {
+    if (prunable[i] && (farthest ? bound[i] < so_far - margin : bound[i] > so_far + margin)) break;
+    const std::size_t first = cand.size();
+    std::visit([&](const auto& piece) { process(i, piece, p.own_domain(i)); }, p.segments()[i]);
+    for (std::size_t c = first; c < cand.size(); ++c)
+      if (better_d(cand[c].d, so_far)) so_far = cand[c].d;
+    visited[i] = 1;
+  }
+  for (std::size_t i = 0; i < n_pieces; ++i) {
+    if (visited[i] || (i > 0 && !visited[i - 1])) continue;
+    std::visit([&](const auto& piece) { cand.push_back({p.lift(i, T(0)), 2 * norm(to_rel(piece.points().front()).to_vector()), true, {}, i, T(0)}); },
+               p.segments()[i]);
+  }
+  std::sort(flat.begin(), flat.end(), [](const auto& a, const auto& b) { return a.first.lo < b.first.lo; });
   auto better = [&](T a, T b) { return farthest ? a > b : a < b; };
   T best = cand.front().d;
   for (const auto& x : cand)
@@ -240,9 +320,11 @@ Projection<typename C::Scalar, C::dimension> project(const C& c, const Point<typ
     else
       r.intervals.push_back(iv);
   }
-  // Stable: candidates were made in the curve's order (pieces, parts, sorted parameters),
-  // which equal parameters (a part's rounded image) keep for the runs below.
-  std::stable_sort(cand.begin(), cand.end(), [](const Candidate& a, const Candidate& b) { return a.t < b.t; });
+  // By parameter, then piece, stable: within a piece the candidates were made in its order
+  // (parts, sorted parameters), which equal parameters (a part's rounded image) keep for
+  // the runs below.
+  std::stable_sort(cand.begin(), cand.end(),
+                   [](const Candidate& a, const Candidate& b) { return a.t < b.t || (a.t == b.t && a.piece < b.piece); });
   const Interval<T> dom = p.domain();
   const T merge = T(1e-9) * dom.length();  // one minimiser seen from two pieces, or twice
   // Every stationary point of the distance is a candidate, so between consecutive
@@ -301,7 +383,7 @@ Projection<typename C::Scalar, C::dimension> project(const C& c, const Point<typ
             cand[pick] = {p.lift(k, s), d, false, point, k, s};
           }
         },
-        rel.segments()[k]);
+        rel_segment(k));
   };
   for (std::size_t i = 0; i < cand.size();) {
     if (!ties(cand[i].d)) {
@@ -326,7 +408,10 @@ Projection<typename C::Scalar, C::dimension> project(const C& c, const Point<typ
   if (r.all_t.size() == 1 && r.intervals.empty()) r.all_t.clear();
   r.point = p(r.t);
   // The distance reported is the one at the reported parameter (equal to best within tol).
-  r.distance = distance_at(rel, r.t);
+  {
+    const auto at = p.locate(r.t);
+    r.distance = std::visit([&](const auto& s) { return 2 * norm(s(at.t).to_vector()); }, rel_segment(at.index));
+  }
   // A candidate of a part of a piece with extreme weights: its parameter is a rounded
   // image (a point within 1e-30 of a parameter end has no double of its own), so its
   // point and distance are the ones found on the part.

@@ -33,6 +33,13 @@ using AnyFrames = PerDimension<Frames>;
 /// the curve's or a coordinate is not finite.
 [[nodiscard]] AnyProjection project(const AnyCurve& c, std::span<const double> point, bool farthest);
 
+/// project at each of the n points in `points` (n rows of d = dimension(c) coordinates),
+/// the curve's pieces made once for all of them: row i's parameter, point and distance in
+/// t[i], point[i d .. i d + d) and distance[i] (each span sized n, n d, n). Throws
+/// InvalidArgument("points[i][k]", ...) for a coordinate that is not finite.
+void project_rows(const AnyCurve& c, std::span<const double> points, bool farthest, std::span<double> t,
+                  std::span<double> point, std::span<double> distance);
+
 /// The arc length between `from` and `to` (default: the domain's ends), relative accuracy
 /// 1e-12 (algo/length.hpp). Throws InvalidArgument("from"/"to", ...) for a range outside
 /// the domain or reversed.
