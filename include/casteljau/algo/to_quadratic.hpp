@@ -45,11 +45,13 @@ inline constexpr T snap_angle = T(1e-6);
 /// precision to underflow, norm() (which scales by the largest coordinate: two divisions
 /// more) beyond.
 template <class T, int D>
-T fast_norm(const Vector<T, D>& v) {
+inline T fast_norm(const Vector<T, D>& v) {
   const T s = squared_norm(v);
   constexpr T lo = std::numeric_limits<T>::min() / std::numeric_limits<T>::epsilon();
   constexpr T hi = std::numeric_limits<T>::max() * std::numeric_limits<T>::epsilon();
-  return s >= lo && s <= hi ? std::sqrt(s) : norm(v);
+  if (s >= lo && s <= hi) [[likely]]
+    return std::sqrt(s);
+  return norm(v);
 }
 
 template <class T, int D>
@@ -422,8 +424,8 @@ struct Part {
     return worst;
   }
 
-  /// An upper bound of the Fréchet (so the Hausdorff) distance between a cubic part c and
-  /// a single quadratic q with the same end points and end directions, after a change of
+  /// An upper bound of the Hausdorff distance between a cubic part c and a single
+  /// quadratic q with the same end points and end directions, after a change of
   /// q's parameter: sigma(s) the cubic with sigma(0) = 0, sigma(1) = 1 and the end slopes
   /// |c'| / |q'| (Bernstein coefficients 0, sigma'(0) / 3, 1 - sigma'(1) / 3, 1), so that
   /// q(sigma(s)) matches c's points and first derivatives at both ends and the difference
@@ -432,8 +434,9 @@ struct Part {
   /// rule) bound |f|; the polygon is halved (de Casteljau at 1/2) up to `levels` times where
   /// its largest coefficient is above `limit`, so that the bound is within a few percent of
   /// max |f| (the whole polygon's bound is up to 1.6 times it). When sigma's coefficients
-  /// lie in [0, 1], sigma maps [0, 1] onto [0, 1] and every point of either curve is within
-  /// the bound of the other. Infinite for other parts (rational, degree other than 3, a
+  /// lie in [0, 1], sigma maps [0, 1] into [0, 1] (so c(s) is within |f(s)| of the point
+  /// q(sigma(s)) of q) and onto it (sigma(0) = 0, sigma(1) = 1: every q(u) is q(sigma(s))
+  /// for some s, within |f(s)| of c(s)). Infinite for other parts (rational, degree other than 3, a
   /// chain of two quadratics) or a sigma leaving [0, 1]. A few hundred operations: no
   /// projections.
   T reparametrised_bound(const Chain<T, D>& q, T limit, int levels) const {
@@ -532,6 +535,7 @@ std::vector<typename Piece::Scalar> cusps(const Piece& piece) {
   std::vector<Point<T, D>> hodograph;
   if constexpr (std::is_same_v<Piece, Bezier<T, D>>) {
     const auto& P = piece.points();
+    hodograph.reserve(P.size() - 1);
     for (std::size_t k = 0; k + 1 < P.size(); ++k) hodograph.push_back(Point<T, D>::from_vector(T(n) * (P[k + 1] - P[k])));
     // No cusp when the hodograph's control polygon keeps away from the origin: its convex
     // hull (which holds c' on [0, 1]) lies beyond a line at distance `low` from the origin,
@@ -790,7 +794,10 @@ void approximate_span(const Piece& piece, T s0, T s1, const Point<T, D>& p_start
 /// polynomial part by the control points of the part minus the quadratic raised to its
 /// degree (Part::elevated_bound, a bound of the parametric distance), the smaller; the
 /// last segment of a span is taken on that cheap bound alone when it is within a tenth
-/// of the tolerance. max_error is the largest. Errors: InvalidArgument "tolerance" (not finite and > 0; more than
+/// of the tolerance, and a cubic part on Part::reparametrised_bound (the parametric
+/// distance after a cubic change of the quadratic's parameter) when that is under 80% of
+/// it. Once the rest of a span has failed as one segment, the first end found within the
+/// tolerance is tried with the rest as a second segment (two is then the fewest). max_error is the largest. Errors: InvalidArgument "tolerance" (not finite and > 0; more than
 /// max_segments segments needed).
 template <class C>
   requires detail::is_pieces<C>
@@ -803,6 +810,8 @@ QuadraticChain<typename C::Scalar, C::dimension> to_quadratic(const C& p, typena
     throw InvalidArgument("tolerance", "must be a finite number > 0, got " + detail::format_number(tolerance));
   }
   QuadraticChain<T, D> r;
+  r.breaks.reserve(p.size() + 1);
+  r.segments.reserve(p.size());
   r.breaks.push_back(p.domain().lo);
   const std::size_t k = p.size();
   // Each piece's end directions, with the shared direction at tangent-continuous joints.
@@ -842,8 +851,11 @@ QuadraticChain<typename C::Scalar, C::dimension> to_quadratic(const C& p, typena
             ends.push_back(T(1));
             return;
           }
-          std::vector<T> cut{T(0)};
-          for (const T c : detail::quadratic::cusps(s)) cut.push_back(c);
+          const std::vector<T> inner = detail::quadratic::cusps(s);
+          std::vector<T> cut;
+          cut.reserve(inner.size() + 2);
+          cut.push_back(T(0));
+          cut.insert(cut.end(), inner.begin(), inner.end());
           cut.push_back(T(1));
           std::vector<Point<T, D>> span_points;  // the span's control points (Cartesian), where it is cut
           for (std::size_t j = 0; j + 1 < cut.size(); ++j) {
