@@ -204,13 +204,15 @@ constexpr Command ops_family[] = {
      "where the two tangent lines meet; two quadratics joined smoothly where the lines of a\n"
      "space curve are skew). Joints are tangent-continuous wherever the curve is (input\n"
      "joints within 1e-6 rad get one shared direction); corners stay corners. Each segment's\n"
-     "distance to the part it replaces is bounded (5, 9, 17 or 33 samples, coarse to fine,\n"
+     "distance to the part it replaces is bounded within the tolerance: for a cubic part\n"
+     "first by the Bernstein coefficients of c(s) - q(sigma(s)), sigma a cubic change of\n"
+     "parameter matching the end speeds; else by 5, 9, 17 or 33 samples, coarse to fine,\n"
      "with their nearest points on the quadratic, plus a second-derivative margin between\n"
-     "samples) within the tolerance.",
+     "samples.",
      "curve: a path of quadratic bezier segments (3 points each), breaks at the curve's\n"
      "          parameters of the joints",
      R"(  echo '{"curve": {"type": "bezier", "points": [[0,0],[1,2],[3,2],[4,0]]}, "tolerance": 0.1}' | casteljau to_quadratic
-  {"curve":{"type":"path","segments":[{"type":"bezier","points":[[0.0,0.0],[1.1457793131793075,2.291558626358615],[2.9239891040175268,1.2368785263278665]]},{"type":"bezier","points":[[2.9239891040175268,1.2368785263278665],[3.5744631949108916,0.8510736101782175],[4.0,0.0]]}],"breaks":[0.0,0.709412461294345,1.0]}})",
+  {"curve":{"type":"path","segments":[{"type":"bezier","points":[[0.0,0.0],[1.0424558944484004,2.0849117888968007],[2.7127623379770647,1.3459781163233768]]},{"type":"bezier","points":[[2.7127623379770647,1.3459781163233768],[3.5014709498967327,0.9970581002065341],[4.0,0.0]]}],"breaks":[0.0,0.6602195804079635,1.0]}})",
      to_quadratic_fields, to_quadratic},
     {"basis", "Values and derivatives of the basis functions of a kind",
      "The basis functions of `kind` at each t: bernstein B(i, n) (degree n), bspline N(i, p)\n"

@@ -121,6 +121,40 @@ TEST(ToQuadratic, RandomCubicsWithinToleranceAndTangentContinuous) {
   EXPECT_GT(total, 8u);
 }
 
+TEST(ToQuadratic, ReparametrisedBoundHoldsOnRandomParts) {
+  // Part::reparametrised_bound (the Bernstein polygon of c(s) - q(sigma(s))) against the
+  // two-sided distance of dense samples of the part and its tangent quadratic, measured
+  // here; parts of random cubics that turn little (where the bound accepts parts).
+  std::mt19937_64 rng(13);
+  std::uniform_real_distribution<double> u(0, 100), w(0, 1);
+  int finite = 0;
+  for (int i = 0; i < 24; ++i) {
+    const B2 c({P2(u(rng), u(rng)), P2(u(rng), u(rng)), P2(u(rng), u(rng)), P2(u(rng), u(rng))});
+    const double a = 0.8 * w(rng), b = a + 0.05 + 0.15 * w(rng);
+    detail::quadratic::Part<B2> part;
+    part.make(c, a, b);
+    const auto d0 = detail::quadratic::end_direction(part.points, true), d1 = detail::quadratic::end_direction(part.points, false);
+    const auto q = detail::quadratic::tangent_chain(part.points.front(), d0, part.points.back(), d1, part.end_speed(true), part.end_speed(false));
+    if (!q || q->size != 1) continue;
+    const double bound = part.reparametrised_bound(*q, 0.0, 3);
+    if (!std::isfinite(bound)) continue;
+    ++finite;
+    std::vector<P2> cs, qs;
+    const int n = 1500;
+    const auto& Q = q->front();
+    for (int j = 0; j <= n; ++j) {
+      const double s = j / double(n);
+      cs.push_back(c(a + (b - a) * s));
+      qs.push_back(P2((1 - s) * (1 - s) * Q[0][0] + 2 * s * (1 - s) * Q[1][0] + s * s * Q[2][0],
+                      (1 - s) * (1 - s) * Q[0][1] + 2 * s * (1 - s) * Q[1][1] + s * s * Q[2][1]));
+    }
+    // Slack: chords of 1/1500 of parts a few tens long, sag far below 1e-6.
+    const double dense = std::max(to_polyline(cs, qs), to_polyline(qs, cs));
+    EXPECT_LE(dense, bound + 1e-6) << "cubic " << i;
+  }
+  EXPECT_GE(finite, 12);
+}
+
 TEST(ToQuadratic, PathKeepsCornersAndSmoothJoints) {
   // A smooth joint (collinear handles) and a corner.
   Pieces<double, 2> p({B2({P2(0, 0), P2(1, 2), P2(2, 2), P2(3, 0)}), B2({P2(3, 0), P2(4, -2), P2(5, -2), P2(6, 0)}),

@@ -575,7 +575,7 @@ template <class T, int D>
 FitResult<T, D> fit(std::vector<Point<T, D>> Q, const FitRequest<T, D>& req) {
   const int p = req.degree;
   if (p < 1) throw InvalidArgument("degree", "degree must be >= 1, got " + std::to_string(p));
-  for (std::size_t i = 0; i < Q.size(); ++i) require_finite_point(Q[i], "points[" + std::to_string(i) + "]");
+  require_finite_points(Q, "points");
   const std::size_t extra = (req.start_derivative ? 1 : 0) + (req.end_derivative ? 1 : 0);
   if (extra > 0 && p < 2) throw InvalidArgument("degree", "end derivatives need degree >= 2, got " + std::to_string(p));
   if (req.tolerance && !(*req.tolerance > 0)) throw InvalidArgument("tolerance", "tolerance must be > 0, got " + detail::format_number(*req.tolerance));

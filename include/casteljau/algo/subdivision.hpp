@@ -29,7 +29,7 @@ void check_polygon(const std::vector<Point<T, D>>& P, std::size_t at_least, bool
     throw InvalidArgument("points", std::string(closed ? "a closed" : "an open") + " polygon needs at least " +
                                         std::to_string(at_least) + " points" + why + ", got " + std::to_string(P.size()));
   }
-  for (std::size_t i = 0; i < P.size(); ++i) require_finite_point(P[i], "points[" + std::to_string(i) + "]");
+  require_finite_points(P, "points");
 }
 
 inline void check_iterations(std::size_t points, int k) {

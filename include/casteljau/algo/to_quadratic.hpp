@@ -30,6 +30,7 @@ struct QuadraticChain {
 
 namespace detail::quadratic {
 
+
 /// Sample intervals per part in the error bound at its finest (to_quadratic): the margin
 /// between samples falls as 1 / N^2.
 inline constexpr int bound_samples = 32;
@@ -40,9 +41,22 @@ inline constexpr int bound_samples = 32;
 template <class T>
 inline constexpr T snap_angle = T(1e-6);
 
+/// |v| as the square root of the sum of squares where that neither overflows nor loses
+/// precision to underflow, norm() (which scales by the largest coordinate: two divisions
+/// more) beyond.
+template <class T, int D>
+inline T fast_norm(const Vector<T, D>& v) {
+  const T s = squared_norm(v);
+  constexpr T lo = std::numeric_limits<T>::min() / std::numeric_limits<T>::epsilon();
+  constexpr T hi = std::numeric_limits<T>::max() * std::numeric_limits<T>::epsilon();
+  if (s >= lo && s <= hi) [[likely]]
+    return std::sqrt(s);
+  return norm(v);
+}
+
 template <class T, int D>
 Vector<T, D> unit(const Vector<T, D>& v) {
-  const T n = norm(v);
+  const T n = fast_norm(v);
   return n > 0 ? v / n : Vector<T, D>{};
 }
 
@@ -57,12 +71,12 @@ Vector<T, D> end_direction(const std::vector<Point<T, D>>& C, bool at_start) {
   const std::size_t n = C.size() - 1;
   const Point<T, D>& e = at_start ? C[0] : C[n];
   T size = 0;
-  for (const auto& p : C) size = std::max(size, norm(p - e));
+  for (const auto& p : C) size = std::max(size, fast_norm(p - e));
   if (!(size > 0)) return {};
   const T small = T(1e-7) * size;
   for (std::size_t k = 1; k <= n; ++k) {
     const Vector<T, D> d = at_start ? C[k] - C[0] : C[n] - C[n - k];
-    if (norm(d) > small) return unit(d);
+    if (fast_norm(d) > small) return unit(d);
   }
   return {};
 }
@@ -95,20 +109,20 @@ std::optional<Chain<T, D>> tangent_chain(const Point<T, D>& p0, const Vector<T, 
                                          T v1) {
   using C = Chain<T, D>;
   const Vector<T, D> d = p2 - p0;
-  const T chord = norm(d);
+  const T chord = fast_norm(d);
   if (!(chord > 0)) return C({p0, p0, p2});  // a part that is one point (or closed: measured)
   const T c = dot(t0, t1);
   const Vector<T, D> w = t1 - c * t0;
-  const T s = norm(w);
+  const T s = fast_norm(w);
   if (!(s > T(16) * std::numeric_limits<T>::epsilon())) {
     const T a = dot(d, t0), b = dot(d, t1);
-    if (a > 0 && b > 0 && norm(d - a * t0) <= T(1e-9) * chord) return C({p0, p0 + T(0.5) * d, p2});
+    if (a > 0 && b > 0 && fast_norm(d - a * t0) <= T(1e-9) * chord) return C({p0, p0 + T(0.5) * d, p2});
     return std::nullopt;
   }
   const Vector<T, D> u2 = w / s;
   const T d1 = dot(d, t0), d2 = dot(d, u2);
   const Vector<T, D> off = d - d1 * t0 - d2 * u2;  // the part of the chord out of the lines' plane
-  if (norm(off) > T(1e-12) * chord) {
+  if (fast_norm(off) > T(1e-12) * chord) {
     if (!(v0 > 0 && v1 > 0)) return std::nullopt;
     const Point<T, D> a = p0 + (v0 / T(4)) * t0, b = p2 - (v1 / T(4)) * t1;
     const Point<T, D> m = a + T(0.5) * (b - a);
@@ -154,8 +168,8 @@ class ChainDistance {
     if (step_ == 0) {
       sigma_[0] = 0;
       sigma_[N] = T(q_.size);
-      f_[0] = norm(c(T(0)) - q_.front()[0]);
-      f_[N] = norm(c(T(1)) - q_.back()[2]);
+      f_[0] = fast_norm(c(T(0)) - q_.front()[0]);
+      f_[N] = fast_norm(c(T(1)) - q_.back()[2]);
       largest_ = std::max(f_[0], f_[N]);
       step_ = N;
       if (largest_ > stop) return largest_;
@@ -377,7 +391,7 @@ struct Part {
   T end_speed(bool at_start) const {
     const std::size_t n = points.size() - 1;
     for (std::size_t k = 1; k <= n; ++k) {
-      const T d = at_start ? norm(points[k] - points[0]) : norm(points[n] - points[n - k]);
+      const T d = at_start ? fast_norm(points[k] - points[0]) : fast_norm(points[n] - points[n - k]);
       if (d > 0) {
         T v = T(n) * d / T(k);
         if constexpr (!polynomial) v *= at_start ? form->weights()[1] / form->weights()[0] : form->weights()[n - 1] / form->weights()[n];
@@ -405,9 +419,71 @@ struct Part {
       const T w0 = r * (r - 1) / N, w1 = T(2) * kk * r / N, w2 = kk * (kk - 1) / N;
       Vector<T, D> d;
       for (int c = 0; c < D; ++c) d[c] = points[k][c] - (w0 * a[0][c] + w1 * a[1][c] + w2 * a[2][c]);
-      worst = std::max(worst, norm(d));
+      worst = std::max(worst, fast_norm(d));
     }
     return worst;
+  }
+
+  /// An upper bound of the Hausdorff distance between a cubic part c and a single
+  /// quadratic q with the same end points and end directions, after a change of
+  /// q's parameter: sigma(s) the cubic with sigma(0) = 0, sigma(1) = 1 and the end slopes
+  /// |c'| / |q'| (Bernstein coefficients 0, sigma'(0) / 3, 1 - sigma'(1) / 3, 1), so that
+  /// q(sigma(s)) matches c's points and first derivatives at both ends and the difference
+  /// f(s) = c(s) - q(sigma(s)), a polynomial of degree 6, has a double zero at each end.
+  /// Its Bernstein coefficients (c and sigma raised to degree 6, sigma^2 by the product
+  /// rule) bound |f|; the polygon is halved (de Casteljau at 1/2) up to `levels` times where
+  /// its largest coefficient is above `limit`, so that the bound is within a few percent of
+  /// max |f| (the whole polygon's bound is up to 1.6 times it). When sigma's coefficients
+  /// lie in [0, 1], sigma maps [0, 1] into [0, 1] (so c(s) is within |f(s)| of the point
+  /// q(sigma(s)) of q) and onto it (sigma(0) = 0, sigma(1) = 1: every q(u) is q(sigma(s))
+  /// for some s, within |f(s)| of c(s)). Infinite for other parts (rational, degree other than 3, a
+  /// chain of two quadratics) or a sigma leaving [0, 1]. A few hundred operations: no
+  /// projections.
+  T reparametrised_bound(const Chain<T, D>& q, T limit, int levels) const {
+    if (!polynomial || q.size != 1 || points.size() != 4) return std::numeric_limits<T>::infinity();
+    const auto& Q = q.front();
+    const Vector<T, D> b = Q[1] - Q[0], a = (Q[0] - Q[1]) + (Q[2] - Q[1]);  // q(u) = q0 + 2 u b + u^2 a
+    const T q0 = fast_norm(b), q1 = fast_norm(Q[2] - Q[1]);                       // |q'| / 2 at the ends
+    if (!(q0 > 0 && q1 > 0)) return std::numeric_limits<T>::infinity();
+    const T c0 = fast_norm(points[1] - points[0]), c1 = fast_norm(points[3] - points[2]);  // |c'| / 3 at the ends
+    // sigma's Bernstein coefficients 0, s1, s2, 1 with s1 = sigma'(0) / 3 = (3 c0 / (2 q0)) / 3.
+    const T s1 = c0 / (T(2) * q0), s2 = T(1) - c1 / (T(2) * q1);
+    if (!(s1 >= 0 && s1 <= 1 && s2 >= 0 && s2 <= 1)) return std::numeric_limits<T>::infinity();
+    // Degree 6: sigma raised by 3, sigma^2 as a product, c raised by 3.
+    const std::array<T, 4> sg{T(0), s1, s2, T(1)};
+    constexpr std::array<T, 4> c3{1, 3, 3, 1};
+    constexpr std::array<T, 7> c6{1, 6, 15, 20, 15, 6, 1};
+    std::array<Vector<T, D>, 7> f;
+    for (int k = 0; k <= 6; ++k) {
+      T sig = 0, sig2 = 0;
+      Vector<T, D> ck{};
+      for (int i = std::max(0, k - 3); i <= std::min(3, k); ++i) {
+        const T w = c3[static_cast<std::size_t>(i)] * c3[static_cast<std::size_t>(k - i)] / c6[static_cast<std::size_t>(k)];
+        sig += w * sg[static_cast<std::size_t>(i)];
+        sig2 += w * sg[static_cast<std::size_t>(i)] * sg[static_cast<std::size_t>(k - i)];
+        ck = ck + w * (points[static_cast<std::size_t>(i)] - Q[0]);
+      }
+      f[static_cast<std::size_t>(k)] = ck - (T(2) * sig) * b - sig2 * a;
+    }
+    return polygon_bound(f, limit, levels);
+  }
+
+  /// The largest coefficient of the Bernstein polygon f (degree 6), halved up to `levels`
+  /// times where it exceeds `limit` (not where an end value, a value of f, does: no
+  /// halving can bring the bound under `limit` then): an upper bound of max |f| on [0, 1].
+  static T polygon_bound(const std::array<Vector<T, D>, 7>& f, T limit, int levels) {
+    T worst = 0;
+    for (const auto& v : f) worst = std::max(worst, squared_norm(v));
+    worst = std::sqrt(worst);
+    if (worst <= limit || levels == 0) return worst;
+    if (squared_norm(f[0]) > limit * limit || squared_norm(f[6]) > limit * limit) return worst;
+    std::array<Vector<T, D>, 7> l, r, w = f;
+    for (std::size_t lvl = 0; lvl < 7; ++lvl) {
+      l[lvl] = w[0];
+      r[6 - lvl] = w[6 - lvl];
+      for (std::size_t i = 0; i + lvl + 1 < 7; ++i) w[i] = T(0.5) * (w[i] + w[i + 1]);
+    }
+    return std::max(polygon_bound(l, limit, levels - 1), polygon_bound(r, limit, levels - 1));
   }
 
   /// Vectors whose convex hull holds c'' on [0, 1], into out (the margin of
@@ -459,6 +535,7 @@ std::vector<typename Piece::Scalar> cusps(const Piece& piece) {
   std::vector<Point<T, D>> hodograph;
   if constexpr (std::is_same_v<Piece, Bezier<T, D>>) {
     const auto& P = piece.points();
+    hodograph.reserve(P.size() - 1);
     for (std::size_t k = 0; k + 1 < P.size(); ++k) hodograph.push_back(Point<T, D>::from_vector(T(n) * (P[k + 1] - P[k])));
     // No cusp when the hodograph's control polygon keeps away from the origin: its convex
     // hull (which holds c' on [0, 1]) lies beyond a line at distance `low` from the origin,
@@ -467,7 +544,7 @@ std::vector<typename Piece::Scalar> cusps(const Piece& piece) {
     // is at most the largest |H_k|, so when low > 0.06 max |H_k| no sampled minimum below
     // would reach 0.05 of the largest sample (the margin covers rounding).
     T big = 0;
-    for (const auto& h : hodograph) big = std::max(big, norm(h.to_vector()));
+    for (const auto& h : hodograph) big = std::max(big, fast_norm(h.to_vector()));
     // The test on a control polygon H[0..k): true when it keeps away from the origin.
     const auto clear = [&](const Point<T, D>* H, std::size_t k) {
       const Vector<T, D> chord = H[k - 1] - H[0];
@@ -511,9 +588,9 @@ std::vector<typename Piece::Scalar> cusps(const Piece& piece) {
   }
   const auto sp = [&](T x) {
     if constexpr (std::is_same_v<Piece, Bezier<T, D>>) {
-      return norm(bezier_point(hodograph, x).to_vector());
+      return fast_norm(bezier_point(hodograph, x).to_vector());
     } else {
-      return norm(piece.derivative_at(x, 1));
+      return fast_norm(piece.derivative_at(x, 1));
     }
   };
   std::array<T, 16 * 16 + 1> small_speed;  // up to degree 15 on the stack
@@ -595,12 +672,18 @@ void approximate_span(const Piece& piece, T s0, T s1, const Point<T, D>& p_start
     // error stays informative), the part is taken without the sampled bound.
     const T p = part.elevated_bound(*q);
     if (last && p <= T(0.1) * tolerance) return Try{*q, dir1, p, true};
+    // Then the bound after a change of the quadratic's parameter (a cubic part against one
+    // quadratic): a part under 80% of the tolerance by it is taken (the search extends
+    // it anyway); above, the sampled bound, which follows the curves' geometry, not their
+    // parameters, and is often lower.
+    const T rb = std::min(p, part.reparametrised_bound(*q, T(0.8) * tolerance, 3));
+    if (rb <= T(0.8) * tolerance) return Try{*q, dir1, rb, true};
     part.second_derivative_hull(hull);
     // The sampled bound, coarse to fine: refined while above half the tolerance (the
     // search below extends a part whose error is under 80% of the tolerance, and aims
     // from the error it is given: an error well under the tolerance need not be tight).
     ChainDistance<T, D> dist(*q);
-    const T e = std::min(p, dist.bound(part, hull, tolerance, T(0.5) * tolerance));
+    const T e = std::min(rb, dist.bound(part, hull, tolerance, T(0.5) * tolerance));
     return Try{*q, dir1, e, e <= tolerance};
   };
   const auto accept = [&](const Try& r, T t1) {
@@ -626,6 +709,7 @@ void approximate_span(const Piece& piece, T s0, T s1, const Point<T, D>& p_start
     T lo = t0, hi = s1;
     bool hi_tested = false;
     std::optional<Try> best;
+    bool rest_tried = false, done = false;
     T x = std::min(s1, t0 + step);
     for (int it = 0; it < 200; ++it) {
       Try r = attempt(x);
@@ -633,6 +717,23 @@ void approximate_span(const Piece& piece, T s0, T s1, const Point<T, D>& p_start
       if (r.ok) {
         lo = x;
         const bool enough = x == s1 || r.error >= T(0.8) * tolerance;
+        if (!enough && hi == s1 && hi_tested && !rest_tried && s1 - x <= (x - t0)) {
+          // The span's rest failed as one segment, so two is the fewest: when the rest
+          // from x fits one, the two are taken.
+          rest_tried = true;
+          const T t0_was = t0;
+          const Point<T, D> p0_was = p0;
+          const Vector<T, D> dir0_was = dir0;
+          t0 = x, p0 = r.q.back()[2], dir0 = r.dir1;
+          Try rest = attempt(s1);
+          t0 = t0_was, p0 = p0_was, dir0 = dir0_was;
+          if (rest.ok) {
+            accept(r, x);
+            accept(rest, s1);
+            done = true;
+            break;
+          }
+        }
         best = std::move(r);
         if (enough) break;
       } else {
@@ -648,6 +749,7 @@ void approximate_span(const Piece& piece, T s0, T s1, const Point<T, D>& p_start
       if (g == x) break;
       x = g;
     }
+    if (done) break;
     if (!best) {
       // No quadratic through the tangent lines fits even over the smallest step (not
       // expected between cusps): the part over min_step as a straight quadratic, measured.
@@ -692,7 +794,10 @@ void approximate_span(const Piece& piece, T s0, T s1, const Point<T, D>& p_start
 /// polynomial part by the control points of the part minus the quadratic raised to its
 /// degree (Part::elevated_bound, a bound of the parametric distance), the smaller; the
 /// last segment of a span is taken on that cheap bound alone when it is within a tenth
-/// of the tolerance. max_error is the largest. Errors: InvalidArgument "tolerance" (not finite and > 0; more than
+/// of the tolerance, and a cubic part on Part::reparametrised_bound (the parametric
+/// distance after a cubic change of the quadratic's parameter) when that is under 80% of
+/// it. Once the rest of a span has failed as one segment, the first end found within the
+/// tolerance is tried with the rest as a second segment (two is then the fewest). max_error is the largest. Errors: InvalidArgument "tolerance" (not finite and > 0; more than
 /// max_segments segments needed).
 template <class C>
   requires detail::is_pieces<C>
@@ -705,6 +810,8 @@ QuadraticChain<typename C::Scalar, C::dimension> to_quadratic(const C& p, typena
     throw InvalidArgument("tolerance", "must be a finite number > 0, got " + detail::format_number(tolerance));
   }
   QuadraticChain<T, D> r;
+  r.breaks.reserve(p.size() + 1);
+  r.segments.reserve(p.size());
   r.breaks.push_back(p.domain().lo);
   const std::size_t k = p.size();
   // Each piece's end directions, with the shared direction at tangent-continuous joints.
@@ -722,7 +829,7 @@ QuadraticChain<typename C::Scalar, C::dimension> to_quadratic(const C& p, typena
     const Point<T, D> pa = std::visit([](const auto& s) { return s.points().back(); }, p.segments()[i]);
     const Point<T, D> pb = std::visit([](const auto& s) { return s.points().front(); }, p.segments()[i + 1]);
     if (squared_norm(a) == 0 || squared_norm(b) == 0 || !(pa == pb)) continue;
-    const T angle = std::atan2(norm(a - dot(a, b) * b), dot(a, b));
+    const T angle = std::atan2(fast_norm(a - dot(a, b) * b), dot(a, b));
     if (angle < snap_angle<T>) end_dir[i] = start_dir[i + 1] = unit(a + b);
   }
   std::vector<std::array<Point<T, D>, 3>> quads;
@@ -744,8 +851,11 @@ QuadraticChain<typename C::Scalar, C::dimension> to_quadratic(const C& p, typena
             ends.push_back(T(1));
             return;
           }
-          std::vector<T> cut{T(0)};
-          for (const T c : detail::quadratic::cusps(s)) cut.push_back(c);
+          const std::vector<T> inner = detail::quadratic::cusps(s);
+          std::vector<T> cut;
+          cut.reserve(inner.size() + 2);
+          cut.push_back(T(0));
+          cut.insert(cut.end(), inner.begin(), inner.end());
           cut.push_back(T(1));
           std::vector<Point<T, D>> span_points;  // the span's control points (Cartesian), where it is cut
           for (std::size_t j = 0; j + 1 < cut.size(); ++j) {

@@ -146,7 +146,7 @@ inline std::optional<Eigen::Matrix4d> cubic_matrix(const BasisSpec& b) {
 inline BasisTable basis_table(const BasisSpec& b, std::span<const double> t, int k) {
   check_basis(b);
   if (k < 0) throw InvalidArgument("derivatives", "must be >= 0, got " + std::to_string(k));
-  for (std::size_t i = 0; i < t.size(); ++i) require_finite(t[i], "t[" + std::to_string(i) + "]");
+  require_finite_values(t, "t");
   const std::size_t n = basis_count(b), K = static_cast<std::size_t>(k);
   BasisTable r;
   r.value.assign(K + 1, std::vector<std::vector<double>>(t.size(), std::vector<double>(n, 0.0)));

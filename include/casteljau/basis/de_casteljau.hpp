@@ -99,7 +99,7 @@ V blossom(std::span<const V> c, std::span<const T> u) {
   const std::size_t m = c.size();
   detail::require_coefficients(m);
   if (u.size() + 1 != m) throw InvalidArgument("u", "needs c.size() - 1 = " + std::to_string(m - 1) + " parameters, got " + std::to_string(u.size()));
-  for (std::size_t i = 0; i < u.size(); ++i) require_finite(u[i], "u[" + std::to_string(i) + "]");
+  require_finite_values(u, "u");
   detail::Scratch<V> buf(m);
   V* w = buf.data();
   std::copy(c.begin(), c.end(), w);

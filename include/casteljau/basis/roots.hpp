@@ -164,7 +164,7 @@ void bernstein_roots_rec(std::span<const T> c, T lo, T hi, int depth, std::vecto
 template <class T>
 std::vector<T> bernstein_roots(std::span<const T> c, T merge = T(1e-10)) {
   std::vector<T> out;
-  for (std::size_t i = 0; i < c.size(); ++i) require_finite(c[i], "c[" + std::to_string(i) + "]");
+  require_finite_values(c, "c");
   // Identically zero (or empty): no roots, as documented (every t would be one).
   if (std::all_of(c.begin(), c.end(), [](T x) { return x == 0; })) return out;
   if (c.front() == 0) out.push_back(T(0));
@@ -282,7 +282,7 @@ std::vector<BernsteinRoot<T>> roots_with_multiplicity_rec(std::span<const T> c, 
 template <class T>
 std::vector<BernsteinRoot<T>> bernstein_roots_with_multiplicity(std::span<const T> c, Interval<T> ab = {T(0), T(1)},
                                                                 T noise = T(0)) {
-  for (std::size_t i = 0; i < c.size(); ++i) require_finite(c[i], "c[" + std::to_string(i) + "]");
+  require_finite_values(c, "c");
   require_finite(ab.lo, "interval.lo");
   require_finite(ab.hi, "interval.hi");
   if (!(ab.lo < ab.hi)) throw InvalidArgument("interval", "needs lo < hi");

@@ -82,4 +82,15 @@ void require_finite(T v, std::string_view where) {
   }
 }
 
+/// Throws InvalidArgument naming `name[i]` for the first non-finite value i of `values`
+/// (require_finite's message), building the name only then.
+template <class Range>
+void require_finite_values(const Range& values, std::string_view name) {
+  std::size_t i = 0;
+  for (const auto& v : values) {
+    if (!std::isfinite(v)) require_finite(v, std::string(name) + "[" + std::to_string(i) + "]");
+    ++i;
+  }
+}
+
 }  // namespace casteljau

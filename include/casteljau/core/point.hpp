@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <ostream>
 #include <string>
+#include <type_traits>
 
 #include "casteljau/core/error.hpp"
 
@@ -194,6 +195,20 @@ void require_finite_point(const P& p, std::string_view where) {
       throw InvalidArgument(std::string(where) + "[" + std::to_string(i) + "]",
                             "coordinate must be finite, got " + detail::format_number(p[i]));
     }
+  }
+}
+
+/// Throws InvalidArgument naming `name[i][j]` for the first point i of `points` with a
+/// non-finite coordinate j (require_finite_point's message); the name text is built only
+/// then (the constructors check every point of every curve they make).
+template <class Range>
+void require_finite_points(const Range& points, std::string_view name) {
+  std::size_t i = 0;
+  for (const auto& p : points) {
+    for (int k = 0; k < std::remove_cvref_t<decltype(p)>::dimension; ++k) {
+      if (!std::isfinite(p[k])) require_finite_point(p, std::string(name) + "[" + std::to_string(i) + "]");
+    }
+    ++i;
   }
 }
 

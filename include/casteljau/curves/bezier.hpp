@@ -42,7 +42,7 @@ class Bezier {
   /// non-finite coordinate.
   explicit Bezier(std::vector<PointType> points) : P_(std::move(points)) {
     if (P_.empty()) throw InvalidArgument("points", "a Bézier curve needs at least one control point");
-    for (std::size_t i = 0; i < P_.size(); ++i) require_finite_point(P_[i], "points[" + std::to_string(i) + "]");
+    require_finite_points(P_, "points");
   }
   Bezier(std::initializer_list<PointType> points) : Bezier(std::vector<PointType>(points)) {}
 
@@ -51,7 +51,7 @@ class Bezier {
   /// (M^-1 has entries in [0, 1]).
   static Bezier from_power(std::span<const VectorType> a) {
     if (a.empty()) throw InvalidArgument("coefficients", "needs at least one power coefficient");
-    for (std::size_t j = 0; j < a.size(); ++j) require_finite_point(a[j], "coefficients[" + std::to_string(j) + "]");
+    require_finite_points(a, "coefficients");
     const int n = static_cast<int>(a.size()) - 1;
     const Matrix<T> m = power_to_bernstein_matrix<T>(n);
     std::vector<PointType> P(a.size());
@@ -121,7 +121,7 @@ class Bezier {
     for (int j = 0; j < k; ++j) f *= static_cast<T>(n - j);
     std::vector<PointType> Q(d.size());
     for (std::size_t i = 0; i < d.size(); ++i) Q[i] = PointType::from_vector(d[i] * f);
-    return checked(std::move(Q), "k", "the derivative curve of order " + std::to_string(k));
+    return checked(std::move(Q), "k", "the derivative curve of order ", k);
   }
 
   /// The halves on [0, t] and [t, 1], each reparametrised to [0, 1] (de Casteljau
@@ -206,10 +206,13 @@ class Bezier {
   /// The curve of Q, whose points are finite unless the arithmetic that made them
   /// overflowed: then InvalidArgument(where, "<what> is not representable ..."), naming
   /// the operation's argument rather than a finite input value. O(n D).
-  static Bezier checked(std::vector<PointType> Q, const char* where, const std::string& what) {
+  // `what` names the curve in the message (with `order` appended when >= 0); the text is
+  // built only when a point is not finite.
+  static Bezier checked(std::vector<PointType> Q, const char* where, const char* what, int order = -1) {
     for (std::size_t i = 0; i < Q.size(); ++i) {
       if (!detail::all_finite(Q[i])) {
-        throw InvalidArgument(where, what + " is not representable: its control point " + std::to_string(i) +
+        throw InvalidArgument(where, std::string(what) + (order >= 0 ? std::to_string(order) : std::string()) +
+                                         " is not representable: its control point " + std::to_string(i) +
                                          " has a coordinate beyond the largest finite number");
       }
     }

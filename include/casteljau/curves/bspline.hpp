@@ -284,7 +284,7 @@ class BSpline {
 
  private:
   void check_points() const {
-    for (std::size_t i = 0; i < P_.size(); ++i) require_finite_point(P_[i], "points[" + std::to_string(i) + "]");
+    require_finite_points(P_, "points");
   }
 
   KnotVector<T> kv_;

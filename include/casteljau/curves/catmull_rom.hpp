@@ -232,7 +232,7 @@ class CatmullRom {
                                           (reflect ? " with ends 'reflect'" : "") + " needs at least " + std::to_string(need) +
                                           " points, got " + std::to_string(given.size()));
     }
-    for (std::size_t i = 0; i < given.size(); ++i) require_finite_point(given[i], "points[" + std::to_string(i) + "]");
+    require_finite_points(given, "points");
     if (reflect && alpha > 0) {  // the given points first: a phantom point equals its neighbour only when they do
       for (std::size_t i = 1; i < given.size(); ++i) {
         if (given[i] == given[i - 1]) {

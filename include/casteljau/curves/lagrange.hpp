@@ -172,7 +172,7 @@ class Lagrange {
     }
     if (P_.empty()) throw InvalidArgument("points", "a lagrange curve needs at least 1 point, got 0");
     detail::check_distinct_nodes<T>(u_, "params");
-    for (std::size_t i = 0; i < P_.size(); ++i) require_finite_point(P_[i], "points[" + std::to_string(i) + "]");
+    require_finite_points(P_, "points");
   }
 
   void set_domain() {

@@ -414,7 +414,7 @@ class Nurbs {
       if (!(w[i] > 0)) throw InvalidArgument(where, "weight must be > 0, got " + detail::format_number(w[i]));
       wmax = std::max(wmax, w[i]);
     }
-    for (std::size_t i = 0; i < P.size(); ++i) require_finite_point(P[i], "points[" + std::to_string(i) + "]");
+    require_finite_points(P, "points");
     int e = 0;
     if (wmax > 0) std::frexp(wmax, &e);
     std::vector<Point<T, D + 1>> H(P.size());

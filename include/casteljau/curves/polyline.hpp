@@ -26,7 +26,7 @@ class Polyline {
     if (P_.size() < 2) {
       throw InvalidArgument("points", "a polyline needs at least 2 points, got " + std::to_string(P_.size()));
     }
-    for (std::size_t i = 0; i < P_.size(); ++i) require_finite_point(P_[i], "points[" + std::to_string(i) + "]");
+    require_finite_points(P_, "points");
   }
   Polyline(std::initializer_list<PointType> points) : Polyline(std::vector<PointType>(points)) {}
 

@@ -54,7 +54,7 @@ class RationalBezier {
 
   RationalBezier(std::vector<PointType> points, std::vector<T> weights) : P_(std::move(points)), w_(std::move(weights)) {
     if (P_.empty()) throw InvalidArgument("points", "a rational Bézier curve needs at least one control point");
-    for (std::size_t i = 0; i < P_.size(); ++i) require_finite_point(P_[i], "points[" + std::to_string(i) + "]");
+    require_finite_points(P_, "points");
     if (w_.size() != P_.size()) {
       throw InvalidArgument("weights", "needs one weight per control point: " + std::to_string(P_.size()) +
                                            " points but " + std::to_string(w_.size()) + " weights");
@@ -376,14 +376,14 @@ class RationalBezier {
   /// The curve with points Q and weights W (normalised scale, all > 0), the weights
   /// scaled back by 2^wexp_ when none under- or overflows; InvalidArgument(where, ...)
   /// naming the operation's argument when a point is not representable.
-  [[nodiscard]] RationalBezier finish(std::vector<PointType> Q, std::vector<T> W, const char* where, const std::string& what) const {
+  [[nodiscard]] RationalBezier finish(std::vector<PointType> Q, std::vector<T> W, const char* where, const char* what) const {
     for (std::size_t i = 0; i < Q.size(); ++i) {
       if (!detail::all_finite(Q[i])) {
-        throw InvalidArgument(where, what + " is not representable: its control point " + std::to_string(i) +
+        throw InvalidArgument(where, std::string(what) + " is not representable: its control point " + std::to_string(i) +
                                          " has a coordinate beyond the largest finite number");
       }
       if (!(W[i] > 0)) {
-        throw InvalidArgument(where, what + " is not representable: its weight " + std::to_string(i) + " underflows to 0");
+        throw InvalidArgument(where, std::string(what) + " is not representable: its weight " + std::to_string(i) + " underflows to 0");
       }
     }
     std::vector<T> back(W.size());
