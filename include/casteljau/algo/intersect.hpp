@@ -872,6 +872,15 @@ ArcPairs<T> meet_arcs(const Prepared<T>& A, const Prepared<T>& B, bool self, Con
   return out;
 }
 
+/// p extended by r, which continues it: p's end becomes r's, r's points join p's.
+template <class T>
+void absorb(RawOverlap<T>& p, RawOverlap<T>& r) {
+  p.o.a.hi = r.o.a.hi;
+  p.o.b_end = r.o.b_end;
+  p.found.insert(p.found.end(), r.found.begin(), r.found.end());
+  p.deferred.insert(p.deferred.end(), r.deferred.begin(), r.deferred.end());
+}
+
 /// Phase 3: the overlaps found arc by arc, sorted by their start on a, joined where one
 /// continues the previous (its start within 1e-9 of la (a's domain length) of the
 /// previous end on a, within 1e-9 lb on b, b running the same way); the points and
@@ -886,10 +895,7 @@ std::vector<RawOverlap<T>> join_overlaps(std::vector<RawOverlap<T>> overlaps, T 
       auto& p = joined.back();
       if (std::abs(o.a.lo - p.o.a.hi) <= T(1e-9) * la && std::abs(o.b_start - p.o.b_end) <= T(1e-9) * lb &&
           ((o.b_end > o.b_start) == (p.o.b_end > p.o.b_start))) {
-        p.o.a.hi = o.a.hi;
-        p.o.b_end = o.b_end;
-        p.found.insert(p.found.end(), r.found.begin(), r.found.end());
-        p.deferred.insert(p.deferred.end(), r.deferred.begin(), r.deferred.end());
+        absorb(p, r);
         continue;
       }
     }
@@ -947,10 +953,7 @@ void bridge_overlaps(const Prepared<T>& A, const Prepared<T>& B, std::vector<Raw
                            stays_near(A, p.o.a.hi, o.a.lo, B, p.o.b_end, o.b_start, tol) &&
                            stays_near(B, p.o.b_end, o.b_start, A, p.o.a.hi, o.a.lo, tol);
       if (bridged) {
-        p.o.a.hi = o.a.hi;
-        p.o.b_end = o.b_end;
-        p.found.insert(p.found.end(), r.found.begin(), r.found.end());
-        p.deferred.insert(p.deferred.end(), r.deferred.begin(), r.deferred.end());
+        absorb(p, r);
         continue;
       }
     }
