@@ -220,6 +220,15 @@ class PPoly:
                 out[k - j, i] = a / h**j
         return out.reshape((k + 1, len(pieces)) + self._tail)
 
+    def _column(self, j: int) -> "PPoly":
+        """The 1-D PPoly of the flat column j of the values (from the exact Bezier pieces)."""
+        breaks, pieces = _bezier_pieces(self._curve)
+        segs = [{"type": "bezier", "points": P[:, j:j + 1]} for P in pieces]
+        curve = Curve.from_json({"type": "path", "segments": segs, "breaks": breaks})
+        out = PPoly(curve, (), self.extrapolate, 0, _column_ends(self._ends_now(), j))
+        out._lo, out._hi, out._clip_integral = self._lo, self._hi, self._clip_integral
+        return out
+
     def derivative(self, nu: int = 1) -> "PPoly":
         ends = None
         own = self._ends
@@ -261,15 +270,18 @@ class PPoly:
         return self.solve(0.0, discontinuity, extrapolate)
 
     def solve(self, y: float = 0.0, discontinuity: bool = True, extrapolate: Any = None) -> np.ndarray:
-        """scipy's PPoly.solve for 1-D data: the x where the function equals y, ascending
-        (the registry's solve command on the domain; with extrapolate=True, also those of
-        the end pieces continued beyond it)."""
-        if self._tail not in ((), (1,)):
-            raise Error("y: solve and roots need 1-D data (values of shape (n,)), got values of shape "
-                        + str(self._tail))
+        """scipy's PPoly.solve: the x where the function equals y, ascending (the registry's
+        solve command on the domain; with extrapolate=True, also those of the end pieces
+        continued beyond it); for data of several values per point, scipy's object array
+        of y's trailing shape holding each value's roots."""
         y = float(y)
         if not math.isfinite(y):
             raise Error(f"y: must be a finite number, got {y}")
+        if self._tail != ():
+            out = np.empty(self._tail, dtype=object)
+            for j in range(out.size):
+                out.flat[j] = self._column(j).solve(y, discontinuity, extrapolate)
+            return out
         ext = self.extrapolate if extrapolate is None else extrapolate
         r = self._curve.solve(y, 0)
         roots = list(np.asarray(getattr(r, "t"), dtype=np.float64))
@@ -282,6 +294,16 @@ class PPoly:
         for v, stretch in sorted([(v, False) for v in roots] + [(a, True) for a in starts]):
             out += [v, math.nan] if stretch else [v]
         return np.array(out, dtype=np.float64)
+
+
+def _column_ends(ends: tuple | None, j: int) -> tuple | None:
+    """PPoly._ends for the column j alone."""
+    if ends is None:
+        return None
+    if ends[0] == "power":
+        return ("power",) + tuple((x0, c[:, j:j + 1]) for x0, c in ends[1:])
+    _, t, c, k = ends
+    return ("bspline", t, c[:, j:j + 1], k)
 
 
 class _LazyEnds:

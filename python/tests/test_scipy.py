@@ -686,3 +686,20 @@ def test_barycentric_set_yi_and_add_xi():
         p.add_xi([3.0], [[1.0, 2.0]])
     with pytest.raises(casteljau.Error, match=r"^yi: 7 values along axis 0 but xi has 6"):
         casteljau.BarycentricInterpolator(xi).set_yi(np.arange(7.0))
+
+
+def test_roots_of_several_values_per_point_as_scipy():
+    # scipy's PPoly.roots and solve on data of several values per point: an object array of
+    # y's trailing shape, one array of roots per value (we raised). Columns with no
+    # rounding-size end coefficients (see test_roots_of_lower_degree_data_have_no_rounding_roots).
+    x = np.linspace(0, 4, 9)
+    cols = [np.cos(x), np.sin(x) - 0.2, np.cos(2 * x), np.sin(3 * x) + 0.1, np.exp(-x) - 0.5, x * np.cos(x) - 0.3]
+    y = np.stack(cols, axis=-1).reshape(9, 2, 3)
+    for name, axis in (("CubicSpline", 0), ("PchipInterpolator", 2), ("Akima1DInterpolator", 1)):
+        data = np.moveaxis(y, 0, axis)
+        ours, theirs = getattr(casteljau, name)(x, data, axis=axis), getattr(si, name)(x, data, axis=axis)
+        for a, b in ((ours.roots(), theirs.roots()), (ours.solve(0.5, extrapolate=False),
+                                                      theirs.solve(0.5, extrapolate=False))):
+            assert a.dtype == b.dtype == object and a.shape == b.shape
+            for u, v in zip(a.flat, b.flat):
+                close(u, np.sort(v), rel=1e-10)
