@@ -4,8 +4,9 @@
 ``BarycentricInterpolator``. Data y of shape (n, ...) along ``axis`` is the library's
 curve of dimension m = prod(y.shape[1:]) over the parameters x (above the library's 4
 coordinates, one curve per group of at most 4 columns: interpolation is coordinate-wise,
-see _Columns); calls return scipy's shapes (x.shape + y.shape[1:], a 0-d array for 1-D data and a number). Errors
-name the arguments as scipy's callers write them (``x[3]``, ``y[2]``, ``t[3]``, ``c``, ``k``).
+see _Columns); calls return scipy's shapes (x.shape + y.shape[1:], a 0-d array for 1-D
+data and a number). Errors name the arguments as scipy's callers write them (``x[3]``,
+``y[2]``, ``t[3]``, ``c``, ``k``).
 """
 
 from __future__ import annotations
@@ -71,7 +72,7 @@ class _Columns:
     per-column sums in the barycentric formula), so the m columns are split into groups of
     at most 4, one library curve each, and the answers joined column-wise. The part of a
     PPoly's curve that it calls: evaluation, derivative, domain (and _bezier_pieces,
-    _integral, _eval_slopes below)."""
+    _integral, _hermite_ends below)."""
 
     def __init__(self, parts: list) -> None:
         self.parts = list(parts)
@@ -121,8 +122,8 @@ class _TooWide:
         if attr.startswith("__"):
             raise AttributeError(attr)
         raise Error(f"{self.field}: values of shape {self.tail} ({math.prod(self.tail)} numbers per point): this "
-                    f"{self.name} answers scipy's calls (evaluation, derivative, antiderivative, integrate), not the "
-                    f"library's curve methods, whose curves have 1 to {_MAX_DIM} coordinates")
+                    f"{self.name} answers scipy's calls (evaluation, derivative, antiderivative, integrate, "
+                    f"roots), not the library's curve methods, whose curves have 1 to {_MAX_DIM} coordinates")
 
 
 def _set_core(self: Any, curve: Any, name: str, field: str, tail: tuple) -> Any:

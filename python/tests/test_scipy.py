@@ -659,7 +659,8 @@ def test_barycentric_values_at_many_random_nodes():
 def test_barycentric_set_yi_and_add_xi():
     # Against scipy's interpolator made on all the nodes at once (scipy 1.10's own add_xi
     # flips the sign of the old nodes' weights and answers another polynomial: 12.48938
-    # for 12.48958 (KroghInterpolator's, and ours) on the case below; not the oracle).
+    # for 12.48958, KroghInterpolator's and ours, in a trial with 6 random nodes and one
+    # added; not the oracle).
     xi = np.sort(RNG.random(6))
     y = RNG.normal(size=(2, 6, 3))
     ours = casteljau.BarycentricInterpolator(xi, y, axis=1)
