@@ -2,9 +2,11 @@
 "Coming from scipy"): ``CubicSpline(x, y, bc_type=...)``, ``BSpline(t, c, k)``,
 ``make_interp_spline(x, y, k)``, ``PchipInterpolator``, ``Akima1DInterpolator``,
 ``BarycentricInterpolator``. Data y of shape (n, ...) along ``axis`` is the library's
-curve of dimension prod(y.shape[1:]) (at most 4) over the parameters x; calls return
-scipy's shapes (x.shape + y.shape[1:], a 0-d array for 1-D data and a number). Errors
-name the arguments as scipy's callers write them (``x[3]``, ``y[2]``, ``t[3]``, ``c``, ``k``).
+curve of dimension m = prod(y.shape[1:]) over the parameters x (above the library's 4
+coordinates, one curve per group of at most 4 columns: interpolation is coordinate-wise,
+see _Columns); calls return scipy's shapes (x.shape + y.shape[1:], a 0-d array for 1-D
+data and a number). Errors name the arguments as scipy's callers write them (``x[3]``,
+``y[2]``, ``t[3]``, ``c``, ``k``).
 """
 
 from __future__ import annotations
@@ -55,11 +57,84 @@ def _data(y: Any, axis: int, name: str) -> tuple[np.ndarray, tuple]:
     y = np.moveaxis(y, axis, 0)
     tail = y.shape[1:]
     m = math.prod(tail)
-    if m > _casteljau.max_dimension or m == 0:
-        raise Error(f"{name}: values of shape {tail} ({m} numbers per point) are not supported: the library's "
-                    f"curves have 1 to {_casteljau.max_dimension} coordinates (interpolate the columns in groups of "
-                    f"at most {_casteljau.max_dimension})")
+    if m == 0:
+        raise Error(f"{name}: values of shape {tail} have no numbers")
     return y.reshape(len(y), m), tail
+
+
+_MAX_DIM = _casteljau.max_dimension
+
+
+class _Columns:
+    """Values of more than the library's 4 numbers per point (scipy accepts any trailing
+    shape of y): the interpolation of each coordinate depends on that coordinate's data
+    alone (one matrix for all columns in a spline, per-column slopes in PCHIP and Akima,
+    per-column sums in the barycentric formula), so the m columns are split into groups of
+    at most 4, one library curve each, and the answers joined column-wise. The part of a
+    PPoly's curve that it calls: evaluation, derivative, domain (and _bezier_pieces,
+    _integral, _hermite_ends below)."""
+
+    def __init__(self, parts: list) -> None:
+        self.parts = list(parts)
+
+    @property
+    def dim(self) -> int:
+        return sum(p.dim for p in self.parts)
+
+    @property
+    def domain(self) -> tuple[float, float]:
+        return self.parts[0].domain
+
+    def __call__(self, t: Any, nu: int = 0) -> np.ndarray:
+        return np.concatenate([p(t, nu) for p in self.parts], axis=-1)
+
+    def derivative(self, k: int = 1) -> "_Columns":
+        return _Columns([p.derivative(k) for p in self.parts])
+
+
+def _columns(make: Any, pts: np.ndarray) -> Any:
+    """make(points, first column) for the data (n, m): one curve when m <= 4, else a
+    _Columns of one curve per group of at most 4 columns (an error's column index,
+    "points[2][1]", made the data's: "points[2][5]" in the second group)."""
+    m = pts.shape[1]
+    if m <= _MAX_DIM:
+        return make(pts, 0)
+    parts = []
+    for j in range(0, m, _MAX_DIM):
+        try:
+            parts.append(make(np.ascontiguousarray(pts[:, j:j + _MAX_DIM]), j))
+        except Error as e:
+            raise Error(re.sub(r"^(\w+\[\d+\])\[(\d+)\]", lambda g: f"{g.group(1)}[{int(g.group(2)) + j}]",
+                               str(e), count=1)) from None
+    return _Columns(parts)
+
+
+class _TooWide:
+    """The library curve under a CubicSpline or BSpline made scipy's way from more than 4
+    numbers per point: there is none (the values are a _Columns of curves), so the
+    library's own methods (length, bounds, to_json, ...) raise, naming the data, where
+    they would otherwise answer for the first 4 columns only."""
+
+    def __init__(self, name: str, field: str, tail: tuple) -> None:
+        self.name, self.field, self.tail = name, field, tail
+
+    def __getattr__(self, attr: str) -> Any:
+        if attr.startswith("__"):
+            raise AttributeError(attr)
+        raise Error(f"{self.field}: values of shape {self.tail} ({math.prod(self.tail)} numbers per point): this "
+                    f"{self.name} answers scipy's calls (evaluation, derivative, antiderivative, integrate, "
+                    f"roots), not the library's curve methods, whose curves have 1 to {_MAX_DIM} coordinates")
+
+
+def _set_core(self: Any, curve: Any, name: str, field: str, tail: tuple) -> Any:
+    """Makes self (a CubicSpline or BSpline made scipy's way) the curve built by _columns;
+    the curve to put under its PPoly."""
+    self._json = None
+    if isinstance(curve, _Columns):
+        self._c = _TooWide(name, field, tail)
+        return curve
+    self._c = curve._c
+    return Curve._wrap(self._c)
 
 
 class PPoly:
@@ -146,6 +221,15 @@ class PPoly:
                 out[k - j, i] = a / h**j
         return out.reshape((k + 1, len(pieces)) + self._tail)
 
+    def _column(self, j: int) -> "PPoly":
+        """The 1-D PPoly of the flat column j of the values (from the exact Bezier pieces)."""
+        breaks, pieces = _bezier_pieces(self._curve)
+        segs = [{"type": "bezier", "points": P[:, j:j + 1]} for P in pieces]
+        curve = Curve.from_json({"type": "path", "segments": segs, "breaks": breaks})
+        out = PPoly(curve, (), self.extrapolate, 0, _column_ends(self._ends_now(), j))
+        out._lo, out._hi, out._clip_integral = self._lo, self._hi, self._clip_integral
+        return out
+
     def derivative(self, nu: int = 1) -> "PPoly":
         ends = None
         own = self._ends
@@ -166,7 +250,9 @@ class PPoly:
             # powers below nu 0 on the first piece and, on the last, the Taylor
             # coefficients of the antiderivative at its left break (continuity).
             ends = _LazyEnds("antiderivative", own, nu, c)
-        return PPoly(c, self._tail, self.extrapolate, self.axis, ends)
+        # extrapolate='periodic' becomes False (the integral is not periodic), as scipy's.
+        ext = False if self.extrapolate == "periodic" else self.extrapolate
+        return PPoly(c, self._tail, ext, self.axis, ends)
 
     def integrate(self, a: float, b: float, extrapolate: Any = None) -> np.ndarray:
         ext = self.extrapolate if extrapolate is None else extrapolate
@@ -185,15 +271,18 @@ class PPoly:
         return self.solve(0.0, discontinuity, extrapolate)
 
     def solve(self, y: float = 0.0, discontinuity: bool = True, extrapolate: Any = None) -> np.ndarray:
-        """scipy's PPoly.solve for 1-D data: the x where the function equals y, ascending
-        (the registry's solve command on the domain; with extrapolate=True, also those of
-        the end pieces continued beyond it)."""
-        if self._tail not in ((), (1,)):
-            raise Error("y: solve and roots need 1-D data (values of shape (n,)), got values of shape "
-                        + str(self._tail))
+        """scipy's PPoly.solve: the x where the function equals y, ascending (the registry's
+        solve command on the domain; with extrapolate=True, also those of the end pieces
+        continued beyond it); for data of several values per point, scipy's object array
+        of y's trailing shape holding each value's roots."""
         y = float(y)
         if not math.isfinite(y):
             raise Error(f"y: must be a finite number, got {y}")
+        if self._tail != ():
+            out = np.empty(self._tail, dtype=object)
+            for j in range(out.size):
+                out.flat[j] = self._column(j).solve(y, discontinuity, extrapolate)
+            return out
         ext = self.extrapolate if extrapolate is None else extrapolate
         r = self._curve.solve(y, 0)
         roots = list(np.asarray(getattr(r, "t"), dtype=np.float64))
@@ -206,6 +295,16 @@ class PPoly:
         for v, stretch in sorted([(v, False) for v in roots] + [(a, True) for a in starts]):
             out += [v, math.nan] if stretch else [v]
         return np.array(out, dtype=np.float64)
+
+
+def _column_ends(ends: tuple | None, j: int) -> tuple | None:
+    """PPoly._ends for the column j alone."""
+    if ends is None:
+        return None
+    if ends[0] == "power":
+        return ("power",) + tuple((x0, c[:, j:j + 1]) for x0, c in ends[1:])
+    _, t, c, k = ends
+    return ("bspline", t, c[:, j:j + 1], k)
 
 
 class _LazyEnds:
@@ -316,8 +415,9 @@ def _hermite_ends(curve: Curve, x: np.ndarray, y: np.ndarray) -> tuple:
     own slopes at the params), as scipy computes them."""
     n = len(x)
     idx = [0, 1, n - 2, n - 1]
-    d = np.asarray(_casteljau.run("eval", {"curve": curve, "t": x[idx], "derivatives": 1})["derivatives"],
-                   dtype=np.float64).reshape(4, -1)
+    parts = curve.parts if isinstance(curve, _Columns) else [curve]
+    d = np.concatenate([np.asarray(_casteljau.run("eval", {"curve": c, "t": x[idx], "derivatives": 1})["derivatives"],
+                                   dtype=np.float64).reshape(4, -1) for c in parts], axis=1)
 
     def coef(i: int, d0: np.ndarray, d1: np.ndarray) -> tuple:
         dx = x[i + 1] - x[i]
@@ -328,7 +428,15 @@ def _hermite_ends(curve: Curve, x: np.ndarray, y: np.ndarray) -> tuple:
     return ("power", coef(0, d[0], d[1]), coef(n - 2, d[2], d[3]))
 
 
-def _bezier_pieces(c: Curve) -> tuple[list, list]:
+def _bezier_pieces(c: Any) -> tuple[list, list]:
+    if isinstance(c, _Columns):
+        # The groups of columns share the breaks and the pieces' degrees (the same x, knots
+        # and construction): their pieces side by side.
+        each = [_bezier_pieces(p) for p in c.parts]
+        breaks = each[0][0]
+        if any(len(b) != len(breaks) or any(len(P) != len(Q) for P, Q in zip(ps, each[0][1])) for b, ps in each):
+            raise Error("curve: the groups of columns have different pieces")
+        return breaks, [np.hstack(group) for group in zip(*(ps for _, ps in each))]
     j = c.to_bezier().to_json()
     for s in j["segments"]:
         if s["type"] != "bezier":
@@ -336,10 +444,12 @@ def _bezier_pieces(c: Curve) -> tuple[list, list]:
     return j["breaks"], [np.array(s["points"], dtype=np.float64) for s in j["segments"]]
 
 
-def _integral(c: Curve) -> Curve:
+def _integral(c: Any) -> Any:
     """The antiderivative that is 0 at the domain's start, as a path of Bezier pieces: on
     the break interval of width h a degree-n piece b_0..b_n integrates to the degree n + 1
     piece A_0 = F(start), A_(j+1) = A_j + h b_j / (n + 1)."""
+    if isinstance(c, _Columns):
+        return _Columns([_integral(p) for p in c.parts])
     breaks, pieces = _bezier_pieces(c)
     segs = []
     start = np.zeros(pieces[0].shape[1])
@@ -412,7 +522,21 @@ class _ScipyCurve:
         # the PPoly view): a pickled CubicSpline(x, y) still answers in scipy's shapes.
         if self._sp is None:
             return Curve.__reduce__(self)
+        if isinstance(self._c, _TooWide):  # more than 4 numbers per point: scipy's state alone
+            return (_restore_wide, (type(self), vars(self._c), self.__dict__))
         return (_restore, (self._c.to_json(), self.__dict__))
+
+    def __repr__(self) -> str:
+        if isinstance(self._c, _TooWide):
+            return f"<casteljau.{type(self).__name__} made scipy's way, values of shape {self._c.tail}>"
+        return Curve.__repr__(self)
+
+    def __eq__(self, other: object) -> bool:
+        if isinstance(self._c, _TooWide) or isinstance(getattr(other, "_c", None), _TooWide):
+            return self is other
+        return Curve.__eq__(self, other)
+
+    __hash__ = None  # type: ignore[assignment]
 
     def __call__(self, x: Any, nu: int = 0, extrapolate: Any = None) -> np.ndarray:
         if self._sp is None:
@@ -439,6 +563,14 @@ class _ScipyCurve:
         if self._sp is None:
             return super().solve(*args, **kw)
         return self._sp.solve(*args, **kw)
+
+
+def _restore_wide(cls: type, core: dict, state: dict) -> Any:
+    c = object.__new__(cls)
+    c._c = _TooWide(**core)
+    c._json = None
+    c.__dict__.update(state)
+    return c
 
 
 def _restore(text: str, state: dict) -> Curve:
@@ -507,18 +639,43 @@ def _cubic_init(self: Any, *args: Any, **kw: Any) -> None:
     if extrapolate is None:
         extrapolate = "periodic" if bc == "periodic" else True
     x = np.asarray(a["x"], dtype=np.float64)
+    m = pts.shape[1]
+    one_not_a_knot = isinstance(bc, (tuple, list)) and len(bc) == 2 and sum(
+        isinstance(b, str) and b == "not-a-knot" for b in bc) == 1
+
+    def make(p: np.ndarray, j: int) -> Curve:
+        # The end values of bc_type for these columns of the data (all of them when m <= 4).
+        b = _bc_columns(bc, m, slice(j, j + p.shape[1])) if m > _MAX_DIM else bc
+        if one_not_a_knot:
+            b = _one_not_a_knot(x, p, b)
+        return _CUBIC_BASE(params=x, points=p, **_bc(b, p.shape[1]))
+
     try:
-        if isinstance(bc, (tuple, list)) and len(bc) == 2 and sum(isinstance(b, str) and b == "not-a-knot"
-                                                                    for b in bc) == 1:
-            bc = _one_not_a_knot(x, pts, bc)
-        _CUBIC_BASE.__init__(self, params=x, points=pts, **_bc(bc, pts.shape[1]))
+        curve = _set_core(self, _columns(make, pts), "CubicSpline", "y", tail)
     except Error as e:
         raise _renamed(e, {"params": "x", "points": "y", "boundary": "bc_type", "start_derivative": "bc_type",
                            "end_derivative": "bc_type"}, tail == ()) from None
-    curve = Curve._wrap(self._c)
     self.axis = _axis(a["y"], a.get("axis", 0))
     self._sp = PPoly(curve, tail, extrapolate, self.axis, _LazyEnds("hermite", curve, x, pts))
     self.x = np.asarray(a["x"], dtype=np.float64)
+
+
+def _bc_columns(bc_type: Any, m: int, cols: slice) -> Any:
+    """scipy's bc_type for the columns cols of data with m numbers per point: each
+    (order, value) end's value (a number or y's trailing shape) flattened as the data
+    and cut to those columns; strings as they are."""
+    if not isinstance(bc_type, (tuple, list)) or len(bc_type) != 2:
+        return bc_type
+    out = []
+    for b in bc_type:
+        if isinstance(b, str) or not isinstance(b, (tuple, list)) or len(b) != 2:
+            out.append(b)
+            continue
+        v = np.asarray(b[1], dtype=np.float64).reshape(-1)
+        if v.size not in (1, m):
+            raise Error(f"bc_type: an end's value must be a number or have y's {m} numbers per point, got {v.size}")
+        out.append((b[0], np.broadcast_to(v, (m,))[cols]))
+    return tuple(out)
 
 
 def _one_not_a_knot(x: np.ndarray, pts: np.ndarray, bc: Any) -> tuple:
@@ -595,12 +752,13 @@ def _bspline_init(self: Any, *args: Any, **kw: Any) -> None:
     if n >= 1 and len(pts) > n:
         pts = pts[:n]  # scipy ignores the coefficients beyond len(t) - k - 1
     try:
-        _BSPLINE_BASE.__init__(self, degree=int(k), knots=t, points=pts)
+        curve = _set_core(self, _columns(lambda p, j: _BSPLINE_BASE(degree=int(k), knots=t, points=p), pts),
+                          "BSpline", "c", tail)
     except Error as e:
         raise _renamed(e, {"knots": "t", "points": "c", "degree": "k"}, tail == ()) from None
     ext = a.get("extrapolate", True)
     self.axis = _axis(a["c"], a.get("axis", 0))
-    self._sp = PPoly(Curve._wrap(self._c), tail, ext, self.axis, ("bspline", t, pts, int(k)))
+    self._sp = PPoly(curve, tail, ext, self.axis, ("bspline", t, pts, int(k)))
     self._sp._clip_integral = True
     # scipy's attributes: c with the interpolation axis first.
     self.t, self.c, self.k = t, np.moveaxis(np.asarray(a["c"], dtype=np.float64), self.axis, 0), int(k)
@@ -848,7 +1006,7 @@ def _hermite_interpolator(rule: str, default_extrapolate: bool, name: str) -> ty
         pts, tail = _data(y, axis, "y")
         xa = np.asarray(x, dtype=np.float64)
         try:
-            curve = _CLASSES["hermite"](params=xa, points=pts, tangent_rule=rule)
+            curve = _columns(lambda p, j: _CLASSES["hermite"](params=xa, points=p, tangent_rule=rule), pts)
         except Error as e:
             raise _renamed(e, {"params": "x", "points": "y"}, tail == ()) from None
         PPoly.__init__(self, curve, tail, default_extrapolate if extrapolate is None else extrapolate, _axis(y, axis),
@@ -863,28 +1021,112 @@ Akima1DInterpolator = _hermite_interpolator("akima", False, "Akima1DInterpolator
 
 
 class BarycentricInterpolator(PPoly):
-    """scipy's BarycentricInterpolator(xi, yi, axis=0): the library's lagrange curve, the
-    polynomial through the points at any number of them, evaluated by the second
+    """scipy's BarycentricInterpolator(xi, yi=None, axis=0): the library's lagrange curve,
+    the polynomial through the points at any number of them, evaluated by the second
     barycentric formula with weights computed once (as scipy's; stable on well-spread
     nodes such as Chebyshev points, where the equispaced interpolant itself is not).
+    scipy's ``set_yi``, ``add_xi`` and (scipy 1.11's) ``derivative(x, der=1)`` and
+    ``derivatives(x, der=None)``; the attributes ``xi``, ``yi`` (the values as (n, r)),
+    ``n`` and ``r``.
 
     >>> import numpy as np, casteljau
     >>> x = np.cos(np.linspace(0, np.pi, 40))  # 40 Chebyshev points
     >>> p = casteljau.BarycentricInterpolator(x, np.exp(x))
     >>> bool(abs(p(0.3) - np.exp(0.3)) < 1e-13)
     True
+    >>> p.derivatives(0.0, der=3)  # exp and its derivatives at 0
+    array([1., 1., 1.])
     """
 
     def __init__(self, xi: Any, yi: Any = None, axis: int = 0) -> None:
+        xi = np.asarray(xi, dtype=np.float64)
+        if xi.ndim != 1:
+            raise Error(f"xi: must be a 1-D array, got shape {xi.shape}")
+        self.xi = xi
+        self.n, self.r = len(xi), None
+        self.yi = None
+        self.axis = axis
+        self._curve = None
+        self.set_yi(yi, axis)
+
+    def set_yi(self, yi: Any, axis: Any = None) -> None:
+        """New values yi at the same nodes (None: none until given again); axis: the
+        interpolation axis of yi (None: the one given before)."""
         if yi is None:
-            raise Error("yi: required (set_yi is not supported yet)")
+            self.yi, self.r, self._curve = None, None, None
+            return
+        if axis is None:
+            axis = self.axis
         pts, tail = _data(yi, axis, "yi")
+        if len(pts) != len(self.xi):
+            raise Error(f"yi: {len(pts)} values along axis {axis} but xi has {len(self.xi)}")
+        self._set(self.xi, pts, tail, _axis(yi, axis))
+
+    def _set(self, xi: np.ndarray, pts: np.ndarray, tail: tuple, axis: int) -> None:
         try:
-            curve = _CLASSES["lagrange"](params=np.asarray(xi, dtype=np.float64), points=pts)
+            curve = _columns(lambda p, j: _CLASSES["lagrange"](params=xi, points=p), pts)
         except Error as e:
             raise _renamed(e, {"params": "xi", "points": "yi"}, tail == ()) from None
-        super().__init__(curve, tail, True, _axis(yi, axis))
-        self.xi = np.asarray(xi, dtype=np.float64)
+        PPoly.__init__(self, curve, tail, True, axis)
+        self.xi, self.yi = xi, pts
+        self.n, self.r = pts.shape
+
+    def add_xi(self, xi: Any, yi: Any = None) -> None:
+        """More nodes xi (1-D) with their values yi (the interpolation axis where the
+        constructor's was, the same other axes), given if and only if the interpolator has
+        values (scipy's rule)."""
+        xi = np.asarray(xi, dtype=np.float64).reshape(-1)
+        if yi is None:
+            if self.yi is not None:
+                raise Error("yi: required: the interpolator has values, give those of the new nodes (scipy's rule)")
+            self.xi = np.concatenate([self.xi, xi])
+            self.n = len(self.xi)
+            return
+        if self.yi is None:
+            raise Error("yi: the interpolator has no values to add to (give them with set_yi first)")
+        y = np.asarray(yi, dtype=np.float64)
+        if y.ndim != len(self._tail) + 1:
+            raise Error(f"yi: must have {len(self._tail) + 1} axes (values of shape {self._tail} along axis "
+                        f"{self.axis}), got shape {y.shape}")
+        y = np.moveaxis(y, self.axis, 0)
+        if y.shape[1:] != self._tail:
+            raise Error(f"yi: values of shape {y.shape[1:]} along axis {self.axis}, the interpolator's are "
+                        f"{self._tail}")
+        if len(y) != len(xi):
+            raise Error(f"yi: {len(y)} values along axis {self.axis} but xi has {len(xi)}")
+        self._set(np.concatenate([self.xi, xi]), np.vstack([self.yi, y.reshape(len(y), -1)]), self._tail, self.axis)
+
+    def _check(self) -> None:
+        if self._curve is None:
+            raise Error("yi: not set (give the values to the constructor or to set_yi)")
 
     def __call__(self, x: Any) -> np.ndarray:  # type: ignore[override]
+        self._check()
         return super().__call__(x)
+
+    def derivative(self, x: Any, der: int = 1) -> np.ndarray:  # type: ignore[override]
+        """The order-der derivative at x, in the shape of a call (scipy 1.11's)."""
+        self._check()
+        if isinstance(der, bool) or not isinstance(der, (int, np.integer)) or der < 0:
+            raise Error(f"der: must be an integer >= 0, got {der!r}")
+        if der >= self.n:  # above the polynomial's degree
+            return np.zeros_like(super().__call__(x))
+        return super().__call__(x, nu=int(der))
+
+    def derivatives(self, x: Any, der: Any = None) -> np.ndarray:
+        """The derivatives of orders 0 to der - 1 at x (der None: n of them, all that can be
+        nonzero), stacked first: shape (der,) + the shape of a call (scipy 1.11's)."""
+        self._check()
+        if der is None:
+            der = self.n
+        if isinstance(der, bool) or not isinstance(der, (int, np.integer)) or der < 0:
+            raise Error(f"der: must be an integer >= 0 or None, got {der!r}")
+        first = super().__call__(x)
+        out = np.zeros((int(der),) + first.shape)
+        for k in range(min(int(der), self.n)):
+            out[k] = first if k == 0 else super().__call__(x, nu=k)
+        return out
+
+    def antiderivative(self, nu: int = 1) -> PPoly:  # not scipy's (none there): the library's
+        self._check()
+        return super().antiderivative(nu)

@@ -180,12 +180,24 @@ def test_derivatives_have_scipys_types():
     close(d.derivative()(XS), e.derivative()(XS))
 
 
-def test_more_than_four_values_per_point_are_refused():
-    # The library's curves have dimension 1..4: five values per point raise, naming y.
+def test_more_than_four_values_per_point_name_the_data():
+    # More than 4 numbers per point: scipy's classes take them (one library curve per group
+    # of at most 4 columns, tested against scipy below); a bad number names its place in
+    # the data, the library's own curve methods and classes refuse them, naming y.
+    y = np.zeros((5, 7))
+    y[2, 5] = np.nan
+    for make in (casteljau.CubicSpline, casteljau.PchipInterpolator):
+        with pytest.raises(casteljau.Error, match=r"^y\[2\]\[5\]: must be a finite number"):
+            make(np.arange(5.0), y)
+    with pytest.raises(casteljau.Error, match=r"^c\[2\]\[5\]: must be a finite number"):
+        casteljau.BSpline(np.r_[0, 0, 0, 1, 2, 3, 3, 3.0], y, 2)
+    s = casteljau.CubicSpline(X, RNG.random((9, 5)))
     with pytest.raises(casteljau.Error, match=r"^y: values of shape \(5,\) \(5 numbers per point\)"):
-        casteljau.CubicSpline(X, RNG.random((9, 5)))
+        s.length()
     with pytest.raises(casteljau.Error, match=r"^c: values of shape \(2, 3\)"):
-        casteljau.BSpline(np.r_[0, 0, 1, 2, 2], RNG.random((3, 2, 3)), 1)
+        casteljau.BSpline(np.r_[0, 0, 1, 2, 2], RNG.random((3, 2, 3)), 1).to_json()
+    with pytest.raises(casteljau.Error, match=r"^points\[0\]: point has 5 coordinates"):
+        casteljau.Bezier(np.zeros((3, 5)))  # the geometric classes: dimension 1..4
 
 
 def test_bspline_antiderivative_is_a_bspline():
@@ -501,3 +513,194 @@ def test_barycentric_interpolator_at_many_nodes(n):
     xe = np.linspace(0, 1, 25)
     ours, theirs = casteljau.BarycentricInterpolator(xe, np.sin(xe)), si.BarycentricInterpolator(xe, np.sin(xe))
     close(ours(np.linspace(0.3, 0.7, 9)), theirs(np.linspace(0.3, 0.7, 9)))
+
+
+# Session 13 (py2): more than 4 values per point, and BarycentricInterpolator's
+# derivative, derivatives, set_yi and add_xi.
+
+WIDE = [((9, 7), 0), ((9, 2, 3, 2), 0), ((2, 9, 3, 2), 1), ((2, 3, 2, 9), -1)]
+
+
+def tail_of(y, axis):
+    return np.moveaxis(y, axis, 0).shape[1:]
+
+
+@pytest.mark.parametrize("shape,axis", WIDE, ids=[f"{s}-axis{a}" for s, a in WIDE])
+def test_wide_values_as_scipy(shape, axis):
+    # y with 7 and 12 numbers per point (the library's curves have at most 4): values,
+    # derivatives, antiderivatives, integrals and coefficients against scipy 1.10, shapes
+    # included. not-a-knot's derivatives at 1e-10: the library's slopes (see above).
+    y = RNG.normal(size=shape)
+    tail = tail_of(y, axis)
+    yp = np.moveaxis(y.copy(), axis, 0)
+    yp[-1] = yp[0]
+    yp = np.moveaxis(yp, 0, axis)
+    inside = np.linspace(X[0], X[-1], 23)
+    for bc in ("not-a-knot", "natural", "clamped", "periodic", ((1, RNG.normal(size=tail)), (2, RNG.normal(size=tail))),
+               ("not-a-knot", (1, RNG.normal(size=tail)))):
+        data = yp if isinstance(bc, str) and bc == "periodic" else y
+        ours, theirs = (m.CubicSpline(X, data, axis=axis, bc_type=bc) for m in (casteljau, si))
+        rel = 1e-10 if "not-a-knot" in bc else REL
+        close(ours(XS), theirs(XS))
+        close(ours(XS, 1), theirs(XS, 1), rel=rel)
+        close(ours.c, theirs.c, rel=rel)
+        close(ours.derivative()(XS), theirs.derivative()(XS), rel=rel)
+        close(ours.antiderivative()(inside), theirs.antiderivative()(inside))
+        close(ours.integrate(X[1], X[-2]), theirs.integrate(X[1], X[-2]))
+    for name in ("PchipInterpolator", "Akima1DInterpolator"):
+        ours, theirs = getattr(casteljau, name)(X, y, axis=axis), getattr(si, name)(X, y, axis=axis)
+        close(ours(XS), theirs(XS))  # Akima: NaN outside, both
+        close(ours.derivative()(inside), theirs.derivative()(inside))
+        close(ours.integrate(X[1], X[-2]), theirs.integrate(X[1], X[-2]))
+    for k in (0, 1, 2, 3, 5):
+        ours, theirs = casteljau.make_interp_spline(X, y, k=k, axis=axis), si.make_interp_spline(X, y, k=k, axis=axis)
+        close(ours(XS), theirs(XS))
+        if k:
+            close(ours.derivative()(XS), theirs.derivative()(XS))
+            close(ours.antiderivative()(inside), theirs.antiderivative()(inside))
+            close(ours.integrate(X[1], X[-2]), theirs.integrate(X[1], X[-2]))
+    ours, theirs = (m.make_interp_spline(X, y, k=3, bc_type="natural", axis=axis) for m in (casteljau, si))
+    close(ours(XS), theirs(XS))
+    close(ours.c, theirs.c)
+    t = np.r_[0, 0.5, 1, 2, 3.5, 4, 5, 6, 7.5]  # unclamped: 5 coefficients along axis
+    c = np.moveaxis(RNG.normal(size=(5,) + tail), 0, axis)
+    ours, theirs = casteljau.BSpline(t, c, 3, axis=axis), si.BSpline(t, c, 3, axis=axis)
+    xs = np.linspace(0, 7, 29)
+    for nu in range(3):
+        close(ours(xs, nu), theirs(xs, nu))
+    close(ours.antiderivative()(xs), theirs.antiderivative()(xs))
+    close(ours.integrate(1.5, 5.5), theirs.integrate(1.5, 5.5))
+    # Inside the nodes' hull: the degree-8 polynomial on random nodes (see above).
+    ours, theirs = casteljau.BarycentricInterpolator(X, y, axis=axis), si.BarycentricInterpolator(X, y, axis=axis)
+    close(ours(inside), theirs(inside), rel=1e-9)
+    import pickle
+
+    again = pickle.loads(pickle.dumps(casteljau.CubicSpline(X, y, axis=axis)))
+    assert type(again) is casteljau.CubicSpline
+    close(again(XS), si.CubicSpline(X, y, axis=axis)(XS))
+
+
+def test_periodic_antiderivative_does_not_extrapolate_as_scipy():
+    # scipy's PPoly.antiderivative: extrapolate='periodic' becomes False (NaN outside); ours
+    # continued it periodically.
+    xp = np.linspace(0, 6, 9)
+    yp = np.sin(xp)
+    yp[-1] = yp[0]
+    a, b = (m.CubicSpline(xp, yp, bc_type="periodic").antiderivative() for m in (casteljau, si))
+    assert a.extrapolate is False and b.extrapolate is False
+    close(a([-1.0, 3.0, 7.0]), b([-1.0, 3.0, 7.0]))
+
+
+def lebesgue(xi, x):
+    """The Lebesgue function sum |l_i(x)| of the nodes xi at x (numpy, from the weights
+    1 / prod (x_i - x_j)): the factor by which rounding in the data or the formula can grow."""
+    w = np.array([1.0 / np.prod(xi[i] - np.delete(xi, i)) for i in range(len(xi))])
+    d = x[:, None] - xi[None, :]
+    d[d == 0] = np.finfo(float).tiny
+    return np.abs(w / d).sum(axis=1) / np.abs((w / d).sum(axis=1))
+
+
+def test_barycentric_derivatives_as_krogh():
+    # scipy 1.10's BarycentricInterpolator has no derivatives (scipy 1.11's does, with the
+    # shapes of KroghInterpolator's): the same polynomial's derivatives by scipy's
+    # KroghInterpolator (Newton form) on 8 random nodes, all orders (der=None: n of them),
+    # shapes for scalar, vector and 2-D x and axis=1, orders beyond the degree 0.
+    xi = np.sort(RNG.random(8)) * 4
+    yi = RNG.normal(size=(8, 2))
+    ours, theirs = casteljau.BarycentricInterpolator(xi, yi), si.KroghInterpolator(xi, yi)
+    xq = np.linspace(-0.5, 4.5, 13)
+    a, b = ours.derivatives(xq), theirs.derivatives(xq)
+    assert a.shape == b.shape == (8, 13, 2)
+    for k in range(8):  # each order against its own size (the 7th is a constant near 1e4)
+        close(a[k], b[k], rel=1e-13 * 10**k)
+    assert ours.derivatives(1.3, der=10).shape == theirs.derivatives(1.3, der=10).shape == (10, 2)
+    assert not ours.derivatives(1.3, der=10)[8:].any()
+    close(ours.derivative(xq, 2), theirs.derivative(xq, 2), rel=1e-11)
+    assert not ours.derivative(xq, 9).any() and ours.derivative(xq, 9).shape == (13, 2)
+    y3 = RNG.normal(size=(2, 8, 3))
+    ours, theirs = casteljau.BarycentricInterpolator(xi, y3, axis=1), si.KroghInterpolator(xi, y3, axis=1)
+    xq2 = xq[:12].reshape(3, 4)
+    for x in (xq2, 1.7):
+        a, b = ours.derivatives(x, der=3), theirs.derivatives(x, der=3)
+        assert a.shape == b.shape
+        close(a, b, rel=1e-11)
+        close(ours.derivative(x), theirs.derivative(x), rel=1e-12)
+    with pytest.raises(casteljau.Error, match=r"^der: must be an integer >= 0"):
+        ours.derivative(0.5, -1)
+
+
+@pytest.mark.parametrize("n", [40, 120])
+def test_barycentric_derivatives_at_many_chebyshev_nodes(n):
+    # The interpolant of exp on n Chebyshev points is exp to rounding, so are its
+    # derivatives up to rounding amplified by about n^2 per order (Markov's inequality):
+    # orders 0..2 against exp within 4 eps n^(2k) relative (measured: at most 1 eps n^(2k)).
+    xi = np.cos(np.linspace(0, np.pi, n))
+    p = casteljau.BarycentricInterpolator(xi, np.exp(xi))
+    xq = np.linspace(-1, 1, 21)  # outside, the rounding grows exponentially with n
+    d = p.derivatives(xq, der=3)
+    eps = np.finfo(float).eps
+    for k in range(3):
+        np.testing.assert_allclose(d[k], np.exp(xq), rtol=4 * eps * max(n ** (2 * k), 30))
+    close(p.derivative(xq, 1), d[1], rel=0)
+
+
+def test_barycentric_values_at_many_random_nodes():
+    # 30 random nodes: scipy and ours evaluate the same polynomial with rounding bounded by
+    # about n eps times the Lebesgue function (Higham 2004, the second barycentric formula
+    # on these nodes); it is computed here from the nodes and sets each point's tolerance.
+    xi = np.sort(RNG.random(30)) * 2 - 1
+    yi = np.cos(3 * xi)
+    xq = np.linspace(-1, 1, 41)
+    ours, theirs = casteljau.BarycentricInterpolator(xi, yi)(xq), si.BarycentricInterpolator(xi, yi)(xq)
+    bound = 4 * 30 * np.finfo(float).eps * lebesgue(xi, xq) * np.max(np.abs(yi))
+    assert np.all(np.abs(ours - theirs) <= bound), np.max(np.abs(ours - theirs) / bound)
+
+
+def test_barycentric_set_yi_and_add_xi():
+    # Against scipy's interpolator made on all the nodes at once (scipy 1.10's own add_xi
+    # flips the sign of the old nodes' weights and answers another polynomial: 12.48938
+    # for 12.48958, KroghInterpolator's and ours, in a trial with 6 random nodes and one
+    # added; not the oracle).
+    xi = np.sort(RNG.random(6))
+    y = RNG.normal(size=(2, 6, 3))
+    ours = casteljau.BarycentricInterpolator(xi, y, axis=1)
+    x2, y2 = RNG.random(3) + 1, RNG.normal(size=(2, 3, 3))
+    ours.add_xi(x2, y2)
+    theirs = si.BarycentricInterpolator(np.r_[xi, x2], np.concatenate([y, y2], axis=1), axis=1)
+    xq = np.linspace(0, 2, 7).reshape(7, 1)
+    assert ours(xq).shape == theirs(xq).shape == (2, 7, 1, 3)
+    close(ours(xq), theirs(xq), rel=1e-9)
+    assert (ours.n, ours.r) == (9, 6)
+    y3 = RNG.normal(size=(9, 5))  # new values, another axis and shape
+    ours.set_yi(y3, axis=0)
+    close(ours(xq), si.BarycentricInterpolator(np.r_[xi, x2], y3)(xq), rel=1e-9)
+    # Nodes first, values later (scipy's order of calls).
+    p = casteljau.BarycentricInterpolator(xi)
+    with pytest.raises(casteljau.Error, match=r"^yi: not set"):
+        p(0.5)
+    p.add_xi([2.0])
+    p.set_yi(np.arange(7.0) ** 2)
+    close(p(np.r_[0.5, 1.5]), si.KroghInterpolator(np.r_[xi, 2.0], np.arange(7.0) ** 2)(np.r_[0.5, 1.5]), rel=1e-12)
+    with pytest.raises(casteljau.Error, match=r"^yi: required"):
+        p.add_xi([3.0])
+    with pytest.raises(casteljau.Error, match=r"^yi: must have 1 axes \(values of shape \(\) along axis 0\)"):
+        p.add_xi([3.0], [[1.0, 2.0]])
+    with pytest.raises(casteljau.Error, match=r"^yi: 7 values along axis 0 but xi has 6"):
+        casteljau.BarycentricInterpolator(xi).set_yi(np.arange(7.0))
+
+
+def test_roots_of_several_values_per_point_as_scipy():
+    # scipy's PPoly.roots and solve on data of several values per point: an object array of
+    # y's trailing shape, one array of roots per value (we raised). Columns with no
+    # rounding-size end coefficients (see test_roots_of_lower_degree_data_have_no_rounding_roots).
+    x = np.linspace(0, 4, 9)
+    cols = [np.cos(x), np.sin(x) - 0.2, np.cos(2 * x), np.sin(3 * x) + 0.1, np.exp(-x) - 0.5, x * np.cos(x) - 0.3]
+    y = np.stack(cols, axis=-1).reshape(9, 2, 3)
+    for name, axis in (("CubicSpline", 0), ("PchipInterpolator", 2), ("Akima1DInterpolator", 1)):
+        data = np.moveaxis(y, 0, axis)
+        ours, theirs = getattr(casteljau, name)(x, data, axis=axis), getattr(si, name)(x, data, axis=axis)
+        for a, b in ((ours.roots(), theirs.roots()), (ours.solve(0.5, extrapolate=False),
+                                                      theirs.solve(0.5, extrapolate=False))):
+            assert a.dtype == b.dtype == object and a.shape == b.shape
+            for u, v in zip(a.flat, b.flat):
+                close(u, np.sort(v), rel=1e-10)
