@@ -18,6 +18,12 @@ Oracles, all independent of the program:
   here, crossings counted by sign changes on a graph surface;
 - properties: splitting, elevation, knot insertion and the Bézier patches leave the
   surface unchanged; interpolation passes through its data.
+- curvatures of random surfaces of the four types: partials from the exact derivatives of
+  the basis and the quotient rule in mpmath at 40 digits, then the contract's formulas
+  (SurfaceCurvatureOracleTest);
+- seeded random properties of every type (SurfacePropertyTest): partition of unity, affine
+  invariance, knot insertion, degree elevation and split on dense grids, through the program
+  and the evaluator here; each check shown to fail when one control point moves by 1e-9.
 
 Usage: test_surfaces.py PATH_TO_CASTELJAU [unittest options]
 """
@@ -923,6 +929,349 @@ class SurfaceHelpTest(CliTest):
             i = next(i for i, l in enumerate(lines) if l.strip().startswith("echo '"))
             request = lines[i].strip()[len("echo '"):lines[i].strip().index("' |")]
             self.assertEqual(json.loads(test_cli.run(c, text=request)[1]), json.loads(lines[i + 1]), c)
+
+
+# ---------------------------------------------------------------------------------------
+# Session 13: an mpmath oracle for the curvatures of random surfaces (issue 19, item 23)
+# and seeded property checks on random surfaces of every type (item 24).
+
+KINDS = ("bezier_surface", "rational_bezier_surface", "bspline_surface", "nurbs_surface")
+
+
+def random_knots(rng, p, n, a, b):
+    """A clamped knot vector on [a, b] for n control points of degree p: random interior
+    knots, now and then one of multiplicity 2..p."""
+    inner, left = [], n - p - 1
+    while left > 0:
+        m = rng.randint(2, min(p, left)) if p > 1 and left > 1 and rng.random() < 0.3 else 1
+        inner += [rng.uniform(a + 0.05 * (b - a), b - 0.05 * (b - a))] * m
+        left -= m
+    return [a] * (p + 1) + sorted(inner) + [b] * (p + 1)
+
+
+def random_surface(rng, kind, dim=3, max_degree=4):
+    """A random surface of the kind: degrees 1..max_degree, B-spline domains anywhere in
+    [-2, 4], points in [-2, 2]^dim, weights in [0.3, 3]."""
+    p, q = rng.randint(1, max_degree), rng.randint(1, max_degree)
+    s = {"type": kind}
+    if kind in ("bezier_surface", "rational_bezier_surface"):
+        rows, cols = p + 1, q + 1
+    else:
+        rows, cols = p + 1 + rng.randint(0, 3), q + 1 + rng.randint(0, 3)
+        a, c = rng.uniform(-2, 1), rng.uniform(-2, 1)
+        s["degree"] = [p, q]
+        s["knots"] = [random_knots(rng, p, rows, a, a + rng.uniform(0.5, 3)),
+                      random_knots(rng, q, cols, c, c + rng.uniform(0.5, 3))]
+    s["points"] = [[[rng.uniform(-2, 2) for _ in range(dim)] for _ in range(cols)] for _ in range(rows)]
+    if kind in ("rational_bezier_surface", "nurbs_surface"):
+        s["weights"] = [[rng.uniform(0.3, 3) for _ in range(cols)] for _ in range(rows)]
+    return s
+
+
+def domain(s):
+    p, q, U, V = knots_of(s)
+    return U[p], U[len(U) - p - 1], V[q], V[len(V) - q - 1]
+
+
+def basis_derivative(T, p, i, t, k):
+    """d^k/dt^k N_{i,p}(t) by differentiating the Cox-de Boor recursion k times:
+    p (N^(k-1)_{i,p-1} / (T[i+p] - T[i]) - N^(k-1)_{i+1,p-1} / (T[i+p+1] - T[i+1])), 0/0 = 0."""
+    if k == 0:
+        return basis(T, p, i, t)
+    if p == 0:
+        return 0
+    a = 0 if T[i + p] == T[i] else basis_derivative(T, p - 1, i, t, k - 1) / (T[i + p] - T[i])
+    b = 0 if T[i + p + 1] == T[i + 1] else basis_derivative(T, p - 1, i + 1, t, k - 1) / (T[i + p + 1] - T[i + 1])
+    return p * (a - b)
+
+
+def fundamental_forms_mp(s, u, v, dps=40):
+    """The partials of S up to order 2 (the exact derivatives of the basis above and the
+    quotient rule on A / W), the unit normal, E, F, G, L, M, N and the curvatures K, H,
+    k1 >= k2 by the contract's formulas, all in mpmath at dps digits (u, v off the knots).
+    Also `sine`: |S_u x S_v| / (|S_u| |S_v|)."""
+    with mpmath.workdps(dps):
+        mpf = mpmath.mpf
+        p, q, U, V = knots_of(s)
+        U, V, u, v = [mpf(x) for x in U], [mpf(x) for x in V], mpf(u), mpf(v)
+        rows, cols, d = len(s["points"]), len(s["points"][0]), len(s["points"][0][0])
+        P = [[[mpf(x) for x in pt] for pt in row] for row in s["points"]]
+        W = [[mpf(w) for w in row] for row in s.get("weights", [[1] * cols] * rows)]
+        # Off the knots N_i^(k) is nonzero only where N_i is.
+        nu, nv = [basis(U, p, i, u) for i in range(rows)], [basis(V, q, j, v) for j in range(cols)]
+        Nu = [nu] + [[basis_derivative(U, p, i, u, k) if nu[i] else 0 for i in range(rows)] for k in (1, 2)]
+        Nv = [nv] + [[basis_derivative(V, q, j, v, k) if nv[j] else 0 for j in range(cols)] for k in (1, 2)]
+
+        def blend(a, b):
+            """sum N_i^(a)(u) N_j^(b)(v) w_ij (P_ij, 1): the homogeneous partial (A, W)."""
+            h = [mpf(0)] * (d + 1)
+            for i in (i for i in range(rows) if Nu[a][i]):
+                for j in (j for j in range(cols) if Nv[b][j]):
+                    c = Nu[a][i] * Nv[b][j] * W[i][j]
+                    for k in range(d):
+                        h[k] += c * P[i][j][k]
+                    h[d] += c
+            return h[:d], h[d]
+
+        (A, w), (Au, wu), (Av, wv) = blend(0, 0), blend(1, 0), blend(0, 1)
+        (Auu, wuu), (Auv, wuv), (Avv, wvv) = blend(2, 0), blend(1, 1), blend(0, 2)
+        S = [x / w for x in A]
+        Su = [(Au[k] - wu * S[k]) / w for k in range(d)]
+        Sv = [(Av[k] - wv * S[k]) / w for k in range(d)]
+        Suu = [(Auu[k] - 2 * wu * Su[k] - wuu * S[k]) / w for k in range(d)]
+        Suv = [(Auv[k] - wu * Sv[k] - wv * Su[k] - wuv * S[k]) / w for k in range(d)]
+        Svv = [(Avv[k] - 2 * wv * Sv[k] - wvv * S[k]) / w for k in range(d)]
+        out = {"points": S, "u": Su, "v": Sv, "uu": Suu, "uv": Suv, "vv": Svv}
+        if d != 3:
+            return out
+        dp = lambda a, b: sum(x * y for x, y in zip(a, b))
+        X = cross(Su, Sv)
+        length = mpmath.sqrt(dp(X, X))
+        out["sine"] = length / mpmath.sqrt(dp(Su, Su) * dp(Sv, Sv))
+        n = [x / length for x in X]
+        E, F, G = dp(Su, Su), dp(Su, Sv), dp(Sv, Sv)
+        L, M, N = dp(Suu, n), dp(Suv, n), dp(Svv, n)
+        K = (L * N - M * M) / (E * G - F * F)
+        H = (E * N - 2 * F * M + G * L) / (2 * (E * G - F * F))
+        root = mpmath.sqrt(max(H * H - K, 0))
+        out.update(E=E, G=G, normal=n, gaussian=K, mean=H, principal=[H + root, H - root], root=root)
+        return out
+
+
+class SurfaceCurvatureOracleTest(CliTest):
+    """Normals and curvatures of random surfaces of the four types against
+    fundamental_forms_mp (an evaluator whose partials are exact, at 40 digits)."""
+
+    def test_the_oracle_on_closed_forms(self):
+        # The oracle itself: the hyperbolic paraboloid (u, v, uv) and a sphere of revolve
+        # (K = 1/r^2, H = +1/r where S_u x S_v points inward: the contract's sign).
+        hp = {"type": "bezier_surface", "points": [[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]]}
+        for u, v in ((0.2, 0.7), (0.9, 0.1)):
+            o, q = fundamental_forms_mp(hp, u, v), 1 + u * u + v * v
+            self.assertAlmostEqual(float(o["gaussian"]), -1 / q ** 2, delta=1e-15)
+            self.assertAlmostEqual(float(o["mean"]), -u * v / q ** 1.5, delta=1e-15)
+        r = 2.5
+        sphere = self.ok("surface", {"construct": "revolve", "curve": semicircle(r), "axis": Z_AXIS})["surface"]
+        for u, v in ((0.3, 0.7), (0.61, 4.1)):
+            o = fundamental_forms_mp(sphere, u, v)
+            self.assertAlmostEqual(float(o["gaussian"]), 1 / r ** 2, delta=1e-15)
+            inward = -float(dot(o["normal"], o["points"])) / r
+            self.assertAlmostEqual(inward, 1, delta=1e-15)
+            self.assertAlmostEqual(float(o["mean"]), 1 / r, delta=1e-15)
+            self.assert_close([float(x) for x in o["principal"]], [1 / r, 1 / r], 1e-7)  # a double root: sqrt of the rounding
+
+    def compare(self, s, uv, got, oracle=None):
+        """The program's response (derivatives 2, normal, curvature) against the oracle (the
+        list of fundamental_forms_mp at uv, computed when not given). Returns how many points
+        had their curvatures compared."""
+        scale = max(1.0, max(abs(x) for row in s["points"] for p in row for x in p))
+        oracle = oracle or [fundamental_forms_mp(s, u, v) for u, v in uv]
+        compared = 0
+        for k, ((u, v), o) in enumerate(zip(uv, oracle)):
+            for key in ("u", "v", "uu", "uv", "vv"):
+                # Partials: the rational quotient rule in double on O(10) values, relative to
+                # the largest partial of that order (a few hundred eps; 1e-12).
+                size = max(1.0, max(abs(float(x)) for x in o[key]))
+                self.assert_close(got["partials"][key][k], [float(x) for x in o[key]], 1e-12 * size, f"S_{key} at {(u, v)}")
+            self.assert_close(got["points"][k], [float(x) for x in o["points"]], 1e-14 * scale)
+            if o["sine"] < 1e-2:
+                continue  # nearly singular: the normal is ill-conditioned (rare in the random data)
+            self.assert_close(got["normals"][k], [float(x) for x in o["normal"]], 1e-11 / float(o["sine"]), f"normal at {(u, v)}")
+            # Curvatures: rounding in the partials (relative eps) moves them by about eps
+            # times c = (largest second partial) / (smaller of E, G) (1 / length), K by
+            # eps c^2, and the principal ones also by eps c^2 / (2 sqrt(H^2 - K)).
+            second = max(norm([float(x) for x in o[key]]) for key in ("uu", "uv", "vv"))
+            c = second / min(float(o["E"]), float(o["G"])) + 1e-300
+            tol = 1e-12 / float(o["sine"])
+            self.assertLessEqual(abs(got["gaussian"][k] - float(o["gaussian"])), tol * c * c, f"K at {(u, v)}")
+            self.assertLessEqual(abs(got["mean"][k] - float(o["mean"])), tol * c, f"H at {(u, v)}")
+            k1, k2 = got["principal"][k]
+            self.assertGreaterEqual(k1, k2)
+            ptol = tol * c * (1 + c / max(float(o["root"]), 1e-300))
+            self.assertLessEqual(abs(k1 - float(o["principal"][0])), ptol, f"k1 at {(u, v)}")
+            self.assertLessEqual(abs(k2 - float(o["principal"][1])), ptol, f"k2 at {(u, v)}")
+            compared += 1
+        return compared
+
+    def test_random_surfaces_of_every_type(self):
+        rng = random.Random(2319)
+        compared = 0
+        for case in range(24):
+            s = random_surface(rng, KINDS[case % 4])
+            a, b, c, d = domain(s)
+            uv = [[rng.uniform(a, b), rng.uniform(c, d)] for _ in range(5)]
+            got = self.ok("eval", {"surface": s, "uv": uv, "derivatives": 2, "normal": True, "curvature": True})
+            oracle = [fundamental_forms_mp(s, u, v) for u, v in uv]
+            compared += self.compare(s, uv, got, oracle)
+            if case < 4:
+                # Able to fail: the oracle on the surface with one control point moved by 1e-9.
+                moved = json.loads(json.dumps(s))
+                moved["points"][len(moved["points"]) // 2][len(moved["points"][0]) // 2][2] += 1e-9
+                self.assertRaises(AssertionError, self.compare, moved, uv, got)
+                # and the program's curvatures, each in turn made 1e-8 relative larger where
+                # it is largest.
+                for key, part in (("gaussian", None), ("mean", None), ("principal", 0), ("principal", 1)):
+                    values = [abs(x if part is None else x[part]) if x is not None else 0 for x in got[key]]
+                    k = values.index(max(values))
+                    wrong = json.loads(json.dumps(got))
+                    if part is None:
+                        wrong[key][k] *= 1 + 1e-8
+                    else:
+                        wrong[key][k][part] *= 1 + 1e-8
+                    self.assertRaises(AssertionError, self.compare, s, uv, wrong, oracle)
+        self.assertGreaterEqual(compared, 100)  # of 120 points: only the nearly singular skipped
+
+
+def dense_params(s, rng, n=6):
+    """Parameters for a dense check in each direction: n + 1 equally spaced over the domain,
+    every interior knot and one random value."""
+    a, b, c, d = domain(s)
+    p, q, U, V = knots_of(s)
+    us = sorted({a, b} | {a + (b - a) * k / n for k in range(1, n)} | {x for x in U if a < x < b} | {rng.uniform(a, b)})
+    vs = sorted({c, d} | {c + (d - c) * k / n for k in range(1, n)} | {x for x in V if c < x < d} | {rng.uniform(c, d)})
+    return us, vs
+
+
+def moved(s, by=1e-9):
+    """A copy of s with the middle control point's first coordinate moved by `by` (times the
+    net's size): what each property check must notice."""
+    t = json.loads(json.dumps(s))
+    size = max(1.0, max(abs(x) for row in s["points"] for p in row for x in p))
+    t["points"][len(t["points"]) // 2][len(t["points"][0]) // 2][0] += by * size
+    return t
+
+
+class SurfacePropertyTest(CliTest):
+    """Invariants on seeded random surfaces of the four types (dimensions 1..4, degrees 1..4,
+    repeated knots): each result is compared on a dense grid (equally spaced, every knot, a
+    random value) with the original, both evaluated by the program, and is also evaluated by
+    the tensor-product evaluator written here (dense_points). Each property's check is shown
+    to fail on its first case when one control point of the result moves by 1e-9 of the net's
+    size."""
+
+    CASES = 16
+
+    def grid_eval(self, s, us, vs):
+        """The program's S on us x vs (u outer), an array (len(us), len(vs), d)."""
+        pts = self.ok("eval", {"surface": s, "uv": [[u, v] for u in us for v in vs]})["points"]
+        return np.array(pts).reshape(len(us), len(vs), -1)
+
+    def assert_same(self, want, s, us, vs, scale, tol=1e-13):
+        """s on us x vs, by the program and by the evaluator here, equals want (to tol times
+        the net's size: a few dozen eps of convex combinations)."""
+        for how, got in (("program", self.grid_eval(s, us, vs)), ("here", dense_points(s, us, vs))):
+            err = float(np.abs(got - want).max())
+            self.assertLessEqual(err, tol * scale, f"{how}: {err:.3g} on {s['type']}")
+
+    def random_cases(self, seed, kinds=KINDS):
+        rng = random.Random(seed)
+        for case in range(self.CASES):
+            s = random_surface(rng, kinds[case % len(kinds)], dim=rng.randint(1, 4))
+            scale = max(1.0, max(abs(x) for row in s["points"] for p in row for x in p))
+            us, vs = dense_params(s, rng)
+            before = self.grid_eval(s, us, vs)
+            # The program's evaluation against the evaluator here, before any operation.
+            self.assertLessEqual(float(np.abs(before - dense_points(s, us, vs)).max()), 1e-13 * scale)
+            yield case, rng, s, scale, us, vs, before
+
+    def test_partition_of_unity(self):
+        # Every control point the same c (random weights and knots): S = c and its first
+        # partials 0 everywhere, as the (rational) basis sums to 1.
+        for case, rng, s, scale, us, vs, _ in self.random_cases(2401):
+            cpt = [rng.uniform(-3, 3) for _ in range(len(s["points"][0][0]))]
+            s["points"] = [[list(cpt) for _ in row] for row in s["points"]]
+
+            def check(t):
+                r = self.ok("eval", {"surface": t, "uv": [[u, v] for u in us for v in vs], "derivatives": 1})
+                self.assertLessEqual(float(np.abs(np.array(r["points"]) - cpt).max()), 1e-14 * max(1, max(map(abs, cpt))))
+                # The partials: sums of N_i' c, the N_i' of size p / (shortest span).
+                p, q, U, V = knots_of(t)
+                span = min(y - x for x, y in zip(U + V, U[1:] + V[1:]) if y > x and x >= min(U[0], V[0]))
+                self.assertLessEqual(float(np.abs(np.array(r["partials"]["u"] + r["partials"]["v"])).max()),
+                                     1e-13 * max(1, max(map(abs, cpt))) * 4 / span)
+
+            check(s)
+            if case == 0:
+                self.assertRaises(AssertionError, check, moved(s))
+
+    def test_affine_invariance(self):
+        # S of the net mapped by x -> M x + b (weights kept) is M S + b.
+        for case, rng, s, scale, us, vs, before in self.random_cases(2402):
+            d = len(s["points"][0][0])
+            M = np.array([[rng.uniform(-2, 2) for _ in range(d)] for _ in range(d)])
+            b = np.array([rng.uniform(-3, 3) for _ in range(d)])
+            image = dict(s, points=[[list(M @ np.array(p) + b) for p in row] for row in s["points"]])
+            want = before @ M.T + b
+            mscale = float(np.abs(M).sum(axis=1).max()) * scale + float(np.abs(b).max())
+            self.assert_same(want, image, us, vs, mscale)
+            if case == 0:
+                self.assertRaises(AssertionError, self.assert_same, want, moved(image), us, vs, mscale)
+
+    def test_knot_insertion(self):
+        # A random value or an existing knot, 1..(p - multiplicity) times, in u or v: the
+        # knot vector gains exactly those copies and the surface does not change.
+        for case, rng, s, scale, us, vs, before in self.random_cases(2403, KINDS[2:]):
+            k = rng.randrange(2)
+            deg, T = s["degree"][k], s["knots"][k]
+            a, b = T[deg], T[len(T) - deg - 1]
+            inner = [x for x in T if a < x < b and T.count(x) < deg]
+            knot = rng.choice(inner) if inner and rng.random() < 0.4 else rng.uniform(a, b)
+            times = rng.randint(1, deg - T.count(knot))
+            r = self.ok("insert_knot", {"surface": s, "direction": "uv"[k], "knot": knot, "times": times})["surface"]
+            self.assertEqual(r["type"], s["type"])
+            self.assertEqual(r["degree"], s["degree"])
+            self.assertEqual(r["knots"][k], sorted(T + [knot] * times))
+            self.assertEqual(r["knots"][1 - k], s["knots"][1 - k])
+            self.assert_same(before, r, us, vs, scale)
+            if case == 0:
+                self.assertRaises(AssertionError, self.assert_same, before, moved(r), us, vs, scale)
+
+    def test_degree_elevation(self):
+        # 1 or 2 times in u or v: the degree rises by that, every distinct knot gains that
+        # multiplicity (B-spline kinds), the surface does not change.
+        for case, rng, s, scale, us, vs, before in self.random_cases(2404):
+            k, times = rng.randrange(2), rng.randint(1, 2)
+            r = self.ok("elevate", {"surface": s, "direction": "uv"[k], "times": times})["surface"]
+            self.assertEqual(r["type"], s["type"])
+            p, q, U, V = knots_of(s)
+            if "degree" in s:
+                self.assertEqual(r["degree"][k], s["degree"][k] + times)
+                T = s["knots"][k]
+                self.assertEqual(r["knots"][k], sorted(T + sorted(set(T)) * times))
+                self.assertEqual(r["knots"][1 - k], s["knots"][1 - k])
+            else:
+                self.assertEqual((len(r["points"]), len(r["points"][0])), (p + 1 + times * (1 - k), q + 1 + times * k))
+            self.assert_same(before, r, us, vs, scale)
+            if case == 0:
+                self.assertRaises(AssertionError, self.assert_same, before, moved(r), us, vs, scale)
+
+    def test_split(self):
+        # At a random value or an interior knot, in u or v: the halves trace the two parts
+        # (Bézier halves reparametrised onto [0, 1], B-spline halves on [a, t] and [t, b]).
+        for case, rng, s, scale, us, vs, _ in self.random_cases(2405):
+            k = rng.randrange(2)
+            a, b, c, d = domain(s)
+            lo, hi = (a, b) if k == 0 else (c, d)
+            p, q, U, V = knots_of(s)
+            inner = sorted({x for x in (U, V)[k] if lo < x < hi})
+            t = rng.choice(inner) if inner and rng.random() < 0.4 else rng.uniform(lo + 0.01 * (hi - lo), hi - 0.01 * (hi - lo))
+            halves = self.ok("split", {"surface": s, "direction": "uv"[k], "t": t})["surfaces"]
+            for h, (x0, x1) in zip(halves, ((lo, t), (t, hi))):
+                self.assertEqual(h["type"], s["type"])
+                hu, hv = dense_params(h, rng)
+                ha, hb, hc, hd = domain(h)
+                if "degree" in s:
+                    self.assertEqual(((ha, hb), (hc, hd))[k], (x0, x1))
+                    self.assertEqual(((ha, hb), (hc, hd))[1 - k], ((a, b), (c, d))[1 - k])
+                    ou, ov = hu, hv
+                else:
+                    self.assertEqual((ha, hb, hc, hd), (0, 1, 0, 1))
+                    mapped = [x0 + (x1 - x0) * x for x in (hu, hv)[k]]
+                    ou, ov = (mapped, hv) if k == 0 else (hu, mapped)
+                want = self.grid_eval(s, ou, ov)
+                self.assert_same(want, h, hu, hv, scale)
+                if case == 0:
+                    self.assertRaises(AssertionError, self.assert_same, want, moved(h), hu, hv, scale)
 
 
 if __name__ == "__main__":
