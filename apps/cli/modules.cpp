@@ -31,8 +31,8 @@ namespace casteljau::cli {
 
 namespace {
 
-/// The entry point `entry` of the module whose image is [begin, end), loaded once per
-/// call site (the callers keep the pointer). Throws std::runtime_error with the system's or
+/// The entry point `entry` of the module whose image is [begin, end), loaded by each call
+/// (serve once per process; glyph_outlines keeps the pointer). Throws std::runtime_error with the system's or
 /// the loader's message.
 void* module_entry(const char* name, const unsigned char* begin, const unsigned char* end, const char* entry) {
   const int fd = memfd_create(name, MFD_CLOEXEC);

@@ -617,7 +617,7 @@ int serve(const ServeOptions& options) {
 
 }  // namespace casteljau::cli
 
-/// The module's entry point (serve_loader.cpp finds it by this unmangled name).
+/// The module's entry point (modules.cpp finds it by this unmangled name).
 extern "C" int casteljau_serve_module(const casteljau::cli::ServeOptions& options) {
   return casteljau::cli::serve(options);
 }

@@ -22,9 +22,9 @@ struct ServeOptions {
 /// Brotli), so that every other command starts without loading those libraries.
 int serve(const ServeOptions& options);
 
-/// serve() through the module: loads casteljau-serve.so from beside the program (the build
-/// tree) or from its installed place relative to the program (CASTELJAU_SERVE_MODULE), then
-/// calls it. Throws std::runtime_error naming the places tried when it cannot be loaded.
+/// serve() through the module: loads casteljau-serve.so from the copy the program carries
+/// (modules.cpp), then calls it. Throws std::runtime_error with the system's or the
+/// loader's message when it cannot be loaded.
 int serve_through_module(const ServeOptions& options);
 
 }  // namespace casteljau::cli
