@@ -7,7 +7,7 @@
 set -euo pipefail
 
 build_pkgs=(
-  g++ clang libclang-rt-dev make cmake ninja-build pkg-config python3 dpkg-dev
+  g++ clang libclang-rt-dev lld make cmake ninja-build pkg-config python3 dpkg-dev  # lld: the linker of every target (CMakeLists.txt)
   libeigen3-dev nlohmann-json3-dev libcli11-dev libpugixml-dev librsvg2-bin
   libgtest-dev libgmock-dev librapidcheck-dev libbenchmark-dev
   libmpfr-dev libgmp-dev

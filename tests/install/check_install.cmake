@@ -28,11 +28,21 @@ function(check_program exe)
 endfunction()
 
 # `casteljau serve` loads its module (casteljau-serve.so, carried inside the program: one file
-# installed): the server starts and prints its address (stopped after 3 s).
+# installed): the server starts and prints its address, and is stopped as soon as it has (at
+# most 5 s later; a fixed `timeout 3` held a test slot idle for 3 s per check). The shell
+# answers 0 only if the address came and the server was still running when stopped.
+set(serve_log "${WORK_DIR}/serve.log")
 function(check_serve exe)
-  execute_process(COMMAND timeout 3 "${exe}" serve --port 0 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT rc EQUAL 124 OR NOT out MATCHES "^casteljau serve: http://127\\.0\\.0\\.1:[0-9]+/")
-    message(FATAL_ERROR "${exe} serve (${rc}): ${out}\n${err}")
+  execute_process(COMMAND sh -c [=[
+"$1" serve --port 0 >"$2" 2>&1 & pid=$!
+i=0
+while [ $i -lt 100 ] && ! grep -q "http://" "$2"; do sleep 0.05; i=$((i + 1)); done
+kill $pid 2>/dev/null || exit 3
+wait $pid
+grep -q "http://" "$2"]=] sh "${exe}" "${serve_log}" RESULT_VARIABLE rc)
+  file(READ "${serve_log}" out)
+  if(NOT rc EQUAL 0 OR NOT out MATCHES "^casteljau serve: http://127\\.0\\.0\\.1:[0-9]+/")
+    message(FATAL_ERROR "${exe} serve (${rc}): ${out}")
   endif()
 endfunction()
 
