@@ -61,9 +61,9 @@
 // Degenerate edges. A patch edge whose control points coincide (a sphere's pole, the
 // apex of a cone) is one point: its grid vertices are merged into one vertex, the cells
 // along it lose the triangle that would have two corners there (no zero-area triangles),
-// and the rest fan about the point. The normal there is the limit normal: with S_v = 0
-// along u = u0, S_u x S_v ~ (u - u0) S_u x S_uv, so n = +-(S_u x S_uv) / |...| (the sign
-// from the side the domain lies on); null when that vanishes too. Bands (slivers): the
+// and the rest fan about the point. The normal there is the limit normal
+// (surface_form.hpp, limit_normal: with S_v = 0 along u = u0, S_u x S_v ~ (u - u0) S_u x
+// S_uv at a sphere's pole), null where it does not exist (a cone's apex). Bands (slivers): the
 // steps along such an edge that the tolerance asks fall toward it (about as the square
 // root of the distance on a sphere), so one count per patch leaves long thin cells and a
 // fan of needles at the point. A patch row (column) with such an edge is cut into bands at
@@ -1163,7 +1163,6 @@ SurfaceMesh<T> tessellate(const SurfaceForm<T>& f, T tol) {
   SurfaceMesh<T> m;
   m.dim = cd;
   const bool normals = cd == 3;
-  const T umin = ub.front(), umax = ub.back(), vmin = vb.front(), vmax = vb.back();
   const auto add_vertex = [&](T u, T v) {
     const std::vector<T> d = partials(f, u, v, normals ? 2 : 0);
     m.vertices.insert(m.vertices.end(), d.begin(), d.begin() + static_cast<std::ptrdiff_t>(cd));
@@ -1175,18 +1174,9 @@ SurfaceMesh<T> tessellate(const SurfaceForm<T>& f, T tol) {
     T nrm[3] = {g.normal[0], g.normal[1], g.normal[2]};
     bool ok = g.defined;
     if (!ok) {
-      // The limit normal at a degenerate edge: S_v = 0 along u = u0 gives S_u x S_v ~
-      // (u - u0) S_u x S_uv; S_u = 0 along v = v0 gives (v - v0) S_uv x S_v.
-      const T *Su = at(1, 0), *Sv = at(0, 1), *Suv = at(1, 1);
-      const auto norm2 = [](const T* x) { return x[0] * x[0] + x[1] * x[1] + x[2] * x[2]; };
-      const bool v_vanishes = norm2(Sv) < norm2(Su);
-      const T *a = v_vanishes ? Su : Suv, *b = v_vanishes ? Suv : Sv;
-      T c[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-      // The side of the domain: at the end of u (or v) the factor u - u0 is negative.
-      const T sign = v_vanishes ? (u == umax && u != umin ? T(-1) : T(1)) : (v == vmax && v != vmin ? T(-1) : T(1));
-      const T len = std::sqrt(norm2(c));
-      if (len > T(1e-12) * std::sqrt(norm2(a)) * std::sqrt(norm2(b)) && len > 0) {
-        for (int k = 0; k < 3; ++k) nrm[k] = sign * c[k] / len;
+      // At a degenerate edge (a sphere's pole): the limit normal where it exists.
+      if (const auto n = limit_normal(f, u, v)) {
+        std::copy(n->begin(), n->end(), nrm);
         ok = true;
       }
     }
