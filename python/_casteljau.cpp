@@ -653,6 +653,22 @@ class Surface {
     return out;
   }
 
+  /// The limit normal at (u, v) (io::limit_normal): a (3,) array, or None where it does not
+  /// exist. Errors name "u" / "v" (not finite) and "normal" (not 3-D).
+  [[nodiscard]] py::object limit_normal(double u, double v) const {
+    if (!std::isfinite(u)) throw InvalidArgument("u", "must be finite");
+    if (!std::isfinite(v)) throw InvalidArgument("v", "must be finite");
+    std::optional<std::array<double, 3>> n;
+    {
+      py::gil_scoped_release release;
+      n = io::limit_normal(surface_, u, v);
+    }
+    if (!n) return py::none();
+    py::array_t<double> a(3);
+    std::copy(n->begin(), n->end(), a.mutable_data());
+    return std::move(a);
+  }
+
   [[nodiscard]] py::object run(const std::string& command, const py::dict& request, const std::string& field) const {
     const io::Command& c = command_named(command);
     io::Json r = json_of(request, "");
@@ -788,5 +804,6 @@ PYBIND11_MODULE(_casteljau, m) {
       .def("to_data", &Surface::to_data)
       .def("evaluate", &Surface::evaluate, py::arg("u"), py::arg("v"))
       .def("eval", &Surface::eval, py::arg("uv"), py::arg("derivatives"), py::arg("normal"), py::arg("curvature"))
+      .def("limit_normal", &Surface::limit_normal, py::arg("u"), py::arg("v"))
       .def("run", &Surface::run, py::arg("command"), py::arg("request"), py::arg("field") = "surface");
 }

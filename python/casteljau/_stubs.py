@@ -93,6 +93,7 @@ def stub_text() -> str:
         "    def from_json(cls, obj: dict | str) -> Surface: ...",
         "    def to_json(self) -> dict: ...",
         "    def __call__(self, u: ArrayLike, v: ArrayLike, grid: bool = False) -> np.ndarray: ...",
+        "    def limit_normal(self, u: float, v: float) -> np.ndarray | None: ...",
     ]
     seen = set()
     surface_methods = [(n, f, "surface") for n, _, f in _casteljau.surface_forms()]

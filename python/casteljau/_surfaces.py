@@ -110,6 +110,33 @@ class Surface:
             u, v = np.broadcast_arrays(u, v)
         return self._s.evaluate(u, v)  # copied to C order by the module when broadcast
 
+    def limit_normal(self, u: float, v: float) -> np.ndarray | None:
+        """The unit normal at (u, v) of a 3-D surface, also where S_u x S_v vanishes on a
+        degenerate edge (a sphere's pole) if the normals about the point have a limit
+        there; None where they have none (a cone's apex: they turn about the axis) or at an
+        isolated singular point. Where the normal is defined, the eval command's
+        ``normals``. The limit comes from the first Taylor coefficient of S_u x S_v across
+        the edge that does not vanish (S_u x S_uv at a pole), checked to be the same all
+        along the edge (docs/python.md, "Surfaces").
+
+        >>> import casteljau
+        >>> half = casteljau.Nurbs(degree=2, knots=[0, 0, 0, 0.5, 0.5, 1, 1, 1],
+        ...     points=[[0, 0, -1], [1, 0, -1], [1, 0, 0], [1, 0, 1], [0, 0, 1]],
+        ...     weights=[1, 0.5 ** 0.5, 1, 0.5 ** 0.5, 1])
+        >>> sphere = casteljau.surface.revolve(curve=half, axis={"point": [0, 0, 0], "direction": [0, 0, 1]})
+        >>> sphere.eval([[0, 0]], normal=True).normals  # the south pole: S_u x S_v = 0
+        [None]
+        >>> sphere.eval([[0.5, 0]], normal=True).normals.round(15) + 0  # inward on this sphere
+        array([[-1.,  0.,  0.]])
+        >>> sphere.limit_normal(0, 0).round(15) + 0  # the limit at the pole: inward too
+        array([0., 0., 1.])
+        >>> cone = casteljau.surface.revolve(curve=casteljau.Bezier([[0, 0, 1], [1, 0, 0]]),
+        ...     axis={"point": [0, 0, 0], "direction": [0, 0, 1]})
+        >>> cone.limit_normal(0, 0) is None  # the apex
+        True
+        """
+        return self._s.limit_normal(float(u), float(v))
+
 
 def _class_name(json_name: str) -> str:
     """bezier_surface -> BezierSurface: the curve type's class name (the registry's) and

@@ -134,6 +134,106 @@ def test_constructions():
         casteljau.surface.revolve(half)  # keywords only
 
 
+def _bezier_patch_normal_mp(P, u, v):
+    """The unit normal S_u x S_v / |S_u x S_v| of the Bézier patch with control grid P at
+    (u, v), in mpmath at 60 digits (Bernstein polynomials and their derivatives by their
+    definitions)."""
+    import mpmath as mp
+    mp.mp.dps = 60
+    n, m = len(P) - 1, len(P[0]) - 1
+
+    def b(k, i, t):
+        return mp.binomial(k, i) * t ** i * (1 - t) ** (k - i) if 0 <= i <= k else mp.mpf(0)
+
+    def db(k, i, t):
+        return k * (b(k - 1, i - 1, t) - b(k - 1, i, t))
+
+    u, v = mp.mpf(u), mp.mpf(v)
+    Su = [mp.fsum(db(n, i, u) * b(m, j, v) * P[i][j][c] for i in range(n + 1) for j in range(m + 1)) for c in range(3)]
+    Sv = [mp.fsum(b(n, i, u) * db(m, j, v) * P[i][j][c] for i in range(n + 1) for j in range(m + 1)) for c in range(3)]
+    N = [Su[1] * Sv[2] - Su[2] * Sv[1], Su[2] * Sv[0] - Su[0] * Sv[2], Su[0] * Sv[1] - Su[1] * Sv[0]]
+    L = mp.sqrt(mp.fsum(x * x for x in N))
+    return np.array([float(x / L) for x in N])
+
+
+def test_limit_normal_at_degenerate_edges():
+    """s.limit_normal (the library's limit normal): the normal where S_u x S_v vanishes on
+    a degenerate edge, against closed forms and mpmath's normals at 10^-30 from the edge;
+    None where the normals have no limit (a cone's apex, a collapsed side whose fan is not
+    planar)."""
+    h = math.sqrt(0.5)
+    # A sphere of radius 2 about c, on an oblique axis d: the poles c -+ r d (4 rational
+    # spans along each pole). Closed form: the normal is sigma (P - c) / r with one sign
+    # sigma for the whole sphere (the side S_u x S_v points to, read off interior points).
+    c, r = np.array([0.5, -1.0, 2.0]), 2.0
+    d = np.array([1.0, 2.0, 2.0]) / 3
+    e = np.array([2.0, -2.0, 1.0]) / 3  # perpendicular to d
+    prof = [c - r * d, c - r * d + r * e, c + r * e, c + r * d + r * e, c + r * d]
+    half = casteljau.Nurbs(degree=2, knots=[0, 0, 0, 0.5, 0.5, 1, 1, 1], points=[list(p) for p in prof],
+                           weights=[1, h, 1, h, 1])
+    sphere = casteljau.surface.revolve(curve=half, axis={"point": list(c), "direction": list(d)})
+    (u0, u1), (v0, v1) = sphere.domain
+    inner = [[u, v] for u in (0.1, 0.5, 0.9) for v in np.linspace(v0, v1, 7)]
+    normals = np.array(sphere.eval(inner, normal=True).normals)
+    sigma = np.sign(np.einsum("ij,ij->i", normals, (sphere(*np.array(inner).T) - c) / r))
+    assert np.all(sigma == sigma[0])
+    for v in (v0, 0.3, 1.7, math.pi, 5.9, v1):
+        assert sphere.eval([[u0, v]], normal=True).normals == [None]  # the contract's null
+        np.testing.assert_allclose(sphere.limit_normal(u0, v), -sigma[0] * d, rtol=0, atol=1e-13)
+        np.testing.assert_allclose(sphere.limit_normal(u1, v), sigma[0] * d, rtol=0, atol=1e-13)
+    # Where the normal is defined: the eval command's.
+    np.testing.assert_allclose(sphere.limit_normal(0.3, 1.1), sphere.eval([[0.3, 1.1]], normal=True).normals[0], rtol=0, atol=0)
+    # A paraboloid z = x^2 + y^2 (the profile x = u, z = u^2 turned about z): at its vertex
+    # the closed form +-(0, 0, 1), the sign of sigma (-2x, -2y, 1) at interior points.
+    para = casteljau.surface.revolve(curve=casteljau.Bezier([[0, 0, 0], [0.5, 0, 0], [1, 0, 1]]),
+                                     axis={"point": [0, 0, 0], "direction": [0, 0, 1]})
+    X = para(*np.array(inner).T)
+    closed = np.stack([-2 * X[:, 0], -2 * X[:, 1], np.ones(len(X))], axis=1)
+    sigma = np.sign(np.einsum("ij,ij->i", np.array(para.eval(inner, normal=True).normals), closed))
+    assert np.all(sigma == sigma[0])
+    for v in (0, 1, 2.5, 2 * math.pi):
+        np.testing.assert_allclose(para.limit_normal(0, v), [0, 0, sigma[0]], rtol=0, atol=1e-13)
+    # A cone's apex: the normals at (u, v) tend to (cos v, sin v, 1) / sqrt 2 (up to sign),
+    # which turns with v: no limit.
+    cone = casteljau.surface.revolve(curve=casteljau.Bezier([[0, 0, 1], [1, 0, 0]]),
+                                     axis={"point": [0, 0, 0], "direction": [0, 0, 1]})
+    for v in (0, 1, 4):
+        assert cone.limit_normal(0, v) is None
+    # Bilinear patches with a collapsed side (flat triangles A, B, C): the normal is the
+    # triangle's everywhere, (B - A) x (C - B) for the row u = 0 collapsed, (C - B) x (B - A)
+    # for the column v = 0 (S_u x S_v = u (B - A) x (C - B), resp. v (C - B) x (B - A)).
+    A, B, C = np.array([0.2, 0.1, 0.3]), np.array([1.5, -0.2, 0.9]), np.array([0.7, 1.3, -0.4])
+    unit = lambda x: x / np.linalg.norm(x)
+    row = casteljau.BezierSurface([[list(A), list(A)], [list(B), list(C)]])
+    col = casteljau.BezierSurface([[list(A), list(B)], [list(A), list(C)]])
+    for t in (0, 0.3, 1):
+        np.testing.assert_allclose(row.limit_normal(0, t), unit(np.cross(B - A, C - B)), rtol=0, atol=1e-14)
+        np.testing.assert_allclose(col.limit_normal(t, 0), unit(np.cross(C - B, B - A)), rtol=0, atol=1e-14)
+    # Bicubic patches with the row u = 0 collapsed to O: where the next row lies in a plane
+    # through O (a planar fan), mpmath's normals at u = 10^-30 are one vector along the
+    # edge (the limit); where it does not, they turn with v and there is no limit.
+    rng = np.random.default_rng(19)
+    O = [0.0, 0.0, 0.0]
+    fan = [[1, 0, 0], [1, 1, 0], [0, 1.5, 0], [-1, 1, 0]]
+    tail = rng.uniform(-1, 1, (2, 4, 3)).tolist()
+    for row1, exists in ((fan, True), ([[1, 0, 0.2], [1, 1, -0.3], [0, 1.5, 0.1], [-1, 1, 0.4]], False)):
+        P = [[O] * 4, row1] + tail
+        patch = casteljau.BezierSurface(P)
+        limits = [_bezier_patch_normal_mp(P, "1e-30", v) for v in (0, 0.25, 0.6, 1)]
+        assert exists == all(np.allclose(x, limits[0], rtol=0, atol=1e-12) for x in limits)
+        for v, lim in zip((0, 0.25, 0.6, 1), limits):
+            got = patch.limit_normal(0, v)
+            if exists:
+                np.testing.assert_allclose(got, lim, rtol=0, atol=1e-13)
+            else:
+                assert got is None
+    # Bad input: the normal needs 3-D, the parameters finite.
+    with pytest.raises(casteljau.Error, match="^normal: "):
+        casteljau.BezierSurface([[[0, 0], [0, 1]], [[1, 0], [1, 1]]]).limit_normal(0, 0)
+    with pytest.raises(casteljau.Error, match="^u: "):
+        cone.limit_normal(math.nan, 0)
+
+
 def test_eval_on_arrays_equals_the_command():
     """s.eval on an (n, 2) array (the compiled module's partials and geometry, no JSON)
     gives the eval command's values exactly; lists, NaN and wrong types go to the command

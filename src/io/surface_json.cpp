@@ -306,4 +306,8 @@ OrderedJson curve_form_json(const casteljau::detail::CurveForm<double>& c, bool 
   return out;
 }
 
+std::optional<std::array<double, 3>> limit_normal(const AnySurface& s, double u, double v) {
+  return casteljau::detail::limit_normal(s.form, u, v);
+}
+
 }  // namespace casteljau::io

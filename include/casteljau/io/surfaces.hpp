@@ -9,6 +9,8 @@
 // of once per (type x dimension) as the curves' variant does.
 #pragma once
 
+#include <array>
+#include <optional>
 #include <span>
 #include <string_view>
 #include <utility>
@@ -52,6 +54,11 @@ struct SurfaceTypeInfo {
 /// error names its path relative to the object ("points[2]", "knots[1][4]").
 [[nodiscard]] AnySurface surface_from_json(const Json& j);
 [[nodiscard]] OrderedJson to_json(const AnySurface& s);
+
+/// The limit normal of a 3-D surface at (u, v) (casteljau::detail::limit_normal: the unit
+/// normal where defined, else the limit at a degenerate edge where it exists); error
+/// InvalidArgument("normal") for another dimension.
+[[nodiscard]] std::optional<std::array<double, 3>> limit_normal(const AnySurface& s, double u, double v);
 
 /// Any curve as one B-spline form (degree, knots, homogeneous points when rational), the
 /// same curve on its domain (io::to_bspline).

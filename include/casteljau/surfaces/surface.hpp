@@ -150,6 +150,16 @@ class Surface {
     if (!c) return std::nullopt;
     return c->normal;
   }
+  /// The limit normal: the unit normal where it is defined, else, on a degenerate edge (a
+  /// sphere's pole), the limit of the unit normals about the point where it exists (none
+  /// at a cone's apex, where they turn about the axis). See detail::limit_normal.
+  [[nodiscard]] std::optional<Vector<T, 3>> limit_normal(T u, T v) const
+    requires(D == 3)
+  {
+    const auto n = detail::limit_normal(f_, u, v);
+    if (!n) return std::nullopt;
+    return Vector<T, 3>((*n)[0], (*n)[1], (*n)[2]);
+  }
   /// Gaussian, mean and principal curvatures where the normal is defined.
   [[nodiscard]] std::optional<SurfaceCurvature<T>> curvature(T u, T v) const
     requires(D == 3)

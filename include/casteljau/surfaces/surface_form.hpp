@@ -12,6 +12,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <optional>
@@ -423,6 +424,126 @@ CurveForm<T> isocurve(const SurfaceForm<T>& f, Direction dir, T value) {
       for (std::size_t k = 0; k + 1 < c.dim; ++k) c.P[i + k] /= c.P[i + c.dim - 1];
   }
   return c;
+}
+
+/// The limit normal of a 3-D surface at (u, v): the unit normal where it is defined (the
+/// test of geometry()), else the limit of the unit normals of the nearby surface where
+/// (u, v) lies on a degenerate edge and that limit exists; none otherwise.
+///
+/// A degenerate edge: the isocurve u = u0 (or v = v0) is one point over the knot spans
+/// about (u, v) (every control point of those spans within 1e-12 of the net's size of the
+/// first), as at a sphere's pole or a cone's apex. Along u = u0, S_v vanishes, and S_u x
+/// S_v expands in t = u - u0 as sum_k t^k N_k(v) with N_k = (1/k!) d^k/du^k (S_u x S_v) =
+/// (1/k!) sum_i C(k, i) S_(u^(i+1)) x S_(u^(k-i) v) (Leibniz; the i = k term has S_v = 0).
+/// The first N_k not lost to cancellation (|N_k| > 1e-10 x the sum of the terms'
+/// magnitudes; k <= 4) gives the direction sign(t)^k N_k / |N_k| as (u, v') is approached
+/// from inside the domain (t > 0 at the domain's start, t < 0 at its end; at an interior
+/// line both sides, which agree only for even k). On a sphere's pole k = 1: S_u x S_uv.
+/// The normal of the surface has a limit at that point only if this direction is the same
+/// for every v' along the degenerate edge: it is compared with the direction at v at
+/// points of every span of the edge, more than the degree of N_k x n in v' (a polynomial
+/// surface: 2q + 1 points per span, degree <= 2q - 1; a rational one: 8q + 1, the
+/// numerator's degree <= (k + 4) q - 1), so that agreement within 1e-8 at those points
+/// means the directions agree along the edge up to rounding. A cone's apex: the direction
+/// turns with v', no limit. Likewise for v = v0 (S_u x S_v = -(S_v x S_u), the roles
+/// exchanged); on a corner where both edges are degenerate, both limits must agree.
+/// Accuracy: the direction comes from exact derivatives (A3.6, A4.4): a few eps divided
+/// by the sine between the factors of N_k, as for the ordinary normal.
+/// Elsewhere where S_u x S_v vanishes (an isolated singular point): none.
+template <class T>
+std::optional<std::array<T, 3>> limit_normal(const SurfaceForm<T>& f, T u, T v) {
+  if (f.cartesian() != 3) throw InvalidArgument("normal", "normals need a 3-D surface, got " + std::to_string(f.cartesian()) + "-D");
+  {
+    const std::vector<T> d = partials(f, u, v, 1);
+    const T *Su = d.data() + 2 * 3, *Sv = d.data() + 3;
+    const SurfaceGeometry<T> g = geometry<T>(Su, Sv, Su, Su, Su);
+    if (g.defined) return std::array<T, 3>{g.normal[0], g.normal[1], g.normal[2]};
+  }
+  T size = 0;
+  for (std::size_t c = 0; c < 3; ++c) {
+    T lo = 0, hi = 0;
+    for (std::size_t i = 0; i < f.rows * f.cols; ++i) {
+      const T x = f.P[i * f.dim + c];
+      lo = i == 0 ? x : std::min(lo, x);
+      hi = i == 0 ? x : std::max(hi, x);
+    }
+    size = std::max({size, hi - lo, std::abs(lo), std::abs(hi)});
+  }
+  constexpr int kmax = 4;
+  // The limit along the isocurve u = s of g (flip: g is f transposed): nullopt when (s, t)
+  // is not on a degenerate edge, {false, ...} when it is and the limit does not exist.
+  struct Edge {
+    bool exists;
+    std::array<T, 3> n;
+  };
+  const auto edge = [&](const SurfaceForm<T>& g, T s, T t, bool flip) -> std::optional<Edge> {
+    const CurveForm<T> c = isocurve(g, Direction::u, s);
+    const std::size_t q = static_cast<std::size_t>(g.q);
+    const auto point_span = [&](std::size_t j) {
+      const T* x0 = c.P.data() + (j - q) * c.dim;
+      for (std::size_t i = j - q + 1; i <= j; ++i) {
+        const T* x = c.P.data() + i * c.dim;
+        const T e = std::hypot(x[0] - x0[0], x[1] - x0[1], x[2] - x0[2]);
+        if (!(e <= T(1e-12) * size)) return false;
+      }
+      return true;
+    };
+    const std::size_t sp = find_span<T>(c.U, g.q, t);
+    if (!point_span(sp)) return std::nullopt;
+    std::size_t lo = sp, hi = sp;
+    while (lo > q && point_span(lo - 1)) --lo;
+    while (hi + 1 < g.cols && point_span(hi + 1)) ++hi;
+    const T s0 = g.U[static_cast<std::size_t>(g.p)], s1 = g.U[g.rows];
+    const int side = s <= s0 ? 1 : s >= s1 ? -1 : 0;
+    const std::size_t K = kmax + 2;
+    const auto leading = [&](T tt) -> std::optional<std::array<T, 3>> {
+      const std::vector<T> d = partials(g, s, tt, kmax + 1);
+      const auto at = [&](std::size_t a, std::size_t b) { return d.data() + (a * K + b) * 3; };
+      const auto norm = [](const T* x) { return std::hypot(x[0], x[1], x[2]); };
+      for (std::size_t k = 1; k <= kmax; ++k) {
+        T N[3] = {0, 0, 0}, mag = 0;
+        for (std::size_t i = 0; i < k; ++i) {
+          const T b = binomial<T>(static_cast<int>(k), static_cast<int>(i));
+          const T *x = at(i + 1, 0), *y = at(k - i, 1);
+          N[0] += b * (x[1] * y[2] - x[2] * y[1]);
+          N[1] += b * (x[2] * y[0] - x[0] * y[2]);
+          N[2] += b * (x[0] * y[1] - x[1] * y[0]);
+          mag += b * norm(x) * norm(y);
+        }
+        const T len = norm(N);
+        if (!(len > T(1e-10) * mag)) continue;
+        if (side == 0 && k % 2 == 1) return std::nullopt;  // the two sides opposite
+        const T sign = (side < 0 && k % 2 == 1) != flip ? T(-1) : T(1);
+        return std::array<T, 3>{sign * N[0] / len, sign * N[1] / len, sign * N[2] / len};
+      }
+      return std::nullopt;
+    };
+    const auto ref = leading(t);
+    if (!ref) return Edge{false, {}};
+    const std::size_t m = f.rational ? 8 * q + 1 : 2 * q + 1;
+    const T pi = std::acos(T(-1));
+    for (std::size_t j = lo; j <= hi; ++j) {
+      const T a = c.U[j], b = c.U[j + 1];
+      if (!(a < b)) continue;
+      for (std::size_t i = 0; i < m; ++i) {
+        const T tt = a + (b - a) * (1 - std::cos(pi * (T(i) + T(0.5)) / T(m))) / 2;
+        const auto n = leading(tt);
+        if (!n || std::hypot((*n)[0] - (*ref)[0], (*n)[1] - (*ref)[1], (*n)[2] - (*ref)[2]) > T(1e-8)) return Edge{false, {}};
+      }
+    }
+    return Edge{true, *ref};
+  };
+  std::optional<std::array<T, 3>> out;
+  bool any = false;
+  for (const bool along_u : {false, true}) {
+    const auto e = along_u ? edge(transposed(f), v, u, true) : edge(f, u, v, false);
+    if (!e) continue;
+    if (!e->exists) return std::nullopt;
+    if (any && std::hypot(e->n[0] - (*out)[0], e->n[1] - (*out)[1], e->n[2] - (*out)[2]) > T(1e-8)) return std::nullopt;
+    any = true;
+    out = e->n;
+  }
+  return out;
 }
 
 }  // namespace detail
