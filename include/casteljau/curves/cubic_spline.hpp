@@ -245,7 +245,7 @@ namespace detail {
 /// of the system from the data as it goes (no arrays of h_i, d_i or of the three
 /// diagonals) and eliminates it at once (Thomas' algorithm [GolubVanLoan13, 4.3.6],
 /// keeping only the multipliers that substitution needs, one reciprocal per row; from 5
-/// points on from both ends towards the middle row, see below); the substitution sweep
+/// rows on from both ends towards the middle row, see below); the substitution sweep
 /// checks that the Hermite curve's Bézier control points
 /// P_i + h_i s_i / 3 and P_(i+1) - h_i s_(i+1) / 3 are finite. The checks of the data are
 /// folded into the sweeps without branches: every h_i in (0, inf) (params finite and
@@ -254,9 +254,10 @@ namespace detail {
 /// s unspecified, for a case it does not take (periodic; not-a-knot below 4 points, whose
 /// small-n forms cubic_spline_slopes gives; an order or end value that is not valid) and
 /// for data failing a check: the caller then runs cubic_spline_slopes and the checking
-/// Hermite constructor, which name the faulty field. The same system as
+/// Hermite constructor, which name the faulty field. The same spline as
 /// cubic_spline_slopes, the same values up to rounding (the order of elimination, the
-/// pivot's reciprocal). O(n).
+/// pivot's reciprocal; not-a-knot ends from 6 points on are eliminated as the end cubics'
+/// join rows, below, more accurately than cubic_spline_slopes' textbook rows). O(n).
 template <class T, int D>
 bool cubic_spline_slopes_fused(const std::vector<T>& u, const std::vector<Point<T, D>>& P, const SplineBoundary<T, D>& bc,
                                std::vector<Vector<T, D>>& s) {
