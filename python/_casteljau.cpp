@@ -474,12 +474,48 @@ class Curve {
     py::array_t<double> t(static_cast<py::ssize_t>(n)), dist(static_cast<py::ssize_t>(n));
     py::array_t<double> pts(std::vector<py::ssize_t>{static_cast<py::ssize_t>(n), d});
     double *to = t.mutable_data(), *po = pts.mutable_data(), *dout = dist.mutable_data();
+    const io::ProjectionPieces& pieces = projection_pieces();
     {
       py::gil_scoped_release release;
-      io::project_rows(*curve_, std::span<const double>(x, n * m), farthest, std::span<double>(to, n),
+      io::project_rows(pieces, std::span<const double>(x, n * m), farthest, std::span<double>(to, n),
                        std::span<double>(po, n * m), std::span<double>(dout, n));
     }
     return py::make_tuple(t, pts, dist);
+  }
+
+  /// io::project at one point (d,): the project command's answer (t, point, distance and,
+  /// on ties, all_t and intervals) as a dict, on the curve's kept pieces (no JSON).
+  [[nodiscard]] py::dict project_point(const Doubles& point, bool farthest) const {
+    const std::span<const double> q(point.data(), static_cast<std::size_t>(point.size()));
+    for (std::size_t k = 0; k < q.size(); ++k) {
+      if (!std::isfinite(q[k])) throw not_finite(child("point", k), q[k]);  // the package's message
+    }
+    const io::ProjectionPieces& pieces = projection_pieces();
+    std::optional<io::AnyProjection> r;
+    {
+      py::gil_scoped_release release;
+      r.emplace(io::project(pieces, q, farthest));
+    }
+    return std::visit(
+        []<int D>(const casteljau::Projection<double, D>& p) {
+          py::array_t<double> point(D);
+          for (int k = 0; k < D; ++k) point.mutable_data()[k] = p.point[k];
+          py::dict out;
+          out["t"] = p.t;
+          out["point"] = point;
+          out["distance"] = p.distance;
+          if (!p.all_t.empty()) out["all_t"] = py::array_t<double>(static_cast<py::ssize_t>(p.all_t.size()), p.all_t.data());
+          if (!p.intervals.empty()) {
+            py::array_t<double> iv(std::vector<py::ssize_t>{static_cast<py::ssize_t>(p.intervals.size()), 2});
+            for (std::size_t i = 0; i < p.intervals.size(); ++i) {
+              iv.mutable_data()[2 * i] = p.intervals[i].lo;
+              iv.mutable_data()[2 * i + 1] = p.intervals[i].hi;
+            }
+            out["intervals"] = iv;
+          }
+          return out;
+        },
+        *r);
   }
 
   /// The command on this curve: the request (a dict without the curve) with the curve
@@ -544,6 +580,13 @@ class Curve {
   /// The order-k tables (PieceDerivatives), built at the first call of that order.
   static constexpr int max_table_order = 16;
   mutable std::vector<std::unique_ptr<BatchEvaluator>> derivatives_;
+  /// The exact pieces for project, made at the first projection (while the GIL is held:
+  /// no other thread sees them half made) and kept.
+  mutable std::unique_ptr<const io::ProjectionPieces> pieces_;
+  [[nodiscard]] const io::ProjectionPieces& projection_pieces() const {
+    if (!pieces_) pieces_ = io::projection_pieces(*curve_);
+    return *pieces_;
+  }
 };
 
 /// A surface read once from surface JSON (text, or a Python object).
@@ -793,6 +836,7 @@ PYBIND11_MODULE(_casteljau, m) {
       .def("evaluate", &Curve::evaluate, py::arg("t"), py::arg("nu") = 0)
       .def("curvature", &Curve::curvature, py::arg("t"))
       .def("project_rows", &Curve::project_rows, py::arg("points"), py::arg("farthest") = false)
+      .def("project_point", &Curve::project_point, py::arg("point"), py::arg("farthest") = false)
       .def("run", &Curve::run, py::arg("command"), py::arg("request"), py::arg("field") = "curve");
 
   py::class_<Surface>(m, "Surface")

@@ -209,11 +209,13 @@ class Curve:
     def project(self, point: Any, farthest: bool = False) -> Result:
         """The nearest (farthest) point of the curve to point (d,), or to each row of points
         (n, d): Result(t, point, distance) with arrays of shape (n,), (n, d), (n,) (one
-        point: a number, (d,), a number). The rows run in C++ without the GIL, each a
-        direct call of the library's project (no JSON)."""
+        point: a number, (d,), a number, and all_t / intervals on ties, as the project
+        command answers). The rows run in C++ without the GIL, each a direct call of the
+        library's project (no JSON), on the curve's exact pieces made at its first
+        projection and kept."""
         pts = np.asarray(point, dtype=np.float64)
         if pts.ndim == 1:
-            return _simplify(self._c.run("project", {"point": pts, "farthest": farthest}, "curve"))
+            return _simplify(self._c.project_point(pts, bool(farthest)))
         if pts.ndim != 2:
             raise Error(f"points: must be one point (d,) or an array of points (n, d), got shape {pts.shape}")
         # t, point and distance per row, by the library's project called on each row (all_t

@@ -1021,13 +1021,13 @@ Akima1DInterpolator = _hermite_interpolator("akima", False, "Akima1DInterpolator
 
 
 class BarycentricInterpolator(PPoly):
-    """scipy's BarycentricInterpolator(xi, yi=None, axis=0): the library's lagrange curve,
-    the polynomial through the points at any number of them, evaluated by the second
-    barycentric formula with weights computed once (as scipy's; stable on well-spread
-    nodes such as Chebyshev points, where the equispaced interpolant itself is not).
-    scipy's ``set_yi``, ``add_xi`` and (scipy 1.11's) ``derivative(x, der=1)`` and
-    ``derivatives(x, der=None)``; the attributes ``xi``, ``yi`` (the values as (n, r)),
-    ``n`` and ``r``.
+    """scipy's BarycentricInterpolator(xi, yi=None, axis=0, *, wi=None, random_state=None):
+    the library's lagrange curve, the polynomial through the points at any number of them,
+    evaluated by the second barycentric formula with weights computed once (as scipy's;
+    stable on well-spread nodes such as Chebyshev points, where the equispaced interpolant
+    itself is not). scipy's ``set_yi``, ``add_xi`` and (scipy 1.11's) ``derivative(x,
+    der=1)``, ``derivatives(x, der=None)`` (der a count, or a list of orders) and ``wi``;
+    the attributes ``xi``, ``yi`` (the values as (n, r)), ``n``, ``r`` and ``wi``.
 
     >>> import numpy as np, casteljau
     >>> x = np.cos(np.linspace(0, np.pi, 40))  # 40 Chebyshev points
@@ -1036,9 +1036,18 @@ class BarycentricInterpolator(PPoly):
     True
     >>> p.derivatives(0.0, der=3)  # exp and its derivatives at 0
     array([1., 1., 1.])
+    >>> p.derivatives(0.0, der=[2, 0])  # the orders listed
+    array([1., 1.])
+    >>> w = (-1.0) ** np.arange(40); w[[0, -1]] /= 2  # these nodes' weights, in closed form
+    >>> q = casteljau.BarycentricInterpolator(x, np.exp(x), wi=w)
+    >>> bool(abs(q(0.3) - np.exp(0.3)) < 1e-13)
+    True
     """
 
-    def __init__(self, xi: Any, yi: Any = None, axis: int = 0) -> None:
+    def __init__(self, xi: Any, yi: Any = None, axis: int = 0, *, wi: Any = None, random_state: Any = None,
+                 rng: Any = None) -> None:
+        # random_state / rng: scipy's permutation of the weights' product (its rounding
+        # only); the library's weights need none, so they are accepted and unused.
         xi = np.asarray(xi, dtype=np.float64)
         if xi.ndim != 1:
             raise Error(f"xi: must be a 1-D array, got shape {xi.shape}")
@@ -1047,11 +1056,38 @@ class BarycentricInterpolator(PPoly):
         self.yi = None
         self.axis = axis
         self._curve = None
+        self._given = wi is not None
+        self._wi: np.ndarray | None = None
+        self._diff: list[np.ndarray] = []  # the given weights' D^k yi, k = 0, 1, ...
+        if self._given:
+            w = np.asarray(wi, dtype=np.float64)
+            if w.shape != xi.shape:
+                raise Error(f"wi: must have one weight per node, shape {xi.shape}, got shape {w.shape}")
+            for i, v in enumerate(w):
+                if not np.isfinite(v) or v == 0:
+                    raise Error(f"wi[{i}]: must be a finite nonzero number, got {v}")
+            self._wi = w.copy()
         self.set_yi(yi, axis)
+
+    @property
+    def wi(self) -> np.ndarray:
+        """The barycentric weights: the given ones, else scipy's formula 1 / prod_(j != i)
+        (4 (x_i - x_j) / (max xi - min xi)) (the product in node order; scipy permutes
+        its factors at random, which changes only their rounding)."""
+        if self._wi is None:
+            x = self.xi
+            if len(x) == 1:
+                return np.ones(1)
+            scale = 4.0 / (np.max(x) - np.min(x))
+            d = scale * (x[:, None] - x[None, :])
+            np.fill_diagonal(d, 1.0)
+            self._wi = 1.0 / np.prod(d, axis=1)
+        return self._wi
 
     def set_yi(self, yi: Any, axis: Any = None) -> None:
         """New values yi at the same nodes (None: none until given again); axis: the
         interpolation axis of yi (None: the one given before)."""
+        self._diff = []
         if yi is None:
             self.yi, self.r, self._curve = None, None, None
             return
@@ -1068,19 +1104,26 @@ class BarycentricInterpolator(PPoly):
         except Error as e:
             raise _renamed(e, {"params": "xi", "points": "yi"}, tail == ()) from None
         PPoly.__init__(self, curve, tail, True, axis)
+        if not self._given:
+            self._wi = None  # the nodes' weights, made again when asked
         self.xi, self.yi = xi, pts
         self.n, self.r = pts.shape
+        self._diff = []
 
     def add_xi(self, xi: Any, yi: Any = None) -> None:
         """More nodes xi (1-D) with their values yi (the interpolation axis where the
         constructor's was, the same other axes), given if and only if the interpolator has
         values (scipy's rule)."""
+        if self._given:
+            raise Error("wi: the interpolator was given its weights, which add_xi cannot extend (make a new "
+                        "BarycentricInterpolator on all the nodes)")
         xi = np.asarray(xi, dtype=np.float64).reshape(-1)
         if yi is None:
             if self.yi is not None:
                 raise Error("yi: required: the interpolator has values, give those of the new nodes (scipy's rule)")
             self.xi = np.concatenate([self.xi, xi])
             self.n = len(self.xi)
+            self._wi = None
             return
         if self.yi is None:
             raise Error("yi: the interpolator has no values to add to (give them with set_yi first)")
@@ -1100,8 +1143,51 @@ class BarycentricInterpolator(PPoly):
         if self._curve is None:
             raise Error("yi: not set (give the values to the constructor or to set_yi)")
 
+    def _with_weights(self, x: Any, der: int) -> np.ndarray:
+        """Given weights: the order-der derivative at x as scipy 1.11 computes it, the second
+        barycentric formula with the weights wi on the values D^der yi, D the
+        differentiation matrix of the weights (D_ij = (w_j / w_i) / (x_i - x_j), D_ii =
+        -sum_(j != i) D_ij [BerrutTrefethen04, (9.4), (9.5)]); exact at the nodes. In the
+        shape of a call."""
+        x = np.asarray(x, dtype=np.float64)
+        xf = x.reshape(-1)
+        bad = ~np.isfinite(xf)
+        if bad.any():
+            j = int(np.argmax(bad))
+            raise Error(f"x[{j}]: must be a finite number, got {xf[j]}")
+        if der >= self.n:
+            y = np.zeros_like(self.yi)
+        else:
+            if not self._diff:
+                self._diff.append(self.yi)
+            if len(self._diff) <= der:
+                w, xi = self.wi, self.xi
+                c = xi[:, None] - xi[None, :]
+                np.fill_diagonal(c, 1.0)
+                c = w[None, :] / (c * w[:, None])
+                np.fill_diagonal(c, 0.0)
+                np.fill_diagonal(c, -c.sum(axis=1))
+                while len(self._diff) <= der:
+                    self._diff.append(c @ self._diff[-1])
+            y = self._diff[der]
+        c = xf[:, None] - self.xi[None, :]
+        at = c == 0
+        c[at] = 1.0
+        c = self.wi / c
+        with np.errstate(divide="ignore", invalid="ignore"):
+            out = (c @ y) / c.sum(axis=1)[:, None]
+        rows, cols = np.nonzero(at)
+        out[rows] = y[cols]
+        out = out.reshape(x.shape + self._tail)
+        if self.axis and out.ndim > x.ndim:  # scipy's order, as PPoly.__call__
+            ax = list(range(out.ndim))
+            out = out.transpose(ax[x.ndim:x.ndim + self.axis] + ax[:x.ndim] + ax[x.ndim + self.axis:])
+        return out
+
     def __call__(self, x: Any) -> np.ndarray:  # type: ignore[override]
         self._check()
+        if self._given:
+            return self._with_weights(x, 0)
         return super().__call__(x)
 
     def derivative(self, x: Any, der: int = 1) -> np.ndarray:  # type: ignore[override]
@@ -1109,22 +1195,34 @@ class BarycentricInterpolator(PPoly):
         self._check()
         if isinstance(der, bool) or not isinstance(der, (int, np.integer)) or der < 0:
             raise Error(f"der: must be an integer >= 0, got {der!r}")
+        if self._given:
+            return self._with_weights(x, int(der))
         if der >= self.n:  # above the polynomial's degree
             return np.zeros_like(super().__call__(x))
         return super().__call__(x, nu=int(der))
 
     def derivatives(self, x: Any, der: Any = None) -> np.ndarray:
         """The derivatives of orders 0 to der - 1 at x (der None: n of them, all that can be
-        nonzero), stacked first: shape (der,) + the shape of a call (scipy 1.11's)."""
+        nonzero), stacked first: shape (der,) + the shape of a call; der a list of orders:
+        those orders, in its order (d[j] the order der[j]: scipy's documented form, as its
+        barycentric_interpolate computes it, derivatives(x, max(der) + 1)[der])."""
         self._check()
         if der is None:
             der = self.n
+        if isinstance(der, (list, tuple, np.ndarray)):
+            orders = list(np.asarray(der).reshape(-1)) if not isinstance(der, (list, tuple)) else list(der)
+            if not orders:
+                raise Error("der: an empty list of orders")
+            for j, k in enumerate(orders):
+                if isinstance(k, (bool, np.bool_)) or not isinstance(k, (int, np.integer)) or k < 0:
+                    raise Error(f"der[{j}]: must be an integer >= 0, got {k!r}")
+            return self.derivatives(x, int(max(orders)) + 1)[[int(k) for k in orders]]
         if isinstance(der, bool) or not isinstance(der, (int, np.integer)) or der < 0:
-            raise Error(f"der: must be an integer >= 0 or None, got {der!r}")
-        first = super().__call__(x)
+            raise Error(f"der: must be an integer >= 0, a list of them, or None, got {der!r}")
+        first = self(x)
         out = np.zeros((int(der),) + first.shape)
         for k in range(min(int(der), self.n)):
-            out[k] = first if k == 0 else super().__call__(x, nu=k)
+            out[k] = first if k == 0 else self.derivative(x, k)
         return out
 
     def antiderivative(self, nu: int = 1) -> PPoly:  # not scipy's (none there): the library's

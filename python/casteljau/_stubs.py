@@ -125,12 +125,15 @@ def stub_text() -> str:
         "class Akima1DInterpolator(PPoly):",
         "    def __init__(self, x: ArrayLike, y: ArrayLike, axis: int = 0, extrapolate: Any = None) -> None: ...",
         "class BarycentricInterpolator(PPoly):",
-        "    def __init__(self, xi: ArrayLike, yi: ArrayLike | None = None, axis: int = 0) -> None: ...",
+        "    def __init__(self, xi: ArrayLike, yi: ArrayLike | None = None, axis: int = 0, *, "
+        "wi: ArrayLike | None = None, random_state: Any = None, rng: Any = None) -> None: ...",
+        "    @property",
+        "    def wi(self) -> np.ndarray: ...",
         "    def __call__(self, x: ArrayLike) -> np.ndarray: ...  # type: ignore[override]",
         "    def set_yi(self, yi: ArrayLike | None, axis: int | None = None) -> None: ...",
         "    def add_xi(self, xi: ArrayLike, yi: ArrayLike | None = None) -> None: ...",
         "    def derivative(self, x: ArrayLike, der: int = 1) -> np.ndarray: ...  # type: ignore[override]",
-        "    def derivatives(self, x: ArrayLike, der: int | None = None) -> np.ndarray: ...",
+        "    def derivatives(self, x: ArrayLike, der: int | list[int] | None = None) -> np.ndarray: ...",
         "def make_interp_spline(x: ArrayLike, y: ArrayLike, k: int = 3, t: ArrayLike | None = None, "
         "bc_type: Any = None, axis: int = 0) -> BSpline: ...",
         "",

@@ -354,14 +354,28 @@ def test_batch_evaluation_matches_point_by_point():
 
 
 def test_project_rows_are_the_single_point_project():
+    # Rows, one point (both on the curve's kept pieces) and the project command (the curve
+    # read from its JSON, its pieces made anew) give the same bits.
     rng = np.random.default_rng(11)
     c = casteljau.Bezier([[0, 0], [1, 2], [3, -1], [4, 1]])
     pts = rng.random((40, 2)) * 4
     r = c.project(pts)
     for i in (0, 17, 39):
         one = c.project(pts[i])
-        assert r.t[i] == one.t and r.distance[i] == one.distance
+        cmd = casteljau.run("project", curve=c, point=pts[i])
+        assert r.t[i] == one.t == cmd.t and r.distance[i] == one.distance == cmd.distance
         np.testing.assert_array_equal(r.point[i], one.point)
+        np.testing.assert_array_equal(one.point, cmd.point)
+    # Ties: the one-point answer keeps the command's all_t and intervals.
+    circle = casteljau.Curve.from_json({"type": "circle", "center": [0, 0], "radius": 1})
+    for q in ([0.0, 0.0], [0.0, 0.5]):
+        assert repr(circle.project(q)) == repr(casteljau.run("project", curve=circle, point=q))
+    bump = casteljau.Bezier([[0, 0], [1, 2], [2, 0]])
+    assert repr(bump.project([1.0, -5.0])) == repr(casteljau.run("project", curve=bump, point=[1.0, -5.0]))
+    with pytest.raises(casteljau.Error, match=r"^point: needs 2 coordinates"):
+        c.project([1.0, 2.0, 3.0])
+    with pytest.raises(casteljau.Error, match=r"^point\[1\]: must be a finite number"):
+        c.project([1.0, np.nan])
     with pytest.raises(casteljau.Error, match=r"^points: must be an array of shape \(n, 2\)"):
         c.project(np.zeros((3, 3)))
 

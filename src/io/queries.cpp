@@ -30,8 +30,15 @@ using limits::check_work;
 
 }  // namespace
 
-AnyProjection project(const AnyCurve& c, std::span<const double> point, bool farthest) {
+std::unique_ptr<const ProjectionPieces> projection_pieces(const AnyCurve& c) {
   check_curve_work(c, "curve");
+  // new from the prvalues (elided): the variant of pieces is not moved.
+  std::unique_ptr<const ProjectionPieces> out(new ProjectionPieces{pieces(c), domain(c)});
+  std::visit([](const auto& p) { check_work(p, "curve"); }, out->pieces);
+  return out;
+}
+
+AnyProjection project(const ProjectionPieces& pp, std::span<const double> point, bool farthest) {
   return std::visit(
       [&]<class P>(const P& p) {
         constexpr int D = P::dimension;
@@ -44,11 +51,10 @@ AnyProjection project(const AnyCurve& c, std::span<const double> point, bool far
           require_finite(point[static_cast<std::size_t>(k)], "point[" + std::to_string(k) + "]");
           q[k] = point[static_cast<std::size_t>(k)];
         }
-        check_work(p, "curve");
         auto r = casteljau::project(p, q, farthest);
         // A curve on a single parameter (a one-point lagrange: its pieces run to the next
         // double) answers that parameter, and its domain as the interval.
-        const Interval<double> dom = domain(c);
+        const Interval<double> dom = pp.domain;
         if (dom.lo == dom.hi) {
           r.t = dom.lo;
           for (auto& u : r.all_t) u = dom.lo;
@@ -56,17 +62,19 @@ AnyProjection project(const AnyCurve& c, std::span<const double> point, bool far
         }
         return AnyProjection(std::move(r));
       },
-      pieces(c));
+      pp.pieces);
 }
 
-void project_rows(const AnyCurve& c, std::span<const double> points, bool farthest, std::span<double> t,
+AnyProjection project(const AnyCurve& c, std::span<const double> point, bool farthest) {
+  return project(*projection_pieces(c), point, farthest);
+}
+
+void project_rows(const ProjectionPieces& pp, std::span<const double> points, bool farthest, std::span<double> t,
                   std::span<double> point, std::span<double> distance) {
-  check_curve_work(c, "curve");
-  const Interval<double> dom = domain(c);
+  const Interval<double> dom = pp.domain;
   std::visit(
       [&]<class P>(const P& p) {
         constexpr int D = P::dimension;
-        check_work(p, "curve");
         for (std::size_t i = 0; i < t.size(); ++i) {
           Point<double, D> q;
           for (int k = 0; k < D; ++k) {
@@ -81,7 +89,12 @@ void project_rows(const AnyCurve& c, std::span<const double> points, bool farthe
           distance[i] = r.distance;
         }
       },
-      pieces(c));
+      pp.pieces);
+}
+
+void project_rows(const AnyCurve& c, std::span<const double> points, bool farthest, std::span<double> t,
+                  std::span<double> point, std::span<double> distance) {
+  project_rows(*projection_pieces(c), points, farthest, t, point, distance);
 }
 
 double length(const AnyCurve& c, std::optional<double> from, std::optional<double> to) {

@@ -245,7 +245,7 @@ namespace detail {
 /// of the system from the data as it goes (no arrays of h_i, d_i or of the three
 /// diagonals) and eliminates it at once (Thomas' algorithm [GolubVanLoan13, 4.3.6],
 /// keeping only the multipliers that substitution needs, one reciprocal per row; from 5
-/// points on from both ends towards the middle row, see below); the substitution sweep
+/// rows on from both ends towards the middle row, see below); the substitution sweep
 /// checks that the Hermite curve's Bézier control points
 /// P_i + h_i s_i / 3 and P_(i+1) - h_i s_(i+1) / 3 are finite. The checks of the data are
 /// folded into the sweeps without branches: every h_i in (0, inf) (params finite and
@@ -254,9 +254,10 @@ namespace detail {
 /// s unspecified, for a case it does not take (periodic; not-a-knot below 4 points, whose
 /// small-n forms cubic_spline_slopes gives; an order or end value that is not valid) and
 /// for data failing a check: the caller then runs cubic_spline_slopes and the checking
-/// Hermite constructor, which name the faulty field. The same system as
+/// Hermite constructor, which name the faulty field. The same spline as
 /// cubic_spline_slopes, the same values up to rounding (the order of elimination, the
-/// pivot's reciprocal). O(n).
+/// pivot's reciprocal; not-a-knot ends from 6 points on are eliminated as the end cubics'
+/// join rows, below, more accurately than cubic_spline_slopes' textbook rows). O(n).
 template <class T, int D>
 bool cubic_spline_slopes_fused(const std::vector<T>& u, const std::vector<Point<T, D>>& P, const SplineBoundary<T, D>& bc,
                                std::vector<Vector<T, D>>& s) {
@@ -274,10 +275,65 @@ bool cubic_spline_slopes_fused(const std::vector<T>& u, const std::vector<Point<
   const auto hh = [&](std::size_t i) { return u[i + 1] - u[i]; };
   const auto dd = [&](std::size_t i) { return (P[i + 1] - P[i]) / hh(i); };
 
-  // The end rows: b0 s_0 + c0 s_1 = r0 and an s_(n-1) + bn s_n = rn (as cubic_spline_slopes).
+  // The system solved here is rows f..l in s_f..s_l: row f is b0 s_f + c0 s_(f+1) = r0,
+  // row l is an s_(l-1) + bn s_l = rn, the rows between are the C^2 rows. Natural and
+  // clamped ends, and not-a-knot below 6 points: f = 0, l = n, the end rows of
+  // cubic_spline_slopes. Not-a-knot from 6 points on: f = 2, l = n - 2. scipy's not-a-knot
+  // row h_1 s_0 + (h_0 + h_1) s_1 = ... is not diagonally dominant, and eliminating it
+  // loses digits when h_0 and h_1 differ much (one-way and twisted elimination alike, and
+  // LAPACK's partial pivoting, which ties on its first column): hundreds of ulps in the end
+  // slopes at a ratio of 10^3, which the power form's cubic coefficient of an end piece
+  // amplifies far outside the domain. Here the first two pieces are taken as the one cubic
+  // on [u_0, u_2] that not-a-knot makes them: through P_0, P_1, P_2 with slope s_2 at u_2
+  // (Newton's form on the nodes u_2, u_2, u_1, u_0), whose C^2 join with piece 2, times
+  // h_1 h_2 / 2, is the row
+  //   (h_2 (1 + rho) + 2 h_1) s_2 + h_1 s_3 = h_2 ((1 + rho) d_1 + rho^2 (d_1 - d_0)) + 3 h_1 d_2,
+  // rho = h_1 / (h_0 + h_1), strictly diagonally dominant as every C^2 row; after the solve
+  // s_0 and s_1 are that cubic's slopes (end_slopes below); likewise at the end, mirrored.
+  // The same spline (the C^2 row at u_1 holds within the one cubic); end slopes within a
+  // few ulps of the exact solve's where the textbook rows were tens to hundreds off
+  // (measured against the solve in rational arithmetic, docs/python.md).
+  const bool reduced = nak && n >= 5;
+  const std::size_t f = reduced ? 2 : 0, l = reduced ? n - 2 : n;
+  const T big = std::ldexp(T(1), 500), tiny = std::ldexp(T(1), -500);
+  bool ok = true;
+  // A slope below the normal range (a coordinate that moves by less than 2.2e-308 h) goes
+  // to the checked path too, which refuses a chord whose whole slope underflows.
+  constexpr T smallest = std::numeric_limits<T>::min();
+  const auto slope_ok = [&](const V& d, std::size_t i) {
+    bool good = true;
+    for (int k = 0; k < D; ++k) good = good && (std::abs(d[k]) >= smallest || P[i + 1][k] == P[i][k]);
+    return good;
+  };
+  // Spacing i and its chord slope, checked (see below).
+  const auto interval = [&](std::size_t i, T& h, V& d) {
+    h = u[i + 1] - u[i];
+    ok &= (h >= tiny) & (h <= big);
+    d = (P[i + 1] - P[i]) / h;
+    ok &= slope_ok(d, i);
+  };
   T b0, c0, an, bn;
   V r0, rn;
-  if (nak) {
+  // not-a-knot from 6 points: the spacings and chord slopes of the two end cubics, a =
+  // (h_0, h_1, h_2) and (d_0, d_1, d_2) at the start, b the mirrored ones at the end.
+  T ha[3] = {}, hb[3] = {};
+  V da[3] = {}, db[3] = {};
+  if (reduced) {
+    for (std::size_t j = 0; j < 3; ++j) {
+      interval(j, ha[j], da[j]);
+      interval(n - 1 - j, hb[j], db[j]);
+    }
+    // The join row at u_2 (above) and, mirrored, at u_(n-2): the mirror negates the slopes
+    // on both sides, so the row keeps its form with h_(n-1-j), d_(n-1-j) for h_j, d_j.
+    const auto join = [](const T* h, const V* d, T& diag, T& off, V& rhs) {
+      const T rho = h[1] / (h[0] + h[1]);
+      diag = h[2] * (1 + rho) + 2 * h[1];
+      off = h[1];
+      rhs = h[2] * ((1 + rho) * d[1] + (rho * rho) * (d[1] - d[0])) + T(3) * h[1] * d[2];
+    };
+    join(ha, da, b0, c0, r0);
+    join(hb, db, bn, an, rn);
+  } else if (nak) {
     const T h0 = hh(0), h1 = hh(1), s0 = h0 + h1;
     b0 = h1;
     c0 = s0;
@@ -304,8 +360,6 @@ bool cubic_spline_slopes_fused(const std::vector<T>& u, const std::vector<Point<
   // Spacings outside [2^-500, 2^500] go to cubic_spline_slopes, which scales them: here
   // their sums and products (2 (h + h), h0 h0 in the not-a-knot rows) would overflow or
   // underflow.
-  const T big = std::ldexp(T(1), 500), tiny = std::ldexp(T(1), -500);
-  bool ok = true;
   // The Bézier control points' finiteness accumulates in acc (x * 0 is 0 for finite x, NaN
   // otherwise); piece i is checked once s_i and s_(i+1) are final.
   T acc = 0;
@@ -314,69 +368,77 @@ bool cubic_spline_slopes_fused(const std::vector<T>& u, const std::vector<Point<
     const Point<T, D> a = P[i] + h3 * s[i], b = P[i + 1] - h3 * s[i + 1];
     for (int k = 0; k < D; ++k) acc += a[k] * 0 + b[k] * 0;
   };
+  // The slopes of an end cubic (not-a-knot from 6 points) from the solved slope at its far
+  // end, the join's: on [u_0, u_2] with tau = h_0 / (h_0 + h_1), rho = h_1 / (h_0 + h_1),
+  //   s_1 = d_1 - tau (s_2 - d_1) - rho^2 (d_1 - d_0),
+  //   s_0 = d_0 - 2 tau (d_1 - d_0) + (h_0 / h_1) (s_2 - d_1)
+  // (the derivatives of Newton's form at u_1 and u_0); at the end mirrored (the slopes'
+  // signs cancel). Then its two pieces are checked.
+  const auto end_slopes = [&](const T* h, const V* d, const V& joint, V& inner, V& outer) {
+    const T sum = h[0] + h[1], tau = h[0] / sum, rho = h[1] / sum;
+    const V e = joint - d[1], dd01 = d[1] - d[0];
+    inner = d[1] - tau * e - (rho * rho) * dd01;
+    outer = d[0] - (2 * tau) * dd01 + (h[0] / h[1]) * e;
+  };
   // Row i (0 < i < n): h_i s_(i-1) + 2 (h_(i-1) + h_i) s_i + h_(i-1) s_(i+1) = 3 (h_i d_(i-1) + h_(i-1) d_i).
   T inv = 1 / b0;
-  w[0] = c0 * inv;
-  s[0] = r0 * inv;
-  // A slope below the normal range (a coordinate that moves by less than 2.2e-308 h) goes
-  // to the checked path too, which refuses a chord whose whole slope underflows.
-  constexpr T smallest = std::numeric_limits<T>::min();
-  const auto slope_ok = [&](const V& d, std::size_t i) {
-    bool good = true;
-    for (int k = 0; k < D; ++k) good = good && (std::abs(d[k]) >= smallest || P[i + 1][k] == P[i][k]);
-    return good;
-  };
-  T hl = hh(0);  // the downward sweep's h_(i-1), d_(i-1)
-  ok &= (hl >= tiny) & (hl <= big);
-  V dl = (P[1] - P[0]) / hl;
-  ok &= slope_ok(dl, 0);
+  w[f] = c0 * inv;
+  s[f] = r0 * inv;
+  T hl;  // the downward sweep's h_(i-1), d_(i-1)
+  V dl;
+  interval(f, hl, dl);
   const auto down = [&](std::size_t i) {  // eliminates x_(i-1) from row i: x_i + w_i x_(i+1) = s_i
-    const T h = u[i + 1] - u[i];
-    ok &= (h >= tiny) & (h <= big);
-    const V d = (P[i + 1] - P[i]) / h;
-    ok &= slope_ok(d, i);
+    T h;
+    V d;
+    interval(i, h, d);
     const T r = 1 / (2 * (hl + h) - h * w[i - 1]);
     w[i] = hl * r;
     s[i] = (T(3) * (h * dl + hl * d) - h * s[i - 1]) * r;
     hl = h;
     dl = d;
   };
-  if (n < 4) {
-    for (std::size_t i = 1; i < n; ++i) down(i);
-    const T pivot = bn - an * w[n - 1];
+  const auto finish = [&] {
+    if (reduced) {
+      end_slopes(ha, da, s[2], s[1], s[0]);
+      end_slopes(hb, db, s[n - 2], s[n - 1], s[n]);
+      for (const std::size_t i : {std::size_t(0), std::size_t(1), n - 2, n - 1}) check_piece(i);
+    }
+    return ok && acc == 0;
+  };
+  if (l - f < 4) {
+    for (std::size_t i = f + 1; i < l; ++i) down(i);
+    const T pivot = bn - an * w[l - 1];
     ok &= std::isfinite(pivot) & (pivot != 0);
-    s[n] = (rn - an * s[n - 1]) / pivot;
-    for (std::size_t i = n; i-- > 0;) {
+    s[l] = (rn - an * s[l - 1]) / pivot;
+    for (std::size_t i = l; i-- > f;) {
       s[i] -= w[i] * s[i + 1];
       check_piece(i);
     }
-    return ok && acc == 0;
+    return finish();
   }
-  // A twisted factorization [ParlettDhillon97]: downward from row 0 to row k - 1 and upward from row n
-  // to row k + 1 in the same loop, two independent chains (each step waits for the
-  // division of the one before it), met at row k; then substitution outward from x_k,
+  // A twisted factorization [ParlettDhillon97]: downward from row f to row k - 1 and upward
+  // from row l to row k + 1 in the same loop, two independent chains (each step waits for
+  // the division of the one before it), met at row k; then substitution outward from x_k,
   // again two chains. Each sweep meets the same diagonally dominant rows as one-way
-  // elimination does, the not-a-knot end row first (as the downward sweep meets row 0).
-  const std::size_t k = n / 2;
+  // elimination does, the end row first (as the downward sweep meets row f).
+  const std::size_t k = (f + l) / 2;
   inv = 1 / bn;
-  w[n] = an * inv;
-  s[n] = rn * inv;
-  T hr = hh(n - 1);  // the upward sweep's h_i, d_i
-  ok &= (hr >= tiny) & (hr <= big);
-  V dr = (P[n] - P[n - 1]) / hr;
-  ok &= slope_ok(dr, n - 1);
+  w[l] = an * inv;
+  s[l] = rn * inv;
+  T hr;  // the upward sweep's h_i, d_i
+  V dr;
+  interval(l - 1, hr, dr);
   const auto up = [&](std::size_t i) {  // eliminates x_(i+1) from row i: x_i + w_i x_(i-1) = s_i
-    const T g = u[i] - u[i - 1];
-    ok &= (g >= tiny) & (g <= big);
-    const V e = (P[i] - P[i - 1]) / g;
-    ok &= slope_ok(e, i - 1);
+    T g;
+    V e;
+    interval(i - 1, g, e);
     const T r = 1 / (2 * (g + hr) - g * w[i + 1]);
     w[i] = hr * r;
     s[i] = (T(3) * (hr * e + g * dr) - g * s[i + 1]) * r;
     hr = g;
     dr = e;
   };
-  std::size_t top = 1, bottom = n - 1;
+  std::size_t top = f + 1, bottom = l - 1;
   for (; top < k && bottom > k; ++top, --bottom) {
     down(top);
     up(bottom);
@@ -389,21 +451,21 @@ bool cubic_spline_slopes_fused(const std::vector<T>& u, const std::vector<Point<
   ok &= std::isfinite(pivot) & (pivot != 0);
   s[k] = (T(3) * (hr * dl + hl * dr) - hr * s[k - 1] - hl * s[k + 1]) / pivot;
   std::size_t i = k, j = k;
-  for (; i > 0 && j < n; --i, ++j) {
+  for (; i > f && j < l; --i, ++j) {
     s[i - 1] -= w[i - 1] * s[i];
     check_piece(i - 1);
     s[j + 1] -= w[j + 1] * s[j];
     check_piece(j);
   }
-  for (; i > 0; --i) {
+  for (; i > f; --i) {
     s[i - 1] -= w[i - 1] * s[i];
     check_piece(i - 1);
   }
-  for (; j < n; ++j) {
+  for (; j < l; ++j) {
     s[j + 1] -= w[j + 1] * s[j];
     check_piece(j);
   }
-  return ok && acc == 0;
+  return finish();
 }
 
 }  // namespace detail

@@ -5,6 +5,7 @@
 // dimension, not per curve type).
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <span>
 #include <vector>
@@ -38,6 +39,22 @@ using AnyFrames = PerDimension<Frames>;
 /// t[i], point[i d .. i d + d) and distance[i] (each span sized n, n d, n). Throws
 /// InvalidArgument("points[i][k]", ...) for a coordinate that is not finite.
 void project_rows(const AnyCurve& c, std::span<const double> points, bool farthest, std::span<double> t,
+                  std::span<double> point, std::span<double> distance);
+
+/// A curve's exact Bézier pieces and domain, made once for any number of projections
+/// (the Python package keeps them with its curve object: one point on a curve of 2000
+/// pieces no longer makes its pieces again).
+struct ProjectionPieces {
+  AnyPieces pieces;
+  Interval<double> domain;
+};
+
+/// The pieces of c for project: throws as project does for a curve past the work limit.
+[[nodiscard]] std::unique_ptr<const ProjectionPieces> projection_pieces(const AnyCurve& c);
+
+/// project and project_rows on pieces made before (the same answers).
+[[nodiscard]] AnyProjection project(const ProjectionPieces& p, std::span<const double> point, bool farthest);
+void project_rows(const ProjectionPieces& p, std::span<const double> points, bool farthest, std::span<double> t,
                   std::span<double> point, std::span<double> distance);
 
 /// The arc length between `from` and `to` (default: the domain's ends), relative accuracy
