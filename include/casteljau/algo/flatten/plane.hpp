@@ -71,7 +71,7 @@ struct SmallChordCheck {
 /// (ok = false, dev2 = inf) for a zero chord.
 template <class T>
 inline SmallChordCheck<T> small_chord_check(T h, const Point<T, 2>& A, const Vector<T, 2>& dA, const Point<T, 2>& E,
-                                     const Vector<T, 2>& dE, T tol2) {
+                                            const Vector<T, 2>& dE, T tol2) {
   SmallChordCheck<T> r;
   const Vector<T, 2> v = E - A;
   const T L2 = dot(v, v);
@@ -250,7 +250,7 @@ inline bool parabola_step_within(const SmallOptimalPlan<T>& plan, T tp, T tn) {
 /// step that is not positive.
 template <class T>
 inline bool small_cheap_check(T h, const Point<T, 2>& A, const Vector<T, 2>& dA, const Point<T, 2>& E,
-                                                const Vector<T, 2>& dE, T tol2) {
+                              const Vector<T, 2>& dE, T tol2) {
   const Vector<T, 2> v = E - A;
   const T h3 = h * T(1.0 / 3);  // a multiplication (h / 3 is a division; the bound has slack for the ulp)
   const T L2 = dot(v, v);
@@ -359,7 +359,7 @@ struct PlainBlocks {
 /// last emitted vertex's.
 template <class T, class Kernels, class At, class D1, class Emit>
 inline void small_optimal_batched(const SmallOptimalPlan<T>& plan, const Kernels& kernels, T tol2, const At& point_at,
-                                                    const D1& d1_at, Emit& emit, T& tp, Point<T, 2>& A, Vector<T, 2>& dA) {
+                                  const D1& d1_at, Emit& emit, T& tp, Point<T, 2>& A, Vector<T, 2>& dA) {
   constexpr int B = optimal_block;
   const int n = plan.n;
   T f_base = 0, df = plan.F / static_cast<T>(n);
@@ -433,7 +433,7 @@ inline void small_optimal_batched(const SmallOptimalPlan<T>& plan, const Kernels
 /// and A are the last emitted vertex's (dA is left to the caller).
 template <class T, class Kernels, class At, class D1, class Emit>
 inline void small_optimal_parabola_batched(const SmallOptimalPlan<T>& plan, const Kernels& kernels, T tol2,
-                                                             const At& point_at, const D1& d1_at, Emit& emit, T& tp, Point<T, 2>& A) {
+                                           const At& point_at, const D1& d1_at, Emit& emit, T& tp, Point<T, 2>& A) {
   constexpr int B = optimal_block;
   const int n = plan.n;
   const CountSpan<T> p0 = plan.span;
@@ -613,14 +613,14 @@ struct SmallOptimalWriter {
     p = out.data() + used;
     end = out.data() + out.size();
   }
-  inline void operator()(const Point<T, 2>& q) {
+  void operator()(const Point<T, 2>& q) {
     if (p == end) [[unlikely]] reserve(8);
     (*p)[0] = origin[0] + q[0] * up;
     (*p)[1] = origin[1] + q[1] * up;
     ++p;
   }
   /// The vertices (x[i], y[i]), i < count, in order (a block of small_optimal_batched).
-  inline void block(const T* x, const T* y, int count) {
+  void block(const T* x, const T* y, int count) {
     if (end - p < count) [[unlikely]] reserve(count);
     for (int i = 0; i < count; ++i) {
       p[i][0] = origin[0] + x[i] * up;
