@@ -47,6 +47,15 @@ struct LaneBlocks {
 
 }  // namespace
 
+// The walk's helpers (the step checks, the writer, the lambdas of small_optimal) are
+// plain inline functions of the public header; GCC at -O2 leaves some of them out of line
+// in this loop (small_cheap_check, small_chord_check: about 1% more instructions on
+// elevated quadratics). `flatten` inlines every call of this function's body into it,
+// here only, instead of always_inline attributes in the header that every user's
+// translation unit would see (docs/performance.md, "Inlining of the plane walk").
+#if defined(__GNUC__)
+[[gnu::flatten]]
+#endif
 void small_optimal_compiled(const SmallPiece<double, 2>& s, double tol, std::vector<Point<double, 2>>& out, const Point<double, 2>& origin,
                             double up) {
   SmallOptimalWriter<double> writer{out, origin, up};

@@ -12,7 +12,6 @@
 #include <vector>
 
 #include "casteljau/algo/flatten/common.hpp"
-#include "casteljau/algo/flatten/force_inline.hpp"
 #include "casteljau/algo/flatten/plane_plan.hpp"
 #include "casteljau/algo/flatten/small_piece.hpp"
 
@@ -21,7 +20,7 @@ namespace casteljau::detail {
 /// Roots of c0 + c1 x + c2 x^2 in the open interval (0, 1), stable form (no
 /// cancellation between -c1 and the square root); at most two, written to r.
 template <class T>
-CASTELJAU_FLATTEN_INLINE int unit_quadratic_roots(T c0, T c1, T c2, T* r) {
+inline int unit_quadratic_roots(T c0, T c1, T c2, T* r) {
   int n = 0;
   if (c2 == 0) {
     if (c1 != 0) {
@@ -71,8 +70,8 @@ struct SmallChordCheck {
 /// A guaranteed check up to rounding of a few eps of the unit-scale coordinates. Fails
 /// (ok = false, dev2 = inf) for a zero chord.
 template <class T>
-CASTELJAU_FLATTEN_INLINE SmallChordCheck<T> small_chord_check(T h, const Point<T, 2>& A, const Vector<T, 2>& dA, const Point<T, 2>& E,
-                                     const Vector<T, 2>& dE, T tol2) {
+inline SmallChordCheck<T> small_chord_check(T h, const Point<T, 2>& A, const Vector<T, 2>& dA, const Point<T, 2>& E,
+                                            const Vector<T, 2>& dE, T tol2) {
   SmallChordCheck<T> r;
   const Vector<T, 2> v = E - A;
   const T L2 = dot(v, v);
@@ -113,7 +112,7 @@ CASTELJAU_FLATTEN_INLINE SmallChordCheck<T> small_chord_check(T h, const Point<T
 /// 3 num), exact to 0.6% there and free of square roots (the steps are only predictions:
 /// every step is checked).
 template <class T>
-CASTELJAU_FLATTEN_INLINE T step_factor(T num, T den) {
+inline T step_factor(T num, T den) {
   if (num <= 2 * den && 2 * num >= den) return (3 * den + 5 * num) / (5 * den + 3 * num);
   const T f = std::sqrt(std::sqrt(num / den));
   if (!(f >= T(0.25))) return f > T(4) ? T(4) : T(0.25);  // NaN (0 / 0) shrinks
@@ -234,7 +233,7 @@ void small_optimal_plan(const SmallPiece<T, 2>& s, T tol, SmallOptimalPlan<T>& p
 /// with |x0| + |x1 - x0| <= 1e4 (required of a closed plan) the rounding of x and of 1 +
 /// slope^2 stays far below the 1e-9 tol slack of lim.
 template <class T>
-CASTELJAU_FLATTEN_INLINE bool parabola_step_within(const SmallOptimalPlan<T>& plan, T tp, T tn) {
+inline bool parabola_step_within(const SmallOptimalPlan<T>& plan, T tp, T tn) {
   const T xn = plan.xa + tn * plan.xspan, xp = plan.xa + tp * plan.xspan;
   const T dx = (tn - tp) * plan.xspan / 2, sl = 2 * plan.xa + (tp + tn) * plan.xspan;
   return (plan.scale2 * (dx * dx) * (dx * dx) <= plan.lim2 * (1 + sl * sl)) & (1 + 2 * xp * sl >= 0) & (1 + 2 * xn * sl >= 0) & (tn > tp);
@@ -250,8 +249,8 @@ CASTELJAU_FLATTEN_INLINE bool parabola_step_within(const SmallOptimalPlan<T>& pl
 /// that pass. Sufficient, not necessary (small_chord_check decides the rest). False for a
 /// step that is not positive.
 template <class T>
-CASTELJAU_FLATTEN_INLINE bool small_cheap_check(T h, const Point<T, 2>& A, const Vector<T, 2>& dA, const Point<T, 2>& E,
-                                                const Vector<T, 2>& dE, T tol2) {
+inline bool small_cheap_check(T h, const Point<T, 2>& A, const Vector<T, 2>& dA, const Point<T, 2>& E,
+                              const Vector<T, 2>& dE, T tol2) {
   const Vector<T, 2> v = E - A;
   const T h3 = h * T(1.0 / 3);  // a multiplication (h / 3 is a division; the bound has slack for the ulp)
   const T L2 = dot(v, v);
@@ -359,8 +358,8 @@ struct PlainBlocks {
 /// (every emitted step passed the cheap or the exact check). On return tp, A, dA are the
 /// last emitted vertex's.
 template <class T, class Kernels, class At, class D1, class Emit>
-CASTELJAU_FLATTEN_INLINE void small_optimal_batched(const SmallOptimalPlan<T>& plan, const Kernels& kernels, T tol2, const At& point_at,
-                                                    const D1& d1_at, Emit& emit, T& tp, Point<T, 2>& A, Vector<T, 2>& dA) {
+inline void small_optimal_batched(const SmallOptimalPlan<T>& plan, const Kernels& kernels, T tol2, const At& point_at,
+                                  const D1& d1_at, Emit& emit, T& tp, Point<T, 2>& A, Vector<T, 2>& dA) {
   constexpr int B = optimal_block;
   const int n = plan.n;
   T f_base = 0, df = plan.F / static_cast<T>(n);
@@ -433,8 +432,8 @@ CASTELJAU_FLATTEN_INLINE void small_optimal_batched(const SmallOptimalPlan<T>& p
 /// a failing step whose vertex stays, the block's later checks still hold. On return tp
 /// and A are the last emitted vertex's (dA is left to the caller).
 template <class T, class Kernels, class At, class D1, class Emit>
-CASTELJAU_FLATTEN_INLINE void small_optimal_parabola_batched(const SmallOptimalPlan<T>& plan, const Kernels& kernels, T tol2,
-                                                             const At& point_at, const D1& d1_at, Emit& emit, T& tp, Point<T, 2>& A) {
+inline void small_optimal_parabola_batched(const SmallOptimalPlan<T>& plan, const Kernels& kernels, T tol2,
+                                           const At& point_at, const D1& d1_at, Emit& emit, T& tp, Point<T, 2>& A) {
   constexpr int B = optimal_block;
   const int n = plan.n;
   const CountSpan<T> p0 = plan.span;
@@ -522,14 +521,14 @@ void small_optimal(const SmallPiece<T, 2>& s, T tol, Emit&& emit, const Kernels&
   if constexpr (requires { emit.reserve(plan.n); }) emit.reserve(plan.n);
   const Point<T, 2> a0 = plan.a0;
   const V a1 = plan.a1, a2 = plan.a2, a3 = plan.a3;
-  auto point_at = [&](T t) CASTELJAU_FLATTEN_LAMBDA { return a0 + ((a3 * t + a2) * t + a1) * t; };
-  auto d1_at = [&](T t) CASTELJAU_FLATTEN_LAMBDA { return (T(3) * a3 * t + T(2) * a2) * t + a1; };
+  auto point_at = [&](T t) { return a0 + ((a3 * t + a2) * t + a1) * t; };
+  auto d1_at = [&](T t) { return (T(3) * a3 * t + T(2) * a2) * t + a1; };
   const T tol2 = tol * tol;
   T tp = 0;
   Point<T, 2> A = a0;
   V dA = a1;
   // One parabola checked in closed form: in blocks where the kernels have them.
-  auto batched_parabola = [&](T& tp_, Point<T, 2>& A_) CASTELJAU_FLATTEN_LAMBDA {
+  auto batched_parabola = [&](T& tp_, Point<T, 2>& A_) {
     if constexpr (Kernels::parabola_blocks) {
       if (plan.closed) {
         small_optimal_parabola_batched(plan, kernels, tol2, point_at, d1_at, emit, tp_, A_);
@@ -614,14 +613,14 @@ struct SmallOptimalWriter {
     p = out.data() + used;
     end = out.data() + out.size();
   }
-  CASTELJAU_FLATTEN_INLINE void operator()(const Point<T, 2>& q) {
+  void operator()(const Point<T, 2>& q) {
     if (p == end) [[unlikely]] reserve(8);
     (*p)[0] = origin[0] + q[0] * up;
     (*p)[1] = origin[1] + q[1] * up;
     ++p;
   }
   /// The vertices (x[i], y[i]), i < count, in order (a block of small_optimal_batched).
-  CASTELJAU_FLATTEN_INLINE void block(const T* x, const T* y, int count) {
+  void block(const T* x, const T* y, int count) {
     if (end - p < count) [[unlikely]] reserve(count);
     for (int i = 0; i < count; ++i) {
       p[i][0] = origin[0] + x[i] * up;

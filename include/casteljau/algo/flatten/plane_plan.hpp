@@ -10,7 +10,6 @@
 #include <cstdint>
 
 #include "casteljau/core/point.hpp"
-#include "casteljau/algo/flatten/force_inline.hpp"
 
 namespace casteljau::detail {
 
@@ -19,7 +18,7 @@ namespace casteljau::detail {
 /// asymptote a^2 / 2 + 0.61 a of the true inverse (a + 0.599)^2 / 2); within 0.2% of the
 /// true inverse for all a (checked against scipy's hyp2f1 form of I). Odd in a.
 template <class T>
-CASTELJAU_FLATTEN_INLINE T parabola_integral_inverse(T a) {
+inline T parabola_integral_inverse(T a) {
   constexpr T B = T(0.39);
   return a * (1 - B + std::sqrt(B * B + T(0.25) * a * a));
 }
@@ -32,7 +31,7 @@ CASTELJAU_FLATTEN_INLINE T parabola_integral_inverse(T a) {
 /// parabola_integral_inverse(a) = x. |x| is capped at 2^250 (x^2 stays finite; the caller's
 /// count vanishes as 1 / |x| there). Odd in x.
 template <class T>
-CASTELJAU_FLATTEN_INLINE T parabola_integral(T x) {
+inline T parabola_integral(T x) {
   constexpr T A = T(0.34136), A4 = (1 - A) * (1 - A) * (1 - A) * (1 - A), C = T(0.16191), B = T(0.39), cap = T(0x1p250);
   x = std::clamp(x, -cap, cap);
   const T x2 = x * x;
@@ -46,7 +45,7 @@ CASTELJAU_FLATTEN_INLINE T parabola_integral(T x) {
 /// normal x): a guess from the bits of x (the exponent halved and negated) and two
 /// Newton steps y (3 - x y^2) / 2, multiplications only (so loops of it vectorise):
 /// relative error below 5e-6 (checked over 1e-290 .. 1e290). Only for estimates.
-CASTELJAU_FLATTEN_INLINE double fast_rsqrt(double x) {
+inline double fast_rsqrt(double x) {
   double y = std::bit_cast<double>(std::uint64_t{0x5FE6EB50C7B537A9} - (std::bit_cast<std::uint64_t>(x) >> 1));
   y = y * (1.5 - 0.5 * x * y * y);
   y = y * (1.5 - 0.5 * x * y * y);
@@ -56,7 +55,7 @@ CASTELJAU_FLATTEN_INLINE double fast_rsqrt(double x) {
 /// Approximately x^(-1/4) for a double x > 1e-280, as fast_rsqrt: the exponent quartered
 /// and negated, two Newton steps z (5 - x z^4) / 4; relative error below 2e-5 (checked
 /// over 1e-280 .. 1e290 against numpy). Only for estimates.
-CASTELJAU_FLATTEN_INLINE double fast_rqrt4(double x) {
+inline double fast_rqrt4(double x) {
   double z = std::bit_cast<double>(std::uint64_t{0x4FEB000000000000} - (std::bit_cast<std::uint64_t>(x) >> 2));
   for (int k = 0; k < 2; ++k) {
     const double z2 = z * z;
