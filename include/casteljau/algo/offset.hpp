@@ -59,6 +59,12 @@ struct OffsetCurve {
 };
 
 namespace detail::offset {
+#ifdef CASTELJAU_OFFSET_STATS
+inline long stat_attempts=0, stat_rounds=0, stat_fits=0, stat_scans=0, stat_feet=0, stat_newton=0, stat_fallback=0, stat_peaks=0, stat_haus=0, stat_stretch=0;
+#define OSTAT(x) (++detail::offset::x)
+#else
+#define OSTAT(x) ((void)0)
+#endif
 
 template <class T>
 Vector<T, 2> left(const Vector<T, 2>& v) {
@@ -119,31 +125,51 @@ Point<T, 2> form_point(const std::vector<Point<T, 2>>& P, T t) {
   return Point<T, 2>{w[0], w[1]};
 }
 
+/// The power-basis coefficients c0 + c1 u + c2 u^2 + c3 u^3 of the cubic Bézier form with
+/// control points P0..P3 (fewer points: the form of lower degree). In the unit frame (every
+/// coordinate about 1 or less) the power basis on [0, 1] loses a few ulps, no more; Horner's
+/// point and derivatives cost a third of three de Casteljau passes.
+template <class T>
+std::array<Vector<T, 2>, 4> power_cubic(const Point<T, 2>* P, std::size_t n) {
+  std::array<Vector<T, 2>, 4> c{};
+  for (int k = 0; k < 2; ++k) {
+    const T p0 = P[0][k];
+    if (n == 1) {
+      c[0][k] = p0;
+    } else if (n == 2) {
+      c[0][k] = p0, c[1][k] = P[1][k] - p0;
+    } else if (n == 3) {
+      c[0][k] = p0, c[1][k] = 2 * (P[1][k] - p0), c[2][k] = P[2][k] - 2 * P[1][k] + p0;
+    } else {
+      c[0][k] = p0, c[1][k] = 3 * (P[1][k] - p0), c[2][k] = 3 * (P[2][k] - 2 * P[1][k] + p0);
+      c[3][k] = P[3][k] - p0 + 3 * (P[1][k] - P[2][k]);
+    }
+  }
+  return c;
+}
+
 /// A cubic Bézier's point and first two derivatives, from its control points (the
-/// candidates' inner loops).
+/// candidates' inner loops), by Horner in the power basis.
 template <class T>
 struct CubicForm {
   std::array<Point<T, 2>, 4> P;
-  explicit CubicForm(const Bezier<T, 2>& B) : P{B.points()[0], B.points()[1], B.points()[2], B.points()[3]} {}
-  CubicForm(const Point<T, 2>& p0, const Point<T, 2>& p1, const Point<T, 2>& p2, const Point<T, 2>& p3) : P{p0, p1, p2, p3} {}
+  std::array<Vector<T, 2>, 4> c;
+  explicit CubicForm(const Bezier<T, 2>& B) : P{B.points()[0], B.points()[1], B.points()[2], B.points()[3]}, c(power_cubic(P.data(), 4)) {}
+  CubicForm(const Point<T, 2>& p0, const Point<T, 2>& p1, const Point<T, 2>& p2, const Point<T, 2>& p3)
+      : P{p0, p1, p2, p3}, c(power_cubic(P.data(), 4)) {}
   Point<T, 2> at(T u) const {
     Point<T, 2> out;
-    for (int k = 0; k < 2; ++k) {
-      const T a = P[0][k] + u * (P[1][k] - P[0][k]), b = P[1][k] + u * (P[2][k] - P[1][k]), c = P[2][k] + u * (P[3][k] - P[2][k]);
-      const T d = a + u * (b - a), e = b + u * (c - b);
-      out[k] = d + u * (e - d);
-    }
+    for (int k = 0; k < 2; ++k) out[k] = c[0][k] + u * (c[1][k] + u * (c[2][k] + u * c[3][k]));
     return out;
   }
   Vector<T, 2> d1(T u) const {
-    const T w = 1 - u;
     Vector<T, 2> v;
-    for (int k = 0; k < 2; ++k) v[k] = 3 * (w * w * (P[1][k] - P[0][k]) + 2 * w * u * (P[2][k] - P[1][k]) + u * u * (P[3][k] - P[2][k]));
+    for (int k = 0; k < 2; ++k) v[k] = c[1][k] + u * (2 * c[2][k] + 3 * u * c[3][k]);
     return v;
   }
   Vector<T, 2> d2(T u) const {
     Vector<T, 2> v;
-    for (int k = 0; k < 2; ++k) v[k] = 6 * ((1 - u) * (P[2][k] - 2 * P[1][k] + P[0][k]) + u * (P[3][k] - 2 * P[2][k] + P[1][k]));
+    for (int k = 0; k < 2; ++k) v[k] = 2 * c[2][k] + 6 * u * c[3][k];
     return v;
   }
 };
@@ -156,25 +182,52 @@ struct PieceForm {
   static constexpr bool polynomial = std::is_same_v<Piece, Bezier<T, 2>>;
   Piece c;
   std::vector<Point<T, 2>> P, H1, H2;
+  bool cubic = false;  ///< degree <= 3: Horner in the power basis (CubicForm's)
+  std::array<Vector<T, 2>, 4> pc{};
   explicit PieceForm(const Piece& piece) : c(piece) {
     if constexpr (polynomial) {
       P = piece.points();
       const std::size_t n = P.size() - 1;
       for (std::size_t k = 0; k < n; ++k) H1.push_back(Point<T, 2>::from_vector(T(n) * (P[k + 1] - P[k])));
       for (std::size_t k = 0; k + 1 < n; ++k) H2.push_back(Point<T, 2>::from_vector(T(n - 1) * (H1[k + 1] - H1[k])));
+      if (P.size() <= 4) cubic = true, pc = power_cubic(P.data(), P.size());
     }
   }
   Point<T, 2> at(T t) const {
-    if constexpr (polynomial) return form_point(P, t);
-    else return c(t);
+    if constexpr (polynomial) {
+      if (cubic) {
+        Point<T, 2> out;
+        for (int k = 0; k < 2; ++k) out[k] = pc[0][k] + t * (pc[1][k] + t * (pc[2][k] + t * pc[3][k]));
+        return out;
+      }
+      return form_point(P, t);
+    } else {
+      return c(t);
+    }
   }
   Vector<T, 2> d1(T t) const {
-    if constexpr (polynomial) return form_point(H1, t).to_vector();
-    else return c.derivative_at(t, 1);
+    if constexpr (polynomial) {
+      if (cubic) {
+        Vector<T, 2> v;
+        for (int k = 0; k < 2; ++k) v[k] = pc[1][k] + t * (2 * pc[2][k] + 3 * t * pc[3][k]);
+        return v;
+      }
+      return form_point(H1, t).to_vector();
+    } else {
+      return c.derivative_at(t, 1);
+    }
   }
   Vector<T, 2> d2(T t) const {
-    if constexpr (polynomial) return H2.empty() ? Vector<T, 2>{} : form_point(H2, t).to_vector();
-    else return c.derivative_at(t, 2);
+    if constexpr (polynomial) {
+      if (cubic) {
+        Vector<T, 2> v;
+        for (int k = 0; k < 2; ++k) v[k] = 2 * pc[2][k] + 6 * t * pc[3][k];
+        return v;
+      }
+      return H2.empty() ? Vector<T, 2>{} : form_point(H2, t).to_vector();
+    } else {
+      return c.derivative_at(t, 2);
+    }
   }
 };
 
@@ -289,6 +342,7 @@ struct Sampled {
 /// the source's samples against the cubic, first).
 template <class T>
 T hausdorff(const Bezier<T, 2>& B, const Source<T>& s, T a, T b, T stop_above) {
+  OSTAT(stat_haus);
   constexpr int m = 32;
   const CubicForm<T> F(B);
   Sampled<T> exact{s.point, s.velocity, {}, {}}, cubic{[&](T u) { return F.at(u); }, [&](T u) { return F.d1(u); }, {}, {}};
@@ -369,7 +423,9 @@ std::vector<Bezier<T, 2>> candidates(const Source<T>& s, T a, T b, T tol) {
   // alternation of linear least squares and reparametrisation [Schneider90] crawls.
   T alpha = ha > 0 ? ha : length(P3 - P0) / 3, beta = hb > 0 ? hb : length(P3 - P0) / 3;
   bool ok = false;
+  OSTAT(stat_fits);
   for (int round = 0; round < 8; ++round) {
+    OSTAT(stat_rounds);
     const CubicForm<T> B(P0, P0 + T0 * alpha, P3 - T3 * beta, P3);
     T a11 = 0, a12 = 0, a22 = 0, r1 = 0, r2 = 0;
     for (int j = 1; j <= m; ++j) {
@@ -485,9 +541,11 @@ bool normal_foot(const CubicForm<T>& F, const Source<T>& s, T t, T guess, T ul, 
     u = x, err = length(F.at(x) - O);
     return true;
   };
-  constexpr T settled = T(1e-10);  // a Newton step this small leaves an error of about its square
+  constexpr T settled = T(1e-7);  // a Newton step this small leaves an error of about its square (1e-14)
   T x = std::clamp(guess, ul, ur);
+  OSTAT(stat_feet);
   for (int it = 0; it < 8; ++it) {
+    OSTAT(stat_newton);
     const T gp = dot(F.d1(x), Tt);
     if (!(gp > 0)) break;
     const T nx = x - g(x) / gp;
@@ -496,6 +554,7 @@ bool normal_foot(const CubicForm<T>& F, const Source<T>& s, T t, T guess, T ul, 
     x = nx;
   }
   T xl = ul, xr = ur;
+  OSTAT(stat_fallback);
   if (!(g(ul) < 0)) return false;
   bool found = false;
   for (int k = 1; k <= 16 && !found; ++k) {
@@ -522,6 +581,7 @@ template <class T>
 NormalScan<T> normal_scan(const CubicForm<T>& F, const Source<T>& s, T a, T b, T stop_above) {
   constexpr int m = NormalScan<T>::parts;
   NormalScan<T> r;
+  OSTAT(stat_scans);
   // The equal parts first (feet from the last foot, extrapolated).
   std::array<T, m + 1> t0{}, u0{}, e0{};
   t0[0] = a, u0[0] = 0, t0[m] = b, u0[m] = 1;
@@ -608,7 +668,37 @@ T normal_peaks(const CubicForm<T>& F, const Source<T>& s, NormalScan<T>& r, T st
       if (!normal_foot(F, s, t, guess, ul, ur, u, e)) r.ok = false;
       return -e;
     };
-    worst = std::max(worst, -golden_min(minus_error, tl, tr, 12).second);
+    OSTAT(stat_peaks);
+    // The top by successive parabolas through the largest sample and its two neighbours
+    // (a smooth bump's top is a parabola's to third order: a few feet), the parabola's
+    // own top counted too; golden section where the three samples do not make a cap.
+    std::array<T, 3> pt{tl, tm, tr}, pe{r.e[j - 1], r.e[j], r.e[j + 1]};
+    bool capped = true;
+    T top = r.e[j];
+    for (int it = 0; it < 4 && capped; ++it) {
+      const T s0 = (pe[1] - pe[0]) / (pt[1] - pt[0]), s1 = (pe[2] - pe[1]) / (pt[2] - pt[1]);
+      const T curv = (s1 - s0) / (pt[2] - pt[0]);  // p(t) = pe[0] + s0 (t - pt[0]) + curv (t - pt[0]) (t - pt[1])
+      if (!(curv < 0)) {
+        capped = false;
+        break;
+      }
+      const T tvx = std::clamp((pt[0] + pt[1]) / 2 - s0 / (2 * curv), pt[0], pt[2]);
+      top = std::max(top, pe[0] + s0 * (tvx - pt[0]) + curv * (tvx - pt[0]) * (tvx - pt[1]));
+      if (std::abs(tvx - pt[1]) <= T(1e-4) * (tr - tl)) break;
+      const T ev = -minus_error(tvx);
+      if (!r.ok) break;
+      top = std::max(top, ev);
+      if (ev >= pe[1]) {
+        if (tvx < pt[1]) pt = {pt[0], tvx, pt[1]}, pe = {pe[0], ev, pe[1]};
+        else pt = {pt[1], tvx, pt[2]}, pe = {pe[1], ev, pe[2]};
+      } else {
+        if (tvx < pt[1]) pt[0] = tvx, pe[0] = ev;
+        else pt[2] = tvx, pe[2] = ev;
+      }
+    }
+    if (!r.ok) break;
+    if (!capped) top = std::max(top, -golden_min(minus_error, tl, tr, 12).second);
+    worst = std::max(worst, top);
     if (worst > stop_above) return worst;
   }
   return worst;
@@ -726,6 +816,7 @@ void approximate(const Source<T>& s, OffsetFit fit, Raw<T>& raw) {
         throw InvalidArgument("tolerance", "cannot be met by cubics near the offset's parameter " + std::to_string(a) +
                                                " of a piece (below the rounding of the computation): use a larger tolerance");
       }
+      OSTAT(stat_attempts);
       Screened<T> g = best_screened(s, a, x, tol);
       T e = g.error;
       if (e <= tol) e = certify(g, s, a, x, tol);
@@ -857,10 +948,20 @@ std::vector<Stretch<T>> stretches(const Piece& c, T d, T tiny) {
   std::vector<T> sp(M + 1);
   T top = 0;
   for (int j = 0; j <= M; ++j) grid[j] = T(j) / M, sp[j] = speed(grid[j]), top = std::max(top, sp[j]);
+  // A zero of the speed within one grid step of t makes |C'(t)| at most the step times
+  // max |C''|, which the second hodograph's control points bound (convex hull): a local
+  // minimum of the sampled speed above that is no cusp and is not refined (polynomial
+  // pieces; a rational piece's every minimum is refined).
+  T near_zero = std::numeric_limits<T>::infinity();
+  if constexpr (PieceForm<T, Piece>::polynomial) {
+    T b2 = 0;
+    for (const auto& q : form.H2) b2 = std::max(b2, length(q.to_vector()));
+    near_zero = (b2 / T(M)) * (1 + T(1e-6)) + tiny;
+  }
   // The piece's interior cusps: local minima of the speed below 1e-6 of its largest.
   std::vector<T> cusps{T(0)};
   for (int j = 1; j < M; ++j) {
-    if (sp[j] <= sp[j - 1] && sp[j] <= sp[j + 1]) {
+    if (sp[j] <= sp[j - 1] && sp[j] <= sp[j + 1] && sp[j] <= near_zero) {
       T lo = grid[j - 1], hi = grid[j + 1];
       const T rr = T(0.6180339887498948482045868343656381L);
       for (int k = 0; k < 60; ++k) {
@@ -895,7 +996,11 @@ std::vector<Stretch<T>> stretches(const Piece& c, T d, T tiny) {
             if ((g(mid) < 0) == neg_lo) lo = mid; else hi = mid;
           }
           cuts.push_back((lo + hi) / 2);
-        } else if (j > 0 && std::abs(gv[j]) <= std::abs(gv[j - 1]) && std::abs(gv[j]) <= std::abs(gv[j + 1])) {
+        } else if (j > 0 && std::abs(gv[j]) <= std::abs(gv[j - 1]) && std::abs(gv[j]) <= std::abs(gv[j + 1]) &&
+                   std::abs(gv[j]) <= 2 * std::max(std::abs(gv[j - 1] - gv[j]), std::abs(gv[j + 1] - gv[j])) + T(1e-9)) {
+          // A touch of zero (a double root t* within half a step of the sample: g about
+          // c (t - t*)^2) leaves |g| at the sample at most a quarter of its rise to either
+          // neighbour; minima far above that (most minima of |1 - d kappa|) are not refined.
           T lo = a + h * T(j - 1), hi = a + h * T(j + 1);
           const T rr = T(0.6180339887498948482045868343656381L);
           for (int k = 0; k < 60; ++k) {
@@ -1140,6 +1245,7 @@ OffsetCurve<T> offset(const Pieces<T, 2>& curve, const OffsetOptions<T>& o) {
             }
             piece_start = false;
             if (prev && d != 0) join(Corner<T>{c(s.lo), *prev, s.t_lo}, o, d, raw);
+            OSTAT(stat_stretch);
             approximate(stretch_source<T>(c, s, d), o.fit, raw);
             prev = s.t_hi;
             last_at = c(s.hi);
