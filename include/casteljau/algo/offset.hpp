@@ -60,7 +60,7 @@ struct OffsetCurve {
 
 namespace detail::offset {
 #ifdef CASTELJAU_OFFSET_STATS
-inline long stat_attempts=0, stat_rounds=0, stat_fits=0, stat_scans=0, stat_feet=0, stat_newton=0, stat_fallback=0, stat_peaks=0, stat_haus=0, stat_stretch=0;
+inline long stat_hist[10]={}; inline long stat_attempts=0, stat_rounds=0, stat_fits=0, stat_scans=0, stat_feet=0, stat_newton=0, stat_fallback=0, stat_peaks=0, stat_haus=0, stat_stretch=0;
 #define OSTAT(x) (++detail::offset::x)
 #else
 #define OSTAT(x) ((void)0)
@@ -154,6 +154,8 @@ template <class T>
 struct CubicForm {
   std::array<Point<T, 2>, 4> P;
   std::array<Vector<T, 2>, 4> c;
+  CubicForm() = default;
+  Bezier<T, 2> bezier() const { return Bezier<T, 2>({P[0], P[1], P[2], P[3]}); }
   explicit CubicForm(const Bezier<T, 2>& B) : P{B.points()[0], B.points()[1], B.points()[2], B.points()[3]}, c(power_cubic(P.data(), 4)) {}
   CubicForm(const Point<T, 2>& p0, const Point<T, 2>& p1, const Point<T, 2>& p2, const Point<T, 2>& p3)
       : P{p0, p1, p2, p3}, c(power_cubic(P.data(), 4)) {}
@@ -341,10 +343,9 @@ struct Sampled {
 /// exceed it, that value is returned at once (a rejected candidate; the cheap direction,
 /// the source's samples against the cubic, first).
 template <class T>
-T hausdorff(const Bezier<T, 2>& B, const Source<T>& s, T a, T b, T stop_above) {
+T hausdorff(const CubicForm<T>& F, const Source<T>& s, T a, T b, T stop_above) {
   OSTAT(stat_haus);
   constexpr int m = 32;
-  const CubicForm<T> F(B);
   Sampled<T> exact{s.point, s.velocity, {}, {}}, cubic{[&](T u) { return F.at(u); }, [&](T u) { return F.d1(u); }, {}, {}};
   exact.t.resize(m + 1), exact.p.resize(m + 1), cubic.t.resize(m + 1), cubic.p.resize(m + 1);
   for (int j = 0; j <= m; ++j) {
@@ -399,20 +400,30 @@ T hausdorff(const Bezier<T, 2>& B, const Source<T>& s, T a, T b, T stop_above) {
 /// less than 1e-3 of the tolerance `tol` (the handles' step times the largest Bernstein
 /// weight 4/9).
 template <class T>
-std::vector<Bezier<T, 2>> candidates(const Source<T>& s, T a, T b, T tol) {
+struct Candidates {
+  std::array<CubicForm<T>, 2> c;
+  int n = 0;
+  void push(const CubicForm<T>& f) { c[static_cast<std::size_t>(n++)] = f; }
+};
+
+template <class T>
+Candidates<T> candidates(const Source<T>& s, T a, T b, T tol) {
   const Point<T, 2> P0 = s.point(a), P3 = s.point(b);
   const Vector<T, 2> T0 = s.tangent(a), T3 = s.tangent(b);
   const T h = (b - a) / 3;
   const T ha = length(s.velocity(a)) * h, hb = length(s.velocity(b)) * h;
-  std::vector<Bezier<T, 2>> out;
-  const Bezier<T, 2> hermite({P0, P0 + T0 * ha, P3 - T3 * hb, P3});
+  Candidates<T> out;
+  const CubicForm<T> hermite(P0, P0 + T0 * ha, P3 - T3 * hb, P3);
   constexpr int m = 15;
-  std::vector<Point<T, 2>> q(m + 2);
-  std::vector<T> u(m + 2);
+  std::array<Point<T, 2>, m + 2> q;
+  std::array<T, m + 2> u;
   for (int j = 0; j <= m + 1; ++j) q[j] = j == 0 ? P0 : j == m + 1 ? P3 : s.point(a + (b - a) * T(j) / (m + 1));
   u[0] = 0;
   for (int j = 1; j <= m + 1; ++j) u[j] = u[j - 1] + length(q[j] - q[j - 1]);
-  if (!(u[m + 1] > 0)) return {hermite};
+  if (!(u[m + 1] > 0)) {
+    out.push(hermite);
+    return out;
+  }
   for (int j = 1; j <= m + 1; ++j) u[j] /= u[m + 1];
   // Gauss-Newton on the handle lengths (alpha, beta) for the normal distances of the
   // samples to the cubic: each sample projected on the current cubic (Newton on
@@ -423,6 +434,9 @@ std::vector<Bezier<T, 2>> candidates(const Source<T>& s, T a, T b, T tol) {
   // alternation of linear least squares and reparametrisation [Schneider90] crawls.
   T alpha = ha > 0 ? ha : length(P3 - P0) / 3, beta = hb > 0 ? hb : length(P3 - P0) / 3;
   bool ok = false;
+#ifdef CASTELJAU_OFFSET_STATS
+  const long rounds_before = stat_rounds;
+#endif
   OSTAT(stat_fits);
   for (int round = 0; round < 8; ++round) {
     OSTAT(stat_rounds);
@@ -444,12 +458,15 @@ std::vector<Bezier<T, 2>> candidates(const Source<T>& s, T a, T b, T tol) {
     if (!(std::abs(det) > std::numeric_limits<T>::epsilon() * 16 * (a11 * a22))) break;  // a straight stretch: any lengths
     const T al = alpha - (r1 * a22 - r2 * a12) / det, be = beta - (a11 * r2 - a12 * r1) / det;
     if (!(al > 0 && be > 0 && std::isfinite(al) && std::isfinite(be))) break;  // the last good lengths stay
-    const bool done = (std::abs(al - alpha) + std::abs(be - beta)) * T(4) / 9 <= T(1e-3) * tol;
+    const bool done = (std::abs(al - alpha) + std::abs(be - beta)) * T(4) / 9 <= T(1e-2) * tol;
     alpha = al, beta = be, ok = true;
     if (done) break;
   }
-  if (ok) out.push_back(Bezier<T, 2>({P0, P0 + T0 * alpha, P3 - T3 * beta, P3}));
-  out.push_back(hermite);  // last: usually the worse, then rejected on its first samples
+#ifdef CASTELJAU_OFFSET_STATS
+  ++stat_hist[std::min(9, (int)(stat_rounds - rounds_before))];
+#endif
+  if (ok) out.push(CubicForm<T>(P0, P0 + T0 * alpha, P3 - T3 * beta, P3));
+  out.push(hermite);  // last: usually the worse, then rejected on its first samples
   return out;
 }
 
@@ -708,21 +725,20 @@ T normal_peaks(const CubicForm<T>& F, const Source<T>& s, NormalScan<T>& r, T st
 /// normal scan and its peaks (NormalScan), or where the scan fails the projections both
 /// ways (hausdorff). Stops above stop_above (a rejected cubic).
 template <class T>
-T measured(const Bezier<T, 2>& B, const Source<T>& s, T a, T b, T stop_above) {
-  const CubicForm<T> F(B);
+T measured(const CubicForm<T>& F, const Source<T>& s, T a, T b, T stop_above) {
   NormalScan<T> r = normal_scan(F, s, a, b, stop_above);
   if (r.ok && r.worst > stop_above) return r.worst;
   if (r.ok) {
     const T e = normal_peaks(F, s, r, stop_above);
     if (r.ok) return e;
   }
-  return hausdorff(B, s, a, b, stop_above);
+  return hausdorff(F, s, a, b, stop_above);
 }
 
 /// A candidate cubic over [a, b] with its scan.
 template <class T>
 struct Screened {
-  Bezier<T, 2> cubic;
+  CubicForm<T> cubic;
   NormalScan<T> scan;
   T error;  ///< the scan's estimate (the choice of the end), or the measure where the scan failed
 };
@@ -731,13 +747,14 @@ struct Screened {
 /// measured by projections), with that estimate.
 template <class T>
 Screened<T> best_screened(const Source<T>& s, T a, T b, T stop_above) {
-  auto cs = candidates(s, a, b, stop_above);
+  const Candidates<T> cs = candidates(s, a, b, stop_above);
   std::optional<Screened<T>> best;
-  for (auto& c : cs) {
+  for (int i = 0; i < cs.n; ++i) {
+    const CubicForm<T>& c = cs.c[static_cast<std::size_t>(i)];
     const T limit = best ? std::min(stop_above, best->error) : stop_above;
-    NormalScan<T> r = normal_scan(CubicForm<T>(c), s, a, b, limit);
+    NormalScan<T> r = normal_scan(c, s, a, b, limit);
     const T e = r.ok ? r.estimate : hausdorff(c, s, a, b, limit);
-    if (!best || e < best->error) best = Screened<T>{std::move(c), r, e};
+    if (!best || e < best->error) best = Screened<T>{c, r, e};
   }
   return std::move(*best);
 }
@@ -747,7 +764,7 @@ Screened<T> best_screened(const Source<T>& s, T a, T b, T stop_above) {
 template <class T>
 T certify(Screened<T>& g, const Source<T>& s, T a, T b, T stop_above) {
   if (g.scan.ok) {
-    const T e = normal_peaks(CubicForm<T>(g.cubic), s, g.scan, stop_above);
+    const T e = normal_peaks(g.cubic, s, g.scan, stop_above);
     if (g.scan.ok) return e;
   }
   return hausdorff(g.cubic, s, a, b, stop_above);
@@ -756,16 +773,17 @@ T certify(Screened<T>& g, const Source<T>& s, T a, T b, T stop_above) {
 /// The best candidate over [a, b] and its measured error (stop_above as measured's).
 template <class T>
 std::pair<Bezier<T, 2>, T> best_fit(const Source<T>& s, T a, T b, T stop_above, bool hermite_only) {
-  auto cs = candidates(s, a, b, stop_above);
-  if (hermite_only) cs.erase(cs.begin(), cs.end() - 1);
-  std::optional<Bezier<T, 2>> best;
+  const Candidates<T> cs = candidates(s, a, b, stop_above);
+  const int first = hermite_only ? cs.n - 1 : 0;
+  std::optional<CubicForm<T>> best;
   T err = std::numeric_limits<T>::infinity();
-  for (auto& c : cs) {
+  for (int i = first; i < cs.n; ++i) {
+    const CubicForm<T>& c = cs.c[static_cast<std::size_t>(i)];
     const T e = measured(c, s, a, b, std::min(stop_above, err));
-    if (!(e >= err)) err = e, best = std::move(c);
+    if (!(e >= err)) err = e, best = c;
   }
-  if (!best) best = cs.front(), err = std::numeric_limits<T>::infinity();
-  return {std::move(*best), err};
+  if (!best) best = cs.c[static_cast<std::size_t>(first)], err = std::numeric_limits<T>::infinity();
+  return {best->bezier(), err};
 }
 
 /// Approximates the whole source by cubics within the tolerance into raw.
@@ -840,7 +858,7 @@ void approximate(const Source<T>& s, OffsetFit fit, Raw<T>& raw) {
                                              " of a piece (below the rounding of the computation): use a larger tolerance");
     }
     raw.max_error = std::max(raw.max_error, B->error);
-    raw.push(std::move(B->cubic), s.reversed);
+    raw.push(B->cubic.bezier(), s.reversed);
     last_step = lo - a;
     a = lo;
   }
@@ -1034,7 +1052,13 @@ std::vector<Stretch<T>> stretches(const Piece& c, T d, T tiny) {
       // derivatives below 1e-5 of the largest speed count as zero there.
       const T zero_lo = (k == 0 && i > 0) ? T(1e-5) * top : tiny;
       const T zero_hi = (k + 2 == cuts.size() && i + 2 < cusps.size()) ? T(1e-5) * top : tiny;
-      Stretch<T> s{lo, hi, d != 0 && g(mid) < 0, limit_tangent<T>(c, lo, false, zero_lo), limit_tangent<T>(c, hi, true, zero_hi)};
+      // The tangent from the first derivative where it is not zero (the piece's form, no
+      // allocation), else its limit from the higher derivatives.
+      const auto tangent_at = [&](T t, bool from_left, T zero) {
+        const Vector<T, 2> v = form.d1(t);
+        return length(v) > zero ? unit(v) : limit_tangent<T>(c, t, from_left, zero);
+      };
+      Stretch<T> s{lo, hi, d != 0 && g(mid) < 0, tangent_at(lo, false, zero_lo), tangent_at(hi, true, zero_hi)};
       out.push_back(s);
     }
   }
