@@ -59,12 +59,6 @@ struct OffsetCurve {
 };
 
 namespace detail::offset {
-#ifdef CASTELJAU_OFFSET_STATS
-inline long stat_hist[10]={}; inline long stat_attempts=0, stat_rounds=0, stat_fits=0, stat_scans=0, stat_feet=0, stat_newton=0, stat_fallback=0, stat_peaks=0, stat_haus=0, stat_stretch=0;
-#define OSTAT(x) (++detail::offset::x)
-#else
-#define OSTAT(x) ((void)0)
-#endif
 
 template <class T>
 Vector<T, 2> left(const Vector<T, 2>& v) {
@@ -182,18 +176,32 @@ struct CubicForm {
 template <class T, class Piece>
 struct PieceForm {
   static constexpr bool polynomial = std::is_same_v<Piece, Bezier<T, 2>>;
-  Piece c;
-  std::vector<Point<T, 2>> P, H1, H2;
-  bool cubic = false;  ///< degree <= 3: Horner in the power basis (CubicForm's)
+  std::conditional_t<polynomial, std::monostate, std::optional<Piece>> c;  ///< a rational piece itself
+  std::vector<Point<T, 2>> P, H1, H2;  ///< a polynomial piece above degree 3: its points and hodographs
+  bool cubic = false;                  ///< degree <= 3: Horner in the power basis (CubicForm's), no vectors
   std::array<Vector<T, 2>, 4> pc{};
-  explicit PieceForm(const Piece& piece) : c(piece) {
+  explicit PieceForm(const Piece& piece) {
     if constexpr (polynomial) {
-      P = piece.points();
+      const auto& Q = piece.points();
+      if (Q.size() <= 4) {
+        cubic = true, pc = power_cubic(Q.data(), Q.size());
+        return;
+      }
+      P = Q;
       const std::size_t n = P.size() - 1;
       for (std::size_t k = 0; k < n; ++k) H1.push_back(Point<T, 2>::from_vector(T(n) * (P[k + 1] - P[k])));
       for (std::size_t k = 0; k + 1 < n; ++k) H2.push_back(Point<T, 2>::from_vector(T(n - 1) * (H1[k + 1] - H1[k])));
-      if (P.size() <= 4) cubic = true, pc = power_cubic(P.data(), P.size());
+    } else {
+      c = piece;
     }
+  }
+  /// An upper bound of |C''| on [0, 1] (polynomial pieces: the second hodograph's control
+  /// points, its convex hull; for degree <= 3 the line 2 c2 + 6 c3 t at its ends).
+  T second_bound() const {
+    T b = 0;
+    if (cubic) return std::max(length(pc[2] * T(2)), length(pc[2] * T(2) + pc[3] * T(6)));
+    for (const auto& q : H2) b = std::max(b, length(q.to_vector()));
+    return b;
   }
   Point<T, 2> at(T t) const {
     if constexpr (polynomial) {
@@ -204,7 +212,7 @@ struct PieceForm {
       }
       return form_point(P, t);
     } else {
-      return c(t);
+      return (*c)(t);
     }
   }
   Vector<T, 2> d1(T t) const {
@@ -216,7 +224,7 @@ struct PieceForm {
       }
       return form_point(H1, t).to_vector();
     } else {
-      return c.derivative_at(t, 1);
+      return c->derivative_at(t, 1);
     }
   }
   Vector<T, 2> d2(T t) const {
@@ -228,7 +236,7 @@ struct PieceForm {
       }
       return H2.empty() ? Vector<T, 2>{} : form_point(H2, t).to_vector();
     } else {
-      return c.derivative_at(t, 2);
+      return c->derivative_at(t, 2);
     }
   }
 };
@@ -344,7 +352,6 @@ struct Sampled {
 /// the source's samples against the cubic, first).
 template <class T>
 T hausdorff(const CubicForm<T>& F, const Source<T>& s, T a, T b, T stop_above) {
-  OSTAT(stat_haus);
   constexpr int m = 32;
   Sampled<T> exact{s.point, s.velocity, {}, {}}, cubic{[&](T u) { return F.at(u); }, [&](T u) { return F.d1(u); }, {}, {}};
   exact.t.resize(m + 1), exact.p.resize(m + 1), cubic.t.resize(m + 1), cubic.p.resize(m + 1);
@@ -397,7 +404,7 @@ T hausdorff(const CubicForm<T>& F, const Source<T>& s, T a, T b, T stop_above) {
 /// 15 interior samples (Gauss-Newton, below; the fixed-tangent fit of [Schneider90] made
 /// geometric), when its lengths are positive, then the Hermite cubic (handles the
 /// source's velocity times (b - a) / 3). The fit stops when a step moves the cubic by
-/// less than 1e-3 of the tolerance `tol` (the handles' step times the largest Bernstein
+/// less than 1e-2 of the tolerance `tol` (the handles' step times the largest Bernstein
 /// weight 4/9).
 template <class T>
 struct Candidates {
@@ -434,12 +441,7 @@ Candidates<T> candidates(const Source<T>& s, T a, T b, T tol) {
   // alternation of linear least squares and reparametrisation [Schneider90] crawls.
   T alpha = ha > 0 ? ha : length(P3 - P0) / 3, beta = hb > 0 ? hb : length(P3 - P0) / 3;
   bool ok = false;
-#ifdef CASTELJAU_OFFSET_STATS
-  const long rounds_before = stat_rounds;
-#endif
-  OSTAT(stat_fits);
   for (int round = 0; round < 8; ++round) {
-    OSTAT(stat_rounds);
     const CubicForm<T> B(P0, P0 + T0 * alpha, P3 - T3 * beta, P3);
     T a11 = 0, a12 = 0, a22 = 0, r1 = 0, r2 = 0;
     for (int j = 1; j <= m; ++j) {
@@ -462,9 +464,6 @@ Candidates<T> candidates(const Source<T>& s, T a, T b, T tol) {
     alpha = al, beta = be, ok = true;
     if (done) break;
   }
-#ifdef CASTELJAU_OFFSET_STATS
-  ++stat_hist[std::min(9, (int)(stat_rounds - rounds_before))];
-#endif
   if (ok) out.push(CubicForm<T>(P0, P0 + T0 * alpha, P3 - T3 * beta, P3));
   out.push(hermite);  // last: usually the worse, then rejected on its first samples
   return out;
@@ -478,6 +477,9 @@ struct Raw {
   T max_error = 0;
   T tolerance = 0;
   std::size_t max_segments = 0;
+  /// How far the next cubic's start will be moved to the last end (a short stretch of an
+  /// untrimmed swallowtail left out, see offset()): its fit gets that much less tolerance.
+  T start_shift = 0;
 
   void push(Bezier<T, 2> B, bool rev) {
     const auto& Q = B.points();
@@ -560,9 +562,7 @@ bool normal_foot(const CubicForm<T>& F, const Source<T>& s, T t, T guess, T ul, 
   };
   constexpr T settled = T(1e-7);  // a Newton step this small leaves an error of about its square (1e-14)
   T x = std::clamp(guess, ul, ur);
-  OSTAT(stat_feet);
   for (int it = 0; it < 8; ++it) {
-    OSTAT(stat_newton);
     const T gp = dot(F.d1(x), Tt);
     if (!(gp > 0)) break;
     const T nx = x - g(x) / gp;
@@ -571,7 +571,6 @@ bool normal_foot(const CubicForm<T>& F, const Source<T>& s, T t, T guess, T ul, 
     x = nx;
   }
   T xl = ul, xr = ur;
-  OSTAT(stat_fallback);
   if (!(g(ul) < 0)) return false;
   bool found = false;
   for (int k = 1; k <= 16 && !found; ++k) {
@@ -598,7 +597,6 @@ template <class T>
 NormalScan<T> normal_scan(const CubicForm<T>& F, const Source<T>& s, T a, T b, T stop_above) {
   constexpr int m = NormalScan<T>::parts;
   NormalScan<T> r;
-  OSTAT(stat_scans);
   // The equal parts first (feet from the last foot, extrapolated).
   std::array<T, m + 1> t0{}, u0{}, e0{};
   t0[0] = a, u0[0] = 0, t0[m] = b, u0[m] = 1;
@@ -685,7 +683,6 @@ T normal_peaks(const CubicForm<T>& F, const Source<T>& s, NormalScan<T>& r, T st
       if (!normal_foot(F, s, t, guess, ul, ur, u, e)) r.ok = false;
       return -e;
     };
-    OSTAT(stat_peaks);
     // The top by successive parabolas through the largest sample and its two neighbours
     // (a smooth bump's top is a parabola's to third order: a few feet), the parabola's
     // own top counted too; golden section where the three samples do not make a cap.
@@ -824,7 +821,10 @@ void approximate(const Source<T>& s, OffsetFit fit, Raw<T>& raw) {
   // further check.
   T a = s.lo;
   T last_step = s.hi - s.lo;
+  const T full_tol = tol;
   while (a < s.hi) {
+    const T shift = raw.start_shift;
+    const T tol = full_tol - shift;  // the first cubic after a stretch left out: less
     T lo = a, hi = s.hi;
     bool hi_tested = false;
     std::optional<Screened<T>> B;
@@ -834,7 +834,6 @@ void approximate(const Source<T>& s, OffsetFit fit, Raw<T>& raw) {
         throw InvalidArgument("tolerance", "cannot be met by cubics near the offset's parameter " + std::to_string(a) +
                                                " of a piece (below the rounding of the computation): use a larger tolerance");
       }
-      OSTAT(stat_attempts);
       Screened<T> g = best_screened(s, a, x, tol);
       T e = g.error;
       if (e <= tol) e = certify(g, s, a, x, tol);
@@ -857,8 +856,9 @@ void approximate(const Source<T>& s, OffsetFit fit, Raw<T>& raw) {
       throw InvalidArgument("tolerance", "cannot be met by cubics near the offset's parameter " + std::to_string(a) +
                                              " of a piece (below the rounding of the computation): use a larger tolerance");
     }
-    raw.max_error = std::max(raw.max_error, B->error);
+    raw.max_error = std::max(raw.max_error, B->error + shift);
     raw.push(B->cubic.bezier(), s.reversed);
+    raw.start_shift = 0;
     last_step = lo - a;
     a = lo;
   }
@@ -972,8 +972,7 @@ std::vector<Stretch<T>> stretches(const Piece& c, T d, T tiny) {
   // pieces; a rational piece's every minimum is refined).
   T near_zero = std::numeric_limits<T>::infinity();
   if constexpr (PieceForm<T, Piece>::polynomial) {
-    T b2 = 0;
-    for (const auto& q : form.H2) b2 = std::max(b2, length(q.to_vector()));
+    const T b2 = form.second_bound();
     near_zero = (b2 / T(M)) * (1 + T(1e-6)) + tiny;
   }
   // The piece's interior cusps: local minima of the speed below 1e-6 of its largest.
@@ -1068,26 +1067,32 @@ std::vector<Stretch<T>> stretches(const Piece& c, T d, T tiny) {
 /// The Source of the offset of piece c over a stretch.
 template <class T, class Piece>
 Source<T> stretch_source(const Piece& c, const Stretch<T>& s, T d) {
-  Source<T> src;
-  const T sign = s.reversed ? T(-1) : T(1);
-  const auto form = std::make_shared<const PieceForm<T, Piece>>(c);
-  const auto tan = [=](T t) -> Vector<T, 2> {
-    if (t == s.lo) return s.t_lo;
-    if (t == s.hi) return s.t_hi;
-    const Vector<T, 2> v = unit(form->d1(t));
-    return length(v) > 0 ? v : (t - s.lo < s.hi - t ? s.t_lo : s.t_hi);
+  // One shared state, so that each std::function holds a pointer only (no allocation of
+  // its own: the small-object buffer).
+  struct State {
+    PieceForm<T, Piece> form;
+    Stretch<T> s;
+    T d, sign;
+    Vector<T, 2> tan(T t) const {
+      if (t == s.lo) return s.t_lo;
+      if (t == s.hi) return s.t_hi;
+      const Vector<T, 2> v = unit(form.d1(t));
+      return length(v) > 0 ? v : (t - s.lo < s.hi - t ? s.t_lo : s.t_hi);
+    }
   };
-  src.point = [=](T t) { return form->at(t) + left(tan(t)) * d; };
-  src.velocity = [=](T t) {
-    const Vector<T, 2> d1 = form->d1(t), d2 = form->d2(t);
+  const auto st = std::make_shared<const State>(State{PieceForm<T, Piece>(c), s, d, s.reversed ? T(-1) : T(1)});
+  Source<T> src;
+  src.point = [st](T t) { return st->form.at(t) + left(st->tan(t)) * st->d; };
+  src.velocity = [st](T t) {
+    const Vector<T, 2> d1 = st->form.d1(t), d2 = st->form.d2(t);
     const T sp = length(d1);
     if (!(sp > 0)) return Vector<T, 2>{};
-    return d1 * (1 - d * cross(d1, d2) / (sp * sp * sp));
+    return d1 * (1 - st->d * cross(d1, d2) / (sp * sp * sp));
   };
-  src.tangent = [=](T t) { return tan(t) * sign; };
-  src.frame = [=](T t) {
-    const Vector<T, 2> u = tan(t);
-    return std::pair{form->at(t) + left(u) * d, u * sign};
+  src.tangent = [st](T t) { return st->tan(t) * st->sign; };
+  src.frame = [st](T t) {
+    const Vector<T, 2> u = st->tan(t);
+    return std::pair{st->form.at(t) + left(u) * st->d, u * st->sign};
   };
   src.lo = s.lo, src.hi = s.hi;
   src.reversed = s.reversed;
@@ -1254,6 +1259,11 @@ OffsetCurve<T> offset(const Pieces<T, 2>& curve, const OffsetOptions<T>& o) {
   std::optional<Vector<T, 2>> first;
   Point<T, 2> first_at{}, last_at{};
   bool any = false;
+  bool single_open = false;  // one piece whose ends differ (no closing join)
+  if (curve.segments().size() == 1) {
+    std::visit([&](const auto& c) { single_open = norm(c.points().back() - c.points().front()) * scale > T(1e-10); },
+               curve.segments().front());
+  }
   for (const auto& seg : curve.segments()) {
     const BezierPiece<T, 2> piece = std::visit(to_frame, seg);
     std::visit(
@@ -1261,7 +1271,46 @@ OffsetCurve<T> offset(const Pieces<T, 2>& curve, const OffsetOptions<T>& o) {
           const auto& P = c.points();
           if (std::all_of(P.begin(), P.end(), [&](const auto& p) { return norm(p - P.front()) <= tiny; })) return;  // a point
           bool piece_start = true;
-          for (const auto& s : stretches<T>(c, d, tiny)) {
+          const std::vector<Stretch<T>> ss = stretches<T>(c, d, tiny);
+          for (std::size_t k = 0; k < ss.size(); ++k) {
+            const Stretch<T>& s = ss[k];
+            // Untrimmed, a stretch between two cusps of the offset (a swallowtail's middle)
+            // whose every point is within a quarter of the tolerance of its start (sampled
+            // at 33 points; so short that its curvature cannot hide more) is left out: the
+            // last cubic's end is that close to all of it, and the next cubic, whose start
+            // moves there by the stretch's chord, is fitted within the tolerance less that.
+            if (!o.trim && d != 0 && o.fit == OffsetFit::greedy && k > 0 && k + 1 < ss.size() && !raw.cubics.empty() && raw.start_shift == 0 &&
+                std::abs(turn(ss[k - 1].t_hi, s.t_lo)) <= T(1e-9) && std::abs(turn(s.t_hi, ss[k + 1].t_lo)) <= T(1e-9)) {
+              const Source<T> src = stretch_source<T>(c, s, d);
+              const Point<T, 2> start = src.point(s.lo);
+              T extent = 0;
+              for (int j = 1; j <= 32; ++j) extent = std::max(extent, length(src.point(s.lo + (s.hi - s.lo) * T(j) / 32) - start));
+              if (extent <= T(0.25) * tol) {
+                raw.max_error = std::max(raw.max_error, extent);
+                raw.start_shift = length(src.point(s.hi) - start);
+                prev = s.t_hi;
+                last_at = c(s.hi);
+                continue;
+              }
+            }
+            // Untrimmed, an open curve of one piece: a first or last stretch cut off by a
+            // cusp of the offset whose every point is within 90% of the tolerance of the
+            // end it shares with its neighbour is left out (nothing moves: the path starts
+            // or ends at that cusp).
+            if (!o.trim && d != 0 && o.fit == OffsetFit::greedy && single_open && ss.size() > 1 && (k == 0 || (k + 1 == ss.size() && !raw.cubics.empty())) &&
+                std::abs(turn(k == 0 ? s.t_hi : ss[k - 1].t_hi, k == 0 ? ss[1].t_lo : s.t_lo)) <= T(1e-9)) {
+              const Source<T> src = stretch_source<T>(c, s, d);
+              const Point<T, 2> shared = src.point(k == 0 ? s.hi : s.lo);
+              T extent = 0;
+              for (int j = 0; j <= 32; ++j) extent = std::max(extent, length(src.point(s.lo + (s.hi - s.lo) * T(j) / 32) - shared));
+              if (extent <= T(0.9) * tol) {
+                if (!any) first = s.t_lo, first_at = c(s.lo), any = true;
+                raw.max_error = std::max(raw.max_error, extent);
+                prev = s.t_hi;
+                last_at = c(s.hi);
+                continue;
+              }
+            }
             if (!any) first = s.t_lo, first_at = c(s.lo), any = true;
             if (piece_start && prev && norm(c(s.lo) - last_at) > tol) {
               throw InvalidArgument("curve", "has a gap of " + std::to_string(norm(c(s.lo) - last_at) / scale) +
@@ -1269,7 +1318,6 @@ OffsetCurve<T> offset(const Pieces<T, 2>& curve, const OffsetOptions<T>& o) {
             }
             piece_start = false;
             if (prev && d != 0) join(Corner<T>{c(s.lo), *prev, s.t_lo}, o, d, raw);
-            OSTAT(stat_stretch);
             approximate(stretch_source<T>(c, s, d), o.fit, raw);
             prev = s.t_hi;
             last_at = c(s.hi);
