@@ -524,10 +524,11 @@ struct Raw {
 /// sharp turn of the curve on its convex side, equal parts of t are long on it). The
 /// error of a fit is a smooth function with a few bumps (at most about four between the
 /// interpolated ends), which these parts resolve; the top of every local maximum of the
-/// samples within 80% of the largest is then found by golden section over its two parts
-/// (12 steps: 2e-4 of the segment, its height to about 1e-5 relative; a bump 8 parts wide
-/// sampled half a part off its top is up to 1 - cos(pi / 8) = 7.6% low, so a lower sample
-/// can sit on a higher bump).
+/// samples within 80% of the largest is then found over its two parts by successive
+/// parabolas through the largest sample and its neighbours (at most four more feet; the
+/// last parabola's own top counted too; golden section, 12 steps, where three samples make
+/// no cap; a bump 8 parts wide sampled half a part off its top is up to 1 - cos(pi / 8) =
+/// 7.6% low, so a lower sample can sit on a higher bump).
 ///
 /// A foot that Newton does not find inside (0, 1) (the normal line misses the cubic, or
 /// the cubic runs across it), or feet out of order, make the scan fail (ok = false): the
@@ -1193,7 +1194,7 @@ double offset_segments_estimate(const Pieces<T, 2>& curve, T distance, T toleran
 /// measured along the offset's normal lines (Tiller-Hanson's measure; see
 /// detail::offset::NormalScan): where those lines meet the cubic in order from end to end,
 /// the largest distance along them bounds the distance both ways, so one scan of 33 or more
-/// feet, the tops of its bumps refined by golden section, measures the cubic (the
+/// feet, the tops of its bumps refined (successive parabolas), measures the cubic (the
 /// projections both ways, detail::offset::hausdorff, where the lines do not meet it in
 /// order). The end is chosen from the scans' estimates with a model of the error's growth
 /// and a bracket (detail::offset::approximate); the cubic kept is the one whose measure is
@@ -1216,6 +1217,12 @@ double offset_segments_estimate(const Pieces<T, 2>& curve, T distance, T toleran
 /// closing point outside them. A region that no loop holds (a cusp near an open end whose
 /// swallowtail is cut short by the end) is kept; loops without a reversed region (the
 /// offset of a far part of the curve crossing another's) are kept.
+///
+/// Untrimmed (trim = false), parts that the tolerance covers are left out: a stretch
+/// between two cusps of the offset whose points are all within tolerance / 4 of its start
+/// (sampled at 33 points), the next cubic fitted within the tolerance less the stretch's
+/// chord (its start moves by that to the last end), and for an open curve of one piece a
+/// first or last stretch cut off by a cusp, within 0.9 tolerance of the cusp.
 ///
 /// Result: the cubics in order, each starting where the previous ends. d = 0 gives the
 /// curve itself as cubics (exact for polynomial pieces of degree <= 3). Pieces that are
