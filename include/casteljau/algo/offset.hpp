@@ -119,31 +119,53 @@ Point<T, 2> form_point(const std::vector<Point<T, 2>>& P, T t) {
   return Point<T, 2>{w[0], w[1]};
 }
 
+/// The power-basis coefficients c0 + c1 u + c2 u^2 + c3 u^3 of the cubic Bézier form with
+/// control points P0..P3 (fewer points: the form of lower degree). In the unit frame (every
+/// coordinate about 1 or less) the power basis on [0, 1] loses a few ulps, no more; Horner's
+/// point and derivatives cost a third of three de Casteljau passes.
+template <class T>
+std::array<Vector<T, 2>, 4> power_cubic(const Point<T, 2>* P, std::size_t n) {
+  std::array<Vector<T, 2>, 4> c{};
+  for (int k = 0; k < 2; ++k) {
+    const T p0 = P[0][k];
+    if (n == 1) {
+      c[0][k] = p0;
+    } else if (n == 2) {
+      c[0][k] = p0, c[1][k] = P[1][k] - p0;
+    } else if (n == 3) {
+      c[0][k] = p0, c[1][k] = 2 * (P[1][k] - p0), c[2][k] = P[2][k] - 2 * P[1][k] + p0;
+    } else {
+      c[0][k] = p0, c[1][k] = 3 * (P[1][k] - p0), c[2][k] = 3 * (P[2][k] - 2 * P[1][k] + p0);
+      c[3][k] = P[3][k] - p0 + 3 * (P[1][k] - P[2][k]);
+    }
+  }
+  return c;
+}
+
 /// A cubic Bézier's point and first two derivatives, from its control points (the
-/// candidates' inner loops).
+/// candidates' inner loops), by Horner in the power basis.
 template <class T>
 struct CubicForm {
   std::array<Point<T, 2>, 4> P;
-  explicit CubicForm(const Bezier<T, 2>& B) : P{B.points()[0], B.points()[1], B.points()[2], B.points()[3]} {}
-  CubicForm(const Point<T, 2>& p0, const Point<T, 2>& p1, const Point<T, 2>& p2, const Point<T, 2>& p3) : P{p0, p1, p2, p3} {}
+  std::array<Vector<T, 2>, 4> c;
+  CubicForm() = default;
+  Bezier<T, 2> bezier() const { return Bezier<T, 2>({P[0], P[1], P[2], P[3]}); }
+  explicit CubicForm(const Bezier<T, 2>& B) : P{B.points()[0], B.points()[1], B.points()[2], B.points()[3]}, c(power_cubic(P.data(), 4)) {}
+  CubicForm(const Point<T, 2>& p0, const Point<T, 2>& p1, const Point<T, 2>& p2, const Point<T, 2>& p3)
+      : P{p0, p1, p2, p3}, c(power_cubic(P.data(), 4)) {}
   Point<T, 2> at(T u) const {
     Point<T, 2> out;
-    for (int k = 0; k < 2; ++k) {
-      const T a = P[0][k] + u * (P[1][k] - P[0][k]), b = P[1][k] + u * (P[2][k] - P[1][k]), c = P[2][k] + u * (P[3][k] - P[2][k]);
-      const T d = a + u * (b - a), e = b + u * (c - b);
-      out[k] = d + u * (e - d);
-    }
+    for (int k = 0; k < 2; ++k) out[k] = c[0][k] + u * (c[1][k] + u * (c[2][k] + u * c[3][k]));
     return out;
   }
   Vector<T, 2> d1(T u) const {
-    const T w = 1 - u;
     Vector<T, 2> v;
-    for (int k = 0; k < 2; ++k) v[k] = 3 * (w * w * (P[1][k] - P[0][k]) + 2 * w * u * (P[2][k] - P[1][k]) + u * u * (P[3][k] - P[2][k]));
+    for (int k = 0; k < 2; ++k) v[k] = c[1][k] + u * (2 * c[2][k] + 3 * u * c[3][k]);
     return v;
   }
   Vector<T, 2> d2(T u) const {
     Vector<T, 2> v;
-    for (int k = 0; k < 2; ++k) v[k] = 6 * ((1 - u) * (P[2][k] - 2 * P[1][k] + P[0][k]) + u * (P[3][k] - 2 * P[2][k] + P[1][k]));
+    for (int k = 0; k < 2; ++k) v[k] = 2 * c[2][k] + 6 * u * c[3][k];
     return v;
   }
 };
@@ -154,27 +176,68 @@ struct CubicForm {
 template <class T, class Piece>
 struct PieceForm {
   static constexpr bool polynomial = std::is_same_v<Piece, Bezier<T, 2>>;
-  Piece c;
-  std::vector<Point<T, 2>> P, H1, H2;
-  explicit PieceForm(const Piece& piece) : c(piece) {
+  std::conditional_t<polynomial, std::monostate, std::optional<Piece>> c;  ///< a rational piece itself
+  std::vector<Point<T, 2>> P, H1, H2;  ///< a polynomial piece above degree 3: its points and hodographs
+  bool cubic = false;                  ///< degree <= 3: Horner in the power basis (CubicForm's), no vectors
+  std::array<Vector<T, 2>, 4> pc{};
+  explicit PieceForm(const Piece& piece) {
     if constexpr (polynomial) {
-      P = piece.points();
+      const auto& Q = piece.points();
+      if (Q.size() <= 4) {
+        cubic = true, pc = power_cubic(Q.data(), Q.size());
+        return;
+      }
+      P = Q;
       const std::size_t n = P.size() - 1;
       for (std::size_t k = 0; k < n; ++k) H1.push_back(Point<T, 2>::from_vector(T(n) * (P[k + 1] - P[k])));
       for (std::size_t k = 0; k + 1 < n; ++k) H2.push_back(Point<T, 2>::from_vector(T(n - 1) * (H1[k + 1] - H1[k])));
+    } else {
+      c = piece;
     }
   }
+  /// An upper bound of |C''| on [0, 1] (polynomial pieces: the second hodograph's control
+  /// points, its convex hull; for degree <= 3 the line 2 c2 + 6 c3 t at its ends).
+  T second_bound() const {
+    T b = 0;
+    if (cubic) return std::max(length(pc[2] * T(2)), length(pc[2] * T(2) + pc[3] * T(6)));
+    for (const auto& q : H2) b = std::max(b, length(q.to_vector()));
+    return b;
+  }
   Point<T, 2> at(T t) const {
-    if constexpr (polynomial) return form_point(P, t);
-    else return c(t);
+    if constexpr (polynomial) {
+      if (cubic) {
+        Point<T, 2> out;
+        for (int k = 0; k < 2; ++k) out[k] = pc[0][k] + t * (pc[1][k] + t * (pc[2][k] + t * pc[3][k]));
+        return out;
+      }
+      return form_point(P, t);
+    } else {
+      return (*c)(t);
+    }
   }
   Vector<T, 2> d1(T t) const {
-    if constexpr (polynomial) return form_point(H1, t).to_vector();
-    else return c.derivative_at(t, 1);
+    if constexpr (polynomial) {
+      if (cubic) {
+        Vector<T, 2> v;
+        for (int k = 0; k < 2; ++k) v[k] = pc[1][k] + t * (2 * pc[2][k] + 3 * t * pc[3][k]);
+        return v;
+      }
+      return form_point(H1, t).to_vector();
+    } else {
+      return c->derivative_at(t, 1);
+    }
   }
   Vector<T, 2> d2(T t) const {
-    if constexpr (polynomial) return H2.empty() ? Vector<T, 2>{} : form_point(H2, t).to_vector();
-    else return c.derivative_at(t, 2);
+    if constexpr (polynomial) {
+      if (cubic) {
+        Vector<T, 2> v;
+        for (int k = 0; k < 2; ++k) v[k] = 2 * pc[2][k] + 6 * t * pc[3][k];
+        return v;
+      }
+      return H2.empty() ? Vector<T, 2>{} : form_point(H2, t).to_vector();
+    } else {
+      return c->derivative_at(t, 2);
+    }
   }
 };
 
@@ -288,9 +351,8 @@ struct Sampled {
 /// exceed it, that value is returned at once (a rejected candidate; the cheap direction,
 /// the source's samples against the cubic, first).
 template <class T>
-T hausdorff(const Bezier<T, 2>& B, const Source<T>& s, T a, T b, T stop_above) {
+T hausdorff(const CubicForm<T>& F, const Source<T>& s, T a, T b, T stop_above) {
   constexpr int m = 32;
-  const CubicForm<T> F(B);
   Sampled<T> exact{s.point, s.velocity, {}, {}}, cubic{[&](T u) { return F.at(u); }, [&](T u) { return F.d1(u); }, {}, {}};
   exact.t.resize(m + 1), exact.p.resize(m + 1), cubic.t.resize(m + 1), cubic.p.resize(m + 1);
   for (int j = 0; j <= m; ++j) {
@@ -342,23 +404,33 @@ T hausdorff(const Bezier<T, 2>& B, const Source<T>& s, T a, T b, T stop_above) {
 /// 15 interior samples (Gauss-Newton, below; the fixed-tangent fit of [Schneider90] made
 /// geometric), when its lengths are positive, then the Hermite cubic (handles the
 /// source's velocity times (b - a) / 3). The fit stops when a step moves the cubic by
-/// less than 1e-3 of the tolerance `tol` (the handles' step times the largest Bernstein
+/// less than 1e-2 of the tolerance `tol` (the handles' step times the largest Bernstein
 /// weight 4/9).
 template <class T>
-std::vector<Bezier<T, 2>> candidates(const Source<T>& s, T a, T b, T tol) {
+struct Candidates {
+  std::array<CubicForm<T>, 2> c;
+  int n = 0;
+  void push(const CubicForm<T>& f) { c[static_cast<std::size_t>(n++)] = f; }
+};
+
+template <class T>
+Candidates<T> candidates(const Source<T>& s, T a, T b, T tol) {
   const Point<T, 2> P0 = s.point(a), P3 = s.point(b);
   const Vector<T, 2> T0 = s.tangent(a), T3 = s.tangent(b);
   const T h = (b - a) / 3;
   const T ha = length(s.velocity(a)) * h, hb = length(s.velocity(b)) * h;
-  std::vector<Bezier<T, 2>> out;
-  const Bezier<T, 2> hermite({P0, P0 + T0 * ha, P3 - T3 * hb, P3});
+  Candidates<T> out;
+  const CubicForm<T> hermite(P0, P0 + T0 * ha, P3 - T3 * hb, P3);
   constexpr int m = 15;
-  std::vector<Point<T, 2>> q(m + 2);
-  std::vector<T> u(m + 2);
+  std::array<Point<T, 2>, m + 2> q;
+  std::array<T, m + 2> u;
   for (int j = 0; j <= m + 1; ++j) q[j] = j == 0 ? P0 : j == m + 1 ? P3 : s.point(a + (b - a) * T(j) / (m + 1));
   u[0] = 0;
   for (int j = 1; j <= m + 1; ++j) u[j] = u[j - 1] + length(q[j] - q[j - 1]);
-  if (!(u[m + 1] > 0)) return {hermite};
+  if (!(u[m + 1] > 0)) {
+    out.push(hermite);
+    return out;
+  }
   for (int j = 1; j <= m + 1; ++j) u[j] /= u[m + 1];
   // Gauss-Newton on the handle lengths (alpha, beta) for the normal distances of the
   // samples to the cubic: each sample projected on the current cubic (Newton on
@@ -388,12 +460,12 @@ std::vector<Bezier<T, 2>> candidates(const Source<T>& s, T a, T b, T tol) {
     if (!(std::abs(det) > std::numeric_limits<T>::epsilon() * 16 * (a11 * a22))) break;  // a straight stretch: any lengths
     const T al = alpha - (r1 * a22 - r2 * a12) / det, be = beta - (a11 * r2 - a12 * r1) / det;
     if (!(al > 0 && be > 0 && std::isfinite(al) && std::isfinite(be))) break;  // the last good lengths stay
-    const bool done = (std::abs(al - alpha) + std::abs(be - beta)) * T(4) / 9 <= T(1e-3) * tol;
+    const bool done = (std::abs(al - alpha) + std::abs(be - beta)) * T(4) / 9 <= T(1e-2) * tol;
     alpha = al, beta = be, ok = true;
     if (done) break;
   }
-  if (ok) out.push_back(Bezier<T, 2>({P0, P0 + T0 * alpha, P3 - T3 * beta, P3}));
-  out.push_back(hermite);  // last: usually the worse, then rejected on its first samples
+  if (ok) out.push(CubicForm<T>(P0, P0 + T0 * alpha, P3 - T3 * beta, P3));
+  out.push(hermite);  // last: usually the worse, then rejected on its first samples
   return out;
 }
 
@@ -405,6 +477,9 @@ struct Raw {
   T max_error = 0;
   T tolerance = 0;
   std::size_t max_segments = 0;
+  /// How far the next cubic's start will be moved to the last end (a short stretch of an
+  /// untrimmed swallowtail left out, see offset()): its fit gets that much less tolerance.
+  T start_shift = 0;
 
   void push(Bezier<T, 2> B, bool rev) {
     const auto& Q = B.points();
@@ -449,10 +524,11 @@ struct Raw {
 /// sharp turn of the curve on its convex side, equal parts of t are long on it). The
 /// error of a fit is a smooth function with a few bumps (at most about four between the
 /// interpolated ends), which these parts resolve; the top of every local maximum of the
-/// samples within 80% of the largest is then found by golden section over its two parts
-/// (12 steps: 2e-4 of the segment, its height to about 1e-5 relative; a bump 8 parts wide
-/// sampled half a part off its top is up to 1 - cos(pi / 8) = 7.6% low, so a lower sample
-/// can sit on a higher bump).
+/// samples within 80% of the largest is then found over its two parts by successive
+/// parabolas through the largest sample and its neighbours (at most four more feet; the
+/// last parabola's own top counted too; golden section, 12 steps, where three samples make
+/// no cap; a bump 8 parts wide sampled half a part off its top is up to 1 - cos(pi / 8) =
+/// 7.6% low, so a lower sample can sit on a higher bump).
 ///
 /// A foot that Newton does not find inside (0, 1) (the normal line misses the cubic, or
 /// the cubic runs across it), or feet out of order, make the scan fail (ok = false): the
@@ -485,7 +561,7 @@ bool normal_foot(const CubicForm<T>& F, const Source<T>& s, T t, T guess, T ul, 
     u = x, err = length(F.at(x) - O);
     return true;
   };
-  constexpr T settled = T(1e-10);  // a Newton step this small leaves an error of about its square
+  constexpr T settled = T(1e-7);  // a Newton step this small leaves an error of about its square (1e-14)
   T x = std::clamp(guess, ul, ur);
   for (int it = 0; it < 8; ++it) {
     const T gp = dot(F.d1(x), Tt);
@@ -608,7 +684,36 @@ T normal_peaks(const CubicForm<T>& F, const Source<T>& s, NormalScan<T>& r, T st
       if (!normal_foot(F, s, t, guess, ul, ur, u, e)) r.ok = false;
       return -e;
     };
-    worst = std::max(worst, -golden_min(minus_error, tl, tr, 12).second);
+    // The top by successive parabolas through the largest sample and its two neighbours
+    // (a smooth bump's top is a parabola's to third order: a few feet), the parabola's
+    // own top counted too; golden section where the three samples do not make a cap.
+    std::array<T, 3> pt{tl, tm, tr}, pe{r.e[j - 1], r.e[j], r.e[j + 1]};
+    bool capped = true;
+    T top = r.e[j];
+    for (int it = 0; it < 4 && capped; ++it) {
+      const T s0 = (pe[1] - pe[0]) / (pt[1] - pt[0]), s1 = (pe[2] - pe[1]) / (pt[2] - pt[1]);
+      const T curv = (s1 - s0) / (pt[2] - pt[0]);  // p(t) = pe[0] + s0 (t - pt[0]) + curv (t - pt[0]) (t - pt[1])
+      if (!(curv < 0)) {
+        capped = false;
+        break;
+      }
+      const T tvx = std::clamp((pt[0] + pt[1]) / 2 - s0 / (2 * curv), pt[0], pt[2]);
+      top = std::max(top, pe[0] + s0 * (tvx - pt[0]) + curv * (tvx - pt[0]) * (tvx - pt[1]));
+      if (std::abs(tvx - pt[1]) <= T(1e-4) * (tr - tl)) break;
+      const T ev = -minus_error(tvx);
+      if (!r.ok) break;
+      top = std::max(top, ev);
+      if (ev >= pe[1]) {
+        if (tvx < pt[1]) pt = {pt[0], tvx, pt[1]}, pe = {pe[0], ev, pe[1]};
+        else pt = {pt[1], tvx, pt[2]}, pe = {pe[1], ev, pe[2]};
+      } else {
+        if (tvx < pt[1]) pt[0] = tvx, pe[0] = ev;
+        else pt[2] = tvx, pe[2] = ev;
+      }
+    }
+    if (!r.ok) break;
+    if (!capped) top = std::max(top, -golden_min(minus_error, tl, tr, 12).second);
+    worst = std::max(worst, top);
     if (worst > stop_above) return worst;
   }
   return worst;
@@ -618,21 +723,20 @@ T normal_peaks(const CubicForm<T>& F, const Source<T>& s, NormalScan<T>& r, T st
 /// normal scan and its peaks (NormalScan), or where the scan fails the projections both
 /// ways (hausdorff). Stops above stop_above (a rejected cubic).
 template <class T>
-T measured(const Bezier<T, 2>& B, const Source<T>& s, T a, T b, T stop_above) {
-  const CubicForm<T> F(B);
+T measured(const CubicForm<T>& F, const Source<T>& s, T a, T b, T stop_above) {
   NormalScan<T> r = normal_scan(F, s, a, b, stop_above);
   if (r.ok && r.worst > stop_above) return r.worst;
   if (r.ok) {
     const T e = normal_peaks(F, s, r, stop_above);
     if (r.ok) return e;
   }
-  return hausdorff(B, s, a, b, stop_above);
+  return hausdorff(F, s, a, b, stop_above);
 }
 
 /// A candidate cubic over [a, b] with its scan.
 template <class T>
 struct Screened {
-  Bezier<T, 2> cubic;
+  CubicForm<T> cubic;
   NormalScan<T> scan;
   T error;  ///< the scan's estimate (the choice of the end), or the measure where the scan failed
 };
@@ -641,13 +745,14 @@ struct Screened {
 /// measured by projections), with that estimate.
 template <class T>
 Screened<T> best_screened(const Source<T>& s, T a, T b, T stop_above) {
-  auto cs = candidates(s, a, b, stop_above);
+  const Candidates<T> cs = candidates(s, a, b, stop_above);
   std::optional<Screened<T>> best;
-  for (auto& c : cs) {
+  for (int i = 0; i < cs.n; ++i) {
+    const CubicForm<T>& c = cs.c[static_cast<std::size_t>(i)];
     const T limit = best ? std::min(stop_above, best->error) : stop_above;
-    NormalScan<T> r = normal_scan(CubicForm<T>(c), s, a, b, limit);
+    NormalScan<T> r = normal_scan(c, s, a, b, limit);
     const T e = r.ok ? r.estimate : hausdorff(c, s, a, b, limit);
-    if (!best || e < best->error) best = Screened<T>{std::move(c), r, e};
+    if (!best || e < best->error) best = Screened<T>{c, r, e};
   }
   return std::move(*best);
 }
@@ -657,7 +762,7 @@ Screened<T> best_screened(const Source<T>& s, T a, T b, T stop_above) {
 template <class T>
 T certify(Screened<T>& g, const Source<T>& s, T a, T b, T stop_above) {
   if (g.scan.ok) {
-    const T e = normal_peaks(CubicForm<T>(g.cubic), s, g.scan, stop_above);
+    const T e = normal_peaks(g.cubic, s, g.scan, stop_above);
     if (g.scan.ok) return e;
   }
   return hausdorff(g.cubic, s, a, b, stop_above);
@@ -666,16 +771,17 @@ T certify(Screened<T>& g, const Source<T>& s, T a, T b, T stop_above) {
 /// The best candidate over [a, b] and its measured error (stop_above as measured's).
 template <class T>
 std::pair<Bezier<T, 2>, T> best_fit(const Source<T>& s, T a, T b, T stop_above, bool hermite_only) {
-  auto cs = candidates(s, a, b, stop_above);
-  if (hermite_only) cs.erase(cs.begin(), cs.end() - 1);
-  std::optional<Bezier<T, 2>> best;
+  const Candidates<T> cs = candidates(s, a, b, stop_above);
+  const int first = hermite_only ? cs.n - 1 : 0;
+  std::optional<CubicForm<T>> best;
   T err = std::numeric_limits<T>::infinity();
-  for (auto& c : cs) {
+  for (int i = first; i < cs.n; ++i) {
+    const CubicForm<T>& c = cs.c[static_cast<std::size_t>(i)];
     const T e = measured(c, s, a, b, std::min(stop_above, err));
-    if (!(e >= err)) err = e, best = std::move(c);
+    if (!(e >= err)) err = e, best = c;
   }
-  if (!best) best = cs.front(), err = std::numeric_limits<T>::infinity();
-  return {std::move(*best), err};
+  if (!best) best = cs.c[static_cast<std::size_t>(first)], err = std::numeric_limits<T>::infinity();
+  return {best->bezier(), err};
 }
 
 /// Approximates the whole source by cubics within the tolerance into raw.
@@ -716,7 +822,10 @@ void approximate(const Source<T>& s, OffsetFit fit, Raw<T>& raw) {
   // further check.
   T a = s.lo;
   T last_step = s.hi - s.lo;
+  const T full_tol = tol;
   while (a < s.hi) {
+    const T shift = raw.start_shift;
+    const T tol = full_tol - shift;  // the first cubic after a stretch left out: less
     T lo = a, hi = s.hi;
     bool hi_tested = false;
     std::optional<Screened<T>> B;
@@ -748,8 +857,9 @@ void approximate(const Source<T>& s, OffsetFit fit, Raw<T>& raw) {
       throw InvalidArgument("tolerance", "cannot be met by cubics near the offset's parameter " + std::to_string(a) +
                                              " of a piece (below the rounding of the computation): use a larger tolerance");
     }
-    raw.max_error = std::max(raw.max_error, B->error);
-    raw.push(std::move(B->cubic), s.reversed);
+    raw.max_error = std::max(raw.max_error, B->error + shift);
+    raw.push(B->cubic.bezier(), s.reversed);
+    raw.start_shift = 0;
     last_step = lo - a;
     a = lo;
   }
@@ -857,10 +967,19 @@ std::vector<Stretch<T>> stretches(const Piece& c, T d, T tiny) {
   std::vector<T> sp(M + 1);
   T top = 0;
   for (int j = 0; j <= M; ++j) grid[j] = T(j) / M, sp[j] = speed(grid[j]), top = std::max(top, sp[j]);
+  // A zero of the speed within one grid step of t makes |C'(t)| at most the step times
+  // max |C''|, which the second hodograph's control points bound (convex hull): a local
+  // minimum of the sampled speed above that is no cusp and is not refined (polynomial
+  // pieces; a rational piece's every minimum is refined).
+  T near_zero = std::numeric_limits<T>::infinity();
+  if constexpr (PieceForm<T, Piece>::polynomial) {
+    const T b2 = form.second_bound();
+    near_zero = (b2 / T(M)) * (1 + T(1e-6)) + tiny;
+  }
   // The piece's interior cusps: local minima of the speed below 1e-6 of its largest.
   std::vector<T> cusps{T(0)};
   for (int j = 1; j < M; ++j) {
-    if (sp[j] <= sp[j - 1] && sp[j] <= sp[j + 1]) {
+    if (sp[j] <= sp[j - 1] && sp[j] <= sp[j + 1] && sp[j] <= near_zero) {
       T lo = grid[j - 1], hi = grid[j + 1];
       const T rr = T(0.6180339887498948482045868343656381L);
       for (int k = 0; k < 60; ++k) {
@@ -895,7 +1014,11 @@ std::vector<Stretch<T>> stretches(const Piece& c, T d, T tiny) {
             if ((g(mid) < 0) == neg_lo) lo = mid; else hi = mid;
           }
           cuts.push_back((lo + hi) / 2);
-        } else if (j > 0 && std::abs(gv[j]) <= std::abs(gv[j - 1]) && std::abs(gv[j]) <= std::abs(gv[j + 1])) {
+        } else if (j > 0 && std::abs(gv[j]) <= std::abs(gv[j - 1]) && std::abs(gv[j]) <= std::abs(gv[j + 1]) &&
+                   std::abs(gv[j]) <= 2 * std::max(std::abs(gv[j - 1] - gv[j]), std::abs(gv[j + 1] - gv[j])) + T(1e-9)) {
+          // A touch of zero (a double root t* within half a step of the sample: g about
+          // c (t - t*)^2) leaves |g| at the sample at most a quarter of its rise to either
+          // neighbour; minima far above that (most minima of |1 - d kappa|) are not refined.
           T lo = a + h * T(j - 1), hi = a + h * T(j + 1);
           const T rr = T(0.6180339887498948482045868343656381L);
           for (int k = 0; k < 60; ++k) {
@@ -929,7 +1052,13 @@ std::vector<Stretch<T>> stretches(const Piece& c, T d, T tiny) {
       // derivatives below 1e-5 of the largest speed count as zero there.
       const T zero_lo = (k == 0 && i > 0) ? T(1e-5) * top : tiny;
       const T zero_hi = (k + 2 == cuts.size() && i + 2 < cusps.size()) ? T(1e-5) * top : tiny;
-      Stretch<T> s{lo, hi, d != 0 && g(mid) < 0, limit_tangent<T>(c, lo, false, zero_lo), limit_tangent<T>(c, hi, true, zero_hi)};
+      // The tangent from the first derivative where it is not zero (the piece's form, no
+      // allocation), else its limit from the higher derivatives.
+      const auto tangent_at = [&](T t, bool from_left, T zero) {
+        const Vector<T, 2> v = form.d1(t);
+        return length(v) > zero ? unit(v) : limit_tangent<T>(c, t, from_left, zero);
+      };
+      Stretch<T> s{lo, hi, d != 0 && g(mid) < 0, tangent_at(lo, false, zero_lo), tangent_at(hi, true, zero_hi)};
       out.push_back(s);
     }
   }
@@ -939,26 +1068,32 @@ std::vector<Stretch<T>> stretches(const Piece& c, T d, T tiny) {
 /// The Source of the offset of piece c over a stretch.
 template <class T, class Piece>
 Source<T> stretch_source(const Piece& c, const Stretch<T>& s, T d) {
-  Source<T> src;
-  const T sign = s.reversed ? T(-1) : T(1);
-  const auto form = std::make_shared<const PieceForm<T, Piece>>(c);
-  const auto tan = [=](T t) -> Vector<T, 2> {
-    if (t == s.lo) return s.t_lo;
-    if (t == s.hi) return s.t_hi;
-    const Vector<T, 2> v = unit(form->d1(t));
-    return length(v) > 0 ? v : (t - s.lo < s.hi - t ? s.t_lo : s.t_hi);
+  // One shared state, so that each std::function holds a pointer only (no allocation of
+  // its own: the small-object buffer).
+  struct State {
+    PieceForm<T, Piece> form;
+    Stretch<T> s;
+    T d, sign;
+    Vector<T, 2> tan(T t) const {
+      if (t == s.lo) return s.t_lo;
+      if (t == s.hi) return s.t_hi;
+      const Vector<T, 2> v = unit(form.d1(t));
+      return length(v) > 0 ? v : (t - s.lo < s.hi - t ? s.t_lo : s.t_hi);
+    }
   };
-  src.point = [=](T t) { return form->at(t) + left(tan(t)) * d; };
-  src.velocity = [=](T t) {
-    const Vector<T, 2> d1 = form->d1(t), d2 = form->d2(t);
+  const auto st = std::make_shared<const State>(State{PieceForm<T, Piece>(c), s, d, s.reversed ? T(-1) : T(1)});
+  Source<T> src;
+  src.point = [st](T t) { return st->form.at(t) + left(st->tan(t)) * st->d; };
+  src.velocity = [st](T t) {
+    const Vector<T, 2> d1 = st->form.d1(t), d2 = st->form.d2(t);
     const T sp = length(d1);
     if (!(sp > 0)) return Vector<T, 2>{};
-    return d1 * (1 - d * cross(d1, d2) / (sp * sp * sp));
+    return d1 * (1 - st->d * cross(d1, d2) / (sp * sp * sp));
   };
-  src.tangent = [=](T t) { return tan(t) * sign; };
-  src.frame = [=](T t) {
-    const Vector<T, 2> u = tan(t);
-    return std::pair{form->at(t) + left(u) * d, u * sign};
+  src.tangent = [st](T t) { return st->tan(t) * st->sign; };
+  src.frame = [st](T t) {
+    const Vector<T, 2> u = st->tan(t);
+    return std::pair{st->form.at(t) + left(u) * st->d, u * st->sign};
   };
   src.lo = s.lo, src.hi = s.hi;
   src.reversed = s.reversed;
@@ -1059,7 +1194,7 @@ double offset_segments_estimate(const Pieces<T, 2>& curve, T distance, T toleran
 /// measured along the offset's normal lines (Tiller-Hanson's measure; see
 /// detail::offset::NormalScan): where those lines meet the cubic in order from end to end,
 /// the largest distance along them bounds the distance both ways, so one scan of 33 or more
-/// feet, the tops of its bumps refined by golden section, measures the cubic (the
+/// feet, the tops of its bumps refined (successive parabolas), measures the cubic (the
 /// projections both ways, detail::offset::hausdorff, where the lines do not meet it in
 /// order). The end is chosen from the scans' estimates with a model of the error's growth
 /// and a bracket (detail::offset::approximate); the cubic kept is the one whose measure is
@@ -1082,6 +1217,12 @@ double offset_segments_estimate(const Pieces<T, 2>& curve, T distance, T toleran
 /// closing point outside them. A region that no loop holds (a cusp near an open end whose
 /// swallowtail is cut short by the end) is kept; loops without a reversed region (the
 /// offset of a far part of the curve crossing another's) are kept.
+///
+/// Untrimmed (trim = false), parts that the tolerance covers are left out: a stretch
+/// between two cusps of the offset whose points are all within tolerance / 4 of its start
+/// (sampled at 33 points), the next cubic fitted within the tolerance less the stretch's
+/// chord (its start moves by that to the last end), and for an open curve of one piece a
+/// first or last stretch cut off by a cusp, within 0.9 tolerance of the cusp.
 ///
 /// Result: the cubics in order, each starting where the previous ends. d = 0 gives the
 /// curve itself as cubics (exact for polynomial pieces of degree <= 3). Pieces that are
@@ -1125,6 +1266,11 @@ OffsetCurve<T> offset(const Pieces<T, 2>& curve, const OffsetOptions<T>& o) {
   std::optional<Vector<T, 2>> first;
   Point<T, 2> first_at{}, last_at{};
   bool any = false;
+  bool single_open = false;  // one piece whose ends differ (no closing join)
+  if (curve.segments().size() == 1) {
+    std::visit([&](const auto& c) { single_open = norm(c.points().back() - c.points().front()) * scale > T(1e-10); },
+               curve.segments().front());
+  }
   for (const auto& seg : curve.segments()) {
     const BezierPiece<T, 2> piece = std::visit(to_frame, seg);
     std::visit(
@@ -1132,7 +1278,46 @@ OffsetCurve<T> offset(const Pieces<T, 2>& curve, const OffsetOptions<T>& o) {
           const auto& P = c.points();
           if (std::all_of(P.begin(), P.end(), [&](const auto& p) { return norm(p - P.front()) <= tiny; })) return;  // a point
           bool piece_start = true;
-          for (const auto& s : stretches<T>(c, d, tiny)) {
+          const std::vector<Stretch<T>> ss = stretches<T>(c, d, tiny);
+          for (std::size_t k = 0; k < ss.size(); ++k) {
+            const Stretch<T>& s = ss[k];
+            // Untrimmed, a stretch between two cusps of the offset (a swallowtail's middle)
+            // whose every point is within a quarter of the tolerance of its start (sampled
+            // at 33 points; so short that its curvature cannot hide more) is left out: the
+            // last cubic's end is that close to all of it, and the next cubic, whose start
+            // moves there by the stretch's chord, is fitted within the tolerance less that.
+            if (!o.trim && d != 0 && o.fit == OffsetFit::greedy && k > 0 && k + 1 < ss.size() && !raw.cubics.empty() && raw.start_shift == 0 &&
+                std::abs(turn(ss[k - 1].t_hi, s.t_lo)) <= T(1e-9) && std::abs(turn(s.t_hi, ss[k + 1].t_lo)) <= T(1e-9)) {
+              const Source<T> src = stretch_source<T>(c, s, d);
+              const Point<T, 2> start = src.point(s.lo);
+              T extent = 0;
+              for (int j = 1; j <= 32; ++j) extent = std::max(extent, length(src.point(s.lo + (s.hi - s.lo) * T(j) / 32) - start));
+              if (extent <= T(0.25) * tol) {
+                raw.max_error = std::max(raw.max_error, extent);
+                raw.start_shift = length(src.point(s.hi) - start);
+                prev = s.t_hi;
+                last_at = c(s.hi);
+                continue;
+              }
+            }
+            // Untrimmed, an open curve of one piece: a first or last stretch cut off by a
+            // cusp of the offset whose every point is within 90% of the tolerance of the
+            // end it shares with its neighbour is left out (nothing moves: the path starts
+            // or ends at that cusp).
+            if (!o.trim && d != 0 && o.fit == OffsetFit::greedy && single_open && ss.size() > 1 && (k == 0 || (k + 1 == ss.size() && !raw.cubics.empty())) &&
+                std::abs(turn(k == 0 ? s.t_hi : ss[k - 1].t_hi, k == 0 ? ss[1].t_lo : s.t_lo)) <= T(1e-9)) {
+              const Source<T> src = stretch_source<T>(c, s, d);
+              const Point<T, 2> shared = src.point(k == 0 ? s.hi : s.lo);
+              T extent = 0;
+              for (int j = 0; j <= 32; ++j) extent = std::max(extent, length(src.point(s.lo + (s.hi - s.lo) * T(j) / 32) - shared));
+              if (extent <= T(0.9) * tol) {
+                if (!any) first = s.t_lo, first_at = c(s.lo), any = true;
+                raw.max_error = std::max(raw.max_error, extent);
+                prev = s.t_hi;
+                last_at = c(s.hi);
+                continue;
+              }
+            }
             if (!any) first = s.t_lo, first_at = c(s.lo), any = true;
             if (piece_start && prev && norm(c(s.lo) - last_at) > tol) {
               throw InvalidArgument("curve", "has a gap of " + std::to_string(norm(c(s.lo) - last_at) / scale) +
