@@ -152,8 +152,12 @@ TEST(ToQuadratic, ReparametrisedBoundHoldsOnRandomParts) {
     }
     // Slack: chords of 1/1500 of parts a few tens long, sag far below 1e-6.
     const double dense = std::max(to_polyline(cs, qs), to_polyline(qs, cs));
-    if (std::isfinite(bound)) EXPECT_LE(dense, bound + 1e-6) << "cubic " << i;
-    if (std::isfinite(bound4)) EXPECT_LE(dense, bound4 + 1e-6) << "cubic " << i << " (degree 4)";
+    if (std::isfinite(bound)) {
+      EXPECT_LE(dense, bound + 1e-6) << "cubic " << i;
+    }
+    if (std::isfinite(bound4)) {
+      EXPECT_LE(dense, bound4 + 1e-6) << "cubic " << i << " (degree 4)";
+    }
   }
   EXPECT_GE(finite, 12);
 }

@@ -502,7 +502,7 @@ struct Part {
       }
       if (!(gp > 0)) break;
       const T nx = std::clamp(x - g / gp, T(0), T(1));
-      const bool close = std::abs(nx - x) <= T(1e-9);
+      const bool close = std::abs(nx - x) <= T(1e-5);
       x = nx;
       if (close) break;
     }
@@ -613,9 +613,10 @@ std::pair<Vector<T, Piece::dimension>, Vector<T, Piece::dimension>> directions_a
 /// The cusps of a cubic polynomial piece with hodograph control points H (c' = H0 B0 +
 /// H1 B1 + H2 B2), in closed form: the local minima of |c'|^2 in (0, 1) are roots of the
 /// cubic g = c' . c'' (where g turns from negative to positive), found by bisection on the
-/// intervals where g is monotone (between the roots of g'); a minimum with |c'| <= 1e-9
-/// of the largest speed (at the ends or the other roots) where the direction turns back
-/// is a cusp. No allocation unless a cusp is found.
+/// intervals where g is monotone (between the roots of g'), stopped as soon as the speed
+/// in the bracket is sure to stay above 1e-9 of the largest |H_k| (at least the largest
+/// speed); a minimum below that where the direction turns back is a cusp. No allocation
+/// unless a cusp is found.
 template <class Piece, class T, int D>
 std::vector<T> cubic_cusps(const Piece& piece, const std::array<Point<T, D>, 3>& H) {
   std::vector<T> out;
@@ -653,20 +654,20 @@ std::vector<T> cubic_cusps(const Piece& piece, const std::array<Point<T, D>, 3>&
   for (const auto& h : H) big2 = std::max(big2, squared_norm(h.to_vector()));
   std::array<T, 3> minima{};
   int nmin = 0;
-  T top2 = std::max(speed2(T(0)), speed2(T(1)));
+  const T level = T(1e-9) * std::sqrt(big2);  // a cusp's speed at most: 1e-9 of the largest
+  const T W = T(2) * fast_norm(A) + fast_norm(B);  // |c''| <= W on [0, 1]
   for (int i = 0; i < m; ++i) {
     T lo = cut[static_cast<std::size_t>(i)], hi = cut[static_cast<std::size_t>(i + 1)];
-    T glo = g(lo), ghi = g(hi);
-    if (!((glo < 0 && ghi > 0) || (glo > 0 && ghi < 0))) continue;
-    const bool rising = glo < 0;  // a minimum of |c'|^2
-    // Bisection: to 1e-7 first; a minimum then still above the level of a cusp (beyond
-    // what the bracket's width can change: |c''| <= 2 |A| + |B| on [0, 1]) is not one.
-    bool coarse = rising;
+    T glo = g(lo);
+    const T ghi = g(hi);
+    if (!(glo < 0 && ghi > 0)) continue;  // no minimum of |c'|^2 inside
+    // Bisection, stopped once the speed in the bracket stays above the level (|c'| >=
+    // |c'(lo)| - W (hi - lo) there).
+    bool low = true;
     for (int it = 0; it < 200; ++it) {
-      if (coarse && hi - lo <= T(1e-7)) {
-        coarse = false;
-        const T w = (T(2) * fast_norm(A) + fast_norm(B)) * (hi - lo);
-        if (speed2(lo) > T(1e-18) * big2 + w * w) break;
+      if (std::sqrt(speed2(lo)) - W * (hi - lo) > level) {
+        low = false;
+        break;
       }
       const T mid = lo + T(0.5) * (hi - lo);
       if (!(mid > lo && mid < hi)) break;
@@ -677,12 +678,10 @@ std::vector<T> cubic_cusps(const Piece& piece, const std::array<Point<T, D>, 3>&
       } else {
         hi = mid;
       }
-      if (!rising && hi - lo <= T(1e-7)) break;  // a maximum: only its value is needed
     }
-    const T t = speed2(lo) >= speed2(hi) ? lo : hi;
-    if (!rising) top2 = std::max(top2, speed2(t));
-    if (rising) minima[static_cast<std::size_t>(nmin++)] = speed2(lo) <= speed2(hi) ? lo : hi;
+    if (low) minima[static_cast<std::size_t>(nmin++)] = speed2(lo) <= speed2(hi) ? lo : hi;
   }
+  const T top2 = big2;
   if (!(top2 > 0)) return out;
   for (int i = 0; i < nmin; ++i) {
     const T tc = minima[static_cast<std::size_t>(i)];
