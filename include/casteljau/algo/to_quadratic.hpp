@@ -560,23 +560,10 @@ struct Part {
     return std::max(polygon_bound_n(l, limit, levels - 1), polygon_bound_n(r, limit, levels - 1));
   }
 
-  /// The largest coefficient of the Bernstein polygon f (degree 6), halved up to `levels`
+  /// polygon_bound_n for degree 6: the largest coefficient of the Bernstein polygon f, halved up to `levels`
   /// times where it exceeds `limit` (not where an end value, a value of f, does: no
   /// halving can bring the bound under `limit` then): an upper bound of max |f| on [0, 1].
-  static T polygon_bound(const std::array<Vector<T, D>, 7>& f, T limit, int levels) {
-    T worst = 0;
-    for (const auto& v : f) worst = std::max(worst, squared_norm(v));
-    worst = std::sqrt(worst);
-    if (worst <= limit || levels == 0) return worst;
-    if (squared_norm(f[0]) > limit * limit || squared_norm(f[6]) > limit * limit) return worst;
-    std::array<Vector<T, D>, 7> l, r, w = f;
-    for (std::size_t lvl = 0; lvl < 7; ++lvl) {
-      l[lvl] = w[0];
-      r[6 - lvl] = w[6 - lvl];
-      for (std::size_t i = 0; i + lvl + 1 < 7; ++i) w[i] = T(0.5) * (w[i] + w[i + 1]);
-    }
-    return std::max(polygon_bound(l, limit, levels - 1), polygon_bound(r, limit, levels - 1));
-  }
+  static T polygon_bound(const std::array<Vector<T, D>, 7>& f, T limit, int levels) { return polygon_bound_n(f, limit, levels); }
 
   /// Vectors whose convex hull holds c'' on [0, 1], into out (the margin of
   /// ChainDistance::bound takes max |v - w| over them for |c'' - w|): n (n - 1) times the
