@@ -196,17 +196,24 @@ class ChainDistance {
   /// slope there, c'' within the convex hull of the caller's `hull` vectors, so the max is
   /// taken over them), which is added to the larger end value. From 4 intervals on, the
   /// bound of each level (the margin falls as 1 / N^2, so a loose tolerance is met with a
-  /// few samples); returns the first at most `sure`, else the finest. Stops early
-  /// (returning a value above `stop`) once a sample exceeds it.
+  /// few samples); returns the first at most `sure`, or at most `stop` with samples
+  /// reaching `enough`, else the finest. Stops early (returning a value above `stop`) once
+  /// a sample exceeds it, or from 16 intervals on when the samples exceed 95% of `stop`
+  /// and the bound exceeds `stop`. Levels whose samples exceed `sure` (below `enough`) are
+  /// not bounded (the bound is at least the samples).
   template <class Eval>
-  T bound(const Eval& c, const std::vector<Vector<T, D>>& hull, T stop, T sure) {
+  T bound(const Eval& c, const std::vector<Vector<T, D>>& hull, T stop, T sure, T enough = std::numeric_limits<T>::infinity()) {
     constexpr int coarsest = 4;  // intervals of the first bound: the samples 1/4, 1/2, 3/4
     T b = 0;
     for (int intervals = coarsest; intervals <= N; intervals *= 2) {
       const T e = estimate(c, intervals, stop);
       if (e > stop) return e;
+      if (e > sure && e < enough && intervals < N) continue;  // the bound (at least e) is refined anyway
       b = margin_bound(hull);
-      if (b <= sure) return b;
+      if (b <= sure || (e >= enough && b <= stop)) return b;
+      // Samples above 95% of `stop` and a bound above it from 16 intervals on: a part at
+      // the tolerance, rejected without the finest level (a few segments more, 0.15%).
+      if (intervals >= 16 && e > T(0.95) * stop && b > stop) return b;
     }
     return b;
   }
@@ -468,23 +475,95 @@ struct Part {
     return polygon_bound(f, limit, levels);
   }
 
-  /// The largest coefficient of the Bernstein polygon f (degree 6), halved up to `levels`
-  /// times where it exceeds `limit` (not where an end value, a value of f, does: no
-  /// halving can bring the bound under `limit` then): an upper bound of max |f| on [0, 1].
-  static T polygon_bound(const std::array<Vector<T, D>, 7>& f, T limit, int levels) {
+  /// The bound of reparametrised_bound with sigma of degree 4: Bernstein coefficients 0,
+  /// sigma'(0) / 4, s2, 1 - sigma'(1) / 4, 1 (the same end slopes), s2 chosen so that
+  /// sigma(1/2) is the foot of c(1/2) on q (Newton), which removes most of the tangential
+  /// part of f = c - q o sigma (degree 8) that makes the cubic sigma's bound loose (1.4 to
+  /// 20 times the distance on parts where the speeds vary). Infinite as there, or when
+  /// |f(1/2)| (a value of f, so at most the bound) exceeds `skip`.
+  T reparametrised_bound4(const Chain<T, D>& q, T limit, int levels, T skip = std::numeric_limits<T>::infinity()) const {
+    if (!polynomial || q.size != 1 || points.size() != 4) return std::numeric_limits<T>::infinity();
+    const auto& Q = q.front();
+    const Vector<T, D> b = Q[1] - Q[0], a = (Q[0] - Q[1]) + (Q[2] - Q[1]);
+    const T q0 = fast_norm(b), q1 = fast_norm(Q[2] - Q[1]);
+    if (!(q0 > 0 && q1 > 0)) return std::numeric_limits<T>::infinity();
+    const T c0 = fast_norm(points[1] - points[0]), c1 = fast_norm(points[3] - points[2]);
+    const T s1 = T(3) * c0 / (T(8) * q0), s3 = T(1) - T(3) * c1 / (T(8) * q1);
+    // The foot of c(1/2) on q, from sigma of degree 3's value there.
+    const Point<T, D> m = (*this)(T(0.5));
+    T x = (T(3) * (c0 / (T(2) * q0)) + T(3) * (T(1) - c1 / (T(2) * q1)) + T(1)) / T(8);
+    x = std::clamp(x, T(0), T(1));
+    for (int it = 0; it < 8; ++it) {
+      T g = 0, gp = 0;
+      for (int k = 0; k < D; ++k) {
+        const T r = Q[0][k] + x * (T(2) * b[k] + x * a[k]) - m[k], d = T(2) * (b[k] + x * a[k]);
+        g += r * d;
+        gp += d * d + T(2) * r * a[k];
+      }
+      if (!(gp > 0)) break;
+      const T nx = std::clamp(x - g / gp, T(0), T(1));
+      const bool close = std::abs(nx - x) <= T(1e-5);
+      x = nx;
+      if (close) break;
+    }
+    // |f(1/2)| = |c(1/2) - q(x)| is one of f's values: when it exceeds `skip`, so does the
+    // bound, which is not computed (infinite: no bound).
+    {
+      T d2 = 0;
+      for (int k = 0; k < D; ++k) {
+        const T r = Q[0][k] + x * (T(2) * b[k] + x * a[k]) - m[k];
+        d2 += r * r;
+      }
+      if (d2 > skip * skip) return std::numeric_limits<T>::infinity();
+    }
+    const T s2 = (T(16) * x - T(4) * s1 - T(4) * s3 - T(1)) / T(6);
+    if (!(s1 >= 0 && s1 <= 1 && s2 >= 0 && s2 <= 1 && s3 >= 0 && s3 <= 1)) return std::numeric_limits<T>::infinity();
+    const std::array<T, 5> sg{T(0), s1, s2, s3, T(1)};
+    constexpr std::array<T, 4> c3{1, 3, 3, 1};
+    constexpr std::array<T, 5> c4{1, 4, 6, 4, 1};
+    constexpr std::array<T, 6> c5{1, 5, 10, 10, 5, 1};
+    constexpr std::array<T, 9> c8{1, 8, 28, 56, 70, 56, 28, 8, 1};
+    std::array<Vector<T, D>, 9> f;
+    for (int k = 0; k <= 8; ++k) {
+      T sig = 0, sig2 = 0;
+      for (int i = std::max(0, k - 4); i <= std::min(4, k); ++i) {
+        const T w = c4[static_cast<std::size_t>(i)] * c4[static_cast<std::size_t>(k - i)] / c8[static_cast<std::size_t>(k)];
+        sig += w * sg[static_cast<std::size_t>(i)];
+        sig2 += w * sg[static_cast<std::size_t>(i)] * sg[static_cast<std::size_t>(k - i)];
+      }
+      Vector<T, D> ck{};
+      for (int i = std::max(0, k - 5); i <= std::min(3, k); ++i) {
+        const T w = c3[static_cast<std::size_t>(i)] * c5[static_cast<std::size_t>(k - i)] / c8[static_cast<std::size_t>(k)];
+        ck = ck + w * (points[static_cast<std::size_t>(i)] - Q[0]);
+      }
+      f[static_cast<std::size_t>(k)] = ck - (T(2) * sig) * b - sig2 * a;
+    }
+    return polygon_bound_n(f, limit, levels);
+  }
+
+  /// The largest coefficient of the Bernstein polygon f, halved up to `levels` times
+  /// where it exceeds `limit` (not where an end value, a value of f, does): an upper
+  /// bound of max |f| on [0, 1].
+  template <std::size_t M>
+  static T polygon_bound_n(const std::array<Vector<T, D>, M>& f, T limit, int levels) {
     T worst = 0;
     for (const auto& v : f) worst = std::max(worst, squared_norm(v));
     worst = std::sqrt(worst);
     if (worst <= limit || levels == 0) return worst;
-    if (squared_norm(f[0]) > limit * limit || squared_norm(f[6]) > limit * limit) return worst;
-    std::array<Vector<T, D>, 7> l, r, w = f;
-    for (std::size_t lvl = 0; lvl < 7; ++lvl) {
+    if (squared_norm(f[0]) > limit * limit || squared_norm(f[M - 1]) > limit * limit) return worst;
+    std::array<Vector<T, D>, M> l, r, w = f;
+    for (std::size_t lvl = 0; lvl < M; ++lvl) {
       l[lvl] = w[0];
-      r[6 - lvl] = w[6 - lvl];
-      for (std::size_t i = 0; i + lvl + 1 < 7; ++i) w[i] = T(0.5) * (w[i] + w[i + 1]);
+      r[M - 1 - lvl] = w[M - 1 - lvl];
+      for (std::size_t i = 0; i + lvl + 1 < M; ++i) w[i] = T(0.5) * (w[i] + w[i + 1]);
     }
-    return std::max(polygon_bound(l, limit, levels - 1), polygon_bound(r, limit, levels - 1));
+    return std::max(polygon_bound_n(l, limit, levels - 1), polygon_bound_n(r, limit, levels - 1));
   }
+
+  /// polygon_bound_n for degree 6: the largest coefficient of the Bernstein polygon f, halved up to `levels`
+  /// times where it exceeds `limit` (not where an end value, a value of f, does: no
+  /// halving can bring the bound under `limit` then): an upper bound of max |f| on [0, 1].
+  static T polygon_bound(const std::array<Vector<T, D>, 7>& f, T limit, int levels) { return polygon_bound_n(f, limit, levels); }
 
   /// Vectors whose convex hull holds c'' on [0, 1], into out (the margin of
   /// ChainDistance::bound takes max |v - w| over them for |c'' - w|): n (n - 1) times the
@@ -518,6 +597,88 @@ std::pair<Vector<T, Piece::dimension>, Vector<T, Piece::dimension>> directions_a
   return {left, right};
 }
 
+/// The cusps of a cubic polynomial piece with hodograph control points H (c' = H0 B0 +
+/// H1 B1 + H2 B2), in closed form: the local minima of |c'|^2 in (0, 1) are roots of the
+/// cubic g = c' . c'' (where g turns from negative to positive), found by bisection on the
+/// intervals where g is monotone (between the roots of g'), stopped as soon as the speed
+/// in the bracket is sure to stay above 1e-9 of the largest |H_k| (at least the largest
+/// speed); a minimum below that where the direction turns back is a cusp. No allocation
+/// unless a cusp is found.
+template <class Piece, class T, int D>
+std::vector<T> cubic_cusps(const Piece& piece, const std::array<Point<T, D>, 3>& H) {
+  std::vector<T> out;
+  const Vector<T, D> C = H[0].to_vector(), B = T(2) * (H[1] - H[0]), A = (H[0] - H[1]) + (H[2] - H[1]);  // c'(t) = A t^2 + B t + C
+  // g(t) = c'(t) . c''(t) = g3 t^3 + g2 t^2 + g1 t + g0.
+  const T g3 = T(2) * dot(A, A), g2 = T(3) * dot(A, B), g1 = dot(B, B) + T(2) * dot(A, C), g0 = dot(B, C);
+  const auto g = [&](T t) { return ((g3 * t + g2) * t + g1) * t + g0; };
+  const auto speed2 = [&](T t) { return squared_norm((A * t + B) * t + C); };
+  // The ends of the monotone intervals of g: 0, the roots of g' = 3 g3 t^2 + 2 g2 t + g1 in (0, 1), 1.
+  std::array<T, 4> cut{T(0), T(1), T(1), T(1)};
+  int m = 1;
+  {
+    const T a = T(3) * g3, b = T(2) * g2, c = g1;
+    std::array<T, 2> r{};
+    int nr = 0;
+    if (a != 0) {
+      const T disc = b * b - T(4) * a * c;
+      if (disc >= 0) {
+        const T sq = std::sqrt(disc);
+        const T qq = -T(0.5) * (b + (b >= 0 ? sq : -sq));  // the stable quadratic formula
+        r[0] = qq / a;
+        r[1] = qq != 0 ? c / qq : r[0];
+        nr = 2;
+      }
+    } else if (b != 0) {
+      r[0] = -c / b;
+      nr = 1;
+    }
+    if (nr == 2 && r[1] < r[0]) std::swap(r[0], r[1]);
+    for (int i = 0; i < nr; ++i)
+      if (r[static_cast<std::size_t>(i)] > cut[static_cast<std::size_t>(m - 1)] && r[static_cast<std::size_t>(i)] < T(1)) cut[static_cast<std::size_t>(m++)] = r[static_cast<std::size_t>(i)];
+    cut[static_cast<std::size_t>(m)] = T(1);
+  }
+  T big2 = 0;  // the largest |H_k|^2: at least the largest |c'|^2
+  for (const auto& h : H) big2 = std::max(big2, squared_norm(h.to_vector()));
+  std::array<T, 3> minima{};
+  int nmin = 0;
+  const T level = T(1e-9) * std::sqrt(big2);  // a cusp's speed at most: 1e-9 of the largest
+  const T W = T(2) * fast_norm(A) + fast_norm(B);  // |c''| <= W on [0, 1]
+  for (int i = 0; i < m; ++i) {
+    T lo = cut[static_cast<std::size_t>(i)], hi = cut[static_cast<std::size_t>(i + 1)];
+    T glo = g(lo);
+    const T ghi = g(hi);
+    if (!(glo < 0 && ghi > 0)) continue;  // no minimum of |c'|^2 inside
+    // Bisection, stopped once the speed in the bracket stays above the level (|c'| >=
+    // |c'(lo)| - W (hi - lo) there).
+    bool low = true;
+    for (int it = 0; it < 200; ++it) {
+      if (std::sqrt(speed2(lo)) - W * (hi - lo) > level) {
+        low = false;
+        break;
+      }
+      const T mid = lo + T(0.5) * (hi - lo);
+      if (!(mid > lo && mid < hi)) break;
+      const T gm = g(mid);
+      if ((gm < 0) == (glo < 0)) {
+        lo = mid;
+        glo = gm;
+      } else {
+        hi = mid;
+      }
+    }
+    if (low) minima[static_cast<std::size_t>(nmin++)] = speed2(lo) <= speed2(hi) ? lo : hi;
+  }
+  const T top2 = big2;
+  if (!(top2 > 0)) return out;
+  for (int i = 0; i < nmin; ++i) {
+    const T tc = minima[static_cast<std::size_t>(i)];
+    if (speed2(tc) > T(1e-18) * top2 || tc <= T(0) || tc >= T(1)) continue;
+    const auto [left, right] = directions_at(piece, tc);
+    if (dot(left, right) < 0 && (out.empty() || tc > out.back())) out.push_back(tc);
+  }
+  return out;
+}
+
 /// The cusps of a piece inside its own domain: parameters where the derivative vanishes
 /// (|c'| <= 1e-9 of its largest value on the piece, found by sampling 16 (n + 1) points
 /// and refining each low local minimum of |c'| by golden section) and the direction turns
@@ -535,8 +696,16 @@ std::vector<typename Piece::Scalar> cusps(const Piece& piece) {
   std::vector<Point<T, D>> hodograph;
   if constexpr (std::is_same_v<Piece, Bezier<T, D>>) {
     const auto& P = piece.points();
-    hodograph.reserve(P.size() - 1);
-    for (std::size_t k = 0; k + 1 < P.size(); ++k) hodograph.push_back(Point<T, D>::from_vector(T(n) * (P[k + 1] - P[k])));
+    std::array<Point<T, D>, 3> cubic_hodograph;
+    if (n == 3) {
+      cubic_hodograph = {Point<T, D>::from_vector(T(3) * (P[1] - P[0])), Point<T, D>::from_vector(T(3) * (P[2] - P[1])),
+                         Point<T, D>::from_vector(T(3) * (P[3] - P[2]))};
+    } else {
+      hodograph.reserve(P.size() - 1);
+      for (std::size_t k = 0; k + 1 < P.size(); ++k) hodograph.push_back(Point<T, D>::from_vector(T(n) * (P[k + 1] - P[k])));
+    }
+    const Point<T, D>* H = n == 3 ? cubic_hodograph.data() : hodograph.data();
+    const std::size_t nh = static_cast<std::size_t>(n);
     // No cusp when the hodograph's control polygon keeps away from the origin: its convex
     // hull (which holds c' on [0, 1]) lies beyond a line at distance `low` from the origin,
     // for the normal u of the line the mean of the control points or the nearest point of
@@ -544,7 +713,7 @@ std::vector<typename Piece::Scalar> cusps(const Piece& piece) {
     // is at most the largest |H_k|, so when low > 0.06 max |H_k| no sampled minimum below
     // would reach 0.05 of the largest sample (the margin covers rounding).
     T big = 0;
-    for (const auto& h : hodograph) big = std::max(big, fast_norm(h.to_vector()));
+    for (std::size_t i = 0; i < nh; ++i) big = std::max(big, fast_norm(H[i].to_vector()));
     // The test on a control polygon H[0..k): true when it keeps away from the origin.
     const auto clear = [&](const Point<T, D>* H, std::size_t k) {
       const Vector<T, D> chord = H[k - 1] - H[0];
@@ -561,7 +730,8 @@ std::vector<typename Piece::Scalar> cusps(const Piece& piece) {
       }
       return false;
     };
-    if (clear(hodograph.data(), hodograph.size())) return out;
+    if (clear(H, nh)) return out;
+    if (n == 3) return cubic_cusps(piece, cubic_hodograph);
     // Else the same test on the hodograph's halves and quarters (de Casteljau at their
     // middles): a hodograph that turns about the origin without nearing it passes on the
     // parts, each holding its part of c' in its hull, with the same margin to `big`.
@@ -635,14 +805,13 @@ std::vector<typename Piece::Scalar> cusps(const Piece& piece) {
 
 /// The chain of one span [s0, s1] of a piece (no cusp inside), from direction t_start at
 /// its start to t_end at its end: greedy, each segment reaching as far as it can (the
-/// largest end found to 1% of its step by galloping and bisection) with the quadratic
+/// largest end found to 4% of its step by galloping and bisection) with the quadratic
 /// whose middle point is where the end tangents meet; consecutive segments share the
 /// point and the direction at their joint. Appends segments and own parameters of their
 /// ends; throws when more than max_segments would be made.
-template <class Piece, class T = typename Piece::Scalar, int D = Piece::dimension>
+template <class Piece, class Sink, class T = typename Piece::Scalar, int D = Piece::dimension>
 void approximate_span(const Piece& piece, T s0, T s1, const Point<T, D>& p_start, const Point<T, D>& p_end, Vector<T, D> t_start,
-                      const Vector<T, D>& t_end, T tolerance, std::size_t max_segments, std::vector<std::array<Point<T, D>, 3>>& out,
-                      std::vector<T>& ends, T& max_error) {
+                      const Vector<T, D>& t_end, T tolerance, std::size_t max_segments, Sink& out, T& max_error) {
   T t0 = s0;
   Point<T, D> p0 = p_start;
   Vector<T, D> dir0 = t_start;
@@ -673,17 +842,19 @@ void approximate_span(const Piece& piece, T s0, T s1, const Point<T, D>& p_start
     const T p = part.elevated_bound(*q);
     if (last && p <= T(0.1) * tolerance) return Try{*q, dir1, p, true};
     // Then the bound after a change of the quadratic's parameter (a cubic part against one
-    // quadratic): a part under 80% of the tolerance by it is taken (the search extends
-    // it anyway); above, the sampled bound, which follows the curves' geometry, not their
-    // parameters, and is often lower.
-    const T rb = std::min(p, part.reparametrised_bound(*q, T(0.8) * tolerance, 3));
+    // quadratic; sigma of degree 4): a part under 80% of the tolerance by it is taken (the
+    // search extends it anyway); above, the sampled bound, which follows the curves'
+    // geometry, not their parameters, and is often lower.
+    const T rb = std::min(p, part.reparametrised_bound4(*q, T(0.8) * tolerance, 3, tolerance));
     if (rb <= T(0.8) * tolerance) return Try{*q, dir1, rb, true};
     part.second_derivative_hull(hull);
     // The sampled bound, coarse to fine: refined while above half the tolerance (the
     // search below extends a part whose error is under 80% of the tolerance, and aims
-    // from the error it is given: an error well under the tolerance need not be tight).
+    // from the error it is given: an error well under the tolerance need not be tight),
+    // not beyond a bound within the tolerance whose samples reach 80% of it (the search
+    // stops there whatever the finer bound).
     ChainDistance<T, D> dist(*q);
-    const T e = std::min(rb, dist.bound(part, hull, tolerance, T(0.5) * tolerance));
+    const T e = std::min(rb, dist.bound(part, hull, tolerance, T(0.5) * tolerance, T(0.8) * tolerance));
     return Try{*q, dir1, e, e <= tolerance};
   };
   const auto accept = [&](const Try& r, T t1) {
@@ -691,9 +862,12 @@ void approximate_span(const Piece& piece, T s0, T s1, const Point<T, D>& p_start
       throw InvalidArgument("tolerance", "the approximation needs more than " + std::to_string(max_segments) +
                                              " quadratic segments: use a larger tolerance");
     }
-    for (int i = 0; i < r.q.size; ++i) out.push_back(r.q.q[static_cast<std::size_t>(i)]);
-    if (r.q.size == 2) ends.push_back(t0 + T(0.5) * (t1 - t0));
-    ends.push_back(t1);
+    if (r.q.size == 2) {
+      out.push(r.q.q[0], t0 + T(0.5) * (t1 - t0));
+      out.push(r.q.q[1], t1);
+    } else {
+      out.push(r.q.q[0], t1);
+    }
     max_error = std::max(max_error, r.error);
     step = t1 - t0;
     t0 = t1;
@@ -705,7 +879,7 @@ void approximate_span(const Piece& piece, T s0, T s1, const Point<T, D>& p_start
     // smooth parts) proposes each next end from the last error; a bracket [lo, hi]
     // (feasible, infeasible) keeps the search safe where the model fails (bisection).
     // Accepted once an end is feasible with an error of at least 80% of the tolerance,
-    // or the bracket is within 2% of the step.
+    // or the bracket is within 4% of the step.
     T lo = t0, hi = s1;
     bool hi_tested = false;
     std::optional<Try> best;
@@ -740,7 +914,7 @@ void approximate_span(const Piece& piece, T s0, T s1, const Point<T, D>& p_start
         hi = x;
         hi_tested = true;
       }
-      if (best && hi_tested && hi - lo <= T(0.02) * (lo - t0)) break;
+      if (best && hi_tested && hi - lo <= T(0.04) * (lo - t0)) break;
       if (!best && hi - t0 <= min_step) break;
       T g = std::numeric_limits<T>::quiet_NaN();
       if (std::isfinite(e) && e > 0) g = t0 + (x - t0) * std::sqrt(std::sqrt(T(0.95) * tolerance / e));
@@ -767,6 +941,64 @@ void approximate_span(const Piece& piece, T s0, T s1, const Point<T, D>& p_start
   }
 }
 
+/// Appends the chain of one piece s to r: its segments, and their ends' parameters lifted
+/// to the curve's by lift (the piece's last end is piece_end, exactly). start_dir and
+/// end_dir: the directions at the piece's ends (shared with the neighbours' at smooth
+/// joints). Throws when r would hold more than max_segments segments.
+template <class S, class T, int D, class Lift>
+void approximate_piece(const S& s, const Vector<T, D>& start_dir, const Vector<T, D>& end_dir, T tolerance, std::size_t max_segments,
+                       QuadraticChain<T, D>& r, T piece_end, const Lift& lift) {
+  struct Sink {
+    QuadraticChain<T, D>& r;
+    T piece_end;
+    const Lift& lift;
+    std::size_t size() const { return r.segments.size(); }
+    void push(const std::array<Point<T, D>, 3>& q, T own_end) {
+      r.segments.push_back(Bezier<T, D>({q[0], q[1], q[2]}));
+      r.breaks.push_back(own_end == T(1) ? piece_end : lift(own_end));
+    }
+  } sink{r, piece_end, lift};
+  const auto& P = s.points();
+  const int n = s.degree();
+  bool equal_weights = true;
+  if constexpr (!std::is_same_v<S, Bezier<T, D>>) {
+    for (const T w : s.weights()) equal_weights = equal_weights && w == s.weights().front();
+  }
+  if (n <= 1 || (n == 2 && equal_weights)) {
+    const Point<T, D> mid = n == 2 ? P[1] : P.front() + T(0.5) * (P.back() - P.front());
+    if (r.segments.size() + 1 > max_segments) {
+      throw InvalidArgument("tolerance", "the approximation needs more than " + std::to_string(max_segments) +
+                                             " quadratic segments: use a larger tolerance");
+    }
+    sink.push({P.front(), mid, P.back()}, T(1));
+    return;
+  }
+  const std::vector<T> inner = cusps(s);
+  if (inner.empty()) {
+    approximate_span(s, T(0), T(1), P.front(), P.back(), start_dir, end_dir, tolerance, max_segments, sink, r.max_error);
+    return;
+  }
+  std::vector<T> cut;
+  cut.reserve(inner.size() + 2);
+  cut.push_back(T(0));
+  cut.insert(cut.end(), inner.begin(), inner.end());
+  cut.push_back(T(1));
+  std::vector<Point<T, D>> span_points;  // the span's control points (Cartesian)
+  for (std::size_t j = 0; j + 1 < cut.size(); ++j) {
+    const T a = cut[j], b = cut[j + 1];
+    if constexpr (std::is_same_v<S, Bezier<T, D>>) {
+      polynomial_portion(P, a, b, span_points);
+    } else {
+      span_points = s.portion(a, b).points();
+    }
+    const Point<T, D> pa = j == 0 ? P.front() : span_points.front();
+    const Point<T, D> pb = j + 2 == cut.size() ? P.back() : span_points.back();
+    const Vector<T, D> da = j == 0 ? start_dir : end_direction(span_points, true);
+    const Vector<T, D> db = j + 2 == cut.size() ? end_dir : end_direction(span_points, false);
+    approximate_span(s, a, b, pa, pb, da, db, tolerance, max_segments, sink, r.max_error);
+  }
+}
+
 }  // namespace detail::quadratic
 
 /// The curve as a chain of quadratic Bézier segments within `tolerance` (> 0) of it.
@@ -775,7 +1007,7 @@ void approximate_span(const Piece& piece, T s0, T s1, const Point<T, D>& p_start
 /// or a line as a quadratic with its middle point at the chord's midpoint, a quadratic as
 /// itself; so is a rational piece of degree <= 1, or of degree 2 with equal weights). Any
 /// other piece is cut at its cusps, and each span between them is covered greedily: from
-/// its start, the segment reaching farthest (to 1% of its step) whose middle control point
+/// its start, the segment reaching farthest (to 4% of its step) whose middle control point
 /// is where the curve's tangent lines at the segment's two ends meet, within the
 /// tolerance. The segment therefore starts and ends on the curve with the curve's
 /// tangent directions (G1 Hermite interpolation, error falling as the fourth power of
@@ -794,9 +1026,9 @@ void approximate_span(const Piece& piece, T s0, T s1, const Point<T, D>& p_start
 /// polynomial part by the control points of the part minus the quadratic raised to its
 /// degree (Part::elevated_bound, a bound of the parametric distance), the smaller; the
 /// last segment of a span is taken on that cheap bound alone when it is within a tenth
-/// of the tolerance, and a cubic part on Part::reparametrised_bound (the parametric
-/// distance after a cubic change of the quadratic's parameter) when that is under 80% of
-/// it. Once the rest of a span has failed as one segment, the first end found within the
+/// of the tolerance, and a cubic part on Part::reparametrised_bound4 (the parametric
+/// distance after a quartic change of the quadratic's parameter) when that is under 80% of
+/// it. A cubic's cusps are found in closed form (cubic_cusps). Once the rest of a span has failed as one segment, the first end found within the
 /// tolerance is tried with the rest as a second segment (two is then the fewest). max_error is the largest. Errors: InvalidArgument "tolerance" (not finite and > 0; more than
 /// max_segments segments needed).
 template <class C>
@@ -832,65 +1064,36 @@ QuadraticChain<typename C::Scalar, C::dimension> to_quadratic(const C& p, typena
     const T angle = std::atan2(fast_norm(a - dot(a, b) * b), dot(a, b));
     if (angle < snap_angle<T>) end_dir[i] = start_dir[i + 1] = unit(a + b);
   }
-  std::vector<std::array<Point<T, D>, 3>> quads;
-  std::vector<T> ends;
   for (std::size_t i = 0; i < k; ++i) {
-    quads.clear();
-    ends.clear();
-    std::visit(
-        [&]<class S>(const S& s) {
-          const auto& P = s.points();
-          const int n = s.degree();
-          bool equal_weights = true;
-          if constexpr (!std::is_same_v<S, Bezier<T, D>>) {
-            for (const T w : s.weights()) equal_weights = equal_weights && w == s.weights().front();
-          }
-          if (n <= 1 || (n == 2 && equal_weights)) {
-            const Point<T, D> mid = n == 2 ? P[1] : P.front() + T(0.5) * (P.back() - P.front());
-            quads.push_back({P.front(), mid, P.back()});
-            ends.push_back(T(1));
-            return;
-          }
-          const std::vector<T> inner = detail::quadratic::cusps(s);
-          std::vector<T> cut;
-          cut.reserve(inner.size() + 2);
-          cut.push_back(T(0));
-          cut.insert(cut.end(), inner.begin(), inner.end());
-          cut.push_back(T(1));
-          std::vector<Point<T, D>> span_points;  // the span's control points (Cartesian), where it is cut
-          for (std::size_t j = 0; j + 1 < cut.size(); ++j) {
-            const T a = cut[j], b = cut[j + 1];
-            if (cut.size() > 2) {
-              if constexpr (std::is_same_v<S, Bezier<T, D>>) {
-                polynomial_portion(P, a, b, span_points);
-              } else {
-                span_points = s.portion(a, b).points();
-              }
-            }
-            const Point<T, D> pa = j == 0 ? P.front() : span_points.front();
-            const Point<T, D> pb = j + 2 == cut.size() ? P.back() : span_points.back();
-            const Vector<T, D> da = j == 0 ? start_dir[i] : end_direction(span_points, true);
-            const Vector<T, D> db = j + 2 == cut.size() ? end_dir[i] : end_direction(span_points, false);
-            approximate_span(s, a, b, pa, pb, da, db, tolerance, max_segments - std::min(max_segments, r.segments.size()), quads, ends,
-                             r.max_error);
-            if (r.segments.size() + quads.size() > max_segments) {
-              throw InvalidArgument("tolerance", "the approximation needs more than " + std::to_string(max_segments) +
-                                                     " quadratic segments: use a larger tolerance");
-            }
-          }
-        },
-        p.segments()[i]);
-    for (std::size_t j = 0; j < quads.size(); ++j) {
-      r.segments.push_back(Bezier<T, D>({quads[j][0], quads[j][1], quads[j][2]}));
-      r.breaks.push_back(j + 1 == quads.size() ? p.breaks()[i + 1] : p.lift(i, ends[j]));
-    }
+    std::visit([&](const auto& s) { approximate_piece(s, start_dir[i], end_dir[i], tolerance, max_segments, r, p.breaks()[i + 1], [&](T t) { return p.lift(i, t); }); },
+               p.segments()[i]);
   }
+  return r;
+}
+
+/// A Bézier or rational Bézier curve: itself the one piece (as on pieces(c), without
+/// building them).
+template <class C>
+  requires detail::is_bezier_piece<C>
+QuadraticChain<typename C::Scalar, C::dimension> to_quadratic(const C& c, typename C::Scalar tolerance,
+                                                               std::size_t max_segments = std::numeric_limits<std::size_t>::max()) {
+  using T = typename C::Scalar;
+  using namespace detail::quadratic;
+  if (!std::isfinite(tolerance) || !(tolerance > 0)) {
+    throw InvalidArgument("tolerance", "must be a finite number > 0, got " + detail::format_number(tolerance));
+  }
+  QuadraticChain<T, C::dimension> r;
+  r.breaks.reserve(4);
+  r.segments.reserve(3);
+  r.breaks.push_back(T(0));
+  approximate_piece(c, end_direction(c.points(), true), end_direction(c.points(), false), tolerance, max_segments, r, T(1),
+                    [](T t) { return t; });
   return r;
 }
 
 /// Any other curve type: on its exact pieces (pieces(c)).
 template <class C>
-  requires(!detail::is_pieces<C>) && PiecewiseBezierCurve<C>
+  requires(!detail::is_pieces<C>) && (!detail::is_bezier_piece<C>) && PiecewiseBezierCurve<C>
 auto to_quadratic(const C& c, typename C::Scalar tolerance, std::size_t max_segments = std::numeric_limits<std::size_t>::max()) {
   return to_quadratic(pieces(c), tolerance, max_segments);
 }
