@@ -41,6 +41,14 @@ def test_docstring_examples(module):
         # The examples the old collection missed run now.
         names = {t.name.split(".")[-1] for t in tests}
         assert {"make_interp_spline", "Surface", "BSpline", "CubicSpline", "BarycentricInterpolator"} <= names, names
+        # Every method and module function the issue names has an example (the generated
+        # ones from _curves._EXAMPLES, keyed by command).
+        issue = {"__call__", "derivative", "pieces", "split", "elevate", "insert_knot", "to_bezier", "bounds",
+                 "length", "param_at_length", "project", "features", "curvature", "flatten", "area", "intersect",
+                 "distance", "fit", "subdivide"}
+        assert issue <= names, issue - names
+        assert {n for n in issue if callable(getattr(casteljau.Curve, n, None))} <= {
+            t.name.split(".")[-1] for t in tests if t.name.startswith("casteljau.Curve.")}
 
 
 def test_type_stubs_are_current():
