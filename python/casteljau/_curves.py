@@ -493,6 +493,69 @@ array([[0., 0.],
 >>> round(r.max_error, 12)
 0.0
 """,
+    "remove_knot": """
+>>> import casteljau
+>>> b = casteljau.BSpline(degree=2, knots=[0, 0, 0, 1, 1, 1], points=[[0, 0], [1, 2], [2, 0]])
+>>> r = b.insert_knot(0.5).remove_knot(0.5, 1, 1e-12)  # an inserted knot comes out again
+>>> r.removed, r.curve.knots, r.curve.points
+(1, [0.0, 0.0, 0.0, 1.0, 1.0, 1.0], [[0.0, 0.0], [1.0, 2.0], [2.0, 0.0]])
+""",
+    "solve": """
+>>> import casteljau
+>>> c = casteljau.Bezier([[0, 0], [0, 2], [2, 2], [2, 0]])  # x = 6 t^2 - 4 t^3
+>>> c.solve(1.0, 0).t.round(12)  # x = 1 at the point of symmetry
+array([0.5])
+""",
+    "refine": """
+>>> import casteljau
+>>> b = casteljau.BSpline(degree=1, knots=[0, 0, 1, 1], points=[[0, 0], [2, 0]])
+>>> b.refine([0.25, 0.5, 0.75]).points  # a line's new points: on it, at 2 u
+[[0.0, 0.0], [0.5, 0.0], [1.0, 0.0], [1.5, 0.0], [2.0, 0.0]]
+""",
+    "reduce": """
+>>> import numpy as np, casteljau
+>>> cubic = casteljau.Bezier([[0, 0], [1, 2], [2, 0]]).elevate(1)  # a parabola written as a cubic
+>>> r = cubic.reduce(1, 1e-9)
+>>> np.round(r.curve.points, 12) + 0, round(r.max_error, 12)
+(array([[0., 0.],
+       [1., 2.],
+       [2., 0.]]), 0.0)
+""",
+    "to_quadratic": """
+>>> import casteljau
+>>> cubic = casteljau.Bezier([[0, 0], [1, 2], [2, 0]]).elevate(1)  # a parabola written as a cubic
+>>> [s.points for s in cubic.to_quadratic(1e-9).segments]  # one quadratic: the parabola's own
+[[[0.0, 0.0], [1.0, 2.0], [2.0, 0.0]]]
+""",
+    "frames": """
+>>> import casteljau
+>>> arc = casteljau.RationalBezier([[1, 0, 0], [1, 1, 0], [0, 1, 0]], [1, 1, 2])  # a quarter of the unit circle
+>>> f = arc.frames([0, 1])  # at (1, 0, 0) and (0, 1, 0): the tangent turns, the normal points to the centre
+>>> f.tangents.round(12) + 0, f.normals.round(12) + 0, f.binormals.round(12) + 0
+(array([[ 0.,  1.,  0.],
+       [-1.,  0.,  0.]]), array([[-1.,  0.,  0.],
+       [ 0., -1.,  0.]]), array([[0., 0., 1.],
+       [0., 0., 1.]]))
+""",
+    "offset": """
+>>> import casteljau
+>>> o = casteljau.Bezier([[0, 0], [2, 0]]).offset(1, 1e-6)  # positive: to the left of the direction
+>>> o([0, 0.5, 1]).round(12) + 0
+array([[0., 1.],
+       [1., 1.],
+       [2., 1.]])
+""",
+    "to_svg_path": """
+>>> import casteljau
+>>> r = casteljau.Bezier([[0, 0], [0, 2], [2, 2], [2, 0]]).to_svg_path()  # SVG holds a cubic exactly
+>>> r.d, r.exact
+('M 0 0 C 0 2 2 2 2 0', True)
+""",
+    "basis": """
+>>> import casteljau
+>>> casteljau.basis("bernstein", degree=2, t=[0.5])  # (1 - t)^2, 2 t (1 - t), t^2
+array([[0.25, 0.5 , 0.25]])
+""",
     "subdivide": """
 >>> import casteljau
 >>> r = casteljau.subdivide([[0, 0], [4, 0], [4, 4], [0, 4]], scheme="chaikin", iterations=1, closed=True)
