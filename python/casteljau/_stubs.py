@@ -92,7 +92,33 @@ _RESULT_CLASSES = [
     ("_Reduction", [("curve", "Curve"), ("max_error", "float")]),
     ("_Frames", [("tangents", _F64), ("normals", _F64), ("binormals", _F64)]),
     ("_SvgPath", [("d", "str"), ("exact", "bool"), ("max_deviation", "float"), ("cubics", "int")]),
+    ("_Patches", [("patches", "list[list[Surface]]"), ("breaks", _F64)]),
+    ("_SurfaceProjection", [("uv", _F64), ("point", _F64), ("distance", "float")]),
+    ("_CurveSurfaceIntersections", [("intersections", "list[Result]"), ("overlaps", _F64)]),
+    ("_Mesh", [("vertices", _F64), ("uv", _F64), ("normals", _F64), ("triangles", _F64)]),
 ]
+
+# The surface methods' answers (as _RETURNS) and the surface types' fields.
+_SURFACE_RETURNS = {
+    "eval": f"{_F64} | Result",  # the points alone, or a Result with the asked-for extras
+    "split": "list[Surface]",
+    "elevate": "Surface",
+    "to_bezier": "_Patches",
+    "insert_knot": "Surface",
+    "bounds": "_Bounds",
+    "project": "_SurfaceProjection",
+    "area": "float",
+    "intersect": "_CurveSurfaceIntersections",
+    "isocurve": "Curve",
+    "tessellate": "_Mesh | str",  # format obj or stl: the file's text
+}
+_SURFACE_FIELD_TYPES = {
+    "points": "ArrayLike",
+    "weights": "ArrayLike",
+    "degree": "Sequence[int]",
+    "knots": "Sequence[ArrayLike]",
+    "dim": "int",
+}
 
 
 def _params(fields: list, skip: str = "") -> str:
@@ -174,8 +200,8 @@ def stub_text() -> str:
         "    @classmethod",
         "    def from_json(cls, obj: dict | str) -> Surface: ...",
         "    def to_json(self) -> dict: ...",
-        "    def __call__(self, u: ArrayLike, v: ArrayLike, grid: bool = False) -> np.ndarray: ...",
-        "    def limit_normal(self, u: float, v: float) -> np.ndarray | None: ...",
+        f"    def __call__(self, u: ArrayLike, v: ArrayLike, grid: bool = False) -> {_F64}: ...",
+        f"    def limit_normal(self, u: float, v: float) -> {_F64} | None: ...",
     ]
     seen = set()
     surface_methods = [(n, f, "surface") for n, _, f in _casteljau.surface_forms()]
@@ -185,12 +211,12 @@ def stub_text() -> str:
             continue
         seen.add(name)
         params = _params(fields, skip=skip)
-        lines.append(f"    def {name}(self{', ' if params else ''}{params}) -> Any: ...")
+        lines.append(f"    def {name}(self{', ' if params else ''}{params}) -> {_SURFACE_RETURNS.get(name, 'Any')}: ...")
     lines.append("")
     from ._surfaces import _class_name  # the same names as the package's classes
 
     for json_name, fields in _casteljau.surface_types():
-        params = ", ".join(f"{f}: Any = ..." for f in fields if f != "type")
+        params = ", ".join(f"{f}: {_SURFACE_FIELD_TYPES.get(f, 'Any')} = ..." for f in fields if f != "type")
         lines += [f"class {_class_name(json_name)}(Surface):", f"    def __init__(self, {params}) -> None: ...", ""]
     lines += functions
     lines += [

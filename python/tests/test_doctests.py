@@ -77,6 +77,7 @@ def test_stub_result_fields_match_answers():
     C = casteljau
     cubic = C.Bezier([[0, 0], [0, 2], [2, 2], [2, 0]])
     bs = C.BSpline(degree=2, knots=[0, 0, 0, 1, 2, 2, 2], points=[[0, 0], [2, 0], [2, 2], [0, 2]])
+    patch = C.BezierSurface([[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]])
     answers = {
         "_Bounds": cubic.bounds(),
         "_Pieces": bs.pieces(),
@@ -92,11 +93,15 @@ def test_stub_result_fields_match_answers():
         "_Reduction": cubic.elevate(1).reduce(1, 1e-9),
         "_Frames": C.Bezier([[0, 0, 0], [1, 1, 0], [2, 0, 1]]).frames([0, 0.5]),
         "_SvgPath": cubic.to_svg_path(),
+        "_Patches": patch.to_bezier(),
+        "_SurfaceProjection": patch.project([0.5, 0.5, 1]),
+        "_CurveSurfaceIntersections": patch.intersect(C.Bezier([[0.5, 0.5, -1], [0.5, 0.5, 2]])),
+        "_Mesh": patch.tessellate(0.1),
     }
     kinds = {"float": (float,), "int": (int,), "str": (str,), "bool": (bool,), _stubs._F64: (np.ndarray,),
              f"float | {_stubs._F64}": (float, np.ndarray), f"list[{_stubs._F64}]": (list,),
              "Sequence[_Intersection]": (list, np.ndarray), "BSpline": (C.BSpline,), "Curve": (C.Curve,),
-             "list[Bezier | RationalBezier]": (list,)}
+             "list[Bezier | RationalBezier]": (list,), "list[list[Surface]]": (list,), "list[Result]": (list,)}
     assert {name for name, _ in _stubs._RESULT_CLASSES} == set(answers)
     for name, fields in _stubs._RESULT_CLASSES:
         r = answers[name]
@@ -117,3 +122,8 @@ def test_stub_result_fields_match_answers():
         assert isinstance(value, expected), (command, annotation, type(value))
     a, b = cubic.split(0.5)
     assert type(a) is type(b) is C.Bezier  # tuple[_C, _C]
+    surface = {"area": (patch.area(), float), "isocurve": (patch.isocurve("u", 0.5), C.Curve),
+               "elevate": (patch.elevate("u", 1), C.Surface), "split": (patch.split("u", 0.5), list),
+               "tessellate": (patch.tessellate(0.1, format="obj"), str), "eval": (patch.eval([[0.5, 0.5]]), np.ndarray)}
+    for command, (value, kind) in surface.items():
+        assert command in _stubs._SURFACE_RETURNS and isinstance(value, kind), (command, type(value))
