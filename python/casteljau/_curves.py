@@ -382,12 +382,15 @@ def _command_function(name: str, summary: str, fields: list) -> Any:
     return function
 
 
-def _doc(name: str, summary: str, fields: list) -> str:
+def _doc(name: str, summary: str, fields: list, example: bool = True) -> str:
+    """A generated method's or function's docstring: the registry's summary and fields, and
+    the command's example from _EXAMPLES (curve methods and module functions only: a
+    surface method of the same name passes example=False)."""
     lines = [summary + ".", "", f"The registry's command {name!r} (docs/cli.md). Arguments:"]
     for fname, ftype, required, default, help_ in fields:
         state = "required" if required else (f"default {default}" if default else "optional")
         lines.append(f"    {fname} ({ftype}, {state}): {help_}")
-    if name in _EXAMPLES:
+    if example and name in _EXAMPLES:
         lines += ["", "Example (run as a doctest; the values checkable by hand):", "", _EXAMPLES[name].strip("\n")]
     return "\n".join(lines)
 
