@@ -178,14 +178,37 @@ class Curve:
     def __call__(self, t: Any, nu: int = 0) -> np.ndarray:
         """Points (nu = 0) or order-nu derivatives at t (a number or an array of any shape):
         float64, C-contiguous, shape t.shape + (d,). Outside the domain the end pieces
-        continue. A NaN parameter raises Error naming t[j] (j: the flat index)."""
+        continue. A NaN parameter raises Error naming t[j] (j: the flat index).
+
+        >>> import casteljau
+        >>> c = casteljau.Bezier([[0, 0], [0, 2], [2, 2], [2, 0]])
+        >>> c(0.5)  # de Casteljau: (P0 + 3 P1 + 3 P2 + P3) / 8
+        array([1. , 1.5])
+        >>> c([0, 0.5, 1])
+        array([[0. , 0. ],
+               [1. , 1.5],
+               [2. , 0. ]])
+        >>> c(0.5, nu=1), c(0.5, nu=2)  # x = 6 t^2 - 4 t^3, y = 6 t - 6 t^2
+        (array([3., 0.]), array([  0., -12.]))
+        """
         return self._c.evaluate(np.asarray(t, dtype=np.float64), int(nu))
 
     def derivative(self, k: int = 1) -> "Curve":
         """The order-k derivative curve as a Path with the curve's parametrisation:
         c.derivative(k)(t) == c(t, nu=k) (to rounding). A polynomial piece's derivative is
         its hodograph (a Bezier segment); a rational piece's R = N / W is the rational
-        segment (N' W - N W') / W^2, of twice the degree (each order doubles it again)."""
+        segment (N' W - N W') / W^2, of twice the degree (each order doubles it again).
+
+        >>> import casteljau
+        >>> d = casteljau.Bezier([[0, 0], [0, 2], [2, 2], [2, 0]]).derivative()
+        >>> type(d).__name__, d.segments[0].points  # the hodograph: 3 (P[j+1] - P[j])
+        ('Path', [[0.0, 6.0], [6.0, 0.0], [0.0, -6.0]])
+        >>> d(0.5)
+        array([3., 0.])
+        >>> arc = casteljau.RationalBezier([[1, 0], [1, 1], [0, 1]], [1, 1, 2])  # ((1 - t^2), 2 t) / (1 + t^2)
+        >>> arc.derivative()(0.5).round(12)  # (-4 t, 2 (1 - t^2)) / (1 + t^2)^2
+        array([-1.28,  0.96])
+        """
         if k < 0:
             raise Error(f"k: must be >= 0, got {k}")
         c: Curve = self
@@ -194,13 +217,29 @@ class Curve:
         return c
 
     def curvature(self, t: Any) -> np.ndarray | float:
-        """The curvature at t (signed in 2-D): the shape of t."""
+        """The curvature at t (signed in 2-D): the shape of t.
+
+        >>> import casteljau
+        >>> c = casteljau.Bezier([[0, 0], [0, 2], [2, 2], [2, 0]])
+        >>> round(c.curvature(0.5), 12)  # (x' y'' - y' x'') / |c'|^3 = 3 (-12) / 27: turning clockwise
+        -1.333333333333
+        >>> arc = casteljau.RationalBezier([[1, 0], [1, 1], [0, 1]], [1, 1, 2])  # on the unit circle
+        >>> arc.curvature([0, 0.5, 1]).round(12)
+        array([1., 1., 1.])
+        """
         k = self._c.curvature(np.asarray(t, dtype=np.float64))
         return float(k) if k.ndim == 0 else k
 
     def pieces(self) -> Result:
         """The exact Bezier pieces: Result(breaks (n + 1,), segments [Bezier or
-        RationalBezier on [0, 1]])."""
+        RationalBezier on [0, 1]]).
+
+        >>> import casteljau
+        >>> b = casteljau.BSpline(degree=2, knots=[0, 0, 0, 1, 2, 2, 2], points=[[0, 0], [2, 0], [2, 2], [0, 2]])
+        >>> p = b.pieces()  # the pieces meet at the midpoint of the middle leg
+        >>> p.breaks, [s.points for s in p.segments]
+        (array([0., 1., 2.]), [[[0.0, 0.0], [2.0, 0.0], [2.0, 1.0]], [[2.0, 1.0], [2.0, 2.0], [0.0, 2.0]]])
+        """
         p = self.to_bezier()
         j = p.to_json()
         return Result(breaks=np.array(j["breaks"], dtype=np.float64),
@@ -212,7 +251,16 @@ class Curve:
         point: a number, (d,), a number, and all_t / intervals on ties, as the project
         command answers). The rows run in C++ without the GIL, each a direct call of the
         library's project (no JSON), on the curve's exact pieces made at its first
-        projection and kept."""
+        projection and kept.
+
+        >>> import casteljau
+        >>> r = casteljau.Bezier([[0, 0], [0, 2], [2, 2], [2, 0]]).project([1, 3])  # above the top (1, 1.5)
+        >>> round(r.t, 12), r.point.round(12), round(r.distance, 12)
+        (0.5, array([1. , 1.5]), 1.5)
+        >>> r = casteljau.Bezier([[0, 0], [4, 0]]).project([[1, 1], [3, -2], [5, 0]])  # rows: arrays
+        >>> r.t, r.distance  # the feet of the perpendiculars; past the end, the end
+        (array([0.25, 0.75, 1.  ]), array([1., 2., 1.]))
+        """
         pts = np.asarray(point, dtype=np.float64)
         if pts.ndim == 1:
             return _simplify(self._c.project_point(pts, bool(farthest)))
@@ -334,12 +382,197 @@ def _command_function(name: str, summary: str, fields: list) -> Any:
     return function
 
 
-def _doc(name: str, summary: str, fields: list) -> str:
+def _doc(name: str, summary: str, fields: list, example: bool = True) -> str:
+    """A generated method's or function's docstring: the registry's summary and fields, and
+    the command's example from _EXAMPLES (curve methods and module functions only: a
+    surface method of the same name passes example=False)."""
     lines = [summary + ".", "", f"The registry's command {name!r} (docs/cli.md). Arguments:"]
     for fname, ftype, required, default, help_ in fields:
         state = "required" if required else (f"default {default}" if default else "optional")
         lines.append(f"    {fname} ({ftype}, {state}): {help_}")
+    if example and name in _EXAMPLES:
+        lines += ["", "Example (run as a doctest; the values checkable by hand):", "", _EXAMPLES[name].strip("\n")]
     return "\n".join(lines)
+
+
+# The docstring examples of the generated methods and functions, by command (a command
+# without one here has none). Each expected value is a textbook one, worked out in the
+# comment beside it; values from an iteration or a quadrature are rounded.
+_EXAMPLES: dict[str, str] = {
+    "split": """
+>>> import casteljau
+>>> a, b = casteljau.Bezier([[0, 0], [0, 2], [2, 2], [2, 0]]).split(0.5)
+>>> a.points  # de Casteljau at 1/2: P0, the first midpoints' first, ..., the point
+[[0.0, 0.0], [0.0, 1.0], [0.5, 1.5], [1.0, 1.5]]
+>>> b.points  # ... and the other side of the triangle
+[[1.0, 1.5], [1.5, 1.5], [2.0, 1.0], [2.0, 0.0]]
+""",
+    "elevate": """
+>>> import casteljau
+>>> casteljau.Bezier([[0, 0], [0, 2], [2, 2], [2, 0]]).elevate(1).points  # Q_i = i/4 P_(i-1) + (1 - i/4) P_i
+[[0.0, 0.0], [0.0, 1.5], [1.0, 2.0], [2.0, 1.5], [2.0, 0.0]]
+""",
+    "insert_knot": """
+>>> import casteljau
+>>> b = casteljau.BSpline(degree=2, knots=[0, 0, 0, 1, 1, 1], points=[[0, 0], [1, 2], [2, 0]])
+>>> c = b.insert_knot(0.5)  # Boehm: the new points are the affected legs' midpoints
+>>> c.knots, c.points
+([0.0, 0.0, 0.0, 0.5, 1.0, 1.0, 1.0], [[0.0, 0.0], [0.5, 1.0], [1.5, 1.0], [2.0, 0.0]])
+""",
+    "to_bezier": """
+>>> import casteljau
+>>> b = casteljau.BSpline(degree=2, knots=[0, 0, 0, 1, 2, 2, 2], points=[[0, 0], [2, 0], [2, 2], [0, 2]])
+>>> p = b.to_bezier()  # a Path; the pieces meet at the midpoint of the middle leg
+>>> p.breaks, [s.points for s in p.segments]
+([0.0, 1.0, 2.0], [[[0.0, 0.0], [2.0, 0.0], [2.0, 1.0]], [[2.0, 1.0], [2.0, 2.0], [0.0, 2.0]]])
+""",
+    "bounds": """
+>>> import casteljau
+>>> b = casteljau.Bezier([[0, 0], [0, 2], [2, 2], [2, 0]]).bounds()  # y(t) = 6 t (1 - t): 1.5 at t = 1/2
+>>> b.min, b.max
+(array([0., 0.]), array([2. , 1.5]))
+""",
+    "length": """
+>>> import casteljau
+>>> s = casteljau.Bezier([[0, 0], [3, 4]])
+>>> round(s.length(), 12), round(s.length(from_=0.5), 12)  # a 3-4-5 segment, and its second half
+(5.0, 2.5)
+""",
+    "param_at_length": """
+>>> import casteljau
+>>> casteljau.Bezier([[0, 0], [3, 4]]).param_at_length([0, 2.5, 5]).round(12)  # arc length 5 t
+array([0. , 0.5, 1. ])
+""",
+    "features": """
+>>> import casteljau
+>>> f = casteljau.Bezier([[0, 0], [1, 1], [2, -1], [3, 0]]).features()  # y = 3 t (1 - t) (1 - 2 t)
+>>> f.inflections  # the point of symmetry
+array([0.5])
+>>> [e.round(6) for e in f.extrema]  # x = 3 t has none; y' = 0 at t = (3 -+ sqrt(3)) / 6
+[array([], dtype=float64), array([0.211325, 0.788675])]
+""",
+    "flatten": """
+>>> import casteljau
+>>> q = casteljau.Bezier([[0, 0], [1, 1], [2, 0]])  # a chord over dt misses the parabola by dt^2 / 2
+>>> q.flatten(0.2)  # dt = 1/2: 1/8 <= 0.2
+array([[0. , 0. ],
+       [1. , 0.5],
+       [2. , 0. ]])
+>>> len(q.flatten(0.03, method="uniform"))  # dt = 1/5: 0.02 <= 0.03 (dt = 1/4: 0.03125)
+6
+""",
+    "area": """
+>>> import math, casteljau
+>>> casteljau.Polyline([[0, 0], [1, 0], [1, 1], [0, 1], [0, 0]]).area()  # counterclockwise: +
+1.0
+>>> casteljau.Polyline([[0, 0], [0, 1], [1, 1], [1, 0], [0, 0]]).area()  # clockwise: -
+-1.0
+>>> arc = casteljau.RationalBezier([[1, 0], [1, 1], [0, 1]], [1, 1, 2])  # ((1 - t^2), 2 t) / (1 + t^2)
+>>> quarter = casteljau.Path(segments=[arc, casteljau.Bezier([[0, 1], [0, 0]]), casteljau.Bezier([[0, 0], [1, 0]])])
+>>> round(quarter.area() - math.pi / 4, 12)  # the quarter disc
+0.0
+""",
+    "intersect": """
+>>> import casteljau
+>>> r = casteljau.intersect(casteljau.Bezier([[0, 0], [2, 2]]), casteljau.Bezier([[0, 2], [2, 0]]))
+>>> x = r.intersections[0]  # the diagonals of a square cross at its centre
+>>> x.t.round(12), x.point.round(12), x.kind, len(r.overlaps)
+(array([0.5, 0.5]), array([1., 1.]), 'crossing', 0)
+""",
+    "distance": """
+>>> import casteljau
+>>> r = casteljau.distance(casteljau.Bezier([[0, 0], [2, 0]]), casteljau.Bezier([[3, 1], [4, 2]]))
+>>> round(r.distance, 12), r.t, r.points  # from the end (2, 0) to the start (3, 1): sqrt(2)
+(1.414213562373, array([1., 0.]), array([[2., 0.],
+       [3., 1.]]))
+""",
+    "fit": """
+>>> import numpy as np, casteljau
+>>> r = casteljau.fit([[0, 0], [1, 1], [2, 0]], degree=2, control_points=3)  # interpolation
+>>> np.round(r.curve.points, 12) + 0  # B(1/2) = P0/4 + P1/2 + P2/4 = (1, 1): P1 = (1, 2)
+array([[0., 0.],
+       [1., 2.],
+       [2., 0.]])
+>>> round(r.max_error, 12)
+0.0
+""",
+    "remove_knot": """
+>>> import casteljau
+>>> b = casteljau.BSpline(degree=2, knots=[0, 0, 0, 1, 1, 1], points=[[0, 0], [1, 2], [2, 0]])
+>>> r = b.insert_knot(0.5).remove_knot(0.5, 1, 1e-12)  # an inserted knot comes out again
+>>> r.removed, r.curve.knots, r.curve.points
+(1, [0.0, 0.0, 0.0, 1.0, 1.0, 1.0], [[0.0, 0.0], [1.0, 2.0], [2.0, 0.0]])
+""",
+    "solve": """
+>>> import casteljau
+>>> c = casteljau.Bezier([[0, 0], [0, 2], [2, 2], [2, 0]])  # x = 6 t^2 - 4 t^3
+>>> c.solve(1.0, 0).t.round(12)  # x = 1 at the point of symmetry
+array([0.5])
+""",
+    "refine": """
+>>> import casteljau
+>>> b = casteljau.BSpline(degree=1, knots=[0, 0, 1, 1], points=[[0, 0], [2, 0]])
+>>> b.refine([0.25, 0.5, 0.75]).points  # a line's new points: on it, at 2 u
+[[0.0, 0.0], [0.5, 0.0], [1.0, 0.0], [1.5, 0.0], [2.0, 0.0]]
+""",
+    "reduce": """
+>>> import numpy as np, casteljau
+>>> cubic = casteljau.Bezier([[0, 0], [1, 2], [2, 0]]).elevate(1)  # a parabola written as a cubic
+>>> r = cubic.reduce(1, 1e-9)
+>>> np.round(r.curve.points, 12) + 0, round(r.max_error, 12)
+(array([[0., 0.],
+       [1., 2.],
+       [2., 0.]]), 0.0)
+""",
+    "to_quadratic": """
+>>> import casteljau
+>>> cubic = casteljau.Bezier([[0, 0], [1, 2], [2, 0]]).elevate(1)  # a parabola written as a cubic
+>>> [s.points for s in cubic.to_quadratic(1e-9).segments]  # one quadratic: the parabola's own
+[[[0.0, 0.0], [1.0, 2.0], [2.0, 0.0]]]
+""",
+    "frames": """
+>>> import casteljau
+>>> arc = casteljau.RationalBezier([[1, 0, 0], [1, 1, 0], [0, 1, 0]], [1, 1, 2])  # a quarter of the unit circle
+>>> f = arc.frames([0, 1])  # at (1, 0, 0) and (0, 1, 0): the tangent turns, the normal points to the centre
+>>> f.tangents.round(12) + 0, f.normals.round(12) + 0, f.binormals.round(12) + 0
+(array([[ 0.,  1.,  0.],
+       [-1.,  0.,  0.]]), array([[-1.,  0.,  0.],
+       [ 0., -1.,  0.]]), array([[0., 0., 1.],
+       [0., 0., 1.]]))
+""",
+    "offset": """
+>>> import casteljau
+>>> o = casteljau.Bezier([[0, 0], [2, 0]]).offset(1, 1e-6)  # positive: to the left of the direction
+>>> o([0, 0.5, 1]).round(12) + 0
+array([[0., 1.],
+       [1., 1.],
+       [2., 1.]])
+""",
+    "to_svg_path": """
+>>> import casteljau
+>>> r = casteljau.Bezier([[0, 0], [0, 2], [2, 2], [2, 0]]).to_svg_path()  # SVG holds a cubic exactly
+>>> r.d, r.exact
+('M 0 0 C 0 2 2 2 2 0', True)
+""",
+    "basis": """
+>>> import casteljau
+>>> casteljau.basis("bernstein", degree=2, t=[0.5])  # (1 - t)^2, 2 t (1 - t), t^2
+array([[0.25, 0.5 , 0.25]])
+""",
+    "subdivide": """
+>>> import casteljau
+>>> r = casteljau.subdivide([[0, 0], [4, 0], [4, 4], [0, 4]], scheme="chaikin", iterations=1, closed=True)
+>>> r.points  # Chaikin: each edge's points at 1/4 and 3/4
+array([[1., 0.],
+       [3., 0.],
+       [4., 1.],
+       [4., 3.],
+       [3., 4.],
+       [1., 4.],
+       [0., 3.],
+       [0., 1.]])
+""",
+}
 
 
 # Methods written above by hand take precedence over a generated one of the same name.

@@ -144,6 +144,9 @@ class PPoly:
 
     def __init__(self, curve: Curve, tail: tuple, extrapolate: Any = True, axis: int = 0,
                  ends: tuple | None = None) -> None:
+        if isinstance(curve, (np.ndarray, list, tuple)):  # scipy's PPoly(c, x): not a constructor here
+            raise TypeError("PPoly(c, x) is not supported (scipy's coefficient form); PPoly objects come from "
+                            "derivative() and antiderivative() of the scipy-named classes")
         self._curve = curve
         self._tail = tail
         self.extrapolate = extrapolate

@@ -164,7 +164,7 @@ def _method(name: str, summary: str, fields: list, field: str) -> Any:
 
     method.__name__ = name
     method.__qualname__ = f"Surface.{name}"
-    method.__doc__ = _doc(name, summary, [f for f in fields if f[0] != field])
+    method.__doc__ = _doc(name, summary, [f for f in fields if f[0] != field], example=False)
     return method
 
 

@@ -906,3 +906,9 @@ def test_not_a_knot_against_the_exact_solve(kind):
         a, b = ours(xs, nu), theirs(xs, nu)
         np.testing.assert_allclose(a, want, rtol=1e-12, atol=0, err_msg=f"nu={nu}")
         assert np.all(np.abs(a - b) <= 1e-12 * np.abs(b) + np.abs(b - want)), nu
+
+
+def test_ppoly_coefficient_constructor_refused():
+    """scipy's PPoly(c, x) is not supported: a TypeError saying so, not an AttributeError."""
+    with pytest.raises(TypeError, match=r"PPoly\(c, x\) is not supported"):
+        casteljau.PPoly(np.array([[1.0], [0.0]]), np.array([0.0, 1.0]))
