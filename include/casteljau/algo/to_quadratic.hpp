@@ -480,8 +480,10 @@ struct Part {
   /// sigma(1/2) is the foot of c(1/2) on q (Newton), which removes most of the tangential
   /// part of f = c - q o sigma (degree 8) that makes the cubic sigma's bound loose (1.4 to
   /// 20 times the distance on parts where the speeds vary). Infinite as there, or when
-  /// |f(1/2)| (a value of f, so at most the bound) exceeds `skip`.
-  T reparametrised_bound4(const Chain<T, D>& q, T limit, int levels, T skip = std::numeric_limits<T>::infinity()) const {
+  /// |f(1/2)| (a value of f, so at most the bound) exceeds `skip`; then |f(1/2)|, the
+  /// distance from c(1/2) to its foot on q, is written to *skipped when given.
+  T reparametrised_bound4(const Chain<T, D>& q, T limit, int levels, T skip = std::numeric_limits<T>::infinity(),
+                          T* skipped = nullptr) const {
     if (!polynomial || q.size != 1 || points.size() != 4) return std::numeric_limits<T>::infinity();
     const auto& Q = q.front();
     const Vector<T, D> b = Q[1] - Q[0], a = (Q[0] - Q[1]) + (Q[2] - Q[1]);
@@ -514,7 +516,10 @@ struct Part {
         const T r = Q[0][k] + x * (T(2) * b[k] + x * a[k]) - m[k];
         d2 += r * r;
       }
-      if (d2 > skip * skip) return std::numeric_limits<T>::infinity();
+      if (d2 > skip * skip) {
+        if (skipped) *skipped = std::sqrt(d2);
+        return std::numeric_limits<T>::infinity();
+      }
     }
     const T s2 = (T(16) * x - T(4) * s1 - T(4) * s3 - T(1)) / T(6);
     if (!(s1 >= 0 && s1 <= 1 && s2 >= 0 && s2 <= 1 && s3 >= 0 && s3 <= 1)) return std::numeric_limits<T>::infinity();
@@ -845,8 +850,12 @@ void approximate_span(const Piece& piece, T s0, T s1, const Point<T, D>& p_start
     // quadratic; sigma of degree 4): a part under 80% of the tolerance by it is taken (the
     // search extends it anyway); above, the sampled bound, which follows the curves'
     // geometry, not their parameters, and is often lower.
-    const T rb = std::min(p, part.reparametrised_bound4(*q, T(0.8) * tolerance, 3, tolerance));
+    T mid = 0;
+    const T rb = std::min(p, part.reparametrised_bound4(*q, T(0.8) * tolerance, 3, tolerance, &mid));
     if (rb <= T(0.8) * tolerance) return Try{*q, dir1, rb, true};
+    // c(1/2) farther than the tolerance from q: rejected, that distance the search's error
+    // (the sampled bound would stop at the same sample, its first beyond the ends).
+    if (mid > tolerance) return Try{*q, dir1, mid, false};
     part.second_derivative_hull(hull);
     // The sampled bound, coarse to fine: refined while above half the tolerance (the
     // search below extends a part whose error is under 80% of the tolerance, and aims
