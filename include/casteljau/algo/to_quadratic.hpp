@@ -827,6 +827,8 @@ void approximate_span(const Piece& piece, T s0, T s1, const Point<T, D>& p_start
     Vector<T, D> dir1;
     T error;  // infinite when the tangent lines do not meet ahead
     bool ok;  // within the tolerance
+    T aim = -1;  // when not negative: the search's error (a lower estimate), else `error`
+    T search_error() const { return aim >= 0 ? aim : error; }
   };
   // The quadratic over [t0, t1] and its error bound, or none when the tangent lines do
   // not meet ahead or the bound exceeds the tolerance.
@@ -853,6 +855,13 @@ void approximate_span(const Piece& piece, T s0, T s1, const Point<T, D>& p_start
     T mid = 0;
     const T rb = std::min(p, part.reparametrised_bound4(*q, T(0.8) * tolerance, 3, tolerance, &mid));
     if (rb <= T(0.8) * tolerance) return Try{*q, dir1, rb, true};
+    // Within the tolerance by it: taken, and the search aims from the largest distance of
+    // the samples at 1/4, 1/2, 3/4 (a lower estimate, where the sampled bound's finer
+    // levels would find the error nearer the tolerance than it is: fewer segments).
+    if (rb <= tolerance) {
+      ChainDistance<T, D> dist(*q);
+      return Try{*q, dir1, rb, true, dist.estimate(part, 4, tolerance)};
+    }
     // c(1/2) farther than the tolerance from q: rejected, that distance the search's error
     // (the sampled bound would stop at the same sample, its first beyond the ends).
     if (mid > tolerance) return Try{*q, dir1, mid, false};
@@ -896,10 +905,10 @@ void approximate_span(const Piece& piece, T s0, T s1, const Point<T, D>& p_start
     T x = std::min(s1, t0 + step);
     for (int it = 0; it < 200; ++it) {
       Try r = attempt(x);
-      const T e = r.error;  // the bound, or a lower bound above the tolerance, or infinite
+      const T e = r.search_error();  // the bound (or a lower estimate), or a lower bound above the tolerance, or infinite
       if (r.ok) {
         lo = x;
-        const bool enough = x == s1 || r.error >= T(0.8) * tolerance;
+        const bool enough = x == s1 || e >= T(0.8) * tolerance;
         if (!enough && hi == s1 && hi_tested && !rest_tried && s1 - x <= (x - t0)) {
           // The span's rest failed as one segment, so two is the fewest: when the rest
           // from x fits one, the two are taken.
