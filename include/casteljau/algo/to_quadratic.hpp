@@ -524,24 +524,38 @@ struct Part {
     const T s2 = (T(16) * x - T(4) * s1 - T(4) * s3 - T(1)) / T(6);
     if (!(s1 >= 0 && s1 <= 1 && s2 >= 0 && s2 <= 1 && s3 >= 0 && s3 <= 1)) return std::numeric_limits<T>::infinity();
     const std::array<T, 5> sg{T(0), s1, s2, s3, T(1)};
-    constexpr std::array<T, 4> c3{1, 3, 3, 1};
-    constexpr std::array<T, 5> c4{1, 4, 6, 4, 1};
-    constexpr std::array<T, 6> c5{1, 5, 10, 10, 5, 1};
-    constexpr std::array<T, 9> c8{1, 8, 28, 56, 70, 56, 28, 8, 1};
+    // The products' weights C(4, i) C(4, k - i) / C(8, k) (sigma and sigma^2 raised to
+    // degree 8) and C(3, i) C(5, k - i) / C(8, k) (c raised by 5), once at compile time.
+    struct Weights {
+      std::array<std::array<T, 5>, 9> w44{};
+      std::array<std::array<T, 4>, 9> w35{};
+    };
+    static constexpr Weights W = [] {
+      constexpr std::array<T, 4> c3{1, 3, 3, 1};
+      constexpr std::array<T, 5> c4{1, 4, 6, 4, 1};
+      constexpr std::array<T, 6> c5{1, 5, 10, 10, 5, 1};
+      constexpr std::array<T, 9> c8{1, 8, 28, 56, 70, 56, 28, 8, 1};
+      Weights r;
+      for (std::size_t k = 0; k <= 8; ++k) {
+        for (std::size_t i = 0; i <= 4 && i <= k; ++i)
+          if (k - i <= 4) r.w44[k][i] = c4[i] * c4[k - i] / c8[k];
+        for (std::size_t i = 0; i <= 3 && i <= k; ++i)
+          if (k - i <= 5) r.w35[k][i] = c3[i] * c5[k - i] / c8[k];
+      }
+      return r;
+    }();
+    const std::array<Vector<T, D>, 4> cq{points[0] - Q[0], points[1] - Q[0], points[2] - Q[0], points[3] - Q[0]};
     std::array<Vector<T, D>, 9> f;
-    for (int k = 0; k <= 8; ++k) {
+    for (std::size_t k = 0; k <= 8; ++k) {
       T sig = 0, sig2 = 0;
-      for (int i = std::max(0, k - 4); i <= std::min(4, k); ++i) {
-        const T w = c4[static_cast<std::size_t>(i)] * c4[static_cast<std::size_t>(k - i)] / c8[static_cast<std::size_t>(k)];
-        sig += w * sg[static_cast<std::size_t>(i)];
-        sig2 += w * sg[static_cast<std::size_t>(i)] * sg[static_cast<std::size_t>(k - i)];
+      for (std::size_t i = k > 4 ? k - 4 : 0; i <= std::min<std::size_t>(4, k); ++i) {
+        const T w = W.w44[k][i];
+        sig += w * sg[i];
+        sig2 += w * sg[i] * sg[k - i];
       }
       Vector<T, D> ck{};
-      for (int i = std::max(0, k - 5); i <= std::min(3, k); ++i) {
-        const T w = c3[static_cast<std::size_t>(i)] * c5[static_cast<std::size_t>(k - i)] / c8[static_cast<std::size_t>(k)];
-        ck = ck + w * (points[static_cast<std::size_t>(i)] - Q[0]);
-      }
-      f[static_cast<std::size_t>(k)] = ck - (T(2) * sig) * b - sig2 * a;
+      for (std::size_t i = k > 5 ? k - 5 : 0; i <= std::min<std::size_t>(3, k); ++i) ck = ck + W.w35[k][i] * cq[i];
+      f[k] = ck - (T(2) * sig) * b - sig2 * a;
     }
     return polygon_bound_n(f, limit, levels);
   }
