@@ -866,10 +866,11 @@ void approximate_span(const Piece& piece, T s0, T s1, const Point<T, D>& p_start
     // quadratic; sigma of degree 4): a part under 80% of the tolerance by it is taken (the
     // search extends it anyway); above, the sampled bound, which follows the curves'
     // geometry, not their parameters, and is often lower.
-    // Well within it (70%) by the cheap bound: taken, the search aiming from it (the
-    // reparametrised bound's tighter value would extend the part a few percent further:
-    // 4 more segments on W11's random cubics at 1e-1, one fewer at 1e-3).
-    if (p <= T(0.7) * tolerance) return Try{*q, dir1, p, true};
+    // A part short of the span's end, well within the tolerance (70%) by the cheap bound:
+    // taken, the search aiming from it (the reparametrised bound's tighter value would
+    // extend it a few percent: 4 segments fewer on W11's random cubics at 1e-1, one more at
+    // 1e-3). The last part keeps the tighter bound, which the reported error takes.
+    if (!last && p <= T(0.7) * tolerance) return Try{*q, dir1, p, true};
     T mid = 0;
     const T rb = std::min(p, part.reparametrised_bound4(*q, T(0.8) * tolerance, 3, tolerance, &mid));
     if (rb <= T(0.8) * tolerance) return Try{*q, dir1, rb, true};
