@@ -1063,9 +1063,10 @@ void approximate_piece(const S& s, const Vector<T, D>& start_dir, const Vector<T
 /// polynomial part by the control points of the part minus the quadratic raised to its
 /// degree (Part::elevated_bound, a bound of the parametric distance), the smaller; the
 /// last segment of a span is taken on that cheap bound alone when it is within a tenth
-/// of the tolerance, and a cubic part on Part::reparametrised_bound4 (the parametric
-/// distance after a quartic change of the quadratic's parameter) when that is under 80% of
-/// it. A cubic's cusps are found in closed form (cubic_cusps). Once the rest of a span has failed as one segment, the first end found within the
+/// of the tolerance (another part within 70%), and a cubic part on
+/// Part::reparametrised_bound4 (the parametric distance after a quartic change of the
+/// quadratic's parameter) when that is within the tolerance, or rejected when c(1/2) is
+/// farther than the tolerance from its foot on the quadratic. A cubic's cusps are found in closed form (cubic_cusps). Once the rest of a span has failed as one segment, the first end found within the
 /// tolerance is tried with the rest as a second segment (two is then the fewest). max_error is the largest. Errors: InvalidArgument "tolerance" (not finite and > 0; more than
 /// max_segments segments needed).
 template <class C>
