@@ -980,21 +980,8 @@ std::vector<Stretch<T>> stretches(const Piece& c, T d, T tiny) {
   };
   std::vector<T> grid(M + 1);
   std::vector<T> sp(M + 1);
-  // 1 - d kappa at the interior grid parameters, from the same first derivatives: the
-  // offset's cusps of a stretch spanning the whole piece (the usual case) are sought on
-  // this grid, one evaluation of each derivative per parameter.
-  std::vector<T> g_grid(d != 0 ? M + 1 : 0);
   T top = 0;
-  for (int j = 0; j <= M; ++j) {
-    grid[j] = T(j) / M;
-    const Vector<T, 2> d1 = form.d1(grid[j]);
-    sp[j] = length(d1), top = std::max(top, sp[j]);
-    if (d != 0 && j > 0 && j < M) {
-      const Vector<T, 2> d2 = form.d2(grid[j]);
-      const T s = sp[j];
-      g_grid[j] = 1 - d * cross(d1, d2) / (s * s * s);
-    }
-  }
+  for (int j = 0; j <= M; ++j) grid[j] = T(j) / M, sp[j] = speed(grid[j]), top = std::max(top, sp[j]);
   // A zero of the speed within one grid step of t makes |C'(t)| at most the step times
   // max |C''|, which the second hodograph's control points bound (convex hull): a local
   // minimum of the sampled speed above that is no cusp and is not refined (polynomial
@@ -1030,7 +1017,7 @@ std::vector<Stretch<T>> stretches(const Piece& c, T d, T tiny) {
       std::vector<T> gv(K + 1);
       for (int j = 0; j <= K; ++j) {
         const T t = a + h * T(j) + (j == 0 ? h / 1024 : j == K ? -h / 1024 : T(0));  // off the cusps, where g is undefined
-        gv[j] = j > 0 && j < K && t == grid[j] ? g_grid[j] : g(t);
+        gv[j] = g(t);
       }
       for (int j = 0; j < K; ++j) {
         const T t0 = a + h * T(j), t1 = j + 1 == K ? b : a + h * T(j + 1);
