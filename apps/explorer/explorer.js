@@ -349,6 +349,17 @@ function dragHandle(frame, circle, index, onMove) {
   });
 }
 
+// A view's draggable handles (radius r) at its points: a drag moves the point and redraws.
+function pointHandles(view, frame, svg, r) {
+  view.points.forEach((p, i) => {
+    const h = el("circle", { class: "handle", cx: frame.x(p), cy: frame.y(p), r, "data-index": i, "data-point": JSON.stringify(p) }, svg);
+    dragHandle(frame, h, i, (index, w) => {
+      view.points[index] = w;
+      view.update();
+    });
+  });
+}
+
 // The convex hull of the control points (Andrew's monotone chain): a drawing aid for the
 // convex hull property, not a geometry of the curve.
 function convexHull(points) {
@@ -906,13 +917,7 @@ const interpolation = {
       const e = el("path", { class: "curve", id: "ip-curve-" + a.c.key, d: f.path(a.points), style: "stroke: " + a.c.color + "; stroke-width: 2" }, svg);
       e.dataset.points = JSON.stringify(a.points);
     }
-    this.points.forEach((p, i) => {
-      const h = el("circle", { class: "handle", cx: f.x(p), cy: f.y(p), r: 7, "data-index": i, "data-point": JSON.stringify(p) }, svg);
-      dragHandle(f, h, i, (index, w) => {
-        this.points[index] = w;
-        this.update();
-      });
-    });
+    pointHandles(this, f, svg, 7);
     const dl = document.getElementById("ip-lengths");
     dl.replaceChildren();
     for (const a of answers) {
@@ -986,13 +991,7 @@ const subdivision = {
     const step = el("path", { class: "level", id: "sd-step", stroke: "#d35400", d: f.path(ring(r.now.points)) }, svg);
     step.dataset.points = JSON.stringify(r.now.points);
     for (const p of r.now.points) el("circle", { class: "level-point", cx: f.x(p), cy: f.y(p), r: 2.5, fill: "#d35400" }, svg);
-    this.points.forEach((p, i) => {
-      const h = el("circle", { class: "handle", cx: f.x(p), cy: f.y(p), r: 9, "data-index": i, "data-point": JSON.stringify(p) }, svg);
-      dragHandle(f, h, i, (index, w) => {
-        this.points[index] = w;
-        this.update();
-      });
-    });
+    pointHandles(this, f, svg, 9);
     document.getElementById("sd-steps-out").textContent = String(r.k);
     document.getElementById("sd-tension-out").textContent = Number(document.getElementById("sd-tension").value).toFixed(4);
     document.getElementById("sd-count").textContent = String(r.now.points.length);
@@ -1492,13 +1491,7 @@ const catmull = {
       for (const x of a.self.intersections) el("circle", { cx: f.x(x.point), cy: f.y(x.point), r: 7, fill: "none", stroke: a.c.color, "stroke-width": 2.5 }, marks);
       for (const p of a.cusps) el("path", { d: "M" + (f.x(p) - 6) + " " + (f.y(p) - 6) + "l12 12m0 -12l-12 12", stroke: a.c.color, "stroke-width": 2.5 }, marks);
     }
-    this.points.forEach((p, i) => {
-      const h = el("circle", { class: "handle", cx: f.x(p), cy: f.y(p), r: 8, "data-index": i, "data-point": JSON.stringify(p) }, svg);
-      dragHandle(f, h, i, (index, w) => {
-        this.points[index] = w;
-        this.update();
-      });
-    });
+    pointHandles(this, f, svg, 8);
     const dl = document.getElementById("cr-numbers");
     dl.replaceChildren();
     for (const a of answers) {
@@ -1732,13 +1725,7 @@ const affine = {
       if (i % 8 === 0) el("circle", { class: "level-point", cx: f.x(q), cy: f.y(q), r: 3.5, fill: "#d35400" }, svg);
     });
     r.mapped.forEach((p, i) => el("rect", { class: "dependent", x: f.x(p) - 5, y: f.y(p) - 5, width: 10, height: 10, "data-mapped": i, "data-point": JSON.stringify(p) }, svg));
-    this.points.forEach((p, i) => {
-      const h = el("circle", { class: "handle", cx: f.x(p), cy: f.y(p), r: 8, "data-index": i, "data-point": JSON.stringify(p) }, svg);
-      dragHandle(f, h, i, (index, w) => {
-        this.points[index] = w;
-        this.update();
-      });
-    });
+    pointHandles(this, f, svg, 8);
     const M = r.A.M;
     document.getElementById("af-matrix").textContent = "[[" + fmt(M[0][0]) + ", " + fmt(M[0][1]) + "], [" + fmt(M[1][0]) + ", " + fmt(M[1][1]) + "]] + " + fmtPoint(r.A.b);
     document.getElementById("af-error").textContent = err.toExponential(1);
@@ -1784,13 +1771,7 @@ const reduce = {
     c.dataset.points = JSON.stringify(r.samples.points);
     const low = el("path", { class: "curve", id: "rd-reduced", d: f.path(r.low.points), style: "stroke: #e67e22" }, svg);
     low.dataset.points = JSON.stringify(r.low.points);
-    this.points.forEach((p, i) => {
-      const h = el("circle", { class: "handle", cx: f.x(p), cy: f.y(p), r: 8, "data-index": i, "data-point": JSON.stringify(p) }, svg);
-      dragHandle(f, h, i, (index, w) => {
-        this.points[index] = w;
-        this.update();
-      });
-    });
+    pointHandles(this, f, svg, 8);
     document.getElementById("rd-from").textContent = r.n + " → " + r.m;
     document.getElementById("rd-error").textContent = fmt(r.reduced.max_error);
   },
@@ -1924,13 +1905,7 @@ const fitting = {
     const c = el("path", { class: "curve", id: "ft-curve", d: f.path(r.samples.points) }, svg);
     c.dataset.points = JSON.stringify(r.samples.points);
     c.dataset.curve = JSON.stringify(r.fit.curve);
-    this.points.forEach((p, i) => {
-      const h = el("circle", { class: "handle", cx: f.x(p), cy: f.y(p), r: 6, "data-index": i, "data-point": JSON.stringify(p) }, svg);
-      dragHandle(f, h, i, (index, w) => {
-        this.points[index] = w;
-        this.update();
-      });
-    });
+    pointHandles(this, f, svg, 6);
     const n = r.request.control_points;
     document.getElementById("ft-count-out").textContent = String(n);
     document.getElementById("ft-kind").textContent = (n === this.points.length ? "interpolation" : "least squares") + ", degree " + r.request.degree + ", " + n + " control points, " + this.points.length + " data points";
