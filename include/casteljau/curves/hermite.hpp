@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 #include <span>
 #include <string>
@@ -11,6 +12,7 @@
 #include <vector>
 
 #include "casteljau/basis/hermite_basis.hpp"
+#include "casteljau/curves/hermite_kernels.hpp"
 #include "casteljau/curves/piecewise.hpp"
 
 namespace casteljau {
@@ -115,8 +117,12 @@ class Hermite {
   /// no mispredicted branch stalls a step [KhuongMorin17]; on 10^6 params this takes
   /// one wait for memory instead of one for each of the last 6 to 10 halvings. NaN gives 0.
   [[nodiscard]] std::size_t segment_index(T u) const {
-    const Block b = coarse_block(u);
-    return b.start + count_at_most(u_.data() + b.start + 1, b.len, u);
+    if constexpr (detail::hermite_compiled<T, D>) {
+      return detail::hermite_segment_index(arrays(), u);
+    } else {
+      const Block b = coarse_block(u);
+      return b.start + count_at_most(u_.data() + b.start + 1, b.len, u);
+    }
   }
 
   /// C(u) for any finite u: the Hermite form of the piece (exact at the params: h00, h01
@@ -126,7 +132,15 @@ class Hermite {
   /// value that overflows. Cost O(log n).
   [[nodiscard]] PointType operator()(T u) const {
     if (!std::isfinite(u)) require_finite(u, "t");  // the call (and its string) only to throw
-    return point_on(segment_index(u), u);
+    if constexpr (detail::hermite_compiled<T, D>) {  // the search and the point in one call
+      PointType p;
+      std::size_t i = 0;
+      if (!detail::hermite_point(arrays(), u, reinterpret_cast<double*>(&p), &i)) [[unlikely]]
+        repair(u_.data(), P_.data(), out_.data(), in_.empty() ? out_.data() : in_.data(), &i, &u, &p, 1);
+      return p;
+    } else {
+      return point_on(segment_index(u), u);
+    }
   }
 
   /// The k-th derivative (k >= 0) with respect to u: the point for k = 0, zero for k > 3;
@@ -235,8 +249,9 @@ class Hermite {
   /// needs for all 16 before using any: the coarse search (cache-resident) and a prefetch
   /// of the block, the search in the block and a prefetch of the piece, the Hermite form.
   /// So the misses of 16 queries overlap instead of queuing (software pipelining of
-  /// independent searches, the batch form of [KhuongMorin17]'s prefetching). Throws as
-  /// operator(); out's content is unspecified after a throw.
+  /// independent searches, the batch form of [KhuongMorin17]'s prefetching; compiled in
+  /// src/hermite for double at dimensions 1..4, the other scalars search one query at a
+  /// time). Throws as operator(); out's content is unspecified after a throw.
   void evaluate(std::span<const T> u, std::span<PointType> out) const {
     check_out_size(u.size(), out.size());
     constexpr std::size_t group = 16;
@@ -244,23 +259,16 @@ class Hermite {
     const PointType* const P = P_.data();
     const VectorType* const mo = out_.data();
     const VectorType* const mi = in_.empty() ? mo : in_.data();
-    Block blocks[group];
     std::size_t piece[group];
     for (std::size_t k0 = 0; k0 < u.size(); k0 += group) {
       const std::size_t g = std::min(group, u.size() - k0);
       const T* const x = u.data() + k0;
-      for (std::size_t j = 0; j < g; ++j) {
+      for (std::size_t j = 0; j < g; ++j)
         if (!std::isfinite(x[j])) require_finite(x[j], "t");  // the call (and its string) only to throw
-        blocks[j] = coarse_block(x[j]);  // prefetches the block
-      }
-      for (std::size_t j = 0; j < g; ++j) {
-        const std::size_t i = blocks[j].start + count_at_most(uu + blocks[j].start + 1, blocks[j].len, x[j]);
-        piece[j] = i;
-        __builtin_prefetch(uu + i + 1);
-        __builtin_prefetch(P + i);
-        __builtin_prefetch(P + i + 1);
-        __builtin_prefetch(mo + i);
-        __builtin_prefetch(mi + i + 1);
+      if constexpr (detail::hermite_compiled<T, D>) {
+        detail::hermite_locate(arrays(), x, g, piece);
+      } else {
+        for (std::size_t j = 0; j < g; ++j) piece[j] = segment_index(x[j]);
       }
       if (!points_of(uu, P, mo, mi, piece, x, out.data() + k0, g)) [[unlikely]]
         repair(uu, P, mo, mi, piece, x, out.data() + k0, g);
@@ -351,66 +359,43 @@ class Hermite {
   /// The points at u[0..count) of the pieces piece[0..count) into out, from raw arrays
   /// (params, points, outgoing and incoming tangents); returns whether all are finite.
   /// The one kernel of operator() (count 1), evaluate and evaluate_sorted, so that they
-  /// agree bit for bit whatever the compiler contracts into fused multiply-adds. With
-  /// GCC and Clang it takes the queries four at a time in vector extensions (lanes past
-  /// count repeat the last query): the four Hermite forms cost about one, where the
-  /// compiler's own vectorisation would gather (slow, and per-call-site roundings).
-  /// Not inlined: one compiled body, hence one rounding, for every caller.
-  [[gnu::noinline]] static bool points_of(const T* uu, const PointType* P, const VectorType* mo, const VectorType* mi,
-                                          const std::size_t* piece, const T* u, PointType* out, std::size_t count) {
-#if defined(__GNUC__)
-    if constexpr (std::is_same_v<T, double> || std::is_same_v<T, float>) {  // the types vector extensions take
-      typedef T Lanes __attribute__((vector_size(4 * sizeof(T))));
-      using Mask = decltype(Lanes{} <= Lanes{});
-      Mask bad{};
-      for (std::size_t k = 0; k < count; k += 4) {
-        std::size_t i[4];
-        T x[4];
-        for (std::size_t l = 0; l < 4; ++l) {
-          const std::size_t q = k + l < count ? k + l : count - 1;
-          i[l] = piece[q];
-          x[l] = u[q];
-        }
-        const Lanes a = {uu[i[0]], uu[i[1]], uu[i[2]], uu[i[3]]};
-        const Lanes b = {uu[i[0] + 1], uu[i[1] + 1], uu[i[2] + 1], uu[i[3] + 1]};
-        const Lanes h = b - a;
-        const Lanes t = (Lanes{x[0], x[1], x[2], x[3]} - a) / h;  // exactly 1 at u = u_(i+1): the same rounded h
-        // hermite_basis(t, 0), lane by lane (the same expressions).
-        const Lanes s = 1 - t;
-        const Lanes h00 = s * s * (1 + 2 * t), h10 = t * s * s, h01 = t * t * (3 - 2 * t), h11 = t * t * (t - 1);
-        // About the nearer end: selections, not branches (t <= 1/2 is unpredictable).
-        const Mask left = t <= T(0.5);
-        const Lanes weight = left ? h01 : h00;  // of the far point
-        for (int d = 0; d < D; ++d) {
-          const Lanes p0 = {P[i[0]][d], P[i[1]][d], P[i[2]][d], P[i[3]][d]};
-          const Lanes p1 = {P[i[0] + 1][d], P[i[1] + 1][d], P[i[2] + 1][d], P[i[3] + 1][d]};
-          const Lanes m0 = {mo[i[0]][d], mo[i[1]][d], mo[i[2]][d], mo[i[3]][d]};
-          const Lanes m1 = {mi[i[0] + 1][d], mi[i[1] + 1][d], mi[i[2] + 1][d], mi[i[3] + 1][d]};
-          const Lanes tangent_part = h * (h10 * m0 + h11 * m1);
-          const Lanes near = left ? p0 : p1, far = left ? p1 : p0;
-          const Lanes v = near + (weight * (far - near) + tangent_part);
-          bad |= (v - v) != 0;  // inf - inf and NaN - NaN are NaN
-          for (std::size_t l = 0; l < 4 && k + l < count; ++l) out[k + l][d] = v[l];
-        }
-      }
-      bool ok = true;
-      for (std::size_t l = 0; l < 4; ++l) ok &= bad[l] == 0;
-      return ok;
-    } else
-#endif
-    {
-      bool ok = true;
-      for (std::size_t k = 0; k < count; ++k) {
-        out[k] = point_of(uu, P, mo, mi, piece[k], u[k]);
-        ok &= detail::all_coordinates_finite(out[k]);
-      }
-      return ok;
+  /// agree bit for bit whatever the compiler contracts into fused multiply-adds. For
+  /// double at dimensions 1..4 it is compiled in src/hermite (four queries per vector, the
+  /// instruction set chosen at run time); otherwise point_of per query, not inlined: one
+  /// compiled body, hence one rounding, for every caller.
+  static bool points_of(const T* uu, const PointType* P, const VectorType* mo, const VectorType* mi, const std::size_t* piece, const T* u,
+                        PointType* out, std::size_t count) {
+    if constexpr (detail::hermite_compiled<T, D>) {
+      const detail::HermiteArrays c{uu, 0, nullptr, 0, coordinates(P), coordinates(mo), coordinates(mi), D};
+      return detail::hermite_points(c, piece, u, reinterpret_cast<double*>(out), count);
+    } else {
+      return points_of_portable(uu, P, mo, mi, piece, u, out, count);
     }
   }
+  [[gnu::noinline]] static bool points_of_portable(const T* uu, const PointType* P, const VectorType* mo, const VectorType* mi,
+                                                   const std::size_t* piece, const T* u, PointType* out, std::size_t count) {
+    bool ok = true;
+    for (std::size_t k = 0; k < count; ++k) {
+      out[k] = point_of(uu, P, mo, mi, piece[k], u[k]);
+      ok &= detail::all_coordinates_finite(out[k]);
+    }
+    return ok;
+  }
 
-  /// The point at u of piece i, one query at a time: points_of's kernel for compilers
-  /// without vector extensions and for scalars other than float and double (the same
-  /// expressions).
+  /// The coordinates of an array of points or vectors as plain doubles (D per entry).
+  template <class V>
+  static const double* coordinates(const V* v) {
+    static_assert(sizeof(V) == D * sizeof(double) && std::is_standard_layout_v<V>);
+    return reinterpret_cast<const double*>(v);
+  }
+  /// The curve's arrays for the compiled kernels (double only).
+  detail::HermiteArrays arrays() const {
+    const VectorType* mi = in_.empty() ? out_.data() : in_.data();
+    return {u_.data(), u_.size(), coarse_.data(), coarse_.size(), coordinates(P_.data()), coordinates(out_.data()), coordinates(mi), D};
+  }
+
+  /// The point at u of piece i, one query at a time: points_of's kernel for the scalars and
+  /// dimensions that src/hermite does not compile (its lanes take the same expressions).
   static PointType point_of(const T* uu, const PointType* P, const VectorType* mo, const VectorType* mi, std::size_t i, T u) {
     const T h = uu[i + 1] - uu[i];
     const T t = (u - uu[i]) / h;  // exactly 1 at u = u_(i+1): the same rounded h
@@ -445,11 +430,12 @@ class Hermite {
     throw InvalidArgument("t", std::string(what) + " at t = " + detail::format_number(u) + " overflows a double");
   }
 
-  static constexpr std::size_t stride = 64;  ///< params per entry of coarse_
+  static constexpr std::size_t stride = detail::hermite_stride;  ///< params per entry of coarse_
 
   /// The answer of segment_index(u) lies in [start, start + len]: start + the number of
-  /// u_(start+1..start+len) that are <= u. Found in coarse_ (which stays in the cache); the
-  /// block's cache lines are requested at once, so that its search waits for memory once.
+  /// u_(start+1..start+len) that are <= u. Found in coarse_ (which stays in the cache).
+  /// The portable search of the scalars src/hermite does not compile; the compiled one
+  /// also prefetches the block's cache lines, so that its search waits for memory once.
   struct Block {
     std::size_t start, len;
   };
@@ -458,22 +444,18 @@ class Hermite {
     if (m == 0) return {0, 0};  // before u_0
     const std::size_t start = stride * (m - 1);  // u_start <= u (< u_(start + 64) if sampled)
     const std::size_t stop = std::min(start + stride, u_.size() - 1);  // interior params below stop
-    const std::size_t len = stop - start - 1;
-    const T* block = u_.data() + start + 1;
-    for (std::size_t k = 0; k < len; k += 64 / sizeof(T)) __builtin_prefetch(block + k);
-    return {start, len};
+    return {start, stop - start - 1};
   }
 
   /// The number of first[0..len) that are <= x (first sorted): a branch-free binary search
-  /// keeping [base, base + len] around the answer, the two possible next probes prefetched.
+  /// keeping [base, base + len] around the answer (src/hermite's also prefetches the two
+  /// possible next probes).
   static std::size_t count_at_most(const T* first, std::size_t len, T x) {
     if (len == 0) return 0;
     const T* base = first;
     while (len > 1) {
       const std::size_t half = len / 2;
       len -= half;
-      __builtin_prefetch(base + len / 2);
-      __builtin_prefetch(base + half + len / 2);
       base = base[half] <= x ? base + half : base;
     }
     return static_cast<std::size_t>(base - first) + (*base <= x ? 1 : 0);
