@@ -578,10 +578,17 @@ bool intersect_arcs(const Prepared<T>& A, std::size_t ia, const Prepared<T>& B, 
   // end, where the curves part slowly (a conic leaving its control polygon's leg as t^2 /
   // W). A seed near it may refine to a point of the near region beyond the distance (the
   // leg first: 1.1e-10 from the conic [1, 1e3, 1] near its end (0, 1)) and lose the touch.
-  for (const T s : {ra.lo, ra.hi}) {
-    for (const T t : {rb.lo, rb.hi}) {
-      const T d = distance(at(a, s), at(b, t));
-      if (!(d <= ctx.tol) || !(std::abs(cross(direction(a, s), direction(b, t))) <= T(1e-6))) continue;
+  // The arcs' ends are their parts' end control points (no evaluation: the general
+  // engine's cost per pair of arcs stays).
+  const auto& Pa = points(A.arc_parts[ia]);
+  const auto& Pb = points(B.arc_parts[ib]);
+  for (const bool ea : {false, true}) {
+    for (const bool eb : {false, true}) {
+      const Vector<T, 2> v = (ea ? Pa.back() : Pa.front()) - (eb ? Pb.back() : Pb.front());
+      if (!(dot(v, v) <= ctx.tol * ctx.tol)) continue;
+      const T d = norm(v);
+      const T s = ea ? ra.hi : ra.lo, t = eb ? rb.hi : rb.lo;
+      if (!(std::abs(cross(direction(a, s), direction(b, t))) <= T(1e-6))) continue;
       clean = false;
       bool dup = false;
       for (auto it = done.lower_bound(s - T(1e-12)); !dup && it != done.end() && it->first <= s + T(1e-12); ++it)
