@@ -1519,7 +1519,7 @@ std::vector<CurveIntersection<T>> absorb_touches(const Prepared<T>& A, const Pre
 /// points (in ta) between which the curves stay within tol (at 15 points between them,
 /// as admit_edges) are one near region and become one point: the middle one of its
 /// crossings common to rounding (within 1e-3 tol), else (the curves do not cross there: a
-/// touch) a point where both curves end if it has one, else its closest point (before
+/// touch) a point where both curves end and meet if it has one, else its closest point (before
 /// session 15: its closest crossing, which took points within tol at an angle, 1e-12 to
 /// 6e-11 from a leg, for crossings of the conic and its polygon). On the tame parts of a
 /// curve hugging its control polygon the engine sees one near region from several
@@ -1532,9 +1532,11 @@ std::vector<CurveIntersection<T>> merge_regions(const Prepared<T>& A, const Prep
   const Pieces<T, 2>& ca = *A.curve;
   const Pieces<T, 2>& cb = *B.curve;
   auto separation = [&](const CurveIntersection<T>& x) { return distance(unit_at(ca, A, x.ta), unit_at(cb, B, x.tb)); };
-  // A point where both curves end: their end control points, common exactly.
+  // A point where both curves end, met to rounding (within 1e-3 tol): where the curves
+  // meet, not merely come near.
   auto at_ends = [&](const CurveIntersection<T>& x) {
-    return !lp.a.closed && !lp.b.closed && (x.ta == lp.a.dom.lo || x.ta == lp.a.dom.hi) && (x.tb == lp.b.dom.lo || x.tb == lp.b.dom.hi);
+    return !lp.a.closed && !lp.b.closed && (x.ta == lp.a.dom.lo || x.ta == lp.a.dom.hi) &&
+           (x.tb == lp.b.dom.lo || x.tb == lp.b.dom.hi) && separation(x) <= T(1e-3) * tol;
   };
   std::vector<CurveIntersection<T>> out;
   for (std::size_t i = 0; i < points.size();) {
@@ -1542,9 +1544,10 @@ std::vector<CurveIntersection<T>> merge_regions(const Prepared<T>& A, const Prep
     while (j < points.size() && same_near_region(A, B, lp, points[j - 1], points[j], tol)) ++j;
     // The crossings common to rounding (within 1e-3 tol, as PointMerge::exact): the middle
     // one. Without one the curves do not cross in the region (a point within tol at an
-    // angle is no crossing), which is a touch: at a point where both curves end if the
-    // region holds one (the conic [1, w, 1] along its control polygon's leg from their
-    // common end, within 1e-17 of it over parts near the end), else its closest point.
+    // angle is no crossing), which is a touch: at a point where both curves end and meet
+    // if the region holds one (the conic [1, w, 1] along its control polygon's leg from
+    // their common end, within 1e-17 of it over parts near the end: the closest approach
+    // to rounding, and the end exactly), else at its closest point.
     std::vector<std::size_t> exact;
     for (std::size_t k = i; k < j; ++k)
       if (points[k].kind == IntersectionKind::crossing && separation(points[k]) <= T(1e-3) * tol) exact.push_back(k);
