@@ -574,6 +574,30 @@ bool intersect_arcs(const Prepared<T>& A, std::size_t ia, const Prepared<T>& B, 
     hits.push_back({A.curve->lift(ra.piece, r.s), B.curve->lift(rb.piece, r.t), ra.piece, rb.piece, r.s,
                     r.t, r.distance, false, edge});
   }
+  // Arc ends common to both arcs (within tol) where the arcs are tangent: a touch at the
+  // end, where the curves part slowly (a conic leaving its control polygon's leg as t^2 /
+  // W). A seed near it may refine to a point of the near region beyond the distance (the
+  // leg first: 1.1e-10 from the conic [1, 1e3, 1] near its end (0, 1)) and lose the touch.
+  // The arcs' ends are their parts' end control points (no evaluation: the general
+  // engine's cost per pair of arcs stays).
+  const auto& Pa = points(A.arc_parts[ia]);
+  const auto& Pb = points(B.arc_parts[ib]);
+  for (const bool ea : {false, true}) {
+    for (const bool eb : {false, true}) {
+      const Vector<T, 2> v = (ea ? Pa.back() : Pa.front()) - (eb ? Pb.back() : Pb.front());
+      if (!(dot(v, v) <= ctx.tol * ctx.tol)) continue;
+      const T d = norm(v);
+      const T s = ea ? ra.hi : ra.lo, t = eb ? rb.hi : rb.lo;
+      if (!(std::abs(cross(direction(a, s), direction(b, t))) <= T(1e-6))) continue;
+      clean = false;
+      bool dup = false;
+      for (auto it = done.lower_bound(s - T(1e-12)); !dup && it != done.end() && it->first <= s + T(1e-12); ++it)
+        dup = std::abs(it->second - t) <= T(1e-12);
+      if (dup) continue;
+      done.emplace(s, t);
+      hits.push_back({A.curve->lift(ra.piece, s), B.curve->lift(rb.piece, t), ra.piece, rb.piece, s, t, d, false, false});
+    }
+  }
   return clean && !ctx.near;
 }
 
@@ -987,7 +1011,7 @@ void bridge_overlaps(const Prepared<T>& A, const Prepared<T>& B, std::vector<Raw
 /// to hits; the confirmed overlaps are returned in order.
 template <class T>
 std::vector<CurveOverlap<T>> confirm_overlaps(const Prepared<T>& A, const Prepared<T>& B, std::vector<RawOverlap<T>>& candidates,
-                                              Context<T>& ctx, std::vector<Hit<T>>& hits) {
+                                              Context<T>& ctx, std::vector<Hit<T>>& hits, const TameJoints<T>* tame = nullptr) {
   const Pieces<T, 2>& ca = *A.curve;
   const Pieces<T, 2>& cb = *B.curve;
   const T tol = ctx.tol;
@@ -1002,10 +1026,27 @@ std::vector<CurveOverlap<T>> confirm_overlaps(const Prepared<T>& A, const Prepar
       if (c.lift(r.piece, r.lo) >= lo - m && c.lift(r.piece, r.hi) <= hi + m) return true;
     return false;
   };
+  // Whether t is an arc end of c that is no joint of its tame parts (`joints`).
+  auto arc_end = [](const Pieces<T, 2>& c, const Prepared<T>& P, const std::vector<T>& joints, T t) {
+    const T m = T(1e-9) * c.domain().length();
+    for (T j : joints)
+      if (std::abs(t - j) <= m) return false;
+    for (const auto& r : P.arcs)
+      if (std::abs(c.lift(r.piece, r.lo) - t) <= m || std::abs(c.lift(r.piece, r.hi) - t) <= m) return true;
+    return false;
+  };
   std::vector<CurveOverlap<T>> joined;
   for (auto& [o, found, deferred] : candidates) {
     bool continues = near_beyond(ca, A, cb, B, o.a.lo, o.b_start, -(o.a.hi - o.a.lo), o.b_start - o.b_end, tol) ||
                      near_beyond(ca, A, cb, B, o.a.hi, o.b_end, o.a.hi - o.a.lo, o.b_end - o.b_start, tol);
+    // On tame parts (solve_extreme) each end must be an arc end of a curve as given: a
+    // part is a whole arc of the tamed curve, not of the curve (the conic [1, 2e6, 1]'s
+    // first part, t in [0, 5e-4], lies within the distance of its polygon's leg; the curves
+    // part there, but no whole arc of either is within it: a touch at their common end).
+    if (!continues && tame) {
+      continues = !((arc_end(ca, A, tame->a, o.a.lo) || arc_end(cb, B, tame->b, o.b_start)) &&
+                    (arc_end(ca, A, tame->a, o.a.hi) || arc_end(cb, B, tame->b, o.b_end)));
+    }
     if (!continues && !covers_arc(ca, A, o.a.lo, o.a.hi) && !covers_arc(cb, B, std::min(o.b_start, o.b_end), std::max(o.b_start, o.b_end))) {
       const T g0 = signed_gap(o.a.lo, o.b_start), g1 = signed_gap(o.a.hi, o.b_end);
       continues = (g0 > 0) != (g1 > 0) && std::min(std::abs(g0), std::abs(g1)) > tol / 8;
@@ -1412,11 +1453,75 @@ std::vector<CurveIntersection<T>> once_at_closing_point(const Pieces<T, 2>& ca, 
   return once;
 }
 
-/// Phase 9 (curves taken through their tame parts only, see solve_extreme): consecutive
+/// Whether consecutive points x and y (in ta) are of one near region: one curve at 15
+/// points between them (ta and tb interpolated, round the closing point of a closed curve)
+/// within tol of the other, a of b or b of a (the foot of a point on a curve parametrised
+/// very unevenly, the conic [1, 1e6, 1] seen from its polygon, is not always reached from
+/// the interpolated parameter; the polygon from the conic's points is).
+template <class T>
+bool same_near_region(const Prepared<T>& A, const Prepared<T>& B, const Loops<T>& lp, const CurveIntersection<T>& x,
+                      const CurveIntersection<T>& y, T tol) {
+  const T da = lp.a.shortest(y.ta - x.ta), db = lp.b.shortest(y.tb - x.tb);
+  auto near = [&](bool a_of_b) {
+    for (int j = 1; j < 16; ++j) {
+      const T f = static_cast<T>(j) / 16;
+      const T ta = lp.a.wrap(x.ta + f * da), tb = lp.b.wrap(x.tb + f * db);
+      const T d = a_of_b ? distance_near(*B.curve, B, unit_at(*A.curve, A, ta), tb) : distance_near(*A.curve, A, unit_at(*B.curve, B, tb), ta);
+      if (!(d <= tol)) return false;
+    }
+    return true;
+  };
+  return near(true) || near(false);
+}
+
+/// Phase 9 (general engine): loose touches merged into their near region. Refinement may
+/// stop inside a near region, at a point within tol that is neither a meeting to rounding
+/// nor the closest approach, and PointMerge merges only points within 1e3 merge_fraction of
+/// their pieces: where the curves part slowly (the conic [1, 5e4, 1] within the distance of
+/// its control polygon's leg from t = 0 to 2e-5, leg parameters 0 to 0.68) such points were
+/// listed as touches of their own (2.5e-11 and 4.6e-11 from the leg, the touch being at the
+/// common end). A loose point is a `tangent` one farther apart than 1e-3 tol (a meeting to
+/// rounding is within it: PointMerge::exact). Consecutive points (in ta) of one near region
+/// (same_near_region) of which one is loose are one region: its points that are not loose
+/// stand for it (as before), or, without one, its closest loose point. Points in order of ta.
+template <class T>
+std::vector<CurveIntersection<T>> absorb_touches(const Prepared<T>& A, const Prepared<T>& B, const Loops<T>& lp,
+                                                 const std::vector<CurveIntersection<T>>& points, T tol) {
+  auto separation = [&](const CurveIntersection<T>& x) { return distance(unit_at(*A.curve, A, x.ta), unit_at(*B.curve, B, x.tb)); };
+  std::vector<char> loose(points.size());
+  bool any = false;
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    loose[k] = points[k].kind == IntersectionKind::tangent && separation(points[k]) > T(1e-3) * tol;
+    any = any || loose[k];
+  }
+  if (points.size() < 2 || !any) return points;
+  std::vector<CurveIntersection<T>> out;
+  for (std::size_t i = 0; i < points.size();) {
+    std::size_t j = i + 1;
+    while (j < points.size() && (loose[j - 1] || loose[j]) && same_near_region(A, B, lp, points[j - 1], points[j], tol)) ++j;
+    std::optional<std::size_t> pick;
+    bool firm = false;
+    for (std::size_t k = i; k < j; ++k) {
+      if (!loose[k]) {
+        firm = true;
+        out.push_back(points[k]);
+      } else if (!pick || separation(points[k]) < separation(points[*pick])) {
+        pick = k;
+      }
+    }
+    if (!firm) out.push_back(points[*pick]);
+    i = j;
+  }
+  return out;
+}
+
+/// Phase 10 (curves taken through their tame parts only, see solve_extreme): consecutive
 /// points (in ta) between which the curves stay within tol (at 15 points between them,
 /// as admit_edges) are one near region and become one point: the middle one of its
-/// crossings common to rounding (within 1e-3 tol), else its closest crossing, else its
-/// closest point. On the tame parts of a
+/// crossings common to rounding (within 1e-3 tol), else (the curves do not cross there: a
+/// touch) a point where both curves end and meet if it has one, else its closest point (before
+/// session 15: its closest crossing, which took points within tol at an angle, 1e-12 to
+/// 6e-11 from a leg, for crossings of the conic and its polygon). On the tame parts of a
 /// curve hugging its control polygon the engine sees one near region from several
 /// pieces, whose parameters (one unit per part) are far apart where the points are not:
 /// a line through the corner meets the chord of the parts within 1e-30 of it and the
@@ -1427,35 +1532,33 @@ std::vector<CurveIntersection<T>> merge_regions(const Prepared<T>& A, const Prep
   const Pieces<T, 2>& ca = *A.curve;
   const Pieces<T, 2>& cb = *B.curve;
   auto separation = [&](const CurveIntersection<T>& x) { return distance(unit_at(ca, A, x.ta), unit_at(cb, B, x.tb)); };
-  auto one_region = [&](const CurveIntersection<T>& x, const CurveIntersection<T>& y) {
-    const T da = lp.a.shortest(y.ta - x.ta), db = lp.b.shortest(y.tb - x.tb);
-    for (int j = 1; j < 16; ++j) {
-      const T f = static_cast<T>(j) / 16;
-      if (!(distance_near(cb, B, unit_at(ca, A, lp.a.wrap(x.ta + f * da)), lp.b.wrap(x.tb + f * db)) <= tol)) return false;
-    }
-    return true;
+  // A point where both curves end, met to rounding (within 1e-3 tol): where the curves
+  // meet, not merely come near.
+  auto at_ends = [&](const CurveIntersection<T>& x) {
+    return !lp.a.closed && !lp.b.closed && (x.ta == lp.a.dom.lo || x.ta == lp.a.dom.hi) &&
+           (x.tb == lp.b.dom.lo || x.tb == lp.b.dom.hi) && separation(x) <= T(1e-3) * tol;
   };
   std::vector<CurveIntersection<T>> out;
   for (std::size_t i = 0; i < points.size();) {
     std::size_t j = i + 1;
-    while (j < points.size() && one_region(points[j - 1], points[j])) ++j;
-    // The crossings common to rounding (within 1e-3 tol, as PointMerge::exact), else
-    // the crossings, else every point; the middle one of the first, the closest otherwise.
-    std::vector<std::size_t> exact, crossings;
-    for (std::size_t k = i; k < j; ++k) {
-      if (points[k].kind != IntersectionKind::crossing) continue;
-      crossings.push_back(k);
-      if (separation(points[k]) <= T(1e-3) * tol) exact.push_back(k);
-    }
+    while (j < points.size() && same_near_region(A, B, lp, points[j - 1], points[j], tol)) ++j;
+    // The crossings common to rounding (within 1e-3 tol, as PointMerge::exact): the middle
+    // one. Without one the curves do not cross in the region (a point within tol at an
+    // angle is no crossing), which is a touch: at a point where both curves end and meet
+    // if the region holds one (the conic [1, w, 1] along its control polygon's leg from
+    // their common end, within 1e-17 of it over parts near the end: the closest approach
+    // to rounding, and the end exactly), else at its closest point.
+    std::vector<std::size_t> exact;
+    for (std::size_t k = i; k < j; ++k)
+      if (points[k].kind == IntersectionKind::crossing && separation(points[k]) <= T(1e-3) * tol) exact.push_back(k);
     std::size_t pick = i;
     if (!exact.empty()) {
       pick = exact[(exact.size() - 1) / 2];
     } else {
-      if (crossings.empty())
-        for (std::size_t k = i; k < j; ++k) crossings.push_back(k);
-      pick = crossings.front();
-      for (std::size_t k : crossings)
-        if (separation(points[k]) < separation(points[pick])) pick = k;
+      for (std::size_t k = i; k < j; ++k) {
+        if (at_ends(points[pick])) break;
+        if (at_ends(points[k]) || separation(points[k]) < separation(points[pick])) pick = k;
+      }
     }
     out.push_back(points[pick]);
     i = j;
@@ -1464,11 +1567,12 @@ std::vector<CurveIntersection<T>> merge_regions(const Prepared<T>& A, const Prep
 }
 
 /// The common points and overlaps of curves a and b (b = nullptr: the self-intersections
-/// of a): the phases above in turn (see intersect()). `tame`: the curves are tame parts
-/// (solve_extreme), and the points of one near region seen from several parts are merged
-/// (merge_regions).
+/// of a): the phases above in turn (see intersect()). `tame` (not null): the curves are
+/// tame parts (solve_extreme), overlaps end at arc ends of the curves before taming
+/// (confirm_overlaps), and the points of one near region seen from several parts are
+/// merged (merge_regions); else touches of one near region are (absorb_touches).
 template <class T>
-Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb, bool tame = false) {
+Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb, const TameJoints<T>* tame = nullptr) {
   const bool self = cb == nullptr;
   if (self) cb = &ca;
   const SharedFrame<T> frame = shared_frame(ca, *cb);
@@ -1480,14 +1584,14 @@ Intersections<T> solve(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb, bool tame
   ArcPairs<T> pairs = meet_arcs(A, PB, self, ctx);
   std::vector<RawOverlap<T>> candidates = join_overlaps(std::move(pairs.overlaps), ca.domain().length(), cb->domain().length());
   if (tame) bridge_overlaps(A, PB, candidates, tol);
-  std::vector<CurveOverlap<T>> overlaps = confirm_overlaps(A, PB, candidates, ctx, pairs.hits);
+  std::vector<CurveOverlap<T>> overlaps = confirm_overlaps(A, PB, candidates, ctx, pairs.hits, tame);
   const Loops<T> lp = loops(A, PB, tol);
   MergedPoints<T> merged = merge_points(A, PB, self, std::move(pairs.hits), overlaps, lp, tol);
   admit_edges(A, PB, lp, merged.kept, std::move(merged.edges), tol);
   Intersections<T> out;
   out.points = classify(A, PB, merged.kept, tol);
   if (self && lp.a.closed) out.points = once_at_closing_point(ca, out.points);
-  if (tame) out.points = merge_regions(A, PB, lp, out.points, tol);
+  out.points = tame ? merge_regions(A, PB, lp, out.points, tol) : absorb_touches(A, PB, lp, out.points, tol);
   out.overlaps = std::move(overlaps);
   if (out.points.size() + out.overlaps.size() > max_points) too_many_points(out.points.size() + out.overlaps.size());
   return out;
@@ -1514,7 +1618,8 @@ Intersections<T> solve_extreme(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
   const T run = T(1e-13) * size;
   const Tamed<T> ta = tame(ca, run);
   const std::optional<Tamed<T>> tb = self ? std::nullopt : std::optional<Tamed<T>>(tame(*cb, run));
-  Intersections<T> r = solve(ta.curve, self ? nullptr : &tb->curve, true);
+  const TameJoints<T> joints{ta.joints(), self ? ta.joints() : tb->joints()};
+  Intersections<T> r = solve(ta.curve, self ? nullptr : &tb->curve, &joints);
   const Tamed<T>& mb = self ? ta : *tb;
   const Pieces<T, 2>& ob = self ? ca : *cb;
   if (!self) {

@@ -67,11 +67,27 @@ struct Tamed {
   Pieces<T, 2> curve;
   std::vector<TamePart<T>> parts;
 
+  /// The tamed curve's breaks between two parts of one piece (not ends of the curve's
+  /// own arcs).
+  [[nodiscard]] std::vector<T> joints() const {
+    std::vector<T> out;
+    for (std::size_t k = 1; k < parts.size(); ++k)
+      if (parts[k].piece == parts[k - 1].piece) out.push_back(curve.segment_domain(k).lo);
+    return out;
+  }
+
   /// The original curve's parameter of the tamed curve's parameter g.
   [[nodiscard]] T original(const Pieces<T, 2>& c, T g) const {
     const auto [k, u] = curve.locate(g);
     return c.lift(parts[k].piece, parts[k].piece_parameter(u));
   }
+};
+
+/// The joints of the tame parts of both curves of solve() (Tamed::joints), b's = a's for
+/// self-intersections.
+template <class T>
+struct TameJoints {
+  std::vector<T> a, b;
 };
 
 /// Whether some piece of c has weights spread beyond tame_trigger.
