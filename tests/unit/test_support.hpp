@@ -12,9 +12,6 @@
 #include <vector>
 
 #include "casteljau/casteljau.hpp"
-// The queries at double compiled once in casteljau::io, which every test links: the tests
-// call that code instead of compiling the queries again (io/extern_templates.hpp).
-#include "casteljau/io/extern_templates.hpp"
 
 namespace casteljau::test {
 /// Machine epsilon of double, the unit of the tests' tolerances.
