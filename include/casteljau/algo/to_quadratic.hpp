@@ -858,10 +858,12 @@ std::vector<typename Piece::Scalar> cusps(const Piece& piece) {
 
 /// The chain of one span [s0, s1] of a piece (no cusp inside), from direction t_start at
 /// its start to t_end at its end: greedy, each segment reaching as far as it can (the
-/// largest end found to 4% of its step by galloping and bisection) with the quadratic
-/// whose middle point is where the end tangents meet; consecutive segments share the
-/// point and the direction at their joint. Appends segments and own parameters of their
-/// ends; throws when more than max_segments would be made.
+/// largest end found to 4% of its step by a model of the error, galloping and bisection;
+/// the midpoint first after the span fails as one segment within 16 times the
+/// tolerance) with the quadratic whose middle point is where the end tangents meet;
+/// consecutive segments share the point and the direction at their joint. Appends
+/// segments and own parameters of their ends; throws when more than max_segments would be
+/// made.
 template <class Piece, class Sink, class T = typename Piece::Scalar, int D = Piece::dimension>
 void approximate_span(const Piece& piece, T s0, T s1, const Point<T, D>& p_start, const Point<T, D>& p_end, Vector<T, D> t_start,
                       const Vector<T, D>& t_end, T tolerance, std::size_t max_segments, Sink& out, T& max_error) {
@@ -1124,7 +1126,9 @@ void approximate_piece(const S& s, const Vector<T, D>& start_dir, const Vector<T
 /// Part::reparametrised_bound4 (the parametric distance after a quartic change of the
 /// quadratic's parameter) when that is within the tolerance, or rejected when c(1/2) is
 /// farther than the tolerance from its foot on the quadratic. A cubic's cusps are found in closed form (cubic_cusps). Once the rest of a span has failed as one segment, the first end found within the
-/// tolerance is tried with the rest as a second segment (two is then the fewest). max_error is the largest. Errors: InvalidArgument "tolerance" (not finite and > 0; more than
+/// tolerance is tried with the rest as a second segment (two is then the fewest); when it
+/// failed within 16 times the tolerance, the first end tried is its midpoint (cu2qu's two
+/// equal parts). max_error is the largest. Errors: InvalidArgument "tolerance" (not finite and > 0; more than
 /// max_segments segments needed).
 template <class C>
   requires detail::is_pieces<C>
