@@ -122,9 +122,10 @@ TEST(ToQuadratic, RandomCubicsWithinToleranceAndTangentContinuous) {
 }
 
 TEST(ToQuadratic, ReparametrisedBoundHoldsOnRandomParts) {
-  // Part::reparametrised_bound (the Bernstein polygon of c(s) - q(sigma(s))) against the
-  // two-sided distance of dense samples of the part and its tangent quadratic, measured
-  // here; parts of random cubics that turn little (where the bound accepts parts).
+  // Part::reparametrised_bound4 (the Bernstein polygon of c(s) - q(sigma(s)), sigma a
+  // quartic whose middle is fitted to the foot of c(1/2)) against the two-sided distance of
+  // dense samples of the part and its tangent quadratic, measured here; parts of random
+  // cubics that turn little (where the bound accepts parts).
   std::mt19937_64 rng(13);
   std::uniform_real_distribution<double> u(0, 100), w(0, 1);
   int finite = 0;
@@ -136,10 +137,8 @@ TEST(ToQuadratic, ReparametrisedBoundHoldsOnRandomParts) {
     const auto d0 = detail::quadratic::end_direction(part.points, true), d1 = detail::quadratic::end_direction(part.points, false);
     const auto q = detail::quadratic::tangent_chain(part.points.front(), d0, part.points.back(), d1, part.end_speed(true), part.end_speed(false));
     if (!q || q->size != 1) continue;
-    const double bound = part.reparametrised_bound(*q, 0.0, 3);
-    // The bound with sigma of degree 4 (its middle fitted to the foot of c(1/2)).
     const double bound4 = part.reparametrised_bound4(*q, 0.0, 3);
-    if (!std::isfinite(bound) && !std::isfinite(bound4)) continue;
+    if (!std::isfinite(bound4)) continue;
     ++finite;
     std::vector<P2> cs, qs;
     const int n = 1500;
@@ -152,12 +151,7 @@ TEST(ToQuadratic, ReparametrisedBoundHoldsOnRandomParts) {
     }
     // Slack: chords of 1/1500 of parts a few tens long, sag far below 1e-6.
     const double dense = std::max(to_polyline(cs, qs), to_polyline(qs, cs));
-    if (std::isfinite(bound)) {
-      EXPECT_LE(dense, bound + 1e-6) << "cubic " << i;
-    }
-    if (std::isfinite(bound4)) {
-      EXPECT_LE(dense, bound4 + 1e-6) << "cubic " << i << " (degree 4)";
-    }
+    EXPECT_LE(dense, bound4 + 1e-6) << "cubic " << i;
   }
   EXPECT_GE(finite, 12);
 }

@@ -45,13 +45,17 @@ inline constexpr T snap_angle = T(1e-6);
 /// precision to underflow, norm() (which scales by the largest coordinate: two divisions
 /// more) beyond.
 template <class T, int D>
+[[gnu::noinline]] T scaled_norm(const Vector<T, D>& v) {
+  return norm(v);
+}
+template <class T, int D>
 inline T fast_norm(const Vector<T, D>& v) {
   const T s = squared_norm(v);
   constexpr T lo = std::numeric_limits<T>::min() / std::numeric_limits<T>::epsilon();
   constexpr T hi = std::numeric_limits<T>::max() * std::numeric_limits<T>::epsilon();
   if (s >= lo && s <= hi) [[likely]]
     return std::sqrt(s);
-  return norm(v);
+  return scaled_norm(v);
 }
 
 template <class T, int D>
@@ -69,6 +73,22 @@ Vector<T, D> unit(const Vector<T, D>& v) {
 template <class T, int D>
 Vector<T, D> end_direction(const std::vector<Point<T, D>>& C, bool at_start) {
   const std::size_t n = C.size() - 1;
+  if (n == 3) {  // a cubic: the same test on squared lengths (one square root)
+    const Point<T, D>& e = at_start ? C[0] : C[3];
+    T size2 = 0;
+    for (const auto& p : C) size2 = std::max(size2, squared_norm(p - e));
+    constexpr T lo = std::numeric_limits<T>::min() / std::numeric_limits<T>::epsilon();
+    constexpr T hi = std::numeric_limits<T>::max() * std::numeric_limits<T>::epsilon();
+    if (size2 >= lo && size2 <= hi) [[likely]] {
+      const T small2 = T(1e-14) * size2;
+      for (std::size_t k = 1; k <= 3; ++k) {
+        const Vector<T, D> d = at_start ? C[k] - C[0] : C[3] - C[3 - k];
+        const T d2 = squared_norm(d);
+        if (d2 > small2) return d / std::sqrt(d2);
+      }
+      return {};
+    }
+  }
   const Point<T, D>& e = at_start ? C[0] : C[n];
   T size = 0;
   for (const auto& p : C) size = std::max(size, fast_norm(p - e));
@@ -358,6 +378,33 @@ void polynomial_portion(const std::vector<Point<T, D>>& P, T a, T b, std::vector
   }
 }
 
+/// polynomial_portion for a cubic, unrolled into out[0..3] (the same operations).
+template <class T, int D>
+void cubic_portion(const Point<T, D>* P, T a, T b, Point<T, D>* out) {
+  Point<T, D> p0 = P[0], p1 = P[1], p2 = P[2], p3 = P[3];
+  if (b < T(1)) {
+    p3 = p2 + b * (p3 - p2);
+    p2 = p1 + b * (p2 - p1);
+    p1 = p0 + b * (p1 - p0);
+    p3 = p2 + b * (p3 - p2);
+    p2 = p1 + b * (p2 - p1);
+    p3 = p2 + b * (p3 - p2);
+  }
+  if (a > T(0)) {
+    const T t = a / b;
+    p0 = p0 + t * (p1 - p0);
+    p1 = p1 + t * (p2 - p1);
+    p2 = p2 + t * (p3 - p2);
+    p0 = p0 + t * (p1 - p0);
+    p1 = p1 + t * (p2 - p1);
+    p0 = p0 + t * (p1 - p0);
+  }
+  out[0] = p0;
+  out[1] = p1;
+  out[2] = p2;
+  out[3] = p3;
+}
+
 /// A part of a piece (its own parameter [a, b] mapped onto [0, 1]): its control points,
 /// evaluation and a bound on its second derivative.
 template <class Piece>
@@ -372,7 +419,12 @@ struct Part {
 
   void make(const Piece& piece, T a, T b) {
     if constexpr (polynomial) {
-      polynomial_portion(piece.points(), a, b, points);
+      if (piece.points().size() == 4) {
+        points.resize(4);
+        cubic_portion(piece.points().data(), a, b, points.data());
+      } else {
+        polynomial_portion(piece.points(), a, b, points);
+      }
       if (points.size() == 4) {
         const auto& P = points;
         power[1] = T(3) * (P[1] - P[0]);
@@ -424,64 +476,34 @@ struct Part {
       // The weights C(2, i) C(n - 2, k - i) / C(n, k): (n-k)(n-k-1), 2k(n-k), k(k-1) over n(n-1).
       const T kk = T(k), r = T(n - k);
       const T w0 = r * (r - 1) / N, w1 = T(2) * kk * r / N, w2 = kk * (kk - 1) / N;
-      Vector<T, D> d;
-      for (int c = 0; c < D; ++c) d[c] = points[k][c] - (w0 * a[0][c] + w1 * a[1][c] + w2 * a[2][c]);
-      worst = std::max(worst, fast_norm(d));
+      T d2 = 0;
+      for (int c = 0; c < D; ++c) {
+        const T d = points[k][c] - (w0 * a[0][c] + w1 * a[1][c] + w2 * a[2][c]);
+        d2 += d * d;
+      }
+      worst = std::max(worst, d2);
     }
-    return worst;
+    return std::sqrt(worst);  // parts near the curve: no overflow
   }
 
   /// An upper bound of the Hausdorff distance between a cubic part c and a single
-  /// quadratic q with the same end points and end directions, after a change of
-  /// q's parameter: sigma(s) the cubic with sigma(0) = 0, sigma(1) = 1 and the end slopes
-  /// |c'| / |q'| (Bernstein coefficients 0, sigma'(0) / 3, 1 - sigma'(1) / 3, 1), so that
-  /// q(sigma(s)) matches c's points and first derivatives at both ends and the difference
-  /// f(s) = c(s) - q(sigma(s)), a polynomial of degree 6, has a double zero at each end.
-  /// Its Bernstein coefficients (c and sigma raised to degree 6, sigma^2 by the product
-  /// rule) bound |f|; the polygon is halved (de Casteljau at 1/2) up to `levels` times where
-  /// its largest coefficient is above `limit`, so that the bound is within a few percent of
-  /// max |f| (the whole polygon's bound is up to 1.6 times it). When sigma's coefficients
-  /// lie in [0, 1], sigma maps [0, 1] into [0, 1] (so c(s) is within |f(s)| of the point
-  /// q(sigma(s)) of q) and onto it (sigma(0) = 0, sigma(1) = 1: every q(u) is q(sigma(s))
-  /// for some s, within |f(s)| of c(s)). Infinite for other parts (rational, degree other than 3, a
-  /// chain of two quadratics) or a sigma leaving [0, 1]. A few hundred operations: no
-  /// projections.
-  T reparametrised_bound(const Chain<T, D>& q, T limit, int levels) const {
-    if (!polynomial || q.size != 1 || points.size() != 4) return std::numeric_limits<T>::infinity();
-    const auto& Q = q.front();
-    const Vector<T, D> b = Q[1] - Q[0], a = (Q[0] - Q[1]) + (Q[2] - Q[1]);  // q(u) = q0 + 2 u b + u^2 a
-    const T q0 = fast_norm(b), q1 = fast_norm(Q[2] - Q[1]);                       // |q'| / 2 at the ends
-    if (!(q0 > 0 && q1 > 0)) return std::numeric_limits<T>::infinity();
-    const T c0 = fast_norm(points[1] - points[0]), c1 = fast_norm(points[3] - points[2]);  // |c'| / 3 at the ends
-    // sigma's Bernstein coefficients 0, s1, s2, 1 with s1 = sigma'(0) / 3 = (3 c0 / (2 q0)) / 3.
-    const T s1 = c0 / (T(2) * q0), s2 = T(1) - c1 / (T(2) * q1);
-    if (!(s1 >= 0 && s1 <= 1 && s2 >= 0 && s2 <= 1)) return std::numeric_limits<T>::infinity();
-    // Degree 6: sigma raised by 3, sigma^2 as a product, c raised by 3.
-    const std::array<T, 4> sg{T(0), s1, s2, T(1)};
-    constexpr std::array<T, 4> c3{1, 3, 3, 1};
-    constexpr std::array<T, 7> c6{1, 6, 15, 20, 15, 6, 1};
-    std::array<Vector<T, D>, 7> f;
-    for (int k = 0; k <= 6; ++k) {
-      T sig = 0, sig2 = 0;
-      Vector<T, D> ck{};
-      for (int i = std::max(0, k - 3); i <= std::min(3, k); ++i) {
-        const T w = c3[static_cast<std::size_t>(i)] * c3[static_cast<std::size_t>(k - i)] / c6[static_cast<std::size_t>(k)];
-        sig += w * sg[static_cast<std::size_t>(i)];
-        sig2 += w * sg[static_cast<std::size_t>(i)] * sg[static_cast<std::size_t>(k - i)];
-        ck = ck + w * (points[static_cast<std::size_t>(i)] - Q[0]);
-      }
-      f[static_cast<std::size_t>(k)] = ck - (T(2) * sig) * b - sig2 * a;
-    }
-    return polygon_bound(f, limit, levels);
-  }
-
-  /// The bound of reparametrised_bound with sigma of degree 4: Bernstein coefficients 0,
-  /// sigma'(0) / 4, s2, 1 - sigma'(1) / 4, 1 (the same end slopes), s2 chosen so that
-  /// sigma(1/2) is the foot of c(1/2) on q (Newton), which removes most of the tangential
-  /// part of f = c - q o sigma (degree 8) that makes the cubic sigma's bound loose (1.4 to
-  /// 20 times the distance on parts where the speeds vary). Infinite as there, or when
-  /// |f(1/2)| (a value of f, so at most the bound) exceeds `skip`; then |f(1/2)|, the
-  /// distance from c(1/2) to its foot on q, is written to *skipped when given.
+  /// quadratic q with the same end points and end directions, after a change of q's
+  /// parameter: sigma(s) the quartic with sigma(0) = 0, sigma(1) = 1 and the end slopes
+  /// |c'| / |q'| (Bernstein coefficients 0, sigma'(0) / 4, s2, 1 - sigma'(1) / 4, 1), so
+  /// that q(sigma(s)) matches c's points and first derivatives at both ends and f(s) =
+  /// c(s) - q(sigma(s)), a polynomial of degree 8, has a double zero at each end; s2 is
+  /// chosen so that sigma(1/2) is the foot of c(1/2) on q (Newton), which removes most of
+  /// the tangential part of f (a cubic sigma's bound is 1.4 to 20 times the distance on
+  /// parts whose speeds vary). f's Bernstein coefficients (c raised to degree 8, sigma
+  /// raised and sigma^2 as a product) bound |f|; the polygon is halved (de Casteljau at
+  /// 1/2) up to `levels` times where its largest coefficient is above `limit`. When
+  /// sigma's coefficients lie in [0, 1], sigma maps [0, 1] into [0, 1] (c(s) is within
+  /// |f(s)| of the point q(sigma(s)) of q) and onto it (every q(u) is some q(sigma(s)),
+  /// within |f(s)| of c(s)). Infinite for other parts (rational, degree other than 3, a
+  /// chain of two quadratics), a sigma leaving [0, 1], or when |f(1/2)| (a value of f, so
+  /// at most the bound) exceeds `skip`; then |f(1/2)|, the distance from c(1/2) to its foot
+  /// on q, is written to *skipped when given. No projections besides that foot: about 300
+  /// operations, unrolled.
   T reparametrised_bound4(const Chain<T, D>& q, T limit, int levels, T skip = std::numeric_limits<T>::infinity(),
                           T* skipped = nullptr) const {
     if (!polynomial || q.size != 1 || points.size() != 4) return std::numeric_limits<T>::infinity();
@@ -525,9 +547,11 @@ struct Part {
     if (!(s1 >= 0 && s1 <= 1 && s2 >= 0 && s2 <= 1 && s3 >= 0 && s3 <= 1)) return std::numeric_limits<T>::infinity();
     const std::array<T, 5> sg{T(0), s1, s2, s3, T(1)};
     // The products' weights C(4, i) C(4, k - i) / C(8, k) (sigma and sigma^2 raised to
-    // degree 8) and C(3, i) C(5, k - i) / C(8, k) (c raised by 5), once at compile time.
+    // degree 8; the partner index k - i, 0 where the weight is 0) and C(3, i) C(5, k - i) /
+    // C(8, k) (c raised by 5), once at compile time; the loops below have constant bounds.
     struct Weights {
       std::array<std::array<T, 5>, 9> w44{};
+      std::array<std::array<std::size_t, 5>, 9> partner{};
       std::array<std::array<T, 4>, 9> w35{};
     };
     static constexpr Weights W = [] {
@@ -538,51 +562,61 @@ struct Part {
       Weights r;
       for (std::size_t k = 0; k <= 8; ++k) {
         for (std::size_t i = 0; i <= 4 && i <= k; ++i)
-          if (k - i <= 4) r.w44[k][i] = c4[i] * c4[k - i] / c8[k];
+          if (k - i <= 4) {
+            r.w44[k][i] = c4[i] * c4[k - i] / c8[k];
+            r.partner[k][i] = k - i;
+          }
         for (std::size_t i = 0; i <= 3 && i <= k; ++i)
           if (k - i <= 5) r.w35[k][i] = c3[i] * c5[k - i] / c8[k];
       }
       return r;
     }();
-    const std::array<Vector<T, D>, 4> cq{points[0] - Q[0], points[1] - Q[0], points[2] - Q[0], points[3] - Q[0]};
-    std::array<Vector<T, D>, 9> f;
+    std::array<std::array<T, D>, 4> cq;
+    for (std::size_t i = 0; i < 4; ++i)
+      for (int c = 0; c < D; ++c) cq[i][static_cast<std::size_t>(c)] = points[i][c] - Q[0][c];
+    std::array<std::array<T, D>, 9> f;
     for (std::size_t k = 0; k <= 8; ++k) {
       T sig = 0, sig2 = 0;
-      for (std::size_t i = k > 4 ? k - 4 : 0; i <= std::min<std::size_t>(4, k); ++i) {
-        const T w = W.w44[k][i];
-        sig += w * sg[i];
-        sig2 += w * sg[i] * sg[k - i];
+      for (std::size_t i = 0; i <= 4; ++i) {
+        const T w = W.w44[k][i] * sg[i];
+        sig += w;
+        sig2 += w * sg[W.partner[k][i]];
       }
-      Vector<T, D> ck{};
-      for (std::size_t i = k > 5 ? k - 5 : 0; i <= std::min<std::size_t>(3, k); ++i) ck = ck + W.w35[k][i] * cq[i];
-      f[k] = ck - (T(2) * sig) * b - sig2 * a;
+      for (int c = 0; c < D; ++c) {
+        const std::size_t cc = static_cast<std::size_t>(c);
+        T v = 0;
+        for (std::size_t i = 0; i < 4; ++i) v += W.w35[k][i] * cq[i][cc];
+        f[k][cc] = v - (T(2) * sig) * b[c] - sig2 * a[c];
+      }
     }
     return polygon_bound_n(f, limit, levels);
   }
 
-  /// The largest coefficient of the Bernstein polygon f, halved up to `levels` times
-  /// where it exceeds `limit` (not where an end value, a value of f, does): an upper
-  /// bound of max |f| on [0, 1].
+  /// The largest coefficient of the Bernstein polygon f (vectors as arrays), halved up to
+  /// `levels` times where it exceeds `limit` (not where an end value, a value of f, does:
+  /// no halving can bring the bound under `limit` then): an upper bound of max |f| on
+  /// [0, 1].
   template <std::size_t M>
-  static T polygon_bound_n(const std::array<Vector<T, D>, M>& f, T limit, int levels) {
+  static T polygon_bound_n(const std::array<std::array<T, D>, M>& f, T limit, int levels) {
+    const auto sq = [](const std::array<T, D>& v) {
+      T s = 0;
+      for (const T x : v) s += x * x;
+      return s;
+    };
     T worst = 0;
-    for (const auto& v : f) worst = std::max(worst, squared_norm(v));
-    worst = std::sqrt(worst);
-    if (worst <= limit || levels == 0) return worst;
-    if (squared_norm(f[0]) > limit * limit || squared_norm(f[M - 1]) > limit * limit) return worst;
-    std::array<Vector<T, D>, M> l, r, w = f;
+    for (const auto& v : f) worst = std::max(worst, sq(v));
+    const T limit2 = limit * limit;
+    if (worst <= limit2 || levels == 0 || sq(f[0]) > limit2 || sq(f[M - 1]) > limit2) return std::sqrt(worst);
+    std::array<std::array<T, D>, M> l, r, w = f;
     for (std::size_t lvl = 0; lvl < M; ++lvl) {
       l[lvl] = w[0];
       r[M - 1 - lvl] = w[M - 1 - lvl];
-      for (std::size_t i = 0; i + lvl + 1 < M; ++i) w[i] = T(0.5) * (w[i] + w[i + 1]);
+      for (std::size_t i = 0; i + lvl + 1 < M; ++i)
+        for (std::size_t c = 0; c < static_cast<std::size_t>(D); ++c) w[i][c] = T(0.5) * (w[i][c] + w[i + 1][c]);
     }
-    return std::max(polygon_bound_n(l, limit, levels - 1), polygon_bound_n(r, limit, levels - 1));
+    const T left = polygon_bound_n(l, limit, levels - 1);
+    return std::max(left, polygon_bound_n(r, limit, levels - 1));
   }
-
-  /// polygon_bound_n for degree 6: the largest coefficient of the Bernstein polygon f, halved up to `levels`
-  /// times where it exceeds `limit` (not where an end value, a value of f, does: no
-  /// halving can bring the bound under `limit` then): an upper bound of max |f| on [0, 1].
-  static T polygon_bound(const std::array<Vector<T, D>, 7>& f, T limit, int levels) { return polygon_bound_n(f, limit, levels); }
 
   /// Vectors whose convex hull holds c'' on [0, 1], into out (the margin of
   /// ChainDistance::bound takes max |v - w| over them for |c'' - w|): n (n - 1) times the
@@ -824,10 +858,12 @@ std::vector<typename Piece::Scalar> cusps(const Piece& piece) {
 
 /// The chain of one span [s0, s1] of a piece (no cusp inside), from direction t_start at
 /// its start to t_end at its end: greedy, each segment reaching as far as it can (the
-/// largest end found to 4% of its step by galloping and bisection) with the quadratic
-/// whose middle point is where the end tangents meet; consecutive segments share the
-/// point and the direction at their joint. Appends segments and own parameters of their
-/// ends; throws when more than max_segments would be made.
+/// largest end found to 4% of its step by a model of the error, galloping and bisection;
+/// the midpoint first after the span fails as one segment within 16 times the
+/// tolerance) with the quadratic whose middle point is where the end tangents meet;
+/// consecutive segments share the point and the direction at their joint. Appends
+/// segments and own parameters of their ends; throws when more than max_segments would be
+/// made.
 template <class Piece, class Sink, class T = typename Piece::Scalar, int D = Piece::dimension>
 void approximate_span(const Piece& piece, T s0, T s1, const Point<T, D>& p_start, const Point<T, D>& p_end, Vector<T, D> t_start,
                       const Vector<T, D>& t_end, T tolerance, std::size_t max_segments, Sink& out, T& max_error) {
@@ -907,6 +943,12 @@ void approximate_span(const Piece& piece, T s0, T s1, const Point<T, D>& p_start
     }
     max_error = std::max(max_error, r.error);
     step = t1 - t0;
+    {
+      // The next segment's first end by the model of the search below from this one's
+      // error (at most 1.5 times its step).
+      const T e = r.search_error();
+      if (std::isfinite(e) && e > 0) step *= std::min(T(1.5), std::sqrt(std::sqrt(T(0.95) * tolerance / e)));
+    }
     t0 = t1;
     p0 = r.q.back()[2];
     dir0 = r.dir1;
@@ -920,14 +962,15 @@ void approximate_span(const Piece& piece, T s0, T s1, const Point<T, D>& p_start
     T lo = t0, hi = s1;
     bool hi_tested = false;
     std::optional<Try> best;
-    bool rest_tried = false, done = false;
+    bool rest_tried = false, done = false, mid_probe = false;
+    T model_guess = 0;
     T x = std::min(s1, t0 + step);
     for (int it = 0; it < 200; ++it) {
       Try r = attempt(x);
       const T e = r.search_error();  // the bound (or a lower estimate), or a lower bound above the tolerance, or infinite
       if (r.ok) {
         lo = x;
-        const bool enough = x == s1 || e >= T(0.8) * tolerance;
+        const bool enough = x == s1 || (e >= T(0.8) * tolerance && !mid_probe);
         if (!enough && hi == s1 && hi_tested && !rest_tried && s1 - x <= (x - t0)) {
           // The span's rest failed as one segment, so two is the fewest: when the rest
           // from x fits one, the two are taken.
@@ -947,14 +990,30 @@ void approximate_span(const Piece& piece, T s0, T s1, const Point<T, D>& p_start
         }
         best = std::move(r);
         if (enough) break;
-      } else {
+      } else if (!(mid_probe && !std::isfinite(e))) {
         hi = x;
         hi_tested = true;
       }
       if (best && hi_tested && hi - lo <= T(0.04) * (lo - t0)) break;
       if (!best && hi - t0 <= min_step) break;
       T g = std::numeric_limits<T>::quiet_NaN();
-      if (std::isfinite(e) && e > 0) g = t0 + (x - t0) * std::sqrt(std::sqrt(T(0.95) * tolerance / e));
+      if (mid_probe && !r.ok && !std::isfinite(e)) {
+        g = model_guess;
+      } else if (std::isfinite(e) && e > 0) {
+        g = t0 + (x - t0) * std::sqrt(std::sqrt(T(0.95) * tolerance / e));
+      }
+      // The span's rest failed as one segment, within 16 times the tolerance (the error
+      // falls as the fourth power of the step: halves near a sixteenth of it): the
+      // midpoint next, cu2qu's two equal parts, and with it the rest from there as the
+      // second segment (taken whatever the first's error). Where the tangent lines do not
+      // meet ahead at the midpoint (feasibility is not monotone there: S-shaped spans fit
+      // past it), the search resumes from the model's end and keeps its bracket.
+      mid_probe = false;
+      if (it == 0 && x == s1 && !r.ok && e <= T(16) * tolerance) {
+        model_guess = g;
+        g = t0 + T(0.5) * (s1 - t0);
+        mid_probe = true;
+      }
       if (!(g > lo)) g = lo + T(0.5) * (hi - lo);
       if (g >= hi) g = hi_tested ? lo + T(0.5) * (hi - lo) : s1;
       if (g == x) break;
@@ -1067,7 +1126,9 @@ void approximate_piece(const S& s, const Vector<T, D>& start_dir, const Vector<T
 /// Part::reparametrised_bound4 (the parametric distance after a quartic change of the
 /// quadratic's parameter) when that is within the tolerance, or rejected when c(1/2) is
 /// farther than the tolerance from its foot on the quadratic. A cubic's cusps are found in closed form (cubic_cusps). Once the rest of a span has failed as one segment, the first end found within the
-/// tolerance is tried with the rest as a second segment (two is then the fewest). max_error is the largest. Errors: InvalidArgument "tolerance" (not finite and > 0; more than
+/// tolerance is tried with the rest as a second segment (two is then the fewest); when it
+/// failed within 16 times the tolerance, the first end tried is its midpoint (cu2qu's two
+/// equal parts). max_error is the largest. Errors: InvalidArgument "tolerance" (not finite and > 0; more than
 /// max_segments segments needed).
 template <class C>
   requires detail::is_pieces<C>
