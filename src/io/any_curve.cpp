@@ -10,6 +10,7 @@
 
 #include "casteljau/algo/bounds.hpp"
 #include "casteljau/algo/flatten.hpp"
+#include "casteljau/algo/reduce.hpp"
 #include "casteljau/basis/extrapolate.hpp"
 
 namespace casteljau::io {
@@ -46,6 +47,7 @@ constexpr bool has(Capability k) {
     case Capability::elevate: return requires(const C& x) { x.elevate(1); };
     case Capability::knot_insertion: return requires(const C& x) { x.insert_knot(0.0, 1); };
     case Capability::knot_removal: return requires(const C& x) { x.remove_knot(0.0, 1, 0.0); };
+    case Capability::degree_reduction: return DegreeReducibleCurve<C>;
   }
   return false;
 }

@@ -47,7 +47,7 @@ constexpr Field to_bspline_fields[] = {
 Response reduce(const Args& a) { return {to_json(io::reduce(a.curve("curve"), a.integer("times"), a.number("tolerance")))}; }
 
 constexpr Field reduce_fields[] = {
-    {"curve", FieldType::curve, true, {}, "a bezier, bspline or nurbs curve"},
+    {"curve", FieldType::curve, true, {}, {}, {}, {}, 0, 0, Capability::degree_reduction},
     {"times", FieldType::integer, false, "1", "r with 1 <= r <= p: the degree drops by r (a degree-0 result is a constant)"},
     {"tolerance", FieldType::number, true, {}, "> 0: the largest distance allowed between the curves at equal parameters"},
 };

@@ -134,8 +134,7 @@ AnyReduction reduce(const AnyCurve& c, int times, double tolerance) {
       [&]<class C>(const C& x) -> AnyReduction {
         constexpr int D = C::dimension;
         constexpr bool bezier = std::is_same_v<C, Bezier<double, D>>;
-        constexpr bool spline = std::is_same_v<C, BSpline<double, D>> || std::is_same_v<C, Nurbs<double, D>>;
-        if constexpr (bezier || spline) {
+        if constexpr (DegreeReducibleCurve<C>) {
           const int p = x.degree();
           if (times < 1 || times > p) {
             throw InvalidArgument("times", "must be in 1..p = " + std::to_string(p) + " (the curve's degree), got " + std::to_string(times));
@@ -175,7 +174,8 @@ AnyReduction reduce(const AnyCurve& c, int times, double tolerance) {
           }
           return {AnyCurve(std::move(reduced)), err};
         } else {
-          throw InvalidArgument("curve.type", "reduce needs a bezier, bspline or nurbs curve, got a " + std::string(type_name(c)));
+          throw InvalidArgument("curve.type", "reduce needs " + types_phrase(Capability::degree_reduction) + ", got a " +
+                                                  std::string(type_name(c)));
         }
       },
       c);

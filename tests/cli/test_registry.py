@@ -200,8 +200,8 @@ SAMPLES = {
 
 
 class CapabilityTest(CliTest):
-    """A command that needs a member some curve types lack (split, elevate, the knot
-    operations) names in its refusal exactly the types it works on: found here by running
+    """A command that needs a member some curve types lack (split, elevate, reduce, the
+    knot operations) names in its refusal exactly the types it works on: found here by running
     it on every type, not from a list."""
 
     def capability(self, command, extra):
@@ -228,6 +228,11 @@ class CapabilityTest(CliTest):
 
     def test_elevate(self):
         self.capability("elevate", {"times": 1})
+
+    def test_reduce(self):
+        # The registry's degree_reduction: a Bézier by least squares, a B-spline or NURBS by
+        # its reduce_degree member (samples of degree 1 or 2, a tolerance they all meet).
+        self.assertEqual(self.capability("reduce", {"tolerance": 100}), {"bezier", "bspline", "nurbs"})
 
     def test_knot_operations(self):
         self.assertEqual(self.capability("insert_knot", {"knot": 0.5}), {"bspline", "nurbs"})

@@ -114,4 +114,11 @@ Reduction<T, D> reduce_degree(const Bezier<T, D>& c, int m, Endpoints endpoints 
   return {std::move(reduced), sampled, bound};
 }
 
+/// A curve whose degree can be lowered: a Bézier curve (reduce_degree above) or a type with
+/// a reduce_degree(tolerance) member (BSpline, Nurbs). The command line's `reduce` takes
+/// exactly these types (io::Capability::degree_reduction).
+template <class C>
+concept DegreeReducibleCurve = requires(const C& x) { reduce_degree(x, 1); } ||
+                               requires(const C& x, typename C::Scalar tolerance) { x.reduce_degree(tolerance); };
+
 }  // namespace casteljau

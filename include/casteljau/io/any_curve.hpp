@@ -79,6 +79,7 @@ enum class Capability {
   elevate,         ///< elevate(times)
   knot_insertion,  ///< insert_knot(u, times)
   knot_removal,    ///< remove_knot(u, times, tolerance)
+  degree_reduction,  ///< reduce_degree(curve, m) (Bézier) or reduce_degree(tolerance) (B-spline, NURBS)
 };
 
 /// The curve-JSON names of every registered type, in the order of CurveTypes.
