@@ -592,6 +592,22 @@ class ExtremeWeightsTest(CliTest):
                             slack = 1e-12 * float(total) + float(speed(mpf(min(t, 1 - t)))) * math.ulp(t)
                         self.assertLessEqual(abs(arc_to[t] - s), slack, (w, nurbs, s, t))
 
+    def test_project_lists_only_ties_its_parameters_reach(self):
+        # (1/2, 1/2) is 1/2 from both legs (x = 1 and y = 1; the curve is within about 1/W
+        # of them there), at mirror-image parameters t and 1 - t with t ~ 1/(2W). From
+        # W = 1e15 the double nearest 1 - t is not close enough: at W = 1e16 it is 1.0, the
+        # far end (0, 1), 0.707 away; it was listed in all_t. Every parameter answered
+        # must evaluate to a point at the distance (1e-12), and the distance is 1/2.
+        for w in (1e8, 1e15, 1e16, 1e30):
+            for nurbs in (False, True):
+                c = hugging_quadratic(w, nurbs)
+                pr = self.ok("project", {"curve": c, "point": [0.5, 0.5]})
+                self.assertLessEqual(abs(pr["distance"] - 0.5), 1e-12, (w, nurbs, pr))
+                ts = pr.get("all_t", [pr["t"]])
+                self.assertEqual(len(ts), 2 if w == 1e8 else 1, (w, nurbs, pr))
+                for x, y in self.ok("eval", {"curve": c, "t": ts})["points"]:
+                    self.assertLessEqual(abs(math.hypot(x - 0.5, y - 0.5) - 0.5), 1e-12, (w, nurbs, pr))
+
 
 class WorkLimitTest(CliTest):
     def test_queries_past_the_work_limit_are_refused(self):

@@ -385,6 +385,11 @@ Projection<typename C::Scalar, C::dimension> project(const C& c, const Point<typ
         },
         rel_segment(k));
   };
+  // Whether each all_t entry's own point ties: a tie found on a part of a piece with extreme
+  // weights whose parameter has no double of its own (within 5e-17 of t = 1 at weight
+  // 1e16) is rounded to a parameter whose point is elsewhere (t = 1: the corner's far end,
+  // 0.707 from the query for the distance 0.5). Listed only when no tie resolves (below).
+  std::vector<char> resolved;
   for (std::size_t i = 0; i < cand.size();) {
     if (!ties(cand[i].d)) {
       ++i;
@@ -402,6 +407,14 @@ Projection<typename C::Scalar, C::dimension> project(const C& c, const Point<typ
     const T t = cand[pick].t;
     if (!r.all_t.empty() && t - r.all_t.back() <= merge) continue;
     r.all_t.push_back(t);
+    const Candidate& c = cand[pick];
+    resolved.push_back(c.exact || ties(std::visit([&](const auto& rp) { return distance_at(rp, c.own); }, rel_segment(c.piece))));
+  }
+  if (std::find(resolved.begin(), resolved.end(), 1) != resolved.end()) {
+    std::size_t kept = 0;
+    for (std::size_t k = 0; k < r.all_t.size(); ++k)
+      if (resolved[k]) r.all_t[kept++] = r.all_t[k];
+    r.all_t.resize(kept);
   }
   r.t = r.all_t.empty() ? r.intervals.front().lo : r.all_t.front();
   if (!r.intervals.empty()) r.t = std::min(r.t, r.intervals.front().lo);
