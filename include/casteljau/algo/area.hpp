@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 #include <vector>
 
 #include "casteljau/algo/project.hpp"
@@ -95,7 +96,12 @@ typename C::Scalar area(const C& c) {
                 return de_casteljau<T, T>(std::span<const T>(a), t) / w / w;
               };
               const T scale = gauss_kronrod_15<T>(bound, T(0), T(1)).value;
-              value = integrate_adaptive<T>(integrand, T(0), T(1), T(0), detail::target_at<T>(1e-13) * scale).value;
+              try {
+                value = integrate_adaptive<T>(integrand, T(0), T(1), T(0), detail::target_at<T>(1e-13) * scale).value;
+              } catch (const NumericalError& e) {
+                // In the request's terms: which piece, and the quadrature's figures.
+                throw NumericalError("the area of piece " + std::to_string(i) + " (a rational piece) cannot be computed: " + e.what());
+              }
             }
             twice += std::ldexp(value, 2 * f.e);
           };

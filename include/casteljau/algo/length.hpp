@@ -336,7 +336,7 @@ class ArcLengthTable {
       if (!(next > lo && next < hi)) next = lo + (hi - lo) / 2;
       t = next;
     }
-    throw NumericalError("parameter_at: the arc length solve did not converge in 200 steps");
+    throw NumericalError("the parameter at the given arc length was not found: its Newton-bisection solve did not converge in 200 steps");
   }
 
   struct Cell {

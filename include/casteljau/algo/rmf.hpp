@@ -1,12 +1,14 @@
 // Rotation-minimizing frames of a space curve sampled at increasing parameters, by the
 // double reflection method [WangJuttlerZhengLiu08]. Plain arrays in, plain arrays out:
-// not templated on curve types (the samples come from any curve's evaluation).
+// not templated on curve types (the samples come from any curve's evaluation); templated
+// on the scalar T (deduced from r0).
 #pragma once
 
 #include <cmath>
 #include <cstddef>
 #include <span>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "casteljau/core/error.hpp"
@@ -24,31 +26,32 @@ namespace casteljau {
 /// about 16). Each r_(i+1) is then projected onto the plane normal to t_(i+1) and
 /// normalised, so rounding does not accumulate out of the normal plane. Cost O(n).
 /// Throws InvalidArgument("tangents", ...) when the sizes differ.
-inline std::vector<Vector<double, 3>> rotation_minimizing_normals(std::span<const Vector<double, 3>> x,
-                                                                  std::span<const Vector<double, 3>> tangents,
-                                                                  const Vector<double, 3>& r0) {
+template <class T>
+std::vector<Vector<T, 3>> rotation_minimizing_normals(std::type_identity_t<std::span<const Vector<T, 3>>> x,
+                                                      std::type_identity_t<std::span<const Vector<T, 3>>> tangents,
+                                                      const Vector<T, 3>& r0) {
   if (x.size() != tangents.size()) {
     throw InvalidArgument("tangents", "needs one tangent per point: " + std::to_string(x.size()) + " points, " +
                                           std::to_string(tangents.size()) + " tangents");
   }
-  std::vector<Vector<double, 3>> r;
+  std::vector<Vector<T, 3>> r;
   if (x.empty()) return r;
   r.reserve(x.size());
   r.push_back(r0);
   for (std::size_t i = 0; i + 1 < x.size(); ++i) {
-    const Vector<double, 3> v1 = x[i + 1] - x[i];
-    const double c1 = dot(v1, v1);
-    Vector<double, 3> rl = r[i], tl = tangents[i];
+    const Vector<T, 3> v1 = x[i + 1] - x[i];
+    const T c1 = dot(v1, v1);
+    Vector<T, 3> rl = r[i], tl = tangents[i];
     if (c1 > 0) {
       rl = rl - (2 / c1 * dot(v1, rl)) * v1;
       tl = tl - (2 / c1 * dot(v1, tl)) * v1;
     }
-    const Vector<double, 3> v2 = tangents[i + 1] - tl;
-    const double c2 = dot(v2, v2);
-    Vector<double, 3> next = rl;
+    const Vector<T, 3> v2 = tangents[i + 1] - tl;
+    const T c2 = dot(v2, v2);
+    Vector<T, 3> next = rl;
     if (c2 > 0) next = next - (2 / c2 * dot(v2, rl)) * v2;
     next = next - dot(next, tangents[i + 1]) * tangents[i + 1];
-    const double len = norm(next);
+    const T len = norm(next);
     r.push_back(len > 0 ? next / len : next);
   }
   return r;

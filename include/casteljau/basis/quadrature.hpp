@@ -97,15 +97,17 @@ Quadrature<T> integrate_adaptive(F&& f, T a, T b, T rel_tol, T abs_tol = T(0), s
   T value = first.value, error = first.error;
   while (!(error <= std::max(rel_tol * std::abs(value), abs_tol))) {
     if (heap.size() >= max_intervals) {
-      throw NumericalError("integrate_adaptive: error estimate " + detail::format_number(error) + " above the target " +
+      throw NumericalError("the integral cannot be computed to its accuracy target: the adaptive quadrature's error estimate " +
+                           detail::format_number(error) + " is above the target " +
                            detail::format_number(std::max(rel_tol * std::abs(value), abs_tol)) + " after " +
-                           std::to_string(max_intervals) + " intervals");
+                           std::to_string(max_intervals) + " intervals (the integrand varies too sharply)");
     }
     const auto worst = heap.top();
     heap.pop();
     const T mid = worst.a + (worst.b - worst.a) / 2;
     if (!(mid > worst.a && mid < worst.b)) {
-      throw NumericalError("integrate_adaptive: an interval reached the resolution of the parameter with error estimate " +
+      throw NumericalError("the integral cannot be computed to its accuracy target: an interval of the adaptive quadrature "
+                           "reached the resolution of the parameter with error estimate " +
                            detail::format_number(worst.error));
     }
     const auto left = gauss_kronrod_15<T>(f, worst.a, mid), right = gauss_kronrod_15<T>(f, mid, worst.b);

@@ -235,6 +235,5 @@ class Bezier {
 static_assert(Curve<Bezier<double, 2>>);
 static_assert(DifferentiableCurve<Bezier<double, 3>>);
 static_assert(SplittableCurve<Bezier<double, 1>>);
-static_assert(ControlPolygonCurve<Bezier<double, 4>>);
 
 }  // namespace casteljau

@@ -309,7 +309,6 @@ Pieces<T, D> pieces(const BSpline<T, D>& c) {
 }
 
 static_assert(DifferentiableCurve<BSpline<double, 2>>);
-static_assert(ControlPolygonCurve<BSpline<double, 3>>);
 static_assert(Curve<BSpline<double, 1>>);
 static_assert(PiecewiseBezierCurve<BSpline<double, 2>>);
 static_assert(SplittableCurve<BSpline<double, 2>>);

@@ -41,14 +41,6 @@ concept SplittableCurve = Curve<C> && requires(const C& c, typename C::Scalar t)
   { c.split(t) } -> std::same_as<Split<C>>;
 };
 
-/// A curve that lies in the convex hull of its control points (Bézier with any weights
-/// > 0, B-spline): control_bounds() is then a conservative box.
-template <class C>
-concept ControlPolygonCurve = Curve<C> && requires(const C& c) {
-  { c.points() };
-  { c.control_bounds() } -> std::same_as<Box<typename C::Scalar, C::dimension>>;
-};
-
 /// A curve with an exact piecewise (rational) Bézier form: the free function pieces(c)
 /// returns a Pieces<T, D> (curves/piecewise.hpp) tracing the same curve with the same
 /// parametrisation. Every curve type models it; queries are written once on the pieces.

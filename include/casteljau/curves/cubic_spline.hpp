@@ -54,16 +54,19 @@ namespace detail {
 /// interior rows are strictly diagonally dominant (2 (h_(i-1) + h_i) > h_(i-1) + h_i), and
 /// the pivots stay >= the row's off-diagonal sum. Throws NumericalError for a zero or
 /// non-finite pivot (not reached by the spline systems).
+inline constexpr const char* tridiagonal_pivot_message =
+    "the spline's linear system has a zero or non-finite pivot (parameters too close together or too far apart)";
+
 template <class T, class V>
 void solve_tridiagonal(const std::vector<T>& a, std::vector<T>& b, const std::vector<T>& c, std::vector<V>& r) {
   const std::size_t m = b.size();
   for (std::size_t i = 1; i < m; ++i) {
-    if (!(b[i - 1] != 0) || !std::isfinite(b[i - 1])) throw NumericalError("solve_tridiagonal: zero pivot");
+    if (!(b[i - 1] != 0) || !std::isfinite(b[i - 1])) throw NumericalError(tridiagonal_pivot_message);
     const T w = a[i] / b[i - 1];
     b[i] -= w * c[i - 1];
     r[i] -= w * r[i - 1];
   }
-  if (!(b[m - 1] != 0) || !std::isfinite(b[m - 1])) throw NumericalError("solve_tridiagonal: zero pivot");
+  if (!(b[m - 1] != 0) || !std::isfinite(b[m - 1])) throw NumericalError(tridiagonal_pivot_message);
   r[m - 1] /= b[m - 1];
   for (std::size_t i = m - 1; i-- > 0;) r[i] = (r[i] - c[i] * r[i + 1]) / b[i];
 }

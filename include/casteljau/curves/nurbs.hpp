@@ -469,7 +469,6 @@ Pieces<T, D> pieces(const Nurbs<T, D>& c) {
 }
 
 static_assert(DifferentiableCurve<Nurbs<double, 2>>);
-static_assert(ControlPolygonCurve<Nurbs<double, 3>>);
 static_assert(Curve<Nurbs<double, 1>>);
 static_assert(PiecewiseBezierCurve<Nurbs<double, 2>>);
 static_assert(SplittableCurve<Nurbs<double, 2>>);

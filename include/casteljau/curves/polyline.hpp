@@ -108,7 +108,6 @@ Pieces<T, D> pieces(const Polyline<T, D>& c) {
 }
 
 static_assert(DifferentiableCurve<Polyline<double, 2>>);
-static_assert(ControlPolygonCurve<Polyline<double, 3>>);
 static_assert(Curve<Polyline<double, 1>>);
 static_assert(PiecewiseBezierCurve<Polyline<double, 2>>);
 

@@ -403,6 +403,5 @@ class RationalBezier {
 
 static_assert(DifferentiableCurve<RationalBezier<double, 2>>);
 static_assert(SplittableCurve<RationalBezier<double, 3>>);
-static_assert(ControlPolygonCurve<RationalBezier<double, 2>>);
 
 }  // namespace casteljau
