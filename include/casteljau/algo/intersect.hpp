@@ -886,6 +886,8 @@ struct RawOverlap {
   CurveOverlap<T> o;
   std::vector<Hit<T>> found;
   std::vector<std::pair<std::size_t, std::size_t>> deferred;
+  // The overlaps joined into this one (a.lo, a.hi, b_start, b_end); filled by join_overlaps.
+  std::vector<std::array<T, 4>> parts = {};
 };
 
 /// All the common points of arc i of A and arc j of B (the engine's full pass: lazy_nodes
@@ -1003,6 +1005,7 @@ void absorb(RawOverlap<T>& p, RawOverlap<T>& r) {
   p.o.b_end = r.o.b_end;
   p.found.insert(p.found.end(), r.found.begin(), r.found.end());
   p.deferred.insert(p.deferred.end(), r.deferred.begin(), r.deferred.end());
+  p.parts.insert(p.parts.end(), r.parts.begin(), r.parts.end());
 }
 
 /// Phase 3: the overlaps found arc by arc, sorted by their start on a, joined where one
@@ -1012,14 +1015,37 @@ void absorb(RawOverlap<T>& p, RawOverlap<T>& r) {
 template <class T>
 std::vector<RawOverlap<T>> join_overlaps(std::vector<RawOverlap<T>> overlaps, T la, T lb) {
   std::sort(overlaps.begin(), overlaps.end(), [](const auto& x, const auto& y) { return x.o.a.lo < y.o.a.lo; });
+  const T ma = T(1e-9) * la, mb = T(1e-9) * lb;
+  // Whether r lies inside p and runs as p does there: its a within p's, its b within the b
+  // of a part of p whose a meets r's (a sliver that two consecutive arcs of a copy moved
+  // along its tangent share with the wrong neighbour, 1e-10 long, inside the stretch that
+  // the neighbours' own overlaps cover: it broke their join, and the copy was answered as
+  // points). A stretch that a curve runs over twice is no such part: its b lies elsewhere.
+  auto inside = [&](const RawOverlap<T>& p, const RawOverlap<T>& r) {
+    const auto& o = r.o;
+    if ((o.b_end > o.b_start) != (p.o.b_end > p.o.b_start)) return false;
+    if (o.a.lo < p.o.a.lo - ma || o.a.hi > p.o.a.hi + ma) return false;
+    const T blo = std::min(o.b_start, o.b_end), bhi = std::max(o.b_start, o.b_end);
+    for (const auto& c : p.parts) {
+      if (c[0] > o.a.hi + ma || c[1] < o.a.lo - ma) continue;
+      if (std::min(c[2], c[3]) <= blo + mb && std::max(c[2], c[3]) >= bhi - mb) return true;
+    }
+    return false;
+  };
   std::vector<RawOverlap<T>> joined;
   for (auto& r : overlaps) {
     const auto& o = r.o;
+    if (r.parts.empty()) r.parts.push_back({o.a.lo, o.a.hi, o.b_start, o.b_end});
     if (!joined.empty()) {
       auto& p = joined.back();
-      if (std::abs(o.a.lo - p.o.a.hi) <= T(1e-9) * la && std::abs(o.b_start - p.o.b_end) <= T(1e-9) * lb &&
+      if (std::abs(o.a.lo - p.o.a.hi) <= ma && std::abs(o.b_start - p.o.b_end) <= mb &&
           ((o.b_end > o.b_start) == (p.o.b_end > p.o.b_start))) {
         absorb(p, r);
+        continue;
+      }
+      if (inside(p, r)) {  // its points and pairs join p's; p's ends stay
+        p.found.insert(p.found.end(), r.found.begin(), r.found.end());
+        p.deferred.insert(p.deferred.end(), r.deferred.begin(), r.deferred.end());
         continue;
       }
     }
@@ -1136,7 +1162,7 @@ std::vector<CurveOverlap<T>> confirm_overlaps(const Prepared<T>& A, const Prepar
     return false;
   };
   std::vector<CurveOverlap<T>> joined;
-  for (auto& [o, found, deferred] : candidates) {
+  for (auto& [o, found, deferred, parts] : candidates) {
     bool continues = near_beyond(ca, A, cb, B, o.a.lo, o.b_start, -(o.a.hi - o.a.lo), o.b_start - o.b_end, tol) ||
                      near_beyond(ca, A, cb, B, o.a.hi, o.b_end, o.a.hi - o.a.lo, o.b_end - o.b_start, tol);
     // On tame parts (solve_extreme) each end must be an arc end of a curve as given: a
