@@ -522,6 +522,18 @@ class HardInputTest(CliTest):
         r = self.ok("intersect", {"curves": [spline, spline]})
         self.assertEqual(r, {"intersections": [], "overlaps": [{"a": [0.0, 2.0], "b": [0.0, 2.0]}]})
 
+    def test_copy_moved_within_the_distance_is_one_overlap(self):
+        # A random curve and its copy moved by 1e-9 along x: 0.7 of the meeting distance
+        # (1e-10 of the control box's diagonal, about 14), so the copy lies within it all
+        # along: one overlap over both domains, no point. Before session 15 these answered
+        # two overlaps meeting end to end and a few "crossings" between them.
+        for n, seed in ((20, 2), (40, 3), (80, 6)):
+            rng = random.Random(seed)
+            P = [[10 * rng.random(), 10 * rng.random()] for _ in range(n + 1)]
+            moved = [[x + 1e-9, y] for x, y in P]
+            r = self.ok("intersect", {"curves": [bezier(P), bezier(moved)]})
+            self.assertEqual(r, {"intersections": [], "overlaps": [{"a": [0.0, 1.0], "b": [0.0, 1.0]}]}, (n, seed))
+
     def test_high_degree_curve_and_its_portion_are_one_overlap(self):
         # A random degree-200 curve and its portion [0.2, 0.7] re-parametrised to [0, 1]
         # (de Casteljau's triangle here, in Python's doubles): one overlap, a from 0.2 to
