@@ -508,6 +508,52 @@ class HardInputTest(CliTest):
         r = self.ok("intersect", {"curves": [bezier(P), bezier(P)]})
         self.assertEqual(r, {"intersections": [], "overlaps": [{"a": [0.0, 1.0], "b": [0.0, 1.0]}]})
 
+    def test_identical_degree_500_curves_are_one_overlap(self):
+        # Degree 500 (10 s before session 15, against 1 s for a random pair of that degree;
+        # now a fraction of a second: docs/testing.md): a Bézier curve and its copy, and a
+        # B-spline of two degree-500 pieces and its copy, each one overlap over the whole
+        # domain. Timing is not asserted.
+        rng = random.Random(500)
+        P = [[10 * rng.random(), 10 * rng.random()] for _ in range(501)]
+        r = self.ok("intersect", {"curves": [bezier(P), bezier(P)]})
+        self.assertEqual(r, {"intersections": [], "overlaps": [{"a": [0.0, 1.0], "b": [0.0, 1.0]}]})
+        Q = [[10 * rng.random(), 10 * rng.random()] for _ in range(502)]
+        spline = {"type": "bspline", "degree": 500, "knots": [0] * 501 + [1] + [2] * 501, "points": Q}
+        r = self.ok("intersect", {"curves": [spline, spline]})
+        self.assertEqual(r, {"intersections": [], "overlaps": [{"a": [0.0, 2.0], "b": [0.0, 2.0]}]})
+
+    def test_copy_moved_within_the_distance_is_one_overlap(self):
+        # A random curve and its copy moved by 1e-9 along x: 0.7 of the meeting distance
+        # (1e-10 of the control box's diagonal, about 14), so the copy lies within it all
+        # along: one overlap over both domains, no point. Before session 15 these answered
+        # two overlaps meeting end to end and a few "crossings" between them.
+        for n, seed in ((20, 2), (40, 3), (80, 6)):
+            rng = random.Random(seed)
+            P = [[10 * rng.random(), 10 * rng.random()] for _ in range(n + 1)]
+            moved = [[x + 1e-9, y] for x, y in P]
+            r = self.ok("intersect", {"curves": [bezier(P), bezier(moved)]})
+            self.assertEqual(r, {"intersections": [], "overlaps": [{"a": [0.0, 1.0], "b": [0.0, 1.0]}]}, (n, seed))
+
+    def test_high_degree_curve_and_its_portion_are_one_overlap(self):
+        # A random degree-200 curve and its portion [0.2, 0.7] re-parametrised to [0, 1]
+        # (de Casteljau's triangle here, in Python's doubles): one overlap, a from 0.2 to
+        # 0.7 against the whole of b, the same way.
+        rng = random.Random(200)
+        P = [[10 * rng.random(), 10 * rng.random()] for _ in range(201)]
+        _, right = split_points(P, 0.2)
+        portion, _ = split_points(right, 0.5 / 0.8)
+        r = self.ok("intersect", {"curves": [bezier(P), bezier(portion)]})
+        self.assertEqual(len(r["overlaps"]), 1, r["overlaps"])
+        o = r["overlaps"][0]
+        self.assertAlmostEqual(o["a"][0], 0.2, delta=1e-9)
+        self.assertAlmostEqual(o["a"][1], 0.7, delta=1e-9)
+        self.assertEqual(o["b"], [0.0, 1.0])
+        # Every other point is a crossing of P's parts outside [0.2, 0.7] with the portion:
+        # on both curves (de Casteljau at the reported parameters).
+        for h in r["intersections"]:
+            self.assertFalse(0.2 < h["t"][0] < 0.7, h)
+            self.assertLess(dist(de_casteljau(P, h["t"][0]), de_casteljau(portion, h["t"][1])), 1e-8, h)
+
     def test_answers_past_the_limit_are_refused(self):
         # A random 3,000-point polyline meets itself about 2.5 million times (a 114 MB
         # answer before): refused, naming the request's field and the limit.
