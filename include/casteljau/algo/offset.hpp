@@ -399,39 +399,39 @@ T hausdorff(const CubicForm<T>& F, const Source<T>& s, T a, T b, T stop_above) {
   return worst;
 }
 
-/// Candidate cubics for the source over [a, b] with its end points and end tangent
-/// directions: the least-squares fit of the two handle lengths to the normal distances of
-/// 15 interior samples (Gauss-Newton, below; the fixed-tangent fit of [Schneider90] made
-/// geometric), when its lengths are positive, then the Hermite cubic (handles the
-/// source's velocity times (b - a) / 3). The fit stops when a step moves the cubic by
-/// less than 1e-2 of the tolerance `tol` (the handles' step times the largest Bernstein
-/// weight 4/9, or twice the largest movement along the normals at the samples, the
-/// smaller), or when the cubic cannot come within the tolerance (below).
+/// The two candidate cubics for the source over [a, b] share its end points and end
+/// tangent directions (Ends): the Hermite cubic (handles the source's velocity times
+/// (b - a) / 3) and the least-squares fit of the two handle lengths to the normal
+/// distances of 15 interior samples (fitted: Gauss-Newton, below; the fixed-tangent fit
+/// of [Schneider90] made geometric), when its lengths are positive. The fit stops when a
+/// step moves the cubic by less than 1e-2 of the tolerance `tol` (the handles' step times
+/// the largest Bernstein weight 4/9, or twice the largest movement along the normals at
+/// the samples, the smaller), or when the cubic cannot come within the tolerance (below).
 template <class T>
-struct Candidates {
-  std::array<CubicForm<T>, 2> c;
-  int n = 0;
-  void push(const CubicForm<T>& f) { c[static_cast<std::size_t>(n++)] = f; }
+struct Ends {
+  Point<T, 2> P0, P3;
+  Vector<T, 2> T0, T3;
+  T ha, hb;
+  Ends(const Source<T>& s, T a, T b) : P0(s.point(a)), P3(s.point(b)), T0(s.tangent(a)), T3(s.tangent(b)) {
+    const T h = (b - a) / 3;
+    ha = length(s.velocity(a)) * h, hb = length(s.velocity(b)) * h;
+  }
+  CubicForm<T> hermite() const { return CubicForm<T>(P0, P0 + T0 * ha, P3 - T3 * hb, P3); }
 };
 
+/// The least-squares candidate (above), or nothing where the fit finds no positive lengths.
 template <class T>
-Candidates<T> candidates(const Source<T>& s, T a, T b, T tol) {
-  const Point<T, 2> P0 = s.point(a), P3 = s.point(b);
-  const Vector<T, 2> T0 = s.tangent(a), T3 = s.tangent(b);
-  const T h = (b - a) / 3;
-  const T ha = length(s.velocity(a)) * h, hb = length(s.velocity(b)) * h;
-  Candidates<T> out;
-  const CubicForm<T> hermite(P0, P0 + T0 * ha, P3 - T3 * hb, P3);
+std::optional<CubicForm<T>> fitted(const Source<T>& s, T a, T b, const Ends<T>& E, T tol) {
+  const Point<T, 2> P0 = E.P0, P3 = E.P3;
+  const Vector<T, 2> T0 = E.T0, T3 = E.T3;
+  const T ha = E.ha, hb = E.hb;
   constexpr int m = 15;
   std::array<Point<T, 2>, m + 2> q;
   std::array<T, m + 2> u;
   for (int j = 0; j <= m + 1; ++j) q[j] = j == 0 ? P0 : j == m + 1 ? P3 : s.point(a + (b - a) * T(j) / (m + 1));
   u[0] = 0;
   for (int j = 1; j <= m + 1; ++j) u[j] = u[j - 1] + length(q[j] - q[j - 1]);
-  if (!(u[m + 1] > 0)) {
-    out.push(hermite);
-    return out;
-  }
+  if (!(u[m + 1] > 0)) return std::nullopt;
   for (int j = 1; j <= m + 1; ++j) u[j] /= u[m + 1];
   // Gauss-Newton on the handle lengths (alpha, beta) for the normal distances of the
   // samples to the cubic: each sample projected on the current cubic (Newton on
@@ -479,9 +479,8 @@ Candidates<T> candidates(const Source<T>& s, T a, T b, T tol) {
     alpha = al, beta = be, ok = true;
     if (done) break;
   }
-  if (ok) out.push(CubicForm<T>(P0, P0 + T0 * alpha, P3 - T3 * beta, P3));
-  out.push(hermite);  // last: usually the worse, then rejected on its first samples
-  return out;
+  if (ok) return CubicForm<T>(P0, P0 + T0 * alpha, P3 - T3 * beta, P3);
+  return std::nullopt;
 }
 
 /// The fitter's state: the raw offset's cubics and a reversed flag per cubic.
@@ -756,18 +755,32 @@ struct Screened {
   T error;  ///< the scan's estimate (the choice of the end), or the measure where the scan failed
 };
 
-/// The candidate over [a, b] whose scan estimates the smallest error (a failed scan
-/// measured by projections), with that estimate.
+/// A candidate over [a, b] and its scan's estimate (a failed scan measured by
+/// projections): the first whose estimate is within stop_above, else the one with the
+/// smaller estimate. `hermite_first`: the Hermite cubic is screened first, and the fit is
+/// made only where it fails (for the last part of a stretch, which is often a whole glyph
+/// piece that the Hermite cubic already follows: a third of the glyphs' time went to fits
+/// whose cubic was not needed); otherwise the fit first (the longer reach in the middle of
+/// the search, where the Hermite cubic is rarely within the tolerance).
 template <class T>
-Screened<T> best_screened(const Source<T>& s, T a, T b, T stop_above) {
-  const Candidates<T> cs = candidates(s, a, b, stop_above);
+Screened<T> best_screened(const Source<T>& s, T a, T b, T stop_above, bool hermite_first) {
+  const Ends<T> E(s, a, b);
   std::optional<Screened<T>> best;
-  for (int i = 0; i < cs.n; ++i) {
-    const CubicForm<T>& c = cs.c[static_cast<std::size_t>(i)];
+  const auto screen = [&](const CubicForm<T>& c) {
     const T limit = best ? std::min(stop_above, best->error) : stop_above;
     NormalScan<T> r = normal_scan(c, s, a, b, limit);
     const T e = r.ok ? r.estimate : hausdorff(c, s, a, b, limit);
     if (!best || e < best->error) best = Screened<T>{c, r, e};
+    return best->error <= stop_above;
+  };
+  if (hermite_first) {
+    if (screen(E.hermite())) return std::move(*best);
+    if (const auto f = fitted(s, a, b, E, stop_above)) screen(*f);
+  } else {
+    if (const auto f = fitted(s, a, b, E, stop_above)) {
+      if (screen(*f)) return std::move(*best);
+    }
+    screen(E.hermite());
   }
   return std::move(*best);
 }
@@ -786,16 +799,16 @@ T certify(Screened<T>& g, const Source<T>& s, T a, T b, T stop_above) {
 /// The best candidate over [a, b] and its measured error (stop_above as measured's).
 template <class T>
 std::pair<Bezier<T, 2>, T> best_fit(const Source<T>& s, T a, T b, T stop_above, bool hermite_only) {
-  const Candidates<T> cs = candidates(s, a, b, stop_above);
-  const int first = hermite_only ? cs.n - 1 : 0;
+  const Ends<T> E(s, a, b);
   std::optional<CubicForm<T>> best;
   T err = std::numeric_limits<T>::infinity();
-  for (int i = first; i < cs.n; ++i) {
-    const CubicForm<T>& c = cs.c[static_cast<std::size_t>(i)];
-    const T e = measured(c, s, a, b, std::min(stop_above, err));
-    if (!(e >= err)) err = e, best = c;
+  if (!hermite_only) {
+    if (const auto f = fitted(s, a, b, E, stop_above)) err = measured(*f, s, a, b, stop_above), best = *f;
   }
-  if (!best) best = cs.c[static_cast<std::size_t>(first)], err = std::numeric_limits<T>::infinity();
+  const CubicForm<T> h = E.hermite();
+  const T e = measured(h, s, a, b, std::min(stop_above, err));
+  if (!(e >= err)) err = e, best = h;
+  if (!best) best = h, err = std::numeric_limits<T>::infinity();
   return {best->bezier(), err};
 }
 
@@ -850,7 +863,7 @@ void approximate(const Source<T>& s, OffsetFit fit, Raw<T>& raw) {
         throw InvalidArgument("tolerance", "cannot be met by cubics near the offset's parameter " + std::to_string(a) +
                                                " of a piece (below the rounding of the computation): use a larger tolerance");
       }
-      Screened<T> g = best_screened(s, a, x, tol);
+      Screened<T> g = best_screened(s, a, x, tol, x == s.hi);
       T e = g.error;
       if (e <= tol) e = certify(g, s, a, x, tol);
       if (e <= tol) {
