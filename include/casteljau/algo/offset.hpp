@@ -992,9 +992,10 @@ template <class T, std::size_t N>
 struct Scratch {
   std::array<T, N> small;
   std::vector<T> large;
-  T* p;
-  explicit Scratch(std::size_t n) : p(small.data()) {
+  T* p = nullptr;
+  explicit Scratch(std::size_t n) {
     if (n > N) large.resize(n), p = large.data();
+    else p = small.data();
   }
   T& operator[](int i) { return p[i]; }
   const T& operator[](int i) const { return p[i]; }
