@@ -399,39 +399,39 @@ T hausdorff(const CubicForm<T>& F, const Source<T>& s, T a, T b, T stop_above) {
   return worst;
 }
 
-/// Candidate cubics for the source over [a, b] with its end points and end tangent
-/// directions: the least-squares fit of the two handle lengths to the normal distances of
-/// 15 interior samples (Gauss-Newton, below; the fixed-tangent fit of [Schneider90] made
-/// geometric), when its lengths are positive, then the Hermite cubic (handles the
-/// source's velocity times (b - a) / 3). The fit stops when a step moves the cubic by
-/// less than 1e-2 of the tolerance `tol` (the handles' step times the largest Bernstein
-/// weight 4/9, or twice the largest movement along the normals at the samples, the
-/// smaller), or when the cubic cannot come within the tolerance (below).
+/// The two candidate cubics for the source over [a, b] share its end points and end
+/// tangent directions (Ends): the Hermite cubic (handles the source's velocity times
+/// (b - a) / 3) and the least-squares fit of the two handle lengths to the normal
+/// distances of 15 interior samples (fitted: Gauss-Newton, below; the fixed-tangent fit
+/// of [Schneider90] made geometric), when its lengths are positive. The fit stops when a
+/// step moves the cubic by less than 1e-2 of the tolerance `tol` (the handles' step times
+/// the largest Bernstein weight 4/9, or twice the largest movement along the normals at
+/// the samples, the smaller), or when the cubic cannot come within the tolerance (below).
 template <class T>
-struct Candidates {
-  std::array<CubicForm<T>, 2> c;
-  int n = 0;
-  void push(const CubicForm<T>& f) { c[static_cast<std::size_t>(n++)] = f; }
+struct Ends {
+  Point<T, 2> P0, P3;
+  Vector<T, 2> T0, T3;
+  T ha, hb;
+  Ends(const Source<T>& s, T a, T b) : P0(s.point(a)), P3(s.point(b)), T0(s.tangent(a)), T3(s.tangent(b)) {
+    const T h = (b - a) / 3;
+    ha = length(s.velocity(a)) * h, hb = length(s.velocity(b)) * h;
+  }
+  CubicForm<T> hermite() const { return CubicForm<T>(P0, P0 + T0 * ha, P3 - T3 * hb, P3); }
 };
 
+/// The least-squares candidate (above), or nothing where the fit finds no positive lengths.
 template <class T>
-Candidates<T> candidates(const Source<T>& s, T a, T b, T tol) {
-  const Point<T, 2> P0 = s.point(a), P3 = s.point(b);
-  const Vector<T, 2> T0 = s.tangent(a), T3 = s.tangent(b);
-  const T h = (b - a) / 3;
-  const T ha = length(s.velocity(a)) * h, hb = length(s.velocity(b)) * h;
-  Candidates<T> out;
-  const CubicForm<T> hermite(P0, P0 + T0 * ha, P3 - T3 * hb, P3);
+std::optional<CubicForm<T>> fitted(const Source<T>& s, T a, T b, const Ends<T>& E, T tol) {
+  const Point<T, 2> P0 = E.P0, P3 = E.P3;
+  const Vector<T, 2> T0 = E.T0, T3 = E.T3;
+  const T ha = E.ha, hb = E.hb;
   constexpr int m = 15;
   std::array<Point<T, 2>, m + 2> q;
   std::array<T, m + 2> u;
   for (int j = 0; j <= m + 1; ++j) q[j] = j == 0 ? P0 : j == m + 1 ? P3 : s.point(a + (b - a) * T(j) / (m + 1));
   u[0] = 0;
   for (int j = 1; j <= m + 1; ++j) u[j] = u[j - 1] + length(q[j] - q[j - 1]);
-  if (!(u[m + 1] > 0)) {
-    out.push(hermite);
-    return out;
-  }
+  if (!(u[m + 1] > 0)) return std::nullopt;
   for (int j = 1; j <= m + 1; ++j) u[j] /= u[m + 1];
   // Gauss-Newton on the handle lengths (alpha, beta) for the normal distances of the
   // samples to the cubic: each sample projected on the current cubic (Newton on
@@ -479,15 +479,18 @@ Candidates<T> candidates(const Source<T>& s, T a, T b, T tol) {
     alpha = al, beta = be, ok = true;
     if (done) break;
   }
-  if (ok) out.push(CubicForm<T>(P0, P0 + T0 * alpha, P3 - T3 * beta, P3));
-  out.push(hermite);  // last: usually the worse, then rejected on its first samples
-  return out;
+  if (ok) return CubicForm<T>(P0, P0 + T0 * alpha, P3 - T3 * beta, P3);
+  return std::nullopt;
 }
+
+/// A cubic's four control points (the raw offset's cubics: no allocation per cubic).
+template <class T>
+using Quad = std::array<Point<T, 2>, 4>;
 
 /// The fitter's state: the raw offset's cubics and a reversed flag per cubic.
 template <class T>
 struct Raw {
-  std::vector<Bezier<T, 2>> cubics;
+  std::vector<Quad<T>> cubics;
   std::vector<bool> reversed;
   T max_error = 0;
   T tolerance = 0;
@@ -496,20 +499,15 @@ struct Raw {
   /// untrimmed swallowtail left out, see offset()): its fit gets that much less tolerance.
   T start_shift = 0;
 
-  void push(Bezier<T, 2> B, bool rev) {
-    const auto& Q = B.points();
+  void push(Quad<T> Q, bool rev) {
     const T tiny = 64 * std::numeric_limits<T>::epsilon();  // in the unit frame
     if (std::all_of(Q.begin(), Q.end(), [&](const auto& p) { return norm(p - Q.front()) <= tiny; })) return;  // a point
     if (cubics.size() >= max_segments) {
       throw InvalidArgument("tolerance", "the offset needs more than " + std::to_string(max_segments) +
                                              " cubic segments at this tolerance (the limit): use a larger tolerance");
     }
-    if (!cubics.empty()) {  // continuous: the previous end (equal up to rounding at G1 joints)
-      std::vector<Point<T, 2>> P = B.points();
-      P[0] = cubics.back().points().back();
-      B = Bezier<T, 2>(std::move(P));
-    }
-    cubics.push_back(std::move(B));
+    if (!cubics.empty()) Q[0] = cubics.back()[3];  // continuous: the previous end (equal up to rounding at G1 joints)
+    cubics.push_back(Q);
     reversed.push_back(rev);
   }
 };
@@ -532,27 +530,30 @@ struct Raw {
 /// 1 / cos(angle between the curves), 1 + 5e-5 for an angle of 1e-2 (a cubic within 1e-3
 /// of a unit curve).
 ///
-/// Sampling: m = 33 equal parts of [a, b], and every part whose feet are more than 1.5 / m
+/// Sampling: m = 20 equal parts of [a, b], and every part whose feet are more than 1.5 / m
 /// apart on the cubic halved (three times at most; a part still that long fails the scan:
 /// the feet jump, over an excursion of the cubic that no normal line meets first), so that both curves are sampled at
-/// least as densely as 33 parts of either parameter (where the offset runs fast, near a
+/// least as densely as 20 parts of either parameter (where the offset runs fast, near a
 /// sharp turn of the curve on its convex side, equal parts of t are long on it). The
 /// error of a fit is a smooth function with a few bumps (at most about four between the
-/// interpolated ends), which these parts resolve; the top of every local maximum of the
-/// samples within 80% of the largest is then found over its two parts by successive
-/// parabolas through the largest sample and its neighbours (at most four more feet; the
-/// last parabola's own top counted too; golden section, 12 steps, where three samples make
-/// no cap; a bump 8 parts wide sampled half a part off its top is up to 1 - cos(pi / 8) =
-/// 7.6% low, so a lower sample can sit on a higher bump).
+/// interpolated ends: each 5 parts wide or more), which these parts resolve; the top of
+/// every local maximum of the samples within 80% of the largest is then found over its two
+/// parts by successive parabolas through the largest sample and its neighbours (at most
+/// four more feet; the last parabola's own top counted too; golden section, 12 steps, where
+/// three samples make no cap; a bump 5 parts wide sampled half a part off its top is up to
+/// 1 - cos(pi / 10) = 4.9% low, one 4 parts wide 7.6%, so a lower sample can sit on a
+/// higher bump, within the 20% margin). Session 14 scanned 33 parts: the bench's
+/// independent measure (W11, docs/performance.md) finds the same 0 over the tolerance with
+/// 20, and the W11 counts within 0.1%.
 ///
 /// A foot that Newton does not find inside (0, 1) (the normal line misses the cubic, or
 /// the cubic runs across it), or feet out of order, make the scan fail (ok = false): the
 /// caller measures by projections instead (hausdorff).
 template <class T>
 struct NormalScan {
-  static constexpr int parts = 33;
+  static constexpr int parts = 20;
   static constexpr int capacity = 8 * parts + 1;
-  std::array<T, capacity> t{}, u{}, e{};  // source parameter, foot on the cubic, error
+  std::array<T, capacity> t, u, e;  // source parameter, foot on the cubic, error (the first n set)
   int n = 0;
   T worst = 0;     ///< the largest sampled error (the scan stops at the first above stop_above)
   T estimate = 0;  ///< worst with the parabola through the largest sample and its neighbours
@@ -610,9 +611,9 @@ bool normal_foot(const CubicForm<T>& F, const Source<T>& s, T t, T guess, T ul, 
 
 /// The scan of NormalScan (its samples, their errors, stopping above stop_above).
 template <class T>
-NormalScan<T> normal_scan(const CubicForm<T>& F, const Source<T>& s, T a, T b, T stop_above) {
+void normal_scan(const CubicForm<T>& F, const Source<T>& s, T a, T b, T stop_above, NormalScan<T>& r) {
   constexpr int m = NormalScan<T>::parts;
-  NormalScan<T> r;
+  r.n = 0, r.worst = 0, r.estimate = 0, r.ok = true;
   // The equal parts first (feet from the last foot, extrapolated).
   std::array<T, m + 1> t0{}, u0{}, e0{};
   t0[0] = a, u0[0] = 0, t0[m] = b, u0[m] = 1;
@@ -622,18 +623,18 @@ NormalScan<T> normal_scan(const CubicForm<T>& F, const Source<T>& s, T a, T b, T
     t0[i] = a + (b - a) * T(i) / m;
     if (!normal_foot(F, s, t0[i], u0[i - 1] + du, u0[i - 1], T(1), u0[i], e0[i])) {
       r.ok = false;
-      return r;
+      return;
     }
     if (e0[i] > r.worst) r.worst = e0[i], at = i;
     if (r.worst > stop_above) {
       r.estimate = r.worst;
-      return r;
+      return;
     }
     du = u0[i] - u0[i - 1];
   }
   if (!(u0[m] > u0[m - 1])) {
     r.ok = false;
-    return r;
+    return;
   }
   r.estimate = r.worst;
   if (at > 1 && at < m - 1) {  // the parabola through the largest sample and its neighbours
@@ -677,7 +678,7 @@ NormalScan<T> normal_scan(const CubicForm<T>& F, const Source<T>& s, T a, T b, T
     const T polygon = length(F.P[1] - F.P[0]) + length(F.P[2] - F.P[1]) + length(F.P[3] - F.P[2]);
     if (polygon > T(2.5) * through) r.ok = false;
   }
-  return r;
+  return;
 }
 
 /// The measured error of a scan that is within stop_above: the top of every local maximum
@@ -739,7 +740,8 @@ T normal_peaks(const CubicForm<T>& F, const Source<T>& s, NormalScan<T>& r, T st
 /// ways (hausdorff). Stops above stop_above (a rejected cubic).
 template <class T>
 T measured(const CubicForm<T>& F, const Source<T>& s, T a, T b, T stop_above) {
-  NormalScan<T> r = normal_scan(F, s, a, b, stop_above);
+  NormalScan<T> r;
+  normal_scan(F, s, a, b, stop_above, r);
   if (r.ok && r.worst > stop_above) return r.worst;
   if (r.ok) {
     const T e = normal_peaks(F, s, r, stop_above);
@@ -756,20 +758,36 @@ struct Screened {
   T error;  ///< the scan's estimate (the choice of the end), or the measure where the scan failed
 };
 
-/// The candidate over [a, b] whose scan estimates the smallest error (a failed scan
-/// measured by projections), with that estimate.
+/// A candidate over [a, b] and its scan's estimate (a failed scan measured by
+/// projections): the first whose estimate is within stop_above, else the one with the
+/// smaller estimate. `hermite_first`: the Hermite cubic is screened first, and the fit is
+/// made only where it fails (for the last part of a stretch, which is often a whole glyph
+/// piece that the Hermite cubic already follows: a third of the glyphs' time went to fits
+/// whose cubic was not needed); otherwise the fit first (the longer reach in the middle of
+/// the search, where the Hermite cubic is rarely within the tolerance).
 template <class T>
-Screened<T> best_screened(const Source<T>& s, T a, T b, T stop_above) {
-  const Candidates<T> cs = candidates(s, a, b, stop_above);
-  std::optional<Screened<T>> best;
-  for (int i = 0; i < cs.n; ++i) {
-    const CubicForm<T>& c = cs.c[static_cast<std::size_t>(i)];
+Screened<T>& best_screened(const Source<T>& s, T a, T b, T stop_above, bool hermite_first, std::array<Screened<T>, 2>& work) {
+  const Ends<T> E(s, a, b);
+  Screened<T>* best = nullptr;  // the scans (a few kB each) stay where they were made
+  const auto screen = [&](const CubicForm<T>& c) {
+    Screened<T>& g = best == &work[0] ? work[1] : work[0];
     const T limit = best ? std::min(stop_above, best->error) : stop_above;
-    NormalScan<T> r = normal_scan(c, s, a, b, limit);
-    const T e = r.ok ? r.estimate : hausdorff(c, s, a, b, limit);
-    if (!best || e < best->error) best = Screened<T>{c, r, e};
+    g.cubic = c;
+    normal_scan(c, s, a, b, limit, g.scan);
+    g.error = g.scan.ok ? g.scan.estimate : hausdorff(c, s, a, b, limit);
+    if (!best || g.error < best->error) best = &g;
+    return best->error <= stop_above;
+  };
+  if (hermite_first) {
+    if (screen(E.hermite())) return *best;
+    if (const auto f = fitted(s, a, b, E, stop_above)) screen(*f);
+  } else {
+    if (const auto f = fitted(s, a, b, E, stop_above)) {
+      if (screen(*f)) return *best;
+    }
+    screen(E.hermite());
   }
-  return std::move(*best);
+  return *best;
 }
 
 /// The measured error of a screened candidate within stop_above: its scan's peaks (or the
@@ -785,18 +803,18 @@ T certify(Screened<T>& g, const Source<T>& s, T a, T b, T stop_above) {
 
 /// The best candidate over [a, b] and its measured error (stop_above as measured's).
 template <class T>
-std::pair<Bezier<T, 2>, T> best_fit(const Source<T>& s, T a, T b, T stop_above, bool hermite_only) {
-  const Candidates<T> cs = candidates(s, a, b, stop_above);
-  const int first = hermite_only ? cs.n - 1 : 0;
+std::pair<Quad<T>, T> best_fit(const Source<T>& s, T a, T b, T stop_above, bool hermite_only) {
+  const Ends<T> E(s, a, b);
   std::optional<CubicForm<T>> best;
   T err = std::numeric_limits<T>::infinity();
-  for (int i = first; i < cs.n; ++i) {
-    const CubicForm<T>& c = cs.c[static_cast<std::size_t>(i)];
-    const T e = measured(c, s, a, b, std::min(stop_above, err));
-    if (!(e >= err)) err = e, best = c;
+  if (!hermite_only) {
+    if (const auto f = fitted(s, a, b, E, stop_above)) err = measured(*f, s, a, b, stop_above), best = *f;
   }
-  if (!best) best = cs.c[static_cast<std::size_t>(first)], err = std::numeric_limits<T>::infinity();
-  return {best->bezier(), err};
+  const CubicForm<T> h = E.hermite();
+  const T e = measured(h, s, a, b, std::min(stop_above, err));
+  if (!(e >= err)) err = e, best = h;
+  if (!best) best = h, err = std::numeric_limits<T>::infinity();
+  return {best->P, err};
 }
 
 /// Approximates the whole source by cubics within the tolerance into raw.
@@ -809,7 +827,7 @@ void approximate(const Source<T>& s, OffsetFit fit, Raw<T>& raw) {
       if (n > raw.max_segments) {
         throw InvalidArgument("tolerance", "the reference subdivision needs more than " + std::to_string(raw.max_segments) + " cubics");
       }
-      std::vector<Bezier<T, 2>> parts;
+      std::vector<Quad<T>> parts;
       T worst = 0;
       bool ok = true;
       for (std::size_t i = 0; i < n && ok; ++i) {
@@ -821,7 +839,7 @@ void approximate(const Source<T>& s, OffsetFit fit, Raw<T>& raw) {
       }
       if (ok) {
         raw.max_error = std::max(raw.max_error, worst);
-        for (auto& B : parts) raw.push(std::move(B), s.reversed);
+        for (const auto& B : parts) raw.push(B, s.reversed);
         return;
       }
     }
@@ -830,8 +848,9 @@ void approximate(const Source<T>& s, OffsetFit fit, Raw<T>& raw) {
   // found from a model of the error (growing as about the fifth power of the step on
   // smooth parts: each next end proposed from the last error, the first from the last
   // step) inside a bracket [lo, hi] (within, over; bisection where the model fails), until
-  // an end is measured at 90% of the tolerance or more, or the bracket is within 1/64 of
-  // the step. Each end's candidates are compared by their normal scans' estimates (the
+  // an end is measured at 70% of the tolerance or more, or the bracket is within 1/16 of
+  // the step (90% and 1/64 made 0.7% fewer cubics on W11's random cubics for 1.25 times
+  // the instructions: the band [0.9, 1] of the error is 2% of the step). Each end's candidates are compared by their normal scans' estimates (the
   // largest sample and a parabola at its top); the best, when estimated within the
   // tolerance, is measured (its scan's peaks: see NormalScan), so the cubic kept needs no
   // further check.
@@ -843,23 +862,24 @@ void approximate(const Source<T>& s, OffsetFit fit, Raw<T>& raw) {
     const T tol = full_tol - shift;  // the first cubic after a stretch left out: less
     T lo = a, hi = s.hi;
     bool hi_tested = false;
-    std::optional<Screened<T>> B;
+    std::optional<std::pair<CubicForm<T>, T>> B;  // the longest cubic within the tolerance, its error
+    std::array<Screened<T>, 2> work;
     T x = std::min(s.hi, a + last_step);
     for (int it = 0; it < 200; ++it) {
       if (x - a < min_step) {
         throw InvalidArgument("tolerance", "cannot be met by cubics near the offset's parameter " + std::to_string(a) +
                                                " of a piece (below the rounding of the computation): use a larger tolerance");
       }
-      Screened<T> g = best_screened(s, a, x, tol);
+      Screened<T>& g = best_screened(s, a, x, tol, x == s.hi, work);
       T e = g.error;
       if (e <= tol) e = certify(g, s, a, x, tol);
       if (e <= tol) {
-        lo = x, g.error = e, B = std::move(g);
-        if (x == s.hi || e >= T(0.9) * tol) break;
+        lo = x, B = std::pair{g.cubic, e};
+        if (x == s.hi || e >= T(0.7) * tol) break;
       } else {
         hi = x, hi_tested = true;
       }
-      if (B && hi_tested && hi - lo <= (lo - a) / 64) break;
+      if (B && hi_tested && hi - lo <= (lo - a) / 16) break;
       T next = std::numeric_limits<T>::quiet_NaN();
       if (std::isfinite(e) && e > 0) next = a + (x - a) * std::pow(T(0.95) * tol / e, T(0.2));
       if (!(next > lo)) next = lo + (hi - lo) / 2;
@@ -872,8 +892,8 @@ void approximate(const Source<T>& s, OffsetFit fit, Raw<T>& raw) {
       throw InvalidArgument("tolerance", "cannot be met by cubics near the offset's parameter " + std::to_string(a) +
                                              " of a piece (below the rounding of the computation): use a larger tolerance");
     }
-    raw.max_error = std::max(raw.max_error, B->error + shift);
-    raw.push(B->cubic.bezier(), s.reversed);
+    raw.max_error = std::max(raw.max_error, B->second + shift);
+    raw.push(B->first.P, s.reversed);
     raw.start_shift = 0;
     last_step = lo - a;
     a = lo;
@@ -908,9 +928,9 @@ T turn(const Vector<T, 2>& u, const Vector<T, 2>& v) {
 
 /// Cubics of a straight line a -> b (control points at thirds).
 template <class T>
-Bezier<T, 2> line(const Point<T, 2>& a, const Point<T, 2>& b) {
+Quad<T> line(const Point<T, 2>& a, const Point<T, 2>& b) {
   const Vector<T, 2> v = b - a;
-  return Bezier<T, 2>({a, a + v / T(3), a + v * (T(2) / 3), b});
+  return Quad<T>{a, a + v / T(3), a + v * (T(2) / 3), b};
 }
 
 /// The join at a corner (d != 0) into raw: nothing where the tangents agree within 1e-9
@@ -967,6 +987,20 @@ struct Stretch {
   Vector<T, 2> t_lo, t_hi;  // the curve's unit tangents (limits) at the ends
 };
 
+/// n values on the stack up to N, on the heap beyond (the grids of stretches()).
+template <class T, std::size_t N>
+struct Scratch {
+  std::array<T, N> small;
+  std::vector<T> large;
+  T* p = nullptr;
+  explicit Scratch(std::size_t n) {
+    if (n > N) large.resize(n), p = large.data();
+    else p = small.data();
+  }
+  T& operator[](int i) { return p[i]; }
+  const T& operator[](int i) const { return p[i]; }
+};
+
 template <class T, class Piece>
 std::vector<Stretch<T>> stretches(const Piece& c, T d, T tiny) {
   const int n = c.degree();
@@ -978,8 +1012,7 @@ std::vector<Stretch<T>> stretches(const Piece& c, T d, T tiny) {
     const T s = length(d1);
     return 1 - d * cross(d1, d2) / (s * s * s);
   };
-  std::vector<T> grid(M + 1);
-  std::vector<T> sp(M + 1);
+  Scratch<T, 129> grid(static_cast<std::size_t>(M) + 1), sp(static_cast<std::size_t>(M) + 1);
   T top = 0;
   for (int j = 0; j <= M; ++j) grid[j] = T(j) / M, sp[j] = speed(grid[j]), top = std::max(top, sp[j]);
   // A zero of the speed within one grid step of t makes |C'(t)| at most the step times
@@ -1006,15 +1039,40 @@ std::vector<Stretch<T>> stretches(const Piece& c, T d, T tiny) {
     }
   }
   cusps.push_back(T(1));
+  // A cubic piece (or one of lower degree) whose 1 - d kappa is surely positive has no
+  // cusp of the offset, and its grid of 1 - d kappa is not needed (most pieces: on the
+  // convex side of the curve d kappa <= 0; elsewhere, mostly, |d| is well under the
+  // radius of curvature). d kappa = d cross(C', C'') / |C'|^3, whose numerator is the
+  // quadratic 2 cross(c1, c2) + 6 cross(c1, c3) t + 6 cross(c2, c3) t^2 in the power basis
+  // (its largest value on [0, 1] exactly: the ends and the vertex), whose denominator is
+  // at least the cube of a lower bound of the speed: the grid's smallest speed less half a
+  // step times max |C''| (the speed is Lipschitz with that constant).
+  bool positive = false;
+  if constexpr (PieceForm<T, Piece>::polynomial) {
+    if (form.cubic && d != 0) {
+      const auto& pc = form.pc;
+      const T k0 = 2 * cross(pc[1], pc[2]), k1 = 6 * cross(pc[1], pc[3]), k2 = 6 * cross(pc[2], pc[3]);
+      const auto num = [&](T t) { return d * (k0 + t * (k1 + t * k2)); };
+      T top_num = std::max(num(0), num(1));
+      if (k2 != 0) {
+        const T tv = -k1 / (2 * k2);
+        if (tv > 0 && tv < 1) top_num = std::max(top_num, num(tv));
+      }
+      T low = std::numeric_limits<T>::infinity();
+      for (int j = 0; j <= M; ++j) low = std::min(low, sp[j]);
+      low -= form.second_bound() / (2 * T(M));
+      positive = top_num <= 0 || (low > 0 && top_num < T(0.5) * low * low * low);
+    }
+  }
   std::vector<Stretch<T>> out;
   for (std::size_t i = 0; i + 1 < cusps.size(); ++i) {
     const T a = cusps[i], b = cusps[i + 1];
     // The offset's cusps on (a, b): sign changes of g on a grid, and near-zero minima of |g|.
     std::vector<T> cuts{a};
-    if (d != 0) {
+    if (d != 0 && !positive) {
       const int K = M;
       const T h = (b - a) / K;
-      std::vector<T> gv(K + 1);
+      Scratch<T, 129> gv(static_cast<std::size_t>(K) + 1);
       for (int j = 0; j <= K; ++j) {
         const T t = a + h * T(j) + (j == 0 ? h / 1024 : j == K ? -h / 1024 : T(0));  // off the cusps, where g is undefined
         gv[j] = g(t);
@@ -1026,6 +1084,7 @@ std::vector<Stretch<T>> stretches(const Piece& c, T d, T tiny) {
           const bool neg_lo = g(lo) < 0;
           for (int k = 0; k < 80 && lo < hi; ++k) {
             const T mid = (lo + hi) / 2;
+            if (!(mid > lo && mid < hi)) break;  // adjacent doubles: done
             if ((g(mid) < 0) == neg_lo) lo = mid; else hi = mid;
           }
           cuts.push_back((lo + hi) / 2);
@@ -1208,7 +1267,7 @@ double offset_segments_estimate(const Pieces<T, 2>& curve, T distance, T toleran
 /// fit to 15 samples or of the Hermite cubic, whichever is closer. Each candidate is
 /// measured along the offset's normal lines (Tiller-Hanson's measure; see
 /// detail::offset::NormalScan): where those lines meet the cubic in order from end to end,
-/// the largest distance along them bounds the distance both ways, so one scan of 33 or more
+/// the largest distance along them bounds the distance both ways, so one scan of 20 or more
 /// feet, the tops of its bumps refined (successive parabolas), measures the cubic (the
 /// projections both ways, detail::offset::hausdorff, where the lines do not meet it in
 /// order). The end is chosen from the scans' estimates with a model of the error's growth
@@ -1351,9 +1410,8 @@ OffsetCurve<T> offset(const Pieces<T, 2>& curve, const OffsetOptions<T>& o) {
   const bool closed = norm(last_at - first_at) <= T(1e-10);
   if (closed && d != 0) join(Corner<T>{first_at, *prev, *first}, o, d, raw);
   if (closed && !raw.cubics.empty()) {  // the last end exactly on the first start
-    std::vector<Point<T, 2>> P = raw.cubics.back().points();
-    const Point<T, 2> start = raw.cubics.front().points().front();
-    if (norm(P.back() - start) <= tol) P.back() = start, raw.cubics.back() = Bezier<T, 2>(std::move(P));
+    const Point<T, 2> start = raw.cubics.front()[0];
+    if (norm(raw.cubics.back()[3] - start) <= tol) raw.cubics.back()[3] = start;
   }
   if (raw.cubics.empty()) {
     throw InvalidArgument("distance", "the offset is a single point (|distance| equals the radius of curvature all along)");
@@ -1361,38 +1419,38 @@ OffsetCurve<T> offset(const Pieces<T, 2>& curve, const OffsetOptions<T>& o) {
   OffsetCurve<T> out;
   out.raw_segments = raw.cubics.size();
   out.max_error = raw.max_error / scale;
-  std::vector<Bezier<T, 2>> kept = raw.cubics;
+  std::vector<Quad<T>> kept;
   if (o.trim && std::find(raw.reversed.begin(), raw.reversed.end(), true) != raw.reversed.end()) {
-    std::vector<BezierPiece<T, 2>> segs(raw.cubics.begin(), raw.cubics.end());
+    std::vector<BezierPiece<T, 2>> segs;
+    segs.reserve(raw.cubics.size());
+    for (const auto& Q : raw.cubics) segs.emplace_back(Bezier<T, 2>({Q[0], Q[1], Q[2], Q[3]}));
     const Pieces<T, 2> path(std::move(segs));
-    const bool raw_closed = norm(raw.cubics.back().points().back() - raw.cubics.front().points().front()) <= tol;
+    const bool raw_closed = norm(raw.cubics.back()[3] - raw.cubics.front()[0]) <= tol;
     const auto keep = kept_intervals(path, raw.reversed, closed && raw_closed, out.loops_cut);
     kept.clear();
     for (const auto& iv : keep) {
       if (!(iv.hi > iv.lo)) continue;
       const Pieces<T, 2> part = path.portion(iv);
       for (const auto& s : part.segments()) {
-        const auto& B = std::get<Bezier<T, 2>>(s);
-        const auto& P = B.points();
+        const auto& P = std::get<Bezier<T, 2>>(s).points();  // a portion of a cubic: a cubic
         if (std::all_of(P.begin(), P.end(), [&](const auto& p) { return norm(p - P.front()) <= tiny; })) continue;
-        kept.push_back(B);
+        kept.push_back(Quad<T>{P[0], P[1], P[2], P[3]});
       }
     }
     if (kept.empty()) throw InvalidArgument("distance", "the trimmed offset is empty: |distance| exceeds the curve's radius everywhere");
     for (std::size_t i = 1; i < kept.size(); ++i) {  // portions cut at one intersection meet to rounding
-      std::vector<Point<T, 2>> P = kept[i].points();
-      if (norm(P.front() - kept[i - 1].points().back()) <= tol) P.front() = kept[i - 1].points().back(), kept[i] = Bezier<T, 2>(std::move(P));
+      if (norm(kept[i][0] - kept[i - 1][3]) <= tol) kept[i][0] = kept[i - 1][3];
     }
+  } else {
+    kept = std::move(raw.cubics);
   }
   // Back from the unit frame.
   const T back = detail::pow2<T>(e);
-  for (auto& B : kept) {
-    std::vector<Point<T, 2>> P;
-    for (const auto& p : B.points()) {
-      Point<T, 2> q;
-      for (int k = 0; k < 2; ++k) q[k] = p[k] * back + origin[k];
-      P.push_back(q);
-    }
+  out.segments.reserve(kept.size());
+  for (const auto& Q : kept) {
+    std::vector<Point<T, 2>> P(4);
+    for (int j = 0; j < 4; ++j)
+      for (int k = 0; k < 2; ++k) P[static_cast<std::size_t>(j)][k] = Q[static_cast<std::size_t>(j)][k] * back + origin[k];
     out.segments.push_back(Bezier<T, 2>(std::move(P)));
   }
   return out;
