@@ -115,8 +115,8 @@ def answer(command, request):
 # ---------------------------------------------------------------------------------------
 # Reference geometry, written independently of the library.
 
-# The contract commands this program serves (docs/cli.md; the others are listed there under
-# "Not yet served").
+# The curve commands of docs/cli.md (`surface`, `isocurve`, `tessellate` and `serve` are
+# tested in files of their own).
 CONTRACT_COMMANDS = ("eval", "split", "elevate", "insert_knot", "remove_knot", "subdivide", "to_bezier",
                      "bounds", "length", "param_at_length", "features", "distance", "area", "project",
                      "intersect", "flatten", "fit", "render", "solve", "refine", "to_bspline", "reduce", "basis", "frames", "offset",
@@ -325,7 +325,7 @@ class PathTest(CliTest):
     def test_eval_at_break_and_outside(self):
         ts = [1, 2, 3.5, -1, 6]
         r = self.ok("eval", {"curve": self.PATH, "t": ts, "derivatives": 1})
-        # At the interior break the right segment answers (spec: segment i on [ti, ti+1]).
+        # At the interior break the right segment answers (docs/cli.md: segment i on [ti, ti+1]).
         self.assertEqual(r["points"][1], self.SEG1[0])
         self.assert_close(r["points"][0], de_casteljau(self.SEG0, 0.5), TIGHT)
         self.assert_close(r["points"][2], de_casteljau(self.SEG1, 0.5), TIGHT)

@@ -85,12 +85,12 @@ class Fields {
   const Json& j_;
 };
 
-/// A curve object of type bezier, rational_bezier or path, dimension 1..max_dimension.
-/// Checks everything the spec asks: known type, required fields, no unknown fields, JSON
-/// types, finite numbers, one dimension for all points, `dim` and `degree` agreeing with
-/// the data; the curve constructors check the rest (weights > 0, counts, breaks).
-/// Types the spec defines but the io layer does not build yet (bspline, nurbs, ...) give
-/// where "type" and "curve type 'bspline' is not supported yet (...)".
+/// A curve object of any registered type (docs/cli.md, "Curve objects"), dimension
+/// 1..max_dimension. Checks everything docs/cli.md asks: known type, required fields, no
+/// unknown fields, JSON types, finite numbers, one dimension for all points, `dim` and
+/// `degree` agreeing with the data; the curve constructors check the rest (weights > 0,
+/// counts, breaks). An unknown type gives where "type" and "unknown curve type '...'
+/// (known: ...)".
 [[nodiscard]] AnyCurve curve_from_json(const Json& j);
 
 /// One registered type as the bindings see it: its curve-JSON name, the library's class
