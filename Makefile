@@ -118,7 +118,9 @@ fuzz:
 	  $(FUZZ_FLAGS) -artifact_prefix=$(abspath $(FUZZ_BUILD))/ corpus-$(FUZZ_TARGET) $(abspath tests/fuzz/corpus/$(FUZZ_TARGET))
 
 # A Debian package of the library, its CMake package and the `casteljau` program (CPack);
-# prints the .deb's path. `dpkg -i` installs it (its dependencies: apt-get install -f).
+# prints the .deb's path. `apt install ./build/casteljau_*.deb` installs it with its
+# dependencies (`dpkg -i` alone: then apt-get install -f). The install check (ctest
+# install_consumer, in make test) installs it with dpkg into a scratch root.
 package: build
 	cd $(BUILD) && cpack -G DEB
 	@ls $(abspath $(BUILD))/casteljau_*.deb
