@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Runs the W1-W7 benchmarks of bench/ and prints the tables of docs/performance.md.
+"""Runs the W1-W9 and W11 benchmarks of bench/ and prints the tables of docs/performance.md
+(W10, the server, is bench/w10.py: `make bench-w10`).
 
 Usage: bench/run.py BUILD_DIR [--repetitions N] [--min-time SECONDS] [--filter REGEX]
 
@@ -20,8 +21,13 @@ so that the shared machine's drift hits every row alike), keeps the median repet
   * W6: us per pair, intersections, pairs missed and extra against the reference, max distance;
   * W7: ns per point, B-spline and NURBS surfaces on a grid and at random (u, v), for us and
     the peers (OCCT, SISL), max abs difference from the long double reference;
+  * W8: tessellation of a bicubic, a NURBS torus and sphere per tolerance: ms, triangles,
+    max deviation over the tolerance, meshes over it, cracks, against OCCT's mesher;
   * W9 (bench/w9.py, when BUILD_DIR/python holds the Python package): casteljau against
     scipy.interpolate, ms per case, the ratio and the max relative difference;
+  * W11 (rows of the W3 program; cu2qu's from bench/w11_cu2qu.py, python3-fonttools):
+    quadratic approximation against cu2qu and offsets against lib2geom on W3's datasets,
+    segments, curves over the tolerance, max deviation and time against the peer;
   * the goals of the benchmark issue, met or not.
 The raw JSON and the tables in Markdown go to BUILD_DIR/bench-results/.
 """
