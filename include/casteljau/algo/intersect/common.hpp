@@ -1,5 +1,5 @@
 // The pieces, arcs, seeds and per-problem context shared by the general intersection
-// engine (algo/intersect.hpp) and its band step (algo/intersect_band.hpp), with the
+// engine (algo/intersect.hpp) and its band step (algo/intersect/band.hpp), with the
 // tangent cone of a part that both use.
 #pragma once
 

@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "casteljau/algo/flatten.hpp"
-#include "casteljau/algo/intersect_common.hpp"
+#include "casteljau/algo/intersect/common.hpp"
 #include "casteljau/basis/bernstein_poly.hpp"
 #include "casteljau/basis/roots.hpp"
 
