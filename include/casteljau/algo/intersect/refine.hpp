@@ -29,18 +29,19 @@ struct Refined {
 /// step on |F|^2 instead, and steps halved until |F| decreases. Parameters stay in the
 /// arcs. Quadratic convergence to about eps / sin(angle) at crossings, linear at touches
 /// (which are located to about sqrt(eps) in the parameters, the conditioning of a double
-/// root). At most 100 steps; returns the best point seen.
-template <class T>
-Refined<T> refine(const Piece<T>& a, const Arc<T>& aa, const Piece<T>& b, const Arc<T>& ab, T s, T t) {
+/// root). At most 100 steps; returns the best point seen. (refine_steps: the iteration on
+/// evaluators a and b, FootEval, at most `steps` steps of at most `halvings` halvings.)
+template <class T, class E>
+Refined<T> refine_steps(const E& a, const Arc<T>& aa, const E& b, const Arc<T>& ab, T s, T t, int steps, int halvings) {
   constexpr T eps = std::numeric_limits<T>::epsilon();
   auto clamp_s = [&](T x) { return std::clamp(x, aa.lo, aa.hi); };
   auto clamp_t = [&](T x) { return std::clamp(x, ab.lo, ab.hi); };
   s = clamp_s(s);
   t = clamp_t(t);
-  Vector<T, 2> F = at(a, s) - at(b, t);
+  Vector<T, 2> F = a.at(s) - b.at(t);
   T f = norm(F);
-  for (int it = 0; it < 100 && f > 0; ++it) {
-    const Vector<T, 2> Ja = derivative(a, s), Jb = derivative(b, t);
+  for (int it = 0; it < steps && f > 0; ++it) {
+    const Vector<T, 2> Ja = a.d(s), Jb = b.d(t);
     const T det = cross(Ja, Jb), na = norm(Ja), nb = norm(Jb);
     T ds, dt;
     if (std::abs(det) > T(1e-8) * na * nb && na > 0 && nb > 0) {
@@ -61,7 +62,7 @@ Refined<T> refine(const Piece<T>& a, const Arc<T>& aa, const Piece<T>& b, const 
     // the halvings below (which would cost 30 evaluations of each curve for nothing).
     if (std::abs(ds) <= 4 * eps * std::max(T(1), std::abs(s)) && std::abs(dt) <= 4 * eps * std::max(T(1), std::abs(t))) {
       const T s2 = clamp_s(s + ds), t2 = clamp_t(t + dt);
-      const Vector<T, 2> F2 = at(a, s2) - at(b, t2);
+      const Vector<T, 2> F2 = a.at(s2) - b.at(t2);
       if (norm(F2) < f) {
         s = s2;
         t = t2;
@@ -70,9 +71,9 @@ Refined<T> refine(const Piece<T>& a, const Arc<T>& aa, const Piece<T>& b, const 
       break;
     }
     bool improved = false;
-    for (int half = 0; half < 30; ++half) {
+    for (int half = 0; half < halvings; ++half) {
       const T s2 = clamp_s(s + ds), t2 = clamp_t(t + dt);
-      const Vector<T, 2> F2 = at(a, s2) - at(b, t2);
+      const Vector<T, 2> F2 = a.at(s2) - b.at(t2);
       const T f2 = norm(F2);
       if (f2 < f || (f2 == f && (s2 != s || t2 != t) && half == 0)) {
         const bool tiny = std::abs(s2 - s) <= 2 * eps * std::max(T(1), std::abs(s)) && std::abs(t2 - t) <= 2 * eps * std::max(T(1), std::abs(t));
@@ -92,20 +93,35 @@ Refined<T> refine(const Piece<T>& a, const Arc<T>& aa, const Piece<T>& b, const 
   return {s, t, f};
 }
 
+/// refine() on the pieces' evaluators: as refine_steps() where both are evaluated exactly
+/// (degree <= 32), else refine_steps() on the O(n) forms (the iteration costs O(n) per
+/// step instead of O(n^2): hundreds of seeds along a degree-500 curve and its copy, each
+/// up to 100 steps of up to 30 halvings at touches), then at most 8 steps of 8 halvings
+/// on the pieces' own evaluation from there (about n eps of the fast form is far inside
+/// Newton's basin), so that the point and its distance are the exact evaluation's.
+template <class T>
+Refined<T> refine(const FootEval<T>& a, const Arc<T>& aa, const FootEval<T>& b, const Arc<T>& ab, T s, T t) {
+  if (!a.fast && !b.fast) return refine_steps(a, aa, b, ab, s, t, 100, 30);
+  const Refined<T> r = refine_steps(a, aa, b, ab, s, t, 100, 30);
+  return refine_steps(a.exact(), aa, b.exact(), ab, r.s, r.t, 8, 8);
+}
+template <class T>
+Refined<T> refine(const Piece<T>& a, const Arc<T>& aa, const Piece<T>& b, const Arc<T>& ab, T s, T t) {
+  return refine(FootEval<T>(a), aa, FootEval<T>(b), ab, s, t);
+}
+
 /// Polish of a touch (s, t) found by refine(): Newton's method on G(s, t) = ((a(s) -
 /// b(t)) . b'(t), a'(s) x b'(t)) = 0 (a(s)'s foot on b is b(t), and the tangents are
 /// parallel), whose root is simple at a touch of curves with different curvatures,
 /// where F = a - b has a double root. Gives the touch to a few eps instead of sqrt(eps).
 /// Returns the polished point if Newton converged (at most 16 steps) to a common point
 /// (distance <= tol) within 1e-5 of the start, else nothing.
-template <class T>
-std::optional<Refined<T>> polish_touch(const Piece<T>& a, const Arc<T>& aa, const Piece<T>& b, const Arc<T>& ab, Refined<T> r,
-                                       T tol) {
-  constexpr T eps = std::numeric_limits<T>::epsilon();
-  T s = r.s, t = r.t;
+template <class T, class E>
+std::optional<Refined<T>> polish_steps(const E& a, const Arc<T>& aa, const E& b, const Arc<T>& ab, Refined<T> r, Refined<T> from,
+                                       T tol, T converged) {
+  T s = from.s, t = from.t;
   for (int it = 0; it < 16; ++it) {
-    const Vector<T, 2> F = at(a, s) - at(b, t), a1 = derivative(a, s), a2 = derivative(a, s, 2), b1 = derivative(b, t),
-                       b2 = derivative(b, t, 2);
+    const Vector<T, 2> F = a.at(s) - b.at(t), a1 = a.d(s), a2 = a.dd(s), b1 = b.d(t), b2 = b.dd(t);
     const T g1 = dot(F, b1), g2 = cross(a1, b1);
     const T j11 = dot(a1, b1), j12 = dot(F, b2) - dot(b1, b1), j21 = cross(a2, b1), j22 = cross(a1, b2);
     const T det = j11 * j22 - j12 * j21;
@@ -115,13 +131,31 @@ std::optional<Refined<T>> polish_touch(const Piece<T>& a, const Arc<T>& aa, cons
     s = std::clamp(s + ds, aa.lo, aa.hi);
     t = std::clamp(t + dt, ab.lo, ab.hi);
     if (std::abs(s - r.s) > T(1e-5) || std::abs(t - r.t) > T(1e-5)) return std::nullopt;
-    if (std::abs(ds) <= 4 * eps * std::max(T(1), std::abs(s)) && std::abs(dt) <= 4 * eps * std::max(T(1), std::abs(t))) {
-      const T d = distance(at(a, s), at(b, t));
+    if (std::abs(ds) <= converged * std::max(T(1), std::abs(s)) && std::abs(dt) <= converged * std::max(T(1), std::abs(t))) {
+      const T d = distance(a.at(s), b.at(t));
       if (d <= tol) return Refined<T>{s, t, d};
       return std::nullopt;
     }
   }
   return std::nullopt;
+}
+/// (polish_steps: the iteration on evaluators a and b from `from`, converged when a step
+/// is below `converged` relative.) Past degree 32 (FootEval::fast) Newton runs on the O(n)
+/// forms to 1e-9 first, then on the pieces' own evaluation from there (one or two steps);
+/// nothing where the fast pass fails.
+template <class T>
+std::optional<Refined<T>> polish_touch(const FootEval<T>& a, const Arc<T>& aa, const FootEval<T>& b, const Arc<T>& ab, Refined<T> r,
+                                       T tol) {
+  constexpr T eps = std::numeric_limits<T>::epsilon();
+  if (!a.fast && !b.fast) return polish_steps(a, aa, b, ab, r, r, tol, 4 * eps);
+  const auto x = polish_steps(a, aa, b, ab, r, r, T(1e6) * tol + 1, T(1e-9));
+  if (!x) return std::nullopt;  // Newton left the start's neighbourhood or met a singular step
+  return polish_steps(a.exact(), aa, b.exact(), ab, r, *x, tol, 4 * eps);
+}
+template <class T>
+std::optional<Refined<T>> polish_touch(const Piece<T>& a, const Arc<T>& aa, const Piece<T>& b, const Arc<T>& ab, Refined<T> r,
+                                       T tol) {
+  return polish_touch(FootEval<T>(a), aa, FootEval<T>(b), ab, r, tol);
 }
 
 /// A direction of the curve at t: the first non-zero derivative (a cusp's direction comes
@@ -136,46 +170,17 @@ Vector<T, 2> direction(const Piece<T>& c, T t) {
   return Vector<T, 2>{};
 }
 
-/// A piece evaluated with its first two derivatives for foot-point steps: past degree 32
-/// a polynomial piece through the Bernstein coefficients of its coordinates and their
-/// differences in O(n) (bernstein_value_fast: about n eps of the coefficients, 5e-14 at
-/// degree 500 in the unit frame, far below the near-miss distance), where de Casteljau
-/// costs O(n^2) per value (most of the time of two coincident degree-500 curves); else the
-/// piece's own evaluation (so low degrees are computed as before).
+/// direction() through the piece's evaluator (O(n) past degree 32: the angle tests of
+/// intersect_arcs are at 1e-6 and 1e-4, far above n eps).
 template <class T>
-struct FootEval {
-  const Piece<T>* c;
-  bool fast = false;
-  std::array<std::vector<T>, 2> p, d1, d2;  // coordinates, then n and n (n - 1) times their differences
-
-  explicit FootEval(const Piece<T>& piece) : c(&piece) {
-    const auto* z = std::get_if<Bezier<T, 2>>(&piece);
-    if (!z || z->degree() <= 32) return;
-    fast = true;
-    const auto& P = z->points();
-    const std::size_t n = P.size() - 1;
-    for (int k = 0; k < 2; ++k) {
-      p[k].resize(n + 1);
-      for (std::size_t i = 0; i <= n; ++i) p[k][i] = P[i][k];
-      d1[k].resize(n);
-      for (std::size_t i = 0; i < n; ++i) d1[k][i] = p[k][i + 1] - p[k][i];
-      d2[k].resize(n - 1);
-      for (std::size_t i = 0; i + 1 < n; ++i) d2[k][i] = d1[k][i + 1] - d1[k][i];
-      for (auto& x : d1[k]) x *= static_cast<T>(n);
-      for (auto& x : d2[k]) x *= static_cast<T>(n) * static_cast<T>(n - 1);
-    }
+Vector<T, 2> direction(const FootEval<T>& c, T t) {
+  if (!c.fast) return direction(*c.c, t);
+  for (const Vector<T, 2> v : {c.d(t), c.dd(t)}) {
+    const T n = norm(v);
+    if (n > 0) return v / n;
   }
-  static Vector<T, 2> value(const std::array<std::vector<T>, 2>& v, T t) {
-    return {bernstein_value_fast<T>(std::span<const T>(v[0]), t), bernstein_value_fast<T>(std::span<const T>(v[1]), t)};
-  }
-  Point<T, 2> at(T t) const {
-    if (!fast) return isect::at(*c, t);
-    const Vector<T, 2> v = value(p, t);
-    return {v[0], v[1]};
-  }
-  Vector<T, 2> d(T t) const { return fast ? value(d1, t) : derivative(*c, t); }
-  Vector<T, 2> dd(T t) const { return fast ? value(d2, t) : derivative(*c, t, 2); }
-};
+  return direction(*c.c, t);
+}
 
 /// Newton steps (at most 4) on (c(t) - q) . c'(t) from t within arc r of piece c, each
 /// kept only if it brings c(t) closer to q: the foot of q near t.

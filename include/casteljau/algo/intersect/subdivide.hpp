@@ -155,31 +155,35 @@ bool intersect_arcs(const Prepared<T>& A, std::size_t ia, const Prepared<T>& B, 
   ctx.nodes = 0;
   ctx.node_limit = node_limit;
   ctx.exhausted = false;
+  const FootEval<T> fa(a), fb(b);
   ctx.a = &a;
   ctx.b = &b;
+  ctx.fa = &fa;
+  ctx.fb = &fb;
   ctx.ra = &ra;
   ctx.rb = &rb;
   ctx.near = false;
   std::visit(
       [&](const auto& x, const auto& y) { subdivide(x, ra.lo, ra.hi, 0, y, rb.lo, rb.hi, 0, ctx); }, A.arc_parts[ia],
       B.arc_parts[ib]);
+  ctx.fa = ctx.fb = nullptr;  // they end with this call
   if (ctx.exhausted || (ctx.near && ctx.stop_on_near)) return false;
   bool clean = true;
   // Refined points so far, by s: seeds from neighbouring parts refine to the same point
   // (thousands of them along near-coincident curves), found again in O(log) each.
   std::multimap<T, T> done;
   for (const auto& [s0, t0, edge] : ctx.seeds) {
-    Refined<T> r = refine(a, ra, b, rb, s0, t0);
+    Refined<T> r = refine(fa, ra, fb, rb, s0, t0);
     if (!(r.distance <= ctx.tol)) continue;
     // A touch refined as a double root is located to about sqrt(eps / curvature) only,
     // where the tangents of a curve of high curvature (a Chebyshev polynomial of degree
     // 12 touching y = 1: curvature about 1e4 per unit parameter) already differ by more
     // than 1e-6: the polish (parallel tangents, a common point within 1e-5 in the
     // parameters) is tried up to 1e-4, and where it finds the touch the point is there.
-    const T angle = std::abs(cross(direction(a, r.s), direction(b, r.t)));
+    const T angle = std::abs(cross(direction(fa, r.s), direction(fb, r.t)));
     if (angle <= T(1e-6)) clean = false;
     if (angle <= T(1e-4)) {
-      if (auto p = polish_touch(a, ra, b, rb, r, ctx.tol)) r = *p;
+      if (auto p = polish_touch(fa, ra, fb, rb, r, ctx.tol)) r = *p;
     }
     bool dup = false;
     for (auto it = done.lower_bound(r.s - T(1e-12)); !dup && it != done.end() && it->first <= r.s + T(1e-12); ++it)
@@ -203,7 +207,7 @@ bool intersect_arcs(const Prepared<T>& A, std::size_t ia, const Prepared<T>& B, 
       if (!(dot(v, v) <= ctx.tol * ctx.tol)) continue;
       const T d = norm(v);
       const T s = ea ? ra.hi : ra.lo, t = eb ? rb.hi : rb.lo;
-      if (!(std::abs(cross(direction(a, s), direction(b, t))) <= T(1e-6))) continue;
+      if (!(std::abs(cross(direction(fa, s), direction(fb, t))) <= T(1e-6))) continue;
       clean = false;
       bool dup = false;
       for (auto it = done.lower_bound(s - T(1e-12)); !dup && it != done.end() && it->first <= s + T(1e-12); ++it)
