@@ -596,7 +596,7 @@ def mp_nurbs_circle(c, u):
 
 class NearCoincidentTest(CliTest):
     """Curves within a few near-miss distances (1e-10 of the size) along long stretches:
-    decided on the separation polynomial of near-parallel parts (algo/intersect.hpp, band),
+    decided on the separation polynomial of near-parallel parts (algo/intersect/band.hpp),
     checked by mpmath and closed forms."""
 
     on_both = HardInputTest.on_both
