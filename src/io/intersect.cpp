@@ -35,7 +35,7 @@ struct PieceSums {
 };
 
 /// A piece with extreme weights is intersected through its tame parts
-/// (algo/intersect_tame.hpp: 256 at weights 1, 1e300, 1, those within 1e-13 of the size
+/// (algo/intersect/tame.hpp: 256 at weights 1, 1e300, 1, those within 1e-13 of the size
 /// of each other taken as one chord: about 80 pieces), each a piece of the same degree (a chord: degree 1):
 /// counted as such, with the runs of the piece's own size (at most the parts solve_extreme
 /// makes, whose runs are of the larger size of both curves).

@@ -526,8 +526,11 @@ class HardInputTest(CliTest):
         # A random curve and its copy moved by 1e-9 along x: 0.7 of the meeting distance
         # (1e-10 of the control box's diagonal, about 14), so the copy lies within it all
         # along: one overlap over both domains, no point. Before session 15 these answered
-        # two overlaps meeting end to end and a few "crossings" between them.
-        for n, seed in ((20, 2), (40, 3), (80, 6)):
+        # two overlaps meeting end to end and a few "crossings" between them. Before session
+        # 16: (20, 7) two overlaps with a gap [0.826, 0.948] and 7 points, the others points
+        # only or an overlap and points (a sliver at an arc end where the copy's shift is
+        # along the tangent kept the overlaps of consecutive arcs apart).
+        for n, seed in ((20, 2), (40, 3), (80, 6), (20, 7), (20, 16), (20, 31), (40, 24), (40, 34), (80, 39)):
             rng = random.Random(seed)
             P = [[10 * rng.random(), 10 * rng.random()] for _ in range(n + 1)]
             moved = [[x + 1e-9, y] for x, y in P]
@@ -593,7 +596,7 @@ def mp_nurbs_circle(c, u):
 
 class NearCoincidentTest(CliTest):
     """Curves within a few near-miss distances (1e-10 of the size) along long stretches:
-    decided on the separation polynomial of near-parallel parts (algo/intersect.hpp, band),
+    decided on the separation polynomial of near-parallel parts (algo/intersect/band.hpp),
     checked by mpmath and closed forms."""
 
     on_both = HardInputTest.on_both

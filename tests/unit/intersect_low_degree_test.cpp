@@ -1,5 +1,5 @@
 // The fast path of intersect() for Bézier pieces of degree <= 3
-// (algo/intersect_low_degree.hpp): closed-form crossings, the cases it must refuse
+// (algo/intersect/low_degree.hpp): closed-form crossings, the cases it must refuse
 // (touches, near-misses at the ends, close pairs, overlaps) and the answers intersect()
 // then gives, and agreement with the general engine on random pairs.
 #include <algorithm>

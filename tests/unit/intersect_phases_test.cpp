@@ -1,7 +1,8 @@
 // The phases of the general intersection engine (algo/intersect.hpp, solve()) called one
 // at a time on inputs whose answers are known in closed form: the shared frame, the pairs
 // of arcs, the joining and confirming of overlaps, the merging of points, edge points,
-// classification and the closing point of a closed curve.
+// classification and the closing point of a closed curve; and, below them, the steps
+// for one pair of arcs (arc_points, arc_overlap, refine, polish_touch) on textbook inputs.
 #include <array>
 #include <cmath>
 #include <vector>
@@ -110,6 +111,68 @@ TEST(IntersectPhases, ConfirmOverlapsKeepsTheCommonStretchOfCollinearSegments) {
   EXPECT_NEAR(overlaps[0].a.hi, 1.0, 4 * test::eps);
   EXPECT_NEAR(overlaps[0].b_start, 0.0, 4 * test::eps);
   EXPECT_NEAR(overlaps[0].b_end, 0.5, 4 * test::eps);
+}
+
+TEST(IntersectPhases, ArcPointsFindsTheRootsOfALineOnAParabola) {
+  // The parabola x = 2t, y = (1 - 2t)^2 (control points (0, 1), (1, -1), (2, 1)) meets
+  // the line y = 1/4 from (0, 1/4) to (2, 1/4) where 1 - 2t = +-1/2: t = 1/4 and 3/4, at
+  // x = 1/2 and 3/2, the line's parameters x / 2 = 1/4 and 3/4. y turns at t = 1/2, so the
+  // parabola has two monotone arcs, one root each.
+  Both s(pieces(B2{{0, 1}, {1, -1}, {2, 1}}), pieces(B2{{0, 0.25}, {2, 0.25}}));
+  ASSERT_EQ(s.A.arcs.size(), 2u);
+  EXPECT_EQ(s.A.arcs[0].hi, 0.5);
+  ASSERT_EQ(s.B.arcs.size(), 1u);
+  const double want[2] = {0.25, 0.75};
+  for (std::size_t i = 0; i < 2; ++i) {
+    const auto hits = arc_points(s.A, i, s.B, 0, s.ctx);
+    ASSERT_GE(hits.size(), 1u) << "arc " << i;
+    for (const auto& h : hits) {
+      // Newton at a transversal crossing: to a few eps.
+      EXPECT_NEAR(h.ta, want[i], 8 * test::eps);
+      EXPECT_NEAR(h.tb, want[i], 8 * test::eps);
+    }
+  }
+}
+
+TEST(IntersectPhases, ArcOverlapOfCoincidentSegmentsIsTheirCommonRange) {
+  // a = (0, 0) -> (4, 0) and b = (3, 0) -> (1, 0): a over [1/4, 3/4] traces b from 1 to 0
+  // (b runs the other way).
+  Both s(pieces(B2{{0, 0}, {4, 0}}), pieces(B2{{3, 0}, {1, 0}}));
+  const auto o = arc_overlap(s.A, 0, s.B, 0, s.tol);
+  ASSERT_TRUE(o.has_value());
+  EXPECT_NEAR(o->s0, 0.25, 4 * test::eps);
+  EXPECT_NEAR(o->s1, 0.75, 4 * test::eps);
+  EXPECT_NEAR(o->t0, 1.0, 4 * test::eps);
+  EXPECT_NEAR(o->t1, 0.0, 4 * test::eps);
+  // Parallel segments 1e-3 apart (far beyond the near-miss distance): no overlap.
+  Both t(pieces(B2{{0, 0}, {4, 0}}), pieces(B2{{3, 1e-3}, {1, 1e-3}}));
+  EXPECT_FALSE(arc_overlap(t.A, 0, t.B, 0, t.tol).has_value());
+}
+
+TEST(IntersectPhases, RefineThenPolishLocatesATouchAndClassifyCallsItTangent) {
+  // y = (1 - 2t)^2, x = 2t touches the x axis (0, 0) -> (2, 0) at t = 1/2, x = 1 (line
+  // parameter 1/2): a double root, which refine() locates to about sqrt(eps) and
+  // polish_touch() to a few eps.
+  Both s(pieces(B2{{0, 1}, {1, -1}, {2, 1}}), pieces(B2{{0, 0}, {2, 0}}));
+  const Arc<double> whole{0, 0.0, 1.0};
+  const auto r = refine(s.A.unit[0], whole, s.B.unit[0], whole, 0.4, 0.45);
+  EXPECT_NEAR(r.s, 0.5, 1e-7);
+  EXPECT_NEAR(r.t, 0.5, 1e-7);
+  EXPECT_LE(r.distance, s.tol);
+  const auto p = polish_touch(s.A.unit[0], whole, s.B.unit[0], whole, r, s.tol);
+  ASSERT_TRUE(p.has_value());
+  EXPECT_NEAR(p->s, 0.5, 8 * test::eps);
+  EXPECT_NEAR(p->t, 0.5, 8 * test::eps);
+  // The whole pipeline's middle: the pairs' points merged into one, classified tangent.
+  auto pairs = meet_arcs(s.A, s.B, false, s.ctx);
+  EXPECT_TRUE(pairs.overlaps.empty());
+  const auto lp = loops(s.A, s.B, s.tol);
+  const auto merged = merge_points(s.A, s.B, false, std::move(pairs.hits), {}, lp, s.tol);
+  const auto pts = classify(s.A, s.B, merged.kept, s.tol);
+  ASSERT_EQ(pts.size(), 1u);
+  EXPECT_EQ(pts[0].kind, IntersectionKind::tangent);
+  EXPECT_NEAR(pts[0].ta, 0.5, 8 * test::eps);
+  EXPECT_NEAR(pts[0].tb, 0.5, 8 * test::eps);
 }
 
 /// A hit of the diagonals' crossing (pieces 0, parameters 1/2), at distance 0.

@@ -12,7 +12,7 @@
 #include <variant>
 #include <vector>
 
-#include "casteljau/algo/intersect_common.hpp"
+#include "casteljau/algo/intersect/common.hpp"
 #include "casteljau/algo/scalar_forms.hpp"
 
 namespace casteljau::detail::isect {

@@ -10,11 +10,12 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <span>
 #include <variant>
 #include <vector>
 
 #include "casteljau/algo/flatten.hpp"
-#include "casteljau/algo/intersect_common.hpp"
+#include "casteljau/algo/intersect/common.hpp"
 #include "casteljau/basis/bernstein_poly.hpp"
 #include "casteljau/basis/roots.hpp"
 
@@ -116,8 +117,8 @@ std::optional<PartBounds<T>> part_bounds(const Homogeneous<T>& h, const Vector<T
 /// (either way): Newton's method kept inside the bracket (bisection when it leaves it);
 /// the nearer end when X is outside the range.
 template <class T>
-T solve_projection(const Piece<T>& c, const Vector<T, 2>& e, T X, T lo, T hi) {
-  auto f = [&](T u) { return dot(e, at(c, u).to_vector()) - X; };
+T solve_projection(const FootEval<T>& c, const Vector<T, 2>& e, T X, T lo, T hi) {
+  auto f = [&](T u) { return dot(e, c.at(u).to_vector()) - X; };
   T flo = f(lo), fhi = f(hi);
   if (flo == 0) return lo;
   if (fhi == 0) return hi;
@@ -127,7 +128,7 @@ T solve_projection(const Piece<T>& c, const Vector<T, 2>& e, T X, T lo, T hi) {
     const T m = u > lo && u < hi ? u : lo + (hi - lo) / 2;
     const T fm = f(m);
     if (fm == 0) return m;
-    const T slope = dot(e, derivative(c, m));
+    const T slope = dot(e, c.d(m));
     u = slope != 0 ? m - fm / slope : m;
     if (std::abs(u - m) <= 2 * std::numeric_limits<T>::epsilon() * std::max(T(1), std::abs(m))) return m;
     if ((fm > 0) == (flo > 0)) {
@@ -194,7 +195,7 @@ enum class BandResult {
 /// fat-line form of the separation; the bound is ours.]
 template <class T, class CA, class CB>
 BandResult band(const CA& a, T alo, T ahi, const CB& b, T blo, T bhi, Context<T>& ctx) {
-  if (!ctx.a || !ctx.b) return BandResult::no;
+  if (!ctx.a || !ctx.b || !ctx.fa || !ctx.fb) return BandResult::no;
   const int na = static_cast<int>(a.points().size()) - 1, nb = static_cast<int>(b.points().size()) - 1;
   if (na > band_max_degree || nb > band_max_degree) return BandResult::no;
   const auto ka = tangent_cone(a), kb = tangent_cone(b);
@@ -207,8 +208,12 @@ BandResult band(const CA& a, T alo, T ahi, const CB& b, T blo, T bhi, Context<T>
   const Piece<T>& pb = *ctx.b;
   const Arc<T>& ra = *ctx.ra;
   const Arc<T>& rb = *ctx.rb;
-  auto xa = [&](T u) { return dot(e, at(pa, u).to_vector()); };
-  auto xb = [&](T v) { return dot(e, at(pb, v).to_vector()); };
+  // Projections on e through the pieces' evaluators (O(n) past degree 32: about n eps of
+  // the unit coordinates, far below the near-miss distance the decisions below rest on).
+  const FootEval<T>& fa = *ctx.fa;
+  const FootEval<T>& fb = *ctx.fb;
+  auto xa = [&](T u) { return dot(e, fa.at(u).to_vector()); };
+  auto xb = [&](T v) { return dot(e, fb.at(v).to_vector()); };
   const T xa0 = xa(alo), xa1 = xa(ahi);
   // b's parameters at its low and high x end.
   const T b_low = reversed ? bhi : blo, b_high = reversed ? blo : bhi;
@@ -223,18 +228,18 @@ BandResult band(const CA& a, T alo, T ahi, const CB& b, T blo, T bhi, Context<T>
   // Both parts extended along their arcs over the union of their x ranges, then the
   // common range of the extensions.
   const T U0 = std::min(xa0, xb0), U1 = std::max(xa1, xb1);
-  const T ea0 = U0 < xa0 ? solve_projection(pa, e, U0, ra.lo, alo) : alo;
-  const T ea1 = U1 > xa1 ? solve_projection(pa, e, U1, ahi, ra.hi) : ahi;
-  const T eb0 = U0 < xb0 ? solve_projection(pb, e, U0, std::min(b_arc_low, b_low), std::max(b_arc_low, b_low)) : b_low;
-  const T eb1 = U1 > xb1 ? solve_projection(pb, e, U1, std::min(b_arc_high, b_high), std::max(b_arc_high, b_high)) : b_high;
+  const T ea0 = U0 < xa0 ? solve_projection(fa, e, U0, ra.lo, alo) : alo;
+  const T ea1 = U1 > xa1 ? solve_projection(fa, e, U1, ahi, ra.hi) : ahi;
+  const T eb0 = U0 < xb0 ? solve_projection(fb, e, U0, std::min(b_arc_low, b_low), std::max(b_arc_low, b_low)) : b_low;
+  const T eb1 = U1 > xb1 ? solve_projection(fb, e, U1, std::min(b_arc_high, b_high), std::max(b_arc_high, b_high)) : b_high;
   const T X0 = std::max(xa(ea0), xb(eb0)), X1 = std::min(xa(ea1), xb(eb1));
   // A common range at the rounding of the parts' extent: parts that only touch end to end
   // (consecutive arcs of one curve), left to subdivision.
   if (!(X1 - X0 > T(1e-10) * width)) return BandResult::no;
-  const T ca0 = xa(ea0) >= X0 ? ea0 : solve_projection(pa, e, X0, ea0, ea1);
-  const T ca1 = xa(ea1) <= X1 ? ea1 : solve_projection(pa, e, X1, ea0, ea1);
-  const T cb0 = xb(eb0) >= X0 ? eb0 : solve_projection(pb, e, X0, std::min(eb0, eb1), std::max(eb0, eb1));
-  const T cb1 = xb(eb1) <= X1 ? eb1 : solve_projection(pb, e, X1, std::min(eb0, eb1), std::max(eb0, eb1));
+  const T ca0 = xa(ea0) >= X0 ? ea0 : solve_projection(fa, e, X0, ea0, ea1);
+  const T ca1 = xa(ea1) <= X1 ? ea1 : solve_projection(fa, e, X1, ea0, ea1);
+  const T cb0 = xb(eb0) >= X0 ? eb0 : solve_projection(fb, e, X0, std::min(eb0, eb1), std::max(eb0, eb1));
+  const T cb1 = xb(eb1) <= X1 ? eb1 : solve_projection(fb, e, X1, std::min(eb0, eb1), std::max(eb0, eb1));
   if (!(ca0 < ca1) || !(reversed ? cb1 < cb0 : cb0 < cb1)) return BandResult::no;
   // Cores (B oriented along e) and the span of b the bound must cover (core and part).
   const Piece<T> A = piece_part(pa, ca0, ca1, false);
@@ -268,6 +273,8 @@ BandResult band(const CA& a, T alo, T ahi, const CB& b, T blo, T bhi, Context<T>
       std::all_of(h.begin(), h.end(), [&](T c) { return c < T(-2.5) * near_hi; }))
     return BandResult::done;  // apart by more than 2 tol all along: nothing (arc ends included)
   if (h_max <= (ctx.tol - E) * den_lo) ctx.near = true;
+  // A first pass that stops on a near band (ctx.stop_on_near) drops its seeds: no roots.
+  if (ctx.near && ctx.stop_on_near) return BandResult::done;
   // Membership of a seed in the parts, with a slack above the roots' accuracy: h is
   // rounded to about 32 eps max|Q| max|coordinate| (the cores' de Casteljau steps and the
   // products), so a root moves by that over |h'| (eps over the crossing angle: 1e-8 at an
@@ -277,14 +284,19 @@ BandResult band(const CA& a, T alo, T ahi, const CB& b, T blo, T bhi, Context<T>
   for (const auto* c : {&HA.x, &HA.y, &HB.x, &HB.y}) coordinate_max = std::max(coordinate_max, max_abs(*c));
   const T h_noise = 32 * std::numeric_limits<T>::epsilon() * coordinate_max * qb->q_max;
   const auto dh = bernstein_derivative_coefficients<T>(h);
+  // Values of h and its derivatives at their roots: O(n) past degree 32 of the pieces (h has
+  // degree 2 n - 1; its coefficients are |Q| |D| small, so n eps of them is far below
+  // h_noise), de Casteljau below.
+  const bool fast = fa.fast || fb.fast;
+  auto value = [&](const std::vector<T>& c, T u) { return fast ? bernstein_value_fast<T>(std::span<const T>(c), u) : bernstein_value<T>(c, u); };
   auto emit = [&](T u, bool edge) {
-    const T slope = std::abs(bernstein_value<T>(dh, u));
+    const T slope = std::abs(value(dh, u));
     const T du = slope > 0 ? std::min(T(1e-2), 2 * h_noise / slope) : T(1e-2);
     const T slack_a = std::max(T(1e-7), du * (ca1 - ca0)), slack_b = std::max(T(1e-7), du * std::abs(cb1 - cb0));
     // b's parameter where e . b = e . a(s) (b is monotone along e): within |beta| tan
     // band_angle of the foot of a(s) on b, while B(u) lags it by up to |D| (the cores are
     // matched at their ends only; D is not small against a line, whose curvature is 0).
-    const T s = ca0 + u * (ca1 - ca0), t = solve_projection(pb, e, xa(s), std::min(cb0, cb1), std::max(cb0, cb1));
+    const T s = ca0 + u * (ca1 - ca0), t = solve_projection(fb, e, xa(s), std::min(cb0, cb1), std::max(cb0, cb1));
     if (s < alo - slack_a || s > ahi + slack_a || t < blo - slack_b || t > bhi + slack_b) return;
     ctx.seeds.push_back({std::clamp(s, ra.lo, ra.hi), std::clamp(t, rb.lo, rb.hi), edge});
   };
@@ -306,12 +318,12 @@ BandResult band(const CA& a, T alo, T ahi, const CB& b, T blo, T bhi, Context<T>
   if (h.size() > 2) {
     const auto d2h = bernstein_derivative_coefficients<T>(dh);
     for (T u : bernstein_roots<T>(dh)) {
-      const T hu = bernstein_value<T>(h, u);
+      const T hu = value(h, u);
       // A local minimum of |h| (h'' of the sign of h) where the curves may be within tol,
       // deeper than the rounding of h below both ends of the core (a flat h, in a core
       // shorter than the curves' offset or along an overlap, has minima of noise only).
       const T depth = std::min(std::abs(h.front()), std::abs(h.back())) - std::abs(hu);
-      if (std::abs(hu) <= near_hi && hu * bernstein_value<T>(d2h, u) >= 0 && !near_root(u) && depth > 4 * h_noise) emit(u, false);
+      if (std::abs(hu) <= near_hi && hu * value(d2h, u) >= 0 && !near_root(u) && depth > 4 * h_noise) emit(u, false);
     }
   }
   if ((ca0 == ra.lo || cb0 == b_arc_low) && std::abs(h.front()) <= T(2.5) * near_hi) emit(T(0), true);
