@@ -796,8 +796,8 @@ T measured(const CubicForm<T>& F, const Source<T>& s, T a, T b, T stop_above) {
 /// nearest point seen kept, then every local maximum within 80% of the largest refined over
 /// its two intervals (golden section, 10 steps). Each value is a distance to a point of the
 /// other curve, never below the true distance: a projection that ends off the nearest
-/// point overstates, so the measure errs to the safe side (a candidate refused), where
-/// hausdorff's search of every sample costs 33 times as many distances. Used across the
+/// point overstates, so the measure errs to the safe side (a candidate refused), and no
+/// sample searches all 33 of the other curve as in hausdorff. Used across the
 /// cusps of the offset, where the normal scan's feet do not run in order; the source's
 /// cusps are sampled too. Stops above stop_above.
 template <class T>
@@ -1261,56 +1261,24 @@ std::vector<Stretch<T>> stretches(const Piece& c, T d, T tiny) {
   return out;
 }
 
-/// The Source of the offset of piece c over a stretch.
+/// The Source of the offset of piece c over the stretches first..last (one, or a run of
+/// them) as one smooth curve across the offset's cusps between them (where 1 - d kappa
+/// changes sign or touches zero): O(t) = C(t) + d N(t) is as smooth in t as C there (its
+/// velocity (1 - d kappa) C' only passes through zero), so a cubic can follow it across a
+/// cusp (near one it is a semicubical cusp, (t^2, t^3) to leading order, which a cubic
+/// represents). The direction of travel is sign(1 - d kappa) T (constant over one
+/// stretch); the cusps are the stretches' ends between them (Source::cusps: parts across
+/// them are measured by parametric and partner_distance).
 template <class T, class Piece>
-Source<T> stretch_source(const Piece& c, const Stretch<T>& s, T d) {
+Source<T> offset_source(const Piece& c, const Stretch<T>* first, const Stretch<T>* last, T d) {
   // One shared state, so that each std::function holds a pointer only (no allocation of
   // its own: the small-object buffer).
-  struct State {
-    PieceForm<T, Piece> form;
-    Stretch<T> s;
-    T d, sign;
-    Vector<T, 2> tan(T t) const {
-      if (t == s.lo) return s.t_lo;
-      if (t == s.hi) return s.t_hi;
-      const Vector<T, 2> v = unit(form.d1(t));
-      return length(v) > 0 ? v : (t - s.lo < s.hi - t ? s.t_lo : s.t_hi);
-    }
-  };
-  const auto st = std::make_shared<const State>(State{PieceForm<T, Piece>(c), s, d, s.reversed ? T(-1) : T(1)});
-  Source<T> src;
-  src.point = [st](T t) { return st->form.at(t) + left(st->tan(t)) * st->d; };
-  src.velocity = [st](T t) {
-    const Vector<T, 2> d1 = st->form.d1(t), d2 = st->form.d2(t);
-    const T sp = length(d1);
-    if (!(sp > 0)) return Vector<T, 2>{};
-    return d1 * (1 - st->d * cross(d1, d2) / (sp * sp * sp));
-  };
-  src.tangent = [st](T t) { return st->tan(t) * st->sign; };
-  src.frame = [st](T t) {
-    const Vector<T, 2> u = st->tan(t);
-    return std::pair{st->form.at(t) + left(u) * st->d, u * st->sign};
-  };
-  src.lo = s.lo, src.hi = s.hi;
-  src.reversed = s.reversed;
-  return src;
-}
-
-/// The Source of the offset of piece c over the stretches ss[k0..k1] (k0 < k1) as one
-/// smooth curve across the offset's cusps between them (where 1 - d kappa changes sign or
-/// touches zero): O(t) = C(t) + d N(t) is as smooth in t as C there (its velocity
-/// (1 - d kappa) C' only passes through zero), so a cubic can follow it across a cusp
-/// (near one it is a semicubical cusp, (t^2, t^3) to leading order, which a cubic
-/// represents). The direction of travel is sign(1 - d kappa) T; the cusps are the
-/// stretches' ends between them (Source::cusps: parts across them are measured by
-/// projections).
-template <class T, class Piece>
-Source<T> run_source(const Piece& c, const std::vector<Stretch<T>>& ss, std::size_t k0, std::size_t k1, T d) {
   struct State {
     PieceForm<T, Piece> form;
     T lo, hi, d;
     Vector<T, 2> t_lo, t_hi;
     T sign_lo, sign_hi;
+    bool varying;  // a run across cusps: the sign of 1 - d kappa at each t
     Vector<T, 2> tan(T t) const {
       if (t == lo) return t_lo;
       if (t == hi) return t_hi;
@@ -1318,15 +1286,15 @@ Source<T> run_source(const Piece& c, const std::vector<Stretch<T>>& ss, std::siz
       return length(v) > 0 ? v : (t - lo < hi - t ? t_lo : t_hi);
     }
     T sign(T t) const {
-      if (t == lo) return sign_lo;
+      if (!varying || t == lo) return sign_lo;
       if (t == hi) return sign_hi;
       const Vector<T, 2> d1 = form.d1(t), d2 = form.d2(t);
       const T sp = length(d1);
       return sp > 0 && 1 - d * cross(d1, d2) / (sp * sp * sp) < 0 ? T(-1) : T(1);
     }
   };
-  const auto st = std::make_shared<const State>(State{PieceForm<T, Piece>(c), ss[k0].lo, ss[k1].hi, d, ss[k0].t_lo, ss[k1].t_hi,
-                                                      ss[k0].reversed ? T(-1) : T(1), ss[k1].reversed ? T(-1) : T(1)});
+  const auto st = std::make_shared<const State>(State{PieceForm<T, Piece>(c), first->lo, last->hi, d, first->t_lo, last->t_hi,
+                                                      first->reversed ? T(-1) : T(1), last->reversed ? T(-1) : T(1), first != last});
   Source<T> src;
   src.point = [st](T t) { return st->form.at(t) + left(st->tan(t)) * st->d; };
   src.velocity = [st](T t) {
@@ -1341,9 +1309,15 @@ Source<T> run_source(const Piece& c, const std::vector<Stretch<T>>& ss, std::siz
     return std::pair{st->form.at(t) + left(u) * st->d, u * st->sign(t)};
   };
   src.lo = st->lo, src.hi = st->hi;
-  src.reversed = ss[k0].reversed;
-  for (std::size_t k = k0; k < k1; ++k) src.cusps.push_back(ss[k].hi);
+  src.reversed = first->reversed;
+  for (const Stretch<T>* k = first; k != last; ++k) src.cusps.push_back(k->hi);
   return src;
+}
+
+/// The Source of the offset of piece c over one stretch.
+template <class T, class Piece>
+Source<T> stretch_source(const Piece& c, const Stretch<T>& s, T d) {
+  return offset_source<T>(c, &s, &s, d);
 }
 
 /// Cuts the loops of the raw offset (see offset()): returns the kept parameter intervals
@@ -1582,8 +1556,7 @@ OffsetCurve<T> offset(const Pieces<T, 2>& curve, const OffsetOptions<T>& o) {
           };
           for (std::size_t k = 0; k < ss.size(); ++k) {
             // Untrimmed, a run of stretches k..k1 between cusps of the offset (the curve's
-            // tangent continuous between them): cubics stretch by stretch, then across the
-            // cusps (run_source), stopped as soon as that needs as many; the fewer kept.
+            // tangent continuous between them).
             std::size_t k1 = k;
             if (!o.trim && d != 0 && o.fit == OffsetFit::greedy) {
               while (k1 + 1 < ss.size() && std::abs(turn(ss[k1].t_hi, ss[k1 + 1].t_lo)) <= T(1e-9)) ++k1;
@@ -1593,11 +1566,11 @@ OffsetCurve<T> offset(const Pieces<T, 2>& curve, const OffsetOptions<T>& o) {
               continue;
             }
             begin(ss[k]);
-            // Untrimmed, a run of stretches k..k1 joined at cusps of the offset: first one
-            // cubic across them all (run_source; lib2geom's route follows the offset through
-            // its cusps the same way), else the stretches' cubics one by one.
+            // First one cubic across them all (offset_source; lib2geom's route follows the
+            // offset through its cusps the same way, docs/performance.md W11, session 16),
+            // else the stretches' cubics one by one.
             if (raw.start_shift == 0) {
-              const Source<T> src = run_source<T>(c, ss, k, k1, d);
+              const Source<T> src = offset_source<T>(c, &ss[k], &ss[k1], d);
               std::array<Screened<T>, 2> work;
               Screened<T>& g = best_screened(src, src.lo, src.hi, tol, true, work);
               const T e = g.error <= tol ? certify(g, src, src.lo, src.hi, tol) : g.error;
