@@ -318,6 +318,24 @@ class OffsetTest(CliTest):
         s = np.sqrt(1 + 4 * x * x)
         return np.column_stack([x - 2 * d * x / s, x * x + d / s])
 
+    def test_glyph_piece_across_its_offset_cusp(self):
+        # A glyph's quadratic (W11's glyph piece 18, em 2048) offset by d = 204.8 (1e-1 em)
+        # to its left, untrimmed: its radius of curvature falls below d near the end
+        # (numpy, below), so the exact offset has a cusp there and runs backwards after it.
+        # The offset is smooth in t through the cusp (its velocity (1 - d kappa) C' only
+        # passes through zero), and one cubic follows it within the tolerance both ways
+        # (the mpmath oracle), where the stretches on either side took one each.
+        Q = np.array([[354.0, 973.0], [354.0, 887.0], [410.0, 839.0]])
+        d, tol = 204.8, 2.048
+        t = np.linspace(0, 1, 2001)[:, None]
+        v = 2 * ((1 - t) * (Q[1] - Q[0]) + t * (Q[2] - Q[1]))
+        a = 2 * (Q[2] - 2 * Q[1] + Q[0])
+        g = 1 - d * (v[:, 0] * a[1] - v[:, 1] * a[0]) / np.linalg.norm(v, axis=1) ** 3
+        self.assertEqual(int(np.count_nonzero(np.diff(np.sign(g)))), 1)  # one cusp of the offset
+        cs = cubics_of(self.offset({"type": "bezier", "points": Q.tolist()}, d, tol, trim=False))
+        self.assertEqual(len(cs), 1)
+        self.assert_within(cs, ExactOffset([Piece(Q.tolist())], d), tol)
+
     def test_parabola_cusps_trimmed(self):
         # y = x^2 on [-1, 1] (the quadratic Bézier (-1, 1), (0, -1), (1, 1)), travelled
         # left to right: left is up, towards the centre of curvature. Its radius of

@@ -116,7 +116,7 @@ struct Chain {
 /// The quadratics from p0 (direction t0) to p2 (direction t1) whose end tangents are t0
 /// and t1: one quadratic whose middle point is where the tangent lines meet, ahead of p0
 /// and behind p2 (alpha, beta > 0 in p0 + alpha t0 = p2 - beta t1). When the lines are
-/// skew (a space curve, beyond 1e-12 of the chord), two quadratics (p0, a, m), (m, b, p2)
+/// skew (a space curve, beyond 1e-12 of the chord or 64 ulps of it), two quadratics (p0, a, m), (m, b, p2)
 /// with a = p0 + (v0 / 4) t0, b = p2 - (v1 / 4) t1 and m their midpoint, v0 and v1 the
 /// part's speeds at its ends: each half matches the part's end point and end derivative
 /// (as cu2qu's two-piece spline), and the halves are tangent-continuous at m (a, m, b on
@@ -142,7 +142,11 @@ std::optional<Chain<T, D>> tangent_chain(const Point<T, D>& p0, const Vector<T, 
   const Vector<T, D> u2 = w / s;
   const T d1 = dot(d, t0), d2 = dot(d, u2);
   const Vector<T, D> off = d - d1 * t0 - d2 * u2;  // the part of the chord out of the lines' plane
-  if (fast_norm(off) > T(1e-12) * chord) {
+  // Skew: beyond 1e-12 of the chord, or 64 ulps where that is finer than the type (float:
+  // the rounding of a plane curve's own frame, which made an exact quadratic two). Plane
+  // curves' lines always meet.
+  constexpr T skew = std::max(T(1e-12), T(64) * std::numeric_limits<T>::epsilon());
+  if (D > 2 && fast_norm(off) > skew * chord) {
     if (!(v0 > 0 && v1 > 0)) return std::nullopt;
     const Point<T, D> a = p0 + (v0 / T(4)) * t0, b = p2 - (v1 / T(4)) * t1;
     const Point<T, D> m = a + T(0.5) * (b - a);
