@@ -181,6 +181,30 @@ class QuadraticTest(CliTest):
         hausdorff_check(self, cusp, r, 1e-3)
         self.assertIn(0.5, [round(b, 12) for b in r["breaks"]])  # a joint at the cusp
 
+    def test_scale_invariance(self):
+        # Audit 16 D11: scaled by 1e-200 the cubic came back as one quadratic 400 times
+        # outside the tolerance, and from 1e170 up it was refused. The problem is scale
+        # invariant: at every scale the same count as at scale 1, and each response, scaled
+        # back here (exactly for 2^-660, to 1e-16 otherwise), within the tolerance of the
+        # unscaled curve on dense samples. 4e307 puts a coordinate at 1.6e308 (the estimate
+        # of the count beforehand overflowed there), 1e-305 makes the tolerance subnormal.
+        # A rational piece and a B-spline (several pieces) take the same path: their
+        # counts only (the B-spline is not sampled here).
+        tol = 1e-3
+        curves = (test_cli.bezier([[0, 0], [1, 2], [3, 2], [4, 0]]), test_cli.bezier([[0, 0], [1, 1], [2, -1], [3, 0]]),
+                  {"type": "rational_bezier", "points": [[0, 0], [1, 2], [3, 2], [4, 0]], "weights": [1, 3, 1, 2]},
+                  {"type": "bspline", "degree": 3, "knots": [0, 0, 0, 0, 1, 2, 2, 2, 2], "points": [[0, 0], [1, 2], [2, 2], [3, 0], [4, -1]]})
+        for unit in curves:
+            n1 = len(self.quad(unit, tol)["segments"])
+            for s in (2.0**-660, 1e-305, 1e-300, 1e-200, 1e170, 1e300, 4e307):
+                with self.subTest(curve=unit["type"], scale=s):
+                    r = self.quad(dict(unit, points=[[x * s for x in p] for p in unit["points"]]), tol * s)
+                    self.assertEqual(len(r["segments"]), n1)
+                    if unit["type"] == "bspline":
+                        continue
+                    back = {"type": "path", "segments": [{"type": "bezier", "points": [[x / s for x in p] for p in q["points"]]} for q in r["segments"]]}
+                    hausdorff_check(self, unit, back, tol * (1 + 1e-9))
+
     def test_bad_input(self):
         c = test_cli.bezier([[0, 0], [1, 2], [3, 2], [4, 0]])
         self.bad("to_quadratic", {"curve": c, "tolerance": 0}, "tolerance", contains="> 0")

@@ -1099,6 +1099,74 @@ void approximate_piece(const S& s, const Vector<T, D>& start_dir, const Vector<T
   }
 }
 
+
+/// The frame of to_quadratic: the exponent e that brings the largest |coordinate| of the
+/// control points into [0.5, 1) (0 when every coordinate is 0). When |e| is beyond a
+/// sixteenth of the type's exponent range (double: 2^64, where squared and fourth powers
+/// of lengths and tolerances begin to leave the normal range), the approximation runs on
+/// the curve scaled by 2^-e and the tolerance with it, then scales the chain back by 2^e:
+/// exact (powers of two), so that tiny or huge curves give the unit curve's segments
+/// times their scale. Within that range the arithmetic is the same at every power of two
+/// (no absolute threshold; measured: the same counts from 1e-155 to 1e150 before the
+/// frame), and the curve is used as it is (no copy). A curve of exact pieces (degree
+/// <= 2, see approximate_piece) is never scaled: it comes back as itself.
+template <class T>
+bool needs_frame(int e) {
+  constexpr int range = std::numeric_limits<T>::max_exponent / 16;
+  return e < -range || e > range;
+}
+template <class S>
+bool exact_piece(const S& s) {
+  using T = typename S::Scalar;
+  const int n = s.degree();
+  if (n <= 1) return true;
+  if (n > 2) return false;
+  if constexpr (requires { s.weights(); }) {
+    for (const T w : s.weights())
+      if (w != s.weights().front()) return false;
+  }
+  return true;
+}
+template <class T, int D>
+void frame_max(const std::vector<Point<T, D>>& P, T& m) {
+  for (const auto& p : P)
+    for (int d = 0; d < D; ++d) m = std::max(m, std::abs(p[d]));
+}
+template <class T>
+int frame_exponent(T max_abs) {
+  if (!(max_abs > 0)) return 0;
+  int e = 0;
+  (void)std::frexp(max_abs, &e);
+  return e;
+}
+template <class T, int D>
+std::vector<Point<T, D>> scale_points(const std::vector<Point<T, D>>& P, int k) {
+  std::vector<Point<T, D>> Q(P.size());
+  for (std::size_t i = 0; i < P.size(); ++i)
+    for (int d = 0; d < D; ++d) Q[i][d] = std::ldexp(P[i][d], k);
+  return Q;
+}
+template <class T, int D>
+Bezier<T, D> scale_piece(const Bezier<T, D>& c, int k) {
+  return Bezier<T, D>(scale_points(c.points(), k));
+}
+template <class T, int D>
+RationalBezier<T, D> scale_piece(const RationalBezier<T, D>& c, int k) {
+  return RationalBezier<T, D>(scale_points(c.points(), k), c.weights());
+}
+/// The tolerance in the frame: capped at 2^512 (the curve there is within 1 of the
+/// origin, so a larger tolerance admits nothing more) so that it stays finite.
+template <class T>
+T frame_tolerance(T tolerance, int e) {
+  return std::min(std::ldexp(tolerance, -e), std::ldexp(T(1), 512));
+}
+/// The chain computed in the frame, back in the curve's coordinates.
+template <class T, int D>
+void unframe(QuadraticChain<T, D>& r, int e) {
+  for (auto& s : r.segments) s = Bezier<T, D>(scale_points(s.points(), e));
+  r.max_error = std::ldexp(r.max_error, e);
+}
+
 }  // namespace detail::quadratic
 
 /// The curve as a chain of quadratic Bézier segments within `tolerance` (> 0) of it.
@@ -1144,6 +1212,26 @@ QuadraticChain<typename C::Scalar, C::dimension> to_quadratic(const C& p, typena
   if (!std::isfinite(tolerance) || !(tolerance > 0)) {
     throw InvalidArgument("tolerance", "must be a finite number > 0, got " + detail::format_number(tolerance));
   }
+  {  // the frame (frame_exponent): the scaled pieces have e = 0
+    T m = 0;
+    bool exact = true;
+    for (const auto& seg : p.segments()) {
+      std::visit(
+          [&](const auto& s) {
+            frame_max(s.points(), m);
+            exact = exact && exact_piece(s);
+          },
+          seg);
+    }
+    if (const int e = frame_exponent(m); !exact && needs_frame<T>(e)) {
+      std::vector<BezierPiece<T, D>> scaled;
+      scaled.reserve(p.size());
+      for (const auto& seg : p.segments()) std::visit([&](const auto& s) { scaled.emplace_back(scale_piece(s, -e)); }, seg);
+      QuadraticChain<T, D> r = to_quadratic(C(std::move(scaled), p.breaks()), frame_tolerance(tolerance, e), max_segments);
+      unframe(r, e);
+      return r;
+    }
+  }
   QuadraticChain<T, D> r;
   r.breaks.reserve(p.size() + 1);
   r.segments.reserve(p.size());
@@ -1184,6 +1272,15 @@ QuadraticChain<typename C::Scalar, C::dimension> to_quadratic(const C& c, typena
   using namespace detail::quadratic;
   if (!std::isfinite(tolerance) || !(tolerance > 0)) {
     throw InvalidArgument("tolerance", "must be a finite number > 0, got " + detail::format_number(tolerance));
+  }
+  {  // the frame (frame_exponent): the scaled curve has e = 0
+    T m = 0;
+    frame_max(c.points(), m);
+    if (const int e = frame_exponent(m); needs_frame<T>(e) && !exact_piece(c)) {
+      QuadraticChain<T, C::dimension> r = to_quadratic(scale_piece(c, -e), frame_tolerance(tolerance, e), max_segments);
+      unframe(r, e);
+      return r;
+    }
   }
   QuadraticChain<T, C::dimension> r;
   r.breaks.reserve(4);
