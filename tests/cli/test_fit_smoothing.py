@@ -265,6 +265,32 @@ class SmoothingFitTest(CliTest):
                 worst_curve = max(worst_curve, np.max(np.abs(got - make_smoothing_spline(t, y)(grid))) / scale)
         print(f"\n  noisy gcv vs scipy's gcv: lambda {worst_lam:.1e} relative, curve {worst_curve:.1e} relative", file=sys.stderr)
 
+    def test_gcv_does_not_depend_on_the_scale(self):
+        # Audit 16 D7: both terms of the objective are quadratic in the values, so GCV's
+        # lambda is the same at every scale; before, 1e-200 gave lambda 12 (an almost
+        # straight fit, squared residuals underflowing) and 1e160 was refused. Against the
+        # unscaled answer: lambda within the iteration's tolerance xatol = 1e-5 (the
+        # rounding of a scale that is not a power of two may move the last Brent step),
+        # exactly for 2^-660; the control points scaled back within 1e-9 of the largest.
+        rng = np.random.default_rng(0)
+        x = np.linspace(0, 1, 12)
+        y = np.sin(3 * x) + 0.1 * rng.standard_normal(12)
+        cases = (([[v] for v in y], "uniform"), ([[0, 0], [1, 1], [2, 0], [3, 1], [4, 0]], "chord"))
+        for pts, kind in cases:
+            base = self.fit(pts, "gcv", parametrization=kind)
+            P0 = np.array(base["curve"]["points"])
+            for s in (2.0**-660, 1e-300, 1e-200, 1e160, 1e300):
+                with self.subTest(n=len(pts), scale=s):
+                    r = self.fit([[v * s for v in p] for p in pts], "gcv", parametrization=kind)
+                    # chord parameters at 1e-300: the same to rounding
+                    self.assertLess(np.max(np.abs(np.subtract(r["curve"]["knots"], base["curve"]["knots"]))), 1e-15)
+                    back = np.array(r["curve"]["points"]) / s
+                    if s == 2.0**-660:
+                        self.assertEqual(r["smoothing"], base["smoothing"])
+                        self.assertTrue(np.array_equal(back, P0))
+                    self.assertLess(abs(r["smoothing"] - base["smoothing"]), 1e-5)
+                    self.assertLess(np.max(np.abs(back - P0)) / np.max(np.abs(P0)), 1e-9)
+
     def test_gcv_of_several_coordinates_is_the_stacked_criterion(self):
         # d = 2 and 3: lambda minimises the stacked GCV (numpy's dense hat matrix here):
         # the bounded minimisation of that criterion by scipy.optimize lands on the same

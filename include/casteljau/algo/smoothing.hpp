@@ -349,9 +349,10 @@ struct SmoothingSolution {
   T gcv;
 };
 
+/// smoothing_solution on values already in the frame (largest |y| in [0.5, 1), or all 0).
 template <class T>
-SmoothingSolution<T> smoothing_solution(const std::vector<T>& t, const Eigen::Matrix<T, Eigen::Dynamic, Eigen::Dynamic>& y,
-                                        std::optional<T> lambda, int max_evaluations) {
+SmoothingSolution<T> smoothing_solution_unit(const std::vector<T>& t, const Eigen::Matrix<T, Eigen::Dynamic, Eigen::Dynamic>& y,
+                                             std::optional<T> lambda, int max_evaluations) {
   ReinschSystem<T> sys(t, y);
   SmoothingSolution<T> out{{}, {}, T(0), std::numeric_limits<T>::quiet_NaN()};
   if (!lambda) {
@@ -367,6 +368,31 @@ SmoothingSolution<T> smoothing_solution(const std::vector<T>& t, const Eigen::Ma
   out.lambda = *lambda;
   Eigen::Matrix<T, Eigen::Dynamic, Eigen::Dynamic> r;
   sys.solve(out.lambda, out.gamma, r, out.g);
+  return out;
+}
+
+/// The solution for values y of any size: they are first scaled by 2^-e, e the exponent that brings the largest |y| into
+/// [0.5, 1) (exact: a power of two), and g, gamma scaled back by 2^e, the criterion by
+/// 2^(2e) (which may overflow or underflow there: it is reported, not used). Both terms of
+/// the objective are quadratic in y, so lambda and GCV's minimiser do not depend on the
+/// scale; without the frame the squared residuals underflowed at 1e-200 (GCV then chose
+/// an almost straight fit) and overflowed at 1e160 (refused).
+template <class T>
+SmoothingSolution<T> smoothing_solution(const std::vector<T>& t, const Eigen::Matrix<T, Eigen::Dynamic, Eigen::Dynamic>& y_given,
+                                        std::optional<T> lambda, int max_evaluations) {
+  using Matrix = Eigen::Matrix<T, Eigen::Dynamic, Eigen::Dynamic>;
+  int e = 0;
+  if (y_given.size() > 0) {
+    const T largest = y_given.cwiseAbs().maxCoeff();
+    if (largest > 0 && std::isfinite(largest)) (void)std::frexp(largest, &e);
+  }
+  const Matrix y = e == 0 ? y_given : Matrix(y_given.unaryExpr([e](T v) { return std::ldexp(v, -e); }));
+  SmoothingSolution<T> out = smoothing_solution_unit<T>(t, y, lambda, max_evaluations);
+  if (e != 0) {
+    out.g = out.g.unaryExpr([e](T v) { return std::ldexp(v, e); });
+    out.gamma = out.gamma.unaryExpr([e](T v) { return std::ldexp(v, e); });
+    out.gcv = std::ldexp(out.gcv, 2 * e);
+  }
   return out;
 }
 
