@@ -193,7 +193,8 @@ class QuadraticTest(CliTest):
         tol = 1e-3
         curves = (test_cli.bezier([[0, 0], [1, 2], [3, 2], [4, 0]]), test_cli.bezier([[0, 0], [1, 1], [2, -1], [3, 0]]),
                   {"type": "rational_bezier", "points": [[0, 0], [1, 2], [3, 2], [4, 0]], "weights": [1, 3, 1, 2]},
-                  {"type": "bspline", "degree": 3, "knots": [0, 0, 0, 0, 1, 2, 2, 2, 2], "points": [[0, 0], [1, 2], [2, 2], [3, 0], [4, -1]]})
+                  {"type": "bspline", "degree": 3, "knots": [0, 0, 0, 0, 1, 2, 2, 2, 2],
+                   "points": [[0, 0], [1, 2], [2, 2], [3, 0], [4, -1]]})
         for unit in curves:
             n1 = len(self.quad(unit, tol)["segments"])
             for s in (2.0**-660, 1e-305, 1e-300, 1e-200, 1e170, 1e300, 4e307):
@@ -202,7 +203,8 @@ class QuadraticTest(CliTest):
                     self.assertEqual(len(r["segments"]), n1)
                     if unit["type"] == "bspline":
                         continue
-                    back = {"type": "path", "segments": [{"type": "bezier", "points": [[x / s for x in p] for p in q["points"]]} for q in r["segments"]]}
+                    back = {"type": "path", "segments": [test_cli.bezier([[x / s for x in p] for p in q["points"]])
+                                                         for q in r["segments"]]}
                     hausdorff_check(self, unit, back, tol * (1 + 1e-9))
 
     def test_bad_input(self):
