@@ -136,6 +136,11 @@ constexpr Field frames_fields[] = {
 };
 
 Response offset(const Args& a) {
+  // A field of another choice is an error (the contract's rule for curve objects).
+  if (a.has("miter_limit") && a.string("join") != "miter") {
+    throw InvalidArgument("miter_limit", "belongs to join 'miter', not " +
+                                             (a.has("join") ? "'" + std::string(a.string("join")) + "'" : std::string("the default 'round'")));
+  }
   return {OrderedJson{{"curve", to_json(io::offset(a.curve("curve"), a.number("distance"), a.number("tolerance"), a.boolean("trim"),
                                                    a.string("join"), a.number("miter_limit")))}}};
 }

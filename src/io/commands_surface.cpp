@@ -433,6 +433,13 @@ std::vector<CurveForm<double>> compatible_curves(std::span<const AnyCurve> curve
     }
   }
   make_compatible(cs);
+  // make_compatible raises all to the highest degree: 0 only if every curve is piecewise
+  // constant, and a surface's degrees are >= 1 (surfaces.md).
+  if (cs[0].p == 0) {
+    throw InvalidArgument(field, std::string(curves.size() == 1 ? "the curve has" : "every curve has") +
+                                     " degree 0 (piecewise constant): the surface would have degree 0 along u, and a "
+                                     "surface's degrees must be >= 1");
+  }
   return cs;
 }
 

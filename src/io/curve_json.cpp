@@ -608,7 +608,7 @@ AnyCurve read_circle(const Fields& f) {
   const RawPoints O = read_center(f, true);
   const double r = positive_from_json(f.required("radius"), "radius");
   const double two_pi = 2 * std::numbers::pi;
-  if (O.dim == 2) return AnyCurve(nurbs_ellipse_arc(O.points<2>()[0], Vector<double, 2>(r, 0.0), Vector<double, 2>(0.0, r), 0.0, two_pi));
+  if (O.dim == 2) return AnyCurve(nurbs_ellipse_arc(O.points<2>()[0], Vector<double, 2>(r, 0.0), Vector<double, 2>(0.0, r), 0.0, two_pi, "radius"));
   // 3-D: the plane through the center perpendicular to the normal; angle 0 points along
   // the coordinate axis least aligned with the normal (the first of x, y, z on ties),
   // projected into the plane, and the circle runs counter-clockwise seen from the normal's
@@ -628,7 +628,7 @@ AnyCurve read_circle(const Fields& f) {
   Vector<double, 3> X = e - dot(e, n) * n;
   X = (1 / norm(X)) * X;
   const Vector<double, 3> Y(n[1] * X[2] - n[2] * X[1], n[2] * X[0] - n[0] * X[2], n[0] * X[1] - n[1] * X[0]);  // n x X
-  return AnyCurve(nurbs_ellipse_arc(O.points<3>()[0], r * X, r * Y, 0.0, two_pi));
+  return AnyCurve(nurbs_ellipse_arc(O.points<3>()[0], r * X, r * Y, 0.0, two_pi, "radius"));
 }
 
 AnyCurve read_ellipse(const Fields& f) {
@@ -641,7 +641,7 @@ AnyCurve read_ellipse(const Fields& f) {
   const double rot = f.has("rotation") ? number_from_json(*f.optional("rotation"), "rotation") : 0.0;
   const double c = std::cos(rot), s = std::sin(rot);
   return AnyCurve(nurbs_ellipse_arc(O.points<2>()[0], Vector<double, 2>(radii[0] * c, radii[0] * s),
-                                    Vector<double, 2>(-radii[1] * s, radii[1] * c), 0.0, 2 * std::numbers::pi));
+                                    Vector<double, 2>(-radii[1] * s, radii[1] * c), 0.0, 2 * std::numbers::pi, "radii"));
 }
 
 AnyCurve read_arc(const Fields& f) {
@@ -669,10 +669,11 @@ AnyCurve read_arc(const Fields& f) {
     }
     end = a0 + sweep;
   }
-  if (!(end - a0 <= two_pi)) {
+  // A sweep over 2 pi by the rounding of end = start + 2 pi (a few ulps) is the full turn.
+  if (!(end - a0 <= two_pi + full_turn_slack(a0, end))) {
     throw InvalidArgument("end_angle", "the sweep end_angle - start_angle must be at most 2 pi, got " + casteljau::detail::format_number(a1 - a0));
   }
-  return AnyCurve(nurbs_ellipse_arc(O.points<2>()[0], Vector<double, 2>(r, 0.0), Vector<double, 2>(0.0, r), a0, end));
+  return AnyCurve(nurbs_ellipse_arc(O.points<2>()[0], Vector<double, 2>(r, 0.0), Vector<double, 2>(0.0, r), a0, end, "radius"));
 }
 
 thread_local int path_depth = 0;

@@ -37,20 +37,26 @@ MovingFrames moving_frames(const AnyCurve& c, std::span<const double> t, const s
                             "parameters must be increasing (" + format_number(t[i]) + " after " + format_number(t[i - 1]) + ")");
     }
   }
-  const AnyFrames any = frenet_frames(c, t);
-  const auto& fr = std::get<Frames<double, 3>>(any);
   MovingFrames out;
-  std::vector<Vector<double, 3>> tangents;
-  for (const auto& f : fr) {
-    tangents.push_back(f.tangent);
-    out.tangents.push_back(to_array(f.tangent));
-  }
   if (!rmf) {
-    for (const auto& f : fr) {
+    // The contract's "null where undefined": no tangent where the velocity vanishes.
+    std::vector<char> stopped;
+    const AnyFrames any = frenet_frames(c, t, &stopped);
+    const auto& fr = std::get<Frames<double, 3>>(any);
+    for (std::size_t i = 0; i < fr.size(); ++i) {
+      const auto& f = fr[i];
+      out.tangents.push_back(stopped[i] ? std::nullopt : std::optional(to_array(f.tangent)));
       out.normals.push_back(f.normal ? std::optional(to_array(*f.normal)) : std::nullopt);
       out.binormals.push_back(f.normal ? std::optional(to_array(cross(f.tangent, *f.normal))) : std::nullopt);
     }
     return out;
+  }
+  const AnyFrames any = frenet_frames(c, t);
+  const auto& fr = std::get<Frames<double, 3>>(any);
+  std::vector<Vector<double, 3>> tangents;
+  for (const auto& f : fr) {
+    tangents.push_back(f.tangent);
+    out.tangents.push_back(to_array(f.tangent));
   }
   if (t.empty()) return out;
   Vector<double, 3> r0;

@@ -161,7 +161,9 @@ std::vector<double> curvature(const AnyCurve& c, std::span<const double> t) {
 
 namespace {
 
-AnyFrames frames_of(const AnyCurve& c, std::span<const double> t, bool require_normal) {
+// `stopped` (frenet_frames only): where the velocity vanishes, a flag 1 and a frame with a
+// zero tangent in its place, not an error.
+AnyFrames frames_of(const AnyCurve& c, std::span<const double> t, bool require_normal, std::vector<char>* stopped = nullptr) {
   return std::visit(
       [&]<class P>(const P& p) -> AnyFrames {
         constexpr int D = P::dimension;
@@ -173,6 +175,11 @@ AnyFrames frames_of(const AnyCurve& c, std::span<const double> t, bool require_n
             f = casteljau::frame(p, t[j]);
           } catch (const InvalidArgument& e) {
             throw InvalidArgument(where, e.problem());
+          }
+          if (stopped) stopped->push_back(f ? 0 : 1);
+          if (!f && stopped) {
+            out.push_back(Frame<double, D>{Vector<double, D>{}, std::nullopt, std::nullopt, 0.0, std::nullopt});
+            continue;
           }
           if (!f) {
             throw InvalidArgument(where, "the frame is undefined at t = " + format_number(t[j]) +
@@ -204,7 +211,9 @@ AnyFrames frames_of(const AnyCurve& c, std::span<const double> t, bool require_n
 
 AnyFrames frames(const AnyCurve& c, std::span<const double> t) { return frames_of(c, t, true); }
 
-AnyFrames frenet_frames(const AnyCurve& c, std::span<const double> t) { return frames_of(c, t, false); }
+AnyFrames frenet_frames(const AnyCurve& c, std::span<const double> t, std::vector<char>* stopped) {
+  return frames_of(c, t, false, stopped);
+}
 
 double area(const AnyCurve& c) {
   return std::visit(

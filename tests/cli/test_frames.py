@@ -141,6 +141,21 @@ class FramesTest(CliTest):
         stop = {"type": "bezier", "points": [[0, 0, 0], [0, 0, 0], [1, 1, 0], [1, 1, 1]]}
         self.bad("frames", {"curve": stop, "t": [0, 1]}, "t[0]", contains="velocity")
 
+    def test_frenet_null_where_the_velocity_vanishes(self):
+        # The contract: Frenet frames are null where undefined. At t = 0 (P0 = P1) the
+        # velocity is zero: no tangent, normal or binormal; the other parameters keep
+        # theirs. Tangents by hand: C'(t) = 3 sum B2_i(t) (P[i+1] - P[i]), differences 0,
+        # (1, 1, 0), (0, -1, 1): at 1/2 (0.5, 0.25, 0.25), at 1 (0, -1, 1).
+        stop = {"type": "bezier", "points": [[0, 0, 0], [0, 0, 0], [1, 1, 0], [1, 0, 1]]}
+        r = self.frames(curve=stop, t=[0, 0.5, 1], method="frenet")
+        self.assertEqual([r["tangents"][0], r["normals"][0], r["binormals"][0]], [None, None, None])
+        self.assert_close(r["tangents"][1], (np.array([2, 1, 1]) / math.sqrt(6)).tolist(), 1e-15)
+        self.assert_close(r["tangents"][2], [0, -1 / math.sqrt(2), 1 / math.sqrt(2)], 1e-15)
+        for k in (1, 2):
+            self.assertIsNotNone(r["normals"][k])
+            self.assertAlmostEqual(float(np.dot(r["normals"][k], r["tangents"][k])), 0, delta=1e-15)
+            self.assert_close(r["binormals"][k], np.cross(r["tangents"][k], r["normals"][k]).tolist(), 1e-15)
+
 
 if __name__ == "__main__":
     test_cli.BINARY = os.path.abspath(sys.argv.pop(1))

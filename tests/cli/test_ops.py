@@ -313,7 +313,7 @@ class RefineTest(CliTest):
         # break, p + 1, allowed; twice more is refused below).
         r = self.ok("refine", {"curve": CIRCLE, "knots": [0.1, 0.3, 0.3, 0.6]})["curve"]
         self.assertEqual(r["knots"], sorted(CIRCLE["knots"] + [0.1, 0.3, 0.3, 0.6]))
-        self.bad("refine", {"curve": CIRCLE, "knots": [0.1, 0.25, 0.25]}, "knots[1]", contains="multiplicity")
+        self.bad("refine", {"curve": CIRCLE, "knots": [0.1, 0.25, 0.25]}, "knots[2]", contains="multiplicity")
         ts = [i / 16 for i in range(17)]
         for q in self.ok("eval", {"curve": r, "t": ts})["points"]:
             self.assertAlmostEqual(q[0] ** 2 + q[1] ** 2, 1, delta=1e-14)  # on the unit circle
@@ -336,8 +336,12 @@ class RefineTest(CliTest):
         self.bad("refine", {"curve": c, "knots": [0.2, 0.1]}, "knots[1]", contains="non-decreasing")
         self.bad("refine", {"curve": c, "knots": [0.2, 1.5]}, "knots[1]", contains="domain")
         self.bad("refine", {"curve": c, "knots": [-0.1]}, "knots[0]", contains="domain")
-        # the first copy of a knot that would repeat past p + 1 is named
-        self.bad("refine", {"curve": c, "knots": [0.2, 0.5, 0.5, 0.5]}, "knots[1]", contains="multiplicity")
+        # the copy of a knot that goes past p + 1 is named (0.5 is a knot of c once: its
+        # third copy, knots[3], makes p + 2 = 4; the message gives the total)
+        self.bad("refine", {"curve": c, "knots": [0.2, 0.5, 0.5, 0.5]}, "knots[3]", contains="multiplicity 4")
+        self.bad("refine", {"curve": c, "knots": [0.2, 0.5, 0.5, 0.5, 0.5]}, "knots[3]", contains="multiplicity 5")
+        c1 = bspline([0, 0, 1, 2, 2], [[0, 0], [1, 1], [2, 0]], 1)  # degree 1, knot 1 once
+        self.bad("refine", {"curve": c1, "knots": [0.2, 1, 1]}, "knots[2]", contains="multiplicity 3")
         self.bad("refine", {"curve": c, "knots": [0.2, 0]}, "knots[1]")
         self.bad("refine", {"curve": c, "knots": [0]}, "knots[0]", contains="multiplicity")  # clamped end
         self.bad("refine", {"curve": c, "knots": [0.1, "a"]}, "knots[1]")

@@ -185,6 +185,42 @@ class ShorthandTest(CliTest):
             # Its length is r times the sweep (the length query's 1e-12 relative).
             self.assertAlmostEqual(self.ok("length", {"curve": c})["length"], r * sweep, delta=1e-11 * r * sweep)
 
+    def test_any_scale(self):
+        # Scale invariance: the circle of radius r about the origin is r times the unit
+        # circle's points (scaling by a power of two is exact; the other radii: rounding,
+        # a few eps). Only control points that overflow are refused, naming the radius.
+        ts = [0, 0.1, 0.3, 0.55, 0.9]
+        for r in (2.0 ** -300, 1e-99, 1e-90, 1e80, 1e200, 2.0 ** 1000):
+            for curve in (circle([0, 0], r), circle([0, 0, 0], r, normal=[1, 2, 3]), ellipse([0, 0], [r, r / 2], rotation=0.3),
+                          arc([0, 0], r, 0.5, 2)):
+                pts = self.ok("eval", {"curve": curve, "t": ts})["points"]
+                for p in pts:
+                    self.assertTrue(all(map(math.isfinite, p)), (r, curve, p))
+                if curve["type"] == "circle":
+                    for p in pts:
+                        # |P| = r: mpmath, no overflow or underflow in the norm
+                        self.assertLessEqual(abs(float(mpmath.sqrt(sum(mpmath.mpf(x) ** 2 for x in p))) / r - 1), 1e-15, (r, p))
+        # center + r = 2e308; the arc's middle control point at r / cos(0.75) in the
+        # direction 1.25: y = 1.5e308 sin(1.25) / cos(0.75) = 1.9e308; the rotated
+        # ellipse's corner (a, a) turned by 0.5: y = a (sin 0.5 + cos 0.5) = 2.3e308.
+        for curve in (circle([1e308, 0], 1e308), arc([0, 0], 1.5e308, 0.5, 2)):
+            self.bad("eval", {"curve": curve, "t": [0]}, "curve.radius", contains="overflow")
+        self.bad("eval", {"curve": ellipse([0, 0], [1.7e308, 1.7e308], rotation=0.5), "t": [0]}, "curve.radii", contains="overflow")
+
+    def test_full_turn_rounded_in_doubles(self):
+        # end = start + 2 pi computed in doubles can be one ulp over 2 pi (start 1.739:
+        # 8.022185307179587 - 1.739 = 6.283185307179587 > 2 pi) or under: the full circle,
+        # closed exactly, as at start = 0; a sweep clearly over 2 pi (by 1e-9) is refused.
+        for k in range(1, 200):
+            a0 = 0.037 * k
+            pts = self.ok("eval", {"curve": arc([1, 2], 3, a0, a0 + 2 * math.pi), "t": [0, 0.5, 1]})["points"]
+            self.assertEqual(pts[0], pts[2], a0)  # closed exactly
+            self.assertAlmostEqual(pts[1][0], 1 + 3 * math.cos(a0 + math.pi), delta=1e-14, msg=a0)
+            self.assertAlmostEqual(pts[1][1], 2 + 3 * math.sin(a0 + math.pi), delta=1e-14, msg=a0)
+        for a0 in (1.739, 1e3, -1e5):
+            self.bad("eval", {"curve": arc([0, 0], 1, a0, a0 + 2 * math.pi + 1e-9 * max(1, abs(a0))), "t": [0]}, "curve.end_angle",
+                     contains="2 pi")
+
     def test_circle_in_3d(self):
         for n in ([0, 0, 1], [0, 1, 1], [1, 2, -3], [1e-200, 0, 0], [5, 5, 5]):
             C, r = [1, -2, 0.5], 1.5

@@ -357,6 +357,20 @@ class ConstructionTest(CliTest):
                 want = [(1 - v) * x + v * y for x, y in zip(de_casteljau(A, u), b[k])]
                 self.assert_close(evaluate(s, u, v), want, TIGHT)
 
+    def test_degree_zero_curves_are_refused(self):
+        # surfaces.md: a surface's degrees are >= 1; piecewise constant curves would give
+        # degree 0 along u. One degree-0 curve beside a degree-1 one is raised to 1: fine.
+        step = {"type": "bspline", "degree": 0, "knots": [0, 1, 2], "points": [[0, 0, 0], [1, 1, 0]]}
+        dot = {"type": "bezier", "points": [[1, 2, 3]]}
+        for req, field in (({"construct": "extrude", "curve": step, "vector": [0, 0, 1]}, "curve"),
+                           ({"construct": "extrude", "curve": dot, "vector": [0, 0, 1]}, "curve"),
+                           ({"construct": "revolve", "curve": step, "axis": {"point": [0, 0, 0], "direction": [0, 0, 1]}}, "curve"),
+                           ({"construct": "ruled", "curves": [step, step]}, "curves"),
+                           ({"construct": "loft", "curves": [dot, {"type": "bezier", "points": [[2, 2, 3]]}]}, "curves")):
+            self.bad("surface", req, field, contains="degree 0")
+        line = {"type": "bezier", "points": [[0, 0, 1], [2, 0, 1]]}
+        self.assertEqual(self.ok("surface", {"construct": "ruled", "curves": [dot, line]})["surface"]["degree"][0], 1)
+
     def test_loft_passes_through_its_curves(self):
         curves = [[[0, 0, z], [1, z * z, z], [2, 1, z], [3, 0, z]] for z in (0, 1, 2.5, 3)]
         objs = [{"type": "bezier", "points": c} for c in curves]

@@ -67,7 +67,7 @@ TEST(KnotInsertion, Errors) {
   EXPECT_INVALID_ARGUMENT(c.insert_knot(1.0), "times", "inserting it once more would exceed p + 1 = 3");  // clamped end
   EXPECT_INVALID_ARGUMENT(c.insert_knot(0.25, 0), "times", ">= 1");
   const std::vector<double> X{0.5, 0.5, 0.5};
-  EXPECT_INVALID_ARGUMENT(c.refine_knots(X), "knots[0]", "multiplicity 4, more than p + 1 = 3");
+  EXPECT_INVALID_ARGUMENT(c.refine_knots(X), "knots[2]", "multiplicity 4, more than p + 1 = 3");  // the copy that goes over
 }
 
 // Removal undoes insertion exactly (up to rounding), and a knot the curve needs stays.

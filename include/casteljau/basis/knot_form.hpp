@@ -90,7 +90,8 @@ KnotForm<T, V> insert_knot(KnotForm<T, V> f, T u, int times) {
 }
 
 /// f with the sorted knots X inserted (each in the domain, multiplicities at most p + 1
-/// after; InvalidArgument naming "knots[j]" of X otherwise).
+/// after; InvalidArgument naming "knots[j]" of X otherwise, for a multiplicity the first
+/// copy that goes over p + 1).
 template <class T, class V>
 KnotForm<T, V> refine(const KnotForm<T, V>& f, std::span<const T> X) {
   const std::size_t n = f.U.size() - static_cast<std::size_t>(f.p) - 1;
@@ -101,8 +102,11 @@ KnotForm<T, V> refine(const KnotForm<T, V>& f, std::span<const T> X) {
     if (X[j] < f.U[static_cast<std::size_t>(f.p)] || X[j] > f.U[n]) {
       throw InvalidArgument(where, "a knot to insert must lie in the domain, got " + format_number(X[j]));
     }
-    const std::size_t s = knot_multiplicity<T>(f.U, X[j]) + knot_multiplicity<T>(X, X[j]);
-    if (s > static_cast<std::size_t>(f.p) + 1) {
+    // The copies of X[j] so far (X is sorted): the error names the copy that goes over.
+    std::size_t before = 0;
+    while (before < j && X[j - 1 - before] == X[j]) ++before;
+    if (knot_multiplicity<T>(f.U, X[j]) + before + 1 > static_cast<std::size_t>(f.p) + 1) {
+      const std::size_t s = knot_multiplicity<T>(f.U, X[j]) + knot_multiplicity<T>(X, X[j]);
       throw InvalidArgument(where, "knot " + format_number(X[j]) + " would have multiplicity " + std::to_string(s) +
                                        ", more than p + 1 = " + std::to_string(f.p + 1) + " (the degree plus one)");
     }

@@ -16,13 +16,15 @@ namespace casteljau::io {
 
 /// As frames() of io/queries.hpp, but where the curvature is zero in 3-D or 4-D the frame
 /// keeps its tangent and has no normal nor binormal: errors ("t[j]") only where the
-/// velocity vanishes or a derivative is not representable. Defined in src/io/queries.cpp.
-[[nodiscard]] AnyFrames frenet_frames(const AnyCurve& c, std::span<const double> t);
+/// velocity vanishes or a derivative is not representable. With `stopped` given, where
+/// the velocity vanishes no error: stopped[j] = 1 and frame j has a zero tangent and no
+/// normal (stopped[j] = 0 elsewhere). Defined in src/io/queries.cpp.
+[[nodiscard]] AnyFrames frenet_frames(const AnyCurve& c, std::span<const double> t, std::vector<char>* stopped = nullptr);
 
 /// Unit vectors, one per parameter; normals and binormals std::nullopt where the Frenet
-/// frame has none (method frenet only).
+/// frame has none, tangents too where the velocity vanishes (method frenet only).
 struct MovingFrames {
-  std::vector<std::array<double, 3>> tangents;
+  std::vector<std::optional<std::array<double, 3>>> tangents;
   std::vector<std::optional<std::array<double, 3>>> normals, binormals;
 };
 
@@ -30,9 +32,9 @@ struct MovingFrames {
 /// normal. method "rotation_minimizing": double reflection (rotation_minimizing_normals)
 /// on the curve's points and unit tangents at t, from initial_normal projected onto the
 /// plane normal to the tangent at t[0] and normalised, or without it from the Frenet
-/// normal there; "frenet": the Frenet frames (io::frames). Errors: InvalidArgument
-/// "curve" (not 3-D), "method" (unknown), "t[i]" (not after t[i-1]; the velocity is
-/// zero there: no tangent), "initial_normal" (not 3 numbers, given with frenet, parallel
+/// normal there; "frenet": the Frenet frames (io::frames), all three vectors null where
+/// the velocity is zero. Errors: InvalidArgument "curve" (not 3-D), "method" (unknown),
+/// "t[i]" (not after t[i-1]; rotation_minimizing: the velocity is zero there: no tangent), "initial_normal" (not 3 numbers, given with frenet, parallel
 /// to the tangent at t[0] or zero; missing where the curve has no Frenet normal at t[0]).
 [[nodiscard]] MovingFrames moving_frames(const AnyCurve& c, std::span<const double> t, const std::string& method,
                                          std::optional<std::span<const double>> initial_normal);
