@@ -112,6 +112,24 @@ class FramesTest(CliTest):
         self.assertLess(angle(alone, exact), 1e-8)
         self.assertLess(angle(many, exact), 1e-8)
         self.assertLess(angle(alone, many), 1e-8)
+        # Across the breaks of a 20-piece cubic B-spline (scipy's BSpline for the oracle's
+        # derivatives): asked at the ends alone, and among 401 samples.
+        from scipy.interpolate import BSpline
+        n = 20
+        pts = np.array([[math.cos(0.3 * i), math.sin(0.3 * i), 0.1 * i] for i in range(n + 3)])
+        knots = [0.0] * 3 + [float(i) for i in range(n + 1)] + [float(n)] * 3
+        spline = BSpline(np.array(knots), pts, 3)
+        d1, d2 = spline.derivative(1), spline.derivative(2)
+        curve = {"type": "bspline", "degree": 3, "knots": knots, "points": pts.tolist()}
+        alone = self.frames(curve=curve, t=[0, n])["normals"]
+        many = self.frames(curve=curve, t=[n * i / 400 for i in range(401)])["normals"][-1]
+        sol = solve_ivp(lambda t, u: -np.dot(u, d2(t)) * d1(t) / np.dot(d1(t), d1(t)), (0, n), alone[0],
+                        method="DOP853", rtol=1e-13, atol=1e-14, max_step=0.5)
+        exact = sol.y[:, -1] / np.linalg.norm(sol.y[:, -1])
+        print(f"20-piece B-spline: at t = 20 vs the ODE: {angle(alone[-1], exact):.2e} rad (t = [0, 20]), "
+              f"{angle(many, exact):.2e} rad (401 samples)", file=sys.stderr)
+        self.assertLess(angle(alone[-1], exact), 1e-8)
+        self.assertLess(angle(many, exact), 1e-8)
         # The helix's exact RMF, asked at the end alone.
         r = self.frames(curve=helix_curve(), t=[0, T_END])
         self.assertLess(angle(r["normals"][-1], helix_rmf_normal(T_END)), 1e-8)
