@@ -236,9 +236,10 @@ constexpr Command ops_family[] = {
     {"frames", "Tangents, normals and binormals of a 3-D curve at increasing t",
      "Unit frames of a space curve at increasing parameters, binormal = tangent x normal.\n"
      "rotation_minimizing (default): the double reflection method (Wang, Juttler, Zheng and\n"
-     "Liu 2008; fourth order in the step between samples) from the Frenet normal at t[0],\n"
-     "or from initial_normal projected onto the plane normal to the tangent there and\n"
-     "normalised. frenet: the Frenet frames, normals and binormals null where the\n"
+     "Liu 2008) on an internal grid, each piece's steps halved until the frame carried\n"
+     "across it changes by less than 1e-10 rad (so a frame does not depend on the other t\n"
+     "asked), from the Frenet normal at t[0], or from initial_normal projected onto the\n"
+     "plane normal to the tangent there and normalised. frenet: the Frenet frames, normals and binormals null where the\n"
      "curvature is zero.",
      "tangents, normals, binormals: one unit vector (or null: frenet) per t",
      R"(  echo '{"curve": {"type": "bezier", "points": [[0,0,0],[1,0,0],[1,1,0],[1,1,1]]}, "t": [0, 1], "method": "frenet"}' | casteljau frames

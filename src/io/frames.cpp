@@ -12,6 +12,11 @@ namespace {
 
 std::array<double, 3> to_array(const Vector<double, 3>& v) { return {v[0], v[1], v[2]}; }
 
+// Each piece's steps are doubled until the normal carried across it changes by less than
+// this (radians); fourth order, so the transport is then within about 1/15 of it.
+constexpr double rmf_tolerance = 1e-10;
+constexpr std::size_t rmf_max_steps = std::size_t{1} << 14;
+
 Vector<double, 3> cross(const Vector<double, 3>& a, const Vector<double, 3>& b) {
   return Vector<double, 3>(a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]);
 }
@@ -78,10 +83,32 @@ MovingFrames moving_frames(const AnyCurve& c, std::span<const double> t, const s
     throw InvalidArgument("initial_normal", "the curve has no Frenet normal at t[0] = " + format_number(t[0]) +
                                                 " (zero curvature): give initial_normal");
   }
-  const PointList pts = evaluate(c, t);
-  std::vector<Vector<double, 3>> x;
-  for (std::size_t i = 0; i < pts.size(); ++i) x.emplace_back(pts[i][0], pts[i][1], pts[i][2]);
-  const auto r = rotation_minimizing_normals(x, tangents, r0);
+  // The internal grid: the curve's exact Bezier pieces (sampled directly: no dispatch on
+  // the curve type per sample), their breaks refined to rmf_tolerance.
+  const AnyPieces any_pieces = pieces(c);
+  const auto* p = std::get_if<Pieces<double, 3>>(&any_pieces);
+  if (p == nullptr) throw InvalidArgument("curve", "frames needs a 3-D curve");
+  const std::vector<double>& breaks = p->breaks();
+  auto sample = [&](const std::vector<double>& u, std::vector<Vector<double, 3>>& x, std::vector<Vector<double, 3>>& tan) {
+    for (const double ui : u) {
+      const Point<double, 3> q = (*p)(ui);
+      x.emplace_back(q[0], q[1], q[2]);
+      Vector<double, 3> v = p->derivative_at(ui, 1);
+      // A grid point where the velocity vanishes (a stop between the asked t): the
+      // direction of the first non-zero higher derivative, the limit of the tangent.
+      for (int k = 2; !(norm(v) > 0) && k <= 3; ++k) v = p->derivative_at(ui, k);
+      if (!(norm(v) > 0)) {
+        throw InvalidArgument("curve", "the tangent is undefined at t = " + format_number(ui) +
+                                           " (the velocity and the next two derivatives are zero)");
+      }
+      tan.push_back(v / norm(v));
+    }
+  };
+  auto r = rotation_minimizing_normals_at<double>(sample, breaks, t, r0, rmf_tolerance, rmf_max_steps);
+  for (std::size_t i = 0; i < r.size(); ++i) {  // onto the plane normal to the reported tangent
+    const Vector<double, 3> p = r[i] - dot(r[i], tangents[i]) * tangents[i];
+    r[i] = p / norm(p);
+  }
   for (std::size_t i = 0; i < r.size(); ++i) {
     out.normals.push_back(to_array(r[i]));
     out.binormals.push_back(to_array(cross(tangents[i], r[i])));

@@ -29,8 +29,10 @@ struct MovingFrames {
 };
 
 /// The frames of the 3-D curve c at the increasing parameters t, binormal = tangent x
-/// normal. method "rotation_minimizing": double reflection (rotation_minimizing_normals)
-/// on the curve's points and unit tangents at t, from initial_normal projected onto the
+/// normal. method "rotation_minimizing": double reflection (rotation_minimizing_normals_at)
+/// on an internal grid of the curve's pieces refined until the frame carried across each
+/// changes by less than 1e-10 rad, then onto the plane normal to the tangent at each t
+/// (the frames do not depend on which other t are asked), from initial_normal projected onto the
 /// plane normal to the tangent at t[0] and normalised, or without it from the Frenet
 /// normal there; "frenet": the Frenet frames (io::frames), all three vectors null where
 /// the velocity is zero. Errors: InvalidArgument "curve" (not 3-D), "method" (unknown),
