@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The public headers compile on their own and together, warning-free, in a user's build.
 
-Each header of include/casteljau alone (-fsyntax-only), and one translation unit with
+Each header of include/casteljau alone (-fsyntax-only, with every compiler given), and one translation unit with
 every header followed by a user's file (tests/headers/user.cpp, which instantiates the
 header algorithms) compiled to an object at -O0 and -O2, with every compiler given,
 under -std=c++20 -Wall -Wextra -Wpedantic -Werror. Catches a header that misses an
@@ -53,10 +53,12 @@ def check(a, compilers, headers, base, tmp):
     if a.quick:
         return run_jobs(a, compilers, headers, quick_jobs(compilers, headers, base, tmp))
     jobs = []  # (name, command, stdin text)
-    # Each header alone: the self-containedness check is about the preprocessor and name
-    # lookup, the same for every compiler, so the first compiler does it.
-    for h in headers:
-        jobs.append((f"{h} alone ({compilers[0]})", [compilers[0], *FLAGS, *base, "-fsyntax-only", "-x", "c++", "-"], f'#include "{h}"\n'))
+    # Each header alone, with every compiler: a header that misses an include, or that
+    # leans on one compiler's leniency (two-phase lookup, an extension) fails here. A header
+    # alone instantiates nothing, so syntax only sees all its code at any -O level.
+    for cxx in compilers:
+        for h in headers:
+            jobs.append((f"{h} alone ({cxx})", [cxx, *FLAGS, *base, "-fsyntax-only", "-x", "c++", "-"], f'#include "{h}"\n'))
     together = os.path.join(tmp, "together.cpp")
     with open(together, "w") as f:
         for h in headers:
