@@ -404,14 +404,19 @@ class JumpQueriesTest(CliTest):
         self.assertEqual(r["distance"], 0)
         self.assertEqual(r["t"], 1)
         # nearest the second tooth's top (2, 1), its left limit at the jump t = 2: the pieces
-        # as they are (evaluation at 2 gives the right limit (2, 0), 1.1 away)
+        # as they are (evaluation at 2 gives the right limit (2, 0), 1.1 away), reported at
+        # the double below 2, where evaluation gives that left limit to rounding
+        below2 = math.nextafter(2, -math.inf)
         r = self.ok("project", {"curve": SAW, "point": [2, 1.1]})
-        self.assertEqual((r["t"], r["point"]), (2, [2, 1]))
+        self.assertEqual(r["t"], below2)
+        self.assertEqual(r["point"], self.ok("eval", {"curve": SAW, "t": [below2]})["points"][0])
+        self.assertLess(max(abs(r["point"][0] - 2), abs(r["point"][1] - 1)), 1e-15)
         self.assertAlmostEqual(r["distance"], 0.1, delta=1e-15)
         d = self.ok("distance", {"curves": [SAW, {"type": "bezier", "points": [[1.5, 2], [2.5, 2]]}]})
-        self.assertEqual(d["distance"], 1)  # from the same top (2, 1) to (2, 2)
-        self.assertEqual(d["t"], [2, 0.5])
-        self.assertEqual(d["points"], [[2, 1], [2, 2]])
+        self.assertAlmostEqual(d["distance"], 1, delta=1e-15)  # from the same top (2, 1) to (2, 2)
+        self.assertEqual(d["t"][0], below2)
+        self.assertAlmostEqual(d["t"][1], 0.5, delta=1e-15)
+        self.assertEqual(d["points"][0], r["point"])
 
     def test_area_refuses_a_jump(self):
         closed_with_jump = {"type": "bspline", "degree": 1, "knots": [0, 0, 1, 1, 2, 2],
@@ -430,8 +435,12 @@ class JumpQueriesTest(CliTest):
         for got, want in zip(r["t"], [0.5, 1.5, 2.5]):
             self.assertAlmostEqual(got, want, delta=1e-12)
         self.assertEqual(len(r["t"]), 3)
+        # the step [1, 2) holds y = 3; at 2 the curve is (5, 5): the interval ends at the
+        # double below 2 (the last step [2, 4] includes the domain's end)
         r = self.ok("solve", {"curve": STEPS, "value": 3, "axis": 1})
-        self.assertEqual((r["t"], r["intervals"]), ([], [[1, 2]]))
+        self.assertEqual((r["t"], r["intervals"]), ([], [[1, math.nextafter(2, -math.inf)]]))
+        r = self.ok("solve", {"curve": STEPS, "value": 5, "axis": 1})
+        self.assertEqual((r["t"], r["intervals"]), ([], [[2, 4]]))
 
     def test_operations_on_jumps(self):
         # remove_knot of a jump knot: refused within the tolerance (the curve is not
