@@ -45,15 +45,15 @@ LevelSet<double> solve(const AnyCurve& c, std::optional<int> axis, std::optional
     throw InvalidArgument("direction", "must not be the zero vector");
   }
   check_solve_work(c);
-  // The pieces' coefficients are exact for the types whose pieces are their own points.
-  const bool exact = std::visit([](const auto& x) { return casteljau::detail::pieces_are_exact(x); }, c);
+  // How the pieces were made bounds their rounding (exact for Bézier curves, polylines).
+  const auto rounding = std::visit([](const auto& x) { return casteljau::detail::piece_rounding(x); }, c);
   return std::visit(
       [&]<class P>(const P& p) {
         constexpr int D = P::dimension;
         limits::check_work(p, "curve", "solving");
         Vector<double, D> a{};
         for (int k = 0; k < D; ++k) a[k] = axis ? (k == *axis ? 1.0 : 0.0) : (*direction)[static_cast<std::size_t>(k)];
-        return casteljau::solve(p, a, value, exact);
+        return casteljau::solve(p, a, value, rounding);
       },
       pieces(c));
 }

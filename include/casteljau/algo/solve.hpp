@@ -13,6 +13,7 @@
 
 #include "casteljau/basis/roots.hpp"
 #include "casteljau/curves/concepts.hpp"
+#include "casteljau/curves/bspline.hpp"
 #include "casteljau/curves/piecewise.hpp"
 #include "casteljau/curves/polyline.hpp"
 
@@ -94,20 +95,29 @@ std::vector<T> level_form(const Piece& c, const Vector<T, D>& a, T value, std::v
   return f;
 }
 
-/// Whether the exact pieces of c (pieces(c)) are its own control points, so that solve
-/// takes their coefficients as exact: Bézier and rational Bézier curves, polylines,
-/// Pieces themselves, and paths of those. Every other type's pieces are computed
-/// (blossoming, a NURBS's Cartesian points, interpolation forms) and carry rounding of
-/// the size of their coordinates.
+/// How the exact pieces of a curve (pieces(c)) were obtained, which bounds their own
+/// rounding (see solve): `given`, they are its control points (Bézier and rational Bézier
+/// curves, polylines, Pieces themselves); `blossomed`, a polynomial B-spline's pieces by
+/// blossoming (convex combinations, p levels: within 4 (n + 1) eps of the size of their
+/// coordinates); `computed`, any other conversion (a NURBS's Cartesian points, the
+/// interpolating types: 16 (n + 2) (D + 1) eps, the bound solve used for every type
+/// before). A path takes its worst segment's.
+enum class PieceRounding { given, blossomed, computed };
+
 template <class C>
-bool pieces_are_exact(const C& c) {
-  if constexpr (is_bezier_piece<C> || is_pieces<C>) {
-    return true;
+PieceRounding piece_rounding(const C& c) {
+  using T = typename C::Scalar;
+  constexpr int D = C::dimension;
+  if constexpr (is_bezier_piece<C> || is_pieces<C> || std::is_same_v<C, Polyline<T, D>>) {
+    return PieceRounding::given;
   } else if constexpr (requires { c.segments(); }) {
-    return std::all_of(c.segments().begin(), c.segments().end(),
-                       [](const auto& seg) { return std::visit([](const auto& s) { return pieces_are_exact(s); }, seg); });
+    PieceRounding r = PieceRounding::given;
+    for (const auto& seg : c.segments()) r = std::max(r, std::visit([](const auto& x) { return piece_rounding(x); }, seg));
+    return r;
+  } else if constexpr (std::is_same_v<C, BSpline<T, D>>) {
+    return PieceRounding::blossomed;
   } else {
-    return std::is_same_v<C, Polyline<typename C::Scalar, C::dimension>>;
+    return PieceRounding::computed;
   }
 }
 
@@ -118,10 +128,11 @@ bool pieces_are_exact(const C& c) {
 /// scalar polynomial a . P_i - value (rational pieces: w_i (a . P_i - value), the
 /// numerator over the positive weight function) is formed in Bernstein form with a known
 /// error per coefficient (detail::level_form: compensated, relative to the coefficient
-/// itself), plus, when the pieces are computed rather than given (`exact_pieces` false:
-/// a B-spline's blossoms, a NURBS's Cartesian points, the interpolating types), their own
-/// rounding: 2 (D + 1) eps of the size of the coefficient's terms times 8 (n + 2). That
-/// sum is the noise:
+/// itself), plus, when the pieces are computed rather than given (`rounding`, see
+/// detail::PieceRounding), their own rounding: 4 (n + 1) eps of the size of the
+/// coefficient's terms for a B-spline's blossoms, 16 (n + 2) (D + 1) eps for other
+/// conversions (a NURBS's Cartesian points, the interpolating types). That sum is the
+/// noise:
 /// - a piece on which every coefficient is within its noise of zero is an interval where
 ///   it holds throughout (a straight piece on the line, a constant coordinate); adjacent
 ///   ones merge across breaks;
@@ -146,7 +157,7 @@ bool pieces_are_exact(const C& c) {
 template <class C>
   requires PiecewiseBezierCurve<C>
 LevelSet<typename C::Scalar> solve(const C& c, const Vector<typename C::Scalar, C::dimension>& a, typename C::Scalar value,
-                                   bool exact_pieces) {
+                                   detail::PieceRounding rounding) {
   using T = typename C::Scalar;
   constexpr int D = C::dimension;
   bool nonzero = false;
@@ -173,7 +184,10 @@ LevelSet<typename C::Scalar> solve(const C& c, const Vector<typename C::Scalar, 
           std::vector<T> bound, size;
           Form& g = forms[i];
           g.f = detail::level_form<T, D>(piece, a, value, bound, size);
-          const T slack = exact_pieces ? T(0) : 8 * static_cast<T>(g.f.size() + 1) * 2 * (D + 1) * eps;
+          const T n = static_cast<T>(g.f.size()) - 1;
+          const T slack = rounding == detail::PieceRounding::given       ? T(0)
+                          : rounding == detail::PieceRounding::blossomed ? 4 * (n + 1) * eps
+                                                                         : 16 * (n + 2) * (D + 1) * eps;
           for (std::size_t j = 0; j < bound.size(); ++j) g.noise = std::max(g.noise, bound[j] + slack * size[j]);
           g.zero = bernstein_negligible<T>(g.f, g.noise);
         },
@@ -223,11 +237,11 @@ LevelSet<typename C::Scalar> solve(const C& c, const Vector<typename C::Scalar, 
   return out;
 }
 
-/// The same, with the pieces' exactness from the curve's type (detail::pieces_are_exact).
+/// The same, with the pieces' rounding from the curve's type (detail::piece_rounding).
 template <class C>
   requires PiecewiseBezierCurve<C>
 LevelSet<typename C::Scalar> solve(const C& c, const Vector<typename C::Scalar, C::dimension>& a, typename C::Scalar value) {
-  return solve(c, a, value, detail::pieces_are_exact(c));
+  return solve(c, a, value, detail::piece_rounding(c));
 }
 
 }  // namespace casteljau
