@@ -45,13 +45,15 @@ LevelSet<double> solve(const AnyCurve& c, std::optional<int> axis, std::optional
     throw InvalidArgument("direction", "must not be the zero vector");
   }
   check_solve_work(c);
+  // How the pieces were made bounds their rounding (exact for Bézier curves, polylines).
+  const auto rounding = std::visit([](const auto& x) { return casteljau::detail::piece_rounding(x); }, c);
   return std::visit(
       [&]<class P>(const P& p) {
         constexpr int D = P::dimension;
         limits::check_work(p, "curve", "solving");
         Vector<double, D> a{};
         for (int k = 0; k < D; ++k) a[k] = axis ? (k == *axis ? 1.0 : 0.0) : (*direction)[static_cast<std::size_t>(k)];
-        return casteljau::solve(p, a, value);
+        return casteljau::solve(p, a, value, rounding);
       },
       pieces(c));
 }

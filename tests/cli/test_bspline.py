@@ -404,14 +404,19 @@ class JumpQueriesTest(CliTest):
         self.assertEqual(r["distance"], 0)
         self.assertEqual(r["t"], 1)
         # nearest the second tooth's top (2, 1), its left limit at the jump t = 2: the pieces
-        # as they are (evaluation at 2 gives the right limit (2, 0), 1.1 away)
+        # as they are (evaluation at 2 gives the right limit (2, 0), 1.1 away), reported at
+        # the double below 2, where evaluation gives that left limit to rounding
+        below2 = math.nextafter(2, -math.inf)
         r = self.ok("project", {"curve": SAW, "point": [2, 1.1]})
-        self.assertEqual((r["t"], r["point"]), (2, [2, 1]))
+        self.assertEqual(r["t"], below2)
+        self.assertEqual(r["point"], self.ok("eval", {"curve": SAW, "t": [below2]})["points"][0])
+        self.assertLess(max(abs(r["point"][0] - 2), abs(r["point"][1] - 1)), 1e-15)
         self.assertAlmostEqual(r["distance"], 0.1, delta=1e-15)
         d = self.ok("distance", {"curves": [SAW, {"type": "bezier", "points": [[1.5, 2], [2.5, 2]]}]})
-        self.assertEqual(d["distance"], 1)  # from the same top (2, 1) to (2, 2)
-        self.assertEqual(d["t"], [2, 0.5])
-        self.assertEqual(d["points"], [[2, 1], [2, 2]])
+        self.assertAlmostEqual(d["distance"], 1, delta=1e-15)  # from the same top (2, 1) to (2, 2)
+        self.assertEqual(d["t"][0], below2)
+        self.assertAlmostEqual(d["t"][1], 0.5, delta=1e-15)
+        self.assertEqual(d["points"][0], r["point"])
 
     def test_area_refuses_a_jump(self):
         closed_with_jump = {"type": "bspline", "degree": 1, "knots": [0, 0, 1, 1, 2, 2],
@@ -430,8 +435,101 @@ class JumpQueriesTest(CliTest):
         for got, want in zip(r["t"], [0.5, 1.5, 2.5]):
             self.assertAlmostEqual(got, want, delta=1e-12)
         self.assertEqual(len(r["t"]), 3)
+        # the step [1, 2) holds y = 3; at 2 the curve is (5, 5): the interval ends at the
+        # double below 2 (the last step [2, 4] includes the domain's end)
         r = self.ok("solve", {"curve": STEPS, "value": 3, "axis": 1})
-        self.assertEqual((r["t"], r["intervals"]), ([], [[1, 2]]))
+        self.assertEqual((r["t"], r["intervals"]), ([], [[1, math.nextafter(2, -math.inf)]]))
+        r = self.ok("solve", {"curve": STEPS, "value": 5, "axis": 1})
+        self.assertEqual((r["t"], r["intervals"]), ([], [[2, 4]]))
+
+    def test_solve_does_not_answer_a_left_limit(self):
+        # Audit D3. x(t) = 2t on [0, 1), then 3 - 2 (t - 1) on [1, 2] (the right limit 3 at
+        # the jump t = 1). x = 2 is only the left limit at 1: the one parameter is 1.5; 3 is
+        # the value at 1; 2.5 lies inside the jump and is taken at 1.25 by the second piece.
+        c = {"type": "bspline", "degree": 1, "knots": [0, 0, 1, 1, 2, 2], "points": [[0], [2], [3], [1]]}
+        ref = BSpline(np.array([0, 0, 1, 1, 2, 2], float), np.array([0, 2, 3, 1], float), 1)
+        for value, want in ((2, [1.5]), (3, [1]), (2.5, [1.25]), (1, [0.5, 2]), (0, [0])):
+            got = self.ok("solve", {"curve": c, "value": value, "axis": 0})
+            self.assertEqual(got, {"t": want, "intervals": []}, value)
+            for t in want:  # scipy takes the right limit at the knot too
+                self.assertEqual(float(ref(t)), value, (value, t))
+        # The same jump in y only: x continuous (x = t), so x = 1 holds at the break itself.
+        c2 = {"type": "bspline", "degree": 1, "knots": [0, 0, 1, 1, 2, 2], "points": [[0, 0], [1, 2], [1, 3], [2, 1]]}
+        self.assertEqual(self.ok("solve", {"curve": c2, "value": 1, "axis": 0}), {"t": [1], "intervals": []})
+        self.assertEqual(self.ok("solve", {"curve": c2, "value": 2, "axis": 1}), {"t": [1.5], "intervals": []})
+        # A step on the level keeps its left end and stops below the next knot; a level
+        # crossed by the jump and held by the next step starts there.
+        steps = {"type": "bspline", "degree": 0, "knots": [0, 1, 2, 3], "points": [[1], [2], [2]]}
+        self.assertEqual(self.ok("solve", {"curve": steps, "value": 1, "axis": 0}),
+                         {"t": [], "intervals": [[0, math.nextafter(1, -math.inf)]]})
+        self.assertEqual(self.ok("solve", {"curve": steps, "value": 2, "axis": 0}), {"t": [], "intervals": [[1, 3]]})
+
+    def test_points_at_a_jump_are_the_curve_at_their_parameters(self):
+        # Audit D12. J jumps from (1, 0) to (1, 1) at t = 1 (eval at 1: (1, 1)). Its left
+        # limit (1, 0) is reported at the double below 1, where eval gives it to rounding.
+        J = {"type": "bspline", "degree": 1, "knots": [0, 0, 1, 1, 2, 2], "points": [[0, 0], [1, 0], [1, 1], [2, 1]]}
+        below1 = math.nextafter(1, -math.inf)
+
+        def at(t):
+            return self.ok("eval", {"curve": J, "t": [t]})["points"][0]
+
+        def near(p, q, tol=1e-15):
+            return max(abs(x - y) for x, y in zip(p, q)) <= tol
+
+        r = self.ok("project", {"curve": J, "point": [1, -0.1]})
+        self.assertEqual(r["t"], below1)
+        self.assertEqual(r["point"], at(r["t"]))
+        self.assertTrue(near(r["point"], [1, 0]))
+        self.assertAlmostEqual(r["distance"], 0.1, delta=1e-15)
+        # the right limit is attained at 1 itself
+        r = self.ok("project", {"curve": J, "point": [1, 1.1]})
+        self.assertEqual((r["t"], r["point"]), (1, [1, 1]))
+        d = self.ok("distance", {"curves": [J, {"type": "bezier", "points": [[1, -1], [1, -0.5]]}]})
+        self.assertEqual(d["t"], [below1, 1])
+        self.assertEqual(d["points"][0], at(below1))
+        self.assertAlmostEqual(d["distance"], 0.5, delta=1e-15)
+        r = self.ok("intersect", {"curves": [J, {"type": "bezier", "points": [[1, -1], [1, 2]]}]})
+        got = [(x["t"][0], x["point"]) for x in r["intersections"]]
+        self.assertEqual([t for t, _ in got], [below1, 1])
+        for t, q in got:
+            self.assertTrue(near(q, at(t)), (t, q))
+        self.assertTrue(near(got[0][1], [1, 0]) and near(got[1][1], [1, 1]))
+        # A property over a sawtooth: every answer's point is the curve at its parameter.
+        rng = random.Random(12)
+        queries = [[rng.uniform(-0.5, 3.5), rng.uniform(-0.5, 1.5)] for _ in range(40)]
+        # points just above each tooth's top: the left limits (k, 1), k = 1, 2, 3
+        queries += [[k + 0.05, 1.2] for k in (1, 2)] + [[3.1, 1.1]]
+        answers = self.ok_jsonl("project", [{"curve": SAW, "point": q} for q in queries])
+        evals = self.ok("eval", {"curve": SAW, "t": [r["t"] for r in answers]})["points"]
+        for q, r, e in zip(queries, answers, evals):
+            self.assertTrue(near(r["point"], e, 4e-16 * 4), (q, r, e))
+            # the distance: brute force over the closed teeth (t, t - k) on [k, k + 1]
+            want = min(math.dist(q, (k + u, u)) for k in range(3) for u in np.linspace(0, 1, 20001))
+            self.assertLessEqual(r["distance"], want + 1e-12, (q, r))
+            self.assertGreater(r["distance"], want - 1e-4, (q, r))
+
+    def test_intersect_once_per_step(self):
+        # Audit D17. Steps (0, 0) on [0, 1), (0.5, 0) on [1, 2), (1, 1) on [2, 3]; the line
+        # y = 2x - 1 passes (0.5, 0) and (1, 1): each step that rests on it is one contact,
+        # at the step's first parameter.
+        steps = {"type": "bspline", "degree": 0, "knots": [0, 1, 2, 3], "points": [[0, 0], [0.5, 0], [1, 1]]}
+        line = {"type": "bezier", "points": [[0, -1], [1, 1]]}
+        want = [([1, 0.5], [0.5, 0]), ([2, 1], [1, 1])]
+        r = self.ok("intersect", {"curves": [steps, line]})
+        self.assertEqual([(x["t"], x["point"]) for x in r["intersections"]], want)
+        self.assertEqual(r["overlaps"], [])
+        r = self.ok("intersect", {"curves": [line, steps]})
+        self.assertEqual([(x["t"], x["point"]) for x in r["intersections"]], [([0.5, 1], [0.5, 0]), ([1, 2], [1, 1])])
+        # two steps at the same point in a row are one stretch: one contact at its start
+        steps2 = {"type": "bspline", "degree": 0, "knots": [0, 1, 2, 3, 4], "points": [[0, 0], [0.5, 0], [0.5, 0], [1, 1]]}
+        r = self.ok("intersect", {"curves": [steps2, line]})
+        self.assertEqual([(x["t"], x["point"]) for x in r["intersections"]], [([1, 0.5], [0.5, 0]), ([3, 1], [1, 1])])
+        # a point segment of a path on the line: once, at its start
+        path = {"type": "path", "segments": [{"type": "bezier", "points": [[0, 1], [0.5, 1]]},
+                                             {"type": "bezier", "points": [[0.75, 0.5], [0.75, 0.5]]},
+                                             {"type": "bezier", "points": [[1, 1], [2, 1]]}]}
+        r = self.ok("intersect", {"curves": [path, line]})
+        self.assertEqual([(x["t"], x["point"]) for x in r["intersections"]], [([1, 0.75], [0.75, 0.5]), ([2, 1], [1, 1])])
 
     def test_operations_on_jumps(self):
         # remove_knot of a jump knot: refused within the tolerance (the curve is not

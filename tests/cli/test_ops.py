@@ -236,6 +236,78 @@ class SolveTest(CliTest):
                 got = self.solve(bezier(P), k + 1, axis=k)
                 self.assertEqual(got, {"t": [0.5], "intervals": []})
 
+    def test_level_near_large_coordinates(self):
+        # Audit D20. y - value has the exact control values [-1, 1, 1, -1] (every coordinate
+        # and difference is a double): y = -1 + 6t - 6t^2 (+ 1e13), roots (3 -+ sqrt 3) / 6,
+        # not the whole curve.
+        r3 = [(3 - 3 ** 0.5) / 6, (3 + 3 ** 0.5) / 6]
+        big = 10 ** 13
+        got = self.solve(bezier([[0, big], [1, big + 2], [3, big + 2], [4, big]]), big + 1, axis=1)
+        self.assertEqual(got["intervals"], [])
+        self.assert_close(got["t"], r3, 1e-15)
+        got = self.solve(bezier([[big, 0], [big + 1, 1], [big + 1, 2], [big, 3]]), big + 0.5, axis=0)
+        self.assertEqual(got["intervals"], [])
+        self.assert_close(got["t"], r3, 1e-15)
+        # 1-D at 1: [1, 1 + 2e-13, 1 + 2e-13, 1] at 1 + 1e-13 (as doubles: the oracle takes
+        # the doubles' exact values). No root at 1/2, where the curve is 1 + 1.5e-13.
+        P = [1.0, 1.0000000000002, 1.0000000000002, 1.0]
+        v = 1.0000000000001
+        want = real_roots_01(power_from_bernstein([Fraction(x) - Fraction(v) for x in P]))
+        got = self.solve(bezier([[x] for x in P]), v, axis=0)
+        self.assertEqual(got["intervals"], [])
+        self.assertEqual(len(got["t"]), 2)
+        self.assert_close(got["t"], want, 1e-12)
+        # The curve on the level exactly at that scale is an interval still.
+        self.assertEqual(self.solve(bezier([[0, big + 1], [1, big + 1], [2, big + 1]]), big + 1, axis=1),
+                         {"t": [], "intervals": [[0, 1]]})
+
+    def test_level_offsets_against_exact_roots(self):
+        # Property: control values K + k_i h and value K + r h, with K a double of magnitude
+        # 2^E (E from -30 to 60), h = 2^(E - 46) (so k_i h is 1e-14 of K and every
+        # coordinate and difference is exact), k_i small integers, r a quarter: the roots are
+        # those of sum (k_i - r) B_i, exact rationals, by mpmath. Tangencies occur (integer
+        # data), and an all-equal case is the interval [0, 1].
+        rng = random.Random(2020)
+        cases = []
+        for trial in range(60):
+            n = rng.randint(1, 6)
+            E = rng.randint(-30, 60)
+            K = (rng.randint(2 ** 40, 2 ** 41 - 1)) * 2.0 ** (E - 40)
+            h = 2.0 ** (E - 46)
+            k = [rng.randint(-3, 3) for _ in range(n + 1)]
+            r = Fraction(rng.randint(-8, 8), 4)
+            if trial % 15 == 0:
+                k, r = [2] * (n + 1), Fraction(2)
+            ys = [K + ki * h for ki in k]
+            value = K + float(r) * h
+            assert all(Fraction(y) == Fraction(K) + ki * Fraction(h) for y, ki in zip(ys, k))
+            assert Fraction(value) == Fraction(K) + r * Fraction(h)
+            dim1 = trial % 2 == 0
+            P = [[y] for y in ys] if dim1 else [[i / n, y] for i, y in enumerate(ys)]
+            coeffs = [Fraction(ki) - r for ki in k]
+            cases.append((trial, k, r, coeffs, {"curve": bezier(P), "value": value, "axis": 0 if dim1 else 1}))
+        for (trial, k, r, coeffs, _), got in zip(cases, self.ok_jsonl("solve", [c[-1] for c in cases])):
+            if all(c == 0 for c in coeffs):
+                self.assertEqual(got, {"t": [], "intervals": [[0, 1]]}, f"trial {trial}")
+                continue
+            want = real_roots_01(power_from_bernstein(coeffs))
+            self.assertEqual(got["intervals"], [], f"trial {trial} k={k} r={r}")
+            self.assertEqual(len(got["t"]), len(want), f"trial {trial} k={k} r={r}: {got} vs {want}")
+            # exact data: simple roots to a few eps times their conditioning; a multiple
+            # root as its derivative's simple root
+            self.assert_close(got["t"], want, 1e-8, f"trial {trial} k={k} r={r}")
+
+    def test_degree_1000_and_extreme_scales(self):
+        # y = t - 0.3 elevated to degree 1000 (c_i = i / 1000 - 0.3), scaled by 2^k: the one
+        # root 0.3 at every scale (the coefficients are the doubles nearest i/1000 - 0.3:
+        # the root moves by their rounding, a few eps).
+        n = 1000
+        for scale in (1.0, 2.0 ** 600, 2.0 ** -600):
+            P = [[i / n, (i / n - 0.3) * scale] for i in range(n + 1)]
+            got = self.solve(bezier(P), 0, axis=1)
+            self.assertEqual(got["intervals"], [])
+            self.assert_close(got["t"], [0.3], 1e-13, f"scale {scale}")
+
     def test_bad_input(self):
         c = bezier([[0, 0], [1, 2], [2, 0]])
         self.bad("solve", {"curve": c, "value": 1}, "axis", contains="axis")

@@ -85,6 +85,28 @@ TEST(Solve, BadDirection) {
   EXPECT_THROW((void)solve(c, V2(1, 0), std::nan("")), InvalidArgument);
 }
 
+// A level near large coordinates (audit D20): y - value has the exact control values
+// [-1, 1, 1, -1] at 1e13, so the roots are those of -1 + 6t - 6t^2, (3 -+ sqrt 3) / 6,
+// whatever type holds the curve (a Bézier's pieces are its points; a B-spline's are
+// blossoms, within 4 (n + 1) eps of their size). At a jump (D3) only the right limit is the
+// curve's value.
+TEST(Solve, LevelNearLargeCoordinatesAndJumps) {
+  const double big = 1e13;
+  const std::vector<P2> P{P2(0, big), P2(1, big + 2), P2(3, big + 2), P2(4, big)};
+  const std::vector<double> want{(3 - std::sqrt(3.0)) / 6, (3 + std::sqrt(3.0)) / 6};
+  EXPECT_EQ(detail::piece_rounding(B2(P)), detail::PieceRounding::given);
+  EXPECT_EQ(detail::piece_rounding(BSpline<double, 2>(3, {0, 0, 0, 0, 1, 1, 1, 1}, P)), detail::PieceRounding::blossomed);
+  for (const auto& s : {solve(B2(P), V2(0, 1), big + 1), solve(BSpline<double, 2>(3, {0, 0, 0, 0, 1, 1, 1, 1}, P), V2(0, 1), big + 1)}) {
+    EXPECT_TRUE(s.intervals.empty());
+    ASSERT_EQ(s.t.size(), 2u);
+    for (std::size_t i = 0; i < 2; ++i) EXPECT_NEAR(s.t[i], want[i], 4 * casteljau::test::eps);
+  }
+  // x = 2t on [0, 1), 3 - 2 (t - 1) on [1, 2]: 2 only at 1.5 (1 is the left limit's).
+  const BSpline<double, 1> j(1, {0, 0, 1, 1, 2, 2}, {Point<double, 1>(0), Point<double, 1>(2), Point<double, 1>(3), Point<double, 1>(1)});
+  EXPECT_EQ(solve(j, Vector<double, 1>(1), 2.0).t, (std::vector<double>{1.5}));
+  EXPECT_EQ(solve(j, Vector<double, 1>(1), 3.0).t, (std::vector<double>{1.0}));
+}
+
 TEST(ToBSpline, UniformCubicComesBackWithSimpleKnots) {
   // A clamped cubic B-spline with simple interior knots: C^2 at each, so its pieces come
   // back with every interior knot once and the same control points.

@@ -139,6 +139,36 @@ TEST(PiecewiseAlgebra, LiftRootsKeepsAJointDuplicateOnce) {
   EXPECT_EQ(out, (std::vector<double>{-3.0, -1.25, -1.25}));
 }
 
+// At a jump the end of the piece before it lifts to the double below the break, where
+// evaluation takes that piece: its point there is the left limit to rounding. Where the
+// pieces meet (to rounding: 64 eps of their control coordinates) the break stays.
+TEST(PiecewiseAlgebra, LiftAtAJumpStaysOnThePiece) {
+  const Pieces<double, 2> p({B2{{0, 0}, {1, 0}}, B2{{1, 1}, {1, 2}}, B2{{1, 2 + 1e-15}, {3, 2}}}, {-3.0, 0.5, 7.0, 8.0});
+  EXPECT_TRUE(p.jumps_after(0));
+  EXPECT_FALSE(p.jumps_after(1));  // 1e-15 apart: rounding
+  EXPECT_FALSE(p.jumps_after(2));  // the last piece
+  const double below = std::nextafter(0.5, -1.0);
+  EXPECT_EQ(p.end_parameter(0), below);
+  EXPECT_EQ(p.end_parameter(1), 7.0);
+  EXPECT_EQ(p.end_parameter(2), 8.0);
+  EXPECT_EQ(p.lift(0, 1.0), below);
+  EXPECT_EQ(p.lift(1, 0.0), 0.5);
+  EXPECT_EQ(p.lift(1, 1.0), 7.0);
+  EXPECT_EQ(p.locate(below).index, 0u);
+  EXPECT_LE(distance(p(below), P2(1, 0)), 2 * test::eps);
+  EXPECT_EQ(p(0.5), P2(1, 1));
+  // Both limits are roots of their pieces: two points of the curve, both kept.
+  std::vector<double> out;
+  p.lift_roots(0, std::vector<double>{1.0}, out);
+  p.lift_roots(1, std::vector<double>{0.0}, out);
+  EXPECT_EQ(out, (std::vector<double>{below, 0.5}));
+  // One-point pieces (degree 0): a jump where the points differ, none where they agree.
+  const Pieces<double, 2> steps({B2{{0, 0}}, B2{{0, 0}}, B2{{1, 0}}}, {0.0, 1.0, 2.0, 3.0});
+  EXPECT_FALSE(steps.jumps_after(0));
+  EXPECT_TRUE(steps.jumps_after(1));
+  EXPECT_EQ(steps.lift(1, I(0, 1)), I(1, std::nextafter(2.0, 0.0)));
+}
+
 TEST(PiecewiseAlgebra, PortionKeepsTheParametrisation) {
   const auto p = two_lines();
   const auto q = p.portion({-1.25, 3.75});

@@ -130,20 +130,13 @@ CurveDistance<typename CA::Scalar, CA::dimension> distance(const CA& a, const CB
   int e = 0;
   if (m > 0) (void)std::frexp(m, &e);
   CurveDistance<T, D> best{std::numeric_limits<T>::infinity(), {}, {}};
-  // Where the best candidate is the end of a piece whose next piece starts elsewhere (a
-  // path's gap, a B-spline's jump: a point of the curve that evaluation at the break, the
-  // right piece, does not give), that piece and its own parameter, for each curve.
-  std::array<std::optional<PieceParameter<T>>, 2> left_end;
+  // The end of a piece before a jump (a path's gap, a B-spline's knot of multiplicity
+  // p + 1) lifts to the double below the break (Pieces::lift), where evaluation gives that
+  // piece's point: candidates are evaluated at their curve parameters.
   auto offer = [&](T ta, T tb) {
     const auto qa = pa(ta), qb = pb(tb);
     const T d = detail::safe_distance(qa, qb);
-    if (d < best.distance) {
-      best = {d, {ta, tb}, {qa, qb}};
-      left_end = {};
-    }
-  };
-  const auto on_piece = [](const auto& p, const PieceParameter<T>& at) {
-    return std::visit([&](const auto& c) { return c(at.t); }, p.segments()[at.index]);
+    if (d < best.distance) best = {d, {ta, tb}, {qa, qb}};
   };
   // Exact global candidates at the ends.
   for (T ta : {pa.domain().lo, pa.domain().hi}) offer(ta, project(pb, pa(ta)).t);
@@ -201,17 +194,6 @@ CurveDistance<typename CA::Scalar, CA::dimension> distance(const CA& a, const CB
     const PieceParameter<T> la{x.index, x.t0 + st[0] * (x.t1 - x.t0)}, lb{y.index, y.t0 + st[1] * (y.t1 - y.t0)};
     const T ta = pa.lift(la.index, la.t), tb = pb.lift(lb.index, lb.t);
     offer(ta, tb);
-    // At a piece's end where the next piece answers: that end too, kept only when it
-    // improves by more than the search's tolerance (a real gap, not rounding).
-    const bool ea = pa.locate(ta).index != la.index, eb = pb.locate(tb).index != lb.index;
-    if (ea || eb) {
-      const auto qa = ea ? on_piece(pa, la) : pa(ta), qb = eb ? on_piece(pb, lb) : pb(tb);
-      const T d = detail::safe_distance(qa, qb);
-      if (d < best.distance - std::ldexp(tol(), e)) {
-        best = {d, {ta, tb}, {qa, qb}};
-        left_end = {ea ? std::optional<PieceParameter<T>>(la) : std::nullopt, eb ? std::optional<PieceParameter<T>>(lb) : std::nullopt};
-      }
-    }
     const T sx = norm(x.box.hi - x.box.lo), sy = norm(y.box.hi - y.box.lo);
     const bool can_x = x.t1 - x.t0 > T(1e-15), can_y = y.t1 - y.t0 > T(1e-15);
     if (!can_x && !can_y) continue;  // at the resolution of the parameter: the offer stands
@@ -248,7 +230,7 @@ CurveDistance<typename CA::Scalar, CA::dimension> distance(const CA& a, const CB
   } catch (const InvalidArgument&) {
   }
   best.distance *= 2;
-  best.points = {left_end[0] ? on_piece(pa0, *left_end[0]) : pa0(best.t[0]), left_end[1] ? on_piece(pb0, *left_end[1]) : pb0(best.t[1])};
+  best.points = {pa0(best.t[0]), pb0(best.t[1])};
   return best;
 }
 

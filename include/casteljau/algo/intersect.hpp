@@ -72,9 +72,14 @@ Intersections<typename CA::Scalar> intersect(const CA& a, const CB& b) {
   const auto& pb = pieces(b);
   if constexpr (!(std::same_as<CA, Bezier<T, 2>> && std::same_as<CB, Bezier<T, 2>>)) {
     // Polynomial pieces of degree <= 3 on both sides (polylines, paths, cubic splines...).
-    if (auto r = detail::isect::low_degree_pieces(pa, pb)) return std::move(*r);
+    if (auto r = detail::isect::low_degree_pieces(pa, pb)) {
+      detail::isect::once_per_rest(pa, &pb, *r);
+      return std::move(*r);
+    }
   }
-  return detail::isect::solve_extreme(pa, &pb);
+  Intersections<T> r = detail::isect::solve_extreme(pa, &pb);
+  detail::isect::once_per_rest(pa, &pb, r);
+  return r;
 }
 
 /// The self-intersections of a plane curve: pairs ta < tb with c(ta) = c(tb), and the
@@ -86,7 +91,9 @@ template <class C>
   requires PiecewiseBezierCurve<C> && (C::dimension == 2)
 Intersections<typename C::Scalar> self_intersect(const C& c) {
   const auto& p = pieces(c);
-  return detail::isect::solve_extreme(p, static_cast<decltype(&p)>(nullptr));
+  Intersections<typename C::Scalar> r = detail::isect::solve_extreme(p, static_cast<decltype(&p)>(nullptr));
+  detail::isect::once_per_rest(p, static_cast<decltype(&p)>(nullptr), r);
+  return r;
 }
 
 }  // namespace casteljau

@@ -435,13 +435,9 @@ Projection<typename C::Scalar, C::dimension> project(const C& c, const Point<typ
     r.point = chosen->point;
     r.distance = chosen->d;
   }
-  // The end of a piece at a break where the next piece starts elsewhere (a path's gap, a
-  // B-spline's jump): evaluation at the break gives the next piece's start, so when the
-  // end is better beyond the tie tolerance (a real gap, not rounding), its point answers.
-  if (chosen && chosen->exact && better(chosen->d, r.distance) && !ties(r.distance) && p.locate(r.t).index != chosen->piece) {
-    r.point = std::visit([&](const auto& s) { return s(chosen->own); }, p.segments()[chosen->piece]);
-    r.distance = chosen->d;
-  }
+  // The end of a piece before a jump (a path's gap, a B-spline's knot of multiplicity
+  // p + 1) was lifted to the double below the break (Pieces::lift): the point and distance
+  // above are the piece's, its left limit to rounding, as evaluation at r.t gives them.
   return r;
 }
 

@@ -13,7 +13,9 @@
 
 #include "casteljau/basis/roots.hpp"
 #include "casteljau/curves/concepts.hpp"
+#include "casteljau/curves/bspline.hpp"
 #include "casteljau/curves/piecewise.hpp"
+#include "casteljau/curves/polyline.hpp"
 
 namespace casteljau {
 
@@ -31,11 +33,19 @@ namespace detail {
 /// The Bernstein coefficients on [0, 1] of a . C(t) - value for one piece, times 2^-e
 /// (one power of two chosen so that nothing overflows): a . P_i - value for a polynomial
 /// piece, w_i (a . P_i - value) for a rational one (weights divided by the largest; the
-/// numerator of a . C - value over the positive weight function). `bound` receives a
-/// bound of each coefficient's rounding error: the same sums on absolute values times
-/// the count of roundings.
+/// numerator of a . C - value over the positive weight function).
+///
+/// Each a . P_i - value is a compensated dot product (Dot2 [OgitaRumpOishi05]: the
+/// products split exactly by fma, the sums by TwoSum, the errors summed apart): its
+/// error is at most eps |result| + gamma_(d+1)^2 (|value| + sum |a_k P_ik|), so it is
+/// relative to the difference itself, not to the coordinates (a coordinate at 1e13 minus a
+/// value at 1e13 is exact, as a single subtraction is). `bound` receives that error per
+/// coefficient (times 2, with the underflow of the scalings: a few of the smallest
+/// subnormal), and `size` the sum of the magnitudes of its terms, |value| + sum |a_k P_ik|
+/// (the scale of the pieces' own rounding, see solve). Rational pieces: times w_i, whose
+/// roundings are relative to the coefficient (2 eps of it).
 template <class T, int D, class Piece>
-std::vector<T> level_form(const Piece& c, const Vector<T, D>& a, T value, std::vector<T>& bound) {
+std::vector<T> level_form(const Piece& c, const Vector<T, D>& a, T value, std::vector<T>& bound, std::vector<T>& size) {
   const auto& P = c.points();
   T pm = std::abs(value), am = 0;
   for (const auto& q : P)
@@ -49,16 +59,29 @@ std::vector<T> level_form(const Piece& c, const Vector<T, D>& a, T value, std::v
   const T v = std::ldexp(value, -ep - ea);  // (a . P - value) 2^-(ea + ep), exact scalings
   std::vector<T> f(P.size());
   bound.assign(P.size(), T(0));
+  size.assign(P.size(), T(0));
   const T eps = std::numeric_limits<T>::epsilon();
+  // gamma_n = n u / (1 - n u) for n = D + 1 terms, u = eps / 2: below (D + 1) eps.
+  const T gamma = static_cast<T>(D + 1) * eps;
+  // The scalings by 2^-ep may round a coordinate far below the largest into the
+  // subnormals (half the smallest subnormal each), and so may the products' split.
+  const T tiny = static_cast<T>(4 * (D + 1)) * std::numeric_limits<T>::denorm_min();
   for (std::size_t i = 0; i < P.size(); ++i) {
-    T s = -v, b = std::abs(v);
+    T s = -v, err = 0, b = std::abs(v);
     for (int k = 0; k < D; ++k) {
       const T x = std::ldexp(P[i][k], -ep);  // |x| < 1, exact (or a harmless underflow)
-      s += as[k] * x;
-      b += std::abs(as[k] * x);
+      const T prod = as[k] * x;
+      const T prod_err = std::fma(as[k], x, -prod);  // exact: as_k x = prod + prod_err
+      const T sum = s + prod;                        // TwoSum: s + prod = sum + sum_err exactly
+      const T z = sum - s;
+      const T sum_err = (s - (sum - z)) + (prod - z);
+      s = sum;
+      err += sum_err + prod_err;
+      b += std::abs(prod);
     }
-    f[i] = s;
-    bound[i] = 2 * (D + 1) * eps * b;  // D products and D sums, each one rounding
+    f[i] = s + err;
+    size[i] = b;
+    bound[i] = 2 * (eps * std::abs(f[i]) + gamma * gamma * b) + tiny;
   }
   if constexpr (std::is_same_v<Piece, RationalBezier<T, D>>) {
     const T wmax = *std::max_element(c.weights().begin(), c.weights().end());
@@ -66,9 +89,36 @@ std::vector<T> level_form(const Piece& c, const Vector<T, D>& a, T value, std::v
       const T w = c.weights()[i] / wmax;
       f[i] *= w;
       bound[i] = bound[i] * w + 2 * eps * std::abs(f[i]);
+      size[i] *= w;
     }
   }
   return f;
+}
+
+/// How the exact pieces of a curve (pieces(c)) were obtained, which bounds their own
+/// rounding (see solve): `given`, they are its control points (Bézier and rational Bézier
+/// curves, polylines, Pieces themselves); `blossomed`, a polynomial B-spline's pieces by
+/// blossoming (convex combinations, p levels: within 4 (n + 1) eps of the size of their
+/// coordinates); `computed`, any other conversion (a NURBS's Cartesian points, the
+/// interpolating types: 16 (n + 2) (D + 1) eps, the bound solve used for every type
+/// before). A path takes its worst segment's.
+enum class PieceRounding { given, blossomed, computed };
+
+template <class C>
+PieceRounding piece_rounding(const C& c) {
+  using T = typename C::Scalar;
+  constexpr int D = C::dimension;
+  if constexpr (is_bezier_piece<C> || is_pieces<C> || std::is_same_v<C, Polyline<T, D>>) {
+    return PieceRounding::given;
+  } else if constexpr (requires { c.segments(); }) {
+    PieceRounding r = PieceRounding::given;
+    for (const auto& seg : c.segments()) r = std::max(r, std::visit([](const auto& x) { return piece_rounding(x); }, seg));
+    return r;
+  } else if constexpr (std::is_same_v<C, BSpline<T, D>>) {
+    return PieceRounding::blossomed;
+  } else {
+    return PieceRounding::computed;
+  }
 }
 
 }  // namespace detail
@@ -76,20 +126,29 @@ std::vector<T> level_form(const Piece& c, const Vector<T, D>& a, T value, std::v
 /// Every parameter of the domain where a . C(t) = value (a coordinate k = value when a is
 /// the unit vector e_k), written once on the curve's exact Bézier pieces. On each piece the
 /// scalar polynomial a . P_i - value (rational pieces: w_i (a . P_i - value), the
-/// numerator over the positive weight function) is formed exactly in Bernstein form:
-/// - a piece on which it is zero within its rounding bound (every coefficient within
-///   2 (D + 1) eps of the size of its terms, times 8 (n + 2) for the pieces' own
-///   rounding) is an interval where it holds throughout (a straight piece on the line,
-///   a constant coordinate); adjacent ones merge across breaks;
-/// - otherwise its roots come from bernstein_roots_with_multiplicity with that bound as
-///   the noise: sign changes by subdivision and, through the derivatives, the roots of
-///   even multiplicity (a tangency, where the curve touches the level without crossing)
-///   that rounded coefficients alone can miss; each is reported once.
-/// An end of a piece where the form is zero within that bound is a root at the break
+/// numerator over the positive weight function) is formed in Bernstein form with a known
+/// error per coefficient (detail::level_form: compensated, relative to the coefficient
+/// itself), plus, when the pieces are computed rather than given (`rounding`, see
+/// detail::PieceRounding), their own rounding: 4 (n + 1) eps of the size of the
+/// coefficient's terms for a B-spline's blossoms, 16 (n + 2) (D + 1) eps for other
+/// conversions (a NURBS's Cartesian points, the interpolating types). That sum is the
+/// noise:
+/// - a piece on which every coefficient is within its noise of zero is an interval where
+///   it holds throughout (a straight piece on the line, a constant coordinate); adjacent
+///   ones merge across breaks;
+/// - otherwise its roots come from bernstein_roots_with_multiplicity with that noise:
+///   sign changes by subdivision and, through the derivatives, the roots of even
+///   multiplicity (a tangency, where the curve touches the level without crossing) that
+///   rounded coefficients alone can miss; each is reported once.
+/// An end of a piece where the form is zero within that noise is a root at the break
 /// exactly (roots within 1e-10 of the piece's range from it are that one).
+/// Where the curve may jump (the form of piece i + 1 does not start within its noise of
+/// zero while piece i ends there), the value is only piece i's left limit at the break,
+/// which evaluation does not give: that end is no root, and an interval of piece i ends at
+/// the double below the break (Pieces::end_parameter's rule).
 /// A root within 1e-10 of the domain's length of another (the same root seen from the two
 /// pieces at a break, a multiple root's cluster) is reported once, and roots inside or at
-/// the ends of an interval are dropped. A near-touch within the rounding bound counts as a
+/// the ends of an interval are dropped. A near-touch within the noise counts as a
 /// tangency. Accuracy: a simple root to a few eps of its piece's parameter range times
 /// its conditioning; a multiple root as the simple root of a derivative.
 /// Errors: InvalidArgument("direction", ...) for a zero or non-finite direction,
@@ -97,7 +156,8 @@ std::vector<T> level_form(const Piece& c, const Vector<T, D>& a, T value, std::v
 /// isolations of degree <= n (O(n^2) each per root).
 template <class C>
   requires PiecewiseBezierCurve<C>
-LevelSet<typename C::Scalar> solve(const C& c, const Vector<typename C::Scalar, C::dimension>& a, typename C::Scalar value) {
+LevelSet<typename C::Scalar> solve(const C& c, const Vector<typename C::Scalar, C::dimension>& a, typename C::Scalar value,
+                                   detail::PieceRounding rounding) {
   using T = typename C::Scalar;
   constexpr int D = C::dimension;
   bool nonzero = false;
@@ -110,38 +170,59 @@ LevelSet<typename C::Scalar> solve(const C& c, const Vector<typename C::Scalar, 
   const auto& p = pieces(c);
   const Interval<T> dom = p.domain();
   const T merge = T(1e-10) * (dom.hi - dom.lo);
+  const T eps = std::numeric_limits<T>::epsilon();
+  // Each piece's form and noise first: an end's root depends on the next piece's start.
+  struct Form {
+    std::vector<T> f;
+    T noise = 0;
+    bool zero = false;
+  };
+  std::vector<Form> forms(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    std::visit(
+        [&](const auto& piece) {
+          std::vector<T> bound, size;
+          Form& g = forms[i];
+          g.f = detail::level_form<T, D>(piece, a, value, bound, size);
+          const T n = static_cast<T>(g.f.size()) - 1;
+          const T slack = rounding == detail::PieceRounding::given       ? T(0)
+                          : rounding == detail::PieceRounding::blossomed ? 4 * (n + 1) * eps
+                                                                         : 16 * (n + 2) * (D + 1) * eps;
+          for (std::size_t j = 0; j < bound.size(); ++j) g.noise = std::max(g.noise, bound[j] + slack * size[j]);
+          g.zero = bernstein_negligible<T>(g.f, g.noise);
+        },
+        p.segments()[i]);
+  }
+  // Whether the level is attained at the end of piece i as the curve's value there: at the
+  // domain's end, or where piece i + 1 starts on it too (else the curve jumps off it).
+  const auto end_attained = [&](std::size_t i) {
+    return i + 1 == p.size() || forms[i + 1].zero || std::abs(forms[i + 1].f.front()) <= forms[i + 1].noise;
+  };
   std::vector<T> roots;
   std::vector<Interval<T>> intervals;
   for (std::size_t i = 0; i < p.size(); ++i) {
     const Interval<T> span = p.segment_domain(i);
-    std::visit(
-        [&](const auto& piece) {
-          std::vector<T> bound;
-          const std::vector<T> f = detail::level_form<T, D>(piece, a, value, bound);
-          const T slack = 8 * static_cast<T>(f.size() + 1);
-          T noise = 0;
-          for (T b : bound) noise = std::max(noise, slack * b);
-          if (bernstein_negligible<T>(f, noise)) {
-            if (!intervals.empty() && intervals.back().hi == span.lo) {
-              intervals.back().hi = span.hi;
-            } else {
-              intervals.push_back(span);
-            }
-            return;
-          }
-          // An end where the form is zero within its noise is a root there, exactly: a
-          // crossing at a break whose rounded values lie on one side in both pieces, or a
-          // root the solver places a few eps inside, is snapped to the break.
-          const bool at_start = std::abs(f.front()) <= noise, at_end = std::abs(f.back()) <= noise;
-          if (at_start) roots.push_back(span.lo);
-          if (at_end) roots.push_back(span.hi);
-          for (const auto& r : bernstein_roots_with_multiplicity<T>(f, {T(0), T(1)}, noise)) {
-            if ((at_start && r.t <= T(1e-10)) || (at_end && r.t >= 1 - T(1e-10))) continue;
-            // The piece's ends map exactly onto its break (Pieces::lift).
-            roots.push_back(p.lift(i, r.t));
-          }
-        },
-        p.segments()[i]);
+    const Form& g = forms[i];
+    if (g.zero) {
+      const T hi = end_attained(i) ? span.hi : std::max(std::nextafter(span.hi, -std::numeric_limits<T>::infinity()), span.lo);
+      if (!intervals.empty() && intervals.back().hi == span.lo) {
+        intervals.back().hi = hi;
+      } else {
+        intervals.push_back({span.lo, hi});
+      }
+      continue;
+    }
+    // An end where the form is zero within its noise is a root there, exactly: a
+    // crossing at a break whose rounded values lie on one side in both pieces, or a
+    // root the solver places a few eps inside, is snapped to the break (and dropped with
+    // its cluster where only the left limit takes the value).
+    const bool at_start = std::abs(g.f.front()) <= g.noise, at_end = std::abs(g.f.back()) <= g.noise;
+    if (at_start) roots.push_back(span.lo);
+    if (at_end && end_attained(i)) roots.push_back(span.hi);
+    for (const auto& r : bernstein_roots_with_multiplicity<T>(g.f, {T(0), T(1)}, g.noise)) {
+      if ((at_start && r.t <= T(1e-10)) || (at_end && r.t >= 1 - T(1e-10))) continue;
+      roots.push_back(p.lift(i, r.t));
+    }
   }
   std::sort(roots.begin(), roots.end());
   LevelSet<T> out;
@@ -154,6 +235,13 @@ LevelSet<typename C::Scalar> solve(const C& c, const Vector<typename C::Scalar, 
     out.t.push_back(std::clamp(r, dom.lo, dom.hi));
   }
   return out;
+}
+
+/// The same, with the pieces' rounding from the curve's type (detail::piece_rounding).
+template <class C>
+  requires PiecewiseBezierCurve<C>
+LevelSet<typename C::Scalar> solve(const C& c, const Vector<typename C::Scalar, C::dimension>& a, typename C::Scalar value) {
+  return solve(c, a, value, detail::piece_rounding(c));
 }
 
 }  // namespace casteljau

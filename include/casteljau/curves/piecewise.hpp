@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <span>
 #include <string>
 #include <string_view>
@@ -117,10 +118,52 @@ class PiecewiseCurve {
     return {i, local_parameter(i, u)};
   }
 
+  /// Whether the curve jumps at the end of piece i: piece i + 1 starts elsewhere than
+  /// piece i ends (a path's gap, a B-spline's knot of multiplicity p + 1, a degree-0 step),
+  /// by more than 64 eps of the largest control coordinate of the two pieces (two pieces
+  /// of a continuous curve meet to rounding). False for the last piece. Cost: the two end
+  /// points and the two control boxes.
+  [[nodiscard]] bool jumps_after(std::size_t i) const {
+    if (i + 1 >= segments_.size()) return false;
+    const auto end = [](const auto& s, bool last) {
+      using S = std::decay_t<decltype(s)>;
+      if constexpr (std::is_same_v<S, Bezier<T, D>> || std::is_same_v<S, RationalBezier<T, D>>) {
+        return last ? s.points().back() : s.points().front();  // exact, O(1)
+      } else {
+        return s(last ? s.domain().hi : s.domain().lo);
+      }
+    };
+    const PointType a = std::visit([&](const auto& s) { return end(s, true); }, segments_[i]);
+    const PointType b = std::visit([&](const auto& s) { return end(s, false); }, segments_[i + 1]);
+    T m = 0, gap = 0;
+    for (std::size_t j : {i, i + 1}) {
+      const Box<T, D> box = std::visit([](const auto& s) { return s.control_bounds(); }, segments_[j]);
+      for (int k = 0; k < D; ++k) m = std::max({m, std::abs(box.lo[k]), std::abs(box.hi[k])});
+    }
+    for (int k = 0; k < D; ++k) gap = std::max(gap, std::abs(a[k] - b[k]));
+    return gap > 64 * std::numeric_limits<T>::epsilon() * m;
+  }
+
+  /// The curve parameter at which the curve is piece i's end point (the left limit at
+  /// u_{i+1}): u_{i+1} itself where the curve does not jump there (and at the domain's
+  /// end), else the double below u_{i+1}, whose point (on piece i, as evaluation takes
+  /// it) is that left limit to rounding: evaluation at u_{i+1} gives piece i + 1's start.
+  /// The one rule by which every query reports a point of the closure of a piece before a
+  /// jump (docs/cli.md, "Curves that jump").
+  [[nodiscard]] T end_parameter(std::size_t i) const {
+    const T u = breaks_[i + 1];
+    return jumps_after(i) ? std::max(std::nextafter(u, -std::numeric_limits<T>::infinity()), breaks_[i]) : u;
+  }
+
   /// The curve parameter of piece i's own parameter t: the increasing affine map of its
-  /// own domain onto [u_i, u_{i+1}], the ends exactly onto the breaks (the step up from a
-  /// piece kernel's answer to the curve's). Rounding: a few eps of the break interval.
-  [[nodiscard]] T lift(std::size_t i, T t) const { return map_parameter(t, own_domain(i), segment_domain(i)); }
+  /// own domain onto [u_i, u_{i+1}], the start exactly onto the break u_i, the end onto
+  /// end_parameter(i) (u_{i+1}, or the double below it where the curve jumps there, so
+  /// that the curve at the lifted parameter is piece i's point: the step up from a piece
+  /// kernel's answer to the curve's). Rounding: a few eps of the break interval.
+  [[nodiscard]] T lift(std::size_t i, T t) const {
+    const T u = map_parameter(t, own_domain(i), segment_domain(i));
+    return u == breaks_[i + 1] ? end_parameter(i) : u;
+  }
   /// An interval of piece i's own parameters lifted (its ends by lift(i, t)).
   [[nodiscard]] Interval<T> lift(std::size_t i, const Interval<T>& own) const { return {lift(i, own.lo), lift(i, own.hi)}; }
 
@@ -128,7 +171,8 @@ class PiecewiseCurve {
   /// to out, in order, keeping a joint duplicate once: a root at the start of piece i
   /// (t = its own domain's start, lifted exactly to the break u_i) is left out when out
   /// already ends with u_i, i.e. with the end root of piece i - 1 at the same break (the
-  /// ends lift exactly, so the test is an equality). Calling it for i = 0, 1, ... in turn
+  /// ends lift exactly, so the test is an equality; at a jump piece i - 1's end lifts to
+  /// the double below u_i, and both are kept: two points of the curve). Calling it for i = 0, 1, ... in turn
   /// gives every root of the curve once, in increasing order. Roots inside a piece that
   /// are close to each other, or equal, are the kernel's business: all kept.
   void lift_roots(std::size_t i, std::span<const T> ts, std::vector<T>& out) const {

@@ -105,6 +105,66 @@ Intersections<T> solve_extreme(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb) {
   return r;
 }
 
+/// The stretches where a curve stands still: runs of consecutive constant pieces (every
+/// control point the same: a degree-0 B-spline's steps, a point segment) at one point, as
+/// [first parameter, last parameter] (the last by Pieces::end_parameter: the double below
+/// a break where the curve jumps off the point) and the point.
+template <class T>
+std::vector<std::pair<Interval<T>, Point<T, 2>>> resting_runs(const Pieces<T, 2>& c) {
+  std::vector<std::pair<Interval<T>, Point<T, 2>>> out;
+  std::size_t last = 0;  // the piece that ended the last run
+  for (std::size_t i = 0; i < c.size(); ++i) {
+    const auto& P = std::visit([](const auto& s) -> const std::vector<Point<T, 2>>& { return s.points(); }, c.segments()[i]);
+    if (!std::all_of(P.begin(), P.end(), [&](const Point<T, 2>& q) { return q == P.front(); })) continue;
+    if (!out.empty() && last + 1 == i && out.back().second == P.front()) {
+      out.back().first.hi = c.end_parameter(i);
+    } else {
+      out.push_back({Interval<T>(c.segment_domain(i).lo, c.end_parameter(i)), P.front()});
+    }
+    last = i;
+  }
+  return out;
+}
+
+/// One contact per stretch where a curve stands still (resting_runs): the engine sees such
+/// a stretch at its ends, and any of its parameters is the same point. Each point whose ta
+/// (or tb) lies in a run of a (of b) is moved to the run's first parameter, with the run's
+/// point; then points that agree in both parameters (within 1e-9 of the domains) are one,
+/// the first kept. For self-intersections (cb = nullptr) both parameters are a's, and a
+/// pair whose two parameters fall in one run is the curve resting, not meeting itself.
+template <class T>
+void once_per_rest(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb, Intersections<T>& r) {
+  const bool self = cb == nullptr;
+  const auto ra = resting_runs(ca);
+  const auto rb = self ? ra : resting_runs(*cb);
+  if (ra.empty() && rb.empty()) return;
+  const auto snap = [](const std::vector<std::pair<Interval<T>, Point<T, 2>>>& runs, T& t, Point<T, 2>& at) {
+    for (const auto& [iv, q] : runs) {
+      if (t >= iv.lo && t <= iv.hi) {
+        t = iv.lo;
+        at = q;
+        return true;
+      }
+    }
+    return false;
+  };
+  std::vector<CurveIntersection<T>> out;
+  const T ma = T(1e-9) * ca.domain().length(), mb = T(1e-9) * (self ? ca : *cb).domain().length();
+  bool moved = false;
+  for (auto x : r.points) {
+    const bool sa = snap(ra, x.ta, x.point), sb = snap(rb, x.tb, x.point);
+    moved = moved || sa || sb;
+    if (self && x.tb <= x.ta) continue;  // both in one run
+    const bool seen = std::any_of(out.begin(), out.end(), [&](const CurveIntersection<T>& y) {
+      return std::abs(y.ta - x.ta) <= ma && std::abs(y.tb - x.tb) <= mb;
+    });
+    if (!seen) out.push_back(x);
+  }
+  if (!moved) return;
+  std::stable_sort(out.begin(), out.end(), [](const auto& x, const auto& y) { return x.ta < y.ta; });
+  r.points = std::move(out);
+}
+
 /// The fast path (algo/intersect/low_degree.hpp) for two polynomial Bézier curves of
 /// degree 1 to 3; nothing when it does not apply or refuses. Its points are the general
 /// engine's answer: isolated crossings, reported with the pieces' own values at their
