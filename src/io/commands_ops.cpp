@@ -226,8 +226,8 @@ constexpr Command ops_family[] = {
      "[p0, p1, m0, m1]), catmull_rom and cardinal ([P(i-1), P(i), P(i+1), P(i+2)]; cardinal\n"
      "with tangents (1 - tension) times Catmull-Rom's) and uniform_bspline (four de Boor\n"
      "points) as [1 t t^2 t^3] M. The cubic kinds and bernstein of degree 3 also give M, its\n"
-     "inverse C (exact rationals rounded once; cardinal: an LU inverse, null at tension 1)\n"
-     "and basis_matrix = M.",
+     "inverse C and basis_matrix = M, exact rationals rounded once (cardinal: closed forms\n"
+     "in the tension s, C's factor 1 / (1 - s) divided out by hand; C null at s = 1 only).",
      "values: one row per t, one value per basis function; derivatives (k > 0): k tables\n"
      "          of the same shape, orders 1..k; matrix, constraint, basis_matrix (cubic kinds)",
      R"(  echo '{"kind": "bernstein", "degree": 2, "t": [0.5]}' | casteljau basis
