@@ -184,9 +184,10 @@ constexpr Command ops_family[] = {
      "to the highest degree p, joined, and each joint's knot removed as often as the\n"
      "(homogeneous) curve's continuity there allows: multiplicity p - k where it is C^k,\n"
      "none where the two pieces are one polynomial, p + 1 where it jumps (a gap). Continuity is\n"
-     "decided within 1e-9 of the curve's size (the largest distance of a control point\n"
-     "from the first): end points that close meet, and a knot removal that moves the curve\n"
-     "by at most that much (a guaranteed bound) is made.",
+     "decided to rounding, so the result traces the curve exactly: end points meet when\n"
+     "within 64 eps of their magnitudes, and a knot removal is made when its guaranteed\n"
+     "bound is within 64 eps of the rounding the control points' magnitudes carry through\n"
+     "the removal; a larger defect (a second derivative jumping by 1e-12) keeps its knot.",
      "curve (bspline, or nurbs when a piece is rational)",
      R"(  echo '{"curve": {"type": "path", "segments": [{"type": "bezier", "points": [[-1,-1],[1,1]]}, {"type": "bezier", "points": [[1,1],[2,2],[3,0]]}]}}' | casteljau to_bspline
   {"curve":{"type":"bspline","degree":2,"knots":[0.0,0.0,0.0,1.0,2.0,2.0,2.0],"points":[[-1.0,-1.0],[0.0,0.0],[2.0,2.0],[3.0,0.0]]}})",
