@@ -512,6 +512,14 @@ class ToBSplineTest(CliTest):
                 g = frac_de_boor(got["degree"], got["knots"], got["points"], t)
                 worst = max(worst, max(abs(float(x - y)) for x, y in zip(g, want)))
             self.assertLessEqual(worst, 8 * 2.0 ** -52 * 7, f"eps={eps}")
+        # The rule is relative: the same pieces scaled by 1e-310 (subnormal) and 1e307 (the
+        # bound must not overflow into accepting anything) keep the same knots.
+        for scale in [1e-310, 1e307]:
+            for eps, want in [(1e-3, [1, 1]), (0, [1])]:
+                B = [[3, 0], [4, -2], [b2[0], b2[1] + eps], [7, 1]]
+                segs = [bezier([[x * scale for x in q] for q in P]) for P in (A, B)]
+                got = self.convert({"type": "path", "segments": segs})
+                self.assertEqual(got["knots"], [0] * 4 + want + [2] * 4, f"scale {scale} eps {eps}")
         # A gap of 1e-12 is a gap: the break p + 1 times, both end points kept exactly.
         gap = self.convert({"type": "path", "segments": [bezier(A), bezier([[3, 1e-12], [4, -2], [5, 0], [7, 1]])]})
         self.assertEqual(multiplicities(gap["knots"])[1], 4)

@@ -132,14 +132,21 @@ KnotForm<T, V> remove_joint_knots(const std::vector<T>& U0, const std::vector<V>
   for (const T x : joints) {
     win.reach(x);
     const KnotForm<T, V> f = win.W;  // the window: O(p) points
+    // The magnitudes relative to the largest (m), so that the bound cannot overflow near
+    // the largest doubles; the deviation is divided by m in turn.
     KnotForm<T, T> e{p, f.U, std::vector<T>(f.P.size())};
-    for (std::size_t i = 0; i < f.P.size(); ++i) e.P[i] = magnitude(f.P[i]);
+    T m = 0;
+    for (std::size_t i = 0; i < f.P.size(); ++i) m = std::max(m, e.P[i] = magnitude(f.P[i]));
+    if (m > 0)
+      for (T& v : e.P) v /= m;
     for (int j = 1; j <= p; ++j) {
       KnotForm<T, V> g = remove_knot_once(win.W, x);
       bool finite = true;
       for (const auto& q : g.P) finite = finite && all_finite_point(q) && valid(q);
-      const T tolerance = to_bspline_rounding<T> * std::numeric_limits<T>::epsilon() * removal_rounding_bound(e, x, j);
-      if (!finite || !(removal_deviation(f, g, x, j) <= tolerance)) break;
+      const T dev = removal_deviation(f, g, x, j);
+      const bool within = m > 0 ? dev / m <= to_bspline_rounding<T> * std::numeric_limits<T>::epsilon() * removal_rounding_bound(e, x, j)
+                                : dev == 0;
+      if (!finite || !within) break;
       win.W = std::move(g);
     }
     win.settle(x);
@@ -190,7 +197,9 @@ BSplineForm<typename C::Scalar, C::dimension> to_bspline(const C& c) {
   }
   // Two end points meet when they agree to rounding: within K eps of their magnitudes.
   const auto meet_at = [](const Point<T, D>& a, const Point<T, D>& b) {
-    return detail::max_abs(b - a) <= to_bspline_rounding<T> * std::numeric_limits<T>::epsilon() * (detail::max_abs(a) + detail::max_abs(b));
+    // Halved, so that neither side overflows near the largest doubles.
+    return detail::max_abs(b - a) / 2 <=
+           to_bspline_rounding<T> * std::numeric_limits<T>::epsilon() * (detail::max_abs(a) / 2 + detail::max_abs(b) / 2);
   };
   const std::vector<T>& breaks = pc.breaks();
   std::vector<T> U(static_cast<std::size_t>(p) + 1, breaks.front());
