@@ -187,7 +187,8 @@ constexpr Command ops_family[] = {
      "decided to rounding, so the result traces the curve exactly: end points meet when\n"
      "within 64 eps of their magnitudes, and a knot removal is made when its guaranteed\n"
      "bound is within 64 eps of the rounding the control points' magnitudes carry through\n"
-     "the removal; a larger defect (a second derivative jumping by 1e-12) keeps its knot.",
+     "the removal; a larger defect (a control point 1e-12 off its C^2 position) keeps\n"
+     "its copy of the knot.",
      "curve (bspline, or nurbs when a piece is rational)",
      R"(  echo '{"curve": {"type": "path", "segments": [{"type": "bezier", "points": [[-1,-1],[1,1]]}, {"type": "bezier", "points": [[1,1],[2,2],[3,0]]}]}}' | casteljau to_bspline
   {"curve":{"type":"bspline","degree":2,"knots":[0.0,0.0,0.0,1.0,2.0,2.0,2.0],"points":[[-1.0,-1.0],[0.0,0.0],[2.0,2.0],[3.0,0.0]]}})",

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <span>
 #include <string>
 #include <type_traits>
 #include <variant>
@@ -174,7 +175,7 @@ KnotForm<T, V> remove_joint_knots(const std::vector<T>& U0, const std::vector<V>
 ///    about the control box's centre), left to right on a sliding window:
 ///    k removals where the (homogeneous) curve is C^k there, so the knot keeps
 ///    multiplicity p - k, and disappears where the two pieces are one polynomial. A
-///    defect above rounding (a second derivative that jumps by 1e-8) keeps its copy of
+///    defect above rounding (a control point 1e-12 off its C^2 position) keeps its copy of
 ///    the knot: the result traces the curve exactly, never approximately.
 /// A curve of degree 0 (constant pieces) is a degree-0 B-spline whose equal neighbours
 /// are merged. Cost: O(k p^2) for k pieces (elevation and p removals of O(p) per joint).
