@@ -184,9 +184,11 @@ constexpr Command ops_family[] = {
      "to the highest degree p, joined, and each joint's knot removed as often as the\n"
      "(homogeneous) curve's continuity there allows: multiplicity p - k where it is C^k,\n"
      "none where the two pieces are one polynomial, p + 1 where it jumps (a gap). Continuity is\n"
-     "decided within 1e-9 of the curve's size (the largest distance of a control point\n"
-     "from the first): end points that close meet, and a knot removal that moves the curve\n"
-     "by at most that much (a guaranteed bound) is made.",
+     "decided to rounding, so the result traces the curve exactly: end points meet when\n"
+     "within 64 eps of their magnitudes, and a knot removal is made when its guaranteed\n"
+     "bound is within 64 eps of the rounding the control points' magnitudes carry through\n"
+     "the removal; a larger defect (a control point 1e-12 off its C^2 position) keeps\n"
+     "its copy of the knot.",
      "curve (bspline, or nurbs when a piece is rational)",
      R"(  echo '{"curve": {"type": "path", "segments": [{"type": "bezier", "points": [[-1,-1],[1,1]]}, {"type": "bezier", "points": [[1,1],[2,2],[3,0]]}]}}' | casteljau to_bspline
   {"curve":{"type":"bspline","degree":2,"knots":[0.0,0.0,0.0,1.0,2.0,2.0,2.0],"points":[[-1.0,-1.0],[0.0,0.0],[2.0,2.0],[3.0,0.0]]}})",
@@ -226,8 +228,8 @@ constexpr Command ops_family[] = {
      "[p0, p1, m0, m1]), catmull_rom and cardinal ([P(i-1), P(i), P(i+1), P(i+2)]; cardinal\n"
      "with tangents (1 - tension) times Catmull-Rom's) and uniform_bspline (four de Boor\n"
      "points) as [1 t t^2 t^3] M. The cubic kinds and bernstein of degree 3 also give M, its\n"
-     "inverse C (exact rationals rounded once; cardinal: an LU inverse, null at tension 1)\n"
-     "and basis_matrix = M.",
+     "inverse C and basis_matrix = M, exact rationals rounded once (cardinal: closed forms\n"
+     "in the tension s, C's factor 1 / (1 - s) divided out by hand; C null at s = 1 only).",
      "values: one row per t, one value per basis function; derivatives (k > 0): k tables\n"
      "          of the same shape, orders 1..k; matrix, constraint, basis_matrix (cubic kinds)",
      R"(  echo '{"kind": "bernstein", "degree": 2, "t": [0.5]}' | casteljau basis

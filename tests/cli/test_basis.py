@@ -11,6 +11,7 @@ partition of unity (derivatives summing to 0). Every bad-input rule of docs/cli.
 
 Usage: test_basis.py PATH_TO_CASTELJAU [unittest options]
 """
+import math
 import os
 import random
 import sys
@@ -113,23 +114,43 @@ class BasisTest(CliTest):
             # Entries are k/2 or k/6: one rounding each (the 1/6 ones), so 1 ulp.
             self.assert_matrix(r["matrix"], m, 1e-16)
             self.assert_matrix(r["basis_matrix"], m, 1e-16)
-            self.assert_matrix(r["constraint"], mat_inv(m), 1e-15)  # cardinal: an LU inverse, a few ulps
+            self.assert_matrix(r["constraint"], mat_inv(m), 1e-16)
         # The integer ones are exactly the textbook's.
         self.assertEqual(self.basis(kind="hermite", t=[0])["matrix"], HERMITE)
         self.assertEqual(self.basis(kind="bernstein", degree=3, t=[0])["matrix"], BERNSTEIN3)
         self.assertEqual(self.basis(kind="hermite", t=[0])["constraint"], [[float(x) for x in r] for r in mat_inv(HERMITE)])
 
     def test_cardinal_tension(self):
-        for s in [0.25, 0.5, 0.9]:
+        # M, B and C against the exact rationals for the given double s: M by the contract's
+        # definition (Hermite's M times the tangent map), C = M^-1 by Gauss-Jordan on
+        # Fractions (not the program's closed form). Each entry is asked to be within half
+        # an ulp of the exact value (plus 1e-6 ulp: the double-double's near ties), i.e.
+        # the nearest double or at a tie its neighbour, also near s = 1 (C ~ 1 / (1 - s))
+        # and at s < 2^-53 (1 - s not a double). s = 1 - 2^-52 and 1 - 2^-53: M invertible,
+        # so C is not null there.
+        rng = random.Random(20)
+        tensions = [0, 0.25, 0.5, 0.9, 1 / 3, 0.1, 1e-20, 2.0 ** -54, 2.0 ** -53 * 3, 0.999, 1 - 1e-6, 1 - 1e-12,
+                    1 - 2.0 ** -52, 1 - 2.0 ** -53]
+        tensions += [rng.random() for _ in range(8)] + [1 - rng.random() * 10.0 ** -rng.randint(2, 15) for _ in range(8)]
+        for s in tensions:
             m = cardinal_matrix(F(s))
+            c = mat_inv(m)
+            self.assertIsNotNone(c, s)
             r = self.basis(kind="cardinal", tension=s, t=[0.3])
-            self.assert_matrix(r["matrix"], m, 1e-15)
-            # C = M^-1 by LU: error about cond(M) eps; cond grows like 1 / (1 - s).
-            self.assert_matrix(r["constraint"], mat_inv(m), 1e-13 / (1 - s))
+            for name, got, want in [("matrix", r["matrix"], m), ("basis_matrix", r["basis_matrix"], m), ("constraint", r["constraint"], c)]:
+                for i in range(4):
+                    for j in range(4):
+                        exact, g = F(want[i][j]), got[i][j]
+                        half_ulp = F(math.ulp(float(exact))) / 2
+                        self.assertTrue(abs(F(g) - exact) <= half_ulp * (1 + F(1, 10 ** 6)),
+                                        f"s={s!r} {name}[{i}][{j}] = {g!r}, exact {float(exact)!r}")
         r = self.basis(kind="cardinal", tension=1, t=[0.3])
         self.assertIsNone(r["constraint"])
         self.assertIsNone(mat_inv(cardinal_matrix(1)))  # the oracle agrees it is singular
         self.assert_matrix(r["matrix"], cardinal_matrix(1))
+        # Tension 0 is Catmull-Rom: the same doubles as kind catmull_rom.
+        cr, c0 = self.basis(kind="catmull_rom", t=[0.3]), self.basis(kind="cardinal", tension=0, t=[0.3])
+        self.assertEqual([cr[k] for k in ("matrix", "constraint")], [c0[k] for k in ("matrix", "constraint")])
 
     def test_cubic_values_and_derivatives(self):
         ts = [0, 0.25, 0.5, 0.8, 1, -0.5, 1.75]

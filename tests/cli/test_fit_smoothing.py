@@ -179,6 +179,7 @@ class SmoothingFitTest(CliTest):
                 for lam in (0.0, 1e-9, 1e-6, 1e-4, 1e-2, 1.0):
                     r = self.fit(P.tolist(), lam, parametrization=kind)
                     self.assertEqual(r["smoothing"], lam)
+                    self.assertEqual(list(r), ["curve", "max_error", "smoothing"])  # docs/cli.md: exactly these
                     c = r["curve"]
                     self.check_knots(c, t)
                     got = curve_of(c)(grid)
@@ -303,6 +304,7 @@ class SmoothingFitTest(CliTest):
             P = np.stack([np.cos(s), np.sin(s), 0.2 * s], axis=1)[:, :dim] + rng.normal(scale=0.03, size=(70, dim))
             t = fit_params(P.tolist(), "chord")
             r = self.fit(P.tolist(), "gcv")
+            self.assertEqual(list(r), ["curve", "max_error", "smoothing"])
             lam = r["smoothing"]
             best = minimize_scalar(lambda l: stacked_gcv(t, P, l), bounds=(0, len(t)), method="bounded")
             self.assertLess(abs(lam - best.x), 1e-5, f"d={dim}: {lam} vs {best.x}")

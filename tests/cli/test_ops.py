@@ -432,6 +432,28 @@ def bezier_point(P, t):
     return Q[0]
 
 
+def frac_bezier(P, t):
+    """de Casteljau in Fractions (t a Fraction, points exact doubles)."""
+    Q = [[Fraction(c) for c in q] for q in P]
+    while len(Q) > 1:
+        Q = [[(1 - t) * a + t * b for a, b in zip(Q[j], Q[j + 1])] for j in range(len(Q) - 1)]
+    return Q[0]
+
+
+def frac_de_boor(p, U, P, t):
+    """de Boor's algorithm in Fractions on a clamped knot vector (the span of t, the
+    last non-empty one at the right end)."""
+    U = [Fraction(u) for u in U]
+    n = len(P) - 1
+    k = max(i for i in range(p, n + 1) if U[i] <= t and U[i] < U[i + 1])
+    d = [[Fraction(c) for c in P[j + k - p]] for j in range(p + 1)]
+    for r in range(1, p + 1):
+        for j in range(p, r - 1, -1):
+            a = (t - U[j + k - p]) / (U[j + 1 + k - r] - U[j + k - p])
+            d[j] = [(1 - a) * u + a * v for u, v in zip(d[j - 1], d[j])]
+    return d[p]
+
+
 def multiplicities(U):
     out = {}
     for u in U:
@@ -540,6 +562,69 @@ class ToBSplineTest(CliTest):
         for j in range(33):
             x, y = f(4 * j / 32)
             self.assertAlmostEqual(x * x + y * y, 1, delta=1e-14)  # on the unit circle: rounding
+
+    def test_small_defects_keep_their_knot(self):
+        # Audit 16, D13: two cubic pieces C^1 at t = 1 whose second derivative jumps by
+        # eps (the right piece's third point moved by eps from the C^2 continuation). Any
+        # eps above rounding keeps the double knot, and the B-spline traces both pieces
+        # exactly: compared at rational t with the pieces and the result evaluated in
+        # Fractions (de Casteljau, de Boor), to a few ulps of the size (about 7).
+        A = [[0, 0], [1, 2], [2, 2], [3, 0]]
+        b2 = [1 - 4 * 2 + 4 * 3, 2 - 4 * 2 + 4 * 0]  # a1 - 4 a2 + 4 a3: the C^2 continuation
+        # The rule's threshold here lies between 3e-13 (removed: within K eps of the
+        # propagated magnitudes) and 1e-12 (kept); eps = 0 is one C^2 curve: a single knot.
+        for eps in [1e-3, 1e-8, 1e-11, 1e-12, 0]:
+            B = [[3, 0], [4, -2], [b2[0], b2[1] + eps], [7, 1]]
+            got = self.convert({"type": "path", "segments": [bezier(A), bezier(B)]})
+            self.assertEqual(multiplicities(got["knots"])[1], 1 if eps == 0 else 2, f"eps={eps}")
+            worst = 0
+            for j in range(41):
+                t = Fraction(j, 20)
+                want = frac_bezier(A, t) if t < 1 else frac_bezier(B, t - 1)
+                g = frac_de_boor(got["degree"], got["knots"], got["points"], t)
+                worst = max(worst, max(abs(float(x - y)) for x, y in zip(g, want)))
+            self.assertLessEqual(worst, 8 * 2.0 ** -52 * 7, f"eps={eps}")
+        # The rule is relative: the same pieces scaled by 1e-310 (subnormal) and 1e307 (the
+        # bound must not overflow into accepting anything) keep the same knots.
+        for scale in [1e-310, 1e307]:
+            for eps, want in [(1e-3, [1, 1]), (0, [1])]:
+                B = [[3, 0], [4, -2], [b2[0], b2[1] + eps], [7, 1]]
+                segs = [bezier([[x * scale for x in q] for q in P]) for P in (A, B)]
+                got = self.convert({"type": "path", "segments": segs})
+                self.assertEqual(got["knots"], [0] * 4 + want + [2] * 4, f"scale {scale} eps {eps}")
+        # A gap of 1e-12 is a gap: the break p + 1 times, both end points kept exactly.
+        gap = self.convert({"type": "path", "segments": [bezier(A), bezier([[3, 1e-12], [4, -2], [5, 0], [7, 1]])]})
+        self.assertEqual(multiplicities(gap["knots"])[1], 4)
+        self.assertIn([3, 1e-12], gap["points"])
+
+    def test_rounding_of_splines_keeps_their_continuity(self):
+        # The rule "knots removed to rounding" on the curves whose pieces are exactly C^k in
+        # real arithmetic and rounded in doubles: natural cubic splines (C^2: single knots),
+        # Hermite curves and uniform Catmull-Rom (C^1: double knots), seeded random data at
+        # scales 1e-3..1e3, offsets up to 1e5 and random params (interval ratios up to 20).
+        # The result against scipy's CubicSpline / CubicHermiteSpline (the Catmull-Rom
+        # tangents (p[j+2] - p[j]) / 2 of the contract), to 1e-13 of the data's magnitude.
+        from scipy.interpolate import CubicHermiteSpline, CubicSpline
+        rng = random.Random(17)
+        for trial in range(12):
+            n, scale = rng.randint(4, 9), 10.0 ** rng.uniform(-3, 3)
+            off = rng.choice([0, scale * rng.uniform(-100, 100)])
+            x = [0.0]
+            for _ in range(n - 1):
+                x.append(x[-1] + rng.uniform(0.1, 2))
+            y = [off + scale * rng.uniform(-1, 1) for _ in range(n)]
+            mag = abs(off) + scale
+            spline = self.convert({"type": "cubic_spline", "params": x, "points": [[v] for v in y]})
+            self.assertEqual(spline["knots"], [x[0]] * 4 + x[1:-1] + [x[-1]] * 4, f"trial {trial}")
+            self.assert_traces(spline, CubicSpline(x, y, bc_type="natural"), x[0], x[-1], 1e-13 * mag)
+            m = [scale * rng.uniform(-3, 3) for _ in range(n)]
+            herm = self.convert({"type": "hermite", "params": x, "points": [[v] for v in y], "tangents": [[v] for v in m]})
+            self.assertEqual(herm["knots"], [x[0]] * 4 + [k for k in x[1:-1] for _ in range(2)] + [x[-1]] * 4)
+            self.assert_traces(herm, CubicHermiteSpline(x, y, m), x[0], x[-1], 1e-13 * mag)
+            cr = self.convert({"type": "catmull_rom", "points": [[v] for v in y], "alpha": 0})
+            self.assertEqual(cr["knots"], [0] * 4 + [k for k in range(1, n - 3) for _ in range(2)] + [n - 3] * 4)
+            tang = [(y[j + 1] - y[j - 1]) / 2 for j in range(1, n - 1)]
+            self.assert_traces(cr, CubicHermiteSpline(range(n - 2), y[1:-1], tang), 0, n - 3, 1e-13 * mag)
 
     def test_bad_input(self):
         self.bad("to_bspline", {}, "curve", contains="missing")

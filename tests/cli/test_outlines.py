@@ -420,6 +420,7 @@ class ToSvgPathApproximationTest(CliTest):
             Q = [[float(Fraction(i, n) * Fraction(Q[i - 1][k]) + Fraction(n - i, n) * Fraction(Q[i][k])) if 0 < i < n
                   else float(Q[0 if i == 0 else n - 1][k]) for k in range(2)] for i in range(n + 1)]
         r = self.ok("to_svg_path", {"curve": bezier(Q), "tolerance": 1e-9})
+        self.assertEqual(list(r), ["d", "exact", "max_deviation", "cubics"])  # docs/cli.md: exactly these
         self.assertEqual(r["cubics"], 1)
         self.assertLess(r["max_deviation"], 1e-12)
 

@@ -67,6 +67,13 @@ TEST(BasisKinds, CubicMatricesAreTheTextbookOnes) {
   const std::vector<double> t0{0.5};
   const BasisTable cr = basis_table(kind(BasisKind::catmull_rom), t0, 0), c0 = basis_table(c, t0, 0);
   EXPECT_LE((*cr.matrix - *c0.matrix).cwiseAbs().maxCoeff(), 1e-16);
+  EXPECT_TRUE(*cr.constraint == *c0.constraint);  // the closed form: exact at s = 0
+  // Just below 1, M is invertible: C exists, with k = 2 / (1 - s) = 2^53 (exact).
+  c.tension = 1 - 0x1p-52;
+  const BasisTable near = basis_table(c, t0, 0);
+  ASSERT_TRUE(near.constraint.has_value());
+  EXPECT_EQ((*near.constraint)(3, 1), 0x1p53);
+  EXPECT_EQ((*near.constraint)(3, 3), 3 * 0x1p53);
   c.tension = 1;
   const BasisTable c1 = basis_table(c, t0, 0);
   EXPECT_FALSE(c1.constraint.has_value());

@@ -3,7 +3,7 @@
 // (P(t) = [1 t t^2 t^3] M G). In double, not templated: one small function per kind.
 #pragma once
 
-#include <Eigen/LU>
+#include <Eigen/Core>
 #include <cmath>
 #include <cstddef>
 #include <optional>
@@ -57,16 +57,67 @@ inline Eigen::Matrix4d to_eigen(const RationalMatrix4& m) {
   return r;
 }
 
-/// The cardinal matrix: Hermite's M times the map G -> [P1, P2, c (P2 - P0), c (P3 - P1)],
-/// c = (1 - s) / 2.
+/// x + y as a double-double: x + y = hi + lo exactly (Knuth's TwoSum, any order).
+struct DoubleDouble {
+  double hi, lo;
+};
+inline DoubleDouble two_sum(double x, double y) {
+  const double s = x + y, z = s - x;
+  return {s, (x - (s - z)) + (y - z)};
+}
+
+/// x + y + z rounded once (to within a few 2^-106 relative before the final rounding),
+/// for exact x, y and a small z: TwoSum of x and y, then the low parts added.
+inline double sum3(double x, double y, double z) {
+  const DoubleDouble a = two_sum(x, y);
+  return a.hi + (a.lo + z);
+}
+
+/// The cardinal matrix M in closed form, c = (1 - s) / 2 (the tangents c (P2 - P0) and
+/// c (P3 - P1) put into Hermite's M):
+///   [ 0      1       0        0 ]
+///   [ -c     0       c        0 ]
+///   [ 2c     c - 3   3 - 2c  -c ]
+///   [ -c     2 - c   c - 2    c ]
+/// Each entry is the double nearest the exact value for the double s (up to the tie
+/// cases of a 2^-106 relative error): 1 - s = d + e exactly (TwoSum), c = d / 2 is the
+/// nearest double to (1 - s) / 2, and the sums take e into account before rounding.
 inline Eigen::Matrix4d cardinal_matrix(double s) {
-  const double c = (1 - s) / 2;
-  Eigen::Matrix4d h;
-  h << 0, 1, 0, 0,  //
-      0, 0, 1, 0,   //
-      -c, 0, c, 0,  //
-      0, -c, 0, c;
-  return to_eigen(basis_matrix(CubicForm::hermite)) * h;
+  const DoubleDouble d = two_sum(1.0, -s);
+  const double c = d.hi / 2, e = d.lo / 2;  // (1 - s) / 2 = c + e exactly
+  Eigen::Matrix4d m;
+  m << 0, 1, 0, 0,                                                  //
+      -c, 0, c, 0,                                                  //
+      2 * c, sum3(c, -3, e), sum3(3, -2 * c, -2 * e), -c,           //
+      -c, sum3(2, -c, -e), sum3(c, -2, e), c;
+  return m;
+}
+
+/// The cardinal constraint matrix C = M^-1 in closed form, k = 1 / c = 2 / (1 - s) (rows:
+/// P0 = P2 - a1 / c, P1 = a0, P2 = a0 + a1 + a2 + a3, P3 = P1 + (a1 + 2 a2 + 3 a3) / c,
+/// from p(0) = P1, p(1) = P2, p'(0) = c (P2 - P0), p'(1) = c (P3 - P1)):
+///   [ 1  1 - k  1   1  ]
+///   [ 1  0      0   0  ]
+///   [ 1  1      1   1  ]
+///   [ 1  k      2k  3k ]
+/// The factor 1 - s is divided out analytically, so C is as accurate at s = 1 - 2^-53
+/// (k = 2^54) as at 0. k is carried as a double-double: 1 - s = d + e exactly (TwoSum),
+/// q = 2 / d, its remainder 2 - q d exact by an fma, k = q + (2 - q d - q e) / d to about
+/// 2^-104 relative; each entry is then rounded once (the nearest double up to ties of
+/// that error). std::nullopt at s = 1, where M is singular (both tangents vanish).
+inline std::optional<Eigen::Matrix4d> cardinal_constraint(double s) {
+  if (s == 1) return std::nullopt;
+  const DoubleDouble d = two_sum(1.0, -s);
+  const double q = 2 / d.hi;
+  const double kl = (std::fma(-q, d.hi, 2.0) - q * d.lo) / d.hi;  // k = q + kl
+  const double k = q + kl;
+  const double k3 = 3 * q, k3l = std::fma(3.0, q, -k3);  // 3 q = k3 + k3l exactly
+  Eigen::Matrix4d m;
+  m << 1, sum3(1, -q, -kl), 1, 1,  //
+      1, 0, 0, 0,                  //
+      1, 1, 1, 1,                  //
+      1, k, 2 * k, k3 + (k3l + 3 * kl);
+  return m;
 }
 
 /// Checks a degree-0 knot vector: finite, non-decreasing, at least two knots, a non-empty
@@ -140,8 +191,9 @@ inline std::optional<Eigen::Matrix4d> cubic_matrix(const BasisSpec& b) {
 /// the domain the end spans continued, as curve evaluation), lagrange by the barycentric
 /// Taylor coefficients of each l_j (O(n^2 (k + 1)) per t), the cubic kinds as
 /// [1 t t^2 t^3]^(j) M. The constraint C is the exact inverse for the fixed kinds
-/// (constraint_matrix) and Eigen's full-pivot LU inverse for cardinal (null at tension 1,
-/// where two tangents vanish). Throws as check_basis, ("t[i]", ...) for a non-finite t,
+/// (constraint_matrix) and the closed form of cardinal_constraint for cardinal (each entry
+/// the double nearest the exact rational for the given tension; null at tension 1, where
+/// two tangents vanish). Throws as check_basis, ("t[i]", ...) for a non-finite t,
 /// ("derivatives", ...) for k < 0.
 inline BasisTable basis_table(const BasisSpec& b, std::span<const double> t, int k) {
   check_basis(b);
@@ -157,10 +209,7 @@ inline BasisTable basis_table(const BasisSpec& b, std::span<const double> t, int
       case BasisKind::hermite: r.constraint = detail::to_eigen(constraint_matrix(CubicForm::hermite)); break;
       case BasisKind::catmull_rom: r.constraint = detail::to_eigen(constraint_matrix(CubicForm::catmull_rom)); break;
       case BasisKind::uniform_bspline: r.constraint = detail::to_eigen(constraint_matrix(CubicForm::bspline)); break;
-      default: {
-        const Eigen::FullPivLU<Eigen::Matrix4d> lu(*r.matrix);
-        if (lu.isInvertible()) r.constraint = lu.inverse();
-      }
+      default: r.constraint = detail::cardinal_constraint(b.tension);
     }
   }
   const std::vector<double> w = b.kind == BasisKind::lagrange ? barycentric_weights<double>(b.params) : std::vector<double>{};

@@ -30,7 +30,7 @@ namespace casteljau::io {
 
 /// The curve as one bspline (nurbs when a piece is rational) on the same parameter
 /// (algo/to_bspline.hpp: pieces elevated to the highest degree, each joint's knot
-/// repeated p - k times for continuity C^k there, decided within to_bspline_tolerance).
+/// repeated p - k times for continuity C^k there, decided to rounding: to_bspline_rounding).
 /// Errors: "curve" (the work limit of the queries).
 [[nodiscard]] AnyCurve to_bspline(const AnyCurve& c);
 
