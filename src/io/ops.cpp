@@ -3,10 +3,12 @@
 #include "casteljau/io/ops.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <optional>
 #include <string>
+#include <utility>
 #include <type_traits>
 #include <variant>
 #include <vector>
@@ -117,6 +119,21 @@ Point<double, C::dimension> mean_of(const C& x, const std::vector<double>& break
   return m;
 }
 
+/// The largest |a(u) - b(u)| at samples + 1 equally spaced u per interval of `breaks`
+/// (a value from below of max_deviation's), stopping at the first above stop_above.
+template <class A, class B>
+double sampled_deviation(const A& a, const B& b, const std::vector<double>& breaks, int samples, double stop_above) {
+  double top = 0;
+  for (std::size_t i = 0; i + 1 < breaks.size(); ++i) {
+    for (int j = 0; j <= samples; ++j) {
+      const double u = j == samples ? breaks[i + 1] : breaks[i] + (breaks[i + 1] - breaks[i]) * j / samples;
+      top = std::max(top, norm(a(u) - b(u)));
+      if (top > stop_above) return top;
+    }
+  }
+  return top;
+}
+
 /// The centre of the control points' box: the fits work about it, so that translating
 /// the curve changes nothing but rounding.
 template <int D>
@@ -187,12 +204,25 @@ casteljau::detail::SplineFit<double> spline_fit_problem(const casteljau::detail:
   return g;
 }
 
+/// The curve's values at the fit's samples, E numbers each, when they take at most 4e6
+/// numbers (else none: the fit evaluates the curve at each use).
+template <class Value>
+std::vector<double> sample_values(const casteljau::detail::SplineFit<double>& g, Value&& value) {
+  std::vector<double> Y;
+  const std::size_t E = static_cast<std::size_t>(g.E);
+  if (static_cast<double>(g.samples()) * static_cast<double>(E) > 4e6) return Y;
+  Y.resize(g.samples() * E);
+  for (std::size_t i = 0; i < g.samples(); ++i) value(g.source_span[g.piece(i)], g.sample(i), std::span<double>(Y).subspan(i * E, E));
+  return Y;
+}
+
 /// How many Lawson steps the fit may take: about 3e7 operations in all, none
 /// past 2e6 samples (the weights and errors are kept per sample), at most 30.
-inline int lawson_steps(const casteljau::detail::SplineFit<double>& g, int p, int source_coordinates) {
+inline int lawson_steps(const casteljau::detail::SplineFit<double>& g, int p, int source_coordinates, bool cached) {
   const double N = static_cast<double>(g.samples());
   if (N > 2e6) return 0;
-  const double per_step = N * ((g.q + 1.0) * (g.q + 1.0) * (g.E + 2.0) + 2.0 * (p + 1.0) * (p + 1.0) * source_coordinates);
+  const double per_step =
+      N * ((g.q + 1.0) * (g.q + 1.0) * (g.E + 2.0) + (cached ? 0.0 : 2.0 * (p + 1.0) * (p + 1.0) * source_coordinates));
   return static_cast<int>(std::min(30.0, std::floor(3e7 / per_step)));
 }
 
@@ -203,12 +233,13 @@ inline int lawson_steps(const casteljau::detail::SplineFit<double>& g, int p, in
 /// homogeneous points (kept when every fitted weight is > 0). Then r steps of [PT97] A5.11
 /// (reduce_degree with no tolerance to meet: every knot removal taken; left out where it
 /// fails, e.g. a NURBS weight <= 0), and the fits' first (least-squares) solves. In this
-/// order, the likely best first; none depends on a tolerance.
+/// order, the likely best first; none depends on a tolerance. Each with a value from
+/// below of its max_error (the fits' largest sampled error; 0 for A5.11).
 template <class C>
-std::vector<C> spline_reductions(const C& x, int r) {
+std::vector<std::pair<C, double>> spline_reductions(const C& x, int r) {
   constexpr int D = C::dimension;
   constexpr bool rational = std::is_same_v<C, Nurbs<double, D>>;
-  std::vector<C> out, rest;  // the fits' best, then A5.11 and the fits' first solves
+  std::vector<std::pair<C, double>> out, rest;  // the fits' best, then A5.11 and the fits' first solves
   std::optional<C> steps;
   try {
     C y = x;
@@ -231,29 +262,43 @@ std::vector<C> spline_reductions(const C& x, int r) {
     source(s, u, std::span<double>(h));
     for (int d = 0; d < D; ++d) v[static_cast<std::size_t>(d)] = rational ? h[static_cast<std::size_t>(d)] / h[D] : h[static_cast<std::size_t>(d)];
   };
-  const auto distance_to = [&](std::span<const double> a, std::span<const double> b) {
+  // |a - b| over the first D numbers (the Cartesian coordinates; b / b[D] and a / a[D]
+  // when `projective`), scaled by the largest difference so that no square under- or
+  // overflows at any scale.
+  const auto distance_to = [&](std::span<const double> a, std::span<const double> b, bool projective = false) {
+    std::array<double, D> diff;
+    double big = 0;
+    for (std::size_t d = 0; d < static_cast<std::size_t>(D); ++d) {
+      diff[d] = projective ? a[d] / a[D] - b[d] / b[D] : a[d] - b[d];
+      big = std::max(big, std::abs(diff[d]));
+    }
+    if (!(big > 0) || !std::isfinite(big)) return big;
     double s2 = 0;
-    for (int d = 0; d < D; ++d) s2 += (a[static_cast<std::size_t>(d)] - b[static_cast<std::size_t>(d)]) * (a[static_cast<std::size_t>(d)] - b[static_cast<std::size_t>(d)]);
-    return std::sqrt(s2);
+    for (const double x : diff) s2 += (x / big) * (x / big);
+    return big * std::sqrt(s2);
   };
   std::vector<double> point(static_cast<std::size_t>(D));
   // The polynomial fit (a bspline's, or a nurbs' with weights 1).
   {
     const casteljau::detail::SplineFit<double> g = spline_fit_problem(f, r, D, cartesian);
-    const auto target = [&](std::size_t i, std::span<double> v) { cartesian(g.source_span[g.piece(i)], g.sample(i), v); };
+    const std::vector<double> Y = sample_values(g, cartesian);
+    const auto target = [&](std::size_t i, std::span<double> v) {
+      if (Y.empty()) return cartesian(g.source_span[g.piece(i)], g.sample(i), v);
+      std::copy_n(Y.begin() + static_cast<std::ptrdiff_t>(i * D), D, v.begin());
+    };
     const auto error = [&](std::size_t i, std::span<const double> v) {
       target(i, std::span<double>(point));
       return distance_to(v, point);
     };
-    const auto fits = casteljau::detail::lawson_fits<double>(g, target, error, lawson_steps(g, p, static_cast<int>(S)));
+    const auto fits = casteljau::detail::lawson_fits<double>(g, target, error, lawson_steps(g, p, static_cast<int>(S), !Y.empty()));
     for (std::size_t k = 0; k < fits.size(); ++k) {
       std::vector<Point<double, D>> Q(g.fixed.size());
       for (std::size_t i = 0; i < Q.size(); ++i)
-        for (int d = 0; d < D; ++d) Q[i][d] = fits[k][i * D + static_cast<std::size_t>(d)] + c[d];
+        for (int d = 0; d < D; ++d) Q[i][d] = fits[k].C[i * D + static_cast<std::size_t>(d)] + c[d];
       if constexpr (rational) {
-        (k == 0 ? out : rest).emplace_back(q, g.W, std::move(Q), std::vector<double>(g.fixed.size(), 1.0));
+        (k == 0 ? out : rest).emplace_back(C(q, g.W, std::move(Q), std::vector<double>(g.fixed.size(), 1.0)), fits[k].sampled_error);
       } else {
-        (k == 0 ? out : rest).emplace_back(q, g.W, std::move(Q));
+        (k == 0 ? out : rest).emplace_back(C(q, g.W, std::move(Q)), fits[k].sampled_error);
       }
     }
   }
@@ -261,17 +306,19 @@ std::vector<C> spline_reductions(const C& x, int r) {
     // The homogeneous fit, its error the Cartesian distance (infinite where the fitted
     // weight is <= 0).
     const casteljau::detail::SplineFit<double> g = spline_fit_problem(f, r, D + 1, source);
-    const auto target = [&](std::size_t i, std::span<double> v) { source(g.source_span[g.piece(i)], g.sample(i), v); };
+    const std::vector<double> Y = sample_values(g, source);
+    const auto target = [&](std::size_t i, std::span<double> v) {
+      if (Y.empty()) return source(g.source_span[g.piece(i)], g.sample(i), v);
+      std::copy_n(Y.begin() + static_cast<std::ptrdiff_t>(i * S), S, v.begin());
+    };
     const auto error = [&](std::size_t i, std::span<const double> v) {
       if (!(v[D] > 0)) return std::numeric_limits<double>::infinity();
       target(i, std::span<double>(y));
-      double s2 = 0;
-      for (std::size_t d = 0; d < static_cast<std::size_t>(D); ++d) s2 += (v[d] / v[D] - y[d] / y[D]) * (v[d] / v[D] - y[d] / y[D]);
-      return std::sqrt(s2);
+      return distance_to(v, y, true);
     };
-    const auto fits = casteljau::detail::lawson_fits<double>(g, target, error, lawson_steps(g, p, static_cast<int>(S)));
+    const auto fits = casteljau::detail::lawson_fits<double>(g, target, error, lawson_steps(g, p, static_cast<int>(S), !Y.empty()));
     for (std::size_t k = 0; k < fits.size(); ++k) {
-      const std::vector<double>& P = fits[k];
+      const std::vector<double>& P = fits[k].C;
       std::vector<Point<double, D>> Q(g.fixed.size());
       std::vector<double> w(g.fixed.size());
       bool positive = true;
@@ -283,10 +330,10 @@ std::vector<C> spline_reductions(const C& x, int r) {
       if (!positive) continue;
       bool finite = true;
       for (const auto& pt : Q) finite = finite && casteljau::detail::all_finite_point(pt);
-      if (finite) (k == 0 ? out : rest).emplace_back(q, g.W, std::move(Q), std::move(w));
+      if (finite) (k == 0 ? out : rest).emplace_back(C(q, g.W, std::move(Q), std::move(w)), fits[k].sampled_error);
     }
   }
-  if (steps) out.push_back(std::move(*steps));
+  if (steps) out.emplace_back(std::move(*steps), 0.0);
   for (auto& y : rest) out.push_back(std::move(y));
   return out;
 }
@@ -342,24 +389,34 @@ AnyReduction reduce(const AnyCurve& c, int times, double tolerance) {
           // polynomials is wider than that spacing.
           double err = std::numeric_limits<double>::infinity();
           if constexpr (!bezier) {
-            // Every candidate measured, the least max_error kept (the first of equals): the
-            // answer does not depend on the tolerance, which only accepts or refuses it.
+            // The candidates ranked by their largest distance at 4 (p + 1) + 1 equally
+            // spaced parameters per interval (the ends included: a fit's error often
+            // peaks at a break), the least kept (the first of equals) and measured as
+            // below. The answer does not depend on the tolerance, which only accepts or
+            // refuses it.
             if (m >= 1) {
-              for (auto& y : spline_reductions(x, times)) {
-                const double e = max_deviation<double>(x, y, breaks, 32 * (p + 1), err);
-                if (e < err) {
-                  err = e;
+              double coarse = std::numeric_limits<double>::infinity();
+              for (auto& [y, below] : spline_reductions(x, times)) {
+                if (below > coarse) continue;  // a sampled error above the best's already
+                const double e = sampled_deviation(x, y, breaks, 4 * (p + 1), coarse);
+                if (e < coarse) {
+                  coarse = e;
                   reduced = std::move(y);
                 }
               }
+              if (coarse < std::numeric_limits<double>::infinity()) err = 0;  // measured below
             }
           }
-          if (bezier || m == 0) err = max_deviation<double>(x, reduced, breaks, 32 * (p + 1));
+          if (bezier || m == 0 || err == 0) err = max_deviation<double>(x, reduced, breaks, 32 * (p + 1));
+          if (!std::isfinite(err)) {
+            throw InvalidArgument("curve", "no reduction from degree " + std::to_string(p) + " to " + std::to_string(m) +
+                                               " with a finite distance to the curve was found (coordinates near the largest double?)");
+          }
           if (!(err <= tolerance)) {
             throw InvalidArgument("tolerance", "reducing the degree from " + std::to_string(p) + " to " + std::to_string(m) +
                                                    " moves the curve by " + format_number(err) +
-                                                   " at best (the largest distance at equal parameters, measured, of the " +
-                                                   "reduction found), more than the tolerance " + format_number(tolerance));
+                                                   " (measured: the largest distance at equal parameters, of the best reduction "
+                                                   "found), more than the tolerance " + format_number(tolerance));
           }
           return {AnyCurve(std::move(reduced)), err};
         } else {

@@ -21,9 +21,9 @@ namespace casteljau {
 /// peak narrower than the sample spacing hides between two samples (for polynomials of
 /// degree n, samples = 32 (n + 1) leaves no room for that in practice). Cost: about
 /// (samples + 80 per peak) evaluations of both curves per interval. With `stop_above`
-/// (a comparison among candidates: only a value below it matters), the first interval
-/// whose samples exceed it ends the measure, returning that sample (a value from below,
-/// > stop_above, so the same verdict).
+/// (a comparison among candidates: only a value below it matters), the first sample
+/// above it ends the measure, returning that sample (a value from below, > stop_above,
+/// so the same verdict).
 template <class T, class A, class B>
 T max_deviation(const A& a, const B& b, const std::vector<T>& breaks, int samples,
                 T stop_above = std::numeric_limits<T>::infinity()) {
@@ -35,10 +35,10 @@ T max_deviation(const A& a, const B& b, const std::vector<T>& breaks, int sample
     for (std::size_t j = 0; j < u.size(); ++j) {
       u[j] = j + 1 == u.size() ? hi : lo + (hi - lo) * static_cast<T>(j) / static_cast<T>(samples);
       f[j] = dist(u[j]);
+      if (f[j] > stop_above) return f[j];
     }
     const T top = *std::max_element(f.begin(), f.end());
     best = std::max(best, top);
-    if (best > stop_above) return best;
     for (std::size_t j = 0; j < u.size(); ++j) {
       const bool peak = (j == 0 || f[j] >= f[j - 1]) && (j + 1 == u.size() || f[j] >= f[j + 1]);
       if (!peak || f[j] < top / 2 || top == 0) continue;

@@ -195,16 +195,22 @@ bool weighted_fit(const SplineFit<T>& f, const std::vector<T>& w, Target&& targe
 /// multiplied by its sample's error, error(i, fitted) (the distance that counts, >= 0),
 /// and the fit solved again, which moves the fit towards the discrete min-max one. Returns
 /// the fit of least sampled max error among the steps, then the first fit when a step
-/// improved on it (none when the first solve failed). Weights below 1e-12 of the
+/// improved on it (none when the first solve failed), each with its largest sampled error
+/// (a value from below of its max error: the samples are points of both curves). Weights below 1e-12 of the
 /// largest are raised to it (the system stays non-singular). Cost O(iterations N q^2).
+template <class T>
+struct LawsonFit {
+  std::vector<T> C;
+  T sampled_error;
+};
 template <class T, class Target, class Error>
-std::vector<std::vector<T>> lawson_fits(const SplineFit<T>& f, Target&& target, Error&& error, int iterations) {
+std::vector<LawsonFit<T>> lawson_fits(const SplineFit<T>& f, Target&& target, Error&& error, int iterations) {
   const std::size_t N = f.samples(), E = static_cast<std::size_t>(f.E);
   std::vector<T> w(N), err(N), val(E), scratch(static_cast<std::size_t>(f.q) + 1);
   for (std::size_t i = 0; i < N; ++i) w[i] = f.hi[i / static_cast<std::size_t>(f.K)] - f.lo[i / static_cast<std::size_t>(f.K)];
   std::vector<T> C;
   if (!weighted_fit(f, w, target, C)) return {};
-  std::vector<std::vector<T>> out{C, C};  // the best, the first
+  std::vector<LawsonFit<T>> out{{C, T(0)}, {C, T(0)}};  // the best, the first
   T best = -1;
   for (int it = 0;; ++it) {
     T top = 0, total = 0;
@@ -214,9 +220,10 @@ std::vector<std::vector<T>> lawson_fits(const SplineFit<T>& f, Target&& target, 
       top = std::max(top, err[i]);
     }
     if (!std::isfinite(top)) top = std::numeric_limits<T>::infinity();
+    if (it == 0) out[1].sampled_error = top;
     if (best < 0 || top < best) {
       best = top;
-      out[0] = C;
+      out[0] = {C, top};
     }
     if (it >= iterations || !(top > 0) || !std::isfinite(top)) break;
     T wmax = 0;
@@ -229,7 +236,7 @@ std::vector<std::vector<T>> lawson_fits(const SplineFit<T>& f, Target&& target, 
     for (std::size_t i = 0; i < N; ++i) w[i] = std::max(w[i], wmax * T(1e-12)) / wmax;
     if (!weighted_fit(f, w, target, C)) break;
   }
-  if (out[0] == out[1]) out.pop_back();
+  if (out[0].C == out[1].C) out.pop_back();
   return out;
 }
 
