@@ -278,6 +278,14 @@ std::vector<std::pair<C, double>> spline_reductions(const C& x, int r) {
     return big * std::sqrt(s2);
   };
   std::vector<double> point(static_cast<std::size_t>(D));
+  // A clamped end's point is the curve's end exactly (the fits' fixed values are that
+  // point about c, which adding c back may round).
+  const std::vector<double>& U = x.knots();
+  const std::size_t n = x.points().size();
+  const auto exact_ends = [&](std::vector<Point<double, D>>& Q) {
+    if (U.front() == U[static_cast<std::size_t>(p)]) Q.front() = x.points().front();
+    if (U.back() == U[n]) Q.back() = x.points().back();
+  };
   // The polynomial fit (a bspline's, or a nurbs' with weights 1).
   {
     const casteljau::detail::SplineFit<double> g = spline_fit_problem(f, r, D, cartesian);
@@ -295,6 +303,7 @@ std::vector<std::pair<C, double>> spline_reductions(const C& x, int r) {
       std::vector<Point<double, D>> Q(g.fixed.size());
       for (std::size_t i = 0; i < Q.size(); ++i)
         for (int d = 0; d < D; ++d) Q[i][d] = fits[k].C[i * D + static_cast<std::size_t>(d)] + c[d];
+      exact_ends(Q);
       if constexpr (rational) {
         (k == 0 ? out : rest).emplace_back(C(q, g.W, std::move(Q), std::vector<double>(g.fixed.size(), 1.0)), fits[k].sampled_error);
       } else {
@@ -328,6 +337,7 @@ std::vector<std::pair<C, double>> spline_reductions(const C& x, int r) {
         for (int d = 0; d < D; ++d) Q[i][d] = P[i * S + static_cast<std::size_t>(d)] / w[i] + c[d];
       }
       if (!positive) continue;
+      exact_ends(Q);
       bool finite = true;
       for (const auto& pt : Q) finite = finite && casteljau::detail::all_finite_point(pt);
       if (finite) (k == 0 ? out : rest).emplace_back(C(q, g.W, std::move(Q), std::move(w)), fits[k].sampled_error);

@@ -670,7 +670,7 @@ class ReduceTest(CliTest):
         self.assertEqual(got["curve"]["degree"], 1)
         self.check_measured(c, got)
         # A seeded batch as the audit drew it (weights e^U(-3, 3), 14 of 35 refused there):
-        # every one answered, the error measured, weights > 0, the domain's ends kept, and
+        # every one answered, the error measured, weights > 0, the clamped ends kept, and
         # no worse than the chord between the ends (a lower-degree curve the fit can hold:
         # its error measured here too).
         rng = np.random.default_rng(35)
@@ -686,7 +686,7 @@ class ReduceTest(CliTest):
             msg = f"trial {trial}: {c}, times {r}"
             self.assertEqual(got["curve"]["degree"], p - r, msg)
             self.assertTrue(all(w > 0 for w in got["curve"]["weights"]), msg)
-            self.assert_close([got["curve"]["points"][0], got["curve"]["points"][-1]], [P[0].tolist(), P[-1].tolist()], 1e-13, msg)
+            self.assertEqual([got["curve"]["points"][0], got["curve"]["points"][-1]], [P[0].tolist(), P[-1].tolist()], msg)
             err = self.check_measured(c, got, msg)
             chord = self.measured(vector_oracle(c), lambda t: np.multiply.outer(1 - t, P[0]) + np.multiply.outer(t, P[-1]), 0, 1, U,
                                   vectorised=True)
