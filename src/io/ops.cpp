@@ -279,7 +279,7 @@ std::vector<std::pair<C, double>> spline_reductions(const C& x, int r) {
   };
   std::vector<double> point(static_cast<std::size_t>(D));
   // A clamped end's point is the curve's end exactly (the fits' fixed values are that
-  // point about c, which adding c back may round).
+  // point about c, which adding c back may round; A5.11 divides by the weight again).
   const std::vector<double>& U = x.knots();
   const std::size_t n = x.points().size();
   const auto exact_ends = [&](std::vector<Point<double, D>>& Q) {
@@ -343,7 +343,15 @@ std::vector<std::pair<C, double>> spline_reductions(const C& x, int r) {
       if (finite) (k == 0 ? out : rest).emplace_back(C(q, g.W, std::move(Q), std::move(w)), fits[k].sampled_error);
     }
   }
-  if (steps) out.emplace_back(std::move(*steps), 0.0);
+  if (steps) {
+    std::vector<Point<double, D>> Q = steps->points();
+    exact_ends(Q);
+    if constexpr (rational) {
+      out.emplace_back(C(steps->degree(), steps->knots(), std::move(Q), steps->weights()), 0.0);
+    } else {
+      out.emplace_back(C(steps->degree(), steps->knots(), std::move(Q)), 0.0);
+    }
+  }
   for (auto& y : rest) out.push_back(std::move(y));
   return out;
 }
