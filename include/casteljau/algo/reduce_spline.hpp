@@ -191,7 +191,7 @@ bool weighted_fit(const SplineFit<T>& f, const std::vector<T>& w, Target&& targe
 
 /// The least-squares fit with weights proportional to the pieces' lengths (a discrete
 /// Chebyshev-weighted L2 fit per piece, near the min-max fit for polynomials), then up to
-/// `iterations` steps of Lawson's algorithm [Lawson61; Rice & Usow 1968]: each weight
+/// `iterations` steps of Lawson's algorithm [Lawson61; RiceUsow68]: each weight
 /// multiplied by its sample's error, error(i, fitted) (the distance that counts, >= 0),
 /// and the fit solved again, which moves the fit towards the discrete min-max one. Returns
 /// the fit of least sampled max error among the steps, then the first fit when a step
