@@ -8,8 +8,8 @@
 #include <limits>
 #include <optional>
 #include <string>
-#include <utility>
 #include <type_traits>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -168,8 +168,8 @@ casteljau::detail::FlatSpline<double> flat_about(const Nurbs<double, D>& x, cons
 }
 
 /// The fitting problem of the reduction by r of the degree-p spline f: the knots of
-/// casteljau::detail::reduced_knots, the pieces of f's domain, K = 2 p + 4 samples a piece, and the
-/// fixed control points (the domain's ends, both limits at a jump) with the values
+/// detail::reduced_knots, the pieces of f's domain, K = 2 p + 4 samples a piece, and
+/// the fixed control points (the domain's ends, both limits at a jump) with the values
 /// value(s, u, out) gives: f's piece on its span s at u, as the fit's E numbers.
 template <class Value>
 casteljau::detail::SplineFit<double> spline_fit_problem(const casteljau::detail::FlatSpline<double>& f, int r, int E, Value&& value) {
