@@ -20,6 +20,7 @@
 #include "casteljau/algo/length.hpp"
 #include "casteljau/algo/project.hpp"
 #include "casteljau/algo/reduce.hpp"
+#include "casteljau/algo/reduce_spline.hpp"
 #include "casteljau/algo/solve.hpp"
 #include "casteljau/algo/span_table.hpp"
 #include "casteljau/algo/subdivision.hpp"

@@ -195,11 +195,14 @@ constexpr Command ops_family[] = {
      to_bspline_fields, to_bspline},
     {"reduce", "Degree reduction of a bezier, bspline or nurbs within a tolerance",
      "The curve with its degree lowered by `times` r: a bezier by least squares with its end\n"
-     "points kept, a bspline or nurbs by r steps of The NURBS Book's A5.11 (each step within\n"
-     "the tolerance by its guaranteed bound); a degree-0 result is the curve's mean over\n"
-     "its domain. max_error is the largest distance between the two curves at equal\n"
-     "parameters, measured (dense sampling and a local maximisation, to about 1e-9\n"
-     "relative); a result farther than the tolerance is refused with that figure.",
+     "points kept; a bspline or nurbs as the best of several candidates on its own breaks\n"
+     "(each break's multiplicity lowered by r, at least 1; ends kept): a least-squares fit\n"
+     "refined towards min-max by Lawson's steps (for a nurbs a polynomial and a homogeneous\n"
+     "one) and r steps of The NURBS Book's A5.11, the one of least error kept, whatever the\n"
+     "tolerance; a degree-0 result is the curve's mean over its domain. max_error is the\n"
+     "largest distance between the two curves at equal parameters, measured (dense sampling\n"
+     "and a local maximisation, to about 1e-9 relative); a result farther than the\n"
+     "tolerance is refused with that figure.",
      "curve (the input's type, degree p - r), max_error",
      R"(  echo '{"curve": {"type": "bezier", "points": [[0,0],[1,2],[3,2],[4,0]]}, "tolerance": 0.5}' | casteljau reduce
   {"curve":{"type":"bezier","points":[[0.0,0.0],[2.0000000000000004,3.0],[4.0,0.0]]},"max_error":0.09622504486493799})",
