@@ -134,7 +134,7 @@ RC_GTEST_PROP(AlgoProperty, PathBounds, ()) {
 
 // The piecewise algebra on random pieces with random breaks (on a grid of 1/16, from -4):
 // the parts for_each_piece visits, lifted back, tile the range (consecutive parts meet
-// exactly at a break; the range's ends come back to within the rounding of one map,
+// exactly at a break, or where the pieces jump the earlier ends at the double below it; the range's ends come back to within the rounding of one map,
 // 4 eps of the domain's size), each part within its piece's own domain; locate then lift
 // returns u (the same rounding); and portion(range) is the curve on the range (at its end,
 // the last piece's end: random pieces need not meet at their breaks). Its
@@ -162,17 +162,26 @@ RC_GTEST_PROP(AlgoProperty, PiecewiseAlgebraTilesRangesAndKeepsTheCurve, ()) {
   if (a > b) std::swap(a, b);
   const double slack = 4 * eps * std::max(std::abs(dom.lo), std::abs(dom.hi));
   std::vector<Interval<double>> lifted;
+  std::vector<std::size_t> visited;
   Point<double, 2> end;  // the range's end on the last piece visited (its left limit at a break)
   p.for_each_piece({a, b}, [&](std::size_t i, const auto& piece, const Interval<double>& own) {
     RC_ASSERT(own.lo >= piece.domain().lo);
     RC_ASSERT(own.hi <= piece.domain().hi);
     lifted.push_back(p.lift(i, own));
+    visited.push_back(i);
     end = piece(own.hi);
   });
   RC_ASSERT(!lifted.empty());
   RC_ASSERT(std::abs(lifted.front().lo - a) <= slack);
   RC_ASSERT(std::abs(lifted.back().hi - b) <= slack);
-  for (std::size_t j = 1; j < lifted.size(); ++j) RC_ASSERT(lifted[j].lo == lifted[j - 1].hi);
+  // Where the pieces do not meet (a jump), the part before the break ends at the double
+  // below it (the one rule at a jump: a reported t is where eval gives the point).
+  for (std::size_t j = 1; j < lifted.size(); ++j) {
+    if (p.jumps_after(visited[j - 1]))
+      RC_ASSERT(lifted[j - 1].hi == std::nextafter(lifted[j].lo, -std::numeric_limits<double>::infinity()));
+    else
+      RC_ASSERT(lifted[j].lo == lifted[j - 1].hi);
+  }
   const auto at = p.locate(a);
   RC_ASSERT(std::abs(p.lift(at.index, at.t) - a) <= slack);
   if (a < b) {
