@@ -12,6 +12,7 @@
 #include <tuple>
 #include <vector>
 
+#include "casteljau/curves/parametrization.hpp"
 #include "casteljau/io/surfaces.hpp"
 #include "casteljau/surfaces/surface_batch.hpp"
 #include "casteljau/surfaces/surface_intersect.hpp"
@@ -700,23 +701,27 @@ AnySurface revolve(const Args& a) {
   return finish(std::move(f), "curve");
 }
 
-/// Parameters of a grid's rows (or columns): for each line across them, the rule's steps
-/// normalised; averaged over the lines whose total is positive [PT97, A9.3].
+/// Parameters of a grid's rows (or columns): for each line across them, the rule's
+/// parameters (parameter_sums: equal points give a zero step) normalised; averaged over
+/// the lines whose total is positive and finite [PT97, A9.3].
 std::vector<double> grid_params(const SurfaceForm<double>& g, const std::string& rule) {
+  const Parametrization r = rule == "uniform" ? Parametrization::uniform
+                            : rule == "chord" ? Parametrization::chord
+                                              : Parametrization::centripetal;
   std::vector<double> t(g.rows, 0.0);
   std::size_t used = 0;
-  for (std::size_t j = 0; j < g.cols; ++j) {
-    std::vector<double> s(g.rows, 0.0);
-    for (std::size_t i = 1; i < g.rows; ++i) {
-      double d2 = 0;
-      for (std::size_t k = 0; k < g.dim; ++k) d2 += (g.at(i, j)[k] - g.at(i - 1, j)[k]) * (g.at(i, j)[k] - g.at(i - 1, j)[k]);
-      const double step = rule == "uniform" ? 1.0 : rule == "chord" ? std::sqrt(d2) : std::sqrt(std::sqrt(d2));
-      s[i] = s[i - 1] + step;
+  dispatch_dimension(static_cast<int>(g.dim), [&]<int D>() {
+    std::vector<Point<double, D>> line(g.rows);
+    for (std::size_t j = 0; j < g.cols; ++j) {
+      for (std::size_t i = 0; i < g.rows; ++i)
+        for (int k = 0; k < D; ++k) line[i][k] = g.at(i, j)[k];
+      std::vector<double> s = parameter_sums(line, r);
+      if (!(s.back() > 0) || !std::isfinite(s.back())) continue;
+      normalize_parameters(s);
+      for (std::size_t i = 1; i < g.rows; ++i) t[i] += s[i];
+      ++used;
     }
-    if (!(s.back() > 0) || !std::isfinite(s.back())) continue;
-    for (std::size_t i = 1; i < g.rows; ++i) t[i] += s[i] / s.back();
-    ++used;
-  }
+  });
   if (used == 0) throw InvalidArgument("points", "the grid's rows all coincide: no parameters");
   for (auto& x : t) x /= static_cast<double>(used);
   t.back() = 1;

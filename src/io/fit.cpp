@@ -46,7 +46,7 @@ AnyFit smoothing_fit(const std::vector<Point<double, D>>& Q, const AnyFitRequest
                                         " points): give smoothing as a number");
   }
   const int evaluations = static_cast<int>(std::min(500.0, smoothing_evaluation_limit / n));
-  const std::vector<double> t = fit_parameters(Q, r.parametrization, false);
+  const std::vector<double> t = unit_parameters(Q, r.parametrization, false);
   SmoothingSpline<double, D> s = [&] {
     try {
       return smoothing_spline<double, D>(Q, t, r.smoothing_gcv ? std::nullopt : r.smoothing, evaluations);

@@ -222,6 +222,14 @@ class ClosedFitTest(CliTest):
         self.bad("fit", {"points": Q[:3], "degree": 3, "control_points": 3, "closed": True}, "points")
         self.bad("fit", {"points": Q, "degree": 3, "control_points": 5, "closed": True, "start_derivative": [1, 0]},
                  "start_derivative")
+        # Equal consecutive points under chord: the shared parametrization's message
+        # (curves/parametrization.hpp), naming the later point; for a closed fit the
+        # closing step Q_last -> Q_0 too (one repeated closing point is dropped, a second
+        # stays and equals Q_0).
+        self.bad("fit", {"points": Q[:3] + [Q[2]] + Q[3:], "degree": 3, "control_points": 5}, "points[3]",
+                 contains="equals points[2]")
+        self.bad("fit", {"points": Q + [Q[0], Q[0]], "degree": 3, "control_points": 5, "closed": True},
+                 "points[0]", contains="equals points[6]")
         # Coordinates near the largest double: the rotations overflow; reported, never output
         # as inf or NaN.
         B = np.array(blob(40, seed=81))

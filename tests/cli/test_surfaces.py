@@ -485,6 +485,37 @@ class ConstructionTest(CliTest):
         self.assertAlmostEqual(r["max_error"], err, delta=1e-12)
 
 
+    def test_interpolate_at_huge_coordinates(self):
+        # Grid parameters at 1e200 (squared distances overflow): the shared chord and
+        # centripetal steps (curves/parametrization.hpp) measure without overflow. Oracle:
+        # Python's math.dist (overflow-safe) for the parameters, and the surface must pass
+        # through the grid there. Scaling by 2^664 (even: the centripetal square root
+        # scales by 2^332) changes nothing but the scale, exactly.
+        rng = random.Random(11)
+        rows, cols = 5, 4
+        Q = [[[i + rng.uniform(-0.2, 0.2), j + rng.uniform(-0.2, 0.2), math.sin(i) * math.cos(j)] for j in range(cols)]
+             for i in range(rows)]
+        for rule, step in (("chord", lambda d: d), ("centripetal", math.sqrt)):
+            def params(G):
+                t = [0.0] * len(G)
+                for j in range(len(G[0])):
+                    d = [step(math.dist(G[i][j], G[i - 1][j])) for i in range(1, len(G))]
+                    for i in range(1, len(G)):
+                        t[i] += sum(d[:i]) / sum(d)
+                return [x / len(G[0]) for x in t]
+            big = [[[1e200 * x for x in p] for p in row] for row in Q]
+            s = self.ok("surface", {"construct": "interpolate", "points": big, "parametrization": rule})["surface"]
+            tu, tv = params(big), params([list(c) for c in zip(*big)])
+            for i in range(rows):
+                for j in range(cols):
+                    got = evaluate(s, tu[i], tv[j])
+                    self.assertLess(max(abs(a - b) for a, b in zip(got, big[i][j])), 1e-12 * 1e200, (rule, i, j))
+            unit = self.ok("surface", {"construct": "interpolate", "points": Q, "parametrization": rule})["surface"]
+            two = [[[math.ldexp(x, 664) for x in p] for p in row] for row in Q]
+            s2 = self.ok("surface", {"construct": "interpolate", "points": two, "parametrization": rule})["surface"]
+            self.assertEqual(s2["knots"], unit["knots"])
+            self.assertEqual(s2["points"], [[[math.ldexp(x, 664) for x in p] for p in row] for row in unit["points"]])
+
 class SurfaceOpsTest(CliTest):
     def check_same(self, a, b, uvs, tol=TIGHT):
         for u, v in uvs:

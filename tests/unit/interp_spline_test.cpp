@@ -244,6 +244,26 @@ TEST(Hermite, ConstructionErrors) {
   EXPECT_EQ(centripetal, (std::vector<double>{0, std::sqrt(5.0), std::sqrt(5.0) + 2}));
 }
 
+// The shared parametrization's closed and normalised forms (fit and the surface grids use
+// them): the 3-4-5 triangle's chord steps 3, 4, 5 over a perimeter of 12; a repeated
+// closing point is named; parameter_sums keeps a zero step and sums without overflow at
+// 1e200. The origin-0 frame's scaling at float: 2^200 is no float, 1e-30f 2^200 is.
+TEST(Parametrization, ClosedNormalisedUncheckedAndTheOriginZeroFrame) {
+  const std::vector<Point<double, 2>> tri = {{0, 0}, {3, 0}, {3, 4}};
+  EXPECT_EQ((parameters_from_points(tri, Parametrization::chord, true)), (std::vector<double>{0, 3, 7, 12}));
+  EXPECT_EQ((unit_parameters(tri, Parametrization::chord, true)), (std::vector<double>{0, 0.25, 7.0 / 12, 1}));
+  EXPECT_EQ((unit_parameters(tri, Parametrization::uniform, false)), (std::vector<double>{0, 0.5, 1}));
+  EXPECT_INVALID_ARGUMENT((parameters_from_points<double, 2>({{0, 0}, {1, 0}, {0, 0}}, Parametrization::chord, true)), "points[0]",
+                          "equals points[2]");
+  EXPECT_EQ((parameter_sums<double, 1>(ys({0, 1, 1, 3}), Parametrization::chord)), (std::vector<double>{0, 1, 1, 3}));
+  const std::vector<double> big = parameter_sums<double, 2>({{0, 0}, {3e200, 4e200}}, Parametrization::chord);
+  EXPECT_NEAR(big[1] / 5e200, 1.0, 1e-15);
+  EXPECT_EQ(detail::times_pow2(1e-30f, 200), std::ldexp(1e-30f, 200));
+  EXPECT_EQ(detail::times_pow2(3.0, -1074), std::ldexp(3.0, -1074));
+  EXPECT_EQ(detail::abs_exponent(0.75), 0);
+  EXPECT_EQ(detail::abs_exponent(0.0), 0);
+}
+
 // Curve JSON holds one tangent per point: the writer gives the ones the pieces use (the
 // incoming tangent at the last point), and a curve with a corner becomes a path of
 // two-point hermite segments; either way the curve read back is the same curve.

@@ -20,35 +20,6 @@
 
 namespace casteljau {
 
-/// Parameters 0 = t_0 < ... < t_last = 1 for the points Q (for a closed fit one more, for
-/// the closing edge Q_last -> Q_0) by the rule `kind` (curves/parametrization.hpp;
-/// [PT97, eq. 9.4-9.6; Lee89]), divided by the total so that they run from 0 to 1. Errors: "points[k]" when a point equals the one before
-/// under chord or centripetal (a zero step), "points" when all steps are zero.
-template <class T, int D>
-std::vector<T> fit_parameters(const std::vector<Point<T, D>>& Q, Parametrization kind, bool closed) {
-  const std::size_t m = Q.size();
-  const std::size_t steps = closed ? m : m - 1;
-  std::vector<T> t(steps + 1, T(0));
-  for (std::size_t k = 1; k <= steps; ++k) {
-    const T len = distance(Q[k % m], Q[k - 1]);
-    T step = 1;
-    if (kind != Parametrization::uniform) {
-      if (!(len > 0)) {
-        throw InvalidArgument("points[" + std::to_string(k % m) + "]",
-                              std::string("equals the point before it; the ") + (kind == Parametrization::chord ? "chord" : "centripetal") +
-                                  " parametrization needs distinct consecutive points");
-      }
-      step = kind == Parametrization::chord ? len : std::sqrt(len);
-    }
-    t[k] = t[k - 1] + step;
-  }
-  const T total = t.back();
-  if (!(total > 0) || !std::isfinite(total)) throw InvalidArgument("points", "the points give no usable parametrization");
-  for (auto& x : t) x /= total;
-  t.back() = 1;
-  return t;
-}
-
 /// A fitted curve and its error: the largest |C(t_k) - Q_k| over the data; the control
 /// point count of the fit (for a closed fit the n of the periodic spline, before its
 /// writing on [0, 1] repeats p of them), and for a tolerance search whether every smaller
@@ -592,7 +563,7 @@ FitResult<T, D> fit(std::vector<Point<T, D>> Q, const FitRequest<T, D>& req) {
     }
     least = static_cast<std::size_t>(p) + 1;
     most = Q.size();
-    t = fit_parameters(Q, req.parametrization, true);
+    t = unit_parameters(Q, req.parametrization, true);
     t_data.assign(t.begin(), t.end() - 1);
   } else {
     most = Q.size() + extra;
@@ -601,7 +572,7 @@ FitResult<T, D> fit(std::vector<Point<T, D>> Q, const FitRequest<T, D>& req) {
       throw InvalidArgument("points", "degree " + std::to_string(p) + " needs at least " + std::to_string(p + 1) +
                                           " conditions (points and end derivatives), got " + std::to_string(most));
     }
-    t = fit_parameters(Q, req.parametrization, false);
+    t = unit_parameters(Q, req.parametrization, false);
     t_data = t;
   }
   const T work = detail::fit_work(Q.size() + extra, p);

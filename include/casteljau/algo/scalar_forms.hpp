@@ -12,6 +12,7 @@
 
 #include "casteljau/basis/bernstein_poly.hpp"
 #include "casteljau/basis/extrapolate.hpp"
+#include "casteljau/core/unit_frame.hpp"
 #include "casteljau/curves/piecewise.hpp"
 
 namespace casteljau::detail {
@@ -20,9 +21,9 @@ namespace casteljau::detail {
 /// origin is x[k] / w, times 2^e. For a polynomial piece w is the constant 1 (degree 0)
 /// and `rational` is false; for a rational piece x[k][i] = w_i (P_ik - origin_k) 2^-e
 /// with the weights divided by the largest (which leaves the curve unchanged). The
-/// differences P_ik - origin_k are taken on halved values (no overflow) and the result
-/// renormalised so that the largest |x| lies in [0.5, 1): products of these forms then
-/// neither overflow nor underflow for coordinates of any size.
+/// coordinates are those of the unit frame about the origin (core/unit_frame.hpp: no
+/// overflow in the differences, the largest |x| in [0.5, 1)): products of these forms
+/// then neither overflow nor underflow for coordinates of any size.
 template <class T, int D>
 struct ScalarForms {
   std::vector<std::vector<T>> x;  // D forms of degree n
@@ -38,22 +39,10 @@ ScalarForms<T, D> scalar_forms(const Piece& c, const Point<T, D>& origin) {
   const auto& P = c.points();
   f.degree = static_cast<int>(P.size()) - 1;
   f.x.assign(D, std::vector<T>(P.size()));
-  T m = 0;
-  for (const auto& p : P)
-    for (int k = 0; k < D; ++k) m = std::max({m, std::abs(p[k]), std::abs(origin[k])});
-  int e0 = 0;
-  if (m > 0) (void)std::frexp(m, &e0);
-  T big = 0;
+  const T h = half_extent<T, D>(std::span<const Point<T, D>>(P), origin);  // the unit frame about origin
+  f.e = h > 0 ? unit_exponent(h) : 0;
   for (std::size_t i = 0; i < P.size(); ++i)
-    for (int k = 0; k < D; ++k) {
-      f.x[k][i] = std::ldexp(P[i][k], -e0) - std::ldexp(origin[k], -e0);  // |x| <= 2
-      big = std::max(big, std::abs(f.x[k][i]));
-    }
-  int e1 = 0;
-  if (big > 0) (void)std::frexp(big, &e1);
-  for (auto& xk : f.x)
-    for (T& v : xk) v = std::ldexp(v, -e1);
-  f.e = e0 + e1;
+    for (int k = 0; k < D; ++k) f.x[k][i] = to_unit(P[i][k], origin[k], f.e);  // largest |x| in [0.5, 1)
   if constexpr (std::is_same_v<Piece, RationalBezier<T, D>>) {
     f.rational = true;
     const T wmax = *std::max_element(c.weights().begin(), c.weights().end());

@@ -13,6 +13,7 @@
 #include <variant>
 #include <vector>
 
+#include "casteljau/core/unit_frame.hpp"
 #include "casteljau/curves/piecewise.hpp"
 
 namespace casteljau {
@@ -1129,21 +1130,16 @@ bool exact_piece(const S& s) {
 }
 template <class T, int D>
 void frame_max(const std::vector<Point<T, D>>& P, T& m) {
-  for (const auto& p : P)
-    for (int d = 0; d < D; ++d) m = std::max(m, std::abs(p[d]));
+  max_abs<T, D>(std::span<const Point<T, D>>(P), m);
 }
 template <class T>
 int frame_exponent(T max_abs) {
-  if (!(max_abs > 0)) return 0;
-  int e = 0;
-  (void)std::frexp(max_abs, &e);
-  return e;
+  return abs_exponent(max_abs);
 }
 template <class T, int D>
 std::vector<Point<T, D>> scale_points(const std::vector<Point<T, D>>& P, int k) {
   std::vector<Point<T, D>> Q(P.size());
-  for (std::size_t i = 0; i < P.size(); ++i)
-    for (int d = 0; d < D; ++d) Q[i][d] = std::ldexp(P[i][d], k);
+  for (std::size_t i = 0; i < P.size(); ++i) Q[i] = times_pow2(P[i], k);
   return Q;
 }
 template <class T, int D>
@@ -1158,13 +1154,13 @@ RationalBezier<T, D> scale_piece(const RationalBezier<T, D>& c, int k) {
 /// origin, so a larger tolerance admits nothing more) so that it stays finite.
 template <class T>
 T frame_tolerance(T tolerance, int e) {
-  return std::min(std::ldexp(tolerance, -e), std::ldexp(T(1), 512));
+  return std::min(times_pow2(tolerance, -e), pow2<T>(512));
 }
 /// The chain computed in the frame, back in the curve's coordinates.
 template <class T, int D>
 void unframe(QuadraticChain<T, D>& r, int e) {
   for (auto& s : r.segments) s = Bezier<T, D>(scale_points(s.points(), e));
-  r.max_error = std::ldexp(r.max_error, e);
+  r.max_error = times_pow2(r.max_error, e);
 }
 
 }  // namespace detail::quadratic

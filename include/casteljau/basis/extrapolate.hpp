@@ -12,6 +12,7 @@
 #include <string>
 
 #include "casteljau/basis/de_casteljau.hpp"
+#include "casteljau/core/unit_frame.hpp"
 
 namespace casteljau {
 
@@ -26,16 +27,13 @@ int scale_exponent(std::span<const P> c) {
   T m = 0;
   for (const auto& p : c)
     for (int d = 0; d < P::dimension; ++d) m = std::max(m, std::abs(p[d]));
-  if (!(m > 0)) return 0;
-  int e = 0;
-  (void)std::frexp(m, &e);
-  return e;
+  return abs_exponent(m);  // the origin-0 unit frame (core/unit_frame.hpp)
 }
 
 template <class P>
 P scaled(const P& p, int e) {
   P q;
-  for (int d = 0; d < P::dimension; ++d) q[d] = std::ldexp(p[d], e);
+  for (int d = 0; d < P::dimension; ++d) q[d] = times_pow2(p[d], e);
   return q;
 }
 

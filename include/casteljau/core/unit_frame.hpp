@@ -2,7 +2,9 @@
 // that brings the largest |P - origin| into [0.5, 1). Algorithms that compare distances
 // with a tolerance (flattening, intersection) work in it, so that huge and tiny
 // coordinates behave as unit ones and scaling the input by 2^k changes nothing but the
-// exponent.
+// exponent. Also the frame with origin 0 (max_abs, abs_exponent, times_pow2) for those
+// that scale but do not translate (to_quadratic, extrapolation). One copy of this step
+// for the library (issue 15).
 #pragma once
 
 #include <algorithm>
@@ -59,16 +61,25 @@ int unit_exponent(T h) {
   return frexp_exponent(h) + 1;  // h was halved
 }
 
+/// x 2^k, correctly rounded (as std::ldexp): for double by one multiplication while 2^k
+/// is a normal number (|k| <= 1022), else by ldexp (for float 2^k itself may overflow or
+/// underflow where x 2^k does not).
+template <class T>
+T times_pow2(T x, int k) {
+  if constexpr (std::is_same_v<T, double>) {
+    if (k >= -1022 && k <= 1022) return x * pow2<T>(k);
+  }
+  return std::ldexp(x, k);
+}
+
 /// The coordinate x in the frame (origin o, exponent e): (x - o) 2^-e, correctly rounded.
 /// When the difference of two finite coordinates overflows they are halved first (exact
-/// for normal numbers) and scaled by one power of two less. By one multiplication while
-/// 2^-e is a normal number (correctly rounded, so equal to std::ldexp), else by ldexp.
+/// for normal numbers) and scaled by one power of two less.
 template <class T>
 T to_unit(T x, T o, int e) {
   const T q = x - o;
   if (!std::isfinite(q)) return std::ldexp(x / 2 - o / 2, 1 - e);
-  if (e >= -1022 && e <= 1022) return q * pow2<T>(-e);
-  return std::ldexp(q, -e);
+  return times_pow2(q, -e);
 }
 
 /// The point p in the frame (to_unit per coordinate).
@@ -76,6 +87,31 @@ template <class T, int D>
 Point<T, D> to_unit(const Point<T, D>& p, const Point<T, D>& origin, int e) {
   Point<T, D> q;
   for (int d = 0; d < D; ++d) q[d] = to_unit(p[d], origin[d], e);
+  return q;
+}
+
+/// The frame with origin 0 (for algorithms whose answer is not invariant under
+/// translation but should be under scaling by 2^k): the largest |P[d]| over the points
+/// P and coordinates, folded into m (so that several point sets share one frame).
+template <class T, int D>
+void max_abs(std::span<const Point<T, D>> P, T& m) {
+  for (const auto& p : P)
+    for (int d = 0; d < D; ++d) m = std::max(m, std::abs(p[d]));
+}
+
+/// The exponent e of the origin-0 frame for m = max |P| (max_abs): m 2^-e lies in
+/// [0.5, 1). 0 when m is 0 (or not finite: the callers reject such points before).
+template <class T>
+int abs_exponent(T m) {
+  if (!(m > 0) || !std::isfinite(m)) return 0;
+  return frexp_exponent(m);
+}
+
+/// The point p 2^k (times_pow2 per coordinate).
+template <class T, int D>
+Point<T, D> times_pow2(const Point<T, D>& p, int k) {
+  Point<T, D> q;
+  for (int d = 0; d < D; ++d) q[d] = times_pow2(p[d], k);
   return q;
 }
 
