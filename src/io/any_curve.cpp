@@ -12,6 +12,7 @@
 #include "casteljau/algo/flatten.hpp"
 #include "casteljau/algo/reduce.hpp"
 #include "casteljau/basis/extrapolate.hpp"
+#include "work_limits.hpp"
 
 namespace casteljau::io {
 
@@ -110,10 +111,12 @@ PointList derivatives(const AnyCurve& c, std::span<const double> t, int k) {
 }
 
 AnyBox bounds(const AnyCurve& c) {
+  limits::check_curve_work(c, "curve");  // before the Bézier pieces (src/io/work_limits.hpp)
   return std::visit([](const auto& x) { return AnyBox(casteljau::bounds(x)); }, c);
 }
 
 PointList flatten(const AnyCurve& c, double tolerance, FlattenMethod method) {
+  limits::check_curve_work(c, "curve", "flattening");  // before the pieces, which the vertex estimate needs
   return std::visit(
       [&](const auto& x) {
         // The pieces once: for the size estimate and for the flattening itself.
@@ -144,6 +147,7 @@ AnyPieces pieces(const AnyCurve& c) {
 }
 
 AnyCurve to_bezier(const AnyCurve& c) {
+  limits::check_curve_work(c, "curve", "the conversion");
   return std::visit([](const auto& x) { return AnyCurve(to_bezier_path(x)); }, c);
 }
 

@@ -109,6 +109,7 @@ double length(const AnyCurve& c, std::optional<double> from, std::optional<doubl
 }
 
 AnyBox bounds(const AnyCurve& c, std::optional<double> from, std::optional<double> to) {
+  check_curve_work(c, "curve");
   return std::visit(
       [&]<class P>(const P& p) {
         const auto dom = p.domain();
@@ -137,6 +138,7 @@ std::vector<double> param_at_length(const AnyCurve& c, std::span<const double> l
 }
 
 std::vector<double> curvature(const AnyCurve& c, std::span<const double> t) {
+  check_curve_work(c, "curve");
   return std::visit(
       [&](const auto& p) {
         std::vector<double> out;
@@ -164,6 +166,7 @@ namespace {
 // `stopped` (frenet_frames only): where the velocity vanishes, a flag 1 and a frame with a
 // zero tangent in its place, not an error.
 AnyFrames frames_of(const AnyCurve& c, std::span<const double> t, bool require_normal, std::vector<char>* stopped = nullptr) {
+  check_curve_work(c, "curve");
   return std::visit(
       [&]<class P>(const P& p) -> AnyFrames {
         constexpr int D = P::dimension;
@@ -216,6 +219,8 @@ AnyFrames frenet_frames(const AnyCurve& c, std::span<const double> t, std::vecto
 }
 
 double area(const AnyCurve& c) {
+  // Closedness is judged on the pieces (1e-9 of their extent), so it follows the check.
+  check_curve_work(c, "curve");
   return std::visit(
       [&]<class P>(const P& p) -> double {
         if constexpr (P::dimension == 2) {

@@ -14,6 +14,7 @@
 
 #include "casteljau/algo/bounds.hpp"
 #include "casteljau/algo/flatten.hpp"
+#include "work_limits.hpp"
 
 namespace casteljau::io {
 
@@ -583,6 +584,7 @@ struct Drawable {
 };
 
 Drawable drawable(const AnyCurve& any, std::string_view where) {
+  limits::check_curve_work(any, std::string(where), "drawing");  // before the Bézier pieces
   return std::visit(
       [&](const auto& c) -> Drawable {
         using C = std::decay_t<decltype(c)>;

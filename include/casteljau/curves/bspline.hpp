@@ -292,9 +292,9 @@ class BSpline {
 };
 
 /// The exact Bézier pieces of a B-spline: one degree-p piece per non-empty knot span of
-/// the domain, breaks at the distinct knots U_p .. U_n (blossoming; cost O(p^3) a span).
-/// At a break of multiplicity p + 1 consecutive pieces need not meet (a path with a gap);
-/// a degree-0 piece is a one-point Bézier curve.
+/// the domain, breaks at the distinct knots U_p .. U_n (detail::span_bezier_points: two
+/// de Boor triangles, cost O(p^2) a span). At a break of multiplicity p + 1 consecutive
+/// pieces need not meet (a path with a gap); a degree-0 piece is a one-point Bézier curve.
 template <class T, int D>
 Pieces<T, D> pieces(const BSpline<T, D>& c) {
   const std::span<const T> U(c.knots());
