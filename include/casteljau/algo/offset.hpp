@@ -1344,8 +1344,10 @@ Source<T> stretch_source(const Piece& c, const Stretch<T>& s, T d) {
 /// curve than a distance.
 template <class T>
 struct Nearness {
+  static constexpr std::size_t max_points = 16;  // polynomial pieces up to degree 15 by subdivision
   std::vector<BezierPiece<T, 2>> pieces;
   std::vector<std::array<Point<T, 2>, 2>> boxes;
+  T leaf = 0;  ///< the box diagonal at which subdivision stops (a fraction of the tolerance)
 
   void add(const BezierPiece<T, 2>& piece) {
     std::array<Point<T, 2>, 2> box{};
@@ -1360,15 +1362,58 @@ struct Nearness {
     pieces.push_back(piece);
     boxes.push_back(box);
   }
-  /// True when some point of the curve lies nearer to p than r: the pieces whose box is
-  /// nearer than r projected on (project(), the global nearest point of the piece).
+  /// Whether the polynomial piece with control points P[0..m) comes nearer to p than r.
+  /// Its control points lie within e of its chord S (the segment between its ends), so the
+  /// piece does (its hull is inside that band, and it runs from end to end of S): its
+  /// distance from p is within e of S's. Decided when that settles it, else the piece is
+  /// halved (de Casteljau), nearer half first, until e is below `leaf` (then S's distance
+  /// decides: a point up to `leaf` farther than r may count as near).
+  bool near_polynomial(const Point<T, 2>* P, std::size_t m, const Point<T, 2>& p, T r, int depth) const {
+    const Point<T, 2>& a = P[0];
+    const Vector<T, 2> ab = P[m - 1] - a;
+    const T l2 = ab[0] * ab[0] + ab[1] * ab[1];
+    const auto to_chord = [&](const Point<T, 2>& q) {
+      const Vector<T, 2> aq = q - a;
+      const T s = l2 > 0 ? std::clamp((aq[0] * ab[0] + aq[1] * ab[1]) / l2, T(0), T(1)) : T(0);
+      const Vector<T, 2> e = aq - ab * s;
+      return std::sqrt(e[0] * e[0] + e[1] * e[1]);
+    };
+    T e = 0;
+    for (std::size_t j = 1; j + 1 < m; ++j) e = std::max(e, to_chord(P[j]));
+    const T ds = to_chord(p);
+    if (ds - e >= r) return false;
+    if (ds + e < r) return true;
+    if (e <= leaf || depth >= 60) return ds < r;
+    std::array<Point<T, 2>, max_points> L, R, W;
+    for (std::size_t j = 0; j < m; ++j) W[j] = P[j];
+    for (std::size_t level = 0; level < m; ++level) {
+      L[level] = W[0];
+      R[m - 1 - level] = W[m - 1 - level];
+      for (std::size_t j = 0; j + 1 < m - level; ++j) W[j] = W[j] + (W[j + 1] - W[j]) * T(0.5);
+    }
+    const T dl = length(L[m / 2] - p), dr = length(R[m / 2] - p);  // the nearer half first
+    if (dl <= dr) return near_polynomial(L.data(), m, p, r, depth + 1) || near_polynomial(R.data(), m, p, r, depth + 1);
+    return near_polynomial(R.data(), m, p, r, depth + 1) || near_polynomial(L.data(), m, p, r, depth + 1);
+  }
+  /// True when some point of the curve lies nearer to p than r (or up to `leaf` farther;
+  /// see near_polynomial): the pieces whose box is nearer than r, polynomial ones by
+  /// subdivision, rational ones (and degree above 15) projected on (project()).
   bool within(const Point<T, 2>& p, T r) const {
+    if (!(r > 0)) return false;
     for (std::size_t i = 0; i < pieces.size(); ++i) {
       const T dx = std::max({boxes[i][0][0] - p[0], T(0), p[0] - boxes[i][1][0]});
       const T dy = std::max({boxes[i][0][1] - p[1], T(0), p[1] - boxes[i][1][1]});
       if (dx * dx + dy * dy >= r * r) continue;
-      const T dist = std::visit([&](const auto& c) { return project(c, p).distance; }, pieces[i]);
-      if (dist < r) return true;
+      const bool near_piece = std::visit(
+          [&](const auto& c) {
+            using C = std::decay_t<decltype(c)>;
+            if constexpr (std::is_same_v<C, Bezier<T, 2>>) {
+              if (c.points().size() <= max_points) return near_polynomial(c.points().data(), c.points().size(), p, r, 0);
+            }
+            return project(c, p).distance < r;
+          },
+          pieces[i]);
+      if (near_piece) return true;
     }
     return false;
   }
@@ -1549,7 +1594,7 @@ std::vector<Interval<T>> trimmed_intervals(const Pieces<T, 2>& path, const Raw<T
     for (std::size_t j = 1; j < samples.size(); ++j) {
       if (samples[j].second == samples[j - 1].second) continue;
       T lo = samples[j - 1].first, hi = samples[j].first;
-      for (int it = 0; it < 48 && hi - lo > T(1e-13); ++it) {
+      for (int it = 0; it < 48 && hi - lo > T(1e-13) && length(path(hi) - path(lo)) > tol / 16; ++it) {
         const T m = (lo + hi) / 2;
         (valid(m) == samples[j - 1].second ? lo : hi) = m;
       }
@@ -1711,6 +1756,7 @@ OffsetCurve<T> offset(const Pieces<T, 2>& curve, const OffsetOptions<T>& o) {
                curve.segments().front());
   }
   Nearness<T> near;  // the curve, for the trim's distance tests
+  near.leaf = tol / 64;
   std::optional<Point<T, 2>> piece_end;  // the end of the last piece, a single point too
   for (const auto& seg : curve.segments()) {
     const BezierPiece<T, 2> piece = std::visit(to_frame, seg);
