@@ -1603,6 +1603,20 @@ std::vector<Interval<T>> trimmed_intervals(const Pieces<T, 2>& path, const Raw<T
       at = std::max(at, c);
     }
     if (b > at) runs.push_back({{at, b}, samples.empty() || samples.back().second});
+    // A run cut away only where it goes deeper than 2 tol (some sample nearer than |d| -
+    // 2 tol to the curve): shallower, it is the raw offset's own error (a measured error
+    // of the fit a little over the tolerance), not a part nearer to the curve.
+    for (auto& [iv, ok] : runs) {
+      if (ok) continue;
+      bool deep = false;
+      for (const auto& q : samples) {
+        if (q.first >= iv.lo && q.first <= iv.hi && !q.second && near.within(judged(q.first), r - 2 * tol)) {
+          deep = true;
+          break;
+        }
+      }
+      if (!deep) ok = true;
+    }
     // A kept run between a crossing and a change is the spur of a part cut away there when
     // it is short, all within 8 tol of the crossing (the raw offset is up to tol off the
     // exact one, so the distance passes |d| - tol a little past the crossing, farther
