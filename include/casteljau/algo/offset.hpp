@@ -1485,6 +1485,22 @@ void raw_crossings(const Raw<T>& raw, std::vector<T>& out) {
       if (box[j][2] > box[i][3] + slack || box[i][2] > box[j][3] + slack) continue;
       const Quad<T>& P = raw.cubics[i];
       const Quad<T>& Q = raw.cubics[j];
+      // Neighbours that lie on either side of a line through their shared end (every other
+      // control point strictly) meet only there: the common case of a smooth stretch.
+      if (j == i + 1 || i == j + 1) {
+        const Quad<T>& A = j == i + 1 ? P : Q;  // the first of the two
+        const Quad<T>& B = j == i + 1 ? Q : P;
+        const auto apart = [&](const Vector<T, 2>& v) {
+          for (int k = 0; k < 3; ++k) {
+            if (!(dot(A[static_cast<std::size_t>(k)] - A[3], v) < 0)) return false;
+          }
+          for (int k = 1; k < 4; ++k) {
+            if (!(dot(B[static_cast<std::size_t>(k)] - B[0], v) > 0)) return false;
+          }
+          return true;
+        };
+        if (apart(B[3] - A[0]) || apart(B[1] - B[0]) || apart(A[3] - A[2])) continue;
+      }
       const Intersections<T> x = intersect(Bezier<T, 2>({P[0], P[1], P[2], P[3]}), Bezier<T, 2>({Q[0], Q[1], Q[2], Q[3]}));
       for (const auto& p : x.points) {
         // Not the shared end of neighbours (found there as a touch or a crossing).
@@ -1502,8 +1518,8 @@ void raw_crossings(const Raw<T>& raw, std::vector<T>& out) {
 /// The trim (see offset()): the raw path (cubic i on [i, i + 1]) cut at its
 /// self-intersections, at the ends of its reversed runs and joins (the cusps of the offset,
 /// the corners) and, for an open curve, where it crosses the round caps of the curve's
-/// ends; each part between cuts judged on samples in its share of each raw cubic (8 to 64
-/// parts, at most |d| / 2 apart): kept
+/// ends; each part between cuts judged on samples in its share of each raw cubic (8 to 32
+/// parts, at most |d| apart): kept
 /// where they are at least |d| - tol from the curve (for an outer join, the point moved
 /// radially onto the arc of radius |d| about the corner, so that a miter or bevel is
 /// judged as the round join it replaces); where the samples disagree (the offset of the
@@ -1574,13 +1590,13 @@ std::vector<Interval<T>> trimmed_intervals(const Pieces<T, 2>& path, const Raw<T
     for (std::size_t i = std::min(static_cast<std::size_t>(a), n - 1); i < n && static_cast<T>(i) < b; ++i) {
       const T lo = std::max(a, static_cast<T>(i)), hi = std::min(b, static_cast<T>(i + 1));
       if (!(hi > lo)) continue;
-      // At most |d| / 2 apart along the cubic (its control polygon's length): the stretch
-      // of an offset within |d| of a part of the curve that crosses it is at least 2 |d|
-      // long. 8 to 64 parts.
+      // At most |d| apart along the cubic (its control polygon's length): the stretch of an
+      // offset within |d| of a part of the curve that crosses it is at least 2 |d| long.
+      // 8 to 32 parts.
       const Quad<T>& Q = raw.cubics[i];
       const T poly = length(Q[1] - Q[0]) + length(Q[2] - Q[1]) + length(Q[3] - Q[2]);
-      const T want = std::ceil(poly * (hi - lo) / (r / 2));
-      const int m = want > 64 ? 64 : (want < 8 ? 8 : static_cast<int>(want));
+      const T want = std::ceil(poly * (hi - lo) / r);
+      const int m = want > 32 ? 32 : (want < 8 ? 8 : static_cast<int>(want));
       for (int j = lo > a ? 0 : 1; j < m; ++j) {
         const T t = lo + (hi - lo) * T(j) / T(m);
         samples.emplace_back(t, valid(t));
