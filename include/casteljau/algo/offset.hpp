@@ -1,6 +1,6 @@
 // Offset curves of plane curves: C(t) + d N(t) approximated by cubic Béziers within a
-// measured tolerance, with joins at the corners of the input and the loops of the raw
-// offset trimmed at its self-intersections.
+// measured tolerance, with joins at the corners of the input, and trimmed to the points at
+// least |d| from the curve.
 #pragma once
 
 #include <algorithm>
@@ -48,9 +48,10 @@ struct OffsetOptions {
   std::size_t max_segments = 20000;  ///< the work limit: more cubics than this are refused
 };
 
-/// The result of offset(): the cubics in order (a path, continuous except where noted in
-/// offset()), the largest measured distance of a cubic of the raw offset from its exact
-/// source (offset stretch or join), and the number of loops cut by the trim.
+/// The result of offset(): the cubics in order (a path, continuous except between the
+/// parts the trim leaves, see offset()), the largest measured distance of a cubic of the
+/// raw offset from its exact source (offset stretch or join), and the number of runs of
+/// the raw offset the trim cut away.
 template <class T>
 struct OffsetCurve {
   std::vector<Bezier<T, 2>> segments;
@@ -1723,14 +1724,16 @@ double offset_segments_estimate(const Pieces<T, 2>& curve, T distance, T toleran
 /// line; a reversal (a turn of pi) is always closed by a round arc or a bevel. The inner
 /// side gets a straight line from one offset end to the other, traversed backwards.
 ///
-/// Trim. The raw offset's reversed regions are its stretches that run against the curve
-/// (between two cusps of the offset, where |d| exceeds the radius of curvature on the
-/// concave side) and the lines at inner corners. Each region is cut away with the smallest
-/// loop of the raw offset that holds it: the part between the two parameters of one of
-/// its self-intersections (algo/intersect.hpp), or for a closed curve the part round the
-/// closing point outside them. A region that no loop holds (a cusp near an open end whose
-/// swallowtail is cut short by the end) is kept; loops without a reversed region (the
-/// offset of a far part of the curve crossing another's) are kept.
+/// Trim. Kept: the points of the raw offset at least |d| - tolerance from the curve (the
+/// offset as stroking and tool paths need it: swallowtails, the lines at inner corners,
+/// the offsets of parts of the curve nearer than 2 |d| to each other, a circle offset past
+/// its centre all go). The raw offset is cut at the crossings of its cubics
+/// (detail::offset::raw_crossings), its cusps and join ends, and for an open curve where
+/// it crosses the circles of radius |d| about the curve's ends; each part between cuts is
+/// judged by the distance of samples to the curve, a change between samples found by
+/// bisection (detail::offset::trimmed_intervals). What is kept stays in order; parts that
+/// do not meet follow each other with a gap (a closed curve's part through the closing
+/// point is one part).
 ///
 /// Untrimmed (trim = false), parts that the tolerance covers are left out: a stretch
 /// between two cusps of the offset whose points are all within tolerance / 4 of its start
@@ -1738,7 +1741,8 @@ double offset_segments_estimate(const Pieces<T, 2>& curve, T distance, T toleran
 /// chord (its start moves by that to the last end), and for an open curve of one piece a
 /// first or last stretch cut off by a cusp, within 0.9 tolerance of the cusp.
 ///
-/// Result: the cubics in order, each starting where the previous ends. d = 0 gives the
+/// Result: the cubics in order, each starting where the previous ends except between the
+/// parts the trim leaves (a gap: a new part). d = 0 gives the
 /// curve itself as cubics (exact for polynomial pieces of degree <= 3). Pieces that are
 /// single points are skipped. Errors: InvalidArgument "distance", "tolerance" (not > 0 and
 /// finite; below 1e-11 of the curve's size plus |d|; more than max_segments cubics),
