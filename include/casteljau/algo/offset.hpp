@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <limits>
 #include <memory>
@@ -1396,25 +1397,79 @@ struct Nearness {
     if (dl <= dr) return near_polynomial(L.data(), m, p, r, depth + 1) || near_polynomial(R.data(), m, p, r, depth + 1);
     return near_polynomial(R.data(), m, p, r, depth + 1) || near_polynomial(L.data(), m, p, r, depth + 1);
   }
+  /// A grid over the pieces' boxes for the queries of radius at most `reach` (cells of at
+  /// least that size, at most about 4 per piece): a query looks at the pieces listed in
+  /// the 2 x 2 or more cells its disc's box meets, not at all the pieces.
+  T cell = 0, reach = 0;
+  Point<T, 2> grid_lo{};
+  std::size_t nx = 0, ny = 0;
+  std::vector<std::vector<std::uint32_t>> cells;
+  mutable std::vector<std::size_t> seen;  // the query stamp that last looked at a piece
+  mutable std::size_t stamp = 0;
+
+  void build_grid(T r) {
+    reach = r;
+    Point<T, 2> lo = boxes.front()[0], hi = boxes.front()[1];
+    for (const auto& b : boxes) {
+      for (int k = 0; k < 2; ++k) lo[k] = std::min(lo[k], b[0][k]), hi[k] = std::max(hi[k], b[1][k]);
+    }
+    const T w = hi[0] - lo[0], h = hi[1] - lo[1];
+    const T budget = T(4 * boxes.size() + 16);
+    cell = std::max({r, std::sqrt(w * h / budget), std::max(w, h) / budget, std::numeric_limits<T>::min()});
+    nx = static_cast<std::size_t>(w / cell) + 1, ny = static_cast<std::size_t>(h / cell) + 1;
+    grid_lo = lo;
+    cells.assign(nx * ny, {});
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+      const auto [x0, y0] = at(boxes[i][0]);
+      const auto [x1, y1] = at(boxes[i][1]);
+      for (std::size_t y = y0; y <= y1; ++y)
+        for (std::size_t x = x0; x <= x1; ++x) cells[y * nx + x].push_back(static_cast<std::uint32_t>(i));
+    }
+    seen.assign(boxes.size(), 0);
+  }
+  std::pair<std::size_t, std::size_t> at(const Point<T, 2>& q) const {
+    const auto idx = [&](T v, std::size_t n) {
+      if (!(v > 0)) return std::size_t(0);
+      return std::min(static_cast<std::size_t>(v / cell), n - 1);
+    };
+    return {idx(q[0] - grid_lo[0], nx), idx(q[1] - grid_lo[1], ny)};
+  }
+  bool near_piece(std::size_t i, const Point<T, 2>& p, T r) const {
+    const T dx = std::max({boxes[i][0][0] - p[0], T(0), p[0] - boxes[i][1][0]});
+    const T dy = std::max({boxes[i][0][1] - p[1], T(0), p[1] - boxes[i][1][1]});
+    if (dx * dx + dy * dy >= r * r) return false;
+    return std::visit(
+        [&](const auto& c) {
+          using C = std::decay_t<decltype(c)>;
+          if constexpr (std::is_same_v<C, Bezier<T, 2>>) {
+            if (c.points().size() <= max_points) return near_polynomial(c.points().data(), c.points().size(), p, r, 0);
+          }
+          return project(c, p).distance < r;
+        },
+        pieces[i]);
+  }
   /// True when some point of the curve lies nearer to p than r (or up to `leaf` farther;
   /// see near_polynomial): the pieces whose box is nearer than r, polynomial ones by
   /// subdivision, rational ones (and degree above 15) projected on (project()).
   bool within(const Point<T, 2>& p, T r) const {
     if (!(r > 0)) return false;
+    if (!cells.empty() && r <= reach) {
+      ++stamp;
+      const auto [x0, y0] = at(Point<T, 2>{p[0] - r, p[1] - r});
+      const auto [x1, y1] = at(Point<T, 2>{p[0] + r, p[1] + r});
+      for (std::size_t y = y0; y <= y1; ++y) {
+        for (std::size_t x = x0; x <= x1; ++x) {
+          for (const std::uint32_t i : cells[y * nx + x]) {
+            if (seen[i] == stamp) continue;
+            seen[i] = stamp;
+            if (near_piece(i, p, r)) return true;
+          }
+        }
+      }
+      return false;
+    }
     for (std::size_t i = 0; i < pieces.size(); ++i) {
-      const T dx = std::max({boxes[i][0][0] - p[0], T(0), p[0] - boxes[i][1][0]});
-      const T dy = std::max({boxes[i][0][1] - p[1], T(0), p[1] - boxes[i][1][1]});
-      if (dx * dx + dy * dy >= r * r) continue;
-      const bool near_piece = std::visit(
-          [&](const auto& c) {
-            using C = std::decay_t<decltype(c)>;
-            if constexpr (std::is_same_v<C, Bezier<T, 2>>) {
-              if (c.points().size() <= max_points) return near_polynomial(c.points().data(), c.points().size(), p, r, 0);
-            }
-            return project(c, p).distance < r;
-          },
-          pieces[i]);
-      if (near_piece) return true;
+      if (near_piece(i, p, r)) return true;
     }
     return false;
   }
@@ -1579,6 +1634,12 @@ std::vector<Interval<T>> trimmed_intervals(const Pieces<T, 2>& path, const Raw<T
   };
   bool last_ok = true;
   std::vector<std::pair<T, bool>> samples;
+  struct Run {
+    Interval<T> iv;
+    bool ok;
+    bool deep;
+  };
+  std::vector<Run> all;
   for (std::size_t k = 0; k + 1 < cut.size(); ++k) {
     const T a = std::max(cut[k], T(0)), b = std::min(cut[k + 1], static_cast<T>(n));
     if (!(b - a > T(1e-12))) continue;
@@ -1620,20 +1681,6 @@ std::vector<Interval<T>> trimmed_intervals(const Pieces<T, 2>& path, const Raw<T
       at = std::max(at, c);
     }
     if (b > at) runs.push_back({{at, b}, samples.empty() || samples.back().second});
-    // A run cut away only where it goes deeper than 2 tol (some sample nearer than |d| -
-    // 2 tol to the curve): shallower, it is the raw offset's own error (a measured error
-    // of the fit a little over the tolerance), not a part nearer to the curve.
-    for (auto& [iv, ok] : runs) {
-      if (ok) continue;
-      bool deep = false;
-      for (const auto& q : samples) {
-        if (q.first >= iv.lo && q.first <= iv.hi && !q.second && near.within(judged(q.first), r - 2 * tol)) {
-          deep = true;
-          break;
-        }
-      }
-      if (!deep) ok = true;
-    }
     // A kept run between a crossing and a change is the spur of a part cut away there when
     // it is short, all within 8 tol of the crossing (the raw offset is up to tol off the
     // exact one, so the distance passes |d| - tol a little past the crossing, farther
@@ -1650,8 +1697,38 @@ std::vector<Interval<T>> trimmed_intervals(const Pieces<T, 2>& path, const Raw<T
       if (runs.front().second && !is_structural(a) && spur(runs.front().first, a)) runs.front().second = false;
       if (runs.back().second && !is_structural(b) && spur(runs.back().first, b)) runs.back().second = false;
     }
-    for (const auto& [iv, ok] : runs) keep(iv.lo, iv.hi, ok, last_ok);
+    for (const auto& [iv, ok] : runs) {
+      bool deep = false;  // some sample of a run cut away nearer than |d| - 2 tol
+      for (const auto& q : samples) {
+        if (!ok && !q.second && q.first >= iv.lo && q.first <= iv.hi && near.within(judged(q.first), r - 2 * tol)) {
+          deep = true;
+          break;
+        }
+      }
+      all.push_back({iv, ok, deep});
+    }
   }
+  // A stretch of consecutive runs to cut away is cut only where it goes deeper than 2 tol
+  // somewhere: shallower, it is the raw offset's own error (a measured error of the fit a
+  // little over the tolerance, the line at a corner that turns by very little), kept whole
+  // (judged as one, so that the parts on either side still meet).
+  for (std::size_t k = 0; k < all.size();) {
+    if (all[k].ok) {
+      ++k;
+      continue;
+    }
+    std::size_t e = k;
+    bool deep = all[k].deep;
+    while (e + 1 < all.size() && !all[e + 1].ok && all[e + 1].iv.lo == all[e].iv.hi) {
+      ++e;
+      deep = deep || all[e].deep;
+    }
+    if (!deep) {
+      for (std::size_t j = k; j <= e; ++j) all[j].ok = true;
+    }
+    k = e + 1;
+  }
+  for (const auto& x : all) keep(x.iv.lo, x.iv.hi, x.ok, last_ok);
   return kept;
 }
 
@@ -1918,6 +1995,7 @@ OffsetCurve<T> offset(const Pieces<T, 2>& curve, const OffsetOptions<T>& o) {
     const Pieces<T, 2> path(std::move(segs));
     std::optional<std::array<Point<T, 2>, 2>> open_ends;
     if (!closed) open_ends = std::array<Point<T, 2>, 2>{first_at, last_at};
+    if (near.pieces.size() > 8) near.build_grid(std::abs(d));
     const auto keep = trimmed_intervals(path, raw, near, d, tol, open_ends, out.loops_cut);
     // The kept parts in order, each a run of cubics; consecutive intervals whose ends meet
     // (the two parameters of one crossing) within the tolerance continue one part.
