@@ -259,10 +259,11 @@ constexpr Command ops_family[] = {
      "where the offset has cusps (1 - d kappa = 0, kappa > 0 turning left); each stretch gets the longest cubics\n"
      "the tolerance allows. Corners of the input get `join` on their outer side (round:\n"
      "an arc of radius |d|; miter, a bevel beyond miter_limit; bevel); the inner side a\n"
-     "line. With `trim`, each part of the raw offset that runs against the curve (between\n"
-     "two cusps, or an inner corner's line) is cut away with the smallest loop holding it,\n"
-     "at a self-intersection of the raw offset.",
-     "curve: a path of cubic bezier segments, each starting where the previous ends",
+     "line. With `trim`, only the points of the raw offset at least |d| from the curve are\n"
+     "kept (cut at its self-intersections, cusps and joins): swallowtails, inner corners and\n"
+     "the offsets of parts nearer than 2 |d| to each other go.",
+     "curve: a path of cubic bezier segments, each starting where the previous ends, except\n"
+     "where the trim leaves parts that do not meet (a gap starts a new part)",
      R"(  echo '{"curve": {"type": "bezier", "points": [[0,0],[2,0]]}, "distance": 1, "tolerance": 0.001}' | casteljau offset
   {"curve":{"type":"path","segments":[{"type":"bezier","points":[[0.0,1.0],[0.6666666666666666,1.0],[1.3333333333333335,1.0],[2.0,1.0]]}],"breaks":[0.0,1.0]}})",
      offset_fields, offset},

@@ -190,6 +190,42 @@ def polyline_distance(points, poly):
     return out
 
 
+def curve_distance(points, beziers, at_least=None, n=4001):
+    """The distance from each point to the connected curve made of the Bézier pieces
+    (control points), from below, and the distance to the nearest of its dense points
+    (from above). Below: the nearest of the curve's points at n equal parameters a piece
+    less half the longest chord between them (a point of a chord is that near one of its
+    ends) and the chord's sagitta bound max|B''| h^2 / 8 (h = 1 / (n - 1); |B''| at most
+    the largest control point of the second hodograph); where that is below `at_least`,
+    the exact distance to the polyline less the sagitta instead."""
+    polys, sag = [], 0.0
+    for P in beziers:
+        P = np.asarray(P, dtype=float)
+        polys.append(bezier_eval(P, np.linspace(0, 1, n)))
+        if len(P) > 2:
+            sag = max(sag, np.linalg.norm(hodograph(hodograph(P)), axis=1).max() / (n - 1) ** 2 / 8)
+    poly = np.vstack(polys)
+    points = np.asarray(points, dtype=float)
+    above, _ = cKDTree(poly).query(points)
+    below = above - np.sqrt((np.diff(poly, axis=0) ** 2).sum(1).max()) / 2 - sag
+    if at_least is not None:
+        loose = below < at_least
+        if loose.any():
+            below[loose] = polyline_distance(points[loose], poly) - sag
+    return below, above
+
+
+def parts_of(cubics):
+    """The output split where a cubic does not start at the previous one's end."""
+    parts = [[cubics[0]]]
+    for a, b in zip(cubics, cubics[1:]):
+        if np.array_equal(a[3], b[0]):
+            parts[-1].append(b)
+        else:
+            parts.append([b])
+    return parts
+
+
 def cubic_samples(cubics, m=64):
     t = np.linspace(0, 1, m)
     return np.vstack([bezier_eval(B, t) for B in cubics])
@@ -458,9 +494,11 @@ class OffsetTest(CliTest):
             pts = cubic_samples(cs, 100)
             self.assertLessEqual(np.abs(np.linalg.norm(pts, axis=1) - (1 - d)).max(), 1e-7)
             self.assertLess(np.linalg.norm(cs[-1][3] - cs[0][0]), 1e-14)
-        # Inward by more than the radius: the whole offset runs backwards and no loop holds
-        # it: it is kept (a circle of radius 0.5 traversed clockwise).
-        cs = cubics_of(self.offset(circle, 1.5, 1e-7))
+        # Inward by more than the radius (past the centre): the raw offset, the circle of
+        # radius 0.5 traversed clockwise, is 0.5 from the curve: nothing is left (as for the
+        # square at 0.6); untrimmed it is returned.
+        self.bad("offset", {"curve": circle, "distance": 1.5, "tolerance": 1e-7}, "distance", contains="trimmed offset is empty")
+        cs = cubics_of(self.offset(circle, 1.5, 1e-7, trim=False))
         pts = cubic_samples(cs, 100)
         self.assertLessEqual(np.abs(np.linalg.norm(pts, axis=1) - 0.5).max(), 1e-7)
 
@@ -518,6 +556,98 @@ class OffsetTest(CliTest):
                 break
             k += 1
         self.assertLessEqual(len(cs), n, f"{len(cs)} cubics against {n} uniform")
+
+    # The trimmed offset: the points of the raw offset at least |d| from the curve.
+
+    def assert_trimmed(self, beziers, d, tol, cubics, margin=0.02):
+        """Every output point at least |d| - tol from the curve (curve_distance, from
+        below), and every point of the exact offset that is |d| from the curve (its own
+        foot the nearest) within tol of the output, except within `margin` of an exact
+        point that is nearer (where the trim cuts, the cut moves by up to tol / sin of the
+        crossing angle)."""
+        out = cubic_samples(cubics, 64)
+        floor = abs(d) - tol * (1 + 1e-6)
+        near, _ = curve_distance(out, beziers, floor)
+        self.assertGreaterEqual(near.min(), floor, f"an output point is {near.min()} from the curve")
+        exact = ExactOffset([Piece(P) for P in beziers], d).samples(1000)[:, :2]
+        below, above = curve_distance(exact, beziers)  # a point of the offset is at most |d| away
+        bad = exact[below < abs(d) - 1e-3 * abs(d)]
+        good = exact[above >= abs(d) - 1e-9]
+        if len(bad):
+            good = good[nearest_distances(good, bad)[0] > margin]
+        if len(good):
+            back = np.min([polyline_distance(good, cubic_samples(part, 400)) for part in parts_of(cubics)], axis=0)
+            self.assertLessEqual(back.max(), tol * 1.01, f"exact point {good[back.argmax()]} is {back.max()} from the output")
+
+    def test_trim_rectangle_past_half_height(self):
+        # The 2 x 1 rectangle (counter-clockwise) inward by more than its half height: every
+        # point of the raw offset is nearer than |d| to the opposite side: nothing is left
+        # (the unit square at 0.6 too). The open U likewise. At 0.45 the inner rectangle.
+        rect = {"type": "polyline", "points": [[0, 0], [2, 0], [2, 1], [0, 1], [0, 0]]}
+        U = {"type": "polyline", "points": [[0, 0], [3, 0], [3, 1], [0, 1]]}
+        square = {"type": "polyline", "points": [[0, 0], [1, 0], [1, 1], [0, 1], [0, 0]]}
+        for curve, d in ((rect, 0.6), (rect, 0.55), (U, 0.6), (square, 0.6)):
+            self.bad("offset", {"curve": curve, "distance": d, "tolerance": 1e-3}, "distance", contains="trimmed offset is empty")
+        cs = cubics_of(self.offset(rect, 0.45, 1e-3))
+        self.assert_path(cs)
+        self.assertEqual(sorted(tuple(np.round(B[0], 9)) for B in cs), [(0.45, 0.45), (0.45, 0.55), (1.55, 0.45), (1.55, 0.55)])
+        lines = [[a, b] for a, b in zip(rect["points"], rect["points"][1:])]
+        self.assert_trimmed(lines, 0.45, 1e-3, cs)
+
+    def test_trim_input_cusp_symmetric(self):
+        # K has a cusp at (1, 1.5) and is symmetric about x = 1 (K(1 - t) mirrored). The
+        # trimmed offset keeps exactly the points |d| from K: symmetric within 2 tol, on the
+        # inner side (d = -0.2) the loop round the cusp cut at the crossing of the branches'
+        # offsets (the V meets there; the round cap over the tip is a part of its own).
+        K = [[0, 0], [2, 2], [0, 2], [2, 0]]
+        tol = 1e-3
+        for d in (-0.2, 1.0):
+            cs = cubics_of(self.offset({"type": "bezier", "points": K}, d, tol))
+            self.assert_trimmed([K], d, tol, cs)
+            pts = cubic_samples(cs, 200)
+            mirrored = pts * [-1, 1] + [2, 0]
+            back = np.min([polyline_distance(mirrored, cubic_samples(part, 2000)) for part in parts_of(cs)], axis=0)
+            self.assertLessEqual(back.max(), 2 * tol)
+            for part in parts_of(cs):
+                self.assert_path(part)
+            if d == -0.2:
+                # The V: a part ends and one starts at the crossing on x = 1.
+                ends = [p[-1][3] for p in parts_of(cs)] + [p[0][0] for p in parts_of(cs)]
+                self.assertTrue(any(abs(e[0] - 1) < 2 * tol and e[1] < 1.2 for e in ends), ends)
+
+    def test_trim_peanut_waist(self):
+        # A closed peanut (uniform Catmull-Rom through 16 points of x = 2 cos u, y = sin u
+        # (0.25 + 0.75 cos^2 u), written as cubic Béziers here), counter-clockwise, waist
+        # half height 0.25: inward by 0.3 the offsets of the two sides cross at the waist,
+        # and the lens between the crossings is nearer than 0.3 to the curve: two closed
+        # loops are left, one per lobe.
+        u = 2 * np.pi * np.arange(16) / 16
+        P = np.column_stack([2 * np.cos(u), np.sin(u) * (0.25 + 0.75 * np.cos(u) ** 2)])
+        beziers = [[P[i], P[i] + (P[(i + 1) % 16] - P[i - 1]) / 6, P[(i + 1) % 16] - (P[(i + 2) % 16] - P[i]) / 6, P[(i + 1) % 16]]
+                   for i in range(16)]
+        curve = {"type": "path", "segments": [{"type": "bezier", "points": np.asarray(B).tolist()} for B in beziers]}
+        tol = 1e-3
+        cs = cubics_of(self.offset(curve, 0.3, tol))
+        parts = parts_of(cs)
+        self.assertEqual(len(parts), 2)
+        for part in parts:
+            self.assertLess(np.linalg.norm(part[-1][3] - part[0][0]), 1e-9, "each lobe's loop is closed")
+            xs = cubic_samples(part, 16)[:, 0]
+            self.assertTrue(xs.max() < 0 or xs.min() > 0, "one lobe each")
+        self.assert_trimmed(beziers, 0.3, tol, cs)
+        # Outward nothing is cut.
+        cs = cubics_of(self.offset(curve, -0.3, tol))
+        self.assert_path(cs)
+        self.assert_trimmed(beziers, -0.3, tol, cs)
+
+    def test_degree_zero_jumps_are_gaps(self):
+        # A degree-0 B-spline is constant pieces; where they jump the offset is refused as
+        # a gap, as for a degree-1 spline with a jump (not as a single point).
+        req = {"distance": 1, "tolerance": 1e-3}
+        step0 = {"type": "bspline", "degree": 0, "knots": [0, 1, 2, 3], "points": [[0, 0], [1, 1], [3, 3]]}
+        step1 = {"type": "bspline", "degree": 1, "knots": [0, 0, 1, 1, 2, 2], "points": [[0, 0], [1, 0], [1, 1], [2, 1]]}
+        self.bad("offset", dict(req, curve=step0), "curve", contains="gap of 1.414214")
+        self.bad("offset", dict(req, curve=step1), "curve", contains="gap of 1.000000")
 
     def test_bad_input(self):
         cubic = {"type": "bezier", "points": [[0, 0], [1, 3], [3, 3], [4, 0]]}

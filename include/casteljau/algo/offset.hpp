@@ -1,12 +1,13 @@
 // Offset curves of plane curves: C(t) + d N(t) approximated by cubic Béziers within a
-// measured tolerance, with joins at the corners of the input and the loops of the raw
-// offset trimmed at its self-intersections.
+// measured tolerance, with joins at the corners of the input, and trimmed to the points at
+// least |d| from the curve.
 #pragma once
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <limits>
 #include <memory>
@@ -17,6 +18,7 @@
 #include <vector>
 
 #include "casteljau/algo/intersect.hpp"
+#include "casteljau/algo/project.hpp"
 #include "casteljau/core/error.hpp"
 #include "casteljau/core/unit_frame.hpp"
 #include "casteljau/curves/piecewise.hpp"
@@ -47,9 +49,10 @@ struct OffsetOptions {
   std::size_t max_segments = 20000;  ///< the work limit: more cubics than this are refused
 };
 
-/// The result of offset(): the cubics in order (a path, continuous except where noted in
-/// offset()), the largest measured distance of a cubic of the raw offset from its exact
-/// source (offset stretch or join), and the number of loops cut by the trim.
+/// The result of offset(): the cubics in order (a path, continuous except between the
+/// parts the trim leaves, see offset()), the largest measured distance of a cubic of the
+/// raw offset from its exact source (offset stretch or join), and the number of runs of
+/// the raw offset the trim cut away.
 template <class T>
 struct OffsetCurve {
   std::vector<Bezier<T, 2>> segments;
@@ -526,11 +529,21 @@ std::optional<CubicForm<T>> fitted(const Source<T>& s, T a, T b, const Ends<T>& 
 template <class T>
 using Quad = std::array<Point<T, 2>, 4>;
 
-/// The fitter's state: the raw offset's cubics and a reversed flag per cubic.
+/// What a cubic of the raw offset follows (the trim's tests differ): the offset of a
+/// stretch of the curve, the outer join at a corner (round arc, miter or bevel) or the
+/// line at an inner corner.
+enum class RawKind : unsigned char { stretch, outer_join, inner_join };
+
+/// The fitter's state: the raw offset's cubics, a reversed flag per cubic, and what each
+/// follows (with the corner of a join).
 template <class T>
 struct Raw {
   std::vector<Quad<T>> cubics;
   std::vector<bool> reversed;
+  std::vector<RawKind> kind;
+  std::vector<Point<T, 2>> corner;  ///< the corner of a join's cubic (unused for a stretch)
+  RawKind kind_now = RawKind::stretch;
+  Point<T, 2> corner_now{};
   T max_error = 0;
   T tolerance = 0;
   std::size_t max_segments = 0;
@@ -548,6 +561,8 @@ struct Raw {
     if (!cubics.empty()) Q[0] = cubics.back()[3];  // continuous: the previous end (equal up to rounding at G1 joints)
     cubics.push_back(Q);
     reversed.push_back(rev);
+    kind.push_back(kind_now);
+    corner.push_back(corner_now);
   }
 };
 
@@ -1067,6 +1082,12 @@ void join(const Corner<T>& c, const OffsetOptions<T>& o, T d, Raw<T>& raw) {
   if (std::abs(theta) <= T(1e-9)) return;
   const bool reversal = std::abs(theta) >= std::numbers::pi_v<T> * (1 - T(1e-12));
   const bool outer = reversal || theta * d < 0;
+  raw.kind_now = outer ? RawKind::outer_join : RawKind::inner_join;
+  raw.corner_now = c.at;
+  struct Restore {  // the cubics after the join follow a stretch again
+    Raw<T>& r;
+    ~Restore() { r.kind_now = RawKind::stretch; }
+  } restore{raw};
   if (!outer) {
     raw.push(line(P, Q), true);
     return;
@@ -1320,43 +1341,394 @@ Source<T> stretch_source(const Piece& c, const Stretch<T>& s, T d) {
   return offset_source<T>(c, &s, &s, d);
 }
 
-/// Cuts the loops of the raw offset (see offset()): returns the kept parameter intervals
-/// of the raw path (cubic i on [i, i + 1]).
+/// The curve (in the unit frame) as the trim sees it: its pieces and the boxes of their
+/// control points (a piece lies inside its box), to ask whether a point is nearer to the
+/// curve than a distance.
 template <class T>
-std::vector<Interval<T>> kept_intervals(const Pieces<T, 2>& raw, const std::vector<bool>& reversed, bool closed, std::size_t& loops) {
-  const T n = static_cast<T>(reversed.size());
-  const Intersections<T> x = self_intersect(raw);
-  std::vector<Interval<T>> cuts;
-  for (std::size_t i = 0; i < reversed.size();) {
-    if (!reversed[i]) {
-      ++i;
-      continue;
+struct Nearness {
+  static constexpr std::size_t max_points = 16;  // polynomial pieces up to degree 15 by subdivision
+  std::vector<BezierPiece<T, 2>> pieces;
+  std::vector<std::array<Point<T, 2>, 2>> boxes;
+  T leaf = 0;  ///< the box diagonal at which subdivision stops (a fraction of the tolerance)
+
+  void add(const BezierPiece<T, 2>& piece) {
+    std::array<Point<T, 2>, 2> box{};
+    std::visit(
+        [&](const auto& c) {
+          box = {c.points().front(), c.points().front()};
+          for (const auto& p : c.points()) {
+            for (int k = 0; k < 2; ++k) box[0][k] = std::min(box[0][k], p[k]), box[1][k] = std::max(box[1][k], p[k]);
+          }
+        },
+        piece);
+    pieces.push_back(piece);
+    boxes.push_back(box);
+  }
+  /// Whether the polynomial piece with control points P[0..m) comes nearer to p than r.
+  /// Its control points lie within e of its chord S (the segment between its ends), so the
+  /// piece does (its hull is inside that band, and it runs from end to end of S): its
+  /// distance from p is within e of S's. Decided when that settles it, else the piece is
+  /// halved (de Casteljau), nearer half first, until e is below `leaf` (then S's distance
+  /// decides: a point up to `leaf` farther than r may count as near).
+  bool near_polynomial(const Point<T, 2>* P, std::size_t m, const Point<T, 2>& p, T r, int depth) const {
+    const Point<T, 2>& a = P[0];
+    const Vector<T, 2> ab = P[m - 1] - a;
+    const T l2 = ab[0] * ab[0] + ab[1] * ab[1];
+    const auto to_chord = [&](const Point<T, 2>& q) {
+      const Vector<T, 2> aq = q - a;
+      const T s = l2 > 0 ? std::clamp((aq[0] * ab[0] + aq[1] * ab[1]) / l2, T(0), T(1)) : T(0);
+      const Vector<T, 2> e = aq - ab * s;
+      return std::sqrt(e[0] * e[0] + e[1] * e[1]);
+    };
+    T e = 0;
+    for (std::size_t j = 1; j + 1 < m; ++j) e = std::max(e, to_chord(P[j]));
+    const T ds = to_chord(p);
+    if (ds - e >= r) return false;
+    if (ds + e < r) return true;
+    if (e <= leaf || depth >= 60) return ds < r;
+    std::array<Point<T, 2>, max_points> L, R, W;
+    for (std::size_t j = 0; j < m; ++j) W[j] = P[j];
+    for (std::size_t level = 0; level < m; ++level) {
+      L[level] = W[0];
+      R[m - 1 - level] = W[m - 1 - level];
+      for (std::size_t j = 0; j + 1 < m - level; ++j) W[j] = W[j] + (W[j + 1] - W[j]) * T(0.5);
     }
-    std::size_t j = i;
-    while (j < reversed.size() && reversed[j]) ++j;
-    const T r0 = static_cast<T>(i), r1 = static_cast<T>(j);
-    // The smallest loop holding the region [r0, r1]: inside [ta, tb], or for a closed raw
-    // offset round the closing point, outside it (wrap).
-    T best = std::numeric_limits<T>::infinity(), lo = 0, hi = 0;
-    bool found = false, wrap = false;
-    for (const auto& p : x.points) {
-      if (p.ta <= r0 && p.tb >= r1 && p.tb - p.ta < best) best = p.tb - p.ta, lo = p.ta, hi = p.tb, found = true, wrap = false;
-      if (closed && (p.tb <= r0 || p.ta >= r1) && n - (p.tb - p.ta) < best) {
-        best = n - (p.tb - p.ta), lo = p.ta, hi = p.tb, found = true, wrap = true;
+    const T dl = length(L[m / 2] - p), dr = length(R[m / 2] - p);  // the nearer half first
+    if (dl <= dr) return near_polynomial(L.data(), m, p, r, depth + 1) || near_polynomial(R.data(), m, p, r, depth + 1);
+    return near_polynomial(R.data(), m, p, r, depth + 1) || near_polynomial(L.data(), m, p, r, depth + 1);
+  }
+  /// A grid over the pieces' boxes for the queries of radius at most `reach` (cells of at
+  /// least that size, at most about 4 per piece): a query looks at the pieces listed in
+  /// the 2 x 2 or more cells its disc's box meets, not at all the pieces.
+  T cell = 0, reach = 0;
+  Point<T, 2> grid_lo{};
+  std::size_t nx = 0, ny = 0;
+  std::vector<std::vector<std::uint32_t>> cells;
+  mutable std::vector<std::size_t> seen;  // the query stamp that last looked at a piece
+  mutable std::size_t stamp = 0;
+
+  void build_grid(T r) {
+    reach = r;
+    Point<T, 2> lo = boxes.front()[0], hi = boxes.front()[1];
+    for (const auto& b : boxes) {
+      for (int k = 0; k < 2; ++k) lo[k] = std::min(lo[k], b[0][k]), hi[k] = std::max(hi[k], b[1][k]);
+    }
+    const T w = hi[0] - lo[0], h = hi[1] - lo[1];
+    const T budget = T(4 * boxes.size() + 16);
+    cell = std::max({r, std::sqrt(w * h / budget), std::max(w, h) / budget, std::numeric_limits<T>::min()});
+    nx = static_cast<std::size_t>(w / cell) + 1, ny = static_cast<std::size_t>(h / cell) + 1;
+    grid_lo = lo;
+    cells.assign(nx * ny, {});
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+      const auto [x0, y0] = at(boxes[i][0]);
+      const auto [x1, y1] = at(boxes[i][1]);
+      for (std::size_t y = y0; y <= y1; ++y)
+        for (std::size_t x = x0; x <= x1; ++x) cells[y * nx + x].push_back(static_cast<std::uint32_t>(i));
+    }
+    seen.assign(boxes.size(), 0);
+  }
+  std::pair<std::size_t, std::size_t> at(const Point<T, 2>& q) const {
+    const auto idx = [&](T v, std::size_t n) {
+      if (!(v > 0)) return std::size_t(0);
+      return std::min(static_cast<std::size_t>(v / cell), n - 1);
+    };
+    return {idx(q[0] - grid_lo[0], nx), idx(q[1] - grid_lo[1], ny)};
+  }
+  bool near_piece(std::size_t i, const Point<T, 2>& p, T r) const {
+    const T dx = std::max({boxes[i][0][0] - p[0], T(0), p[0] - boxes[i][1][0]});
+    const T dy = std::max({boxes[i][0][1] - p[1], T(0), p[1] - boxes[i][1][1]});
+    if (dx * dx + dy * dy >= r * r) return false;
+    return std::visit(
+        [&](const auto& c) {
+          using C = std::decay_t<decltype(c)>;
+          if constexpr (std::is_same_v<C, Bezier<T, 2>>) {
+            if (c.points().size() <= max_points) return near_polynomial(c.points().data(), c.points().size(), p, r, 0);
+          }
+          return project(c, p).distance < r;
+        },
+        pieces[i]);
+  }
+  /// True when some point of the curve lies nearer to p than r (or up to `leaf` farther;
+  /// see near_polynomial): the pieces whose box is nearer than r, polynomial ones by
+  /// subdivision, rational ones (and degree above 15) projected on (project()).
+  bool within(const Point<T, 2>& p, T r) const {
+    if (!(r > 0)) return false;
+    if (!cells.empty() && r <= reach) {
+      ++stamp;
+      const auto [x0, y0] = at(Point<T, 2>{p[0] - r, p[1] - r});
+      const auto [x1, y1] = at(Point<T, 2>{p[0] + r, p[1] + r});
+      for (std::size_t y = y0; y <= y1; ++y) {
+        for (std::size_t x = x0; x <= x1; ++x) {
+          for (const std::uint32_t i : cells[y * nx + x]) {
+            if (seen[i] == stamp) continue;
+            seen[i] = stamp;
+            if (near_piece(i, p, r)) return true;
+          }
+        }
+      }
+      return false;
+    }
+    for (std::size_t i = 0; i < pieces.size(); ++i) {
+      if (near_piece(i, p, r)) return true;
+    }
+    return false;
+  }
+};
+
+/// Where the raw cubic Q crosses the circle of radius r about e (an end of an open curve:
+/// its round cap, which the raw offset does not hold): sign changes of |Q(u) - e| - r on 32
+/// equal parts (values within eps of zero skipped: the offset starts on the circle), each
+/// narrowed by bisection. Appends the raw parameters i + u.
+template <class T>
+void cap_crossings(const Quad<T>& Q, std::size_t i, const Point<T, 2>& e, T r, T eps, std::vector<T>& out) {
+  T lo[2], hi[2];
+  for (int k = 0; k < 2; ++k) {
+    lo[k] = hi[k] = Q[0][k];
+    for (const auto& p : Q) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
+  }
+  const T dx = std::max({lo[0] - e[0], T(0), e[0] - hi[0]}), dy = std::max({lo[1] - e[1], T(0), e[1] - hi[1]});
+  if (std::sqrt(dx * dx + dy * dy) > r + eps) return;  // the box outside the circle
+  const T fx = std::max(std::abs(lo[0] - e[0]), std::abs(hi[0] - e[0])), fy = std::max(std::abs(lo[1] - e[1]), std::abs(hi[1] - e[1]));
+  if (std::sqrt(fx * fx + fy * fy) < r - eps) return;  // inside it
+  const CubicForm<T> F(Q[0], Q[1], Q[2], Q[3]);
+  const auto f = [&](T u) { return length(F.at(u) - e) - r; };
+  T last_u = 0;
+  int last_sign = 0;
+  for (int j = 0; j <= 32; ++j) {
+    const T u = T(j) / 32, v = f(u);
+    const int sign = v > eps ? 1 : (v < -eps ? -1 : 0);
+    if (sign == 0) continue;
+    if (last_sign != 0 && sign != last_sign) {
+      T a = last_u, b = u;
+      for (int k = 0; k < 60 && b - a > T(1e-15); ++k) {
+        const T m = (a + b) / 2;
+        ((f(m) > 0) == (last_sign > 0) ? a : b) = m;
+      }
+      out.push_back(static_cast<T>(i) + (a + b) / 2);
+    }
+    last_u = u, last_sign = sign;
+  }
+}
+
+/// The crossings of the raw offset's cubics with each other (consecutive ones too: a join
+/// arc meets the stretch before it away from their shared end), appended to `out` as raw
+/// parameters (cubic i on [i, i + 1]), both parameters of each, and the ends of overlaps.
+/// Pairs whose control boxes meet, found by a sweep over the boxes sorted by their left
+/// side (sweep and prune: the pairs of a path without interference are its neighbours'),
+/// each intersected as two cubics (intersect(), its fast path for degree <= 3). A point
+/// at the shared end of neighbours comes too; an extra cut only splits a part whose
+/// pieces are judged alike.
+template <class T>
+void raw_crossings(const Raw<T>& raw, std::vector<T>& out) {
+  const std::size_t n = raw.cubics.size();
+  std::vector<std::array<T, 4>> box(n);  // x lo, x hi, y lo, y hi
+  for (std::size_t i = 0; i < n; ++i) {
+    const Quad<T>& Q = raw.cubics[i];
+    box[i] = {Q[0][0], Q[0][0], Q[0][1], Q[0][1]};
+    for (const auto& p : Q) {
+      box[i][0] = std::min(box[i][0], p[0]), box[i][1] = std::max(box[i][1], p[0]);
+      box[i][2] = std::min(box[i][2], p[1]), box[i][3] = std::max(box[i][3], p[1]);
+    }
+  }
+  std::vector<std::size_t> order(n);
+  for (std::size_t i = 0; i < n; ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return box[a][0] < box[b][0]; });
+  const T slack = 64 * std::numeric_limits<T>::epsilon();  // in the unit frame
+  for (std::size_t a = 0; a < n; ++a) {
+    const std::size_t i = order[a];
+    for (std::size_t b = a + 1; b < n && box[order[b]][0] <= box[i][1] + slack; ++b) {
+      const std::size_t j = order[b];
+      if (box[j][2] > box[i][3] + slack || box[i][2] > box[j][3] + slack) continue;
+      const Quad<T>& P = raw.cubics[i];
+      const Quad<T>& Q = raw.cubics[j];
+      // Neighbours that lie on either side of a line through their shared end (every other
+      // control point strictly) meet only there: the common case of a smooth stretch.
+      if (j == i + 1 || i == j + 1) {
+        const Quad<T>& A = j == i + 1 ? P : Q;  // the first of the two
+        const Quad<T>& B = j == i + 1 ? Q : P;
+        const auto apart = [&](const Vector<T, 2>& v) {
+          for (int k = 0; k < 3; ++k) {
+            if (!(dot(A[static_cast<std::size_t>(k)] - A[3], v) < 0)) return false;
+          }
+          for (int k = 1; k < 4; ++k) {
+            if (!(dot(B[static_cast<std::size_t>(k)] - B[0], v) > 0)) return false;
+          }
+          return true;
+        };
+        if (apart(B[3] - A[0]) || apart(B[1] - B[0]) || apart(A[3] - A[2])) continue;
+      }
+      const Intersections<T> x = intersect(Bezier<T, 2>({P[0], P[1], P[2], P[3]}), Bezier<T, 2>({Q[0], Q[1], Q[2], Q[3]}));
+      for (const auto& p : x.points) {
+        // Not the shared end of neighbours (found there as a touch or a crossing).
+        if (j == i + 1 && length(p.point - P[3]) <= T(1e-9)) continue;
+        if (i == j + 1 && length(p.point - P[0]) <= T(1e-9)) continue;
+        out.push_back(static_cast<T>(i) + p.ta), out.push_back(static_cast<T>(j) + p.tb);
+      }
+      for (const auto& v : x.overlaps) {
+        out.insert(out.end(), {static_cast<T>(i) + v.a.lo, static_cast<T>(i) + v.a.hi, static_cast<T>(j) + v.b_start, static_cast<T>(j) + v.b_end});
       }
     }
-    if (found && !wrap) cuts.push_back({lo, hi}), ++loops;
-    if (found && wrap) cuts.push_back({T(0), lo}), cuts.push_back({hi, n}), ++loops;
-    i = j;
   }
-  std::sort(cuts.begin(), cuts.end(), [](const auto& a, const auto& b) { return a.lo < b.lo; });
+}
+
+/// The trim (see offset()): the raw path (cubic i on [i, i + 1]) cut at its
+/// self-intersections, at the ends of its reversed runs and joins (the cusps of the offset,
+/// the corners) and, for an open curve, where it crosses the round caps of the curve's
+/// ends; each part between cuts judged on samples in its share of each raw cubic (8 to 32
+/// parts, at most |d| apart): kept
+/// where they are at least |d| - tol from the curve (for an outer join, the point moved
+/// radially onto the arc of radius |d| about the corner, so that a miter or bevel is
+/// judged as the round join it replaces); where the samples disagree (the offset of the
+/// other side of the curve passes there, which is not in the raw path) the change is found
+/// by bisection. Returns the
+/// kept parameter intervals in order; `dropped` counts the runs cut away.
+template <class T>
+std::vector<Interval<T>> trimmed_intervals(const Pieces<T, 2>& path, const Raw<T>& raw, const Nearness<T>& near, T d, T tol,
+                                           const std::optional<std::array<Point<T, 2>, 2>>& open_ends, std::size_t& dropped) {
+  const std::size_t n = raw.cubics.size();
+  const T r = std::abs(d);
+  std::vector<T> cut{T(0), static_cast<T>(n)};
+  for (std::size_t i = 1; i < n; ++i) {
+    if (raw.reversed[i] != raw.reversed[i - 1] || raw.kind[i] != raw.kind[i - 1]) cut.push_back(static_cast<T>(i));
+  }
+  std::sort(cut.begin(), cut.end());
+  const std::vector<T> structural = cut;  // not crossings: their points are judged too
+  raw_crossings(raw, cut);
+  if (open_ends) {
+    for (std::size_t i = 0; i < n; ++i) {
+      for (const auto& e : *open_ends) cap_crossings(raw.cubics[i], i, e, r, T(1e-3) * tol, cut);
+    }
+  }
+  // A crossing at a joint that is a cut already (the shared end of neighbours, rounded):
+  // that joint, so that no sliver part lies between them.
+  for (std::size_t k = structural.size(); k < cut.size(); ++k) {
+    const T j = std::round(cut[k]);
+    if (std::abs(cut[k] - j) <= T(1e-9) && std::binary_search(structural.begin(), structural.end(), j)) cut[k] = j;
+  }
+  std::sort(cut.begin(), cut.end());
+  cut.erase(std::unique(cut.begin(), cut.end()), cut.end());
+  // The point of the raw offset at parameter t as judged (an outer join's moved onto the arc).
+  const auto judged = [&](T t) {
+    const std::size_t i = std::min(static_cast<std::size_t>(t), n - 1);
+    const Quad<T>& Q = raw.cubics[i];
+    Point<T, 2> p = CubicForm<T>(Q[0], Q[1], Q[2], Q[3]).at(t - static_cast<T>(i));
+    if (raw.kind[i] == RawKind::outer_join) {  // a miter or bevel (a round arc's cubic is itself judged)
+      const Vector<T, 2> v = p - raw.corner[i];
+      if (length(v) > 0 && std::abs(length(v) - r) > tol) p = raw.corner[i] + v * (r / length(v));
+    }
+    return p;
+  };
+  // A point is judged on |d| - tol (a point of the offset is that far, the fit's error
+  // allowing); a change between two samples is placed where the distance passes it.
+  const auto valid = [&](T t) { return !near.within(judged(t), r - tol); };
   std::vector<Interval<T>> kept;
-  T at = 0;
-  for (const auto& c : cuts) {
-    if (c.lo > at) kept.push_back({at, c.lo});
-    at = std::max(at, c.hi);
+  const auto keep = [&](T lo, T hi, bool ok, bool& last_ok) {
+    if (!ok) {
+      if (last_ok) ++dropped;
+    } else if (!kept.empty() && kept.back().hi == lo) {
+      kept.back().hi = hi;
+    } else {
+      kept.push_back({lo, hi});
+    }
+    last_ok = ok;
+  };
+  bool last_ok = true;
+  std::vector<std::pair<T, bool>> samples;
+  struct Run {
+    Interval<T> iv;
+    bool ok;
+    bool deep;
+  };
+  std::vector<Run> all;
+  for (std::size_t k = 0; k + 1 < cut.size(); ++k) {
+    const T a = std::max(cut[k], T(0)), b = std::min(cut[k + 1], static_cast<T>(n));
+    if (!(b - a > T(1e-12))) continue;
+    // Samples inside the part: 7 or more in its share of each raw cubic, the joints between, and
+    // its ends where they are not crossings (at a crossing the point is |d| from the curve
+    // on both sides: judging it would keep a sliver of the part cut away).
+    samples.clear();
+    const auto is_structural = [&](T t) { return std::binary_search(structural.begin(), structural.end(), t); };
+    if (is_structural(a)) samples.emplace_back(a, valid(a));
+    for (std::size_t i = std::min(static_cast<std::size_t>(a), n - 1); i < n && static_cast<T>(i) < b; ++i) {
+      const T lo = std::max(a, static_cast<T>(i)), hi = std::min(b, static_cast<T>(i + 1));
+      if (!(hi > lo)) continue;
+      // At most |d| apart along the cubic (its control polygon's length): the stretch of an
+      // offset within |d| of a part of the curve that crosses it is at least 2 |d| long.
+      // 8 to 32 parts.
+      const Quad<T>& Q = raw.cubics[i];
+      const T poly = length(Q[1] - Q[0]) + length(Q[2] - Q[1]) + length(Q[3] - Q[2]);
+      const T want = std::ceil(poly * (hi - lo) / r);
+      const int m = want > 32 ? 32 : (want < 8 ? 8 : static_cast<int>(want));
+      for (int j = lo > a ? 0 : 1; j < m; ++j) {
+        const T t = lo + (hi - lo) * T(j) / T(m);
+        samples.emplace_back(t, valid(t));
+      }
+    }
+    if (is_structural(b)) samples.emplace_back(b, valid(b));
+    // Where the samples disagree, the change (the offset of another part of the curve, a
+    // cap, passes there without crossing this side's offset) narrowed by bisection.
+    std::vector<std::pair<Interval<T>, bool>> runs;
+    T at = a;
+    for (std::size_t j = 1; j < samples.size(); ++j) {
+      if (samples[j].second == samples[j - 1].second) continue;
+      T lo = samples[j - 1].first, hi = samples[j].first;
+      for (int it = 0; it < 48 && hi - lo > T(1e-13) && length(path(hi) - path(lo)) > tol / 16; ++it) {
+        const T m = (lo + hi) / 2;
+        (valid(m) == samples[j - 1].second ? lo : hi) = m;
+      }
+      const T c = samples[j - 1].second ? lo : hi;  // the end on the kept side
+      if (c > at) runs.push_back({{at, c}, samples[j - 1].second});
+      at = std::max(at, c);
+    }
+    if (b > at) runs.push_back({{at, b}, samples.empty() || samples.back().second});
+    // A kept run between a crossing and a change is the spur of a part cut away there when
+    // it is short, all within 8 tol of the crossing (the raw offset is up to tol off the
+    // exact one, so the distance passes |d| - tol a little past the crossing, farther
+    // where the two offsets cross at a small angle, as near a cusp of the offset): cut
+    // away with it.
+    if (runs.size() > 1) {
+      const auto spur = [&](const Interval<T>& iv, T end) {
+        const Point<T, 2> x = path(end);
+        for (int j = 0; j <= 8; ++j) {
+          if (length(path(iv.lo + (iv.hi - iv.lo) * T(j) / 8) - x) > 8 * tol) return false;
+        }
+        return true;
+      };
+      if (runs.front().second && !is_structural(a) && spur(runs.front().first, a)) runs.front().second = false;
+      if (runs.back().second && !is_structural(b) && spur(runs.back().first, b)) runs.back().second = false;
+    }
+    for (const auto& [iv, ok] : runs) {
+      bool deep = false;  // some sample of a run cut away nearer than |d| - 2 tol
+      for (const auto& q : samples) {
+        if (!ok && !q.second && q.first >= iv.lo && q.first <= iv.hi && near.within(judged(q.first), r - 2 * tol)) {
+          deep = true;
+          break;
+        }
+      }
+      all.push_back({iv, ok, deep});
+    }
   }
-  if (at < n) kept.push_back({at, n});
+  // A stretch of consecutive runs to cut away is cut only where it goes deeper than 2 tol
+  // somewhere: shallower, it is the raw offset's own error (a measured error of the fit a
+  // little over the tolerance, the line at a corner that turns by very little), kept whole
+  // (judged as one, so that the parts on either side still meet).
+  for (std::size_t k = 0; k < all.size();) {
+    if (all[k].ok) {
+      ++k;
+      continue;
+    }
+    std::size_t e = k;
+    bool deep = all[k].deep;
+    while (e + 1 < all.size() && !all[e + 1].ok && all[e + 1].iv.lo == all[e].iv.hi) {
+      ++e;
+      deep = deep || all[e].deep;
+    }
+    if (!deep) {
+      for (std::size_t j = k; j <= e; ++j) all[j].ok = true;
+    }
+    k = e + 1;
+  }
+  for (const auto& x : all) keep(x.iv.lo, x.iv.hi, x.ok, last_ok);
   return kept;
 }
 
@@ -1429,14 +1801,16 @@ double offset_segments_estimate(const Pieces<T, 2>& curve, T distance, T toleran
 /// line; a reversal (a turn of pi) is always closed by a round arc or a bevel. The inner
 /// side gets a straight line from one offset end to the other, traversed backwards.
 ///
-/// Trim. The raw offset's reversed regions are its stretches that run against the curve
-/// (between two cusps of the offset, where |d| exceeds the radius of curvature on the
-/// concave side) and the lines at inner corners. Each region is cut away with the smallest
-/// loop of the raw offset that holds it: the part between the two parameters of one of
-/// its self-intersections (algo/intersect.hpp), or for a closed curve the part round the
-/// closing point outside them. A region that no loop holds (a cusp near an open end whose
-/// swallowtail is cut short by the end) is kept; loops without a reversed region (the
-/// offset of a far part of the curve crossing another's) are kept.
+/// Trim. Kept: the points of the raw offset at least |d| - tolerance from the curve (the
+/// offset as stroking and tool paths need it: swallowtails, the lines at inner corners,
+/// the offsets of parts of the curve nearer than 2 |d| to each other, a circle offset past
+/// its centre all go). The raw offset is cut at the crossings of its cubics
+/// (detail::offset::raw_crossings), its cusps and join ends, and for an open curve where
+/// it crosses the circles of radius |d| about the curve's ends; each part between cuts is
+/// judged by the distance of samples to the curve, a change between samples found by
+/// bisection (detail::offset::trimmed_intervals). What is kept stays in order; parts that
+/// do not meet follow each other with a gap (a closed curve's part through the closing
+/// point is one part).
 ///
 /// Untrimmed (trim = false), parts that the tolerance covers are left out: a stretch
 /// between two cusps of the offset whose points are all within tolerance / 4 of its start
@@ -1444,7 +1818,8 @@ double offset_segments_estimate(const Pieces<T, 2>& curve, T distance, T toleran
 /// chord (its start moves by that to the last end), and for an open curve of one piece a
 /// first or last stretch cut off by a cusp, within 0.9 tolerance of the cusp.
 ///
-/// Result: the cubics in order, each starting where the previous ends. d = 0 gives the
+/// Result: the cubics in order, each starting where the previous ends except between the
+/// parts the trim leaves (a gap: a new part). d = 0 gives the
 /// curve itself as cubics (exact for polynomial pieces of degree <= 3). Pieces that are
 /// single points are skipped. Errors: InvalidArgument "distance", "tolerance" (not > 0 and
 /// finite; below 1e-11 of the curve's size plus |d|; more than max_segments cubics),
@@ -1491,11 +1866,21 @@ OffsetCurve<T> offset(const Pieces<T, 2>& curve, const OffsetOptions<T>& o) {
     std::visit([&](const auto& c) { single_open = norm(c.points().back() - c.points().front()) * scale > T(1e-10); },
                curve.segments().front());
   }
+  Nearness<T> near;  // the curve, for the trim's distance tests
+  near.leaf = tol / 64;
+  std::optional<Point<T, 2>> piece_end;  // the end of the last piece, a single point too
   for (const auto& seg : curve.segments()) {
     const BezierPiece<T, 2> piece = std::visit(to_frame, seg);
+    if (o.trim && d != 0) near.add(piece);
     std::visit(
         [&](const auto& c) {
           const auto& P = c.points();
+          // Pieces that do not meet (a B-spline of degree 0 with jumps: single points too).
+          if (piece_end && norm(P.front() - *piece_end) > tol) {
+            throw InvalidArgument("curve", "has a gap of " + std::to_string(norm(P.front() - *piece_end) / scale) +
+                                               " between two pieces, more than the tolerance: its offset would not be connected");
+          }
+          piece_end = P.back();
           if (std::all_of(P.begin(), P.end(), [&](const auto& p) { return norm(p - P.front()) <= tiny; })) return;  // a point
           bool piece_start = true;
           const std::vector<Stretch<T>> ss = stretches<T>(c, d, tiny);
@@ -1603,27 +1988,43 @@ OffsetCurve<T> offset(const Pieces<T, 2>& curve, const OffsetOptions<T>& o) {
   out.raw_segments = raw.cubics.size();
   out.max_error = raw.max_error / scale;
   std::vector<Quad<T>> kept;
-  if (o.trim && std::find(raw.reversed.begin(), raw.reversed.end(), true) != raw.reversed.end()) {
+  if (o.trim && d != 0) {
     std::vector<BezierPiece<T, 2>> segs;
     segs.reserve(raw.cubics.size());
     for (const auto& Q : raw.cubics) segs.emplace_back(Bezier<T, 2>({Q[0], Q[1], Q[2], Q[3]}));
     const Pieces<T, 2> path(std::move(segs));
-    const bool raw_closed = norm(raw.cubics.back()[3] - raw.cubics.front()[0]) <= tol;
-    const auto keep = kept_intervals(path, raw.reversed, closed && raw_closed, out.loops_cut);
-    kept.clear();
+    std::optional<std::array<Point<T, 2>, 2>> open_ends;
+    if (!closed) open_ends = std::array<Point<T, 2>, 2>{first_at, last_at};
+    if (near.pieces.size() > 8) near.build_grid(std::abs(d));
+    const auto keep = trimmed_intervals(path, raw, near, d, tol, open_ends, out.loops_cut);
+    // The kept parts in order, each a run of cubics; consecutive intervals whose ends meet
+    // (the two parameters of one crossing) within the tolerance continue one part.
+    std::vector<std::vector<Quad<T>>> parts;
     for (const auto& iv : keep) {
-      if (!(iv.hi > iv.lo)) continue;
-      const Pieces<T, 2> part = path.portion(iv);
-      for (const auto& s : part.segments()) {
-        const auto& P = std::get<Bezier<T, 2>>(s).points();  // a portion of a cubic: a cubic
+      std::vector<Quad<T>> cubics;
+      const Pieces<T, 2> portion = path.portion(iv);
+      for (const auto& seg : portion.segments()) {
+        const auto& P = std::get<Bezier<T, 2>>(seg).points();  // a portion of a cubic: a cubic
         if (std::all_of(P.begin(), P.end(), [&](const auto& p) { return norm(p - P.front()) <= tiny; })) continue;
-        kept.push_back(Quad<T>{P[0], P[1], P[2], P[3]});
+        cubics.push_back(Quad<T>{P[0], P[1], P[2], P[3]});
+      }
+      if (cubics.empty()) continue;
+      if (!parts.empty() && norm(cubics.front()[0] - parts.back().back()[3]) <= tol) {
+        cubics.front()[0] = parts.back().back()[3];
+        parts.back().insert(parts.back().end(), cubics.begin(), cubics.end());
+      } else {
+        parts.push_back(std::move(cubics));
       }
     }
-    if (kept.empty()) throw InvalidArgument("distance", "the trimmed offset is empty: |distance| exceeds the curve's radius everywhere");
-    for (std::size_t i = 1; i < kept.size(); ++i) {  // portions cut at one intersection meet to rounding
-      if (norm(kept[i][0] - kept[i - 1][3]) <= tol) kept[i][0] = kept[i - 1][3];
+    if (parts.empty()) throw InvalidArgument("distance", "the trimmed offset is empty: every point of the offset is nearer than |distance| to the curve");
+    // A closed curve: the last part continues into the first across the closing point (or
+    // a crossing) when its end meets the first's start; it is then put before it.
+    if (closed && parts.size() > 1 && norm(parts.back().back()[3] - parts.front().front()[0]) <= tol) {
+      parts.front().front()[0] = parts.back().back()[3];
+      parts.back().insert(parts.back().end(), parts.front().begin(), parts.front().end());
+      parts.erase(parts.begin());
     }
+    for (auto& part : parts) kept.insert(kept.end(), part.begin(), part.end());
   } else {
     kept = std::move(raw.cubics);
   }
