@@ -386,12 +386,18 @@ AnyReduction reduce(const AnyCurve& c, int times, double tolerance) {
           const int m = p - times;
           const std::vector<double> breaks = breaks_of(x);
           // Measuring max_error evaluates both curves 32 (p + 1) times per piece at O(p^2)
-          // each: (pieces) (p + 1)^3 units, limited to 3e7 (about a second).
-          const double work = static_cast<double>(breaks.size() - 1) * std::pow(p + 1.0, 3);
+          // each, and the candidates' fits cost about as much: (p + 1)^3 units a piece, four
+          // times that for a NURBS (its rational fit: measured 3.4x at degree 200, 4.8x at
+          // 300), plus 1000 a piece for the per-piece work of the measure (its local
+          // searches: 65 us a quadratic piece). Calibrated on this machine's user CPU
+          // (session 17): about 0.065 us a unit, so the limit 3e7 is about 2 s (B-spline
+          // degree 300 in one piece 1.8 s; 20,000 quadratic pieces 1.3 s).
+          constexpr bool rational = std::is_same_v<C, Nurbs<double, D>>;
+          const double work = static_cast<double>(breaks.size() - 1) * ((rational ? 4 : 1) * std::pow(p + 1.0, 3) + 1000);
           if (work > 3e7) {
             throw InvalidArgument("curve", "the reduction would take about " + format_number(work) +
-                                               " units of work (pieces x (degree + 1)^3), more than the limit of 3e7: use fewer "
-                                               "pieces or a lower degree");
+                                               " units of work (pieces x ((degree + 1)^3, four times that for a nurbs, "
+                                               "+ 1000)), more than the limit of 3e7: use fewer pieces or a lower degree");
           }
           C reduced = x;
           if constexpr (bezier) {

@@ -852,6 +852,19 @@ class ReduceTest(CliTest):
             self.assertEqual(self.reduce(c, got["max_error"] * (1 + 1e-9), times=r), got, msg)
             self.bad("reduce", {"curve": c, "tolerance": got["max_error"] * (1 - 1e-6), "times": r}, "tolerance")
 
+    def test_work_limit(self):
+        # pieces x ((p + 1)^3, x4 for a NURBS, + 1000) above 3e7 is refused before any fit:
+        # 30,000 quadratic pieces (30000 x 1027), one NURBS piece of degree 300
+        # (4 x 301^3 + 1000), counted by hand.
+        n = 30002
+        quad = bspline([0.0] * 3 + [float(i) for i in range(1, n - 2)] + [float(n - 2)] * 3,
+                       [[i % 7, (i * i) % 5] for i in range(n)], 2)
+        self.bad("reduce", {"curve": quad, "tolerance": 1e9}, "curve", contains="about 30810000 units of work")
+        p = 300
+        nurbs = {"type": "nurbs", "degree": p, "knots": [0] * (p + 1) + [1] * (p + 1),
+                 "points": [[i % 3, i % 5] for i in range(p + 1)], "weights": [1 + (i % 2) for i in range(p + 1)]}
+        self.bad("reduce", {"curve": nurbs, "tolerance": 1e9}, "curve", contains=f"about {4 * 301 ** 3 + 1000} units of work")
+
     def test_impossible_reduction_refused_with_the_measured_figure(self):
         # The parabola (2t, 4t(1 - t)) to degree 1 with its ends kept: the only such line
         # is the chord (2t, 0), 4t(1 - t) away, 1 at t = 1/2.
