@@ -268,16 +268,11 @@ std::vector<std::pair<C, double>> spline_reductions(const C& x, int r) {
   // when `projective`), scaled by the largest difference so that no square under- or
   // overflows at any scale.
   const auto distance_to = [&](std::span<const double> a, std::span<const double> b, bool projective = false) {
-    std::array<double, D> diff;
-    double big = 0;
+    Vector<double, D> diff;
     for (std::size_t d = 0; d < static_cast<std::size_t>(D); ++d) {
-      diff[d] = projective ? a[d] / a[D] - b[d] / b[D] : a[d] - b[d];
-      big = std::max(big, std::abs(diff[d]));
+      diff[static_cast<int>(d)] = projective ? a[d] / a[D] - b[d] / b[D] : a[d] - b[d];
     }
-    if (!(big > 0) || !std::isfinite(big)) return big;
-    double s2 = 0;
-    for (const double x : diff) s2 += (x / big) * (x / big);
-    return big * std::sqrt(s2);
+    return norm(diff);
   };
   std::vector<double> point(static_cast<std::size_t>(D));
   // A clamped end's point is the curve's end exactly (the fits' fixed values are that
@@ -405,7 +400,7 @@ AnyReduction reduce(const AnyCurve& c, int times, double tolerance) {
           } else if (m == 0) {
             const Interval<double> dom = x.domain();
             const Point<double, D> mean = mean_of(x, breaks);
-            if constexpr (std::is_same_v<C, Nurbs<double, D>>) {
+            if constexpr (rational) {
               reduced = C(0, {dom.lo, dom.hi}, {mean}, {1.0});
             } else {
               reduced = C(0, {dom.lo, dom.hi}, {mean});

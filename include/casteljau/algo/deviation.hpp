@@ -20,13 +20,9 @@ namespace casteljau {
 /// better than 1e-9 relative). An estimate from below, exact up to rounding unless a
 /// peak narrower than the sample spacing hides between two samples (for polynomials of
 /// degree n, samples = 32 (n + 1) leaves no room for that in practice). Cost: about
-/// (samples + 80 per peak) evaluations of both curves per interval. With `stop_above`
-/// (a comparison among candidates: only a value below it matters), the first sample
-/// above it ends the measure, returning that sample (a value from below, > stop_above,
-/// so the same verdict).
+/// (samples + 80 per peak) evaluations of both curves per interval.
 template <class T, class A, class B>
-T max_deviation(const A& a, const B& b, const std::vector<T>& breaks, int samples,
-                T stop_above = std::numeric_limits<T>::infinity()) {
+T max_deviation(const A& a, const B& b, const std::vector<T>& breaks, int samples) {
   const auto dist = [&](T u) { return norm(a(u) - b(u)); };
   T best = 0;
   for (std::size_t i = 0; i + 1 < breaks.size(); ++i) {
@@ -35,7 +31,6 @@ T max_deviation(const A& a, const B& b, const std::vector<T>& breaks, int sample
     for (std::size_t j = 0; j < u.size(); ++j) {
       u[j] = j + 1 == u.size() ? hi : lo + (hi - lo) * static_cast<T>(j) / static_cast<T>(samples);
       f[j] = dist(u[j]);
-      if (f[j] > stop_above) return f[j];
     }
     const T top = *std::max_element(f.begin(), f.end());
     best = std::max(best, top);

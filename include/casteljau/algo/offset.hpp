@@ -1614,7 +1614,8 @@ std::vector<Interval<T>> trimmed_intervals(const Pieces<T, 2>& path, const Raw<T
     Point<T, 2> p = CubicForm<T>(Q[0], Q[1], Q[2], Q[3]).at(t - static_cast<T>(i));
     if (raw.kind[i] == RawKind::outer_join) {  // a miter or bevel (a round arc's cubic is itself judged)
       const Vector<T, 2> v = p - raw.corner[i];
-      if (length(v) > 0 && std::abs(length(v) - r) > tol) p = raw.corner[i] + v * (r / length(v));
+      const T lv = length(v);
+      if (lv > 0 && std::abs(lv - r) > tol) p = raw.corner[i] + v * (r / lv);
     }
     return p;
   };

@@ -15,6 +15,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "casteljau/core/unit_frame.hpp"
 #include "casteljau/curves/bspline.hpp"
 
 namespace casteljau {
@@ -381,17 +382,13 @@ template <class T>
 SmoothingSolution<T> smoothing_solution(const std::vector<T>& t, const Eigen::Matrix<T, Eigen::Dynamic, Eigen::Dynamic>& y_given,
                                         std::optional<T> lambda, int max_evaluations) {
   using Matrix = Eigen::Matrix<T, Eigen::Dynamic, Eigen::Dynamic>;
-  int e = 0;
-  if (y_given.size() > 0) {
-    const T largest = y_given.cwiseAbs().maxCoeff();
-    if (largest > 0 && std::isfinite(largest)) (void)std::frexp(largest, &e);
-  }
-  const Matrix y = e == 0 ? y_given : Matrix(y_given.unaryExpr([e](T v) { return std::ldexp(v, -e); }));
+  const int e = y_given.size() > 0 ? detail::abs_exponent(T(y_given.cwiseAbs().maxCoeff())) : 0;
+  const Matrix y = e == 0 ? y_given : Matrix(y_given.unaryExpr([e](T v) { return detail::times_pow2(v, -e); }));
   SmoothingSolution<T> out = smoothing_solution_unit<T>(t, y, lambda, max_evaluations);
   if (e != 0) {
-    out.g = out.g.unaryExpr([e](T v) { return std::ldexp(v, e); });
-    out.gamma = out.gamma.unaryExpr([e](T v) { return std::ldexp(v, e); });
-    out.gcv = std::ldexp(out.gcv, 2 * e);
+    out.g = out.g.unaryExpr([e](T v) { return detail::times_pow2(v, e); });
+    out.gamma = out.gamma.unaryExpr([e](T v) { return detail::times_pow2(v, e); });
+    out.gcv = detail::times_pow2(out.gcv, 2 * e);
   }
   return out;
 }

@@ -204,7 +204,7 @@ LevelSet<typename C::Scalar> solve(const C& c, const Vector<typename C::Scalar, 
     const Interval<T> span = p.segment_domain(i);
     const Form& g = forms[i];
     if (g.zero) {
-      const T hi = end_attained(i) ? span.hi : std::max(std::nextafter(span.hi, -std::numeric_limits<T>::infinity()), span.lo);
+      const T hi = end_attained(i) ? span.hi : Pieces<T, D>::below_break(span.hi, span.lo);
       if (!intervals.empty() && intervals.back().hi == span.lo) {
         intervals.back().hi = hi;
       } else {

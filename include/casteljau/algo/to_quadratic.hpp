@@ -1129,14 +1129,6 @@ bool exact_piece(const S& s) {
   return true;
 }
 template <class T, int D>
-void frame_max(const std::vector<Point<T, D>>& P, T& m) {
-  max_abs<T, D>(std::span<const Point<T, D>>(P), m);
-}
-template <class T>
-int frame_exponent(T max_abs) {
-  return abs_exponent(max_abs);
-}
-template <class T, int D>
 std::vector<Point<T, D>> scale_points(const std::vector<Point<T, D>>& P, int k) {
   std::vector<Point<T, D>> Q(P.size());
   for (std::size_t i = 0; i < P.size(); ++i) Q[i] = times_pow2(P[i], k);
@@ -1208,18 +1200,18 @@ QuadraticChain<typename C::Scalar, C::dimension> to_quadratic(const C& p, typena
   if (!std::isfinite(tolerance) || !(tolerance > 0)) {
     throw InvalidArgument("tolerance", "must be a finite number > 0, got " + detail::format_number(tolerance));
   }
-  {  // the frame (frame_exponent): the scaled pieces have e = 0
+  {  // the frame (abs_exponent): the scaled pieces have e = 0
     T m = 0;
     bool exact = true;
     for (const auto& seg : p.segments()) {
       std::visit(
           [&](const auto& s) {
-            frame_max(s.points(), m);
+            detail::max_abs<T, D>(std::span<const Point<T, D>>(s.points()), m);
             exact = exact && exact_piece(s);
           },
           seg);
     }
-    if (const int e = frame_exponent(m); !exact && needs_frame<T>(e)) {
+    if (const int e = detail::abs_exponent(m); !exact && needs_frame<T>(e)) {
       std::vector<BezierPiece<T, D>> scaled;
       scaled.reserve(p.size());
       for (const auto& seg : p.segments()) std::visit([&](const auto& s) { scaled.emplace_back(scale_piece(s, -e)); }, seg);
@@ -1269,10 +1261,10 @@ QuadraticChain<typename C::Scalar, C::dimension> to_quadratic(const C& c, typena
   if (!std::isfinite(tolerance) || !(tolerance > 0)) {
     throw InvalidArgument("tolerance", "must be a finite number > 0, got " + detail::format_number(tolerance));
   }
-  {  // the frame (frame_exponent): the scaled curve has e = 0
+  {  // the frame (abs_exponent): the scaled curve has e = 0
     T m = 0;
-    frame_max(c.points(), m);
-    if (const int e = frame_exponent(m); needs_frame<T>(e) && !exact_piece(c)) {
+    detail::max_abs<T, C::dimension>(std::span<const Point<T, C::dimension>>(c.points()), m);
+    if (const int e = detail::abs_exponent(m); needs_frame<T>(e) && !exact_piece(c)) {
       QuadraticChain<T, C::dimension> r = to_quadratic(scale_piece(c, -e), frame_tolerance(tolerance, e), max_segments);
       unframe(r, e);
       return r;

@@ -100,7 +100,7 @@ Nurbs<T, D> nurbs_ellipse_arc(const Point<T, D>& O, const Vector<T, D>& X, const
   }
   // A full turn closes exactly (cos and sin of start + 2 pi in floating point miss the
   // start point by an ulp or two).
-  if (full_turn || sweep == two_pi) P.back() = P.front();
+  if (full_turn) P.back() = P.front();
   for (const Point<T, D>& p : P) {
     for (int i = 0; i < D; ++i) {
       if (!std::isfinite(p[i])) {

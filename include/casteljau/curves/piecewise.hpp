@@ -152,8 +152,12 @@ class PiecewiseCurve {
   /// jump (docs/cli.md, "Curves that jump").
   [[nodiscard]] T end_parameter(std::size_t i) const {
     const T u = breaks_[i + 1];
-    return jumps_after(i) ? std::max(std::nextafter(u, -std::numeric_limits<T>::infinity()), breaks_[i]) : u;
+    return jumps_after(i) ? below_break(u, breaks_[i]) : u;
   }
+
+  /// The double below the break u, not below the piece's start lo: where the curve is
+  /// piece i's end point before a jump at u (end_parameter; solve's intervals).
+  [[nodiscard]] static T below_break(T u, T lo) { return std::max(std::nextafter(u, -std::numeric_limits<T>::infinity()), lo); }
 
   /// The curve parameter of piece i's own parameter t: the increasing affine map of its
   /// own domain onto [u_i, u_{i+1}], the start exactly onto the break u_i, the end onto

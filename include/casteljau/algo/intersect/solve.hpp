@@ -136,7 +136,8 @@ template <class T>
 void once_per_rest(const Pieces<T, 2>& ca, const Pieces<T, 2>* cb, Intersections<T>& r) {
   const bool self = cb == nullptr;
   const auto ra = resting_runs(ca);
-  const auto rb = self ? ra : resting_runs(*cb);
+  const auto rb_own = self ? decltype(ra){} : resting_runs(*cb);
+  const auto& rb = self ? ra : rb_own;
   if (ra.empty() && rb.empty()) return;
   const auto snap = [](const std::vector<std::pair<Interval<T>, Point<T, 2>>>& runs, T& t, Point<T, 2>& at) {
     for (const auto& [iv, q] : runs) {
