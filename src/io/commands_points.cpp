@@ -50,9 +50,6 @@ constexpr Field subdivide_fields[] = {
 };
 
 constexpr std::string_view smoothing_choices[] = {"gcv"};
-constexpr std::string_view parametrizations[] = {"uniform", "chord", "centripetal"};
-static_assert(static_cast<int>(Parametrization::uniform) == 0 && static_cast<int>(Parametrization::chord) == 1 &&
-              static_cast<int>(Parametrization::centripetal) == 2);
 
 /// The smoothing fit's fields. The smoothing spline is the natural cubic spline (the
 /// minimiser over all functions with a square-integrable second derivative): degree 3,
@@ -101,8 +98,7 @@ Response fit(const Args& a) {
   }
   // The choices are listed in the order of the Parametrization enum (curves/parametrization.hpp).
   const std::string& rule = a.string("parametrization");
-  r.parametrization = static_cast<Parametrization>(std::find(std::begin(parametrizations), std::end(parametrizations), rule) -
-                                                   std::begin(parametrizations));
+  r.parametrization = *parametrization_named(rule);
   r.start_derivative = a.optional_numbers("start_derivative");
   r.end_derivative = a.optional_numbers("end_derivative");
   r.closed = a.boolean("closed");
@@ -115,7 +111,7 @@ constexpr Field fit_fields[] = {
     {"control_points", FieldType::integer, false, {}, "how many (>= 1); or give tolerance"},
     {"tolerance", FieldType::number, false, {}, "> 0: the fewest control points within it; or give control_points"},
     {"smoothing", FieldType::number_or_choice, false, {}, "lambda >= 0 or \"gcv\": the cubic smoothing spline (degree 3); or give control_points", smoothing_choices},
-    {"parametrization", FieldType::string, false, "\"chord\"", "the points' parameters, divided by the last", parametrizations},
+    {"parametrization", FieldType::string, false, "\"chord\"", "the points' parameters, divided by the last", parametrization_names},
     {"start_derivative", FieldType::vector, false, {}, "the curve's derivative at its start (open curves)"},
     {"end_derivative", FieldType::vector, false, {}, "the curve's derivative at its end (open curves)"},
     {"closed", FieldType::boolean, false, "false", "a periodic curve"},

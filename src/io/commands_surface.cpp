@@ -704,10 +704,7 @@ AnySurface revolve(const Args& a) {
 /// Parameters of a grid's rows (or columns): for each line across them, the rule's
 /// parameters (parameter_sums: equal points give a zero step) normalised; averaged over
 /// the lines whose total is positive and finite [PT97, A9.3].
-std::vector<double> grid_params(const SurfaceForm<double>& g, const std::string& rule) {
-  const Parametrization r = rule == "uniform" ? Parametrization::uniform
-                            : rule == "chord" ? Parametrization::chord
-                                              : Parametrization::centripetal;
+std::vector<double> grid_params(const SurfaceForm<double>& g, Parametrization r) {
   std::vector<double> t(g.rows, 0.0);
   std::size_t used = 0;
   dispatch_dimension(static_cast<int>(g.dim), [&]<int D>() {
@@ -820,7 +817,7 @@ std::array<int, 2> read_degrees(const Json& j, std::array<int, 2> limit) {
   return d;
 }
 
-SurfaceForm<double> interpolate_grid(const SurfaceForm<double>& g, std::array<int, 2> deg, const std::string& rule,
+SurfaceForm<double> interpolate_grid(const SurfaceForm<double>& g, std::array<int, 2> deg, Parametrization rule,
                                      std::vector<double>& tu, std::vector<double>& tv) {
   tu = grid_params(g, rule);
   tv = grid_params(casteljau::detail::transposed(g), rule);
@@ -837,7 +834,7 @@ AnySurface interpolate(const Args& a) {
   const std::array<int, 2> limit{static_cast<int>(std::min<std::size_t>(g.rows - 1, 1000)), static_cast<int>(std::min<std::size_t>(g.cols - 1, 1000))};
   const std::array<int, 2> deg = a.has("degree") ? read_degrees(a.json("degree"), limit) : std::array<int, 2>{std::min(3, limit[0]), std::min(3, limit[1])};
   std::vector<double> tu, tv;
-  return finish(interpolate_grid(g, deg, a.string("parametrization"), tu, tv), "points");
+  return finish(interpolate_grid(g, deg, *parametrization_named(a.string("parametrization")), tu, tv), "points");
 }
 
 Response fit(const Args& a) {
@@ -860,7 +857,7 @@ Response fit(const Args& a) {
     }
     n[k] = static_cast<std::size_t>(x);
   }
-  const std::string& rule = a.string("parametrization");
+  const Parametrization rule = *parametrization_named(a.string("parametrization"));
   const std::vector<double> tu = grid_params(g, rule), tv = grid_params(casteljau::detail::transposed(g), rule);
   // Least squares of the tensor product on the full grid separates: the solution is
   // (N_u^+ x N_v^+) applied to the data, one direction after the other.
@@ -1076,7 +1073,6 @@ AnySurface coons(const Args& a) {
 }
 
 constexpr std::string_view constructions[] = {"extrude", "ruled", "revolve", "loft", "coons", "interpolate", "fit"};
-constexpr std::string_view parametrizations[] = {"uniform", "chord", "centripetal"};
 
 /// The fields each construction takes (besides `construct`); any other given is an error.
 struct Takes {
@@ -1130,7 +1126,7 @@ constexpr Field surface_fields[] = {
     {"points", FieldType::json, false, {}, "interpolate, fit: the grid of data points"},
     {"control_points", FieldType::json, false, {}, "fit: [rows, columns]"},
     {"parametrization", FieldType::string, false, "\"chord\"", "interpolate, fit: the parameters of the rows and columns",
-     parametrizations},
+     parametrization_names},
 };
 
 // ---------------------------------------------------------------------------------------

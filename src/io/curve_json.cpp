@@ -8,7 +8,9 @@
 #include <limits>
 #include <numbers>
 #include <optional>
+#include <span>
 #include <string>
+#include <string_view>
 #include <type_traits>
 #include <utility>
 #include <variant>
@@ -214,7 +216,7 @@ struct Format<Lagrange> {
 
 /// The name of `j` among `names` (a string field), or InvalidArgument(where, "must be 'a',
 /// 'b' or 'c', got 'x'").
-std::size_t choice_from_json(const Json& j, std::string_view where, std::initializer_list<std::string_view> names) {
+std::size_t choice_from_json(const Json& j, std::string_view where, std::span<const std::string_view> names) {
   const std::string s = string_from_json(j, where);
   std::size_t i = 0;
   std::string list;
@@ -225,6 +227,12 @@ std::size_t choice_from_json(const Json& j, std::string_view where, std::initial
   }
   throw InvalidArgument(std::string(where), "must be " + list + ", got " + io::quoted(s));
 }
+
+std::size_t choice_from_json(const Json& j, std::string_view where, std::initializer_list<std::string_view> names) {
+  return choice_from_json(j, where, std::span<const std::string_view>(names.begin(), names.size()));
+}
+
+constexpr std::string_view ends_names[] = {"inner", "reflect"};  // CatmullRomEnds' order
 
 template <>
 struct Format<CatmullRom> {
@@ -237,7 +245,7 @@ struct Format<CatmullRom> {
     const bool closed = f.has("closed") && boolean_from_json(*f.optional("closed"), "closed");
     CatmullRomEnds ends = CatmullRomEnds::inner;
     if (const Json* ej = f.optional("ends")) {
-      ends = static_cast<CatmullRomEnds>(choice_from_json(*ej, "ends", {"inner", "reflect"}));
+      ends = static_cast<CatmullRomEnds>(choice_from_json(*ej, "ends", ends_names));
       if (closed) throw InvalidArgument("ends", "belongs to open curves: a closed catmull_rom has no end points");
     }
     const bool reflect = ends == CatmullRomEnds::reflect;
@@ -358,7 +366,7 @@ RawInterpolation read_interpolation_data(const Fields& f, std::string_view noun)
   if (pj) {
     r.params = numbers_from_json(*pj, "params");
   } else if (rule) {
-    const auto kind = static_cast<Parametrization>(choice_from_json(*rule, "parametrization", {"uniform", "chord", "centripetal"}));
+    const auto kind = static_cast<Parametrization>(choice_from_json(*rule, "parametrization", parametrization_names));
     r.params = dispatch_dimension(r.P.dim, [&]<int D>() { return parameters_from_points(r.P.template points<D>(), kind); });
   } else {
     throw InvalidArgument("params", "required field is missing (or give parametrization)");

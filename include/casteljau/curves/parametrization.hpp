@@ -3,7 +3,11 @@
 #pragma once
 
 #include <cmath>
+#include <algorithm>
+#include <iterator>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "casteljau/core/point.hpp"
@@ -13,6 +17,16 @@ namespace casteljau {
 /// How parameters grow from one data point to the next: by 1 (uniform), by |P_(i+1) - P_i|
 /// (chord) or by its square root (centripetal) [Farin02, 9.4; Lee89].
 enum class Parametrization { uniform, chord, centripetal };
+
+/// The rules' names, in the enum's order (the JSON field `parametrization`).
+inline constexpr std::string_view parametrization_names[] = {"uniform", "chord", "centripetal"};
+
+/// The rule with the given name, or nothing.
+inline std::optional<Parametrization> parametrization_named(std::string_view name) {
+  const auto* at = std::find(std::begin(parametrization_names), std::end(parametrization_names), name);
+  if (at == std::end(parametrization_names)) return std::nullopt;
+  return static_cast<Parametrization>(at - std::begin(parametrization_names));
+}
 
 namespace detail {
 
