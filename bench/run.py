@@ -94,6 +94,9 @@ def medians(doc):
         if b.get("run_type") == "aggregate":
             continue
         name = b.get("run_name", b["name"]).removesuffix("/real_time")
+        if b.get("error_occurred"):  # a skipped row (SkipWithError): no times to report
+            print(f"run.py: {name} skipped: {b.get('error_message', '')}", file=sys.stderr)
+            continue
         reps.setdefault(name, []).append(b)
     rows = {}
     for name, runs in sorted(reps.items(), key=lambda kv: kv[1][0].get("family_index", 0)):

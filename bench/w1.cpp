@@ -13,8 +13,14 @@
 #include <string>
 #include <vector>
 
-#if defined(__AVX2__) || defined(__AVX512F__)
+// The ceiling kernels are compiled in both builds, with function-level target attributes
+// (the generic build's x86-64 baseline has neither AVX2 nor AVX-512), and run where the CPU
+// has the instructions.
+#if defined(__x86_64__) || defined(__i386__)
+#define CASTELJAU_BENCH_W1_X86 1
 #include <immintrin.h>
+#else
+#define CASTELJAU_BENCH_W1_X86 0
 #endif
 
 #include "casteljau/algo/evaluate.hpp"
@@ -232,13 +238,25 @@ void plain_horner_aos(benchmark::State& state) {
   finish(state, w.diff_aos());
 }
 
-// ---- ceilings: hand-written FMA Horner (compiled only where the ISA is enabled) ----
+// ---- ceilings: hand-written FMA Horner ----
+// The AVX-512 pass is compiled in both builds (target attribute) for the paired row; the
+// ceiling rows of their own stay in the build whose flags enable their instruction set.
 
-#if defined(__AVX512F__)
+/// Whether this CPU (and the OS, which must save the registers: __builtin_cpu_supports
+/// checks both) runs the AVX-512 ceiling.
+bool cpu_has_avx512() {
+#if CASTELJAU_BENCH_W1_X86
+  return __builtin_cpu_supports("avx512f");
+#else
+  return false;
+#endif
+}
+
+#if CASTELJAU_BENCH_W1_X86
 /// window: write every curve into the same 1000-point L1-resident window (compute limit;
-/// the output is not kept, so no correctness figure).
+/// the output is not kept, so no correctness figure). Call only where cpu_has_avx512().
 template <bool Stream, bool Window>
-void ceiling_avx512_pass(W1& w) {
+__attribute__((target("avx512f"))) void ceiling_avx512_pass(W1& w) {
   const double* ts = w.data.ts.data();
   constexpr std::size_t window = 1000;  // 16 KB of x and y together, well inside L1
   for (std::size_t i = 0; i < w.data.curves; ++i) {
@@ -264,7 +282,9 @@ void ceiling_avx512_pass(W1& w) {
   }
   if constexpr (Stream) _mm_sfence();
 }
+#endif
 
+#if defined(__AVX512F__)
 template <bool Stream, bool Window>
 void ceiling_avx512(benchmark::State& state) {
   W1& w = W1::get();
@@ -443,10 +463,14 @@ void occt_plib_polynomial(benchmark::State& state) {
 /// the thread's CPU time, and the median of each pass's times (ms). This host's write bandwidth moves by up to 1.7x between runs a
 /// minute apart (and within a run): separate rows, even interleaved, compare passes that
 /// saw different bandwidth; two passes 10 ms apart see the same. The row's own time is
-/// that of both passes. Reference: the non-temporal AVX-512 ceiling where it is compiled
-/// (the native build), memset of the output's 160 MB in both builds.
+/// that of both passes. Reference: the non-temporal AVX-512 ceiling (both builds; the row
+/// is skipped with an error on a CPU without AVX-512F), or memset of the output's 160 MB.
 template <bool Ceiling>
 void paired(benchmark::State& state) {
+  if (Ceiling && !cpu_has_avx512()) {
+    state.SkipWithError("this CPU has no AVX-512F: no non-temporal AVX-512 ceiling to pair with");
+    return;
+  }
   W1& w = W1::get();
   const std::span<const Curve> curves(w.curves);
   const std::span<const double> ts(w.data.ts);
@@ -456,7 +480,7 @@ void paired(benchmark::State& state) {
   };
   int v = 0;
   auto reference = [&] {
-#if defined(__AVX512F__)
+#if CASTELJAU_BENCH_W1_X86
     if constexpr (Ceiling) {
       ceiling_avx512_pass<true, false>(w);
       return;
@@ -564,9 +588,7 @@ int register_all() {
   reg("W1/ceiling/avx512_fma_l1_window", ceiling_avx512<false, true>);
 #endif
   reg("W1/paired/batch_soa_over_memset", paired<false>);
-#if defined(__AVX512F__)
   reg("W1/paired/batch_soa_over_ceiling_nt", paired<true>);
-#endif
 #if CASTELJAU_BENCH_HAVE_2GEOM
   reg("W1/lib2geom/pointAt", geom_point_at);
   reg("W1/lib2geom/curve_pointAt", geom_curve_point_at);
