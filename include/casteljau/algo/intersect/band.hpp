@@ -63,13 +63,6 @@ std::array<std::vector<T>, 2> hodograph_numerator(const Homogeneous<T>& h) {
   return {one(h.x), one(h.y)};
 }
 
-template <class T>
-T max_abs(const std::vector<T>& c) {
-  T m = 0;
-  for (T x : c) m = std::max(m, std::abs(x));
-  return m;
-}
-
 /// Largest angle (radians) between a band's direction e and a tangent of either part.
 /// Within it, e . c(u) is monotone along both parts, and along a stretch of arc length L
 /// the curves advance by at least cos(2 band_angle) L = 0.98 L along any tangent of theirs.
@@ -106,7 +99,7 @@ std::optional<PartBounds<T>> part_bounds(const Homogeneous<T>& h, const Vector<T
     for (std::size_t i = 0; i < dx.size(); ++i) q2_max = std::max(q2_max, norm(Vector<T, 2>{dx[i], dy[i]}));
   }
   const T w_min = *std::min_element(h.w.begin(), h.w.end()), w_max = *std::max_element(h.w.begin(), h.w.end());
-  const T w1_max = h.w.size() > 1 ? max_abs(bernstein_derivative_coefficients<T>(h.w)) : T(0);
+  const T w1_max = h.w.size() > 1 ? casteljau::detail::max_abs<T>(std::span<const T>(bernstein_derivative_coefficients<T>(h.w))) : T(0);
   // c' = Q / W^2 and c'' = (Q' W - 2 Q W') / W^3.
   const T speed = q_along / (w_max * w_max), accel = (q2_max * w_max + 2 * q_max * w1_max) / (w_min * w_min * w_min);
   if (!(speed > 0) || !(w_min > 0)) return std::nullopt;
@@ -268,7 +261,7 @@ BandResult band(const CA& a, T alo, T ahi, const CB& b, T blo, T bhi, Context<T>
   // |beta| >= |h| / den_hi everywhere; |beta| <= |h| / den_lo.
   const T den_hi = wa_max * wb_max * qb->q_max, den_lo = wa_min * wb_min * qb->q_along;
   const T near_hi = (ctx.tol + E) * den_hi;
-  const T h_max = max_abs(h);
+  const T h_max = casteljau::detail::max_abs<T>(std::span<const T>(h));
   if (std::all_of(h.begin(), h.end(), [&](T c) { return c > T(2.5) * near_hi; }) ||
       std::all_of(h.begin(), h.end(), [&](T c) { return c < T(-2.5) * near_hi; }))
     return BandResult::done;  // apart by more than 2 tol all along: nothing (arc ends included)
@@ -281,7 +274,7 @@ BandResult band(const CA& a, T alo, T ahi, const CB& b, T blo, T bhi, Context<T>
   // angle of 1e-8), and neighbouring parts computing it differently must not both drop
   // it. The duplicates let through merge later (merge_fraction, or as one touch).
   T coordinate_max = 0;
-  for (const auto* c : {&HA.x, &HA.y, &HB.x, &HB.y}) coordinate_max = std::max(coordinate_max, max_abs(*c));
+  for (const auto* c : {&HA.x, &HA.y, &HB.x, &HB.y}) coordinate_max = std::max(coordinate_max, casteljau::detail::max_abs<T>(std::span<const T>(*c)));
   const T h_noise = 32 * std::numeric_limits<T>::epsilon() * coordinate_max * qb->q_max;
   const auto dh = bernstein_derivative_coefficients<T>(h);
   // Values of h and its derivatives at their roots: O(n) past degree 32 of the pieces (h has
