@@ -344,6 +344,36 @@ class SelfTest(CliTest):
         self.assert_close(r["intersections"][0]["point"], [0, 0], 1e-15)
         self.assertEqual(r["intersections"][0]["kind"], "crossing")
 
+    def test_crossing_near_a_stationary_end(self):
+        # A raw offset (the cubic (0,0),(2,2),(0,2),(2,0) offset by 1, its first three
+        # cubics): A's last two control points coincide (its velocity is zero at t = 1, the
+        # offset's cusp) and A crosses C once, which the engine seeded at A's end, where
+        # Newton cannot move (the crossing was missed). Oracle: the sampled polylines'
+        # crossing, refined in mpmath at 50 digits.
+        A = [[-0.7071067811865476, 0.7071067811865476], [-0.08456295992362872, 1.3296506024494663],
+             [0.015191811099056197, 1.6524085919046994], [0.015191811099056318, 1.6524085919046998]]
+        B = [[0.015191811099056318, 1.6524085919046998], [0.003275790270595831, 1.6119174521309902],
+             [0.0, 1.5507070218610077], [0.0, 1.5]]
+        C = [[0.0, 1.5], [-9.004923695632284e-17, 2.2353078211531567], [0.770280855301764, 2.7197978137413275],
+             [1.433061226762282, 2.401364506664838]]
+        found = polyline_crossings(A, C, 1000)
+        self.assertEqual(len(found), 1, found)
+        s, t = mp_refine(A, C, *found[0])
+        # The path A, B, C (t in [0, 3]): the crossing at (s, 2 + t) is among its
+        # self-intersections.
+        path = {"type": "path", "segments": [bezier(A), bezier(B), bezier(C)]}
+        r = self.ok("intersect", {"curves": [path]})
+        near = [x for x in r["intersections"] if abs(x["t"][0] - s) < 1e-6]
+        self.assertEqual(len(near), 1, r)
+        self.assert_close(near[0]["t"], [s, 2 + t], 1e-12)
+        self.assertEqual(near[0]["kind"], "crossing")
+        # A elevated to degree 4 (the same curve; the general engine, not the cubic fast
+        # path) against C.
+        A4 = [A[0]] + [[(k * A[k - 1][d] + (4 - k) * A[k][d]) / 4 for d in range(2)] for k in range(1, 4)] + [A[3]]
+        r = self.ok("intersect", {"curves": [bezier(A4), bezier(C)]})
+        self.assertEqual(len(r["intersections"]), 1, r)
+        self.assert_close(r["intersections"][0]["t"], [s, t], 1e-12)
+
 
 def random_cubic(rng):
     return [[rng.random(), rng.random()] for _ in range(4)]

@@ -97,14 +97,30 @@ void subdivide(const CA& a, T alo, T ahi, int da, const CB& b, T blo, T bhi, int
   }
   // Parts whose tangent cones are separated meet at most once: one seed, at the closest
   // points of their chords, which the refinement takes to the crossing or, where the
-  // parts do not meet, to their closest approach (then discarded as a near miss).
+  // parts do not meet, to their closest approach (then discarded as a near miss). The
+  // seed is refined here: where the refinement does not reach a common point, the parts
+  // are split further as any others (the crossing, if any, is then seeded from a smaller
+  // part). Newton cannot leave a seed at a stationary end of a part, where the velocity
+  // is zero (an offset's cusp ends its cubic with a zero handle): from there a crossing
+  // elsewhere in the part was lost. A seed that refines to a common point of these two
+  // parts (not of other parts of the arcs, whose own crossing this pair would then miss)
+  // is kept at its refined point.
   if (const auto ka = tangent_cone(a)) {
     if (const auto kb = tangent_cone(b); kb && cones_separated(*ka, *kb)) {
       const auto& P = a.points();
       const auto& Q = b.points();
       const auto c = chord_closest(P.front(), P.back(), Q.front(), Q.back());
-      ctx.seeds.push_back({alo + c.u * (ahi - alo), blo + c.v * (bhi - blo)});
-      return;
+      const T s = alo + c.u * (ahi - alo), t = blo + c.v * (bhi - blo);
+      if (!ctx.fa || !ctx.fb) {
+        ctx.seeds.push_back({s, t});
+        return;
+      }
+      const Refined<T> r = refine(*ctx.fa, *ctx.ra, *ctx.fb, *ctx.rb, s, t);
+      const T ma = T(1e-6) * (ahi - alo), mb = T(1e-6) * (bhi - blo);
+      if (r.distance <= ctx.tol && r.s >= alo - ma && r.s <= ahi + ma && r.t >= blo - mb && r.t <= bhi + mb) {
+        ctx.seeds.push_back({r.s, r.t});
+        return;
+      }
     }
   }
   // Near-coincident parts (narrow tangent cones along one direction): decided at once on
