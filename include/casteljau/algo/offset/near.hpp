@@ -18,6 +18,7 @@
 
 #include "casteljau/algo/offset/common.hpp"
 #include "casteljau/algo/project.hpp"
+#include "casteljau/core/interval.hpp"
 #include "casteljau/curves/piecewise.hpp"
 
 namespace casteljau::detail::offset {
@@ -29,21 +30,12 @@ template <class T>
 struct Nearness {
   static constexpr std::size_t max_points = 16;  // polynomial pieces up to degree 15 by subdivision
   std::vector<BezierPiece<T, 2>> pieces;
-  std::vector<std::array<Point<T, 2>, 2>> boxes;
+  std::vector<Box<T, 2>> boxes;
   T leaf = 0;  ///< the box diagonal at which subdivision stops (a fraction of the tolerance)
 
   void add(const BezierPiece<T, 2>& piece) {
-    std::array<Point<T, 2>, 2> box{};
-    std::visit(
-        [&](const auto& c) {
-          box = {c.points().front(), c.points().front()};
-          for (const auto& p : c.points()) {
-            for (int k = 0; k < 2; ++k) box[0][k] = std::min(box[0][k], p[k]), box[1][k] = std::max(box[1][k], p[k]);
-          }
-        },
-        piece);
     pieces.push_back(piece);
-    boxes.push_back(box);
+    boxes.push_back(std::visit([](const auto& c) { return c.control_bounds(); }, piece));
   }
   /// Whether the polynomial piece with control points P[0..m) comes nearer to p than r.
   /// Its control points lie within e of its chord S (the segment between its ends), so the
@@ -90,10 +82,9 @@ struct Nearness {
 
   void build_grid(T r) {
     reach = r;
-    Point<T, 2> lo = boxes.front()[0], hi = boxes.front()[1];
-    for (const auto& b : boxes) {
-      for (int k = 0; k < 2; ++k) lo[k] = std::min(lo[k], b[0][k]), hi[k] = std::max(hi[k], b[1][k]);
-    }
+    Box<T, 2> all;
+    for (const auto& b : boxes) all.add(b);
+    const Point<T, 2> lo = all.lo, hi = all.hi;
     const T w = hi[0] - lo[0], h = hi[1] - lo[1];
     const T budget = T(4 * boxes.size() + 16);
     cell = std::max({r, std::sqrt(w * h / budget), std::max(w, h) / budget, std::numeric_limits<T>::min()});
@@ -101,8 +92,8 @@ struct Nearness {
     grid_lo = lo;
     cells.assign(nx * ny, {});
     for (std::size_t i = 0; i < boxes.size(); ++i) {
-      const auto [x0, y0] = at(boxes[i][0]);
-      const auto [x1, y1] = at(boxes[i][1]);
+      const auto [x0, y0] = at(boxes[i].lo);
+      const auto [x1, y1] = at(boxes[i].hi);
       for (std::size_t y = y0; y <= y1; ++y)
         for (std::size_t x = x0; x <= x1; ++x) cells[y * nx + x].push_back(static_cast<std::uint32_t>(i));
     }
@@ -116,8 +107,8 @@ struct Nearness {
     return {idx(q[0] - grid_lo[0], nx), idx(q[1] - grid_lo[1], ny)};
   }
   bool near_piece(std::size_t i, const Point<T, 2>& p, T r) const {
-    const T dx = std::max({boxes[i][0][0] - p[0], T(0), p[0] - boxes[i][1][0]});
-    const T dy = std::max({boxes[i][0][1] - p[1], T(0), p[1] - boxes[i][1][1]});
+    const T dx = std::max({boxes[i].lo[0] - p[0], T(0), p[0] - boxes[i].hi[0]});
+    const T dy = std::max({boxes[i].lo[1] - p[1], T(0), p[1] - boxes[i].hi[1]});
     if (dx * dx + dy * dy >= r * r) return false;
     return std::visit(
         [&](const auto& c) {

@@ -1,9 +1,10 @@
 // The offset's trim (phase of algo/offset.hpp): the raw offset cut at its self-crossings
-// (raw_crossings, by intersect()), at the round caps of an open curve's ends
-// (cap_crossings), at its cusps and join ends; each part judged by the distance of samples
-// to the curve (near.hpp) and kept where it is at least |d| - tol away
-// (trimmed_intervals); the kept intervals made into parts of cubics, a gap between parts
-// that do not meet (trimmed_cubics). Depends on common.hpp, near.hpp and algo/intersect.hpp.
+// (raw_crossings: the pairs whose control boxes meet, by intersect()), at the round caps
+// of an open curve's ends (cap_crossings), at its cusps and join ends; each part judged by
+// the distance of samples to the curve (near.hpp) and kept where it is at least |d| - tol
+// away (trimmed_intervals); the kept intervals made into parts of cubics, a gap between
+// parts that do not meet (trimmed_cubics). Depends on common.hpp, near.hpp and
+// algo/intersect.hpp (intersect(), isect::boxes_meet).
 #pragma once
 
 #include <algorithm>
@@ -16,6 +17,7 @@
 #include <vector>
 
 #include "casteljau/algo/intersect.hpp"
+#include "casteljau/algo/intersect/prepare.hpp"
 #include "casteljau/algo/offset/common.hpp"
 #include "casteljau/algo/offset/near.hpp"
 #include "casteljau/core/error.hpp"
@@ -30,11 +32,8 @@ namespace casteljau::detail::offset {
 /// narrowed by bisection. Appends the raw parameters i + u.
 template <class T>
 void cap_crossings(const Quad<T>& Q, std::size_t i, const Point<T, 2>& e, T r, T eps, std::vector<T>& out) {
-  T lo[2], hi[2];
-  for (int k = 0; k < 2; ++k) {
-    lo[k] = hi[k] = Q[0][k];
-    for (const auto& p : Q) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
-  }
+  const Box<T, 2> box = box_of<T, 2>(Q);
+  const Point<T, 2> lo = box.lo, hi = box.hi;
   const T dx = std::max({lo[0] - e[0], T(0), e[0] - hi[0]}), dy = std::max({lo[1] - e[1], T(0), e[1] - hi[1]});
   if (std::sqrt(dx * dx + dy * dy) > r + eps) return;  // the box outside the circle
   const T fx = std::max(std::abs(lo[0] - e[0]), std::abs(hi[0] - e[0])), fy = std::max(std::abs(lo[1] - e[1]), std::abs(hi[1] - e[1]));
@@ -70,24 +69,17 @@ void cap_crossings(const Quad<T>& Q, std::size_t i, const Point<T, 2>& e, T r, T
 template <class T>
 void raw_crossings(const Raw<T>& raw, std::vector<T>& out) {
   const std::size_t n = raw.cubics.size();
-  std::vector<std::array<T, 4>> box(n);  // x lo, x hi, y lo, y hi
-  for (std::size_t i = 0; i < n; ++i) {
-    const Quad<T>& Q = raw.cubics[i];
-    box[i] = {Q[0][0], Q[0][0], Q[0][1], Q[0][1]};
-    for (const auto& p : Q) {
-      box[i][0] = std::min(box[i][0], p[0]), box[i][1] = std::max(box[i][1], p[0]);
-      box[i][2] = std::min(box[i][2], p[1]), box[i][3] = std::max(box[i][3], p[1]);
-    }
-  }
+  std::vector<Box<T, 2>> box(n);
+  for (std::size_t i = 0; i < n; ++i) box[i] = box_of<T, 2>(raw.cubics[i]);
   std::vector<std::size_t> order(n);
   for (std::size_t i = 0; i < n; ++i) order[i] = i;
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return box[a][0] < box[b][0]; });
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return box[a].lo[0] < box[b].lo[0]; });
   const T slack = 64 * std::numeric_limits<T>::epsilon();  // in the unit frame
   for (std::size_t a = 0; a < n; ++a) {
     const std::size_t i = order[a];
-    for (std::size_t b = a + 1; b < n && box[order[b]][0] <= box[i][1] + slack; ++b) {
+    for (std::size_t b = a + 1; b < n && box[order[b]].lo[0] <= box[i].hi[0] + slack; ++b) {
       const std::size_t j = order[b];
-      if (box[j][2] > box[i][3] + slack || box[i][2] > box[j][3] + slack) continue;
+      if (!isect::boxes_meet(box[j], box[i], slack)) continue;  // (in x they meet: the sweep)
       const Quad<T>& P = raw.cubics[i];
       const Quad<T>& Q = raw.cubics[j];
       // Neighbours that lie on either side of a line through their shared end (every other
