@@ -303,4 +303,118 @@ TEST(Offset, CornersAndErrors) {
   EXPECT_THROW((void)offset(L, o), InvalidArgument);
 }
 
+
+// The offset's phases alone (algo/offset/: detail::offset), against closed forms.
+
+TEST(OffsetPhases, StretchesCutAtTheParabolasOffsetCusps) {
+  // y = x^2, x = 2t - 1: curvature kappa(x) = 2 / (1 + 4 x^2)^(3/2), radius 1/2 at the vertex.
+  // At d = 1 the offset's cusps are where kappa = 1: x = +-sqrt(2^(2/3) - 1) / 2; between
+  // them 1 - d kappa < 0 (the offset runs backwards).
+  const B2 parabola({P2(-1, 1), P2(0, -1), P2(1, 1)});
+  const double tiny = 64 * std::numeric_limits<double>::epsilon();
+  const double x = std::sqrt(std::cbrt(4.0) - 1) / 2;
+  const auto s = detail::offset::stretches<double>(parabola, 1.0, tiny);
+  ASSERT_EQ(s.size(), 3u);
+  EXPECT_EQ(s[0].lo, 0.0);
+  EXPECT_NEAR(s[0].hi, (1 - x) / 2, 1e-12);
+  EXPECT_NEAR(s[1].hi, (1 + x) / 2, 1e-12);
+  EXPECT_EQ(s[2].hi, 1.0);
+  EXPECT_EQ(s[0].hi, s[1].lo);
+  EXPECT_EQ(s[1].hi, s[2].lo);
+  EXPECT_FALSE(s[0].reversed);
+  EXPECT_TRUE(s[1].reversed);
+  EXPECT_FALSE(s[2].reversed);
+  // The curve's unit tangent (1, 2x) / sqrt(1 + 4 x^2) at the ends: (1, -2) / sqrt(5) at x = -1.
+  EXPECT_LT(norm(s[0].t_lo - V2(1, -2) / std::sqrt(5.0)), 1e-15);
+  EXPECT_LT(norm(s[2].t_hi - V2(1, 2) / std::sqrt(5.0)), 1e-15);
+  // Below the radius at the vertex: one stretch; at it (d = 1/2, a touch of 1 - d kappa =
+  // 24 (t - 1/2)^2 + O((t - 1/2)^4)): cut at the vertex, neither half reversed.
+  const auto below = detail::offset::stretches<double>(parabola, 0.3, tiny);
+  ASSERT_EQ(below.size(), 1u);
+  EXPECT_FALSE(below[0].reversed);
+  const auto touch = detail::offset::stretches<double>(parabola, 0.5, tiny);
+  ASSERT_EQ(touch.size(), 2u);
+  EXPECT_NEAR(touch[0].hi, 0.5, 1e-6);  // a minimum of |1 - d kappa| by golden section: sqrt(eps)
+  EXPECT_FALSE(touch[0].reversed);
+  EXPECT_FALSE(touch[1].reversed);
+}
+
+TEST(OffsetPhases, MeasuresOfTheClassicQuarterCircleCubic) {
+  // The cubic (1, 0), (1, k), (k, 1), (0, 1), k = 4 (sqrt 2 - 1) / 3, against the unit
+  // quarter circle: it lies outside, its ends and middle on the circle, and its distance
+  // |B(u)| - 1 (each point's to the circle, along the radii: the circle's normal lines) is
+  // largest at u = 1/2 -+ sqrt(3) / 6, 2.7253e-4 (the textbook figure).
+  const double k = 4 * (std::sqrt(2.0) - 1) / 3;
+  const detail::offset::CubicForm<double> F(P2(1, 0), P2(1, k), P2(k, 1), P2(0, 1));
+  const double u = 0.5 - std::sqrt(3.0) / 6;
+  const P2 top = B2({P2(1, 0), P2(1, k), P2(k, 1), P2(0, 1)})(u);
+  const double exact = norm(top.to_vector()) - 1;
+  EXPECT_NEAR(exact, 2.7253e-4, 1e-8);
+  detail::offset::Source<double> arc;
+  arc.point = [](double s) { return P2(std::cos(s), std::sin(s)); };
+  arc.velocity = [](double s) { return V2(-std::sin(s), std::cos(s)); };
+  arc.tangent = arc.velocity;
+  arc.frame = [](double s) { return std::pair{P2(std::cos(s), std::sin(s)), V2(-std::sin(s), std::cos(s))}; };
+  arc.lo = 0, arc.hi = std::numbers::pi / 2;
+  const double inf = std::numeric_limits<double>::infinity();
+  // The projections both ways (hausdorff, and from partners) find the bumps' tops to about
+  // 1e-5 relative, as their refinement promises. The normal-line measure counts the top of
+  // each parabola through three feet (the first 1/20 of the arc apart), which errs high
+  // (the safe side): on this bump by 6e-4 of its height, within 1e-3 and never below. The
+  // distance at equal parameters (the arc's angle against the cubic's u) bounds them all.
+  const double scan = detail::offset::measured(F, arc, arc.lo, arc.hi, inf);
+  const double proj = detail::offset::hausdorff(F, arc, arc.lo, arc.hi, inf);
+  const double partners = detail::offset::partner_distance(F, arc, arc.lo, arc.hi, inf);
+  const double param = detail::offset::parametric(F, arc, arc.lo, arc.hi, inf);
+  EXPECT_GE(scan, exact * (1 - 1e-5));
+  EXPECT_LE(scan, exact * (1 + 1e-3));
+  EXPECT_NEAR(proj, exact, 1e-5 * exact);
+  EXPECT_NEAR(partners, exact, 1e-5 * exact);
+  EXPECT_GE(param, exact * (1 - 1e-5));
+  // A stop above: the measure stops once a sample exceeds it (a value above it).
+  EXPECT_GT(detail::offset::measured(F, arc, arc.lo, arc.hi, 1e-4), 1e-4);
+}
+
+TEST(OffsetPhases, JoinsAtARightAngle) {
+  // The corner (2, 0) turning left from (1, 0) to (0, 1), by 90 degrees.
+  const detail::offset::Corner<double> c{P2(2, 0), V2(1, 0), V2(0, 1)};
+  const auto joined = [&](double d, OffsetJoin kind, double limit) {
+    detail::offset::Raw<double> raw;
+    raw.tolerance = 1e-9, raw.max_segments = 100;
+    OffsetOptions<double> o;
+    o.join = kind, o.miter_limit = limit;
+    detail::offset::join(c, o, d, raw);
+    return raw;
+  };
+  // Inside (d > 0, the side of the turn): the line from (2, 0.5) back to (1.5, 0), reversed.
+  const auto inner = joined(0.5, OffsetJoin::round, 4);
+  ASSERT_EQ(inner.cubics.size(), 1u);
+  EXPECT_TRUE(inner.reversed[0]);
+  EXPECT_EQ(inner.kind[0], detail::offset::RawKind::inner_join);
+  EXPECT_LT(norm(inner.cubics[0][0] - P2(2, 0.5)), 1e-15);
+  EXPECT_LT(norm(inner.cubics[0][3] - P2(1.5, 0)), 1e-15);
+  // Outside (d < 0): a miter to the meeting point (2.5, -0.5) of the offset lines while
+  // 1 / cos(45 degrees) = sqrt(2) is within the limit, a bevel (one line) past it.
+  const auto miter = joined(-0.5, OffsetJoin::miter, 1.5);
+  ASSERT_EQ(miter.cubics.size(), 2u);
+  EXPECT_LT(norm(miter.cubics[0][3] - P2(2.5, -0.5)), 1e-15);
+  EXPECT_EQ(miter.kind[0], detail::offset::RawKind::outer_join);
+  EXPECT_EQ(miter.corner[0], P2(2, 0));
+  const auto bevel = joined(-0.5, OffsetJoin::miter, 1.4);
+  ASSERT_EQ(bevel.cubics.size(), 1u);
+  EXPECT_LT(norm(bevel.cubics[0][0] - P2(2, -0.5)), 1e-15);
+  EXPECT_LT(norm(bevel.cubics[0][3] - P2(2.5, 0)), 1e-15);
+  // Round: cubics of the quarter circle of radius 0.5 about the corner, within the
+  // tolerance (their control points' distance is no bound; the cubics' is sampled).
+  const auto round = joined(-0.5, OffsetJoin::round, 4);
+  ASSERT_FALSE(round.cubics.empty());
+  EXPECT_LE(round.max_error, 1e-9);
+  for (const auto& Q : round.cubics) {
+    const B2 b({Q[0], Q[1], Q[2], Q[3]});
+    for (int j = 0; j <= 64; ++j) EXPECT_NEAR(norm(b(j / 64.0) - P2(2, 0)), 0.5, 1e-9 * (1 + 1e-3));
+  }
+  EXPECT_LT(norm(round.cubics.front()[0] - P2(2, -0.5)), 1e-15);
+  EXPECT_LT(norm(round.cubics.back()[3] - P2(2.5, 0)), 1e-15);
+}
+
 }  // namespace
