@@ -21,10 +21,12 @@
 namespace casteljau {
 
 /// A fitted curve and its error: the largest |C(t_k) - Q_k| over the data; the control
-/// point count of the fit (for a closed fit the n of the periodic spline, before its
-/// writing on [0, 1] repeats p of them), and for a tolerance search whether every smaller
-/// count was tried and failed (the count is then the fewest that meets the tolerance
-/// with the knots fit places for each count; otherwise the fewest found).
+/// point count of the curve (for a closed fit the n of the periodic spline, before its
+/// writing on [0, 1] repeats p of them), and for a tolerance search whether the count is
+/// proven the fewest for the curve's knots: true only when they are the knots of
+/// [PT97, eq. 9.68-9.69] and every smaller count was tried with them and failed; false
+/// when the search's knot placement gave the answer (fewer control points than those
+/// knots allow, but no placement is proven best) or the work limit cut the scan short.
 template <class T, int D>
 struct FitResult {
   BSpline<T, D> curve;
@@ -37,7 +39,7 @@ struct FitResult {
 /// second of one core at the slowest measured rate (18 ns per step). Above it a fit is
 /// refused naming "degree" or "points" (one fit too costly) or "tolerance" (the search's
 /// bisection alone too costly); the tolerance search spends what is left after its
-/// bisection on the counts below the one found.
+/// bisection on knot placement (at most half of it) and on the counts below the one found.
 inline constexpr double fit_work_limit = 6e7;
 
 namespace detail {
@@ -684,12 +686,16 @@ struct FitRequest {
 /// Fits the points as the request says; max_error is the largest distance from a data
 /// point to the curve at that point's parameter, count the control point count used.
 /// With a tolerance the count is searched: bisection between the least that can be fitted
-/// and interpolation finds a count that passes; max_error is not monotone in the count,
-/// so the counts below it are then tried, all of them upwards from the least when the
-/// work limit allows (proven_fewest: the fewest count that meets the tolerance, with the
-/// knots this function places for each count), else as many just below as it allows
-/// (the fewest found); a count whose system is singular counts as failing; if only
-/// interpolation is within the tolerance it is the answer. Work: about
+/// and interpolation (knots of eq. 9.68-9.69 for each count) finds a count that passes;
+/// knot placement (equidistribution, detail::equidistributed_breaks) then meets the
+/// tolerance with fewer where it can; max_error is not monotone in the count, so the
+/// counts below the answer are then tried with eq. 9.68-9.69's knots, all of them upwards
+/// from the least when the work limit allows, else as many just below as it allows; a
+/// count whose system is singular counts as failing; if only interpolation is within the
+/// tolerance it is the answer. count is the answer's (closed: n, as below);
+/// proven_fewest is true only when the answer's knots are eq. 9.68-9.69's and every
+/// smaller count was tried with them (the fewest for those knots; never when the
+/// placement found it: no placement is proven best). Work: about
 /// detail::fit_work(points, p) per fit; a request above fit_work_limit is refused
 /// ("degree", or "points" when no degree would do; "tolerance" when the bisection alone
 /// exceeds it), so that every request answers in about a second. Closed fits (the closing
@@ -909,10 +915,11 @@ FitResult<T, D> fit(std::vector<Point<T, D>> Q, const FitRequest<T, D>& req) {
   // otherwise downwards from the answer as far as it goes (max_error is not monotone in
   // the count, so a count below a failing one may pass). If that found a count below the
   // placement's, the placement runs again from it with what is left.
-  place(trials + (budget - trials) / 2);
+  const auto left = [&] { return budget > trials ? budget - trials : 0; };
+  place(trials + left() / 2);
   const std::size_t placed_count = best_count;
   bool exhaustive = false;
-  if (best_count - least <= budget - trials) {
+  if (best_count - least <= left()) {
     for (std::size_t c = least; c < best_count; ++c)
       if (try_count(c)) break;
     exhaustive = true;
