@@ -829,9 +829,10 @@ FitResult<T, D> fit(std::vector<Point<T, D>> Q, const FitRequest<T, D>& req) {
   // placement_rounds - 1 more from the measured error of the latest fit at that count
   // (which failed), as de Boor iterates NEWNOT. The step down starts at one control point
   // and doubles after each success, halves after a failure, and the placement stops
-  // when a step of one fails every round or its budget is spent. Each round is one fit
-  // of the budget (its knot step, one derivative per span and one pass over the data,
-  // costs less than the fit). Knots that leave a span without data or break the
+  // when a step of one fails every round or its budget is spent. Each round counts as one
+  // fit of the budget, two when it measures the error first (a pass over the data, an
+  // evaluation per point, about what the fit's own costs; the derivative per span of the
+  // knot step is fewer evaluations than that). Knots that leave a span without data or break the
   // Schoenberg-Whitney condition are blended towards those of eq. 9.68-9.69 (which
   // satisfy both) until they pass; a system the solver still finds singular fails that
   // round's count. Measured on 200 noisy points (docs/cli.md): 10 rounds gave most of
@@ -879,7 +880,7 @@ FitResult<T, D> fit(std::vector<Point<T, D>> Q, const FitRequest<T, D>& req) {
         } catch (const NumericalError&) {  // a derivative that overflows: no placement
         }
         if (knots.empty()) break;
-        ++trials;
+        trials += round > 0 ? 2 : 1;  // a round with the error pass: one more evaluation per point
         try {
           BSpline<T, D> c = req.closed ? approximate_closed_on(Q, p, t, detail::PeriodicKnots<T>{knots})
                                        : approximate_on(Q, p, t, knots, req.start_derivative, req.end_derivative);
