@@ -828,16 +828,19 @@ FitResult<T, D> fit(std::vector<Point<T, D>> Q, const FitRequest<T, D>& req) {
   // first round from de Boor's derivative estimate on the passing fit, then up to
   // placement_rounds - 1 more from the measured error of the latest fit at that count
   // (which failed), as de Boor iterates NEWNOT. The step down starts at one control point
-  // and doubles after each success, halves after a failure, and the placement stops
-  // when a step of one fails every round or its budget is spent. Each round counts as one
+  // and doubles after each success, halves after a failure; when a step of one fails
+  // every round, two and then three fewer are tried (placement_skips: whether a count
+  // passes is not monotone here either), and the placement stops when those fail too or
+  // its budget is spent. Each round counts as one
   // fit of the budget, two when it measures the error first (a pass over the data, an
   // evaluation per point, about what the fit's own costs; the derivative per span of the
   // knot step is fewer evaluations than that). Knots that leave a span without data or break the
   // Schoenberg-Whitney condition are blended towards those of eq. 9.68-9.69 (which
   // satisfy both) until they pass; a system the solver still finds singular fails that
-  // round's count. Measured on 200 noisy points (docs/cli.md): 10 rounds gave most of
-  // what 20 do.
+  // round's count. Measured on 200 noisy points (docs/performance.md): 10 rounds gave
+  // most of what 20 do; the two skips lowered the counts most near the noise.
   constexpr int placement_rounds = 10;
+  constexpr int placement_skips = 2;
   const T phase = p % 2 == 1 ? T(0) : T(0.5);
   const auto place = [&](std::size_t cap) {
     BSpline<T, D> seed = best->curve;
@@ -851,6 +854,7 @@ FitResult<T, D> fit(std::vector<Point<T, D>> Q, const FitRequest<T, D>& req) {
       }
     }
     std::size_t stride = 1;
+    int skipped = 0;
     while (best_count > least && trials < cap) {
       const std::size_t count = best_count - std::min(stride, best_count - least);
       const std::vector<T> averaging = req.closed ? detail::closed_fit_knots(t, p, count).b : detail::open_fit_knots(t, p, count);
@@ -902,8 +906,12 @@ FitResult<T, D> fit(std::vector<Point<T, D>> Q, const FitRequest<T, D>& req) {
       }
       if (passed) {
         stride *= 2;
+        skipped = 0;
       } else if (stride > 1) {
         stride /= 2;
+      } else if (skipped < placement_skips) {
+        ++skipped;
+        stride = 1 + static_cast<std::size_t>(skipped);  // two fewer, then three
       } else {
         break;
       }
