@@ -831,14 +831,15 @@ FitResult<T, D> fit(std::vector<Point<T, D>> Q, const FitRequest<T, D>& req) {
   // and doubles after each success, halves after a failure; when a step of one fails
   // every round, two and then three fewer are tried (placement_skips: whether a count
   // passes is not monotone here either), and the placement stops when those fail too or
-  // its budget is spent. Each round counts as one
-  // fit of the budget, two when it measures the error first (a pass over the data, an
-  // evaluation per point, about what the fit's own costs; the derivative per span of the
-  // knot step is fewer evaluations than that). Knots that leave a span without data or break the
-  // Schoenberg-Whitney condition are blended towards those of eq. 9.68-9.69 (which
-  // satisfy both) until they pass; a system the solver still finds singular fails that
-  // round's count. Measured on 200 noisy points (docs/performance.md): 10 rounds gave
-  // most of what 20 do; the two skips lowered the counts most near the noise.
+  // its budget is spent. Each round counts as one fit of the budget, two when it
+  // measures the error first (a pass over the data, an evaluation per point, about what
+  // the fit's own costs; the derivative per span of the knot step is fewer evaluations
+  // than that). Knots that leave a span without data or break the Schoenberg-Whitney
+  // condition are moved a quarter, a half, three quarters of the way towards those of
+  // eq. 9.68-9.69 (which satisfy both) until they pass; if none does, or the solver
+  // still finds the system singular, that count fails. Measured on 200 noisy points
+  // (docs/performance.md): 10 rounds gave most of what 20 do; the two skips lowered the
+  // counts most near the noise.
   constexpr int placement_rounds = 10;
   constexpr int placement_skips = 2;
   const T phase = p % 2 == 1 ? T(0) : T(0.5);
