@@ -93,9 +93,42 @@ def periodic_count(c):
     return len(c["points"]) - p - (1 if p % 2 == 0 else 0)
 
 
+def open_shape(count, seed=0, noise=0.0):
+    """Points along an open curve with a sharp bump, unevenly spaced, optionally noisy."""
+    rng = random.Random(seed)
+    xs = sorted(rng.uniform(0, 6) for _ in range(count))
+    return [[x + rng.gauss(0, noise), np.sin(x) + 0.5 * np.exp(-8 * (x - 3) ** 2) + rng.gauss(0, noise)] for x in xs]
+
+
+def has_averaging_knots(c, t, closed):
+    """Whether the program's curve has the knots docs/cli.md gives a count (eq. 9.68-9.69,
+    open or periodic) rather than knots of its own placement."""
+    p = c["degree"]
+    if closed:
+        n = periodic_count(c)
+        inner = sorted({u for u in c["knots"] if 0 < u < 1})
+        want = sorted(b for b in closed_knots(t, p, n) if b > 0)
+    else:
+        n = len(c["points"]) - 1
+        inner, m = c["knots"][p + 1:n + 1], len(t) - 1
+        d = (m + 1) / (n - p + 1)
+        want = [(1 - (j * d - int(j * d))) * t[int(j * d) - 1] + (j * d - int(j * d)) * t[min(int(j * d), m)]
+                for j in range(1, n - p + 1)]
+    return len(inner) == len(want) and np.allclose(inner, want, rtol=0, atol=1e-12)
+
+
 class ClosedFitTest(CliTest):
     def fit(self, **req):
         return self.ok("fit", dict(req, closed=True))
+
+    def check_max_error(self, r, Q, closed, tol, kind="chord"):
+        """max_error recomputed here: scipy's BSpline evaluating the program's curve at the
+        data parameters; within the tolerance."""
+        t = np.array(fit_params(Q, kind, closed=closed))
+        got = curve_of(r["curve"])(t[:-1] if closed else t)
+        err = np.max(np.linalg.norm(got - np.array(Q), axis=1))
+        self.assertAlmostEqual(r["max_error"], err, delta=1e-12)
+        self.assertLessEqual(err, tol)
 
     def check_against_oracle(self, r, Q, p, n, kind="chord"):
         c = r["curve"]
@@ -162,9 +195,12 @@ class ClosedFitTest(CliTest):
             for tol in (1e-2, 1e-3, 1e-4):
                 r = self.fit(points=Q, degree=p, tolerance=tol)
                 n = periodic_count(r["curve"])
-                self.assertLessEqual(r["max_error"], tol)
+                self.check_max_error(r, Q, True, tol)
                 self.assertLess(n, len(Q), f"p={p} tol={tol}: interpolation is the fallback, not the answer")
-                self.check_against_oracle(r, Q, p, n)
+                if has_averaging_knots(r["curve"], fit_params(Q, closed=True), True):
+                    self.check_against_oracle(r, Q, p, n)  # else its own knot placement
+                # The count is at most the fewest with the knots of eq. 9.68-9.69 (the search
+                # tries every count below, 80 points): one fewer with those knots fails.
                 if n > p + 1:
                     fewer = self.fit(points=Q, degree=p, control_points=n - 1)
                     self.assertGreater(fewer["max_error"], tol, f"p={p} tol={tol}")
@@ -172,28 +208,35 @@ class ClosedFitTest(CliTest):
         r = self.fit(points=Q[:8], degree=3, tolerance=1e-13)
         self.assertEqual(periodic_count(r["curve"]), 8)
 
-    def test_tolerance_count_is_the_fewest_of_a_scan(self):
+    def test_tolerance_count_against_a_scan(self):
         # Issue 15: on 200 noisy samples of a closed shape at 0.03 the bisection returned 69
         # control points where 54 met the tolerance (max_error is not monotone in the
-        # count). For a few hundred points every count below is tried: none of them may
-        # pass (an exhaustive scan here, through control_points), and the count found must.
-        Q = blob(200, seed=15, noise=0.01)
-        for closed in (True, False):
+        # count). The fewest count that passes with the knots of eq. 9.68-9.69 is found
+        # here by an exhaustive scan through control_points (one --jsonl process); the
+        # search's answer may not exceed it (before the knot placement it was exactly it)
+        # and must meet the tolerance (max_error recomputed by scipy). On the 0.03 cases
+        # the knot placement meets it with strictly fewer (measured: closed 24 -> 16, open
+        # 58 -> 37, docs/cli.md); at 0.015, near the noise (Gaussian, sigma 0.01: the
+        # largest of 200 samples is about 0.028), it need not.
+        cases = [(blob(200, seed=15, noise=0.01), True), (open_shape(200, seed=15, noise=0.01), False),
+                 (blob(200, seed=17, noise=0.01), True), (open_shape(200, seed=17, noise=0.01), False)]
+        for i, (Q, closed) in enumerate(cases):
+            counts = range(4, len(Q) + 1)
+            rc, answers, err = test_cli.run_jsonl(
+                "fit", [{"points": Q, "degree": 3, "control_points": m, "closed": closed} for m in counts])
+            self.assertIn(rc, (0, 2), err)  # 2: some line refused; never an internal error
+            self.assertEqual(len(answers), len(counts))
             for tol in (0.03, 0.015):
                 r = self.ok("fit", {"points": Q, "degree": 3, "tolerance": tol, "closed": closed})
                 n = periodic_count(r["curve"]) if closed else len(r["curve"]["points"])
-                self.assertLessEqual(r["max_error"], tol)
-                # Every count below n in one --jsonl process (only the responses are checked).
-                counts = range(4, n)
-                rc, answers, err = test_cli.run_jsonl(
-                    "fit", [{"points": Q, "degree": 3, "control_points": m, "closed": closed} for m in counts])
-                self.assertIn(rc, (0, 2), err)  # 2: some line refused; never an internal error
-                self.assertEqual(len(answers), len(counts))
-                for m, answer in zip(counts, answers):
-                    if "error" not in answer:  # a near-singular count is refused: it does not pass either
-                        self.assertGreater(answer["max_error"], tol, f"closed={closed} tol={tol}: {m} < {n} passes")
-                if closed:
-                    self.check_against_oracle(r, Q, 3, n)
+                self.check_max_error(r, Q, closed, tol)
+                # A near-singular count is refused: it does not pass either.
+                first = next(m for m, a in zip(counts, answers) if "error" not in a and a["max_error"] <= tol)
+                self.assertLessEqual(n, first, f"case {i} closed={closed} tol={tol}")
+                if tol == 0.03:
+                    self.assertLess(n, first, f"case {i} closed={closed}: the knot placement lowers the count")
+                if has_averaging_knots(r["curve"], fit_params(Q, closed=closed), closed):
+                    self.assertEqual(n, first, f"case {i}: with those knots the count is the scan's")
 
     def test_noisy_circle_converges_to_circle(self):
         # Least squares averages the noise: a circle of radius 2 sampled at 400 points with

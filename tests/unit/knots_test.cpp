@@ -424,11 +424,12 @@ std::size_t fitted_count(const io::AnyFit& f, int p, bool closed) {
 }
 
 // The tolerance search against an exhaustive scan written here: every count from the
-// least upwards through io::fit with control_points; the first whose max_error is within
-// the tolerance is the fewest. On 200 points the search tries every count below the one
-// bisection finds, so it must give exactly that count (issue 15: it gave 69 where 54
-// passed, max_error not being monotone in the count).
-TEST(Fit, ToleranceGivesTheFewestCountOfAnExhaustiveScan) {
+// least upwards through io::fit with control_points (the knots of eq. 9.68-9.69); the
+// first whose max_error is within the tolerance is the fewest for those knots. Before the
+// knot placement the search gave exactly that count on 200 points (issue 15: it had
+// given 69 where 54 passed, max_error not being monotone in the count); the placement
+// may only lower it, and the answer stays within the tolerance.
+TEST(Fit, ToleranceCountIsAtMostTheFewestOfAnExhaustiveScan) {
   const int p = 3;
   for (bool closed : {true, false}) {
     for (double tol : {0.03, 0.02, 0.012}) {
@@ -449,7 +450,7 @@ TEST(Fit, ToleranceGivesTheFewestCountOfAnExhaustiveScan) {
         }
       }
       ASSERT_GT(first, 0u);
-      EXPECT_EQ(fitted_count(got, p, closed), first) << "closed " << closed << " tol " << tol;
+      EXPECT_LE(fitted_count(got, p, closed), first) << "closed " << closed << " tol " << tol;
     }
   }
 }

@@ -21,10 +21,12 @@
 namespace casteljau {
 
 /// A fitted curve and its error: the largest |C(t_k) - Q_k| over the data; the control
-/// point count of the fit (for a closed fit the n of the periodic spline, before its
-/// writing on [0, 1] repeats p of them), and for a tolerance search whether every smaller
-/// count was tried and failed (the count is then the fewest that meets the tolerance
-/// with the knots fit places for each count; otherwise the fewest found).
+/// point count of the curve (for a closed fit the n of the periodic spline, before its
+/// writing on [0, 1] repeats p of them), and for a tolerance search whether the count is
+/// proven the fewest for the curve's knots: true only when they are the knots of
+/// [PT97, eq. 9.68-9.69] and every smaller count was tried with them and failed; false
+/// when the search's knot placement gave the answer (fewer control points than those
+/// knots allow, but no placement is proven best) or the work limit cut the scan short.
 template <class T, int D>
 struct FitResult {
   BSpline<T, D> curve;
@@ -37,7 +39,7 @@ struct FitResult {
 /// second of one core at the slowest measured rate (18 ns per step). Above it a fit is
 /// refused naming "degree" or "points" (one fit too costly) or "tolerance" (the search's
 /// bisection alone too costly); the tolerance search spends what is left after its
-/// bisection on the counts below the one found.
+/// bisection on knot placement (at most half of it) and on the counts below the one found.
 inline constexpr double fit_work_limit = 6e7;
 
 namespace detail {
@@ -230,6 +232,25 @@ PeriodicKnots<T> closed_fit_knots(const std::vector<T>& t, int p, std::size_t n)
   return K;
 }
 
+/// The clamped knots of an open least-squares fit with `count` control points to data with
+/// parameters t_0 = 0 < ... < t_m = 1 [PT97, eq. 9.68-9.69]: d = (m + 1) / (n - p + 1)
+/// (n = count - 1), interior knot j at t_(i-1) + alpha (t_i - t_(i-1)), i = floor(j d),
+/// alpha = j d - i. Every knot span holds at least one parameter.
+template <class T>
+std::vector<T> open_fit_knots(const std::vector<T>& t, int p, std::size_t count) {
+  const std::size_t n = count - 1, m = t.size() - 1, P = static_cast<std::size_t>(p);
+  std::vector<T> U(P + 1, T(0));
+  const T d = static_cast<T>(m + 1) / static_cast<T>(n - P + 1);
+  for (std::size_t j = 1; j + P <= n; ++j) {
+    const T jd = static_cast<T>(j) * d;
+    const std::size_t i = static_cast<std::size_t>(jd);
+    const T alpha = jd - static_cast<T>(i);
+    U.push_back((1 - alpha) * t[i - 1] + alpha * t[std::min(i, m)]);
+  }
+  U.insert(U.end(), P + 1, T(1));
+  return U;
+}
+
 }  // namespace detail
 
 /// Closed (periodic) interpolation through Q_0..Q_{L-1} with the closing parameters t
@@ -266,8 +287,9 @@ BSpline<T, D> interpolate_closed(const std::vector<Point<T, D>>& Q, int p, const
 }
 
 /// Closed (periodic) least-squares approximation: the periodic degree-p spline with
-/// n control points (wrapped, C^(p-1) everywhere, including the seam) and the breakpoints
-/// of detail::closed_fit_knots, minimising sum_k |C(t_k) - Q_k|^2 over the L distinct
+/// n control points (wrapped, C^(p-1) everywhere, including the seam) and the n
+/// breakpoints K in [0, 1) (approximate_closed passes those of detail::closed_fit_knots;
+/// the tolerance search's knot placement its own), minimising sum_k |C(t_k) - Q_k|^2 over the L distinct
 /// points Q_k at their closed parameters t_0..t_{L-1} [PT97, §9.4.1 made periodic, as
 /// in their closed-curve variants of §9.2.4]. No point is held fixed: a closed curve has
 /// no ends. For n = L it is closed interpolation (the same knots; the square system then
@@ -282,8 +304,8 @@ BSpline<T, D> interpolate_closed(const std::vector<Point<T, D>>& Q, int p, const
 /// Cost O(L p^2) time, O(n p) memory. Requires p + 1 <= n <= L; a rank-deficient system
 /// (a negligible diagonal of R) is a NumericalError.
 template <class T, int D>
-BSpline<T, D> approximate_closed(const std::vector<Point<T, D>>& Q, int p, const std::vector<T>& t, std::size_t n) {
-  const detail::PeriodicKnots<T> K = detail::closed_fit_knots(t, p, n);
+BSpline<T, D> approximate_closed_on(const std::vector<Point<T, D>>& Q, int p, const std::vector<T>& t, const detail::PeriodicKnots<T>& K) {
+  const std::size_t n = K.b.size();
   const std::size_t P = static_cast<std::size_t>(p), W = P + 1, nb = n - P;
   std::vector<T> Rb(nb * W, T(0));  // Rb[i * W + l] = R(i, i + l), band columns i < nb
   std::vector<T> Re(n * P, T(0));   // Re[i * P + e] = R(i, nb + e), the border
@@ -383,8 +405,15 @@ BSpline<T, D> approximate_closed(const std::vector<Point<T, D>>& Q, int p, const
   return detail::periodic_bspline<T, D>(p, K, C);
 }
 
-/// Least-squares approximation [PT97, §9.4.1]: n + 1 control points, knots from the
-/// parameters by eq. 9.68-9.69, C(0) = Q_0 and C(1) = Q_last exactly (P_0, P_n fixed), and
+/// approximate_closed_on with the breakpoints of detail::closed_fit_knots for n control points.
+template <class T, int D>
+BSpline<T, D> approximate_closed(const std::vector<Point<T, D>>& Q, int p, const std::vector<T>& t, std::size_t n) {
+  return approximate_closed_on(Q, p, t, detail::closed_fit_knots(t, p, n));
+}
+
+/// Least-squares approximation [PT97, §9.4.1] on the clamped knots U: n + 1 = |U| - p - 1
+/// control points (approximate, below, passes the knots of eq. 9.68-9.69; the tolerance
+/// search's knot placement its own), C(0) = Q_0 and C(1) = Q_last exactly (P_0, P_n fixed), and
 /// with d0 / d1 also C'(0) = d0, C'(1) = d1 exactly (P_1 = P_0 + U_{p+1} d0 / p,
 /// P_{n-1} = P_n - (1 - U_n) d1 / p); the other points minimise sum_k |C(t_k) - Q_k|^2
 /// over the interior data. [PT97] solves the normal equations (banded, symmetric positive
@@ -393,18 +422,9 @@ BSpline<T, D> approximate_closed(const std::vector<Point<T, D>>& Q, int p, const
 /// that a knot span holds almost none make it large). Requires p + 1 <= n + 1 <= number
 /// of points + derivatives; a rank-deficient system is a NumericalError.
 template <class T, int D>
-BSpline<T, D> approximate(const std::vector<Point<T, D>>& Q, int p, const std::vector<T>& t, std::size_t count,
-                          const std::optional<Vector<T, D>>& d0, const std::optional<Vector<T, D>>& d1) {
-  const std::size_t n = count - 1, m = Q.size() - 1, P = static_cast<std::size_t>(p);
-  std::vector<T> U(P + 1, T(0));
-  const T d = static_cast<T>(m + 1) / static_cast<T>(n - P + 1);
-  for (std::size_t j = 1; j + P <= n; ++j) {
-    const T jd = static_cast<T>(j) * d;
-    const std::size_t i = static_cast<std::size_t>(jd);
-    const T alpha = jd - static_cast<T>(i);
-    U.push_back((1 - alpha) * t[i - 1] + alpha * t[std::min(i, m)]);
-  }
-  U.insert(U.end(), P + 1, T(1));
+BSpline<T, D> approximate_on(const std::vector<Point<T, D>>& Q, int p, const std::vector<T>& t, std::vector<T> U,
+                             const std::optional<Vector<T, D>>& d0, const std::optional<Vector<T, D>>& d1) {
+  const std::size_t P = static_cast<std::size_t>(p), count = U.size() - P - 1, n = count - 1, m = Q.size() - 1;
   std::vector<Point<T, D>> C(count);
   std::vector<bool> fixed(count, false);
   C[0] = Q.front();
@@ -506,6 +526,149 @@ BSpline<T, D> approximate(const std::vector<Point<T, D>>& Q, int p, const std::v
   return BSpline<T, D>(p, std::move(U), std::move(C));
 }
 
+/// approximate with the knots of eq. 9.68-9.69 for `count` control points.
+template <class T, int D>
+BSpline<T, D> approximate(const std::vector<Point<T, D>>& Q, int p, const std::vector<T>& t, std::size_t count,
+                          const std::optional<Vector<T, D>>& d0, const std::optional<Vector<T, D>>& d1) {
+  return approximate_on(Q, p, t, detail::open_fit_knots(t, p, count), d0, d1);
+}
+
+namespace detail {
+
+/// Knot placement for the tolerance search, by equidistribution [deBoor78, ch. XII, the
+/// subroutine NEWNOT; de Boor, "Good approximation by splines with variable knots II",
+/// 1974]: the error of a degree-p spline on a span of width h is about
+/// h^(p+1) |D^(p+1) f| there, so knots spaced to make h |D^(p+1) f|^(1/(p+1)) the same on
+/// every span make the errors alike. The new breakpoints cut the integral of a monitor g
+/// (constant on each span of the fit at hand) into equal parts. Two monitors:
+/// - without `residual`, de Boor's: |D^(p+1) f| estimated from the fit c (whose p-th
+///   derivative is constant on each span) as, at each breakpoint, the jump of the p-th
+///   derivative over the mean width of the two spans beside it, and on a span the mean
+///   of its two ends; g = that^(1/(p+1)).
+/// - with `residual` (the largest distance from a data point to c on each span), the
+///   measured error in place of the estimate (our variant, for data whose error is not
+///   the smooth h^(p+1) law, noise above all): g = sqrt(residual) / h, the fit's own knot
+///   density scaled up where its error is large and down where it is small, so that
+///   knots move towards where the error concentrates.
+/// g is given a floor, a quarter of its mean (de Boor's has none; without it a span
+/// where g vanishes, a straight run or an exact fit, would lose every knot to the rest).
+/// x: the fit's breakpoints, open 0 = x_0 < ... < x_S = 1, closed the n breakpoints of
+/// one period in [0, 1) (the last span wraps). Returns the interior knots (open:
+/// pieces - 1 of them) or the breakpoints (closed: pieces of them, the first at the
+/// fraction `phase` of one part). Cost: one p-th derivative per span, O(S p^2 + pieces).
+template <class T, int D>
+std::vector<T> equidistributed_breaks(const BSpline<T, D>& c, int p, const std::vector<T>& x, bool closed, std::size_t pieces, T phase,
+                                      const std::vector<T>* residual = nullptr) {
+  const std::size_t S = closed ? x.size() : x.size() - 1;
+  std::vector<T> h(S), g(S, T(0)), J(S + 1, T(0));
+  std::vector<Vector<T, D>> v(S);
+  for (std::size_t i = 0; i < S; ++i) {
+    const T a = x[i], b = i + 1 < x.size() ? x[i + 1] : x[0] + 1;
+    h[i] = b - a;
+    T mid = (a + b) / 2;
+    if (mid >= 1) mid -= 1;
+    v[i] = c.derivative_at(mid, p);
+  }
+  // J[i]: the estimate at the left end of span i (J[S]: the right end of the last).
+  for (std::size_t i = closed ? 0 : 1; i < S; ++i) {
+    const std::size_t l = i == 0 ? S - 1 : i - 1;
+    J[i] = norm(v[i] - v[l]) / ((h[l] + h[i]) / 2);
+  }
+  if (closed) {
+    J[S] = J[0];
+  } else if (S > 1) {
+    J[0] = J[1];
+    J[S] = J[S - 1];
+  }
+  T mean = 0;
+  for (std::size_t i = 0; i < S; ++i) {
+    g[i] = residual ? std::sqrt((*residual)[i]) / h[i] : std::pow((J[i] + J[i + 1]) / 2, T(1) / static_cast<T>(p + 1));
+    mean += g[i] * h[i];
+  }
+  for (std::size_t i = 0; i < S; ++i) g[i] = std::isfinite(mean) && mean > 0 ? std::max(g[i], mean / 4) : T(1);
+  // The spans in order over [0, 1] (closed: the wrapping one cut at 0), with g on each.
+  std::vector<std::pair<T, T>> spans;  // (right end, g)
+  if (closed && x[0] > 0) spans.emplace_back(x[0], g[S - 1]);
+  for (std::size_t i = 0; i < S; ++i) spans.emplace_back(i + 1 < x.size() ? x[i + 1] : T(1), g[i]);
+  T total = 0, left = 0;
+  for (const auto& [r, gi] : spans) {
+    total += (r - left) * gi;
+    left = r;
+  }
+  std::vector<T> out;
+  T acc = 0;
+  left = 0;
+  std::size_t k = 0;
+  for (std::size_t j = closed ? 0 : 1; j < pieces; ++j) {
+    const T target = (static_cast<T>(j) + (closed ? phase : T(0))) / static_cast<T>(pieces) * total;
+    while (k + 1 < spans.size() && acc + (spans[k].first - left) * spans[k].second < target) {
+      acc += (spans[k].first - left) * spans[k].second;
+      left = spans[k].first;
+      ++k;
+    }
+    out.push_back(std::min(spans[k].first, left + (target - acc) / spans[k].second));
+  }
+  return out;
+}
+
+/// The largest distance from a data point to c on each span of the breakpoints x (as in
+/// equidistributed_breaks; closed, a parameter below x_0 is on the wrapping last span).
+template <class T, int D>
+std::vector<T> span_residuals(const BSpline<T, D>& c, const std::vector<T>& x, bool closed, const std::vector<Point<T, D>>& Q,
+                              const std::vector<T>& t) {
+  const std::ptrdiff_t S = static_cast<std::ptrdiff_t>(closed ? x.size() : x.size() - 1);
+  std::vector<T> r(static_cast<std::size_t>(S), T(0));
+  for (std::size_t k = 0; k < t.size(); ++k) {
+    std::ptrdiff_t i = std::upper_bound(x.begin(), x.end(), t[k]) - x.begin() - 1;
+    i = i < 0 ? S - 1 : std::min(i, S - 1);
+    r[static_cast<std::size_t>(i)] = std::max(r[static_cast<std::size_t>(i)], distance(c(t[k]), Q[k]));
+  }
+  return r;
+}
+
+/// Whether clamped knots U suit an open least-squares fit to parameters t (d0, d1: the
+/// end derivatives held): every span [U_i, U_(i+1)), p <= i <= n, holds a parameter (the
+/// guarantee of eq. 9.68-9.69), and the Schoenberg-Whitney condition holds for the free
+/// control points and the interior data [deBoor78, ch. XIII]: increasing parameters
+/// t_(k_j) with N_j(t_(k_j)) > 0, U_j < t_(k_j) < U_(j+p+1), one for each free column j
+/// (found greedily, which finds one whenever one exists, the supports' ends being
+/// increasing in j). Without it the least-squares system is rank deficient.
+template <class T>
+bool open_knots_hold_data(const std::vector<T>& U, int p, const std::vector<T>& t, bool d0, bool d1) {
+  const std::size_t P = static_cast<std::size_t>(p), n = U.size() - P - 2, m = t.size() - 1;
+  std::size_t k = 0;
+  for (std::size_t i = P; i <= n; ++i) {
+    if (!(U[i] < U[i + 1])) return false;
+    while (k <= m && t[k] < U[i]) ++k;
+    if (k > m || !(t[k] < U[i + 1] || (i == n && t[k] <= U[i + 1]))) return false;
+  }
+  k = 1;
+  for (std::size_t j = d0 ? 2 : 1; j + (d1 ? 2 : 1) <= n; ++j) {
+    while (k < m && !(t[k] > U[j])) ++k;
+    if (k >= m || !(t[k] < U[j + P + 1])) return false;
+    ++k;
+  }
+  return true;
+}
+
+/// Whether periodic breakpoints b (increasing, in [0, 1)) suit a closed least-squares fit
+/// to the closed parameters t (t_L = 1): every span of one period holds a parameter, as
+/// with closed_fit_knots.
+template <class T>
+bool closed_knots_hold_data(const std::vector<T>& b, const std::vector<T>& t) {
+  const std::size_t n = b.size(), L = t.size() - 1;
+  if (!(b[0] >= 0) || !(b[n - 1] < 1)) return false;
+  std::size_t k = 0;
+  for (std::size_t i = 0; i + 1 < n; ++i) {
+    if (!(b[i] < b[i + 1])) return false;
+    while (k < L && t[k] < b[i]) ++k;
+    if (k >= L || !(t[k] < b[i + 1])) return false;
+  }
+  return t[L - 1] >= b[n - 1] || t[0] < b[0];
+}
+
+}  // namespace detail
+
 /// What to fit: degree, and either a control point count (least squares; the point
 /// count plus the number of end derivatives means interpolation) or a tolerance (the
 /// fewest control points found whose max_error is within it).
@@ -523,12 +686,16 @@ struct FitRequest {
 /// Fits the points as the request says; max_error is the largest distance from a data
 /// point to the curve at that point's parameter, count the control point count used.
 /// With a tolerance the count is searched: bisection between the least that can be fitted
-/// and interpolation finds a count that passes; max_error is not monotone in the count,
-/// so the counts below it are then tried, all of them upwards from the least when the
-/// work limit allows (proven_fewest: the fewest count that meets the tolerance, with the
-/// knots this function places for each count), else as many just below as it allows
-/// (the fewest found); a count whose system is singular counts as failing; if only
-/// interpolation is within the tolerance it is the answer. Work: about
+/// and interpolation (knots of eq. 9.68-9.69 for each count) finds a count that passes;
+/// knot placement (equidistribution, detail::equidistributed_breaks) then meets the
+/// tolerance with fewer where it can; max_error is not monotone in the count, so the
+/// counts below the answer are then tried with eq. 9.68-9.69's knots, all of them upwards
+/// from the least when the work limit allows, else as many just below as it allows; a
+/// count whose system is singular counts as failing; if only interpolation is within the
+/// tolerance it is the answer. count is the answer's (closed: n, as below);
+/// proven_fewest is true only when the answer's knots are eq. 9.68-9.69's and every
+/// smaller count was tried with them (the fewest for those knots; never when the
+/// placement found it: no placement is proven best). Work: about
 /// detail::fit_work(points, p) per fit; a request above fit_work_limit is refused
 /// ("degree", or "points" when no degree would do; "tolerance" when the bisection alone
 /// exceeds it), so that every request answers in about a second. Closed fits (the closing
@@ -608,13 +775,9 @@ FitResult<T, D> fit(std::vector<Point<T, D>> Q, const FitRequest<T, D>& req) {
     }
   }
   const T tol = *req.tolerance;
-  // The tolerance search: every count tried costs one fit. With a budget of B fits, the
-  // bisection (about log2 of the range) finds a count hi that passes; when every count
-  // from least to hi - 1 fits in what is left of the budget they are tried upwards and
-  // the first that passes is the answer, the fewest that meets the tolerance (proven, for
-  // these knots); otherwise the counts just below hi are tried downwards as far as the
-  // budget goes (max_error is not monotone in the count, so a count below a failing one
-  // may pass), and the smallest that passes is the answer, the fewest found.
+  // The tolerance search: every count tried costs one fit, within a budget of B fits.
+  // The bisection (about log2 of the range, with the knots of eq. 9.68-9.69) finds a
+  // count hi that passes; the knot placement and the scan below it follow (below).
   const std::size_t budget = detail::fit_trials(work);
   const std::size_t range = most - least + 1;
   std::size_t bisection_trials = 1;  // the first try, at most
@@ -628,6 +791,8 @@ FitResult<T, D> fit(std::vector<Point<T, D>> Q, const FitRequest<T, D>& req) {
   std::size_t trials = 0;
   std::optional<FitResult<T, D>> best;
   std::size_t best_count = 0;
+  bool best_placed = false;    // best's knots are placed ones (not eq. 9.68-9.69's)
+  std::vector<T> best_breaks;  // then its breakpoints (open: 0 .. 1; closed: one period)
   const auto try_count = [&](std::size_t count) -> bool {
     ++trials;
     try {
@@ -636,6 +801,7 @@ FitResult<T, D> fit(std::vector<Point<T, D>> Q, const FitRequest<T, D>& req) {
       if (!best || count < best_count) {
         best = std::move(f);
         best_count = count;
+        best_placed = false;
       }
       return true;
     } catch (const NumericalError&) {
@@ -656,18 +822,125 @@ FitResult<T, D> fit(std::vector<Point<T, D>> Q, const FitRequest<T, D>& req) {
       lo = mid + 1;
     }
   }
-  const std::size_t left = budget > trials ? budget - trials : 0;
-  bool proven = false;
-  if (hi - least <= left) {
-    for (std::size_t c = least; c < hi; ++c)
+  // Knot placement: the counts found are the fewest for the knots of eq. 9.68-9.69, which
+  // follow the data's density, not the shape's. From the answer, fewer control points are
+  // tried with knots placed by equidistribution (detail::equidistributed_breaks): the
+  // first round from de Boor's derivative estimate on the passing fit, then up to
+  // placement_rounds - 1 more from the measured error of the latest fit at that count
+  // (which failed), as de Boor iterates NEWNOT. The step down starts at one control point
+  // and doubles after each success, halves after a failure; when a step of one fails
+  // every round, two and then three fewer are tried (placement_skips: whether a count
+  // passes is not monotone here either), and the placement stops when those fail too or
+  // its budget is spent. Each round counts as one fit of the budget, two when it
+  // measures the error first (a pass over the data, an evaluation per point, about what
+  // the fit's own costs; the derivative per span of the knot step is fewer evaluations
+  // than that). Knots that leave a span without data or break the Schoenberg-Whitney
+  // condition are moved a quarter, a half, three quarters of the way towards those of
+  // eq. 9.68-9.69 (which satisfy both) until they pass; if none does, or the solver
+  // still finds the system singular, that count fails. Measured on 200 noisy points
+  // (docs/performance.md): 10 rounds gave most of what 20 do; the two skips lowered the
+  // counts most near the noise.
+  constexpr int placement_rounds = 10;
+  constexpr int placement_skips = 2;
+  const T phase = p % 2 == 1 ? T(0) : T(0.5);
+  const auto place = [&](std::size_t cap) {
+    BSpline<T, D> seed = best->curve;
+    std::vector<T> seed_breaks = best_breaks;
+    if (!best_placed) {
+      if (req.closed) {
+        seed_breaks = detail::closed_fit_knots(t, p, best_count).b;
+      } else {
+        const auto& U = seed.knots();
+        seed_breaks.assign(U.begin() + p, U.end() - p);
+      }
+    }
+    std::size_t stride = 1;
+    int skipped = 0;
+    while (best_count > least && trials < cap) {
+      const std::size_t count = best_count - std::min(stride, best_count - least);
+      const std::vector<T> averaging = req.closed ? detail::closed_fit_knots(t, p, count).b : detail::open_fit_knots(t, p, count);
+      BSpline<T, D> at = seed;
+      std::vector<T> at_breaks = seed_breaks;
+      bool passed = false;
+      for (int round = 0; round < placement_rounds && trials < cap && !passed; ++round) {
+        std::vector<T> knots;  // open: clamped knots; closed: breakpoints
+        try {
+          const std::vector<T> res = round > 0 ? detail::span_residuals(at, at_breaks, req.closed, Q, t_data) : std::vector<T>{};
+          const std::vector<T> x = detail::equidistributed_breaks<T, D>(at, p, at_breaks, req.closed,
+                                                                        req.closed ? count : count - static_cast<std::size_t>(p), phase,
+                                                                        res.empty() ? nullptr : &res);
+          for (const T w : {T(0), T(0.25), T(0.5), T(0.75)}) {
+            std::vector<T> k = req.closed ? x : std::vector<T>(static_cast<std::size_t>(p) + 1, T(0));
+            if (!req.closed) {
+              k.insert(k.end(), x.begin(), x.end());
+              k.insert(k.end(), static_cast<std::size_t>(p) + 1, T(1));
+            }
+            for (std::size_t i = 0; i < k.size(); ++i) k[i] = (1 - w) * k[i] + w * averaging[i];
+            if (req.closed ? detail::closed_knots_hold_data(k, t)
+                           : detail::open_knots_hold_data(k, p, t, req.start_derivative.has_value(), req.end_derivative.has_value())) {
+              knots = std::move(k);
+              break;
+            }
+          }
+        } catch (const NumericalError&) {  // a derivative that overflows: no placement
+        }
+        if (knots.empty()) break;
+        trials += round > 0 ? 2 : 1;  // a round with the error pass: one more evaluation per point
+        try {
+          BSpline<T, D> c = req.closed ? approximate_closed_on(Q, p, t, detail::PeriodicKnots<T>{knots})
+                                       : approximate_on(Q, p, t, knots, req.start_derivative, req.end_derivative);
+          const T e = detail::max_fit_error(c, Q, t_data);
+          at_breaks = req.closed ? knots : std::vector<T>(knots.begin() + p, knots.end() - p);
+          if (e <= tol) {
+            best = FitResult<T, D>{c, e};
+            best_count = count;
+            best_breaks = at_breaks;
+            best_placed = passed = true;
+            seed = std::move(c);
+            seed_breaks = at_breaks;
+          } else {
+            at = std::move(c);
+          }
+        } catch (const NumericalError&) {
+          break;  // a near-singular system: this count fails
+        }
+      }
+      if (passed) {
+        stride *= 2;
+        skipped = 0;
+      } else if (stride > 1) {
+        stride /= 2;
+      } else if (skipped < placement_skips) {
+        ++skipped;
+        stride = 1 + static_cast<std::size_t>(skipped);  // two fewer, then three
+      } else {
+        break;
+      }
+    }
+  };
+  // The budget after the bisection: the placement first, with at most half of it (it
+  // stops early where it fails, and what it leaves goes on), then the counts below the
+  // answer with the knots of eq. 9.68-9.69: all of them upwards from the least when what
+  // is left allows (the first that passes is then the fewest for those knots: proven),
+  // otherwise downwards from the answer as far as it goes (max_error is not monotone in
+  // the count, so a count below a failing one may pass). If that found a count below the
+  // placement's, the placement runs again from it with what is left.
+  const auto left = [&] { return budget > trials ? budget - trials : 0; };
+  place(trials + left() / 2);
+  const std::size_t placed_count = best_count;
+  bool exhaustive = false;
+  if (best_count - least <= left()) {
+    for (std::size_t c = least; c < best_count; ++c)
       if (try_count(c)) break;
-    proven = true;
+    exhaustive = true;
   } else {
-    for (std::size_t c = hi; c-- > least && trials < budget;) try_count(c);
+    for (std::size_t c = best_count; c-- > least && trials < budget;) try_count(c);
   }
+  const bool proven = exhaustive && !best_placed;  // for the knots of eq. 9.68-9.69
+  if (best_count < placed_count) place(budget);
   FitResult<T, D> f = std::move(*best);
   f.count = best_count;
-  f.proven_fewest = proven;
+  f.proven_fewest = proven && !best_placed;  // the second placement did not lower it
   return f;
 }
 
