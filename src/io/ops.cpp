@@ -51,10 +51,11 @@ LevelSet<double> solve(const AnyCurve& c, std::optional<int> axis, std::optional
   }
   check_solve_work(c);
   // How the pieces were made bounds their rounding (none for Bézier curves, polylines).
+  const AnyPieces any = pieces(c);
   return std::visit(
       [&]<class C>(const C& x) {
         constexpr int D = C::dimension;
-        const auto p = pieces(x);
+        const auto& p = std::get<Pieces<double, D>>(any);
         limits::check_work(p, "curve", "solving");
         const auto errors = casteljau::detail::piece_errors(x, p);
         Vector<double, D> a{};

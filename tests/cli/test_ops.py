@@ -617,6 +617,15 @@ class SolveComputedPiecesTest(CliTest):
         u, P3 = [0, 1, 2, 3], [[big], [big + 8], [big + 8], [big]]
         cases.append(("lagrange", lagrange_exact_pieces(u, P3), 1e-2,
                       {"curve": {"type": "lagrange", "params": u, "points": P3}, "value": big + 4, "axis": 0}))
+        # A path: a Bézier segment (given) before the Lagrange one (its bound read from the
+        # path's second piece).
+        lin = [[big - 4], [big]]
+        pieces = onto([(Fraction(0), Fraction(1), [[Fraction(x[0]), Fraction(1)] for x in lin])], 0, 1) + onto(
+            lagrange_exact_pieces(u, P3), 1, 2)
+        cases.append(("path bezier + lagrange", pieces, 1e-2,
+                      {"curve": {"type": "path", "segments": [{"type": "bezier", "points": lin},
+                                                              {"type": "lagrange", "params": u, "points": P3}]},
+                       "value": big + 4, "axis": 0}))
         self.check(cases)
 
     def test_shorthands_at_1e13(self):

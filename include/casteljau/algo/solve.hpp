@@ -139,11 +139,12 @@ std::vector<Vector<T, E>> span_rounding(std::span<const T> U, int p, std::span<c
   return out;
 }
 
-/// The pieces' own rounding (PieceError) of a curve for solve, one per piece of p =
-/// pieces(c), relative to the curve `eval` evaluates; empty where every piece is the
-/// curve's definition (Bézier and rational Bézier curves, polylines, Pieces, Catmull-Rom
-/// curves: eval evaluates the Bézier pieces they hold). The others, each derived in its
-/// branch below:
+/// The pieces' own rounding (PieceError) of a curve for solve, one per piece that c
+/// contributes to p from p.segments()[first] on (p = pieces(c) and first = 0 for a curve by
+/// itself; a path's segments in turn), relative to the curve `eval` evaluates; empty where
+/// every piece is the curve's definition (Bézier and rational Bézier curves, polylines,
+/// Pieces, Catmull-Rom curves: eval evaluates the Bézier pieces they hold). The others,
+/// each derived in its branch below:
 /// - bspline: blossoms of the control points (span_rounding);
 /// - nurbs (and circle, ellipse, arc, which are NURBS): blossoms of the homogeneous points
 ///   H_j = w_j P_j 2^-e, each a product rounded once (u = eps / 2 of |H_jk|; eval starts
@@ -153,10 +154,44 @@ std::vector<Vector<T, E>> span_rounding(std::span<const T> U, int p, std::span<c
 ///   P_(i+1) - (h / 3) m'_(i+1), h = u_(i+1) - u_i;
 /// - lagrange (eval by the barycentric formula; the piece by collocation): a bound from the
 ///   collocation's residual, computed here (lagrange_rounding).
-/// A path: its segments' in turn.
+/// A path: its segments' in turn. Only a Lagrange piece is read from p (the others'
+/// bounds come from the curve's own data), so that no piece is computed twice.
 template <class C>
-std::vector<PieceError<typename C::Scalar, C::dimension>> piece_errors(const C& c, const Pieces<typename C::Scalar, C::dimension>& p);
+std::vector<PieceError<typename C::Scalar, C::dimension>> piece_errors(const C& c, const Pieces<typename C::Scalar, C::dimension>& p,
+                                                                       std::size_t first = 0);
 
+
+/// ||A^-1||_inf (the largest row sum of |A^-1|) of a small square matrix, by Gauss-Jordan
+/// elimination with partial pivoting on [A | I]; infinity for a singular A.
+template <class T>
+T inverse_norm(std::vector<std::vector<T>> A) {
+  const std::size_t n = A.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    A[i].resize(2 * n, T(0));
+    A[i][n + i] = 1;
+  }
+  for (std::size_t c = 0; c < n; ++c) {
+    std::size_t piv = c;
+    for (std::size_t r = c + 1; r < n; ++r)
+      if (std::abs(A[r][c]) > std::abs(A[piv][c])) piv = r;
+    if (A[piv][c] == 0) return std::numeric_limits<T>::infinity();
+    std::swap(A[c], A[piv]);
+    const T d = A[c][c];
+    for (T& x : A[c]) x /= d;
+    for (std::size_t r = 0; r < n; ++r) {
+      if (r == c || A[r][c] == 0) continue;
+      const T f = A[r][c];
+      for (std::size_t k = c; k < 2 * n; ++k) A[r][k] -= f * A[c][k];
+    }
+  }
+  T norm = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    T row = 0;
+    for (std::size_t k = n; k < 2 * n; ++k) row += std::abs(A[i][k]);
+    norm = std::max(norm, row);
+  }
+  return norm;
+}
 
 /// The Lagrange curve's one piece (its Bézier form by collocation, b) against the exact
 /// interpolant p of its points: the error e = q - p of the computed polynomial q is a
@@ -169,7 +204,7 @@ std::vector<PieceError<typename C::Scalar, C::dimension>> piece_errors(const C& 
 /// n levels of 3 u V (the rounded 1 - s, two products, a sum), the node s_j (two
 /// differences and a quotient, 3 u) moves q by at most |q'| 3 u <= 2 n V 3 u, and the
 /// last difference rounds by u |r|: in all |r_j| <= |computed r_j| (1 + 2 eps) +
-/// (2 + 4.5 n) eps V. ||A^-1|| is computed (LU, partial pivoting) and doubled for its own
+/// (2 + 4.5 n) eps V. ||A^-1|| is computed (Gauss-Jordan, partial pivoting) and doubled for its own
 /// rounding, a safety factor that is not a proof (measured: docs/cli.md). O(n^3), n <= 15.
 template <class T, int D>
 PieceError<T, D> lagrange_rounding(const Lagrange<T, D>& c, const Bezier<T, D>& q) {
@@ -189,28 +224,46 @@ PieceError<T, D> lagrange_rounding(const Lagrange<T, D>& c, const Bezier<T, D>& 
     d[i] = b[i] - c0;
     for (int k = 0; k < D; ++k) V[k] = std::max(V[k], std::abs(d[i][k]));
   }
-  Matrix<T> A(static_cast<Eigen::Index>(n1), static_cast<Eigen::Index>(n1));
+  std::vector<std::vector<T>> A(n1, std::vector<T>(n1));
   std::vector<T> row(n1);
   Vector<T, D> r{};
   for (std::size_t j = 0; j < n1; ++j) {
     const T sj = (u[j] - dom.lo) / (dom.hi - dom.lo);
     bernstein_all<T>(n, sj, std::span<T>(row));
-    for (std::size_t k = 0; k < n1; ++k) A(static_cast<Eigen::Index>(j), static_cast<Eigen::Index>(k)) = row[k];
+    A[j] = row;
     std::vector<Vector<T, D>> w(d);  // de Casteljau on the differences
     for (std::size_t level = 1; level < n1; ++level)
       for (std::size_t i = 0; i + level < n1; ++i) w[i] = lerp(w[i], w[i + 1], sj);
     const Vector<T, D> rj = w[0] - (P[j] - c0);
     for (int k = 0; k < D; ++k) r[k] = std::max(r[k], std::abs(rj[k]));
   }
-  const Matrix<T> inv = A.partialPivLu().inverse();
-  T norm = 0;
-  for (Eigen::Index k = 0; k < inv.rows(); ++k) norm = std::max(norm, inv.row(k).cwiseAbs().sum());
+  const T norm = inverse_norm(std::move(A));
   for (int k = 0; k < D; ++k) out.coordinate[k] = 2 * norm * (r[k] * (1 + 2 * eps) + (2 + T(4.5) * n) * eps * V[k]);
   return out;
 }
 
+/// How many pieces pieces(c) has, without computing them (a path's segment in piece_errors).
 template <class C>
-std::vector<PieceError<typename C::Scalar, C::dimension>> piece_errors(const C& c, const Pieces<typename C::Scalar, C::dimension>& p) {
+std::size_t piece_count(const C& c) {
+  using T = typename C::Scalar;
+  constexpr int D = C::dimension;
+  if constexpr (std::is_same_v<C, BSpline<T, D>> || std::is_same_v<C, Nurbs<T, D>>) {
+    return nonempty_spans(std::span<const T>(c.knots()), c.degree()).size();
+  } else if constexpr (std::is_same_v<C, Hermite<T, D>> || std::is_same_v<C, Polyline<T, D>>) {
+    return c.size();
+  } else if constexpr (std::is_same_v<C, CubicSpline<T, D>>) {
+    return c.hermite().size();
+  } else if constexpr (std::is_same_v<C, CatmullRom<T, D>>) {
+    return c.bezier_pieces().size();
+  } else {
+    static_assert(is_bezier_piece<C> || std::is_same_v<C, Lagrange<T, D>>, "a segment type with one piece");
+    return 1;
+  }
+}
+
+template <class C>
+std::vector<PieceError<typename C::Scalar, C::dimension>> piece_errors(const C& c, const Pieces<typename C::Scalar, C::dimension>& p,
+                                                                       std::size_t first) {
   using T = typename C::Scalar;
   constexpr int D = C::dimension;
   const T eps = std::numeric_limits<T>::epsilon();
@@ -245,17 +298,19 @@ std::vector<PieceError<typename C::Scalar, C::dimension>> piece_errors(const C& 
       out.push_back(x);
     }
   } else if constexpr (std::is_same_v<C, CubicSpline<T, D>>) {
-    return piece_errors(c.hermite(), p);
+    return piece_errors(c.hermite(), p, first);
   } else if constexpr (std::is_same_v<C, Lagrange<T, D>>) {
-    out.push_back(lagrange_rounding(c, std::get<Bezier<T, D>>(p.segments().front())));
+    out.push_back(lagrange_rounding(c, std::get<Bezier<T, D>>(p.segments()[first])));
   } else if constexpr (requires { c.segments(); } && !is_pieces<C>) {
+    std::size_t at = first;
     for (const auto& seg : c.segments()) {
       std::visit(
           [&](const auto& x) {
-            const auto px = pieces(x);
-            auto e = piece_errors(x, px);
-            if (e.empty()) e.resize(px.size());
+            const std::size_t count = piece_count(x);
+            auto e = piece_errors(x, p, at);
+            e.resize(count);  // zeros for a segment whose pieces are its definition
             out.insert(out.end(), e.begin(), e.end());
+            at += count;
           },
           seg);
     }
