@@ -50,17 +50,19 @@ LevelSet<double> solve(const AnyCurve& c, std::optional<int> axis, std::optional
     throw InvalidArgument("direction", "must not be the zero vector");
   }
   check_solve_work(c);
-  // How the pieces were made bounds their rounding (exact for Bézier curves, polylines).
-  const auto rounding = std::visit([](const auto& x) { return casteljau::detail::piece_rounding(x); }, c);
+  // How the pieces were made bounds their rounding (none for Bézier curves, polylines).
+  const AnyPieces any = pieces(c);
   return std::visit(
-      [&]<class P>(const P& p) {
-        constexpr int D = P::dimension;
+      [&]<class C>(const C& x) {
+        constexpr int D = C::dimension;
+        const auto& p = std::get<Pieces<double, D>>(any);
         limits::check_work(p, "curve", "solving");
+        const auto errors = casteljau::detail::piece_errors(x, p);
         Vector<double, D> a{};
         for (int k = 0; k < D; ++k) a[k] = axis ? (k == *axis ? 1.0 : 0.0) : (*direction)[static_cast<std::size_t>(k)];
-        return casteljau::solve(p, a, value, rounding);
+        return casteljau::solve(p, a, value, std::span<const casteljau::detail::PieceError<double, D>>(errors));
       },
-      pieces(c));
+      c);
 }
 
 AnyCurve refine(const AnyCurve& c, std::span<const double> X) {

@@ -10,6 +10,7 @@ refinement. Every bad-input rule of docs/cli.md for both commands.
 
 Usage: test_ops.py PATH_TO_CASTELJAU [unittest options]
 """
+import math
 import os
 import random
 import sys
@@ -322,6 +323,336 @@ class SolveTest(CliTest):
         self.bad("solve", {"curve": c, "axis": 0, "value": "x"}, "value")
         self.bad("solve", {"curve": c, "axis": 0, "value": 1, "values": 2}, "values")
         self.bad("solve", {"axis": 0, "value": 1}, "curve", contains="missing")
+
+
+# ---------------------------------------------------------------------------------------
+# solve on the types whose pieces are computed (session 18): exact pieces in Fractions
+# from each type's own definition, written here, never the program's pieces.
+
+def blossom_exact(U, p, P, s, args):
+    """The blossom of span s (U_s < U_(s+1)) of the B-spline of degree p on knots U and
+    points P (lists of Fractions) at args: de Boor's triangle in exact arithmetic."""
+    d = [list(P[j]) for j in range(s - p, s + 1)]
+    for r in range(1, p + 1):
+        x = args[r - 1]
+        for j in range(p, r - 1, -1):
+            i = s - p + j
+            a = (x - U[i]) / (U[i + p + 1 - r] - U[i])
+            d[j] = [(1 - a) * u + a * v for u, v in zip(d[j - 1], d[j])]
+    return d[p]
+
+
+def nurbs_exact_pieces(U, p, P, w):
+    """[(lo, hi, homogeneous Bézier points (w q, w))] of a NURBS, exact (the blossoms of
+    the homogeneous points w_j P_j, as Fractions of the given doubles)."""
+    Uf = [Fraction(x) for x in U]
+    H = [[Fraction(x) * Fraction(wi) for x in q] + [Fraction(wi)] for q, wi in zip(P, w)]
+    out = []
+    for s in range(p, len(P)):
+        if Uf[s] < Uf[s + 1]:
+            a, b = Uf[s], Uf[s + 1]
+            out.append((a, b, [blossom_exact(Uf, p, H, s, [a] * (p - j) + [b] * j) for j in range(p + 1)]))
+    return out
+
+
+def hermite_exact_pieces(u, P, m):
+    """The cubic Hermite pieces P_i, P_i + h m_i / 3, P_(i+1) - h m_(i+1) / 3, P_(i+1),
+    h = u_(i+1) - u_i, exact, weight 1."""
+    out = []
+    for i in range(len(u) - 1):
+        h = Fraction(u[i + 1]) - Fraction(u[i])
+        a = [Fraction(x) for x in P[i]]
+        b = [Fraction(x) for x in P[i + 1]]
+        c1 = [x + h * Fraction(t) / 3 for x, t in zip(a, m[i])]
+        c2 = [x - h * Fraction(t) / 3 for x, t in zip(b, m[i + 1])]
+        out.append((Fraction(u[i]), Fraction(u[i + 1]), [q + [Fraction(1)] for q in (a, c1, c2, b)]))
+    return out
+
+
+def natural_spline_tangents(u, P):
+    """The natural cubic spline's first derivatives at the params, exact: the tridiagonal
+    system h_i m_(i-1) + 2 (h_(i-1) + h_i) m_i + h_(i-1) m_(i+1) = 3 (h_i d_(i-1) +
+    h_(i-1) d_i) with 2 m_0 + m_1 = 3 d_0 and m_(n-1) + 2 m_n = 3 d_(n-1) (second
+    derivative 0 at the ends), by elimination in Fractions."""
+    n = len(u) - 1
+    uf = [Fraction(x) for x in u]
+    h = [uf[i + 1] - uf[i] for i in range(n)]
+    dim = len(P[0])
+    out = [[None] * dim for _ in range(n + 1)]
+    for k in range(dim):
+        y = [Fraction(q[k]) for q in P]
+        d = [(y[i + 1] - y[i]) / h[i] for i in range(n)]
+        A = [[Fraction(0)] * (n + 1) for _ in range(n + 1)]
+        r = [Fraction(0)] * (n + 1)
+        A[0][0], A[0][1], r[0] = 2, 1, 3 * d[0]
+        A[n][n - 1], A[n][n], r[n] = 1, 2, 3 * d[n - 1]
+        for i in range(1, n):
+            A[i][i - 1], A[i][i], A[i][i + 1] = h[i], 2 * (h[i - 1] + h[i]), h[i - 1]
+            r[i] = 3 * (h[i] * d[i - 1] + h[i - 1] * d[i])
+        for c in range(n + 1):
+            for rr in range(c + 1, n + 1):
+                if A[rr][c] != 0:
+                    f = A[rr][c] / A[c][c]
+                    A[rr] = [x - f * z for x, z in zip(A[rr], A[c])]
+                    r[rr] -= f * r[c]
+        m = [Fraction(0)] * (n + 1)
+        for i in range(n, -1, -1):
+            m[i] = (r[i] - sum(A[i][j] * m[j] for j in range(i + 1, n + 1))) / A[i][i]
+        for i in range(n + 1):
+            out[i][k] = m[i]
+    return out
+
+
+def catmull_rom_exact_pieces(P):
+    """The uniform (alpha 0) open Catmull-Rom curve: tangents (P_(i+1) - P_(i-1)) / 2,
+    segment j from P_(j+1) to P_(j+2) on [j, j + 1]."""
+    Q = [[Fraction(x) for x in q] for q in P]
+    m = {i: [(x - y) / 2 for x, y in zip(Q[i + 1], Q[i - 1])] for i in range(1, len(Q) - 1)}
+    return [(Fraction(j), Fraction(j + 1), [Q[j + 1] + [1], [x + t / 3 for x, t in zip(Q[j + 1], m[j + 1])] + [1],
+                                             [x - t / 3 for x, t in zip(Q[j + 2], m[j + 2])] + [1], Q[j + 2] + [1]])
+            for j in range(len(Q) - 3)]
+
+
+def lagrange_exact_pieces(u, P):
+    """The interpolating polynomial's Bernstein coefficients on [min u, max u], exact: the
+    collocation system at the nodes solved in Fractions."""
+    n = len(u) - 1
+    lo, hi = Fraction(min(u)), Fraction(max(u))
+    s = [(Fraction(x) - lo) / (hi - lo) for x in u]
+    rows = [[comb(n, k) * si ** k * (1 - si) ** (n - k) for k in range(n + 1)] + [Fraction(q[c]) for c in range(len(P[0]))]
+            for si, q in zip(s, P)]
+    for c in range(n + 1):
+        piv = next(r for r in range(c, n + 1) if rows[r][c] != 0)
+        rows[c], rows[piv] = rows[piv], rows[c]
+        for r in range(n + 1):
+            if r != c and rows[r][c] != 0:
+                f = rows[r][c] / rows[c][c]
+                rows[r] = [x - f * z for x, z in zip(rows[r], rows[c])]
+    b = [[x / rows[i][i] for x in rows[i][n + 1:]] + [Fraction(1)] for i in range(n + 1)]
+    return [(lo, hi, b)]
+
+
+def onto(pieces, lo, hi):
+    """Pieces on their own domain mapped affinely onto [lo, hi] (a path's segment)."""
+    a, b = pieces[0][0], pieces[-1][1]
+    f = lambda x: lo + (x - a) * (hi - lo) / (b - a)
+    return [(f(x), f(y), H) for x, y, H in pieces]
+
+
+def exact_level_set(pieces, direction, value):
+    """(roots, intervals) of a . C = value on exact pieces [(lo, hi, homogeneous points)]:
+    on each piece the numerator sum_k a_k H_k - value w in Bernstein form, its real roots
+    by mpmath on the exact power form; a piece where it vanishes identically is an
+    interval. Roots within 1e-9 are one (a break seen from both sides, a multiple root)."""
+    v = Fraction(value)
+    a = [Fraction(x) for x in direction]
+    roots, intervals = [], []
+    for lo, hi, H in pieces:
+        f = [sum(ak * h[k] for k, ak in enumerate(a)) - v * h[-1] for h in H]
+        if all(x == 0 for x in f):
+            if intervals and intervals[-1][1] == lo:
+                intervals[-1][1] = hi
+            else:
+                intervals.append([lo, hi])
+            continue
+        for t in real_roots_01(power_from_bernstein(f)):
+            roots.append(float(lo + Fraction(t) * (hi - lo)))
+    roots.sort()
+    out = []
+    for r in roots:
+        if any(float(x) - 1e-9 <= r <= float(y) + 1e-9 for x, y in intervals):
+            continue
+        if not out or r - out[-1] > 1e-9:
+            out.append(r)
+    return out, [[float(x), float(y)] for x, y in intervals]
+
+
+def scales():
+    """(K, h): K at 1, 1e6 and 1e13 and h = 2^(floor(log2 K) - 30), so that every K + k h
+    (k a small integer) is a double and the curve's variation is 1e-9 of K."""
+    return [(K, 2.0 ** (math.frexp(K)[1] - 31)) for K in (1.0, 1e6, 1e13)]
+
+
+class SolveComputedPiecesTest(CliTest):
+    """Curves whose pieces are computed (nurbs and the shorthands, hermite, cubic_spline,
+    catmull_rom, lagrange, paths of them) against exact roots of their definitions at
+    scales 1, 1e6 and 1e13: the noise bound per type (docs/cli.md) must be true (no root
+    lost at a tangency, a flat stretch still an interval) and tight (a level 1e-13 of the
+    coordinates away is resolved: roots, not an interval)."""
+
+    def check(self, cases):
+        answers = self.ok_jsonl("solve", [c[-1] for c in cases])
+        for (name, pieces, tol, req), got in zip(cases, answers):
+            a = req.get("direction") or [1.0 if k == req["axis"] else 0.0 for k in range(len(pieces[0][2][0]) - 1)]
+            want, intervals = exact_level_set(pieces, a, req["value"])
+            self.assertEqual(len(got["intervals"]), len(intervals), f"{name}: {got} vs {want} {intervals}")
+            for g, w in zip(got["intervals"], intervals):
+                self.assertAlmostEqual(g[0], w[0], delta=1e-12, msg=name)
+                # an interval before a break ends there (no jump in these curves)
+                self.assertAlmostEqual(g[1], w[1], delta=1e-12, msg=name)
+            self.assertEqual(len(got["t"]), len(want), f"{name}: {got} vs {want} {intervals}")
+            self.assert_close(got["t"], want, tol, name)
+
+    def random_cases(self, rng, K, h):
+        """Random curves of every computed type with data K + k h (k integers in [-3, 3]),
+        values K + r h (r a quarter): the pieces' rounding is about 1e-7 of the variation."""
+        level = lambda: K + rng.randint(-12, 12) / 4 * h
+        val = lambda: K + rng.randint(-3, 3) * h
+        cases = []
+        for trial in range(4):
+            # NURBS: dyadic and decimal knots, weights with and without exact quotients.
+            p = rng.randint(1, 3)
+            n = p + 1 + rng.randint(0, 3)
+            inner = sorted(rng.sample([0.125, 0.25, 0.3, 0.5, 0.6, 0.75, 0.9], n - p - 1))
+            U = [0.0] * (p + 1) + inner + [1.0] * (p + 1)
+            P = [[i / n, val()] for i in range(n)]
+            w = [rng.choice([0.5, 1.0, 2.0, 0.75, 1.5, 0.3]) for _ in range(n)]
+            v = level()
+            cases.append((f"nurbs {trial} K={K}", nurbs_exact_pieces(U, p, P, w), 1e-5,
+                          {"curve": {"type": "nurbs", "degree": p, "knots": U, "points": P, "weights": w}, "value": v, "axis": 1}))
+            # Hermite and the natural cubic spline on uneven params.
+            m = rng.randint(2, 5)
+            u = [0.0]
+            for _ in range(m):
+                u.append(u[-1] + rng.choice([0.5, 1.0, 1.5, 0.3]))
+            P1 = [[val()] for _ in u]
+            T = [[rng.randint(-6, 6) * h] for _ in u]
+            cases.append((f"hermite {trial} K={K}", hermite_exact_pieces(u, P1, T), 1e-5,
+                          {"curve": {"type": "hermite", "params": u, "points": P1, "tangents": T}, "value": v, "axis": 0}))
+            cases.append((f"cubic_spline {trial} K={K}", hermite_exact_pieces(u, P1, natural_spline_tangents(u, P1)), 1e-5,
+                          {"curve": {"type": "cubic_spline", "params": u, "points": P1}, "value": v, "axis": 0}))
+            # Catmull-Rom (uniform), Lagrange on equispaced params.
+            P2 = [[float(i), val()] for i in range(rng.randint(4, 7))]
+            cases.append((f"catmull_rom {trial} K={K}", catmull_rom_exact_pieces(P2), 1e-5,
+                          {"curve": {"type": "catmull_rom", "points": P2, "alpha": 0}, "value": v, "axis": 1}))
+            ul = [float(j) for j in range(rng.randint(2, 5))]
+            P3 = [[val()] for _ in ul]
+            cases.append((f"lagrange {trial} K={K}", lagrange_exact_pieces(ul, P3), 1e-4,
+                          {"curve": {"type": "lagrange", "params": ul, "points": P3}, "value": v, "axis": 0}))
+            # A path: a Hermite segment then a NURBS segment (1-D), on [0, 1] and [1, 2].
+            if P1[-1][0] == P1[-1][0]:
+                nurbs1 = {"type": "nurbs", "degree": p, "knots": U, "points": [[P1[-1][0]]] + [[q[1]] for q in P[1:]], "weights": w}
+                pieces = onto(hermite_exact_pieces(u, P1, T), 0, 1) + onto(
+                    nurbs_exact_pieces(U, p, nurbs1["points"], w), 1, 2)
+                cases.append((f"path {trial} K={K}", pieces, 1e-5,
+                              {"curve": {"type": "path", "segments": [
+                                  {"type": "hermite", "params": u, "points": P1, "tangents": T}, nurbs1]},
+                               "value": v, "axis": 0}))
+        return cases
+
+    def test_random_curves_of_each_type_at_three_scales(self):
+        rng = random.Random(1818)
+        cases = []
+        for K, h in scales():
+            cases += self.random_cases(rng, K, h)
+        self.check(cases)
+
+    def test_tangencies_and_intervals_of_each_type(self):
+        cases = []
+        for K, h in scales():
+            # NURBS of degree 2, weights 1, 2, 1/2, 1, 3/4, 3/2: y touches K - h at the knot
+            # 1/4 (both pieces' numerators vanish doubly there) and is K + h on [3/4, 1].
+            U = [0, 0, 0, 0.25, 0.5, 0.75, 1, 1, 1]
+            ys = [K + h, K - h, K - h, K + h, K + h, K + h]
+            w = [1, 2, 0.5, 1, 0.75, 1.5]
+            P = [[i / 5, y] for i, y in enumerate(ys)]
+            c = {"type": "nurbs", "degree": 2, "knots": U, "points": P, "weights": w}
+            for v in (K - h, K + h, K):
+                cases.append((f"nurbs tangency K={K} v={v}", nurbs_exact_pieces(U, 2, P, w), 1e-5, {"curve": c, "value": v, "axis": 1}))
+            # Hermite: a maximum K + h at u = 1 (tangent 0), flat at K + 2 h on [2, 3].
+            u, P1, T = [0, 1, 2, 3, 4], [[K], [K + h], [K + 2 * h], [K + 2 * h], [K]], [[h], [0], [0], [0], [-h]]
+            for v in (K + h, K + 2 * h):
+                cases.append((f"hermite K={K} v={v}", hermite_exact_pieces(u, P1, T), 1e-5,
+                              {"curve": {"type": "hermite", "params": u, "points": P1, "tangents": T}, "value": v, "axis": 0}))
+            # Natural splines: symmetric data peak at the middle param (a double root there);
+            # constant data are one interval.
+            u, P1 = [0, 1, 2], [[K], [K + h], [K]]
+            cases.append((f"cubic_spline peak K={K}", hermite_exact_pieces(u, P1, natural_spline_tangents(u, P1)), 1e-5,
+                          {"curve": {"type": "cubic_spline", "params": u, "points": P1}, "value": K + h, "axis": 0}))
+            P1 = [[K + h]] * 4
+            cases.append((f"cubic_spline flat K={K}", hermite_exact_pieces([0, 1, 2, 3], P1, [[0]] * 4), 1e-5,
+                          {"curve": {"type": "cubic_spline", "params": [0, 1, 2, 3], "points": P1}, "value": K + h, "axis": 0}))
+            # Catmull-Rom: a peak at a joint (tangent 0) and a flat segment.
+            P2 = [[0, K - h], [1, K], [2, K + h], [3, K], [4, K - h]]
+            cases.append((f"catmull_rom peak K={K}", catmull_rom_exact_pieces(P2), 1e-5,
+                          {"curve": {"type": "catmull_rom", "points": P2, "alpha": 0}, "value": K + h, "axis": 1}))
+            P2 = [[0, K], [1, K + h], [2, K + h], [3, K + h], [4, K + h], [5, K]]
+            cases.append((f"catmull_rom flat K={K}", catmull_rom_exact_pieces(P2), 1e-5,
+                          {"curve": {"type": "catmull_rom", "points": P2, "alpha": 0}, "value": K + h, "axis": 1}))
+            # Lagrange: the parabola through K, K + h, K peaks at its middle param; equal
+            # points are an interval.
+            for pts in ([[K], [K + h], [K]], [[K + h]] * 3):
+                cases.append((f"lagrange {pts} K={K}", lagrange_exact_pieces([0, 1, 2], pts), 1e-4,
+                              {"curve": {"type": "lagrange", "params": [0, 1, 2], "points": pts}, "value": K + h, "axis": 0}))
+        self.check(cases)
+
+    def test_levels_within_1e13_of_the_coordinates(self):
+        # The audit's case for every computed type: data 1e13 + k (1e-13 of the coordinates),
+        # value 1e13 + 1 (or + 1/2). The old bound, 16 (n + 2) (d + 1) eps of the size,
+        # answered an interval or lost the roots; the pieces' own rounding (a few 1e-3 here)
+        # still moves the roots, hence the tolerances.
+        big = 1e13
+        cases = []
+        # NURBS quadratic, one span and two: numerator w (y - v) = [-1, 2 2 - ..]: two roots.
+        for w in ([1, 2, 1], [1, 0.75, 1], [0.5, 1.5, 2]):
+            P = [[0, big], [1, big + 2], [2, big]]
+            c = {"type": "nurbs", "degree": 2, "knots": [0, 0, 0, 1, 1, 1], "points": P, "weights": w}
+            cases.append((f"nurbs one span {w}", nurbs_exact_pieces(c["knots"], 2, P, w), 1e-12, {"curve": c, "value": big + 1, "axis": 1}))
+        U = [0, 0, 0, 0.3, 1, 1, 1]
+        P = [[0, big], [1, big + 2], [2, big + 2], [3, big]]
+        w = [1, 0.7, 1.3, 1]
+        c = {"type": "nurbs", "degree": 2, "knots": U, "points": P, "weights": w}
+        cases.append(("nurbs two spans", nurbs_exact_pieces(U, 2, P, w), 1e-3, {"curve": c, "value": big + 1, "axis": 1}))
+        cases.append(("nurbs two spans, direction", nurbs_exact_pieces(U, 2, P, w), 1e-3,
+                      {"curve": c, "value": -2 * (big + 1), "direction": [0, -2]}))
+        u, P1, T = [0, 1, 2], [[big], [big + 2], [big]], [[3], [0], [-3]]
+        cases.append(("hermite", hermite_exact_pieces(u, P1, T), 1e-3,
+                      {"curve": {"type": "hermite", "params": u, "points": P1, "tangents": T}, "value": big + 1, "axis": 0}))
+        u, P1 = [0, 1, 2.5, 3], [[big], [big + 2], [big + 2], [big]]
+        cases.append(("cubic_spline", hermite_exact_pieces(u, P1, natural_spline_tangents(u, P1)), 1e-3,
+                      {"curve": {"type": "cubic_spline", "params": u, "points": P1}, "value": big + 1, "axis": 0}))
+        P2 = [[0, big - 2], [1, big], [2, big + 2], [3, big + 2], [4, big], [5, big - 2]]
+        cases.append(("catmull_rom", catmull_rom_exact_pieces(P2), 1e-3,
+                      {"curve": {"type": "catmull_rom", "points": P2, "alpha": 0}, "value": big + 1, "axis": 1}))
+        u, P3 = [0, 1, 2, 3], [[big], [big + 8], [big + 8], [big]]
+        cases.append(("lagrange", lagrange_exact_pieces(u, P3), 1e-2,
+                      {"curve": {"type": "lagrange", "params": u, "points": P3}, "value": big + 4, "axis": 0}))
+        # A path: a Bézier segment (given) before the Lagrange one (its bound read from the
+        # path's second piece).
+        lin = [[big - 4], [big]]
+        pieces = onto([(Fraction(0), Fraction(1), [[Fraction(x[0]), Fraction(1)] for x in lin])], 0, 1) + onto(
+            lagrange_exact_pieces(u, P3), 1, 2)
+        cases.append(("path bezier + lagrange", pieces, 1e-2,
+                      {"curve": {"type": "path", "segments": [{"type": "bezier", "points": lin},
+                                                              {"type": "lagrange", "params": u, "points": P3}]},
+                       "value": big + 4, "axis": 0}))
+        self.check(cases)
+
+    def test_shorthands_at_1e13(self):
+        # A circle, an ellipse and an arc about (1e13, 1e13): x = centre + r / 2 at two
+        # parameters (one on the arc of 0..3 pi / 2), y = centre + r touches at the top
+        # (a quarter break); each root's point by eval within 4 ulps of 1e13 of the level.
+        # The old bound answered intervals ([0, 1/4] and [3/4, 1] for the circle).
+        K = 1e13
+        curves = [({"type": "circle", "center": [K, K], "radius": 1}, 1, 2),
+                  ({"type": "ellipse", "center": [K, K], "radii": [3, 1]}, 3, 2),
+                  ({"type": "arc", "center": [K, K], "radius": 1, "start_angle": 0, "end_angle": 3 * math.pi / 2}, 1, 1)]
+        reqs, levels = [], []
+        for c, r, count in curves:
+            reqs.append({"curve": c, "value": K + r / 2, "axis": 0})
+            levels.append((0, K + r / 2, count))
+            reqs.append({"curve": c, "value": K + 1, "axis": 1})
+            levels.append((1, K + 1, 1))
+        answers = self.ok_jsonl("solve", reqs)
+        ulp = math.ulp(K)
+        for req, (axis, v, count), got in zip(reqs, levels, answers):
+            self.assertEqual(got["intervals"], [], req)
+            self.assertEqual(len(got["t"]), count, f"{req}: {got}")
+            pts = self.ok("eval", {"curve": req["curve"], "t": got["t"]})["points"]
+            for p in pts:
+                self.assertLessEqual(abs(p[axis] - v), 4 * ulp, f"{req}: {got} {pts}")
+        # The top of the circle is the quarter break 1/4, once.
+        self.assert_close(answers[1]["t"], [0.25], 1e-6)
 
 
 # ---------------------------------------------------------------------------------------

@@ -88,14 +88,18 @@ TEST(Solve, BadDirection) {
 // A level near large coordinates (audit D20): y - value has the exact control values
 // [-1, 1, 1, -1] at 1e13, so the roots are those of -1 + 6t - 6t^2, (3 -+ sqrt 3) / 6,
 // whatever type holds the curve (a Bézier's pieces are its points; a B-spline's are
-// blossoms, within 4 (n + 1) eps of their size). At a jump (D3) only the right limit is the
-// curve's value.
+// blossoms, within (4 p + 1) eps of the span's largest control coordinate). At a jump (D3)
+// only the right limit is the curve's value.
 TEST(Solve, LevelNearLargeCoordinatesAndJumps) {
   const double big = 1e13;
   const std::vector<P2> P{P2(0, big), P2(1, big + 2), P2(3, big + 2), P2(4, big)};
   const std::vector<double> want{(3 - std::sqrt(3.0)) / 6, (3 + std::sqrt(3.0)) / 6};
-  EXPECT_EQ(detail::piece_rounding(B2(P)), detail::PieceRounding::given);
-  EXPECT_EQ(detail::piece_rounding(BSpline<double, 2>(3, {0, 0, 0, 0, 1, 1, 1, 1}, P)), detail::PieceRounding::blossomed);
+  EXPECT_TRUE(detail::piece_errors(B2(P), pieces(B2(P))).empty());
+  const BSpline<double, 2> spline(3, {0, 0, 0, 0, 1, 1, 1, 1}, P);
+  const auto errors = detail::piece_errors(spline, pieces(spline));
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_EQ(errors[0].coordinate[0], 13 * casteljau::test::eps * 4);
+  EXPECT_EQ(errors[0].coordinate[1], 13 * casteljau::test::eps * (big + 2));
   for (const auto& s : {solve(B2(P), V2(0, 1), big + 1), solve(BSpline<double, 2>(3, {0, 0, 0, 0, 1, 1, 1, 1}, P), V2(0, 1), big + 1)}) {
     EXPECT_TRUE(s.intervals.empty());
     ASSERT_EQ(s.t.size(), 2u);

@@ -13,9 +13,7 @@
 
 #include "casteljau/basis/roots.hpp"
 #include "casteljau/curves/concepts.hpp"
-#include "casteljau/curves/bspline.hpp"
-#include "casteljau/curves/piecewise.hpp"
-#include "casteljau/curves/polyline.hpp"
+#include "casteljau/curves/path.hpp"
 
 namespace casteljau {
 
@@ -30,6 +28,19 @@ struct LevelSet {
 
 namespace detail {
 
+/// How far the control points of one of a curve's pieces (pieces(c)) may lie from the
+/// curve's exact Bézier form (see piece_errors): |computed - exact| of coordinate k of
+/// every control point is at most coordinate[k] + relative |that coordinate|; for a
+/// rational piece these are the homogeneous coordinates w_j P_jk, and each weight is
+/// within `weight` of its exact value (the piece's own weight units, weights() as held).
+/// All zero for pieces that are the curve's definition.
+template <class T, int D>
+struct PieceError {
+  Vector<T, D> coordinate{};
+  T weight = 0;
+  T relative = 0;
+};
+
 /// The Bernstein coefficients on [0, 1] of a . C(t) - value for one piece, times 2^-e
 /// (one power of two chosen so that nothing overflows): a . P_i - value for a polynomial
 /// piece, w_i (a . P_i - value) for a rational one (weights divided by the largest; the
@@ -39,13 +50,15 @@ namespace detail {
 /// products split exactly by fma, the sums by TwoSum, the errors summed apart): its
 /// error is at most eps |result| + gamma_(d+1)^2 (|value| + sum |a_k P_ik|), so it is
 /// relative to the difference itself, not to the coordinates (a coordinate at 1e13 minus a
-/// value at 1e13 is exact, as a single subtraction is). `bound` receives that error per
-/// coefficient (times 2, with the underflow of the scalings: a few of the smallest
-/// subnormal), and `size` the sum of the magnitudes of its terms, |value| + sum |a_k P_ik|
-/// (the scale of the pieces' own rounding, see solve). Rational pieces: times w_i, whose
-/// roundings are relative to the coefficient (2 eps of it).
+/// value at 1e13 is exact, as a single subtraction is). Rational pieces: times w_i, whose
+/// roundings are relative to the coefficient (2 eps of it). `bound` receives per
+/// coefficient that error (times 2, with the underflow of the scalings: a few of the
+/// smallest subnormal) plus what the pieces' own rounding `err` moves it by:
+/// sum_k |a_k| coordinate_k + |value| weight + relative w_i sum_k |a_k P_ik| (the level
+/// coefficient is linear in the homogeneous coordinates: a . (w P)_i - value w_i), in the
+/// same scaled units, times 1 + 8 eps for the rounding of the bound's own arithmetic.
 template <class T, int D, class Piece>
-std::vector<T> level_form(const Piece& c, const Vector<T, D>& a, T value, std::vector<T>& bound, std::vector<T>& size) {
+std::vector<T> level_form(const Piece& c, const Vector<T, D>& a, T value, const PieceError<T, D>& err, std::vector<T>& bound) {
   const auto& P = c.points();
   T pm = std::abs(value), am = 0;
   for (const auto& q : P)
@@ -57,17 +70,19 @@ std::vector<T> level_form(const Piece& c, const Vector<T, D>& a, T value, std::v
   Vector<T, D> as;
   for (int k = 0; k < D; ++k) as[k] = std::ldexp(a[k], -ea);  // |as_k| < 1, exact
   const T v = std::ldexp(value, -ep - ea);  // (a . P - value) 2^-(ea + ep), exact scalings
-  std::vector<T> f(P.size());
+  std::vector<T> f(P.size()), terms(P.size());
   bound.assign(P.size(), T(0));
-  size.assign(P.size(), T(0));
   const T eps = std::numeric_limits<T>::epsilon();
   // gamma_n = n u / (1 - n u) for n = D + 1 terms, u = eps / 2: below (D + 1) eps.
   const T gamma = static_cast<T>(D + 1) * eps;
   // The scalings by 2^-ep may round a coordinate far below the largest into the
   // subnormals (half the smallest subnormal each), and so may the products' split.
   const T tiny = static_cast<T>(4 * (D + 1)) * std::numeric_limits<T>::denorm_min();
+  // The pieces' own rounding on the homogeneous coordinates, scaled as the coefficients.
+  T moved = 0;
+  for (int k = 0; k < D; ++k) moved += std::abs(as[k]) * std::ldexp(err.coordinate[k], -ep);
   for (std::size_t i = 0; i < P.size(); ++i) {
-    T s = -v, err = 0, b = std::abs(v);
+    T s = -v, e = 0, b = std::abs(v), t = 0;
     for (int k = 0; k < D; ++k) {
       const T x = std::ldexp(P[i][k], -ep);  // |x| < 1, exact (or a harmless underflow)
       const T prod = as[k] * x;
@@ -76,49 +91,233 @@ std::vector<T> level_form(const Piece& c, const Vector<T, D>& a, T value, std::v
       const T z = sum - s;
       const T sum_err = (s - (sum - z)) + (prod - z);
       s = sum;
-      err += sum_err + prod_err;
-      b += std::abs(prod);
+      e += sum_err + prod_err;
+      t += std::abs(prod);
     }
-    f[i] = s + err;
-    size[i] = b;
+    b += t;
+    f[i] = s + e;
+    terms[i] = t;
     bound[i] = 2 * (eps * std::abs(f[i]) + gamma * gamma * b) + tiny;
   }
+  const T grow = 1 + 8 * eps;
   if constexpr (std::is_same_v<Piece, RationalBezier<T, D>>) {
     const T wmax = *std::max_element(c.weights().begin(), c.weights().end());
+    const T homogeneous = (moved + std::abs(v) * err.weight) / wmax;
     for (std::size_t i = 0; i < f.size(); ++i) {
       const T w = c.weights()[i] / wmax;
       f[i] *= w;
-      bound[i] = bound[i] * w + 2 * eps * std::abs(f[i]);
-      size[i] *= w;
+      bound[i] = bound[i] * w + 2 * eps * std::abs(f[i]) + grow * (homogeneous + err.relative * w * terms[i]);
     }
+  } else {
+    for (std::size_t i = 0; i < f.size(); ++i) bound[i] += grow * (moved + err.relative * terms[i]);
   }
   return f;
 }
 
-/// How the exact pieces of a curve (pieces(c)) were obtained, which bounds their own
-/// rounding (see solve): `given`, they are its control points (Bézier and rational Bézier
-/// curves, polylines, Pieces themselves); `blossomed`, a polynomial B-spline's pieces by
-/// blossoming (convex combinations, p levels: within 4 (n + 1) eps of the size of their
-/// coordinates); `computed`, any other conversion (a NURBS's Cartesian points, the
-/// interpolating types: 16 (n + 2) (D + 1) eps, the bound solve used for every type
-/// before). A path takes its worst segment's.
-enum class PieceRounding { given, blossomed, computed };
+/// The rounding of the Bézier points of each span of the B-spline (degree p, knots U,
+/// points P of dimension E) as detail::span_bezier_points computes them: per coordinate k,
+/// (4 p + 1) eps times the largest |P_jk| of the span's p + 1 control points. Derivation:
+/// every step is q = (1 - alpha) x + alpha y with alpha = (c - U_i) / (U_j - U_i) in [0, 1]
+/// (computed with relative error 3u, u = eps / 2: two differences and a quotient; then
+/// 1 - alpha with |error| <= 3u alpha + u (1 - alpha)); the two products and the sum round
+/// by u each, so one step adds at most u M (3 + 5 alpha) <= 4 eps M, M the largest
+/// |input|, which is at most the span's largest |P_jk| (convex combinations); errors
+/// already present pass through with weights summing to 1 + O(u). Each Bézier point is at
+/// most p steps deep (g_0 after the p levels of de Boor at a; g_m, m >= 1, after p - m
+/// levels of it and m - 1 of de Boor at b), hence 4 p eps M, and the + 1 covers the
+/// second-order terms (p^2 eps^2). Measured: see docs/cli.md.
+template <class T, int E>
+std::vector<Vector<T, E>> span_rounding(std::span<const T> U, int p, std::span<const Point<T, E>> P) {
+  const T eps = std::numeric_limits<T>::epsilon();
+  std::vector<Vector<T, E>> out;
+  for (const std::size_t s : nonempty_spans(U, p)) {
+    Vector<T, E> m{};
+    for (std::size_t j = s - static_cast<std::size_t>(p); j <= s; ++j)
+      for (int k = 0; k < E; ++k) m[k] = std::max(m[k], std::abs(P[j][k]));
+    out.push_back(static_cast<T>(4 * p + 1) * eps * m);
+  }
+  return out;
+}
 
+/// The pieces' own rounding (PieceError) of a curve for solve, one per piece that c
+/// contributes to p from p.segments()[first] on (p = pieces(c) and first = 0 for a curve by
+/// itself; a path's segments in turn), relative to the curve `eval` evaluates; empty where
+/// every piece is the curve's definition (Bézier and rational Bézier curves, polylines,
+/// Pieces, Catmull-Rom curves: eval evaluates the Bézier pieces they hold). The others,
+/// each derived in its branch below:
+/// - bspline: blossoms of the control points (span_rounding);
+/// - nurbs (and circle, ellipse, arc, which are NURBS): blossoms of the homogeneous points
+///   H_j = w_j P_j 2^-e, each a product rounded once (u = eps / 2 of |H_jk|; eval starts
+///   from these H_j, so this much is relative to the control points as given); the weights
+///   are exact. The pieces hold P = H / w (relative = u, the division);
+/// - hermite and cubic_spline (whose eval is its Hermite form): P_i + (h / 3) m_i and
+///   P_(i+1) - (h / 3) m'_(i+1), h = u_(i+1) - u_i;
+/// - lagrange (eval by the barycentric formula; the piece by collocation): a bound from the
+///   collocation's residual, computed here (lagrange_rounding).
+/// A path: its segments' in turn. Only a Lagrange piece is read from p (the others'
+/// bounds come from the curve's own data), so that no piece is computed twice.
 template <class C>
-PieceRounding piece_rounding(const C& c) {
+std::vector<PieceError<typename C::Scalar, C::dimension>> piece_errors(const C& c, const Pieces<typename C::Scalar, C::dimension>& p,
+                                                                       std::size_t first = 0);
+
+
+/// ||A^-1||_inf (the largest row sum of |A^-1|) of a small square matrix, by Gauss-Jordan
+/// elimination with partial pivoting on [A | I]; infinity for a singular A.
+template <class T>
+T inverse_norm(std::vector<std::vector<T>> A) {
+  const std::size_t n = A.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    A[i].resize(2 * n, T(0));
+    A[i][n + i] = 1;
+  }
+  for (std::size_t c = 0; c < n; ++c) {
+    std::size_t piv = c;
+    for (std::size_t r = c + 1; r < n; ++r)
+      if (std::abs(A[r][c]) > std::abs(A[piv][c])) piv = r;
+    if (A[piv][c] == 0) return std::numeric_limits<T>::infinity();
+    std::swap(A[c], A[piv]);
+    const T d = A[c][c];
+    for (T& x : A[c]) x /= d;
+    for (std::size_t r = 0; r < n; ++r) {
+      if (r == c || A[r][c] == 0) continue;
+      const T f = A[r][c];
+      for (std::size_t k = c; k < 2 * n; ++k) A[r][k] -= f * A[c][k];
+    }
+  }
+  T norm = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    T row = 0;
+    for (std::size_t k = n; k < 2 * n; ++k) row += std::abs(A[i][k]);
+    norm = std::max(norm, row);
+  }
+  return norm;
+}
+
+/// The Lagrange curve's one piece (its Bézier form by collocation, b) against the exact
+/// interpolant p of its points: the error e = q - p of the computed polynomial q is a
+/// polynomial of the same degree n whose Bernstein coefficients are A^-1 r, A_jk =
+/// B_(k,n)(s_j) at the nodes mapped to [0, 1] and r_j = q(s_j) - P_j its values there, so
+/// each is at most ||A^-1||_inf max_j |r_j|. The residual is computed about c = b_0 (the
+/// curve's point at the domain's start, exact): r_j = (q - c)(s_j) - (P_j - c), so that
+/// its rounding is relative to the variation V_k = max_i |b_ik - c_k|, not to the
+/// coordinates: b_i - c and P_j - c round by u V (u = eps / 2), de Casteljau on them by
+/// n levels of 3 u V (the rounded 1 - s, two products, a sum), the node s_j (two
+/// differences and a quotient, 3 u) moves q by at most |q'| 3 u <= 2 n V 3 u, and the
+/// last difference rounds by u |r|: in all |r_j| <= |computed r_j| (1 + 2 eps) +
+/// (2 + 4.5 n) eps V. ||A^-1|| is computed (Gauss-Jordan, partial pivoting) and doubled for its own
+/// rounding, a safety factor that is not a proof (measured: docs/cli.md). O(n^3), n <= 15.
+template <class T, int D>
+PieceError<T, D> lagrange_rounding(const Lagrange<T, D>& c, const Bezier<T, D>& q) {
+  const auto& b = q.points();
+  const std::size_t n1 = b.size();
+  PieceError<T, D> out;
+  if (n1 <= 1) return out;
+  const int n = static_cast<int>(n1) - 1;
+  const T eps = std::numeric_limits<T>::epsilon();
+  const Interval<T> dom = c.domain();
+  const auto& u = c.params();
+  const auto& P = c.points();
+  const Point<T, D>& c0 = b.front();
+  std::vector<Vector<T, D>> d(n1);
+  Vector<T, D> V{};
+  for (std::size_t i = 0; i < n1; ++i) {
+    d[i] = b[i] - c0;
+    for (int k = 0; k < D; ++k) V[k] = std::max(V[k], std::abs(d[i][k]));
+  }
+  std::vector<std::vector<T>> A(n1, std::vector<T>(n1));
+  std::vector<T> row(n1);
+  Vector<T, D> r{};
+  for (std::size_t j = 0; j < n1; ++j) {
+    const T sj = (u[j] - dom.lo) / (dom.hi - dom.lo);
+    bernstein_all<T>(n, sj, std::span<T>(row));
+    A[j] = row;
+    std::vector<Vector<T, D>> w(d);  // de Casteljau on the differences
+    for (std::size_t level = 1; level < n1; ++level)
+      for (std::size_t i = 0; i + level < n1; ++i) w[i] = lerp(w[i], w[i + 1], sj);
+    const Vector<T, D> rj = w[0] - (P[j] - c0);
+    for (int k = 0; k < D; ++k) r[k] = std::max(r[k], std::abs(rj[k]));
+  }
+  const T norm = inverse_norm(std::move(A));
+  for (int k = 0; k < D; ++k) out.coordinate[k] = 2 * norm * (r[k] * (1 + 2 * eps) + (2 + T(4.5) * n) * eps * V[k]);
+  return out;
+}
+
+/// How many pieces pieces(c) has, without computing them (a path's segment in piece_errors).
+template <class C>
+std::size_t piece_count(const C& c) {
   using T = typename C::Scalar;
   constexpr int D = C::dimension;
-  if constexpr (is_bezier_piece<C> || is_pieces<C> || std::is_same_v<C, Polyline<T, D>>) {
-    return PieceRounding::given;
-  } else if constexpr (requires { c.segments(); }) {
-    PieceRounding r = PieceRounding::given;
-    for (const auto& seg : c.segments()) r = std::max(r, std::visit([](const auto& x) { return piece_rounding(x); }, seg));
-    return r;
-  } else if constexpr (std::is_same_v<C, BSpline<T, D>>) {
-    return PieceRounding::blossomed;
+  if constexpr (std::is_same_v<C, BSpline<T, D>> || std::is_same_v<C, Nurbs<T, D>>) {
+    return nonempty_spans(std::span<const T>(c.knots()), c.degree()).size();
+  } else if constexpr (std::is_same_v<C, Hermite<T, D>> || std::is_same_v<C, Polyline<T, D>>) {
+    return c.size();
+  } else if constexpr (std::is_same_v<C, CubicSpline<T, D>>) {
+    return c.hermite().size();
+  } else if constexpr (std::is_same_v<C, CatmullRom<T, D>>) {
+    return c.bezier_pieces().size();
   } else {
-    return PieceRounding::computed;
+    static_assert(is_bezier_piece<C> || std::is_same_v<C, Lagrange<T, D>>, "a segment type with one piece");
+    return 1;
   }
+}
+
+template <class C>
+std::vector<PieceError<typename C::Scalar, C::dimension>> piece_errors(const C& c, const Pieces<typename C::Scalar, C::dimension>& p,
+                                                                       std::size_t first) {
+  using T = typename C::Scalar;
+  constexpr int D = C::dimension;
+  const T eps = std::numeric_limits<T>::epsilon();
+  std::vector<PieceError<T, D>> out;
+  if constexpr (std::is_same_v<C, BSpline<T, D>>) {
+    for (const auto& e : span_rounding<T, D>(std::span<const T>(c.knots()), c.degree(), std::span<const Point<T, D>>(c.points())))
+      out.push_back({e, T(0), T(0)});
+  } else if constexpr (std::is_same_v<C, Nurbs<T, D>>) {
+    // The homogeneous B-spline's blossoms, plus u |H_jk| for H_j = w_j P_j (rounded once;
+    // convex combinations carry it to the pieces unchanged): 4 p + 1.5 eps on the
+    // coordinates, 4 p + 1 on the weights (given exactly, scaled by a power of two).
+    const auto& h = c.homogeneous();
+    for (const auto& e : span_rounding<T, D + 1>(std::span<const T>(h.knots()), h.degree(), std::span<const Point<T, D + 1>>(h.points()))) {
+      PieceError<T, D> x;
+      const T grow = (4 * static_cast<T>(h.degree()) + T(1.5)) / (4 * static_cast<T>(h.degree()) + 1);
+      for (int k = 0; k < D; ++k) x.coordinate[k] = e[k] * grow;
+      x.weight = e[D];
+      x.relative = eps / 2;  // P = H / w, one division
+      out.push_back(x);
+    }
+  } else if constexpr (std::is_same_v<C, Hermite<T, D>>) {
+    // t = fl(fl(fl(u_(i+1) - u_i) / 3) m) is within 3u (1 + 4u) |t| of h m / 3, and the
+    // sum P + t rounds by u of itself: relative u on each point, 3u |t| absolute.
+    const auto& u = c.params();
+    const auto& in = c.incoming_tangents();
+    for (std::size_t i = 0; i < c.size(); ++i) {
+      const T h3 = (u[i + 1] - u[i]) / 3;
+      PieceError<T, D> x;
+      for (int k = 0; k < D; ++k)
+        x.coordinate[k] = T(1.5) * eps * (1 + 4 * eps) * std::max(std::abs(h3 * c.tangents()[i][k]), std::abs(h3 * in[i + 1][k]));
+      x.relative = eps / 2;
+      out.push_back(x);
+    }
+  } else if constexpr (std::is_same_v<C, CubicSpline<T, D>>) {
+    return piece_errors(c.hermite(), p, first);
+  } else if constexpr (std::is_same_v<C, Lagrange<T, D>>) {
+    out.push_back(lagrange_rounding(c, std::get<Bezier<T, D>>(p.segments()[first])));
+  } else if constexpr (requires { c.segments(); } && !is_pieces<C>) {
+    std::size_t at = first;
+    for (const auto& seg : c.segments()) {
+      std::visit(
+          [&](const auto& x) {
+            const std::size_t count = piece_count(x);
+            auto e = piece_errors(x, p, at);
+            e.resize(count);  // zeros for a segment whose pieces are its definition
+            out.insert(out.end(), e.begin(), e.end());
+            at += count;
+          },
+          seg);
+    }
+    if (std::all_of(out.begin(), out.end(), [](const PieceError<T, D>& e) { return e.weight == 0 && e.relative == 0 && e.coordinate == Vector<T, D>{}; }))
+      out.clear();
+  }
+  return out;
 }
 
 }  // namespace detail
@@ -128,11 +327,8 @@ PieceRounding piece_rounding(const C& c) {
 /// scalar polynomial a . P_i - value (rational pieces: w_i (a . P_i - value), the
 /// numerator over the positive weight function) is formed in Bernstein form with a known
 /// error per coefficient (detail::level_form: compensated, relative to the coefficient
-/// itself), plus, when the pieces are computed rather than given (`rounding`, see
-/// detail::PieceRounding), their own rounding: 4 (n + 1) eps of the size of the
-/// coefficient's terms for a B-spline's blossoms, 16 (n + 2) (D + 1) eps for other
-/// conversions (a NURBS's Cartesian points, the interpolating types). That sum is the
-/// noise:
+/// itself), plus what the pieces' own rounding `errors` (one detail::PieceError per piece,
+/// or none: pieces that are the curve's definition) may move it by. That sum is the noise:
 /// - a piece on which every coefficient is within its noise of zero is an interval where
 ///   it holds throughout (a straight piece on the line, a constant coordinate); adjacent
 ///   ones merge across breaks;
@@ -157,7 +353,7 @@ PieceRounding piece_rounding(const C& c) {
 template <class C>
   requires PiecewiseBezierCurve<C>
 LevelSet<typename C::Scalar> solve(const C& c, const Vector<typename C::Scalar, C::dimension>& a, typename C::Scalar value,
-                                   detail::PieceRounding rounding) {
+                                   std::span<const detail::PieceError<typename C::Scalar, C::dimension>> errors) {
   using T = typename C::Scalar;
   constexpr int D = C::dimension;
   bool nonzero = false;
@@ -170,7 +366,6 @@ LevelSet<typename C::Scalar> solve(const C& c, const Vector<typename C::Scalar, 
   const auto& p = pieces(c);
   const Interval<T> dom = p.domain();
   const T merge = T(1e-10) * (dom.hi - dom.lo);
-  const T eps = std::numeric_limits<T>::epsilon();
   // Each piece's form and noise first: an end's root depends on the next piece's start.
   struct Form {
     std::vector<T> f;
@@ -178,17 +373,14 @@ LevelSet<typename C::Scalar> solve(const C& c, const Vector<typename C::Scalar, 
     bool zero = false;
   };
   std::vector<Form> forms(p.size());
+  const detail::PieceError<T, D> exact{};
   for (std::size_t i = 0; i < p.size(); ++i) {
     std::visit(
         [&](const auto& piece) {
-          std::vector<T> bound, size;
+          std::vector<T> bound;
           Form& g = forms[i];
-          g.f = detail::level_form<T, D>(piece, a, value, bound, size);
-          const T n = static_cast<T>(g.f.size()) - 1;
-          const T slack = rounding == detail::PieceRounding::given       ? T(0)
-                          : rounding == detail::PieceRounding::blossomed ? 4 * (n + 1) * eps
-                                                                         : 16 * (n + 2) * (D + 1) * eps;
-          for (std::size_t j = 0; j < bound.size(); ++j) g.noise = std::max(g.noise, bound[j] + slack * size[j]);
+          g.f = detail::level_form<T, D>(piece, a, value, i < errors.size() ? errors[i] : exact, bound);
+          for (const T b : bound) g.noise = std::max(g.noise, b);
           g.zero = bernstein_negligible<T>(g.f, g.noise);
         },
         p.segments()[i]);
@@ -237,11 +429,13 @@ LevelSet<typename C::Scalar> solve(const C& c, const Vector<typename C::Scalar, 
   return out;
 }
 
-/// The same, with the pieces' rounding from the curve's type (detail::piece_rounding).
+/// The same, with the pieces' rounding of the curve's type (detail::piece_errors).
 template <class C>
   requires PiecewiseBezierCurve<C>
 LevelSet<typename C::Scalar> solve(const C& c, const Vector<typename C::Scalar, C::dimension>& a, typename C::Scalar value) {
-  return solve(c, a, value, detail::piece_rounding(c));
+  const auto& p = pieces(c);
+  const auto errors = detail::piece_errors(c, p);
+  return solve(p, a, value, std::span<const detail::PieceError<typename C::Scalar, C::dimension>>(errors));
 }
 
 }  // namespace casteljau
