@@ -135,10 +135,13 @@ std::optional<Chain<T, D>> tangent_chain(const Point<T, D>& p0, const Vector<T, 
   const T c = dot(t0, t1);
   const Vector<T, D> w = t1 - c * t0;
   const T s = fast_norm(w);
-  if (!(s > T(16) * std::numeric_limits<T>::epsilon())) {
+  // A straight part: the chord along both directions (to 1e-9 of it; then they differ by
+  // at most about 2e-9 radians), whose lines' crossing is lost in rounding (a line of a
+  // glyph split into 20 segments): the chord's midpoint.
+  if (!(s > T(1e-8))) {
     const T a = dot(d, t0), b = dot(d, t1);
-    if (a > 0 && b > 0 && fast_norm(d - a * t0) <= T(1e-9) * chord) return C({p0, p0 + T(0.5) * d, p2});
-    return std::nullopt;
+    if (a > 0 && b > 0 && fast_norm(d - a * t0) <= T(1e-9) * chord && fast_norm(d - b * t1) <= T(1e-9) * chord) return C({p0, p0 + T(0.5) * d, p2});
+    if (!(s > T(16) * std::numeric_limits<T>::epsilon())) return std::nullopt;
   }
   const Vector<T, D> u2 = w / s;
   const T d1 = dot(d, t0), d2 = dot(d, u2);
