@@ -496,6 +496,27 @@ struct Part {
     const std::size_t n = points.size() - 1;
     if (!polynomial || q.size != 1 || n < 2 || n > 15) return std::numeric_limits<T>::infinity();
     const auto& a = q.front();
+    if (n == 3) {
+      // A cubic: the weights below as constants (the same values), the loops unrolled.
+      static constexpr std::array<std::array<T, 3>, 4> w = [] {
+        std::array<std::array<T, 3>, 4> r{};
+        for (std::size_t k = 0; k <= 3; ++k) {
+          const T kk = T(k), m = T(3 - k);
+          r[k] = {m * (m - 1) / T(6), T(2) * kk * m / T(6), kk * (kk - 1) / T(6)};
+        }
+        return r;
+      }();
+      T worst = 0;
+      for (std::size_t k = 0; k <= 3; ++k) {
+        T d2 = 0;
+        for (int c = 0; c < D; ++c) {
+          const T d = points[k][c] - (w[k][0] * a[0][c] + w[k][1] * a[1][c] + w[k][2] * a[2][c]);
+          d2 += d * d;
+        }
+        worst = std::max(worst, d2);
+      }
+      return std::sqrt(worst);
+    }
     const T N = T(n * (n - 1));
     T worst = 0;
     for (std::size_t k = 0; k <= n; ++k) {
@@ -930,7 +951,9 @@ void approximate_span(const Piece& piece, T s0, T s1, const Point<T, D>& p_start
     const Vector<T, D> dir1 = last ? t_end : end_direction(part.points, false);
     Vector<T, D> d0 = dir0;
     if (squared_norm(d0) == 0) d0 = end_direction(part.points, true);
-    const auto q = tangent_chain(p0, d0, p2, dir1, part.end_speed(true), part.end_speed(false));
+    // The end speeds serve skew tangent lines only (a space curve): not computed in the plane.
+    const T v0 = D > 2 ? part.end_speed(true) : T(0), v1 = D > 2 ? part.end_speed(false) : T(0);
+    const auto q = tangent_chain(p0, d0, p2, dir1, v0, v1);
     if (!q) return Try{Chain<T, D>({p0, p0, p2}), dir1, std::numeric_limits<T>::infinity(), false};
     // The cheap bound first (polynomial parts, one quadratic): when it meets the tolerance
     // over the rest of the span with a wide margin (a tenth of it, so that the reported
