@@ -327,7 +327,8 @@ def w11_table(rows):
         keys = sorted({n.split("/", 3)[3] for n in rows if n.startswith("W11/") and f"/{op}/" in n})
         for key in keys:
             peer = rows.get(f"W11/{peer_lib}/{op}/{key}")
-            for lib in ("casteljau", peer_lib):
+            # cu2qu_dropped: cu2qu's outputs dropped instead of kept (bench/w11_cu2qu.py).
+            for lib in ("casteljau", peer_lib) + (("cu2qu_dropped",) if op == "quadratic" else ()):
                 b = rows.get(f"W11/{lib}/{op}/{key}")
                 if not b:
                     continue
@@ -344,6 +345,11 @@ def w11_table(rows):
                              f"{to_ms(ours, key_time) / to_ms(peer, key_time):.2f}x its time"
                              f"{' (CPU)' if key_time == 'cpu_time' else ''}, {int(ours.get('over_tolerance', 0))} over the tolerance "
                              "(goal: fewer, faster, 0): " + ("MET" if ok else "NOT MET"))
+            dropped = rows.get(f"W11/cu2qu_dropped/{op}/{key}")
+            if ours and dropped:
+                fast = to_ms(ours, key_time) < to_ms(dropped, key_time)
+                goals.append(f"W11 {op} {key}: {to_ms(ours, key_time) / to_ms(dropped, key_time):.2f}x the time of cu2qu with its "
+                             "outputs dropped (CPU; goal: less): " + ("MET" if fast else "NOT MET"))
     text, md = table(headers, out)
     return text, md, goals
 

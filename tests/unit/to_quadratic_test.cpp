@@ -105,6 +105,29 @@ TEST(ToQuadratic, ElevatedQuadraticIsOneSegment) {
   }
 }
 
+TEST(ToQuadratic, StraightCubicIsOneSegment) {
+  // Straight cubics (control points on one line, unevenly spaced): a quadratic with its
+  // middle point on the line is exact, so one segment at any tolerance. The first is a line
+  // of DejaVuSans stored as a quadratic, elevated (W11's glyphs), whose tangent lines'
+  // crossing is lost in rounding: it took 20 segments at 1e-3 of the em before session 18.
+  const B2 quad({P2(855, 733), P2(865, 729), P2(870, 727)});
+  const B2 glyph_line = quad.elevate(1);
+  const B2 uneven({P2(0, 0), P2(1, 0.5), P2(7, 3.5), P2(10, 5)});
+  for (const B2* c : {&glyph_line, &uneven}) {
+    for (const double tol : {1e-9, 2.048, 204.8}) {
+      const auto r = to_quadratic(*c, tol);
+      ASSERT_EQ(r.segments.size(), 1u) << "tolerance " << tol;
+      const auto& q = r.segments[0].points();
+      EXPECT_EQ(q[0], c->points().front());
+      EXPECT_EQ(q[2], c->points().back());
+      const Vector<double, 2> chord = q[2] - q[0], m = q[1] - q[0];
+      EXPECT_LE(std::abs(chord[0] * m[1] - chord[1] * m[0]), 1e-9 * dot(chord, chord));  // on the line
+      EXPECT_GT(dot(m, chord), 0.0);  // between the ends
+      EXPECT_LT(dot(m, chord), dot(chord, chord));
+    }
+  }
+}
+
 TEST(ToQuadratic, RandomCubicsWithinToleranceAndTangentContinuous) {
   std::mt19937_64 rng(20);
   std::uniform_real_distribution<double> u(0, 100);

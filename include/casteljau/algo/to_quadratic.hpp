@@ -135,10 +135,13 @@ std::optional<Chain<T, D>> tangent_chain(const Point<T, D>& p0, const Vector<T, 
   const T c = dot(t0, t1);
   const Vector<T, D> w = t1 - c * t0;
   const T s = fast_norm(w);
-  if (!(s > T(16) * std::numeric_limits<T>::epsilon())) {
+  // A straight part: the chord along both directions (to 1e-9 of it; then they differ by
+  // at most about 2e-9 radians), whose lines' crossing is lost in rounding (a line of a
+  // glyph split into 20 segments): the chord's midpoint.
+  if (!(s > T(1e-8))) {
     const T a = dot(d, t0), b = dot(d, t1);
-    if (a > 0 && b > 0 && fast_norm(d - a * t0) <= T(1e-9) * chord) return C({p0, p0 + T(0.5) * d, p2});
-    return std::nullopt;
+    if (a > 0 && b > 0 && fast_norm(d - a * t0) <= T(1e-9) * chord && fast_norm(d - b * t1) <= T(1e-9) * chord) return C({p0, p0 + T(0.5) * d, p2});
+    if (!(s > T(16) * std::numeric_limits<T>::epsilon())) return std::nullopt;
   }
   const Vector<T, D> u2 = w / s;
   const T d1 = dot(d, t0), d2 = dot(d, u2);
@@ -298,6 +301,24 @@ class ChainDistance {
     const int m = q_.size;
     const T h = T(step_) / T(N);
     T b = 0;
+    if (m == 1 && hull.size() == 2) {
+      // The common case (a cubic part, one quadratic) as below, with c'' at each sample
+      // parameter computed once (the same operations).
+      const Vector<T, D> dh = hull[1] - hull[0];
+      const Vector<T, D>& a = form_[0].a;
+      const T hh = h * h / T(8);
+      Vector<T, D> c0 = hull[0] + (T(0) / T(N)) * dh;
+      for (int j = 0; j < N; j += step_) {
+        const std::size_t j0 = static_cast<std::size_t>(j), j1 = static_cast<std::size_t>(j + step_);
+        const T slope = (sigma_[j1] - sigma_[j0]) / h;
+        const Vector<T, D> w = (T(2) * slope * slope) * a;
+        const Vector<T, D> c1 = hull[0] + (T(j + step_) / T(N)) * dh;
+        const T f2 = std::max(std::max(T(0), squared_norm(c0 - w)), squared_norm(c1 - w));
+        b = std::max(b, std::max(f_[j0], f_[j1]) + hh * std::sqrt(f2));
+        c0 = c1;
+      }
+      return b;
+    }
     for (int j = 0; j < N; j += step_) {
       const std::size_t j0 = static_cast<std::size_t>(j), j1 = static_cast<std::size_t>(j + step_);
       const T slope = (sigma_[j1] - sigma_[j0]) / h;
@@ -475,6 +496,27 @@ struct Part {
     const std::size_t n = points.size() - 1;
     if (!polynomial || q.size != 1 || n < 2 || n > 15) return std::numeric_limits<T>::infinity();
     const auto& a = q.front();
+    if (n == 3) {
+      // A cubic: the weights below as constants (the same values), the loops unrolled.
+      static constexpr std::array<std::array<T, 3>, 4> w = [] {
+        std::array<std::array<T, 3>, 4> r{};
+        for (std::size_t k = 0; k <= 3; ++k) {
+          const T kk = T(k), m = T(3 - k);
+          r[k] = {m * (m - 1) / T(6), T(2) * kk * m / T(6), kk * (kk - 1) / T(6)};
+        }
+        return r;
+      }();
+      T worst = 0;
+      for (std::size_t k = 0; k <= 3; ++k) {
+        T d2 = 0;
+        for (int c = 0; c < D; ++c) {
+          const T d = points[k][c] - (w[k][0] * a[0][c] + w[k][1] * a[1][c] + w[k][2] * a[2][c]);
+          d2 += d * d;
+        }
+        worst = std::max(worst, d2);
+      }
+      return std::sqrt(worst);
+    }
     const T N = T(n * (n - 1));
     T worst = 0;
     for (std::size_t k = 0; k <= n; ++k) {
@@ -580,20 +622,28 @@ struct Part {
     for (std::size_t i = 0; i < 4; ++i)
       for (int c = 0; c < D; ++c) cq[i][static_cast<std::size_t>(c)] = points[i][c] - Q[0][c];
     std::array<std::array<T, D>, 9> f;
-    for (std::size_t k = 0; k <= 8; ++k) {
+    // Unrolled at compile time (the weights as constants, the terms of zero weight left
+    // out: they add zeros).
+    const auto row = [&]<std::size_t k>(std::integral_constant<std::size_t, k>) {
       T sig = 0, sig2 = 0;
-      for (std::size_t i = 0; i <= 4; ++i) {
-        const T w = W.w44[k][i] * sg[i];
-        sig += w;
-        sig2 += w * sg[W.partner[k][i]];
-      }
+      const auto term = [&]<std::size_t i>(std::integral_constant<std::size_t, i>) {
+        if constexpr (W.w44[k][i] != T(0)) {
+          const T w = W.w44[k][i] * sg[i];
+          sig += w;
+          sig2 += w * sg[W.partner[k][i]];
+        }
+      };
+      [&]<std::size_t... i>(std::index_sequence<i...>) { (term(std::integral_constant<std::size_t, i>{}), ...); }(std::make_index_sequence<5>{});
       for (int c = 0; c < D; ++c) {
         const std::size_t cc = static_cast<std::size_t>(c);
         T v = 0;
-        for (std::size_t i = 0; i < 4; ++i) v += W.w35[k][i] * cq[i][cc];
+        [&]<std::size_t... i>(std::index_sequence<i...>) {
+          ((W.w35[k][i] != T(0) ? void(v += W.w35[k][i] * cq[i][cc]) : void()), ...);
+        }(std::make_index_sequence<4>{});
         f[k][cc] = v - (T(2) * sig) * b[c] - sig2 * a[c];
       }
-    }
+    };
+    [&]<std::size_t... k>(std::index_sequence<k...>) { (row(std::integral_constant<std::size_t, k>{}), ...); }(std::make_index_sequence<9>{});
     return polygon_bound_n(f, limit, levels);
   }
 
@@ -603,24 +653,29 @@ struct Part {
   /// [0, 1].
   template <std::size_t M>
   static T polygon_bound_n(const std::array<std::array<T, D>, M>& f, T limit, int levels) {
-    const auto sq = [](const std::array<T, D>& v) {
-      T s = 0;
-      for (const T x : v) s += x * x;
-      return s;
-    };
+    return std::sqrt(polygon_bound2(f, limit * limit, levels));  // the largest root is the root of the largest square
+  }
+  /// polygon_bound_n squared (limit2 = limit^2). The halving leaves the right half in w
+  /// (de Casteljau's right edge is never overwritten), the left half gathered level by level.
+  template <std::size_t M>
+  static T polygon_bound2(const std::array<std::array<T, D>, M>& f, T limit2, int levels) {
+    std::array<T, M> q;
     T worst = 0;
-    for (const auto& v : f) worst = std::max(worst, sq(v));
-    const T limit2 = limit * limit;
-    if (worst <= limit2 || levels == 0 || sq(f[0]) > limit2 || sq(f[M - 1]) > limit2) return std::sqrt(worst);
-    std::array<std::array<T, D>, M> l, r, w = f;
+    for (std::size_t k = 0; k < M; ++k) {
+      T s = 0;
+      for (const T x : f[k]) s += x * x;
+      q[k] = s;
+      worst = std::max(worst, s);
+    }
+    if (worst <= limit2 || levels == 0 || q[0] > limit2 || q[M - 1] > limit2) return worst;
+    std::array<std::array<T, D>, M> l, w = f;
     for (std::size_t lvl = 0; lvl < M; ++lvl) {
       l[lvl] = w[0];
-      r[M - 1 - lvl] = w[M - 1 - lvl];
       for (std::size_t i = 0; i + lvl + 1 < M; ++i)
         for (std::size_t c = 0; c < static_cast<std::size_t>(D); ++c) w[i][c] = T(0.5) * (w[i][c] + w[i + 1][c]);
     }
-    const T left = polygon_bound_n(l, limit, levels - 1);
-    return std::max(left, polygon_bound_n(r, limit, levels - 1));
+    const T left = polygon_bound2(l, limit2, levels - 1);
+    return std::max(left, polygon_bound2(w, limit2, levels - 1));
   }
 
   /// Vectors whose convex hull holds c'' on [0, 1], into out (the margin of
@@ -896,7 +951,9 @@ void approximate_span(const Piece& piece, T s0, T s1, const Point<T, D>& p_start
     const Vector<T, D> dir1 = last ? t_end : end_direction(part.points, false);
     Vector<T, D> d0 = dir0;
     if (squared_norm(d0) == 0) d0 = end_direction(part.points, true);
-    const auto q = tangent_chain(p0, d0, p2, dir1, part.end_speed(true), part.end_speed(false));
+    // The end speeds serve skew tangent lines only (a space curve): not computed in the plane.
+    const T v0 = D > 2 ? part.end_speed(true) : T(0), v1 = D > 2 ? part.end_speed(false) : T(0);
+    const auto q = tangent_chain(p0, d0, p2, dir1, v0, v1);
     if (!q) return Try{Chain<T, D>({p0, p0, p2}), dir1, std::numeric_limits<T>::infinity(), false};
     // The cheap bound first (polynomial parts, one quadratic): when it meets the tolerance
     // over the rest of the span with a wide margin (a tenth of it, so that the reported
