@@ -3,12 +3,9 @@
 #include "casteljau/io/ops.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
-#include <limits>
 #include <optional>
 #include <string>
-#include <type_traits>
 #include <utility>
 #include <variant>
 #include <vector>
@@ -20,7 +17,6 @@
 #include "casteljau/algo/solve.hpp"
 #include "casteljau/algo/to_bspline.hpp"
 #include "casteljau/algo/to_quadratic.hpp"
-#include "casteljau/basis/quadrature.hpp"
 #include "work_limits.hpp"
 
 namespace casteljau::io {
