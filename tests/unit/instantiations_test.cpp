@@ -101,6 +101,18 @@ void exercise_newer_queries() {
     EXPECT_NEAR(std::hypot(q[0], q[1]), T(1), 16 * e) << t;
   }
 
+  // reduce_spline: the quarter circle (a NURBS) to degree 1 is its chord, 1 - sqrt(2) / 2
+  // off at t = 1/2 (64 e: the measure's golden section finds the quadratic peak to
+  // rounding); the parabola (2t, 4t (1 - t)) as a cubic B-spline (its Bezier form
+  // elevated by hand) comes back to degree 2 exactly (error 64 e times its size 2).
+  const auto chord = reduce_spline(quarter, 1);
+  EXPECT_EQ(chord.curve.degree(), 1);
+  EXPECT_NEAR(chord.max_error, 1 - std::sqrt(T(2)) / 2, 64 * e);
+  const BSpline<T, 2> elevated(3, {0, 0, 0, 0, 1, 1, 1, 1}, {{0, 0}, {T(2) / 3, T(4) / 3}, {T(4) / 3, T(4) / 3}, {2, 0}});
+  const auto back = reduce_spline(elevated, 1);
+  EXPECT_EQ(back.curve.degree(), 2);
+  EXPECT_LE(back.max_error, 128 * e);
+
   // to_quadratic: a quadratic (2t, 4t (1 - t)) elevated to a cubic is the parabola
   // y = x (2 - x). Every segment's points at five parameters are on it within the
   // tolerance times sqrt(5) (the vertical distance for a Euclidean one where |slope| <= 2)

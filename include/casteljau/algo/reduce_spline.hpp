@@ -1,8 +1,8 @@
-// Degree reduction of B-splines and NURBS by fitting: the lower-degree spline on the same
-// breaks fitted to the curve by weighted least squares, then refined towards the min-max
-// fit by Lawson's reweighting. The candidates io::reduce measures next to [PT97] A5.11.
-// Flat coordinates (a run-time count E per point) so that one instantiation per scalar
-// serves every dimension and both the Cartesian and the homogeneous fits.
+// Degree reduction of B-splines and NURBS (reduce_spline): the lower-degree spline on the
+// same breaks fitted to the curve by weighted least squares, then refined towards the
+// min-max fit by Lawson's reweighting, measured next to [PT97] A5.11 and the least kept.
+// The fits use flat coordinates (a run-time count E per point) so that one instantiation
+// per scalar serves every dimension and both the Cartesian and the homogeneous fits.
 #pragma once
 
 #include <algorithm>
@@ -10,11 +10,19 @@
 #include <cstddef>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <span>
+#include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
+#include "casteljau/algo/deviation.hpp"
 #include "casteljau/basis/bspline_basis.hpp"
 #include "casteljau/basis/knot_form.hpp"
+#include "casteljau/basis/quadrature.hpp"
+#include "casteljau/curves/bspline.hpp"
+#include "casteljau/curves/nurbs.hpp"
 
 namespace casteljau::detail {
 
@@ -65,8 +73,8 @@ void piece_value(const FlatSpline<T>& f, std::size_t s, T u, std::span<T> N, std
     for (std::size_t e = 0; e < E; ++e) out[e] += N[k] * f.P[(first + k) * E + e];
 }
 
-/// A degree-q spline on knots W fitted to a curve on its pieces: the problem io::reduce
-/// poses. Pieces j = 0.. of the curve's domain: [lo_j, hi_j], the original's span
+/// A degree-q spline on knots W fitted to a curve on its pieces: the problem
+/// reduce_spline poses. Pieces j = 0.. of the curve's domain: [lo_j, hi_j], the original's span
 /// source_span[j] and the fit's span fit_span[j] there; K samples per piece at the Chebyshev
 /// points of the first kind (interior: at a break the two sides are the two pieces');
 /// fixed control points (the domain's ends, both limits at a jump) with their values in
@@ -241,3 +249,368 @@ std::vector<LawsonFit<T>> lawson_fits(const SplineFit<T>& f, Target&& target, Er
 }
 
 }  // namespace casteljau::detail
+
+namespace casteljau {
+
+/// A curve type reduce_spline takes: a BSpline or a Nurbs (any scalar, any dimension).
+template <class C>
+concept SplineCurveType = std::is_same_v<C, BSpline<typename C::Scalar, C::dimension>> ||
+                          std::is_same_v<C, Nurbs<typename C::Scalar, C::dimension>>;
+
+/// The result of reduce_spline: the curve of degree p - r and its largest distance from
+/// the original at equal parameters over the domain, measured (max_deviation: dense
+/// samples and a local search, to about 1e-9 relative at double; a value from below).
+template <class C>
+struct SplineReduction {
+  C curve;
+  typename C::Scalar max_error = 0;
+};
+
+namespace detail {
+
+/// The distinct knots of a B-spline or NURBS inside its domain: its pieces' breaks.
+template <SplineCurveType C>
+std::vector<typename C::Scalar> spline_breaks(const C& x) {
+  const auto dom = x.domain();
+  std::vector<typename C::Scalar> b;
+  for (const auto& run : x.knot_vector().distinct())
+    if (run.value >= dom.lo && run.value <= dom.hi) b.push_back(run.value);
+  return b;
+}
+
+/// The mean of the curve over its domain, (1 / |domain|) times the integral of C (the
+/// best constant in L2), by adaptive Gauss-Kronrod per knot interval to 1e-14 relative at
+/// double (target_at: the same number of digits at other scalars).
+template <class C>
+Point<typename C::Scalar, C::dimension> spline_mean(const C& x, const std::vector<typename C::Scalar>& breaks) {
+  using T = typename C::Scalar;
+  constexpr int D = C::dimension;
+  const Interval<T> dom = x.domain();
+  const T rel = target_at<T>(1e-14), abs = std::max(static_cast<T>(1e-300), std::numeric_limits<T>::min());
+  Point<T, D> m;
+  for (int k = 0; k < D; ++k) {
+    T s = 0;
+    for (std::size_t i = 0; i + 1 < breaks.size(); ++i) {
+      s += integrate_adaptive<T>([&](T u) { return x(u)[k]; }, breaks[i], breaks[i + 1], rel, abs).value;
+    }
+    m[k] = s / (dom.hi - dom.lo);
+  }
+  return m;
+}
+
+/// The largest |a(u) - b(u)| at samples + 1 equally spaced u per interval of `breaks`
+/// (a value from below of max_deviation's), stopping at the first above stop_above.
+template <class T, class A, class B>
+T sampled_deviation(const A& a, const B& b, const std::vector<T>& breaks, int samples, T stop_above) {
+  T top = 0;
+  for (std::size_t i = 0; i + 1 < breaks.size(); ++i) {
+    for (int j = 0; j <= samples; ++j) {
+      const T u = j == samples ? breaks[i + 1] : breaks[i] + (breaks[i + 1] - breaks[i]) * static_cast<T>(j) / static_cast<T>(samples);
+      top = std::max(top, norm(a(u) - b(u)));
+      if (top > stop_above) return top;
+    }
+  }
+  return top;
+}
+
+/// The centre of the control points' box: the fits work about it, so that translating
+/// the curve changes nothing but rounding.
+template <class T, int D>
+Point<T, D> control_centre(const std::vector<Point<T, D>>& P) {
+  Point<T, D> lo = P.front(), hi = P.front();
+  for (const auto& q : P)
+    for (int d = 0; d < D; ++d) {
+      lo[d] = std::min(lo[d], q[d]);
+      hi[d] = std::max(hi[d], q[d]);
+    }
+  Point<T, D> c;
+  for (int d = 0; d < D; ++d) c[d] = lo[d] / 2 + hi[d] / 2;
+  return c;
+}
+
+/// A B-spline's points about c, or a NURBS' homogeneous points (w (P - c), w), flat.
+template <class T, int D>
+FlatSpline<T> flat_about(const BSpline<T, D>& x, const Point<T, D>& c) {
+  FlatSpline<T> f{x.degree(), D, x.knots(), {}};
+  for (const auto& q : x.points())
+    for (int d = 0; d < D; ++d) f.P.push_back(q[d] - c[d]);
+  return f;
+}
+template <class T, int D>
+FlatSpline<T> flat_about(const Nurbs<T, D>& x, const Point<T, D>& c) {
+  FlatSpline<T> f{x.degree(), D + 1, x.knots(), {}};
+  for (const auto& h : x.homogeneous().points()) {
+    for (int d = 0; d < D; ++d) f.P.push_back(h[d] - h[D] * c[d]);
+    f.P.push_back(h[D]);
+  }
+  return f;
+}
+
+/// The fitting problem of the reduction by r of the degree-p spline f: the knots of
+/// reduced_knots, the pieces of f's domain, K = 2 p + 4 samples a piece, and the fixed
+/// control points (the domain's ends, both limits at a jump) with the values
+/// value(s, u, out) gives: f's piece on its span s at u, as the fit's E numbers.
+template <class T, class Value>
+SplineFit<T> spline_fit_problem(const FlatSpline<T>& f, int r, int E, Value&& value) {
+  const std::span<const T> U(f.U);
+  SplineFit<T> g;
+  g.q = f.p - r;
+  g.E = E;
+  g.K = 2 * f.p + 4;
+  g.W = reduced_knots<T>(U, f.p, r);
+  for (const std::size_t s : nonempty_spans<T>(U, f.p)) {
+    g.lo.push_back(U[s]);
+    g.hi.push_back(U[s + 1]);
+    g.source_span.push_back(s);
+    g.fit_span.push_back(find_span<T>(std::span<const T>(g.W), g.q, U[s] / 2 + U[s + 1] / 2));
+  }
+  const std::size_t n = g.W.size() - static_cast<std::size_t>(g.q) - 1, e = static_cast<std::size_t>(E);
+  g.fixed.assign(n, 0);
+  g.C0.assign(n * e, T(0));
+  const auto fix = [&](std::size_t i, std::size_t s, T u) {
+    g.fixed[i] = 1;
+    value(s, u, std::span<T>(g.C0).subspan(i * e, e));
+  };
+  fix(0, g.source_span.front(), g.lo.front());
+  fix(n - 1, g.source_span.back(), g.hi.back());
+  for (std::size_t j = 1; j < g.lo.size(); ++j) {
+    const T x = g.lo[j];
+    if (knot_multiplicity<T>(U, x) != static_cast<std::size_t>(f.p) + 1) continue;
+    const std::size_t k = static_cast<std::size_t>(std::lower_bound(g.W.begin(), g.W.end(), x) - g.W.begin());
+    fix(k - 1, g.source_span[j - 1], x);  // the left limit ends the piece before the jump
+    fix(k, g.source_span[j], x);          // the right limit starts the next
+  }
+  return g;
+}
+
+/// The curve's values at the fit's samples, E numbers each, when they take at most 4e6
+/// numbers (else none: the fit evaluates the curve at each use).
+template <class T, class Value>
+std::vector<T> sample_values(const SplineFit<T>& g, Value&& value) {
+  std::vector<T> Y;
+  const std::size_t E = static_cast<std::size_t>(g.E);
+  if (static_cast<double>(g.samples()) * static_cast<double>(E) > 4e6) return Y;
+  Y.resize(g.samples() * E);
+  for (std::size_t i = 0; i < g.samples(); ++i) value(g.source_span[g.piece(i)], g.sample(i), std::span<T>(Y).subspan(i * E, E));
+  return Y;
+}
+
+/// How many Lawson steps the fit may take: about 3e7 operations in all, none past 2e6
+/// samples (the weights and errors are kept per sample), at most 30.
+template <class T>
+int lawson_steps(const SplineFit<T>& g, int p, int source_coordinates, bool cached) {
+  const double N = static_cast<double>(g.samples());
+  if (N > 2e6) return 0;
+  const double per_step =
+      N * ((g.q + 1.0) * (g.q + 1.0) * (g.E + 2.0) + (cached ? 0.0 : 2.0 * (p + 1.0) * (p + 1.0) * source_coordinates));
+  return static_cast<int>(std::min(30.0, std::floor(3e7 / per_step)));
+}
+
+/// The candidate reductions of a bspline or nurbs x by r (p - r >= 1). The fits of
+/// lawson_fits on the knots of reduced_knots, the end points (and both limits at a jump)
+/// kept: for a bspline of its points; for a nurbs of the Cartesian curve by a polynomial
+/// spline (weights 1: always possible, whatever the weights) and of the homogeneous points
+/// (kept when every fitted weight is > 0). Then r steps of [PT97] A5.11 (reduce_degree
+/// with no tolerance to meet: every knot removal taken; left out where it fails, e.g. a
+/// NURBS weight <= 0), and the fits' first (least-squares) solves. In this order, the
+/// likely best first; none depends on a tolerance. Each with a value from below of its
+/// max error (the fits' largest sampled error; 0 for A5.11).
+template <SplineCurveType C>
+std::vector<std::pair<C, typename C::Scalar>> spline_reductions(const C& x, int r) {
+  using T = typename C::Scalar;
+  constexpr int D = C::dimension;
+  constexpr bool rational = std::is_same_v<C, Nurbs<T, D>>;
+  std::vector<std::pair<C, T>> out, rest;  // the fits' best, then A5.11 and the fits' first solves
+  std::optional<C> steps;
+  try {
+    C y = x;
+    for (int j = 0; j < r; ++j) y = y.reduce_degree(std::numeric_limits<T>::max()).curve;
+    steps = std::move(y);
+  } catch (const InvalidArgument&) {
+  } catch (const NumericalError&) {
+  }
+  const int p = x.degree(), q = p - r;
+  const Point<T, D> c = control_centre<T, D>(x.points());
+  const FlatSpline<T> f = flat_about<T, D>(x, c);
+  const std::size_t S = static_cast<std::size_t>(f.E);
+  std::vector<T> N(static_cast<std::size_t>(p) + 1), h(S), y(S);
+  // The curve's value on a piece, as f holds it (points, or homogeneous points)...
+  const auto source = [&](std::size_t s, T u, std::span<T> v) { piece_value<T>(f, s, u, std::span<T>(N), v); };
+  // ... and as a Cartesian point about c.
+  const auto cartesian = [&](std::size_t s, T u, std::span<T> v) {
+    source(s, u, std::span<T>(h));
+    for (int d = 0; d < D; ++d) v[static_cast<std::size_t>(d)] = rational ? h[static_cast<std::size_t>(d)] / h[D] : h[static_cast<std::size_t>(d)];
+  };
+  // |a - b| over the first D numbers (the Cartesian coordinates; b / b[D] and a / a[D]
+  // when `projective`), scaled by the largest difference so that no square under- or
+  // overflows at any scale.
+  const auto distance_to = [&](std::span<const T> a, std::span<const T> b, bool projective = false) {
+    Vector<T, D> diff;
+    for (std::size_t d = 0; d < static_cast<std::size_t>(D); ++d) {
+      diff[static_cast<int>(d)] = projective ? a[d] / a[D] - b[d] / b[D] : a[d] - b[d];
+    }
+    return norm(diff);
+  };
+  std::vector<T> point(static_cast<std::size_t>(D));
+  // A clamped end's point is the curve's end exactly (the fits' fixed values are that
+  // point about c, which adding c back may round; A5.11 divides by the weight again).
+  const std::vector<T>& U = x.knots();
+  const std::size_t n = x.points().size();
+  const auto exact_ends = [&](std::vector<Point<T, D>>& Q) {
+    if (U.front() == U[static_cast<std::size_t>(p)]) Q.front() = x.points().front();
+    if (U.back() == U[n]) Q.back() = x.points().back();
+  };
+  // The polynomial fit (a bspline's, or a nurbs' with weights 1).
+  {
+    const SplineFit<T> g = spline_fit_problem<T>(f, r, D, cartesian);
+    const std::vector<T> Y = sample_values<T>(g, cartesian);
+    const auto target = [&](std::size_t i, std::span<T> v) {
+      if (Y.empty()) return cartesian(g.source_span[g.piece(i)], g.sample(i), v);
+      std::copy_n(Y.begin() + static_cast<std::ptrdiff_t>(i * D), D, v.begin());
+    };
+    const auto error = [&](std::size_t i, std::span<const T> v) {
+      target(i, std::span<T>(point));
+      return distance_to(v, point);
+    };
+    const auto fits = lawson_fits<T>(g, target, error, lawson_steps<T>(g, p, static_cast<int>(S), !Y.empty()));
+    for (std::size_t k = 0; k < fits.size(); ++k) {
+      std::vector<Point<T, D>> Q(g.fixed.size());
+      for (std::size_t i = 0; i < Q.size(); ++i)
+        for (int d = 0; d < D; ++d) Q[i][d] = fits[k].C[i * D + static_cast<std::size_t>(d)] + c[d];
+      exact_ends(Q);
+      if constexpr (rational) {
+        (k == 0 ? out : rest).emplace_back(C(q, g.W, std::move(Q), std::vector<T>(g.fixed.size(), T(1))), fits[k].sampled_error);
+      } else {
+        (k == 0 ? out : rest).emplace_back(C(q, g.W, std::move(Q)), fits[k].sampled_error);
+      }
+    }
+  }
+  if constexpr (rational) {
+    // The homogeneous fit, its error the Cartesian distance (infinite where the fitted
+    // weight is <= 0).
+    const SplineFit<T> g = spline_fit_problem<T>(f, r, D + 1, source);
+    const std::vector<T> Y = sample_values<T>(g, source);
+    const auto target = [&](std::size_t i, std::span<T> v) {
+      if (Y.empty()) return source(g.source_span[g.piece(i)], g.sample(i), v);
+      std::copy_n(Y.begin() + static_cast<std::ptrdiff_t>(i * S), S, v.begin());
+    };
+    const auto error = [&](std::size_t i, std::span<const T> v) {
+      if (!(v[D] > 0)) return std::numeric_limits<T>::infinity();
+      target(i, std::span<T>(y));
+      return distance_to(v, y, true);
+    };
+    const auto fits = lawson_fits<T>(g, target, error, lawson_steps<T>(g, p, static_cast<int>(S), !Y.empty()));
+    for (std::size_t k = 0; k < fits.size(); ++k) {
+      const std::vector<T>& P = fits[k].C;
+      std::vector<Point<T, D>> Q(g.fixed.size());
+      std::vector<T> w(g.fixed.size());
+      bool positive = true;
+      for (std::size_t i = 0; i < Q.size(); ++i) {
+        w[i] = P[i * S + D];
+        positive = positive && w[i] > 0 && std::isfinite(w[i]);
+        for (int d = 0; d < D; ++d) Q[i][d] = P[i * S + static_cast<std::size_t>(d)] / w[i] + c[d];
+      }
+      if (!positive) continue;
+      exact_ends(Q);
+      bool finite = true;
+      for (const auto& pt : Q) finite = finite && all_finite_point(pt);
+      if (finite) (k == 0 ? out : rest).emplace_back(C(q, g.W, std::move(Q), std::move(w)), fits[k].sampled_error);
+    }
+  }
+  if (steps) {
+    std::vector<Point<T, D>> Q = steps->points();
+    exact_ends(Q);
+    if constexpr (rational) {
+      out.emplace_back(C(steps->degree(), steps->knots(), std::move(Q), steps->weights()), T(0));
+    } else {
+      out.emplace_back(C(steps->degree(), steps->knots(), std::move(Q)), T(0));
+    }
+  }
+  for (auto& z : rest) out.push_back(std::move(z));
+  return out;
+}
+
+}  // namespace detail
+
+/// The cost of reduce_spline(x, r) in units of about 0.065 us (user CPU of the machine it
+/// was calibrated on): pieces x ((p + 1)^3, four times that for a NURBS, + 1000). Measuring
+/// the answer evaluates both curves 32 (p + 1) times per piece at O(p^2) each, and the
+/// candidates' fits cost about as much: (p + 1)^3 a piece, four times that for a NURBS
+/// (its rational fit: measured 3.4x at degree 200, 4.8x at 300); the 1000 a piece is the
+/// measure's local searches (65 us a quadratic piece). It does not depend on r. The
+/// command line refuses above 3e7 (about 2 s: a B-spline of degree 300 in one piece
+/// 1.8 s, 20,000 quadratic pieces 1.3 s).
+template <SplineCurveType C>
+double reduce_spline_work(const C& x) {
+  constexpr bool rational = std::is_same_v<C, Nurbs<typename C::Scalar, C::dimension>>;
+  const double pieces = static_cast<double>(detail::spline_breaks(x).size() - 1);
+  return pieces * ((rational ? 4 : 1) * std::pow(x.degree() + 1.0, 3) + 1000);
+}
+
+/// The degree reduction of a B-spline or NURBS x of degree p by r (1 <= r <= p): the best
+/// of several candidates, with its measured error. None of them depends on a tolerance:
+/// the caller accepts or refuses the answer on its max_error.
+/// - To degree q = p - r >= 1 the answer keeps the domain and its breaks: clamped at both
+///   ends, each break inside the domain of multiplicity m with multiplicity max(m - r, 1)
+///   (detail::reduced_knots; the original continuity where degree q allows it), a jump
+///   (m = p + 1) q + 1 times; the domain's end points (and both limits at a jump) kept.
+///   The candidates: the fit of the degree-q spline on those knots at 2 p + 4 Chebyshev
+///   points per knot interval, weighted least squares then up to 30 Lawson steps towards
+///   the min-max fit (detail::lawson_fits; the step of least sampled error, and the
+///   first); for a NURBS that fit twice, of the Cartesian curve by a polynomial spline
+///   (weights 1: always possible) and of the homogeneous points (kept when every fitted
+///   weight is > 0); r steps of [PT97] A5.11 (x.reduce_degree; left out where it fails).
+///   They are ranked by their largest distance at 4 (p + 1) + 1 equally spaced parameters
+///   per knot interval (the breaks included), the least kept (the first of equals).
+/// - To degree 0: the constant mean of the curve over its domain (the L2 best constant,
+///   one constant also for a curve that jumps).
+/// The answer's max_error is then measured by max_deviation at 32 (p + 1) samples per
+/// knot interval. An elevated curve comes back with its own knots, up to rounding.
+/// Throws InvalidArgument("times", ...) for r outside 1..p, NumericalError when no
+/// candidate lies at a finite distance from x (coordinates near the overflow threshold)
+/// or the mean's integral fails. Cost: reduce_spline_work(x) units.
+template <SplineCurveType C>
+SplineReduction<C> reduce_spline(const C& x, int times) {
+  using T = typename C::Scalar;
+  constexpr int D = C::dimension;
+  constexpr bool rational = std::is_same_v<C, Nurbs<T, D>>;
+  const int p = x.degree();
+  if (times < 1 || times > p) {
+    throw InvalidArgument("times", "must be in 1..p = " + std::to_string(p) + " (the curve's degree), got " + std::to_string(times));
+  }
+  const int m = p - times;
+  const std::vector<T> breaks = detail::spline_breaks(x);
+  C reduced = x;
+  bool measure = true;
+  if (m == 0) {
+    const Interval<T> dom = x.domain();
+    const Point<T, D> mean = detail::spline_mean(x, breaks);
+    if constexpr (rational) {
+      reduced = C(0, {dom.lo, dom.hi}, {mean}, {T(1)});
+    } else {
+      reduced = C(0, {dom.lo, dom.hi}, {mean});
+    }
+  } else {
+    T coarse = std::numeric_limits<T>::infinity();
+    for (auto& [y, below] : detail::spline_reductions(x, times)) {
+      if (below > coarse) continue;  // a sampled error above the best's already
+      const T e = detail::sampled_deviation<T>(x, y, breaks, 4 * (p + 1), coarse);
+      if (e < coarse) {
+        coarse = e;
+        reduced = std::move(y);
+      }
+    }
+    measure = coarse < std::numeric_limits<T>::infinity();
+  }
+  // 32 (p + 1) samples per knot interval: a peak of the difference of two degree-p
+  // polynomials is wider than that spacing.
+  const T err = measure ? max_deviation<T>(x, reduced, breaks, 32 * (p + 1)) : std::numeric_limits<T>::infinity();
+  if (!std::isfinite(err)) {
+    throw NumericalError("no reduction from degree " + std::to_string(p) + " to " + std::to_string(m) +
+                         " with a finite distance to the curve was found (coordinates near the largest " +
+                         (std::is_same_v<T, double> ? "double" : "value of the scalar type") + "?)");
+  }
+  return {std::move(reduced), err};
+}
+
+}  // namespace casteljau

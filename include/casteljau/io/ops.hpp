@@ -43,12 +43,12 @@ struct AnyReduction {
 
 /// Degree reduction of a bezier, bspline or nurbs by `times` r (1 <= r <= p) within
 /// `tolerance`: a bezier by least squares with its end points kept (free for a constant
-/// result: the mean), a degree-0 result as the curve's mean over its domain; a bspline or
-/// nurbs as the least max_error among candidates (algo/reduce_spline.hpp's fits on the
-/// input's breaks, least squares then Lawson steps; for a nurbs a polynomial and a
-/// homogeneous fit; r steps of reduce_degree, [PT97] A5.11), none of them depending on
-/// the tolerance. max_error is measured (dense sampling and local maximisation, to about
-/// 1e-9 relative); a result farther than the tolerance is refused. Errors: "curve.type"
+/// result: the mean); a bspline or nurbs by the library's reduce_spline
+/// (algo/reduce_spline.hpp: the least max_error among candidates, a degree-0 result the
+/// curve's mean), none of them depending on the tolerance; the work limit is
+/// reduce_spline_work's units (a bezier one piece) at most 3e7. max_error is measured
+/// (dense sampling and local maximisation, to about 1e-9 relative); a result farther than
+/// the tolerance is refused. Errors: "curve.type"
 /// for other types, "times" outside 1..p, "tolerance" (not > 0, or exceeded: the message
 /// gives the measured figure), "curve" (the work limit; no finite reduction found).
 [[nodiscard]] AnyReduction reduce(const AnyCurve& c, int times, double tolerance);
