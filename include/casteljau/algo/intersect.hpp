@@ -85,7 +85,9 @@ Intersections<typename CA::Scalar> intersect(const CA& a, const CB& b) {
 /// The self-intersections of a plane curve: pairs ta < tb with c(ta) = c(tb), and the
 /// stretches where the curve runs over itself (overlaps, a before b). Not reported: the
 /// joints of consecutive pieces, the closing point of a closed curve (c at the start and
-/// end of its domain), and cusps (a "loop" smaller than 1e-8 of the curve's size).
+/// end of its domain), and cusps (a "loop" smaller than 1e-8 of the curve's size, or a
+/// hairpin under 1e-6 of it whose two branches stay within the near-miss distance of each
+/// other: a path reversing at a joint).
 /// Method, accuracy and cost as intersect(), on the pairs of distinct arcs of one curve.
 template <class C>
   requires PiecewiseBezierCurve<C> && (C::dimension == 2)
