@@ -75,6 +75,9 @@ Response basis(const Args& a) {
   const std::optional<int> degree = a.has("degree") ? std::optional<int>(a.integer("degree")) : std::nullopt;
   const std::optional<double> tension = a.has("tension") ? std::optional<double>(a.number("tension")) : std::nullopt;
   const int k = a.integer("derivatives");
+  // Written field by field, not by a Describe entry: which fields appear depends on the
+  // request (derivatives only when asked, the matrices only for the cubic forms, with a
+  // null constraint where it is singular).
   const BasisTable table =
       io::basis(a.string("kind"), degree, a.optional_numbers("knots"), a.optional_numbers("params"), tension, a.numbers("t"), k);
   OrderedJson r;
@@ -105,23 +108,7 @@ constexpr Field basis_fields[] = {
 Response frames(const Args& a) {
   std::optional<std::span<const double>> initial;
   if (a.has("initial_normal")) initial = std::span<const double>(a.numbers("initial_normal"));
-  const MovingFrames f = io::moving_frames(a.curve("curve"), a.numbers("t"), a.string("method"), initial);
-  const auto vectors = [](const auto& list) {
-    OrderedJson out = OrderedJson::array();
-    for (const auto& v : list) {
-      if constexpr (requires { v.has_value(); }) {
-        out.push_back(v ? OrderedJson(*v) : OrderedJson(nullptr));
-      } else {
-        out.push_back(OrderedJson(v));
-      }
-    }
-    return out;
-  };
-  OrderedJson r;
-  r["tangents"] = vectors(f.tangents);
-  r["normals"] = vectors(f.normals);
-  r["binormals"] = vectors(f.binormals);
-  return {r};
+  return {to_json(io::moving_frames(a.curve("curve"), a.numbers("t"), a.string("method"), initial))};
 }
 
 constexpr std::string_view frame_methods[] = {"rotation_minimizing", "frenet"};

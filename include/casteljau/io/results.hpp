@@ -17,6 +17,7 @@
 
 #include "casteljau/io/any_curve.hpp"
 #include "casteljau/io/fit.hpp"
+#include "casteljau/io/frames.hpp"
 #include "casteljau/io/intersect.hpp"
 #include "casteljau/io/json.hpp"
 #include "casteljau/io/knots.hpp"
@@ -145,6 +146,13 @@ struct Describe<AnyReduction> {
 };
 
 template <>
+struct Describe<MovingFrames> {
+  using S = MovingFrames;
+  static constexpr auto fields =
+      std::tuple{field("tangents", &S::tangents), field("normals", &S::normals), field("binormals", &S::binormals)};
+};
+
+template <>
 struct Describe<AnySubdivision> {
   using S = AnySubdivision;
   static constexpr auto fields = std::tuple{field("points", &S::points), field("limit", &S::limit)};
@@ -185,11 +193,20 @@ template <class T>
 [[nodiscard]] inline OrderedJson to_json(IntersectionKind k) { return k == IntersectionKind::tangent ? "tangent" : "crossing"; }
 
 template <class X>
+[[nodiscard]] OrderedJson to_json(const std::optional<X>& x);
+template <class X>
 [[nodiscard]] OrderedJson to_json(const std::vector<X>& v);
 template <class X, std::size_t N>
 [[nodiscard]] OrderedJson to_json(const std::array<X, N>& v);
 template <Described S>
 [[nodiscard]] OrderedJson to_json(const S& s);
+
+/// An entry of a list that may be undefined (a Frenet normal where the curvature
+/// vanishes): null.
+template <class X>
+OrderedJson to_json(const std::optional<X>& x) {
+  return x ? to_json(*x) : OrderedJson(nullptr);
+}
 
 template <class X>
 OrderedJson to_json(const std::vector<X>& v) {
