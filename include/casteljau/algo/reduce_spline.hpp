@@ -89,14 +89,22 @@ struct SplineFit {
   std::vector<T> lo, hi;
   std::vector<std::size_t> source_span, fit_span;
   int K = 0;
+  std::vector<T> nodes;  // the K Chebyshev points on [-1, 1] (set_samples), computed once
+
+  /// K samples per piece at the Chebyshev points of the first kind.
+  void set_samples(int k) {
+    K = k;
+    nodes.resize(static_cast<std::size_t>(K));
+    for (std::size_t j = 0; j < nodes.size(); ++j)
+      nodes[j] = std::cos(std::numbers::pi_v<T> * static_cast<T>(2 * j + 1) / static_cast<T>(2 * K));
+  }
 
   [[nodiscard]] std::size_t samples() const { return lo.size() * static_cast<std::size_t>(K); }
   [[nodiscard]] std::size_t piece(std::size_t i) const { return i / static_cast<std::size_t>(K); }
   [[nodiscard]] T sample(std::size_t i) const {
     const std::size_t j = i / static_cast<std::size_t>(K), k = i % static_cast<std::size_t>(K);
-    const T c = std::cos(std::numbers::pi_v<T> * static_cast<T>(2 * k + 1) / static_cast<T>(2 * K));
     const T mid = (lo[j] + hi[j]) / 2, half = (hi[j] - lo[j]) / 2;
-    return mid + half * c;
+    return mid + half * nodes[k];
   }
 };
 
@@ -356,7 +364,7 @@ SplineFit<T> spline_fit_problem(const FlatSpline<T>& f, int r, int E, Value&& va
   SplineFit<T> g;
   g.q = f.p - r;
   g.E = E;
-  g.K = 2 * f.p + 4;
+  g.set_samples(2 * f.p + 4);
   g.W = reduced_knots<T>(U, f.p, r);
   for (const std::size_t s : nonempty_spans<T>(U, f.p)) {
     g.lo.push_back(U[s]);

@@ -11,6 +11,8 @@
 #include <variant>
 #include <vector>
 
+#include <Eigen/LU>
+
 #include "casteljau/basis/roots.hpp"
 #include "casteljau/curves/concepts.hpp"
 #include "casteljau/curves/path.hpp"
@@ -161,38 +163,6 @@ std::vector<PieceError<typename C::Scalar, C::dimension>> piece_errors(const C& 
                                                                        std::size_t first = 0);
 
 
-/// ||A^-1||_inf (the largest row sum of |A^-1|) of a small square matrix, by Gauss-Jordan
-/// elimination with partial pivoting on [A | I]; infinity for a singular A.
-template <class T>
-T inverse_norm(std::vector<std::vector<T>> A) {
-  const std::size_t n = A.size();
-  for (std::size_t i = 0; i < n; ++i) {
-    A[i].resize(2 * n, T(0));
-    A[i][n + i] = 1;
-  }
-  for (std::size_t c = 0; c < n; ++c) {
-    std::size_t piv = c;
-    for (std::size_t r = c + 1; r < n; ++r)
-      if (std::abs(A[r][c]) > std::abs(A[piv][c])) piv = r;
-    if (A[piv][c] == 0) return std::numeric_limits<T>::infinity();
-    std::swap(A[c], A[piv]);
-    const T d = A[c][c];
-    for (T& x : A[c]) x /= d;
-    for (std::size_t r = 0; r < n; ++r) {
-      if (r == c || A[r][c] == 0) continue;
-      const T f = A[r][c];
-      for (std::size_t k = c; k < 2 * n; ++k) A[r][k] -= f * A[c][k];
-    }
-  }
-  T norm = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    T row = 0;
-    for (std::size_t k = n; k < 2 * n; ++k) row += std::abs(A[i][k]);
-    norm = std::max(norm, row);
-  }
-  return norm;
-}
-
 /// The Lagrange curve's one piece (its Bézier form by collocation, b) against the exact
 /// interpolant p of its points: the error e = q - p of the computed polynomial q is a
 /// polynomial of the same degree n whose Bernstein coefficients are A^-1 r, A_jk =
@@ -204,7 +174,7 @@ T inverse_norm(std::vector<std::vector<T>> A) {
 /// n levels of 3 u V (the rounded 1 - s, two products, a sum), the node s_j (two
 /// differences and a quotient, 3 u) moves q by at most |q'| 3 u <= 2 n V 3 u, and the
 /// last difference rounds by u |r|: in all |r_j| <= |computed r_j| (1 + 2 eps) +
-/// (2 + 4.5 n) eps V. ||A^-1|| is computed (Gauss-Jordan, partial pivoting) and doubled for its own
+/// (2 + 4.5 n) eps V. ||A^-1|| is computed (Eigen's full-pivoting LU) and doubled for its own
 /// rounding, a safety factor that is not a proof (measured: docs/cli.md). O(n^3), n <= 15.
 template <class T, int D>
 PieceError<T, D> lagrange_rounding(const Lagrange<T, D>& c, const Bezier<T, D>& q) {
@@ -224,20 +194,23 @@ PieceError<T, D> lagrange_rounding(const Lagrange<T, D>& c, const Bezier<T, D>& 
     d[i] = b[i] - c0;
     for (int k = 0; k < D; ++k) V[k] = std::max(V[k], std::abs(d[i][k]));
   }
-  std::vector<std::vector<T>> A(n1, std::vector<T>(n1));
+  Eigen::Matrix<T, Eigen::Dynamic, Eigen::Dynamic> A(static_cast<Eigen::Index>(n1), static_cast<Eigen::Index>(n1));
   std::vector<T> row(n1);
   Vector<T, D> r{};
   for (std::size_t j = 0; j < n1; ++j) {
     const T sj = (u[j] - dom.lo) / (dom.hi - dom.lo);
     bernstein_all<T>(n, sj, std::span<T>(row));
-    A[j] = row;
+    for (std::size_t k = 0; k < n1; ++k) A(static_cast<Eigen::Index>(j), static_cast<Eigen::Index>(k)) = row[k];
     std::vector<Vector<T, D>> w(d);  // de Casteljau on the differences
     for (std::size_t level = 1; level < n1; ++level)
       for (std::size_t i = 0; i + level < n1; ++i) w[i] = lerp(w[i], w[i + 1], sj);
     const Vector<T, D> rj = w[0] - (P[j] - c0);
     for (int k = 0; k < D; ++k) r[k] = std::max(r[k], std::abs(rj[k]));
   }
-  const T norm = inverse_norm(std::move(A));
+  // ||A^-1||_inf, the largest row sum of |A^-1| (LU with full pivoting; infinite where A
+  // is singular to rounding).
+  const Eigen::FullPivLU<Eigen::Matrix<T, Eigen::Dynamic, Eigen::Dynamic>> lu(A);
+  const T norm = lu.isInvertible() ? lu.inverse().cwiseAbs().rowwise().sum().maxCoeff() : std::numeric_limits<T>::infinity();
   for (int k = 0; k < D; ++k) out.coordinate[k] = 2 * norm * (r[k] * (1 + 2 * eps) + (2 + T(4.5) * n) * eps * V[k]);
   return out;
 }
