@@ -579,16 +579,16 @@ struct Part {
   /// error (to_quadratic), not a bound: on 8,700 parts of random cubics, where the part's
   /// distance to q (dense samples) is within 1e-3 of its chord, that distance is 1.001,
   /// 1.011 and 1.12 times the measure at the median, 90th and 99th percentiles; from 1e-3
-  /// to 1e-2 of the chord 1.017, 1.10 and 1.47 times. Newton may end at a farther foot
-  /// than the nearest (1.5% of those parts; 13% of the parts W11's random cubics try at 1e-1
-  /// of their box, mostly quadratics far longer than their part, whose spike is far from
-  /// the part): a larger measure, on which the part is rejected. Taking the nearest of q's
-  /// ends and middle as well changed W11's counts by 7 in 18,809 and 2 in 41,009 segments,
-  /// at a quarter more time at 1e-1 (the parts then measured go on to the bounds and
-  /// fail): not done. Infinite for other parts
+  /// to 1e-2 of the chord 1.017, 1.10 and 1.47 times. From the guess, Newton can end at a
+  /// farther foot than the nearest (1.5% of those parts; mostly quadratics far longer than
+  /// their part, a hairpin through a far crossing of the tangent lines): when the distance
+  /// found exceeds `recheck` and that foot lies within `recheck` of the part's control box,
+  /// Newton again from the nearest of q's ends and middle, the nearer foot kept, and the
+  /// first foot's parameter written to *first (the caller measures that point of q against
+  /// the part: distance_from). Infinite for other parts
   /// (rational, degree other than 3, a chain of two) and a quadratic with a handle of
   /// zero length.
-  T middle_foot(const Chain<T, D>& q, T& x) const {
+  T middle_foot(const Chain<T, D>& q, T& x, T recheck = std::numeric_limits<T>::infinity(), T* first = nullptr) const {
     if (!polynomial || q.size != 1 || points.size() != 4) return std::numeric_limits<T>::infinity();
     const auto& Q = q.front();
     const Vector<T, D> b = Q[1] - Q[0], a = (Q[0] - Q[1]) + (Q[2] - Q[1]);
@@ -633,7 +633,59 @@ struct Part {
       return squared_distance(u);
     };
     T d2 = newton(x);
+    // Beyond `recheck`, unless the foot itself is farther than that from the part's control
+    // box (so from the part: the Hausdorff distance is beyond it too, and the part is
+    // rejected on the measure rightly): Newton again from the nearest of q's ends and
+    // middle, the nearer foot kept (from the guess, Newton can end at another branch's
+    // foot where the guess's first-order model fails: c(1/2) far from q for its size, a
+    // hairpin).
+    const auto outside_box = [&](T u) {
+      T o2 = 0;
+      for (int k = 0; k < D; ++k) {
+        T lo = points[0][k], hi = lo;
+        for (std::size_t i = 1; i < 4; ++i) lo = std::min(lo, points[i][k]), hi = std::max(hi, points[i][k]);
+        const T v = Q[0][k] + u * (T(2) * b[k] + u * a[k]);
+        const T o = std::max(T(0), std::max(lo - v, v - hi));
+        o2 += o * o;
+      }
+      return o2;
+    };
+    if (d2 > recheck * recheck && !(outside_box(x) > recheck * recheck)) {
+      T u = 0, best = squared_distance(T(0));
+      for (const T v : {T(0.5), T(1)}) {
+        const T dv = squared_distance(v);
+        if (dv < best) best = dv, u = v;
+      }
+      if (best < d2) {
+        const T d2u = newton(u);
+        if (d2u < d2) {
+          if (first) *first = x;
+          d2 = d2u, x = u;
+        }
+      }
+    }
     return std::sqrt(d2);  // points near the curve: no overflow
+  }
+
+  /// The distance from p to a cubic part: Newton's method on (c(s) - p) . c'(s) = 0 from s,
+  /// clamped to [0, 1], stopped after a step of at most 1e-2, and the part's ends and middle
+  /// (the nearest kept). A distance to a point of the part: at least the true distance.
+  T distance_from(const Point<T, D>& p, T s) const {
+    const auto at = [&](T u) { return (*this)(u); };
+    for (int it = 0; it < 8; ++it) {
+      const Vector<T, D> r = at(s) - p, d1 = power[1] + s * (T(2) * power[2] + T(3) * s * power[3]),
+                         d2 = T(2) * power[2] + T(6) * s * power[3];
+      T gp = dot(d1, d1) + dot(r, d2);
+      if (!(gp > 0)) gp = dot(d1, d1);
+      if (!(gp > 0)) break;
+      const T ns = std::clamp(s - dot(r, d1) / gp, T(0), T(1));
+      const bool close = std::abs(ns - s) <= T(1e-2);
+      s = ns;
+      if (close) break;
+    }
+    T best = squared_norm(at(s) - p);
+    for (const T v : {T(0), T(0.5), T(1)}) best = std::min(best, squared_norm(at(v) - p));
+    return std::sqrt(best);
   }
 
   /// reparametrised_bound4 with sigma(1/2) = x given (middle_foot's): any x in [0, 1]
@@ -1095,7 +1147,18 @@ void approximate_span(const Piece& piece, T s0, T s1, const Point<T, D>& p_start
     // is farther than the tolerance is rejected on it. A cubic part against one quadratic
     // (middle_foot), else the sample at 1/2 of the sampled bound, which continues from it.
     T foot = 0;
-    T mid = part.middle_foot(*q, foot);
+    T spike = -1;
+    T mid = part.middle_foot(*q, foot, tolerance, &spike);
+    if (spike >= 0 && mid <= tolerance) {
+      // The first foot, farther than the tolerance from c(1/2), is a point of q: when it is
+      // farther than that from the part as well, so is the Hausdorff distance.
+      const auto& Q = q->front();
+      const T u = spike, w = T(1) - u;
+      Point<T, D> at;
+      for (int k = 0; k < D; ++k) at[k] = w * w * Q[0][k] + T(2) * w * u * Q[1][k] + u * u * Q[2][k];
+      const T far = part.distance_from(at, u);
+      if (far > tolerance) return Try{*q, dir1, far, false};
+    }
     std::optional<ChainDistance<T, D>> dist;
     if (!std::isfinite(mid)) {
       dist.emplace(*q);
@@ -1166,6 +1229,9 @@ void approximate_span(const Piece& piece, T s0, T s1, const Point<T, D>& p_start
     T x = s1 - t0 <= T(1.5) * step ? s1 : t0 + step;
     for (int it = 0; it < 200; ++it) {
       Try r = attempt(x);
+#ifdef QTRACE
+      QTRACE(t0, x, r.ok, r.search_error());
+#endif
       const T e = r.search_error();  // the measure, or a bound above the tolerance, or infinite
       const bool was_probe = probe;
       probe = false;
