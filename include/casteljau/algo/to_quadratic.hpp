@@ -21,8 +21,9 @@ namespace casteljau {
 /// A chain of quadratic Bézier segments approximating a curve: segment i replaces the
 /// curve over [breaks[i], breaks[i + 1]] (the curve's own parameter, so the chain has the
 /// curve's domain). max_error is the largest of the segments' error bounds, each an upper
-/// bound of the segment's Hausdorff distance to its part within the tolerance, not tight
-/// (see to_quadratic).
+/// bound of the segment's Hausdorff distance to its part, within the tolerance and not
+/// tight (see to_quadratic; the one exception, a straight segment over 1e-9 of a span
+/// where no quadratic through the tangent lines fits, is measured, whatever its bound).
 template <class T, int D>
 struct QuadraticChain {
   std::vector<Bezier<T, D>> segments;
@@ -125,7 +126,10 @@ struct Chain {
 /// one line) with equal speeds. Parallel directions: the chord's midpoint when the chord
 /// runs along them (a straight part). None otherwise (lines meeting behind; parallel
 /// lines apart). The intersection is computed in the orthonormal frame u1 = t0,
-/// u2 = (t1 - (t0 . t1) t0) normalised, which stays accurate for nearly parallel lines.
+/// u2 = (t1 - (t0 . t1) t0) normalised, which stays accurate for nearly parallel lines; in
+/// the plane by Cramer's rule on alpha t0 + beta t1 = p2 - p0, the sine of the angle the
+/// cross product t0 x t1 (the same |t1 - (t0 . t1) t0| for unit directions, and the same
+/// thresholds).
 template <class T, int D>
 std::optional<Chain<T, D>> tangent_chain(const Point<T, D>& p0, const Vector<T, D>& t0, const Point<T, D>& p2, const Vector<T, D>& t1, T v0,
                                          T v1) {
@@ -504,8 +508,11 @@ struct Part {
   /// and a single quadratic q, from the parametrisations alone: q degree-elevated to the
   /// part's degree n, Q_k = sum_i C(2, i) C(n - 2, k - i) / C(n, k) q_i, and c(s) - Q(s) =
   /// sum_k B_k(s) (c_k - Q_k), at most max_k |c_k - Q_k| (the Bernstein weights sum to 1).
-  /// Infinite for a rational part, a chain of two quadratics or degree above 15. Costs a
-  /// few operations per control point: cu2qu's test, against our G1 quadratic.
+  /// For a cubic part, the polygon of c - Q is halved (de Casteljau at 1/2) up to `levels`
+  /// times where its largest coefficient is above `limit` (polygon_bound_n): the bound
+  /// tends to the parametric distance itself. Infinite for a rational part, a chain of two
+  /// quadratics or degree above 15. Costs a few operations per control point: cu2qu's
+  /// test, against our G1 quadratic.
   T elevated_bound(const Chain<T, D>& q, T limit = 0, int levels = 0) const {
     const std::size_t n = points.size() - 1;
     if (!polynomial || q.size != 1 || n < 2 || n > 15) return std::numeric_limits<T>::infinity();
@@ -903,8 +910,9 @@ std::vector<T> cubic_cusps(const Piece& piece, const std::array<Point<T, D>, 3>&
 }
 
 /// True when a plane cubic with hodograph control points H (c' = A t^2 + B t + C) has
-/// speed above 1e-6 of the largest |H_k| on all of [0, 1], so no cusp (a cusp's speed is
-/// at most 1e-9 of it; the gap covers the rounding of the few operations below): where
+/// speed above 1e-6 of the largest |H_k| (1024 ulps for float) on all of [0, 1], so no cusp
+/// (a cusp's speed is at most 1e-9 of it; the gap covers the rounding of the few
+/// operations below): where
 /// |c'(t)| <= eps, the cross product A x c'(t) = (A x B) t + (A x C), linear in t, is at
 /// most |A| eps in size; when it stays beyond that on [0, 1], or |c'| stays above eps on
 /// the short interval where it does not (|c'| changes by at most (2 |A| + |B|) per unit
@@ -915,7 +923,9 @@ bool plane_cubic_without_cusp(const std::array<Point<T, 2>, 3>& H) {
   const Vector<T, 2> C = H[0].to_vector(), B = T(2) * (H[1] - H[0]), A = (H[0] - H[1]) + (H[2] - H[1]);
   T big2 = 0;
   for (const auto& h : H) big2 = std::max(big2, squared_norm(h.to_vector()));
-  const T eps = T(1e-6) * std::sqrt(big2), nA = std::sqrt(squared_norm(A));
+  // The margin: 1e-6, or 1024 ulps where that is coarser (float), far above a cusp's 1e-9.
+  constexpr T margin = std::max(T(1e-6), T(1024) * std::numeric_limits<T>::epsilon());
+  const T eps = margin * std::sqrt(big2), nA = std::sqrt(squared_norm(A));
   const T e = eps * nA;
   const T a = A[0] * B[1] - A[1] * B[0], b = A[0] * C[1] - A[1] * C[0];  // cross(A, c'(t)) = a t + b
   if (!(e > 0) || !std::isfinite(e)) return false;
@@ -986,7 +996,6 @@ std::vector<typename Piece::Scalar> cusps(const Piece& piece) {
       return false;
     };
     if (clear(H, nh)) return out;
-
     if (n == 3) return cubic_cusps(piece, cubic_hodograph);
     // Else the same test on the hodograph's halves and quarters (de Casteljau at their
     // middles): a hodograph that turns about the origin without nearing it passes on the
@@ -1116,6 +1125,7 @@ void approximate_span(const Piece& piece, T s0, T s1, const Point<T, D>& p_start
     T error;  // infinite when the tangent lines do not meet ahead
     bool ok;  // within the tolerance
     T aim = -1;  // when not negative: the search's measure (the distance from c(1/2) to q), else `error`
+    bool measured() const { return aim >= 0; }
     T search_error() const { return aim >= 0 ? aim : error; }
   };
   // The quadratic over [t0, t1] and its error bound, or none when the tangent lines do
@@ -1141,17 +1151,18 @@ void approximate_span(const Piece& piece, T s0, T s1, const Point<T, D>& p_start
     // span ends there).
     const T p = last ? part.elevated_bound(*q, tolerance, 4) : part.elevated_bound(*q);
     if (last && p <= tolerance) return Try{*q, dir1, p, true};
-    // The search's measure: the distance from c(1/2) to its foot on the chain, within a few
-    // percent of the Hausdorff distance on parts near the tolerance and consistent from one
-    // end to the next (the search's model of the error holds on it); a part whose c(1/2)
-    // is farther than the tolerance is rejected on it. A cubic part against one quadratic
+    // The search's measure: the distance from c(1/2) to its foot on the chain, near the
+    // Hausdorff distance on parts near a small tolerance (see middle_foot) and consistent
+    // from one end to the next (the search's model of the error holds on it); a part whose
+    // c(1/2) is farther than the tolerance is rejected on it. A cubic part against one quadratic
     // (middle_foot), else the sample at 1/2 of the sampled bound, which continues from it.
     T foot = 0;
     T spike = -1;
     T mid = part.middle_foot(*q, foot, tolerance, &spike);
     if (spike >= 0 && mid <= tolerance) {
-      // The first foot, farther than the tolerance from c(1/2), is a point of q: when it is
-      // farther than that from the part as well, so is the Hausdorff distance.
+      // The first foot, farther than the tolerance from c(1/2), is a point of q: its distance
+      // to the part (a measure, like the foot's: a distance to some point of the part) is
+      // the search's measure when above the tolerance, and the part is rejected on it.
       const auto& Q = q->front();
       const T u = spike, w = T(1) - u;
       Point<T, D> at;
@@ -1164,7 +1175,7 @@ void approximate_span(const Piece& piece, T s0, T s1, const Point<T, D>& p_start
       dist.emplace(*q);
       mid = dist->estimate(part, 2, tolerance);
     }
-    if (mid > tolerance) return Try{*q, dir1, mid, false};
+    if (mid > tolerance) return Try{*q, dir1, mid, false, mid};
     if (p <= tolerance) return Try{*q, dir1, p, true, mid};
     if (!dist) {
       // A cubic part: the bound after the quartic change of the quadratic's parameter
@@ -1180,7 +1191,7 @@ void approximate_span(const Piece& piece, T s0, T s1, const Point<T, D>& p_start
     // The sampled bound, coarse to fine, up to the first level within the tolerance.
     part.second_derivative_hull(hull);
     const T e = dist->bound(part, hull, tolerance, tolerance);
-    return Try{*q, dir1, e, e <= tolerance, e <= tolerance ? mid : e};
+    return Try{*q, dir1, e, e <= tolerance, e <= tolerance ? mid : T(-1)};
   };
   const auto accept = [&](const Try& r, T t1) {
     if (out.size() + static_cast<std::size_t>(r.q.size) > max_segments) {
@@ -1229,9 +1240,6 @@ void approximate_span(const Piece& piece, T s0, T s1, const Point<T, D>& p_start
     T x = s1 - t0 <= T(1.5) * step ? s1 : t0 + step;
     for (int it = 0; it < 200; ++it) {
       Try r = attempt(x);
-#ifdef QTRACE
-      QTRACE(t0, x, r.ok, r.search_error());
-#endif
       const T e = r.search_error();  // the measure, or a bound above the tolerance, or infinite
       const bool was_probe = probe;
       probe = false;
@@ -1262,6 +1270,7 @@ void approximate_span(const Piece& piece, T s0, T s1, const Point<T, D>& p_start
             if (start > x && start < hi) {
               g = start + T(0.1) * (hi - start);
               probe = true;
+              model_guess = std::numeric_limits<T>::quiet_NaN();  // a failure there: bisection
             }
           }
         }
@@ -1281,18 +1290,19 @@ void approximate_span(const Piece& piece, T s0, T s1, const Point<T, D>& p_start
         // The model: e grows as (x - t0)^k, k = 4 (G1 Hermite interpolation) unless the
         // last two ends from t0 measured another exponent (within [2, 10]).
         T k = T(4);
-        if (prev_x > t0 && std::isfinite(prev_e) && prev_e > 0) {
+        if (r.measured() && prev_x > t0 && std::isfinite(prev_e) && prev_e > 0) {
           const T lr = std::log((x - t0) / (prev_x - t0));
           if (std::abs(lr) > T(0.02)) k = std::clamp(std::log(e / prev_e) / lr, T(2), T(10));
         }
         g = t0 + (x - t0) * (k == T(4) ? std::sqrt(std::sqrt(aim * tolerance / e)) : std::pow(aim * tolerance / e, T(1) / k));
-        prev_x = x, prev_e = e;
+        if (r.measured()) prev_x = x, prev_e = e;
       }
-      // The span's rest failed as one segment: an inflection inside is the next end (the
-      // two convex parts), else, when it failed within 16 times the tolerance (the error
-      // falls as the fourth power of the step: halves near a sixteenth of it), the
-      // midpoint (cu2qu's two equal parts); with either, the rest from there as the second
-      // segment (taken whatever the first's error). Where the tangent lines do not meet
+      // The span's rest failed as one segment within 16 times the tolerance (the error falls
+      // as the fourth power of the step: halves near a sixteenth of it; a rest whose tangent
+      // lines do not meet ahead goes on with the model): an inflection inside is the next end
+      // (the two convex parts; measured: trying it after such failures too saved nothing),
+      // else the midpoint (cu2qu's two equal parts); with either, the rest from there as the
+      // second segment (taken whatever the first's error). Where the tangent lines do not meet
       // ahead at that end (feasibility is not monotone there: S-shaped spans fit past it),
       // the search resumes from the model's end and keeps its bracket.
       if (it == 0 && x == s1 && !r.ok) {
@@ -1478,19 +1488,22 @@ void unframe(QuadraticChain<T, D>& r, int e) {
 /// rejected on it. A part is taken only on an upper bound of its Hausdorff distance
 /// within the tolerance, the first found of, cheapest first: the control points of the
 /// part minus the quadratic raised to its degree (Part::elevated_bound, a bound of the
-/// parametric distance; its Bernstein polygon halved up to four times where above the
-/// tolerance), the distance after a quartic change of the quadratic's parameter through
-/// the foot (Part::reparametrised_bound4_at, cubic parts), then samples with their
-/// nearest points on the quadratic and a second-derivative margin between samples
+/// parametric distance; for a cubic part its Bernstein polygon halved up to four times
+/// where above the tolerance), the distance after a quartic change of the quadratic's
+/// parameter through the foot (Part::reparametrised_bound4_at, cubic parts), then samples
+/// with their nearest points on the quadratic and a second-derivative margin between samples
 /// (detail::quadratic::ChainDistance::bound, 5 to 33 samples, up to the first level within
 /// the tolerance; a bound for polynomial pieces, for rational pieces with an estimated
 /// margin). max_error is the largest of the bounds taken: within the tolerance, not
-/// tight. Cusps and inflections of a plane cubic are found in closed form
+/// tight (except where no quadratic through the tangent lines fits even over 1e-9 of a
+/// span, not expected between cusps: that part becomes a straight segment, its bound
+/// measured and reported whatever it is). Cusps and inflections of a plane cubic are found in closed form
 /// (plane_cubic_without_cusp, cubic_cusps, cubic_inflections). Once the rest of a span has
 /// failed as one segment within 16 times the tolerance, the first end tried is an
-/// inflection inside (two convex parts), else its midpoint (cu2qu's two equal parts), and
-/// an end found within the tolerance is tried with the rest as a second segment (two is
-/// then the fewest); when the rest fails, its measure places the next end tried so. Errors:
+/// inflection inside (two convex parts), else its midpoint (cu2qu's two equal parts); once
+/// it has failed, an end found within the tolerance is tried with the rest as a second
+/// segment (two is then the fewest); when the rest fails, its measure places the next end
+/// tried so. Errors:
 /// InvalidArgument "tolerance" (not finite and > 0; more than max_segments segments
 /// needed).
 template <class C>
