@@ -530,6 +530,16 @@ struct Part {
       std::array<std::array<T, D>, 4> f;
       for (std::size_t k = 0; k <= 3; ++k)
         for (int c = 0; c < D; ++c) f[k][static_cast<std::size_t>(c)] = points[k][c] - (w[k][0] * a[0][c] + w[k][1] * a[1][c] + w[k][2] * a[2][c]);
+      if (levels > 0) {
+        // The difference's value at 1/2, (f0 + 3 f1 + 3 f2 + f3) / 8: above the limit, no
+        // halving brings the bound under it (the first halving's end value).
+        T m2 = 0;
+        for (std::size_t c = 0; c < static_cast<std::size_t>(D); ++c) {
+          const T v = (f[0][c] + T(3) * (f[1][c] + f[2][c]) + f[3][c]) / T(8);
+          m2 += v * v;
+        }
+        if (m2 > limit * limit) levels = 0;
+      }
       return polygon_bound_n(f, limit, levels);
     }
     const T N = T(n * (n - 1));
