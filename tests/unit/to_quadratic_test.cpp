@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <random>
 #include <vector>
 
@@ -83,6 +84,18 @@ std::size_t check_chain(const C& c, const QuadraticChain<double, C::dimension>& 
   return r.segments.size();
 }
 
+/// The part of c over [a, b] and its tangent quadratic (none where the tangent lines do not
+/// meet ahead), as to_quadratic's attempts make them.
+struct TangentPart {
+  detail::quadratic::Part<B2> part;
+  std::optional<detail::quadratic::Chain<double, 2>> q;
+  TangentPart(const B2& c, double a, double b) {
+    part.make(c, a, b);
+    const auto d0 = detail::quadratic::end_direction(part.points, true), d1 = detail::quadratic::end_direction(part.points, false);
+    q = detail::quadratic::tangent_chain(part.points.front(), d0, part.points.back(), d1, part.end_speed(true), part.end_speed(false));
+  }
+};
+
 TEST(ToQuadratic, LowDegreesAreExactInOneSegment) {
   const B2 quad({P2(0, 0), P2(1, 2), P2(3, -1)});
   const auto r = to_quadratic(quad, 1e-9);
@@ -155,10 +168,9 @@ TEST(ToQuadratic, ReparametrisedBoundHoldsOnRandomParts) {
   for (int i = 0; i < 24; ++i) {
     const B2 c({P2(u(rng), u(rng)), P2(u(rng), u(rng)), P2(u(rng), u(rng)), P2(u(rng), u(rng))});
     const double a = 0.8 * w(rng), b = a + 0.05 + 0.15 * w(rng);
-    detail::quadratic::Part<B2> part;
-    part.make(c, a, b);
-    const auto d0 = detail::quadratic::end_direction(part.points, true), d1 = detail::quadratic::end_direction(part.points, false);
-    const auto q = detail::quadratic::tangent_chain(part.points.front(), d0, part.points.back(), d1, part.end_speed(true), part.end_speed(false));
+    const TangentPart tp(c, a, b);
+    const auto& part = tp.part;
+    const auto& q = tp.q;
     if (!q || q->size != 1) continue;
     const double bound4 = part.reparametrised_bound4(*q, 0.0, 3);
     if (!std::isfinite(bound4)) continue;
@@ -275,10 +287,9 @@ TEST(ToQuadratic, MiddleFootIsTheNearestPoint) {
   for (int i = 0; i < 300; ++i) {
     const B2 c({P2(u(rng), u(rng)), P2(u(rng), u(rng)), P2(u(rng), u(rng)), P2(u(rng), u(rng))});
     const double a = 0.7 * w(rng), b = a + 0.02 + 0.28 * w(rng);
-    detail::quadratic::Part<B2> part;
-    part.make(c, a, b);
-    const auto d0 = detail::quadratic::end_direction(part.points, true), d1 = detail::quadratic::end_direction(part.points, false);
-    const auto q = detail::quadratic::tangent_chain(part.points.front(), d0, part.points.back(), d1, 0.0, 0.0);
+    const TangentPart tp(c, a, b);
+    const auto& part = tp.part;
+    const auto& q = tp.q;
     if (!q) continue;
     double x = -1;
     const double mid = part.middle_foot(*q, x);
@@ -332,10 +343,10 @@ TEST(ToQuadratic, PartBoundsHoldAndAgree) {
   for (int i = 0; i < 120; ++i) {
     const B2 c({P2(u(rng), u(rng)), P2(u(rng), u(rng)), P2(u(rng), u(rng)), P2(u(rng), u(rng))});
     const double a = 0.8 * w(rng), b = a + 0.02 + 0.18 * w(rng);
-    detail::quadratic::Part<B2> part;
-    part.make(c, a, b);
+    const TangentPart tp(c, a, b);
+    const auto& part = tp.part;
+    const auto& q = tp.q;
     const auto d0 = detail::quadratic::end_direction(part.points, true), d1 = detail::quadratic::end_direction(part.points, false);
-    const auto q = detail::quadratic::tangent_chain(part.points.front(), d0, part.points.back(), d1, 0.0, 0.0);
     // The same part in 3-D: the general branch of tangent_chain.
     std::vector<P3> P3s;
     for (const auto& p : part.points) P3s.push_back(P3(p[0], p[1], 0));
