@@ -158,7 +158,7 @@ TEST(ToQuadratic, RandomCubicsWithinToleranceAndTangentContinuous) {
 }
 
 TEST(ToQuadratic, ReparametrisedBoundHoldsOnRandomParts) {
-  // Part::reparametrised_bound4 (the Bernstein polygon of c(s) - q(sigma(s)), sigma a
+  // Part::reparametrised_bound4_at (the Bernstein polygon of c(s) - q(sigma(s)), sigma a
   // quartic whose middle is fitted to the foot of c(1/2)) against the two-sided distance of
   // dense samples of the part and its tangent quadratic, measured here; parts of random
   // cubics that turn little (where the bound accepts parts).
@@ -172,7 +172,9 @@ TEST(ToQuadratic, ReparametrisedBoundHoldsOnRandomParts) {
     const auto& part = tp.part;
     const auto& q = tp.q;
     if (!q || q->size != 1) continue;
-    const double bound4 = part.reparametrised_bound4(*q, 0.0, 3);
+    double foot = 0;
+    if (!std::isfinite(part.middle_foot(*q, foot))) continue;
+    const double bound4 = part.reparametrised_bound4_at(*q, foot, 0.0, 3);
     if (!std::isfinite(bound4)) continue;
     ++finite;
     std::vector<P2> cs, qs;

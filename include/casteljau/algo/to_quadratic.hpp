@@ -190,6 +190,43 @@ struct QuadraticForm {
   Vector<T, D> d1(T s) const { return T(2) * b + (T(2) * s) * a; }
 };
 
+/// The foot of p on the quadratic qf from the guess x (its own parameter): Newton's method
+/// on (q(x) - p) . q'(x) = 0, clamped to [0, 1], at most `iterations` steps, stopped after
+/// a step of at most `stop`. Where the derivative of the equation is not positive (the
+/// distance concave there), a step along |q'|^2 alone when `concave_step`, else stopped.
+template <class T, int D>
+T quadratic_foot(const QuadraticForm<T, D>& qf, const Point<T, D>& p, T x, T stop, int iterations, bool concave_step) {
+  for (int it = 0; it < iterations; ++it) {
+    // r = q(x) - p, d = q'(x); g = r . d, g' = d . d + r . q''
+    T g = 0, dd = 0, ra = 0;
+    for (int k = 0; k < D; ++k) {
+      const T bk = qf.b[k], ak = qf.a[k];
+      const T r = qf.p0[k] + x * (T(2) * bk + x * ak) - p[k], d = T(2) * (bk + x * ak);
+      g += r * d;
+      dd += d * d;
+      ra += r * ak;
+    }
+    T gp = dd + T(2) * ra;
+    if (!(gp > 0) && concave_step) gp = dd;
+    if (!(gp > 0)) break;
+    const T nx = std::clamp(x - g / gp, T(0), T(1));
+    const bool close = std::abs(nx - x) <= stop;
+    x = nx;
+    if (close) break;
+  }
+  return x;
+}
+/// |q(x) - p|^2 for the quadratic qf.
+template <class T, int D>
+T quadratic_distance2(const QuadraticForm<T, D>& qf, const Point<T, D>& p, T x) {
+  T s2 = 0;
+  for (int k = 0; k < D; ++k) {
+    const T r = qf.p0[k] + x * (T(2) * qf.b[k] + x * qf.a[k]) - p[k];
+    s2 += r * r;
+  }
+  return s2;
+}
+
 /// The distance between a part c of the curve on [0, 1] and a chain q of one or two
 /// quadratics (joined with equal speeds, as tangent_chain makes them) with the same end
 /// points, on the chain's parameter sigma in [0, m] (quadratic i on [i, i + 1]), from
@@ -265,37 +302,12 @@ class ChainDistance {
   }
 
  private:
-  // The foot of p on quadratic qf from the guess x (its own parameter): Newton, clamped,
-  // stopped after a step of at most 1e-3 (the bound holds for any foot; the distance at the foot is
-  // only overestimated, by about the square of that).
-  static T foot_on(const QuadraticForm<T, D>& qf, const Point<T, D>& p, T x) {
-    for (int it = 0; it < 12; ++it) {
-      // r = q(x) - p, d = q'(x); g = r . d, g' = d . d + r . q''
-      T g = 0, dd = 0, ra = 0;
-      for (int k = 0; k < D; ++k) {
-        const T bk = qf.b[k], ak = qf.a[k];
-        const T r = qf.p0[k] + x * (T(2) * bk + x * ak) - p[k], d = T(2) * (bk + x * ak);
-        g += r * d;
-        dd += d * d;
-        ra += r * ak;
-      }
-      T gp = dd + T(2) * ra;
-      if (!(gp > 0)) gp = dd;
-      if (!(gp > 0)) break;
-      const T nx = std::clamp(x - g / gp, T(0), T(1));
-      const bool close = std::abs(nx - x) <= T(1e-3);
-      x = nx;
-      if (close) break;
-    }
-    return x;
-  }
+  // The foot of p on quadratic qf from the guess x, stopped after a step of at most 1e-3
+  // (the bound holds for any foot; the distance at the foot is only overestimated, by about
+  // the square of that).
+  static T foot_on(const QuadraticForm<T, D>& qf, const Point<T, D>& p, T x) { return quadratic_foot(qf, p, x, T(1e-3), 12, true); }
   static T distance_at(const QuadraticForm<T, D>& qf, const Point<T, D>& p, T x) {
-    T s2 = 0;
-    for (int k = 0; k < D; ++k) {
-      const T r = qf.p0[k] + x * (T(2) * qf.b[k] + x * qf.a[k]) - p[k];
-      s2 += r * r;
-    }
-    return std::sqrt(s2);  // points near the curve: no overflow
+    return std::sqrt(quadratic_distance2(qf, p, x));  // points near the curve: no overflow
   }
   template <class Eval>
   T foot(const Eval& c, int j, T guess) {
@@ -558,36 +570,6 @@ struct Part {
     return std::sqrt(worst);  // parts near the curve: no overflow
   }
 
-  /// An upper bound of the Hausdorff distance between a cubic part c and a single
-  /// quadratic q with the same end points and end directions, after a change of q's
-  /// parameter: sigma(s) the quartic with sigma(0) = 0, sigma(1) = 1 and the end slopes
-  /// |c'| / |q'| (Bernstein coefficients 0, sigma'(0) / 4, s2, 1 - sigma'(1) / 4, 1), so
-  /// that q(sigma(s)) matches c's points and first derivatives at both ends and f(s) =
-  /// c(s) - q(sigma(s)), a polynomial of degree 8, has a double zero at each end; s2 is
-  /// chosen so that sigma(1/2) is the foot of c(1/2) on q (Newton), which removes most of
-  /// the tangential part of f (a cubic sigma's bound is 1.4 to 20 times the distance on
-  /// parts whose speeds vary). f's Bernstein coefficients (c raised to degree 8, sigma
-  /// raised and sigma^2 as a product) bound |f|; the polygon is halved (de Casteljau at
-  /// 1/2) up to `levels` times where its largest coefficient is above `limit`. When
-  /// sigma's coefficients lie in [0, 1], sigma maps [0, 1] into [0, 1] (c(s) is within
-  /// |f(s)| of the point q(sigma(s)) of q) and onto it (every q(u) is some q(sigma(s)),
-  /// within |f(s)| of c(s)). Infinite for other parts (rational, degree other than 3, a
-  /// chain of two quadratics), a sigma leaving [0, 1], or when |f(1/2)| (a value of f, so
-  /// at most the bound) exceeds `skip`; then |f(1/2)|, the distance from c(1/2) to its foot
-  /// on q, is written to *skipped when given. No projections besides that foot: about 300
-  /// operations, unrolled.
-  T reparametrised_bound4(const Chain<T, D>& q, T limit, int levels, T skip = std::numeric_limits<T>::infinity(),
-                          T* skipped = nullptr) const {
-    T x = 0;
-    const T mid = middle_foot(q, x);
-    if (!std::isfinite(mid)) return mid;
-    if (mid > skip) {
-      if (skipped) *skipped = mid;
-      return std::numeric_limits<T>::infinity();
-    }
-    return reparametrised_bound4_at(q, x, limit, levels);
-  }
-
   /// The distance from c(1/2) to its foot on the single quadratic q of a cubic part (the
   /// foot's parameter into x): Newton's method on (q(x) - c(1/2)) . q'(x) = 0, clamped to
   /// [0, 1], from the parameter that the affine map of q's control triangle gives c(1/2),
@@ -608,7 +590,7 @@ struct Part {
   T middle_foot(const Chain<T, D>& q, T& x, T recheck = std::numeric_limits<T>::infinity(), T* first = nullptr) const {
     if (!polynomial || q.size != 1 || points.size() != 4) return std::numeric_limits<T>::infinity();
     const auto& Q = q.front();
-    const Vector<T, D> b = Q[1] - Q[0], a = (Q[0] - Q[1]) + (Q[2] - Q[1]);
+    const Vector<T, D> b = Q[1] - Q[0];
     if (!(squared_norm(b) > 0 && squared_norm(Q[2] - Q[1]) > 0)) return std::numeric_limits<T>::infinity();
     const Point<T, D> m = (*this)(T(0.5));
     {
@@ -625,28 +607,10 @@ struct Part {
         x = g22 > 0 ? std::clamp(w2 / g22, T(0), T(1)) : T(0.5);  // nearly straight: along the chord
       }
     }
-    const auto squared_distance = [&](T u) {
-      T d2 = 0;
-      for (int k = 0; k < D; ++k) {
-        const T r = Q[0][k] + u * (T(2) * b[k] + u * a[k]) - m[k];
-        d2 += r * r;
-      }
-      return d2;
-    };
+    const QuadraticForm<T, D> qf(Q);
+    const auto squared_distance = [&](T u) { return quadratic_distance2(qf, m, u); };
     const auto newton = [&](T& u) {
-      for (int it = 0; it < 8; ++it) {
-        T g = 0, gp = 0;
-        for (int k = 0; k < D; ++k) {
-          const T r = Q[0][k] + u * (T(2) * b[k] + u * a[k]) - m[k], d = T(2) * (b[k] + u * a[k]);
-          g += r * d;
-          gp += d * d + T(2) * r * a[k];
-        }
-        if (!(gp > 0)) break;
-        const T nu = std::clamp(u - g / gp, T(0), T(1));
-        const bool close = std::abs(nu - u) <= T(1e-2);
-        u = nu;
-        if (close) break;
-      }
+      u = quadratic_foot(qf, m, u, T(1e-2), 8, false);
       return squared_distance(u);
     };
     T d2 = newton(x);
@@ -657,12 +621,11 @@ struct Part {
     // foot where the guess's first-order model fails: c(1/2) far from q for its size, a
     // hairpin).
     const auto outside_box = [&](T u) {
+      const Box<T, D> box = box_of<T, D>(points);
       T o2 = 0;
       for (int k = 0; k < D; ++k) {
-        T lo = points[0][k], hi = lo;
-        for (std::size_t i = 1; i < 4; ++i) lo = std::min(lo, points[i][k]), hi = std::max(hi, points[i][k]);
-        const T v = Q[0][k] + u * (T(2) * b[k] + u * a[k]);
-        const T o = std::max(T(0), std::max(lo - v, v - hi));
+        const T v = qf.p0[k] + u * (T(2) * qf.b[k] + u * qf.a[k]);
+        const T o = std::max(T(0), std::max(box.lo[k] - v, v - box.hi[k]));
         o2 += o * o;
       }
       return o2;
@@ -705,8 +668,22 @@ struct Part {
     return std::sqrt(best);
   }
 
-  /// reparametrised_bound4 with sigma(1/2) = x given (middle_foot's): any x in [0, 1]
-  /// gives a bound; the foot makes it tight. Infinite where the bound does not apply.
+  /// An upper bound of the Hausdorff distance between a cubic part c and a single
+  /// quadratic q with the same end points and end directions, after a change of q's
+  /// parameter: sigma(s) the quartic with sigma(0) = 0, sigma(1) = 1 and the end slopes
+  /// |c'| / |q'| (Bernstein coefficients 0, sigma'(0) / 4, s2, 1 - sigma'(1) / 4, 1), so
+  /// that q(sigma(s)) matches c's points and first derivatives at both ends and f(s) =
+  /// c(s) - q(sigma(s)), a polynomial of degree 8, has a double zero at each end; s2 is
+  /// chosen so that sigma(1/2) = x, the foot of c(1/2) on q (middle_foot's), which removes
+  /// most of the tangential part of f; any x in [0, 1] gives a bound, the foot a tight one (a cubic sigma's bound is 1.4 to 20 times the distance on
+  /// parts whose speeds vary). f's Bernstein coefficients (c raised to degree 8, sigma
+  /// raised and sigma^2 as a product) bound |f|; the polygon is halved (de Casteljau at
+  /// 1/2) up to `levels` times where its largest coefficient is above `limit`. When
+  /// sigma's coefficients lie in [0, 1], sigma maps [0, 1] into [0, 1] (c(s) is within
+  /// |f(s)| of the point q(sigma(s)) of q) and onto it (every q(u) is some q(sigma(s)),
+  /// within |f(s)| of c(s)). Infinite for other parts (rational, degree other than 3, a
+  /// chain of two quadratics) and a sigma leaving [0, 1]. No projections: about 300
+  /// operations, unrolled.
   T reparametrised_bound4_at(const Chain<T, D>& q, T x, T limit, int levels) const {
     if (!polynomial || q.size != 1 || points.size() != 4) return std::numeric_limits<T>::infinity();
     const auto& Q = q.front();
@@ -1243,7 +1220,7 @@ void approximate_span(const Piece& piece, T s0, T s1, const Point<T, D>& p_start
     std::optional<Try> best;
     bool done = false, probe = false;
     int rest_tries = 0;
-    T model_guess = 0;
+    T model_guess = std::numeric_limits<T>::quiet_NaN();  // where a probe without a chain sends the search (NaN: bisection)
     T prev_x = t0, prev_e = 0;
     // The span's end first when the model's step nearly reaches it (a failure there gives
     // the model its measure as well as the step would).
