@@ -327,9 +327,11 @@ def w11_table(rows):
         keys = sorted({n.split("/", 3)[3] for n in rows if n.startswith("W11/") and f"/{op}/" in n})
         for key in keys:
             peer = rows.get(f"W11/{peer_lib}/{op}/{key}")
-            # cu2qu_dropped: cu2qu's outputs dropped instead of kept (bench/w11_cu2qu.py).
-            for lib in ("casteljau", peer_lib) + (("cu2qu_dropped",) if op == "quadratic" else ()):
-                b = rows.get(f"W11/{lib}/{op}/{key}")
+            # cu2qu with its outputs dropped instead of kept: counters of its row (bench/w11_cu2qu.py).
+            dropped = None
+            if peer and "dropped_cpu_ms" in peer:
+                dropped = dict(peer, real_time=peer["dropped_real_ms"], cpu_time=peer["dropped_cpu_ms"], time_unit="ms")
+            for lib, b in (("casteljau", rows.get(f"W11/casteljau/{op}/{key}")), (peer_lib, peer), (f"{peer_lib} (outputs dropped)", dropped)):
                 if not b:
                     continue
                 curves = b.get("curves", 0) or 1
@@ -345,7 +347,6 @@ def w11_table(rows):
                              f"{to_ms(ours, key_time) / to_ms(peer, key_time):.2f}x its time"
                              f"{' (CPU)' if key_time == 'cpu_time' else ''}, {int(ours.get('over_tolerance', 0))} over the tolerance "
                              "(goal: fewer, faster, 0): " + ("MET" if ok else "NOT MET"))
-            dropped = rows.get(f"W11/cu2qu_dropped/{op}/{key}")
             if ours and dropped:
                 fast = to_ms(ours, key_time) < to_ms(dropped, key_time)
                 goals.append(f"W11 {op} {key}: {to_ms(ours, key_time) / to_ms(dropped, key_time):.2f}x the time of cu2qu with its "
